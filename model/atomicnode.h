@@ -1,0 +1,42 @@
+#pragma once
+
+#include "evidence.h"
+#include "port.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace rosarch {
+
+/// An AtomicRosNodeClassifier: one node class (or procedurally built node) with its ports.
+struct AtomicNode
+{
+    enum class CompileType { Python, Cpp };
+
+    QString id;            ///< "arc_1", ... assigned in deterministic order by the stage
+    QString className;     ///< unqualified class name; for procedural nodes the function's file stem
+    QString qualifiedName; ///< with C++ namespaces ("demo_nodes_cpp::Talker") or Python module path
+    QString nodeName;      ///< as written in the code ("" when not given)
+    QString packageName;
+    QStringList headerFiles; ///< relative to the workspace root
+    QStringList sourceFiles;
+    QString description;
+    CompileType compileType = CompileType::Cpp;
+    QStringList baseClasses; ///< direct bases as written
+    bool lifecycle = false;
+    bool procedural = false;  ///< rclpy.create_node / make_shared<rclcpp::Node>(...)
+    QStringList executables;  ///< executables that start it (from build files)
+    QStringList plugins;      ///< component plugin names (rclcpp_components)
+    Evidence evidence;        ///< the class definition (or the create_node call)
+    QList<Port> ports;
+
+    /// The blueprint's `execution`: the first executable, else the first plugin.
+    QString execution() const;
+    bool isComposable() const { return !plugins.isEmpty(); }
+    bool operator==(const AtomicNode &) const = default;
+};
+
+QString compileTypeName(AtomicNode::CompileType type);
+
+} // namespace rosarch

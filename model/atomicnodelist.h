@@ -1,0 +1,25 @@
+#pragma once
+
+#include "atomicnode.h"
+#include "diagnostic.h"
+#include "rospackage.h"
+
+#include <QList>
+#include <QString>
+
+namespace rosarch {
+
+/// Stage 1's result: the List of Atomic ROS Nodes, with the packages and diagnostics.
+struct AtomicNodeList
+{
+    QString workspaceRoot; ///< absolute
+    QList<RosPackage> packages;
+    QList<AtomicNode> nodes; ///< sorted by package, class name; ids arc_1..arc_n in that order
+    QList<Diagnostic> diagnostics;
+    bool canceled = false;
+
+    const AtomicNode *node(const QString &id) const;
+    QList<const AtomicNode *> nodesOfPackage(const QString &package) const;
+};
+
+} // namespace rosarch

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "atomicnodelist.h"
+
+#include <QByteArray>
+#include <QString>
+
+namespace rosarch {
+
+/// The List of Atomic ROS Nodes as JSON (blueprint §2, with ports and evidence added).
+namespace AtomicNodesJson {
+/// Deterministic, pretty-printed, sorted as the list is.
+QByteArray write(const AtomicNodeList &list);
+/// Reads what write() produced; returns false with a message on malformed input.
+bool read(const QByteArray &json, AtomicNodeList *list, QString *error);
+} // namespace AtomicNodesJson
+
+/// The diagnostics of a run as JSON (diagnostics.json).
+namespace DiagnosticsJson {
+QByteArray write(const QList<Diagnostic> &diagnostics);
+}
+
+} // namespace rosarch

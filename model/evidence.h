@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QString>
+
+namespace rosarch {
+
+/// Where a recovered element comes from: a file relative to the workspace root and a
+/// 1-based line/column range (columns count UTF-8 bytes, end is exclusive).
+struct Evidence
+{
+    QString file;
+    int line = 0;
+    int column = 0;
+    int endLine = 0;
+    int endColumn = 0;
+
+    bool isValid() const { return !file.isEmpty() && line > 0; }
+    /// True when the 1-based line lies within this range.
+    bool containsLine(int l) const { return isValid() && l >= line && l <= endLine; }
+    bool operator==(const Evidence &) const = default;
+};
+
+} // namespace rosarch

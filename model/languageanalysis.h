@@ -1,0 +1,45 @@
+#pragma once
+
+#include "atomicnode.h"
+#include "diagnostic.h"
+#include "evidence.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace rosarch {
+
+/// A function that starts nodes (`main`, or any function a console script names): which
+/// node classes it instantiates, so that build-file executables map to classes by evidence.
+struct EntryPoint
+{
+    QString file;     ///< relative to the workspace root
+    QString function; ///< "main", ...
+    QStringList instantiatedClasses; ///< class names as written (possibly qualified)
+    Evidence evidence;
+
+    bool operator==(const EntryPoint &) const = default;
+};
+
+/// An `RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class)` found in a source file.
+struct ComponentRegistration
+{
+    QString file;
+    QString pluginClass; ///< as written, e.g. "demo_nodes_cpp::Talker"
+    Evidence evidence;
+
+    bool operator==(const ComponentRegistration &) const = default;
+};
+
+/// What a language analyzer (Python or C++) recovers from the files it is given.
+/// Nodes carry no id and no executables yet: the NodeAnalyzer stage links them to build files.
+struct LanguageAnalysis
+{
+    QList<AtomicNode> nodes;
+    QList<EntryPoint> entryPoints;
+    QList<ComponentRegistration> registrations;
+    QList<Diagnostic> diagnostics;
+};
+
+} // namespace rosarch

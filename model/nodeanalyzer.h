@@ -1,0 +1,20 @@
+#pragma once
+
+#include "atomicnodelist.h"
+#include "stagecontrol.h"
+#include "workspace.h"
+
+namespace rosarch {
+
+/// Stage 1: runs the Python and C++ analyzers over a scanned workspace and links the node
+/// classes to the executables and plugins declared in the build files.
+class NodeAnalyzer
+{
+public:
+    static AtomicNodeList run(const Workspace &workspace, const StageControl &control = {});
+};
+
+/// Convenience: scan `root` and run stage 1.
+AtomicNodeList recoverAtomicNodes(const QString &root, const StageControl &control = {});
+
+} // namespace rosarch

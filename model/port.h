@@ -1,0 +1,49 @@
+#pragma once
+
+#include "evidence.h"
+
+#include <QString>
+
+namespace rosarch {
+
+enum class PortKind { Publisher, Subscriber, ServiceServer, ServiceClient, ActionServer, ActionClient };
+
+/// "publisher", "subscriber", "service_server", ... as written in the JSON artifacts.
+QString portKindName(PortKind kind);
+/// Inverse of portKindName; returns false for an unknown name.
+bool portKindFromName(const QString &name, PortKind *kind);
+/// ACD port-id prefix: p, s, ps, rs, pa, ra.
+QString portIdPrefix(PortKind kind);
+
+/// How the port's name was obtained from the code.
+enum class NameOrigin {
+    Literal,    ///< a string literal at the call
+    Member,     ///< a member variable (self.x / x_) holding a literal
+    Local,      ///< a local variable holding a literal
+    Parameter,  ///< the default of a declared parameter
+    Expression, ///< could not be decided statically; `name` is the expression text
+};
+QString nameOriginName(NameOrigin origin);
+
+/// One communication port of an atomic node: publisher, subscriber, service, action.
+struct Port
+{
+    QString id;   ///< per-node id in ACD style: p1, s1, ps1, rs1, pa1, ra1
+    PortKind kind = PortKind::Publisher;
+    QString name; ///< the name as written, resolved to a literal where possible ("~/x" kept)
+    QString type; ///< interface type, canonical "pkg/msg/T", "pkg/srv/T", "pkg/action/T"
+    QString callback; ///< callback / handler function name; "lambda" for a lambda
+    NameOrigin nameOrigin = NameOrigin::Literal;
+    QString nameExpression; ///< the expression at the call when it is not a literal
+    QString parameter;      ///< the parameter the name comes from (NameOrigin::Parameter)
+    QString guard;          ///< condition under which the port exists, as written ("" = always)
+    QString guardParameter; ///< the parameter the guard depends on, when known
+    QString via;            ///< helper class through which the port is created ("" = the node)
+    bool inherited = false; ///< declared in a project base class
+    Evidence evidence;
+
+    bool isResolved() const { return nameOrigin != NameOrigin::Expression; }
+    bool operator==(const Port &) const = default;
+};
+
+} // namespace rosarch

@@ -1,0 +1,49 @@
+#include "sourcereader.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+namespace rosarch {
+
+SourceReader::SourceReader(QString root, qint64 maxBytes)
+    : m_root(std::move(root)), m_maxBytes(maxBytes)
+{
+}
+
+bool SourceReader::read(const QString &relativePath, QByteArray *content,
+                        QList<Diagnostic> *diagnostics) const
+{
+    auto fail = [&](const QString &code, const QString &message) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.code = code;
+        d.message = message;
+        d.evidence.file = relativePath;
+        diagnostics->append(d);
+        return false;
+    };
+    QFile file(QDir(m_root).filePath(relativePath));
+    const QFileInfo info(file);
+    if (info.size() > m_maxBytes)
+        return fail(QStringLiteral("file-too-large"),
+                    QStringLiteral("Skipped: %1 is %2 MB, larger than the %3 MB analysis limit.")
+                        .arg(relativePath)
+                        .arg(double(info.size()) / (1024 * 1024), 0, 'f', 1)
+                        .arg(double(m_maxBytes) / (1024 * 1024), 0, 'f', 1));
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(QStringLiteral("unreadable-file"),
+                    QStringLiteral("Skipped: %1 cannot be read (%2).")
+                        .arg(relativePath, file.errorString()));
+    *content = file.read(m_maxBytes + 1);
+    if (content->size() > m_maxBytes)
+        return fail(QStringLiteral("file-too-large"),
+                    QStringLiteral("Skipped: %1 is larger than the analysis limit.").arg(relativePath));
+    if (content->contains('\0'))
+        return fail(QStringLiteral("binary-file"),
+                    QStringLiteral("Skipped: %1 looks like a binary file (it contains NUL bytes).")
+                        .arg(relativePath));
+    return true;
+}
+
+} // namespace rosarch

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "workspace.h"
+
+#include <QByteArray>
+#include <QList>
+
+namespace rosarch {
+
+/// Reads a workspace file for analysis, refusing what cannot be analysed (too large, binary,
+/// unreadable) with a diagnostic instead of content.
+class SourceReader
+{
+public:
+    static constexpr qint64 kDefaultMaxBytes = 4 * 1024 * 1024;
+
+    explicit SourceReader(QString root, qint64 maxBytes = kDefaultMaxBytes);
+
+    /// Returns false and appends a diagnostic when the file cannot be analysed.
+    bool read(const QString &relativePath, QByteArray *content, QList<Diagnostic> *diagnostics) const;
+
+private:
+    QString m_root;
+    qint64 m_maxBytes;
+};
+
+} // namespace rosarch

@@ -1,0 +1,156 @@
+#include "syntaxtree.h"
+
+#include <cstring>
+
+extern "C" {
+const TSLanguage *tree_sitter_python();
+const TSLanguage *tree_sitter_cpp();
+}
+
+namespace rosarch {
+
+void SyntaxTree::TreeDeleter::operator()(TSTree *t) const
+{
+    ts_tree_delete(t);
+}
+
+SyntaxTree::~SyntaxTree() = default;
+
+SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
+{
+    SyntaxTree tree;
+    tree.m_source = std::move(source);
+    tree.m_file = std::move(file);
+    TSParser *parser = ts_parser_new();
+    ts_parser_set_language(parser, grammar == Grammar::Python ? tree_sitter_python() : tree_sitter_cpp());
+    // A generous bound so that pathological input cannot stall a stage (microseconds).
+    ts_parser_set_timeout_micros(parser, 20 * 1000 * 1000);
+    tree.m_tree.reset(ts_parser_parse_string(parser, nullptr, tree.m_source.constData(),
+                                             uint32_t(tree.m_source.size())));
+    ts_parser_delete(parser);
+    return tree;
+}
+
+TSNode SyntaxTree::root() const
+{
+    if (!m_tree) {
+        TSNode null{};
+        return null;
+    }
+    return ts_tree_root_node(m_tree.get());
+}
+
+std::string_view SyntaxTree::view(TSNode node) const
+{
+    if (ts_node_is_null(node))
+        return {};
+    const uint32_t start = ts_node_start_byte(node);
+    const uint32_t end = ts_node_end_byte(node);
+    if (end > uint32_t(m_source.size()) || start > end)
+        return {};
+    return std::string_view(m_source.constData() + start, end - start);
+}
+
+QString SyntaxTree::text(TSNode node) const
+{
+    const std::string_view v = view(node);
+    return QString::fromUtf8(v.data(), qsizetype(v.size()));
+}
+
+Evidence SyntaxTree::evidence(TSNode node) const
+{
+    Evidence e;
+    if (ts_node_is_null(node))
+        return e;
+    const TSPoint s = ts_node_start_point(node);
+    const TSPoint f = ts_node_end_point(node);
+    e.file = m_file;
+    e.line = int(s.row) + 1;
+    e.column = int(s.column) + 1;
+    e.endLine = int(f.row) + 1;
+    e.endColumn = int(f.column) + 1;
+    return e;
+}
+
+QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
+{
+    QList<Diagnostic> out;
+    TSNode r = root();
+    if (ts_node_is_null(r)) {
+        Diagnostic d;
+        d.code = QStringLiteral("parse-failed");
+        d.message = QStringLiteral("%1 could not be parsed (parser timeout).").arg(m_file);
+        d.evidence.file = m_file;
+        out.append(d);
+        return out;
+    }
+    if (!ts_node_has_error(r))
+        return out;
+    ts::walk(r, [&](TSNode n) {
+        if (out.size() >= limit)
+            return false;
+        if (!ts_node_has_error(n))
+            return false;
+        if (ts::is(n, "ERROR") || ts_node_is_missing(n)) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.code = QStringLiteral("syntax-error");
+            d.evidence = evidence(n);
+            d.message = ts_node_is_missing(n)
+                            ? QStringLiteral("Syntax error in %1 at line %2: missing %3; the rest of the file is still analysed.")
+                                  .arg(m_file).arg(d.evidence.line).arg(QString::fromUtf8(ts_node_type(n)))
+                            : QStringLiteral("Syntax error in %1 at line %2; the rest of the file is still analysed.")
+                                  .arg(m_file).arg(d.evidence.line);
+            out.append(d);
+            return false;
+        }
+        return true;
+    });
+    return out;
+}
+
+namespace ts {
+TSNode field(TSNode n, const char *name)
+{
+    if (ts_node_is_null(n))
+        return n;
+    return ts_node_child_by_field_name(n, name, uint32_t(strlen(name)));
+}
+
+std::vector<TSNode> namedChildren(TSNode n)
+{
+    std::vector<TSNode> out;
+    if (ts_node_is_null(n))
+        return out;
+    const uint32_t count = ts_node_named_child_count(n);
+    out.reserve(count);
+    for (uint32_t i = 0; i < count; ++i)
+        out.push_back(ts_node_named_child(n, i));
+    return out;
+}
+
+std::vector<TSNode> children(TSNode n)
+{
+    std::vector<TSNode> out;
+    if (ts_node_is_null(n))
+        return out;
+    const uint32_t count = ts_node_child_count(n);
+    out.reserve(count);
+    for (uint32_t i = 0; i < count; ++i)
+        out.push_back(ts_node_child(n, i));
+    return out;
+}
+
+TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types)
+{
+    for (TSNode p = ts_node_parent(n); !ts_node_is_null(p); p = ts_node_parent(p)) {
+        for (auto t : types)
+            if (type(p) == t)
+                return p;
+    }
+    TSNode null{};
+    return null;
+}
+} // namespace ts
+
+} // namespace rosarch

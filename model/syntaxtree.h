@@ -1,0 +1,76 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "evidence.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QString>
+
+#include <tree_sitter/api.h>
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace rosarch {
+
+/// A parsed source file: owns the tree-sitter tree and the bytes it points into.
+/// Move-only; nodes (TSNode) are valid while the SyntaxTree lives.
+class SyntaxTree
+{
+public:
+    enum class Grammar { Python, Cpp };
+
+    /// Parses `source`; never fails for text input (errors become ERROR nodes).
+    static SyntaxTree parse(Grammar grammar, QByteArray source, QString file);
+
+    SyntaxTree(SyntaxTree &&) noexcept = default;
+    SyntaxTree &operator=(SyntaxTree &&) noexcept = default;
+    ~SyntaxTree();
+
+    TSNode root() const;
+    const QString &file() const { return m_file; }
+    const QByteArray &source() const { return m_source; }
+
+    /// The node's source text (UTF-8 decoded).
+    QString text(TSNode node) const;
+    /// The node's source text without copying.
+    std::string_view view(TSNode node) const;
+    /// The node's range as evidence in this file (1-based lines and columns).
+    Evidence evidence(TSNode node) const;
+    /// One diagnostic per ERROR / MISSING region, at most `limit`.
+    QList<Diagnostic> syntaxErrors(int limit = 5) const;
+
+private:
+    SyntaxTree() = default;
+    struct TreeDeleter { void operator()(TSTree *t) const; };
+    QByteArray m_source;
+    QString m_file;
+    std::unique_ptr<TSTree, TreeDeleter> m_tree;
+};
+
+// Small helpers over the tree-sitter C API, so analyzers read like the grammar.
+namespace ts {
+inline bool isNull(TSNode n) { return ts_node_is_null(n); }
+inline std::string_view type(TSNode n) { return isNull(n) ? std::string_view() : ts_node_type(n); }
+inline bool is(TSNode n, std::string_view t) { return type(n) == t; }
+TSNode field(TSNode n, const char *name);
+std::vector<TSNode> namedChildren(TSNode n);
+std::vector<TSNode> children(TSNode n);
+/// The nearest ancestor of one of the given types (null node if none).
+TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types);
+/// Calls `visit` for `n` and every descendant in document order; return false to skip children.
+template <typename F> void walk(TSNode n, F &&visit)
+{
+    if (isNull(n))
+        return;
+    if (!visit(n))
+        return;
+    const uint32_t count = ts_node_child_count(n);
+    for (uint32_t i = 0; i < count; ++i)
+        walk(ts_node_child(n, i), visit);
+}
+} // namespace ts
+
+} // namespace rosarch

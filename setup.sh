@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# rosarch set-up: installs what is missing (Debian 12), fetches the tree-sitter grammars,
+# builds, and then either opens the GUI on the bundled example workspace or runs the tests.
+#
+#   ./setup.sh gui     build and open the GUI on resources/example_ws
+#   ./setup.sh test    build and run the whole test suite (what CI runs)
+#   ./setup.sh build   only build
+set -euo pipefail
+cd "$(dirname "$0")"
+mode=${1:-gui}
+build_dir=${ROSARCH_BUILD_DIR:-build}
+
+packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
+  qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+  libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
+  nlohmann-json3-dev libcurl4-openssl-dev libtree-sitter-dev xvfb xauth fonts-dejavu-core)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""; [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+scripts/fetch-grammars.sh "$build_dir/_grammars"
+
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DROSARCH_GRAMMAR_DIR="$PWD/$build_dir/_grammars"
+cmake --build "$build_dir" -j "$jobs"
+
+case "$mode" in
+  gui)
+    if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
+      echo "setup: no display found; starting the GUI under Xvfb (export DISPLAY to use your own)"
+      exec xvfb-run -a -s "-screen 0 1600x1000x24" "$build_dir/bin/rosarch" resources/example_ws
+    fi
+    exec "$build_dir/bin/rosarch" resources/example_ws ;;
+  test)
+    export QT_QPA_PLATFORM=offscreen
+    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" ;;
+  build) ;;
+  *) echo "usage: $0 [gui|test|build]" >&2; exit 2 ;;
+esac
