@@ -1,7 +1,39 @@
+#include "commandline.h"
+#include "mainwindow.h"
+
+#include <QApplication>
 #include <QCoreApplication>
+#include <QDir>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QTranslator>
+
+namespace {
+void describeApplication()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("rosarch"));
+    QCoreApplication::setApplicationName(QStringLiteral("rosarch"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(ROSARCH_VERSION));
+}
+} // namespace
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
-    return 0;
+    if (rosarch::CommandLine::isHeadless(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        describeApplication();
+        return rosarch::CommandLine::run(app.arguments());
+    }
+    QApplication app(argc, argv);
+    describeApplication();
+    QTranslator translator;
+    if (translator.load(QLocale(), QStringLiteral("rosarch"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+        QCoreApplication::installTranslator(&translator);
+
+    rosarch::MainWindow window;
+    window.show();
+    const QStringList args = app.arguments();
+    const QString workspace = args.size() > 1 ? args.at(1) : QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE);
+    window.openWorkspace(QDir(workspace).absolutePath());
+    return app.exec();
 }

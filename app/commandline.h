@@ -1,0 +1,21 @@
+#pragma once
+
+#include <QStringList>
+
+namespace rosarch {
+
+/// The headless side of the one executable: `rosarch recover <workspace> --out <dir>`,
+/// `--help`, `--version`. Exit codes: 0 ok, 1 analysis finished with errors reported (or the
+/// artifacts could not be written), 2 usage.
+class CommandLine
+{
+public:
+    enum ExitCode { Ok = 0, AnalysisErrors = 1, UsageError = 2 };
+
+    /// True when the arguments ask for a headless command rather than the GUI.
+    static bool isHeadless(int argc, char **argv);
+    /// Runs the headless command; `arguments` includes the program name.
+    static int run(const QStringList &arguments);
+};
+
+} // namespace rosarch

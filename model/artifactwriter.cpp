@@ -1,0 +1,49 @@
+#include "artifactwriter.h"
+#include "acdwriter.h"
+#include "atomicnodesjson.h"
+
+#include <QDir>
+#include <QSaveFile>
+
+namespace rosarch {
+
+namespace {
+bool writeFile(const QString &path, const QByteArray &content, QStringList *written, QString *error)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(content) != content.size() || !f.commit()) {
+        *error = QStringLiteral("Cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    if (written)
+        written->append(path);
+    return true;
+}
+} // namespace
+
+bool ArtifactWriter::writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
+                              QString *error)
+{
+    QDir out(dir);
+    if (!out.mkpath(QStringLiteral("acd"))) {
+        *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
+        return false;
+    }
+    // Diagrams of an earlier run would otherwise linger beside the new ones.
+    QDir acd(out.filePath(QStringLiteral("acd")));
+    for (const QString &old : acd.entryList({QStringLiteral("*.puml")}, QDir::Files))
+        acd.remove(old);
+    if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes), written, error))
+        return false;
+    if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")), DiagnosticsJson::write(nodes.diagnostics), written, error))
+        return false;
+    const QMap<QString, QString> stems = AcdWriter::fileStems(nodes);
+    for (const AtomicNode &n : nodes.nodes) {
+        const QString path = acd.filePath(stems.value(n.id) + QStringLiteral(".puml"));
+        if (!writeFile(path, AcdWriter::write(n).toUtf8(), written, error))
+            return false;
+    }
+    return true;
+}
+
+} // namespace rosarch

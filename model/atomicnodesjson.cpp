@@ -1,0 +1,223 @@
+#include "atomicnodesjson.h"
+#include "evidencejson.h"
+
+#include <nlohmann/json.hpp>
+
+namespace rosarch {
+
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+std::string s(const QString &q)
+{
+    return q.toStdString();
+}
+
+QString q(const Json &j, const char *key)
+{
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
+}
+
+Json stringList(const QStringList &list)
+{
+    Json a = Json::array();
+    for (const QString &v : list)
+        a.push_back(s(v));
+    return a;
+}
+
+QStringList readStringList(const Json &j, const char *key)
+{
+    QStringList out;
+    const auto it = j.find(key);
+    if (it != j.end() && it->is_array())
+        for (const auto &v : *it)
+            if (v.is_string())
+                out.append(QString::fromStdString(v.get<std::string>()));
+    return out;
+}
+
+Json portJson(const Port &p)
+{
+    Json j;
+    j["id"] = s(p.id);
+    j["kind"] = s(portKindName(p.kind));
+    j["name"] = s(p.name);
+    j["type"] = s(p.type);
+    j["callback"] = s(p.callback);
+    j["name_origin"] = s(nameOriginName(p.nameOrigin));
+    if (!p.nameExpression.isEmpty())
+        j["name_expression"] = s(p.nameExpression);
+    if (!p.parameter.isEmpty())
+        j["parameter"] = s(p.parameter);
+    if (!p.guard.isEmpty())
+        j["guard"] = s(p.guard);
+    if (!p.guardParameter.isEmpty())
+        j["guard_parameter"] = s(p.guardParameter);
+    if (!p.via.isEmpty())
+        j["via"] = s(p.via);
+    if (p.inherited)
+        j["inherited"] = true;
+    j["evidence"] = EvidenceJson::toJson(p.evidence);
+    return j;
+}
+
+Json nodeJson(const AtomicNode &n)
+{
+    Json j;
+    j["id"] = s(n.id);
+    j["class_name"] = s(n.className);
+    j["node_name"] = s(n.nodeName);
+    j["header_file_paths"] = stringList(n.headerFiles);
+    j["source_file_paths"] = stringList(n.sourceFiles);
+    j["description"] = s(n.description);
+    j["compile_type"] = s(compileTypeName(n.compileType));
+    j["execution"] = s(n.execution());
+    j["qualified_name"] = s(n.qualifiedName);
+    j["executables"] = stringList(n.executables);
+    j["plugins"] = stringList(n.plugins);
+    j["base_classes"] = stringList(n.baseClasses);
+    j["lifecycle"] = n.lifecycle;
+    j["procedural"] = n.procedural;
+    j["evidence"] = EvidenceJson::toJson(n.evidence);
+    Json ports = Json::array();
+    for (const Port &p : n.ports)
+        ports.push_back(portJson(p));
+    j["ports"] = ports;
+    return j;
+}
+
+bool readPort(const Json &j, Port *p, QString *error)
+{
+    if (!j.is_object()) {
+        *error = QStringLiteral("a port is not an object");
+        return false;
+    }
+    p->id = q(j, "id");
+    if (!portKindFromName(q(j, "kind"), &p->kind)) {
+        *error = QStringLiteral("port %1 has an unknown kind '%2'").arg(p->id, q(j, "kind"));
+        return false;
+    }
+    p->name = q(j, "name");
+    p->type = q(j, "type");
+    p->callback = q(j, "callback");
+    const QString origin = q(j, "name_origin");
+    for (NameOrigin o : {NameOrigin::Literal, NameOrigin::Member, NameOrigin::Local,
+                         NameOrigin::Parameter, NameOrigin::Expression})
+        if (nameOriginName(o) == origin)
+            p->nameOrigin = o;
+    p->nameExpression = q(j, "name_expression");
+    p->parameter = q(j, "parameter");
+    p->guard = q(j, "guard");
+    p->guardParameter = q(j, "guard_parameter");
+    p->via = q(j, "via");
+    p->inherited = j.value("inherited", false);
+    if (j.contains("evidence"))
+        p->evidence = EvidenceJson::fromJson(j["evidence"]);
+    return true;
+}
+
+} // namespace
+
+QByteArray AtomicNodesJson::write(const AtomicNodeList &list)
+{
+    Json packages = Json::array();
+    auto packageEntry = [&](const QString &name, const QString &buildType, const QString &path) {
+        Json p;
+        p["package_name"] = s(name);
+        p["build_type"] = s(buildType);
+        p["path"] = s(path);
+        Json nodes = Json::array();
+        for (const AtomicNode *n : list.nodesOfPackage(name))
+            nodes.push_back(nodeJson(*n));
+        p["list_atomic_ros_node_classifiers"] = nodes;
+        packages.push_back(p);
+    };
+    for (const RosPackage &pkg : list.packages)
+        packageEntry(pkg.name, pkg.buildType, pkg.path);
+    // Nodes outside any package (a folder without package.xml) are listed under "".
+    if (!list.nodesOfPackage(QString()).isEmpty())
+        packageEntry(QString(), QString(), QString());
+    Json root;
+    root["list_packages"] = packages;
+    return QByteArray::fromStdString(root.dump(2)) + '\n';
+}
+
+bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString *error)
+{
+    const Json root = Json::parse(json.constBegin(), json.constEnd(), nullptr, false);
+    if (root.is_discarded() || !root.is_object()) {
+        *error = QStringLiteral("not a JSON object");
+        return false;
+    }
+    const auto packages = root.find("list_packages");
+    if (packages == root.end() || !packages->is_array()) {
+        *error = QStringLiteral("missing list_packages");
+        return false;
+    }
+    AtomicNodeList out;
+    for (const Json &pj : *packages) {
+        RosPackage pkg;
+        pkg.name = q(pj, "package_name");
+        pkg.buildType = q(pj, "build_type");
+        pkg.path = q(pj, "path");
+        if (!pkg.name.isEmpty())
+            out.packages.append(pkg);
+        const auto nodes = pj.find("list_atomic_ros_node_classifiers");
+        if (nodes == pj.end() || !nodes->is_array())
+            continue;
+        for (const Json &nj : *nodes) {
+            AtomicNode n;
+            n.id = q(nj, "id");
+            n.className = q(nj, "class_name");
+            n.nodeName = q(nj, "node_name");
+            n.packageName = pkg.name;
+            n.headerFiles = readStringList(nj, "header_file_paths");
+            n.sourceFiles = readStringList(nj, "source_file_paths");
+            n.description = q(nj, "description");
+            n.compileType = q(nj, "compile_type") == QLatin1String("python") ? AtomicNode::CompileType::Python
+                                                                             : AtomicNode::CompileType::Cpp;
+            n.qualifiedName = q(nj, "qualified_name");
+            n.executables = readStringList(nj, "executables");
+            n.plugins = readStringList(nj, "plugins");
+            if (n.executables.isEmpty() && n.plugins.isEmpty() && !q(nj, "execution").isEmpty())
+                n.executables.append(q(nj, "execution"));
+            n.baseClasses = readStringList(nj, "base_classes");
+            n.lifecycle = nj.value("lifecycle", false);
+            n.procedural = nj.value("procedural", false);
+            if (nj.contains("evidence"))
+                n.evidence = EvidenceJson::fromJson(nj["evidence"]);
+            if (nj.contains("ports") && nj["ports"].is_array()) {
+                for (const Json &portJson : nj["ports"]) {
+                    Port p;
+                    if (!readPort(portJson, &p, error))
+                        return false;
+                    n.ports.append(p);
+                }
+            }
+            out.nodes.append(n);
+        }
+    }
+    *list = std::move(out);
+    return true;
+}
+
+QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
+{
+    Json a = Json::array();
+    for (const Diagnostic &d : diagnostics) {
+        Json j;
+        j["severity"] = s(Diagnostic::severityName(d.severity));
+        j["code"] = s(d.code);
+        j["message"] = s(d.message);
+        j["evidence"] = EvidenceJson::toJson(d.evidence);
+        a.push_back(j);
+    }
+    Json root;
+    root["diagnostics"] = a;
+    return QByteArray::fromStdString(root.dump(2)) + '\n';
+}
+
+} // namespace rosarch

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "rospackage.h"
+
+#include <QHash>
+#include <QList>
+#include <QString>
+#include <QStringList>
+#include <functional>
+
+namespace rosarch {
+
+/// Reads the executables and component plugins a package's CMakeLists.txt declares:
+/// add_executable, ament_auto_add_executable, add_library (for plugin sources),
+/// rclcpp_components_register_node(s), set() variables and add_subdirectory.
+/// Not a CMake interpreter: conditions are ignored (every branch counts).
+class CMakeListsReader
+{
+public:
+    /// `load` returns a file's content by workspace-relative path (false if missing).
+    using Loader = std::function<bool(const QString &relativePath, QByteArray *content)>;
+
+    explicit CMakeListsReader(Loader load);
+
+    /// Reads `file` (workspace-relative CMakeLists.txt) and the subdirectories it adds.
+    QList<Executable> read(const QString &file, QList<Diagnostic> *diagnostics);
+
+    struct Command
+    {
+        QString name; ///< lower-cased
+        QStringList args;
+        int line = 0;
+        int endLine = 0;
+    };
+    /// Splits CMake source into commands (exposed for tests).
+    static QList<Command> tokenize(const QByteArray &content);
+
+private:
+    struct Function
+    {
+        QStringList params;
+        QList<Command> body;
+    };
+    void readFile(const QString &file, int depth, QList<Diagnostic> *diagnostics);
+    void execute(const QList<Command> &commands, int depth, QList<Diagnostic> *diagnostics);
+    void parseArguments(const QStringList &rawArgs);
+    QString expand(const QString &text) const;
+    QStringList expandArgs(const QStringList &args) const;
+
+    Loader m_load;
+    QString m_file; ///< the CMakeLists.txt being executed
+    QString m_dir;  ///< its folder, relative to the workspace root
+    QHash<QString, Function> m_functions;
+    QHash<QString, QString> m_vars;
+    QHash<QString, QStringList> m_targetSources; ///< target -> workspace-relative sources
+    QList<Executable> m_executables;
+    QList<Executable> m_plugins; ///< registrations, linked to target sources at the end
+};
+
+} // namespace rosarch

@@ -1,0 +1,229 @@
+#include "nodeanalyzer.h"
+#include "cppnodeanalyzer.h"
+#include "pythonnodeanalyzer.h"
+#include "workspacescanner.h"
+
+#include <QHash>
+#include <QSet>
+
+#include <algorithm>
+
+namespace rosarch {
+
+namespace {
+
+QString lastSegment(const QString &qualified)
+{
+    QString s = qualified;
+    const qsizetype cpp = s.lastIndexOf(QLatin1String("::"));
+    if (cpp >= 0)
+        s = s.mid(cpp + 2);
+    const qsizetype py = s.lastIndexOf(QLatin1Char('.'));
+    if (py >= 0)
+        s = s.mid(py + 1);
+    return s;
+}
+
+QString stripGlobal(QString s)
+{
+    if (s.startsWith(QLatin1String("::")))
+        s.remove(0, 2);
+    return s;
+}
+
+void appendUnique(QStringList *list, const QString &value)
+{
+    if (!value.isEmpty() && !list->contains(value))
+        list->append(value);
+}
+
+/// Links nodes to the build-file executables and plugins that start them.
+class Linker
+{
+public:
+    Linker(const Workspace &ws, QList<AtomicNode> *nodes, const QList<EntryPoint> &entryPoints,
+           QList<Diagnostic> *diagnostics)
+        : m_ws(ws), m_nodes(nodes), m_diagnostics(diagnostics)
+    {
+        for (const EntryPoint &e : entryPoints)
+            m_entryPoints.insert(e.file, e);
+    }
+
+    void linkRegistration(const ComponentRegistration &r)
+    {
+        for (AtomicNode *n : byQualifiedName(r.pluginClass, QString()))
+            appendUnique(&n->plugins, stripGlobal(r.pluginClass));
+    }
+
+    void link(const RosPackage &pkg, const Executable &exe)
+    {
+        QList<AtomicNode *> targets;
+        switch (exe.kind) {
+        case Executable::Kind::ConsoleScript: targets = consoleScriptNodes(pkg, exe); break;
+        case Executable::Kind::CMakeExecutable: targets = sourceNodes(pkg, exe.sources); break;
+        case Executable::Kind::ComponentPlugin:
+            targets = byQualifiedName(exe.plugin, pkg.name);
+            for (AtomicNode *n : std::as_const(targets))
+                appendUnique(&n->plugins, stripGlobal(exe.plugin));
+            break;
+        }
+        if (exe.kind == Executable::Kind::ComponentPlugin && exe.name.isEmpty())
+            return;
+        for (AtomicNode *n : std::as_const(targets))
+            appendUnique(&n->executables, exe.name);
+        if (targets.isEmpty() && exe.kind != Executable::Kind::ComponentPlugin) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Info;
+            d.code = QStringLiteral("executable-without-node");
+            d.message = QStringLiteral("Executable '%1' of package %2 starts no node class found in the workspace.")
+                            .arg(exe.name, pkg.name);
+            d.evidence = exe.evidence;
+            m_diagnostics->append(d);
+        }
+    }
+
+private:
+    QList<AtomicNode *> byQualifiedName(const QString &qualified, const QString &preferredPackage)
+    {
+        const QString wanted = stripGlobal(qualified);
+        QList<AtomicNode *> exact, bySimpleName;
+        for (AtomicNode &n : *m_nodes) {
+            if (stripGlobal(n.qualifiedName) == wanted)
+                exact.append(&n);
+            else if (n.className == lastSegment(wanted))
+                bySimpleName.append(&n);
+        }
+        QList<AtomicNode *> found = exact.isEmpty() ? bySimpleName : exact;
+        if (found.size() > 1 && !preferredPackage.isEmpty()) {
+            QList<AtomicNode *> same;
+            for (AtomicNode *n : std::as_const(found))
+                if (n->packageName == preferredPackage)
+                    same.append(n);
+            if (!same.isEmpty())
+                found = same;
+        }
+        return found;
+    }
+
+    /// Node classes an entry point in `file` instantiates, else those defined in it.
+    QList<AtomicNode *> nodesStartedFrom(const QString &pkg, const QStringList &files,
+                                         const QString &function)
+    {
+        QList<AtomicNode *> out;
+        for (const QString &file : files) {
+            for (auto it = m_entryPoints.constFind(file); it != m_entryPoints.cend() && it.key() == file; ++it) {
+                if (!function.isEmpty() && it->function != function)
+                    continue;
+                for (const QString &cls : it->instantiatedClasses)
+                    for (AtomicNode *n : byQualifiedName(cls, pkg))
+                        if (!out.contains(n))
+                            out.append(n);
+            }
+        }
+        if (!out.isEmpty())
+            return out;
+        for (AtomicNode &n : *m_nodes) {
+            for (const QString &file : files) {
+                if (n.sourceFiles.contains(file) && (!n.procedural || function.isEmpty()) && !out.contains(&n))
+                    out.append(&n);
+            }
+        }
+        return out;
+    }
+
+    QList<AtomicNode *> sourceNodes(const RosPackage &pkg, const QStringList &sources)
+    {
+        return nodesStartedFrom(pkg.name, sources, QString());
+    }
+
+    QList<AtomicNode *> consoleScriptNodes(const RosPackage &pkg, const Executable &exe)
+    {
+        const qsizetype colon = exe.target.indexOf(QLatin1Char(':'));
+        const QString module = exe.target.left(colon);
+        const QString function = exe.target.mid(colon + 1);
+        const QString modulePath = QString(module).replace(QLatin1Char('.'), QLatin1Char('/'));
+        const QString prefix = pkg.path.isEmpty() ? QString() : pkg.path + QLatin1Char('/');
+        QStringList files;
+        for (const SourceFile &f : m_ws.files) {
+            if (f.language != SourceFile::Language::Python || !f.path.startsWith(prefix))
+                continue;
+            const QString rel = f.path.mid(prefix.size());
+            if (rel == modulePath + QStringLiteral(".py") || rel.endsWith(QLatin1Char('/') + modulePath + QStringLiteral(".py"))
+                || rel == modulePath + QStringLiteral("/__init__.py"))
+                files.append(f.path);
+        }
+        return nodesStartedFrom(pkg.name, files, function);
+    }
+
+    const Workspace &m_ws;
+    QList<AtomicNode> *m_nodes;
+    QList<Diagnostic> *m_diagnostics;
+    QMultiHash<QString, EntryPoint> m_entryPoints;
+};
+
+bool portLess(const Port &a, const Port &b)
+{
+    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column)
+           < std::tie(b.evidence.file, b.evidence.line, b.evidence.column);
+}
+
+} // namespace
+
+AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control)
+{
+    AtomicNodeList list;
+    list.workspaceRoot = workspace.root;
+    list.packages = workspace.packages;
+    list.diagnostics = workspace.diagnostics;
+
+    LanguageAnalysis analyses[] = {PythonNodeAnalyzer(workspace).analyze(control),
+                                   CppNodeAnalyzer(workspace).analyze(control)};
+    QList<EntryPoint> entryPoints;
+    QList<ComponentRegistration> registrations;
+    for (LanguageAnalysis &a : analyses) {
+        list.nodes.append(a.nodes);
+        entryPoints.append(a.entryPoints);
+        registrations.append(a.registrations);
+        list.diagnostics.append(a.diagnostics);
+    }
+    if (control.isCanceled()) {
+        list.canceled = true;
+        return list;
+    }
+
+    Linker linker(workspace, &list.nodes, entryPoints, &list.diagnostics);
+    for (const ComponentRegistration &r : std::as_const(registrations))
+        linker.linkRegistration(r);
+    for (const RosPackage &pkg : workspace.packages)
+        for (const Executable &exe : pkg.executables)
+            linker.link(pkg, exe);
+
+    std::sort(list.nodes.begin(), list.nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
+        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file)
+               < std::tie(b.packageName, b.className, b.qualifiedName, b.evidence.file);
+    });
+    int nextId = 1;
+    for (AtomicNode &n : list.nodes) {
+        n.id = QStringLiteral("arc_%1").arg(nextId++);
+        std::sort(n.executables.begin(), n.executables.end());
+        std::sort(n.plugins.begin(), n.plugins.end());
+        std::stable_sort(n.ports.begin(), n.ports.end(), portLess);
+        QHash<PortKind, int> counters;
+        for (Port &p : n.ports)
+            p.id = portIdPrefix(p.kind) + QString::number(++counters[p.kind]);
+    }
+    std::stable_sort(list.diagnostics.begin(), list.diagnostics.end(),
+                     [](const Diagnostic &a, const Diagnostic &b) {
+                         return std::tie(a.evidence.file, a.evidence.line, a.code)
+                                < std::tie(b.evidence.file, b.evidence.line, b.code);
+                     });
+    return list;
+}
+
+AtomicNodeList recoverAtomicNodes(const QString &root, const StageControl &control)
+{
+    const Workspace ws = WorkspaceScanner::scan(root, control);
+    return NodeAnalyzer::run(ws, control);
+}
+
+} // namespace rosarch

@@ -1,0 +1,193 @@
+#include "workspacescanner.h"
+#include "buildfileparser.h"
+#include "cmakelistsreader.h"
+#include "sourcereader.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSet>
+
+#include <algorithm>
+
+namespace rosarch {
+
+namespace {
+
+bool isSkippedFolder(const QString &name)
+{
+    static const QSet<QString> skipped{QStringLiteral("build"), QStringLiteral("install"),
+                                       QStringLiteral("log"), QStringLiteral("node_modules"),
+                                       QStringLiteral("__pycache__")};
+    return name.startsWith(QLatin1Char('.')) || skipped.contains(name);
+}
+
+SourceFile::Language languageOf(const QString &fileName)
+{
+    if (fileName == QLatin1String("package.xml"))
+        return SourceFile::Language::PackageXml;
+    if (fileName == QLatin1String("setup.py"))
+        return SourceFile::Language::SetupPy;
+    if (fileName == QLatin1String("setup.cfg"))
+        return SourceFile::Language::SetupCfg;
+    if (fileName == QLatin1String("CMakeLists.txt"))
+        return SourceFile::Language::CMake;
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
+    if (suffix == QLatin1String("py"))
+        return SourceFile::Language::Python;
+    static const QSet<QString> cpp{QStringLiteral("cpp"), QStringLiteral("cc"), QStringLiteral("cxx"),
+                                   QStringLiteral("hpp"), QStringLiteral("h"), QStringLiteral("hh"),
+                                   QStringLiteral("hxx"), QStringLiteral("ipp")};
+    if (cpp.contains(suffix))
+        return SourceFile::Language::Cpp;
+    return SourceFile::Language::Other;
+}
+
+class Walker
+{
+public:
+    Walker(const QString &root, const StageControl &control, Workspace *ws)
+        : m_root(root), m_control(control), m_ws(ws)
+    {
+    }
+
+    void walk(const QString &absDir, const QString &relDir)
+    {
+        if (m_control.isCanceled())
+            return;
+        const QFileInfo dirInfo(absDir);
+        const QString canonical = dirInfo.canonicalFilePath();
+        if (canonical.isEmpty() || m_visited.contains(canonical)) {
+            Diagnostic d;
+            d.code = QStringLiteral("symlink-loop");
+            d.message = canonical.isEmpty()
+                            ? QStringLiteral("Skipped %1: the folder cannot be resolved (broken link?).").arg(relDir)
+                            : QStringLiteral("Skipped %1: it links back to a folder already scanned (symlink loop or duplicate).").arg(relDir);
+            d.evidence.file = relDir;
+            m_ws->diagnostics.append(d);
+            return;
+        }
+        m_visited.insert(canonical);
+        QDir dir(absDir);
+        if (dir.exists(QStringLiteral("COLCON_IGNORE")) || dir.exists(QStringLiteral("AMENT_IGNORE")))
+            return;
+        const QFileInfoList entries = dir.entryInfoList(
+            QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System,
+            QDir::Name);
+        if (entries.isEmpty() && !dirInfo.isReadable()) {
+            Diagnostic d;
+            d.code = QStringLiteral("unreadable-folder");
+            d.message = QStringLiteral("Skipped %1: the folder cannot be read.").arg(relDir);
+            d.evidence.file = relDir;
+            m_ws->diagnostics.append(d);
+            return;
+        }
+        for (const QFileInfo &e : entries) {
+            const QString rel = relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
+            if (e.isDir()) {
+                if (!isSkippedFolder(e.fileName()))
+                    walk(e.absoluteFilePath(), rel);
+                continue;
+            }
+            if (e.isSymLink() && !e.exists()) {
+                continue; // a dangling link is not a source file
+            }
+            const SourceFile::Language lang = languageOf(e.fileName());
+            if (lang == SourceFile::Language::Other)
+                continue;
+            if (!e.isFile())
+                continue; // fifos, sockets, devices
+            SourceFile f;
+            f.path = rel;
+            f.language = lang;
+            f.size = e.size();
+            m_ws->files.append(f);
+        }
+    }
+
+private:
+    QString m_root;
+    const StageControl &m_control;
+    Workspace *m_ws;
+    QSet<QString> m_visited;
+};
+
+QString parentDir(const QString &relPath)
+{
+    const qsizetype slash = relPath.lastIndexOf(QLatin1Char('/'));
+    return slash < 0 ? QString() : relPath.left(slash);
+}
+
+} // namespace
+
+Workspace WorkspaceScanner::scan(const QString &root, const StageControl &control)
+{
+    Workspace ws;
+    const QFileInfo rootInfo(root);
+    ws.root = rootInfo.canonicalFilePath().isEmpty() ? rootInfo.absoluteFilePath()
+                                                     : rootInfo.canonicalFilePath();
+    if (!rootInfo.isDir()) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Error;
+        d.code = QStringLiteral("no-workspace");
+        d.message = QStringLiteral("%1 is not a folder.").arg(root);
+        ws.diagnostics.append(d);
+        return ws;
+    }
+    control.report(0, 0, QStringLiteral("Scanning %1").arg(ws.root));
+    Walker(ws.root, control, &ws).walk(ws.root, QString());
+    std::sort(ws.files.begin(), ws.files.end(),
+              [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
+
+    const SourceReader reader(ws.root);
+    auto load = [&](const QString &rel, QByteArray *content) {
+        if (!QFileInfo::exists(ws.absolutePath(rel)))
+            return false;
+        return reader.read(rel, content, &ws.diagnostics);
+    };
+
+    // Packages: one per package.xml; its folder owns every file below it.
+    for (const SourceFile &f : std::as_const(ws.files)) {
+        if (f.language != SourceFile::Language::PackageXml)
+            continue;
+        RosPackage pkg;
+        pkg.path = parentDir(f.path);
+        QByteArray content;
+        if (load(f.path, &content))
+            BuildFileParser::readPackageXml(content, f.path, &pkg, &ws.diagnostics);
+        if (pkg.name.isEmpty())
+            pkg.name = QFileInfo(pkg.path.isEmpty() ? ws.root : pkg.path).fileName();
+        ws.packages.append(pkg);
+    }
+    std::sort(ws.packages.begin(), ws.packages.end(),
+              [](const RosPackage &a, const RosPackage &b) { return a.name < b.name || (a.name == b.name && a.path < b.path); });
+
+    auto owner = [&](const QString &relPath) -> RosPackage * {
+        RosPackage *best = nullptr;
+        for (RosPackage &p : ws.packages) {
+            const bool inside = p.path.isEmpty() || relPath.startsWith(p.path + QLatin1Char('/'));
+            if (inside && (!best || p.path.size() > best->path.size()))
+                best = &p;
+        }
+        return best;
+    };
+    for (SourceFile &f : ws.files)
+        if (RosPackage *p = owner(f.path))
+            f.package = p->name;
+
+    // Build files at a package's root declare its executables and plugins.
+    for (RosPackage &pkg : ws.packages) {
+        const QString prefix = pkg.path.isEmpty() ? QString() : pkg.path + QLatin1Char('/');
+        QByteArray content;
+        if (load(prefix + QStringLiteral("setup.py"), &content))
+            pkg.executables.append(BuildFileParser::readSetupPy(content, prefix + QStringLiteral("setup.py"), &ws.diagnostics));
+        if (load(prefix + QStringLiteral("setup.cfg"), &content))
+            pkg.executables.append(BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
+        if (QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt")))) {
+            CMakeListsReader cmake(load);
+            pkg.executables.append(cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));
+        }
+    }
+    return ws;
+}
+
+} // namespace rosarch
