@@ -1,0 +1,205 @@
+#include "acdwriter.h"
+#include "artifactwriter.h"
+#include "atomicnodesjson.h"
+#include "testsupport.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+Evidence at(const QString &file, int line)
+{
+    return Evidence{file, line, 5, line, 40};
+}
+
+AtomicNodeList sampleList()
+{
+    AtomicNodeList list;
+    list.workspaceRoot = QStringLiteral("/ws");
+    RosPackage pkg;
+    pkg.name = QStringLiteral("demo");
+    pkg.buildType = QStringLiteral("ament_cmake");
+    pkg.path = QStringLiteral("src/demo");
+    list.packages << pkg;
+
+    AtomicNode n;
+    n.id = QStringLiteral("arc_1");
+    n.className = QStringLiteral("Talker");
+    n.qualifiedName = QStringLiteral("demo::Talker");
+    n.nodeName = QStringLiteral("talker");
+    n.packageName = QStringLiteral("demo");
+    n.headerFiles << QStringLiteral("src/demo/include/talker.hpp");
+    n.sourceFiles << QStringLiteral("src/demo/src/talker.cpp");
+    n.compileType = AtomicNode::CompileType::Cpp;
+    n.executables << QStringLiteral("talker");
+    n.plugins << QStringLiteral("demo::Talker");
+    n.baseClasses << QStringLiteral("rclcpp::Node");
+    n.evidence = at(QStringLiteral("src/demo/include/talker.hpp"), 3);
+
+    Port pub;
+    pub.id = QStringLiteral("p1");
+    pub.kind = PortKind::Publisher;
+    pub.name = QStringLiteral("chatter");
+    pub.type = QStringLiteral("std_msgs/msg/String");
+    pub.nameOrigin = NameOrigin::Parameter;
+    pub.parameter = QStringLiteral("topic");
+    pub.nameExpression = QStringLiteral("topic_");
+    pub.evidence = at(QStringLiteral("src/demo/src/talker.cpp"), 10);
+    Port sub;
+    sub.id = QStringLiteral("s1");
+    sub.kind = PortKind::Subscriber;
+    sub.name = QStringLiteral("~/in");
+    sub.type = QStringLiteral("std_msgs/msg/String");
+    sub.callback = QStringLiteral("on_in");
+    sub.evidence = at(QStringLiteral("src/demo/src/talker.cpp"), 11);
+    Port srv;
+    srv.id = QStringLiteral("ps1");
+    srv.kind = PortKind::ServiceServer;
+    srv.name = QStringLiteral("reset");
+    srv.type = QStringLiteral("std_srvs/srv/Empty");
+    srv.callback = QStringLiteral("handle_reset");
+    srv.guard = QStringLiteral("use_reset");
+    srv.guardParameter = QStringLiteral("use_reset");
+    srv.evidence = at(QStringLiteral("src/demo/src/talker.cpp"), 13);
+    Port cli;
+    cli.id = QStringLiteral("ra1");
+    cli.kind = PortKind::ActionClient;
+    cli.name = QStringLiteral("fibonacci");
+    cli.type = QStringLiteral("demo/action/Fibonacci");
+    cli.via = QStringLiteral("Helper");
+    cli.inherited = true;
+    cli.evidence = at(QStringLiteral("src/demo/src/talker.cpp"), 15);
+    n.ports << pub << sub << srv << cli;
+    list.nodes << n;
+
+    AtomicNode twin = n;
+    twin.id = QStringLiteral("arc_2");
+    twin.packageName = QString();
+    twin.ports.clear();
+    list.nodes << twin;
+    return list;
+}
+} // namespace
+
+class TestArtifacts : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void jsonHasBlueprintFieldsAndRoundTrips()
+    {
+        const AtomicNodeList list = sampleList();
+        const QByteArray json = AtomicNodesJson::write(list);
+        for (const char *field : {"\"list_packages\"", "\"package_name\"", "\"list_atomic_ros_node_classifiers\"",
+                                  "\"id\": \"arc_1\"", "\"class_name\": \"Talker\"", "\"node_name\": \"talker\"",
+                                  "\"header_file_paths\"", "\"source_file_paths\"", "\"description\"",
+                                  "\"compile_type\": \"cpp\"", "\"execution\": \"talker\"", "\"end_column\": 40"})
+            QVERIFY2(json.contains(field), field);
+
+        AtomicNodeList back;
+        QString error;
+        QVERIFY2(AtomicNodesJson::read(json, &back, &error), qPrintable(error));
+        QCOMPARE(back.nodes.size(), 2);
+        QCOMPARE(back.nodes[0].ports, list.nodes[0].ports);
+        QCOMPARE(back.nodes[0].plugins, list.nodes[0].plugins);
+        QCOMPARE(back.nodes[0].evidence, list.nodes[0].evidence);
+        QCOMPARE(back.nodes[1].packageName, QString());
+        QCOMPARE(AtomicNodesJson::write(back).size() > 0, true);
+    }
+
+    void jsonReadRejectsMalformedInput()
+    {
+        AtomicNodeList list;
+        QString error;
+        QVERIFY(!AtomicNodesJson::read("{not json", &list, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!AtomicNodesJson::read("{\"x\": 1}", &list, &error));
+        QCOMPARE(error, QStringLiteral("missing list_packages"));
+        QVERIFY(!AtomicNodesJson::read(R"({"list_packages":[{"package_name":"p","list_atomic_ros_node_classifiers":[{"ports":[{"kind":"timer"}]}]}]})",
+                                       &list, &error));
+        QVERIFY(error.contains(QStringLiteral("timer")));
+    }
+
+    void acdFollowsBlueprintNotation()
+    {
+        const QString acd = AcdWriter::write(sampleList().nodes[0]);
+        const QString expected = QStringLiteral(
+            "@startuml\n"
+            "' demo::Talker (cpp) in package demo\n"
+            "component \"<<AtomicRosNodeClassifier>>\\nTalker\" as node {\n"
+            "  portout \" \" as p1\n"
+            "  portin \"on_in\" as s1\n"
+            "}\n"
+            "  ' name from parameter 'topic'\n"
+            "frame \"p1\\nchatter\" as topic_p1 {\n"
+            "  rectangle \"**std_msgs::msg::String**\" as t_p1\n"
+            "}\n"
+            "frame \"s1\\n~/in\" as topic_s1 {\n"
+            "  rectangle \"**std_msgs::msg::String**\" as t_s1\n"
+            "}\n"
+            "  ' guard: use_reset\n"
+            "folder \"ps1\\nreset\" as srv_ps1 {\n"
+            "  rectangle \"**std_srvs::srv::Empty**\" as st_ps1\n"
+            "  rectangle \"handle_reset(...)\" as sf_ps1\n"
+            "}\n"
+            "  ' via Helper; inherited\n"
+            "folder \"ra1\\nfibonacci\" as act_ra1 {\n"
+            "  rectangle \"**demo::action::Fibonacci**\" as at_ra1\n"
+            "}\n"
+            "p1 -[#green,bold]-> topic_p1\n"
+            "topic_s1 -[#blue,bold]-> s1\n"
+            "node --0 srv_ps1\n"
+            "node --( act_ra1\n"
+            "@enduml\n");
+        QCOMPARE(acd, expected);
+    }
+
+    void fileStemsDisambiguateSharedClassNames()
+    {
+        const auto stems = AcdWriter::fileStems(sampleList());
+        QCOMPARE(stems.value(QStringLiteral("arc_1")), QStringLiteral("demo.Talker"));
+        QCOMPARE(stems.value(QStringLiteral("arc_2")), QStringLiteral("Talker"));
+    }
+
+    void writerProducesFixedLayoutAndDropsStaleDiagrams()
+    {
+        QTemporaryDir dir;
+        QDir(dir.path()).mkpath(QStringLiteral("acd"));
+        QFile stale(dir.filePath(QStringLiteral("acd/Old.puml")));
+        QVERIFY(stale.open(QIODevice::WriteOnly));
+        stale.close();
+        AtomicNodeList list = sampleList();
+        Diagnostic d;
+        d.code = QStringLiteral("syntax-error");
+        d.message = QStringLiteral("broken");
+        d.evidence = at(QStringLiteral("x.py"), 2);
+        list.diagnostics << d;
+        QStringList written;
+        QString error;
+        QVERIFY2(ArtifactWriter::writeAll(list, dir.path(), &written, &error), qPrintable(error));
+        QCOMPARE(written.size(), 4);
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("atomic_nodes.json"))));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("acd/Old.puml"))));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("acd/demo.Talker.puml"))));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("acd/Talker.puml"))));
+        const QByteArray diag = test::readFile(dir.filePath(QStringLiteral("diagnostics.json")));
+        QVERIFY(diag.contains("\"code\": \"syntax-error\""));
+        QVERIFY(diag.contains("\"line\": 2"));
+    }
+
+    void writerReportsUnwritableFolder()
+    {
+        QTemporaryDir dir;
+        QFile blocker(dir.filePath(QStringLiteral("file")));
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        blocker.close();
+        QStringList written;
+        QString error;
+        QVERIFY(!ArtifactWriter::writeAll(sampleList(), dir.filePath(QStringLiteral("file/sub")), &written, &error));
+        QVERIFY(error.contains(QStringLiteral("Cannot create")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestArtifacts)
+#include "tst_artifacts.moc"

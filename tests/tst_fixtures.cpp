@@ -1,0 +1,100 @@
+// Data-driven: every tests/data/<case>/ with expected/atomic_nodes.json is a row. The case's
+// workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
+// Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
+#include "acdwriter.h"
+#include "atomicnodesjson.h"
+#include "nodeanalyzer.h"
+#include "testsupport.h"
+
+#include <QDirIterator>
+#include <QtTest>
+
+using namespace rosarch;
+
+class TestFixtures : public QObject
+{
+    Q_OBJECT
+private:
+    static QString workspaceOf(const QString &caseDir)
+    {
+        const QByteArray pointer = test::readFile(QDir(caseDir).filePath(QStringLiteral("workspace"))).trimmed();
+        if (!pointer.isEmpty())
+            return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QString::fromUtf8(pointer));
+        return QDir(caseDir).filePath(QStringLiteral("ws"));
+    }
+
+    static void compareOrUpdate(const QByteArray &actual, const QString &expectedPath)
+    {
+        if (qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED")) {
+            QDir().mkpath(QFileInfo(expectedPath).path());
+            QFile f(expectedPath);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(actual);
+            return;
+        }
+        const QByteArray expected = test::readFile(expectedPath);
+        if (actual != expected) {
+            const QString actualPath = QDir::temp().filePath(QFileInfo(expectedPath).fileName() + QStringLiteral(".actual"));
+            QFile f(actualPath);
+            if (f.open(QIODevice::WriteOnly))
+                f.write(actual);
+            QFAIL(qPrintable(QStringLiteral("%1 differs; actual output written to %2 (diff them)")
+                                 .arg(expectedPath, actualPath)));
+        }
+    }
+
+private Q_SLOTS:
+    void recovery_data()
+    {
+        QTest::addColumn<QString>("caseDir");
+        QDir data(test::dataDir());
+        const QStringList cases = data.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
+        int rows = 0;
+        for (const QString &c : cases) {
+            if (!QFileInfo::exists(data.filePath(c + QStringLiteral("/expected/atomic_nodes.json"))))
+                continue;
+            QTest::newRow(qPrintable(c)) << data.filePath(c);
+            ++rows;
+        }
+        QVERIFY2(rows > 0, "no fixture cases found");
+    }
+
+    void recovery()
+    {
+        QFETCH(QString, caseDir);
+        const QString ws = workspaceOf(caseDir);
+        QVERIFY2(QFileInfo(ws).isDir(), qPrintable(ws));
+        const AtomicNodeList list = recoverAtomicNodes(ws);
+        QVERIFY(!list.canceled);
+        compareOrUpdate(AtomicNodesJson::write(list), QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
+
+        // Expected ACDs, when the case has them, must match file by file.
+        const QDir acdDir(QDir(caseDir).filePath(QStringLiteral("expected/acd")));
+        if (!acdDir.exists())
+            return;
+        const QMap<QString, QString> stems = AcdWriter::fileStems(list);
+        QStringList produced;
+        for (const AtomicNode &n : list.nodes) {
+            const QString name = stems.value(n.id) + QStringLiteral(".puml");
+            produced << name;
+            compareOrUpdate(AcdWriter::write(n).toUtf8(), acdDir.filePath(name));
+        }
+        if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED")) {
+            QStringList expected = acdDir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name);
+            produced.sort();
+            QCOMPARE(produced, expected);
+        }
+    }
+
+    void outputIsDeterministic()
+    {
+        const QString ws = QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+        const QByteArray first = AtomicNodesJson::write(recoverAtomicNodes(ws));
+        const QByteArray second = AtomicNodesJson::write(recoverAtomicNodes(ws));
+        QCOMPARE(first, second);
+        QVERIFY(first.contains("\"list_packages\""));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFixtures)
+#include "tst_fixtures.moc"
