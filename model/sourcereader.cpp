@@ -25,6 +25,9 @@ bool SourceReader::read(const QString &relativePath, QByteArray *content,
     };
     QFile file(QDir(m_root).filePath(relativePath));
     const QFileInfo info(file);
+    if (info.exists() && !info.isFile())
+        return fail(QStringLiteral("unreadable-file"),
+                    QStringLiteral("Skipped: %1 is not a regular file.").arg(relativePath));
     if (info.size() > m_maxBytes)
         return fail(QStringLiteral("file-too-large"),
                     QStringLiteral("Skipped: %1 is %2 MB, larger than the %3 MB analysis limit.")

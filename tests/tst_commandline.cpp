@@ -1,0 +1,131 @@
+// End-to-end: the real `rosarch` executable, headless, on fixture workspaces.
+#include "testsupport.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+struct Run
+{
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runRosarch(const QStringList &args)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY")); // headless commands must not need one
+    env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(ROSARCH_BINARY), args);
+    Run r;
+    if (!p.waitForFinished(120000))
+        return r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QString exampleWorkspace()
+{
+    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+}
+} // namespace
+
+class TestCommandLine : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void recoverWritesArtifacts()
+    {
+        QTemporaryDir out;
+        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path()});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QStringLiteral("Recovered")));
+
+        const QByteArray json = rosarch::test::readFile(out.filePath(QStringLiteral("atomic_nodes.json")));
+        const QJsonObject root = QJsonDocument::fromJson(json).object();
+        const QJsonArray packages = root.value(QStringLiteral("list_packages")).toArray();
+        QCOMPARE(packages.size(), 4);
+        int nodes = 0;
+        QStringList classes;
+        for (const auto &p : packages)
+            for (const auto &n : p.toObject().value(QStringLiteral("list_atomic_ros_node_classifiers")).toArray()) {
+                ++nodes;
+                classes << n.toObject().value(QStringLiteral("class_name")).toString();
+            }
+        QVERIFY2(nodes >= 7, qPrintable(classes.join(',')));
+        QVERIFY(classes.contains(QStringLiteral("LidarFilter")));
+        QVERIFY(classes.contains(QStringLiteral("MissionPlanner")));
+        QVERIFY(!classes.contains(QStringLiteral("TaskNode")));
+        QVERIFY(!classes.contains(QStringLiteral("SafetyMonitor")));
+
+        const QDir acd(out.filePath(QStringLiteral("acd")));
+        QCOMPARE(acd.entryList({QStringLiteral("*.puml")}, QDir::Files).size(), nodes);
+        QVERIFY(acd.exists(QStringLiteral("LidarFilter.puml")));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("diagnostics.json"))));
+    }
+
+    void errorsInTheWorkspaceGiveExitCodeOne()
+    {
+        QTemporaryDir ws;
+        QDir(ws.path()).mkpath(QStringLiteral("pkg/pkg"));
+        QFile xml(ws.filePath(QStringLiteral("pkg/package.xml")));
+        QVERIFY(xml.open(QIODevice::WriteOnly));
+        xml.write("<package><name>pkg</name><export><build_type>ament_python</build_type></export></package>");
+        xml.close();
+        QFile broken(ws.filePath(QStringLiteral("pkg/pkg/broken.py")));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("from rclpy.node import Node\n\nclass Broken(Node:\n    def __init__(self):\n");
+        broken.close();
+        QTemporaryDir out;
+        const Run r = runRosarch({QStringLiteral("recover"), ws.path(), QStringLiteral("--out"), out.path()});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("pkg/pkg/broken.py:3")), qPrintable(r.err));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("atomic_nodes.json"))));
+    }
+
+    void usageErrorsGiveExitCodeTwo()
+    {
+        QCOMPARE(runRosarch({QStringLiteral("recover")}).exitCode, 2);
+        QCOMPARE(runRosarch({QStringLiteral("recover"), exampleWorkspace()}).exitCode, 2);
+        const Run missing = runRosarch({QStringLiteral("recover"), QStringLiteral("/no/such/ws"), QStringLiteral("--out"), QStringLiteral("/tmp/x")});
+        QCOMPARE(missing.exitCode, 2);
+        QVERIFY(missing.err.contains(QStringLiteral("Not a folder")));
+        const Run unknown = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--bogus")});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY(unknown.err.contains(QStringLiteral("bogus")));
+    }
+
+    void helpAndVersion()
+    {
+        const Run help = runRosarch({QStringLiteral("--help")});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY(help.out.contains(QStringLiteral("rosarch recover <workspace> --out <dir>")));
+        const Run version = runRosarch({QStringLiteral("--version")});
+        QCOMPARE(version.exitCode, 0);
+        QCOMPARE(version.out.trimmed(), QStringLiteral("rosarch " ROSARCH_VERSION));
+    }
+
+    void unwritableOutputIsReported()
+    {
+        QTemporaryDir dir;
+        QFile blocker(dir.filePath(QStringLiteral("file")));
+        QVERIFY(blocker.open(QIODevice::WriteOnly));
+        blocker.close();
+        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"),
+                                  dir.filePath(QStringLiteral("file/out"))});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains(QStringLiteral("Cannot create")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCommandLine)
+#include "tst_commandline.moc"
