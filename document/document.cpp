@@ -7,6 +7,7 @@ Document::Document(QObject *parent) : QObject(parent) {}
 
 void Document::setAtomicNodes(AtomicNodeList nodes)
 {
+    Q_EMIT modelAboutToBeReset();
     m_undoStack.clear();
     m_nodes = std::move(nodes);
     Q_EMIT modelReset();

@@ -26,6 +26,8 @@ public:
     void setNodeDescription(const QString &nodeId, const QString &description);
 
 Q_SIGNALS:
+    /// The whole model is about to be replaced; item models begin their reset here.
+    void modelAboutToBeReset();
     /// The whole model was replaced (a stage finished).
     void modelReset();
     /// One node changed (an edit, its undo or redo).

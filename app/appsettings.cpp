@@ -1,0 +1,131 @@
+#include "appsettings.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+
+namespace rosarch {
+
+namespace {
+const QString kRecent = QStringLiteral("workspaces/recent");
+const QString kLast = QStringLiteral("workspaces/last");
+const QString kExport = QStringLiteral("workspaces/lastExportFolder");
+const QString kGeometry = QStringLiteral("window/geometry");
+const QString kState = QStringLiteral("window/state");
+const QString kSelWorkspace = QStringLiteral("session/workspace");
+const QString kSelNode = QStringLiteral("session/node");
+const QString kSelPort = QStringLiteral("session/port");
+
+QString normalized(const QString &path)
+{
+    const QFileInfo info(path);
+    const QString canonical = info.canonicalFilePath();
+    return QDir::cleanPath(canonical.isEmpty() ? info.absoluteFilePath() : canonical);
+}
+} // namespace
+
+AppSettings::AppSettings()
+{
+    const QString organization = QCoreApplication::organizationName();
+    m_settings = std::make_unique<QSettings>(organization.isEmpty() ? QStringLiteral("rosarch")
+                                                                    : organization,
+                                             QCoreApplication::applicationName());
+}
+
+AppSettings::~AppSettings() = default;
+
+QStringList AppSettings::recentWorkspaces()
+{
+    const QStringList stored = m_settings->value(kRecent).toStringList();
+    QStringList existing;
+    for (const QString &path : stored)
+        if (QFileInfo(path).isDir() && !existing.contains(path))
+            existing.append(path);
+    if (existing.size() > kMaxRecent)
+        existing.resize(kMaxRecent);
+    if (existing != stored)
+        m_settings->setValue(kRecent, existing);
+    return existing;
+}
+
+void AppSettings::addRecentWorkspace(const QString &path)
+{
+    const QString p = normalized(path);
+    QStringList list = m_settings->value(kRecent).toStringList();
+    list.removeAll(p);
+    list.prepend(p);
+    if (list.size() > kMaxRecent)
+        list.resize(kMaxRecent);
+    m_settings->setValue(kRecent, list);
+}
+
+void AppSettings::removeRecentWorkspace(const QString &path)
+{
+    QStringList list = m_settings->value(kRecent).toStringList();
+    list.removeAll(path);
+    list.removeAll(normalized(path));
+    m_settings->setValue(kRecent, list);
+}
+
+void AppSettings::clearRecentWorkspaces()
+{
+    m_settings->remove(kRecent);
+}
+
+QString AppSettings::lastWorkspace() const
+{
+    return m_settings->value(kLast).toString();
+}
+
+void AppSettings::setLastWorkspace(const QString &path)
+{
+    m_settings->setValue(kLast, normalized(path));
+}
+
+QString AppSettings::lastExportFolder() const
+{
+    return m_settings->value(kExport).toString();
+}
+
+void AppSettings::setLastExportFolder(const QString &path)
+{
+    m_settings->setValue(kExport, path);
+}
+
+QByteArray AppSettings::windowGeometry() const
+{
+    return m_settings->value(kGeometry).toByteArray();
+}
+
+void AppSettings::setWindowGeometry(const QByteArray &geometry)
+{
+    m_settings->setValue(kGeometry, geometry);
+}
+
+QByteArray AppSettings::windowState() const
+{
+    return m_settings->value(kState).toByteArray();
+}
+
+void AppSettings::setWindowState(const QByteArray &state)
+{
+    m_settings->setValue(kState, state);
+}
+
+void AppSettings::selection(const QString &workspace, QString *nodeId, QString *portId) const
+{
+    const bool same = m_settings->value(kSelWorkspace).toString() == normalized(workspace);
+    *nodeId = same ? m_settings->value(kSelNode).toString() : QString();
+    *portId = same ? m_settings->value(kSelPort).toString() : QString();
+}
+
+void AppSettings::setSelection(const QString &workspace, const QString &nodeId,
+                               const QString &portId)
+{
+    m_settings->setValue(kSelWorkspace, normalized(workspace));
+    m_settings->setValue(kSelNode, nodeId);
+    m_settings->setValue(kSelPort, portId);
+}
+
+} // namespace rosarch

@@ -1,0 +1,445 @@
+#include "atomicnodemodel.h"
+#include "atomicnodetext.h"
+#include "document.h"
+#include "icons.h"
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QPalette>
+
+#include <algorithm>
+#include <limits>
+
+namespace rosarch {
+
+namespace {
+
+// internalId layout: the low two bits say what the row is, the rest locates its parent.
+constexpr quintptr kPackageTag = 0;
+constexpr quintptr kNodeTag = 1;
+constexpr quintptr kPortTag = 2;
+
+quintptr tagOf(const QModelIndex &index)
+{
+    return index.internalId() & 3;
+}
+quintptr payloadOf(const QModelIndex &index)
+{
+    return index.internalId() >> 2;
+}
+quintptr makeId(quintptr payload, quintptr tag)
+{
+    return (payload << 2) | tag;
+}
+
+/// Lines an evidence covers; a missing end means the start line only.
+bool covers(const Evidence &e, const QString &file, int line, int *span)
+{
+    if (!e.isValid() || e.file != file)
+        return false;
+    const int end = std::max(e.endLine, e.line);
+    if (line < e.line || line > end)
+        return false;
+    *span = end - e.line;
+    return true;
+}
+
+} // namespace
+
+AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
+    : QAbstractItemModel(parent), m_document(document)
+{
+    connect(document, &Document::modelAboutToBeReset, this, [this] { beginResetModel(); });
+    connect(document, &Document::modelReset, this, [this] {
+        rebuild();
+        endResetModel();
+    });
+    connect(document, &Document::nodeChanged, this, &AtomicNodeModel::onNodeChanged);
+    rebuild();
+}
+
+void AtomicNodeModel::rebuild()
+{
+    const AtomicNodeList &list = m_document->atomicNodes();
+    m_packages.clear();
+    m_nodeLocations.clear();
+    for (int i = 0; i < list.packages.size(); ++i)
+        m_packages.append({list.packages[i].name, i, {}});
+    for (const AtomicNode &n : list.nodes) {
+        const bool known =
+            std::any_of(m_packages.cbegin(), m_packages.cend(),
+                        [&](const PackageRow &p) { return p.name == n.packageName; });
+        if (!known)
+            m_packages.append({n.packageName, -1, {}});
+    }
+    std::stable_sort(m_packages.begin(), m_packages.end(),
+                     [](const PackageRow &a, const PackageRow &b) { return a.name < b.name; });
+
+    m_nodeLocations.resize(list.nodes.size());
+    for (int p = 0; p < m_packages.size(); ++p) {
+        for (int i = 0; i < list.nodes.size(); ++i) {
+            if (list.nodes[i].packageName == m_packages[p].name) {
+                m_nodeLocations[i] = {p, int(m_packages[p].nodes.size())};
+                m_packages[p].nodes.append(i);
+            }
+        }
+    }
+}
+
+void AtomicNodeModel::onNodeChanged(const QString &nodeId)
+{
+    const QModelIndex first = nodeIndex(nodeId, 0);
+    if (first.isValid())
+        Q_EMIT dataChanged(first, first.siblingAtColumn(ColumnCount - 1));
+}
+
+const RosPackage *AtomicNodeModel::package(const PackageRow &row) const
+{
+    return row.package >= 0 ? &m_document->atomicNodes().packages.at(row.package) : nullptr;
+}
+
+QModelIndex AtomicNodeModel::index(int row, int column, const QModelIndex &parent) const
+{
+    if (row < 0 || column < 0 || column >= ColumnCount || row >= rowCount(parent))
+        return {};
+    if (!parent.isValid())
+        return createIndex(row, column, makeId(0, kPackageTag));
+    switch (tagOf(parent)) {
+    case kPackageTag:
+        return createIndex(row, column, makeId(quintptr(parent.row()), kNodeTag));
+    case kNodeTag:
+        return createIndex(row, column, makeId(quintptr(nodeListIndex(parent)), kPortTag));
+    default:
+        return {};
+    }
+}
+
+QModelIndex AtomicNodeModel::parent(const QModelIndex &child) const
+{
+    if (!child.isValid())
+        return {};
+    switch (tagOf(child)) {
+    case kNodeTag:
+        return createIndex(int(payloadOf(child)), 0, makeId(0, kPackageTag));
+    case kPortTag: {
+        const NodeLocation loc = m_nodeLocations.value(int(payloadOf(child)));
+        return createIndex(loc.row, 0, makeId(quintptr(loc.packageRow), kNodeTag));
+    }
+    default:
+        return {};
+    }
+}
+
+int AtomicNodeModel::rowCount(const QModelIndex &parent) const
+{
+    if (!parent.isValid())
+        return int(m_packages.size());
+    if (parent.column() != 0)
+        return 0;
+    switch (tagOf(parent)) {
+    case kPackageTag:
+        return int(m_packages.value(parent.row()).nodes.size());
+    case kNodeTag: {
+        const AtomicNode *n = node(parent);
+        return n ? int(n->ports.size()) : 0;
+    }
+    default:
+        return 0;
+    }
+}
+
+int AtomicNodeModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
+
+int AtomicNodeModel::nodeListIndex(const QModelIndex &index) const
+{
+    if (!index.isValid())
+        return -1;
+    if (tagOf(index) == kPortTag)
+        return int(payloadOf(index));
+    if (tagOf(index) == kNodeTag) {
+        const int packageRow = int(payloadOf(index));
+        if (packageRow >= m_packages.size())
+            return -1;
+        return m_packages[packageRow].nodes.value(index.row(), -1);
+    }
+    return -1;
+}
+
+AtomicNodeModel::ItemKind AtomicNodeModel::kind(const QModelIndex &index) const
+{
+    if (!index.isValid() || index.model() != this)
+        return ItemKind::None;
+    switch (tagOf(index)) {
+    case kPackageTag:
+        return ItemKind::Package;
+    case kNodeTag:
+        return ItemKind::Node;
+    case kPortTag:
+        return ItemKind::Port;
+    default:
+        return ItemKind::None;
+    }
+}
+
+const AtomicNode *AtomicNodeModel::node(const QModelIndex &index) const
+{
+    const int i = nodeListIndex(index);
+    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    return i >= 0 && i < nodes.size() ? &nodes[i] : nullptr;
+}
+
+const Port *AtomicNodeModel::port(const QModelIndex &index) const
+{
+    if (kind(index) != ItemKind::Port)
+        return nullptr;
+    const AtomicNode *n = node(index);
+    return n && index.row() < n->ports.size() ? &n->ports[index.row()] : nullptr;
+}
+
+Evidence AtomicNodeModel::evidence(const QModelIndex &index) const
+{
+    switch (kind(index)) {
+    case ItemKind::Package:
+        if (const RosPackage *p = package(m_packages.value(index.row())))
+            return p->evidence;
+        return {};
+    case ItemKind::Node:
+        return node(index) ? node(index)->evidence : Evidence();
+    case ItemKind::Port:
+        return port(index) ? port(index)->evidence : Evidence();
+    case ItemKind::None:
+        break;
+    }
+    return {};
+}
+
+QModelIndex AtomicNodeModel::packageIndex(const QString &name, int column) const
+{
+    for (int p = 0; p < m_packages.size(); ++p)
+        if (m_packages[p].name == name)
+            return index(p, column);
+    return {};
+}
+
+QModelIndex AtomicNodeModel::nodeIndex(const QString &nodeId, int column) const
+{
+    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    for (int i = 0; i < nodes.size() && i < m_nodeLocations.size(); ++i) {
+        if (nodes[i].id == nodeId) {
+            const NodeLocation loc = m_nodeLocations[i];
+            return createIndex(loc.row, column, makeId(quintptr(loc.packageRow), kNodeTag));
+        }
+    }
+    return {};
+}
+
+QModelIndex AtomicNodeModel::portIndex(const QString &nodeId, const QString &portId,
+                                       int column) const
+{
+    const QModelIndex parentIndex = nodeIndex(nodeId);
+    const AtomicNode *n = node(parentIndex);
+    if (!n)
+        return {};
+    for (int r = 0; r < n->ports.size(); ++r)
+        if (n->ports[r].id == portId)
+            return index(r, column, parentIndex);
+    return {};
+}
+
+QModelIndex AtomicNodeModel::indexAt(const QString &file, int line) const
+{
+    QModelIndex best;
+    int bestSpan = std::numeric_limits<int>::max();
+    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    for (const AtomicNode &n : nodes) {
+        int span = 0;
+        // Strictly smaller wins, so on equal spans a node's port (checked first) stays.
+        for (const Port &p : n.ports) {
+            if (covers(p.evidence, file, line, &span) && span < bestSpan) {
+                bestSpan = span;
+                best = portIndex(n.id, p.id);
+            }
+        }
+        if (covers(n.evidence, file, line, &span) && span < bestSpan) {
+            bestSpan = span;
+            best = nodeIndex(n.id);
+        }
+    }
+    return best;
+}
+
+QVariant AtomicNodeModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.model() != this)
+        return {};
+    switch (kind(index)) {
+    case ItemKind::Package:
+        if (index.row() < m_packages.size())
+            return packageData(m_packages[index.row()], index.column(), role);
+        return {};
+    case ItemKind::Node:
+        if (const AtomicNode *n = node(index))
+            return nodeData(*n, index.column(), role);
+        return {};
+    case ItemKind::Port:
+        if (const Port *p = port(index))
+            return portData(*node(index), *p, index.column(), role);
+        return {};
+    case ItemKind::None:
+        break;
+    }
+    return {};
+}
+
+bool AtomicNodeModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (role != Qt::EditRole || kind(index) != ItemKind::Node ||
+        index.column() != DescriptionColumn)
+        return false;
+    const AtomicNode *n = node(index);
+    if (!n)
+        return false;
+    // The Document pushes an undoable command and tells us through nodeChanged.
+    m_document->setNodeDescription(n->id, value.toString());
+    return true;
+}
+
+Qt::ItemFlags AtomicNodeModel::flags(const QModelIndex &index) const
+{
+    if (!index.isValid())
+        return Qt::NoItemFlags;
+    Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
+    if (kind(index) == ItemKind::Node && index.column() == DescriptionColumn)
+        f |= Qt::ItemIsEditable;
+    if (kind(index) == ItemKind::Port)
+        f |= Qt::ItemNeverHasChildren;
+    return f;
+}
+
+QVariant AtomicNodeModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case NameColumn:
+        return tr("Name");
+    case TypeColumn:
+        return tr("Type");
+    case DetailsColumn:
+        return tr("Details");
+    case DescriptionColumn:
+        return tr("Description");
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::packageData(const PackageRow &row, int column, int role) const
+{
+    const RosPackage *pkg = package(row);
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return row.name.isEmpty() ? tr("(outside any package)") : row.name;
+        case TypeColumn:
+            return pkg ? pkg->buildType : QString();
+        case DetailsColumn: {
+            QString details =
+                row.nodes.size() == 1 ? tr("1 node") : tr("%1 nodes").arg(row.nodes.size());
+            if (pkg && !pkg->path.isEmpty())
+                details += QStringLiteral(" · ") + pkg->path;
+            return details;
+        }
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::package() : QVariant();
+    case Qt::ForegroundRole:
+        // A package without nodes (interfaces, bringup) is context, not content.
+        if (row.nodes.isEmpty())
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        return {};
+    case Qt::ToolTipRole:
+        return AtomicNodeText::packageToolTip(row.name, pkg, int(row.nodes.size()));
+    case KindRole:
+        return int(ItemKind::Package);
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole:
+        switch (column) {
+        case NameColumn:
+            return node.className;
+        case TypeColumn:
+            if (node.procedural)
+                return tr("procedural node");
+            return node.baseClasses.join(QStringLiteral(", "));
+        case DetailsColumn:
+            return AtomicNodeText::nodeDetails(node);
+        case DescriptionColumn:
+            return node.description;
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::node() : QVariant();
+    case Qt::ToolTipRole:
+        return AtomicNodeText::nodeToolTip(node);
+    case KindRole:
+        return int(ItemKind::Node);
+    case NodeIdRole:
+        return node.id;
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int column,
+                                   int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return port.name.isEmpty() ? port.nameExpression : port.name;
+        case TypeColumn:
+            return port.type;
+        case DetailsColumn:
+            return AtomicNodeText::portDetails(port);
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::port(port.kind) : QVariant();
+    case Qt::FontRole:
+        if (column == NameColumn && !port.isResolved()) {
+            QFont f;
+            f.setItalic(true);
+            return f;
+        }
+        return {};
+    case Qt::ToolTipRole:
+        return AtomicNodeText::portToolTip(node, port);
+    case KindRole:
+        return int(ItemKind::Port);
+    case NodeIdRole:
+        return node.id;
+    case PortIdRole:
+        return port.id;
+    default:
+        return {};
+    }
+}
+
+} // namespace rosarch

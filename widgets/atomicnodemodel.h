@@ -1,0 +1,94 @@
+#pragma once
+
+#include "atomicnode.h"
+#include "evidence.h"
+
+#include <QAbstractItemModel>
+#include <QList>
+
+namespace rosarch {
+
+class Document;
+struct RosPackage;
+
+/// The List of Atomic ROS Nodes as a tree: package → node → port. Reads the Document;
+/// editing a node's description pushes an undoable command instead of changing data here.
+class AtomicNodeModel : public QAbstractItemModel
+{
+    Q_OBJECT
+public:
+    enum Column
+    {
+        NameColumn,
+        TypeColumn,
+        DetailsColumn,
+        DescriptionColumn,
+        ColumnCount
+    };
+    enum class ItemKind
+    {
+        None,
+        Package,
+        Node,
+        Port
+    };
+    enum Role
+    {
+        KindRole = Qt::UserRole + 1, ///< int(ItemKind)
+        NodeIdRole,                  ///< "arc_3" for node and port rows
+        PortIdRole,                  ///< "p1" for port rows
+    };
+
+    explicit AtomicNodeModel(Document *document, QObject *parent = nullptr);
+
+    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
+    QModelIndex parent(const QModelIndex &child) const override;
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
+
+    ItemKind kind(const QModelIndex &index) const;
+    /// The node of a node row, or the owning node of a port row.
+    const AtomicNode *node(const QModelIndex &index) const;
+    const Port *port(const QModelIndex &index) const;
+    /// Where the row's element comes from (invalid for rows without evidence).
+    Evidence evidence(const QModelIndex &index) const;
+
+    QModelIndex packageIndex(const QString &name, int column = 0) const;
+    QModelIndex nodeIndex(const QString &nodeId, int column = 0) const;
+    QModelIndex portIndex(const QString &nodeId, const QString &portId, int column = 0) const;
+    /// The innermost element whose evidence covers file:line (a port before its node).
+    QModelIndex indexAt(const QString &file, int line) const;
+
+private:
+    struct PackageRow
+    {
+        QString name;
+        int package = -1; ///< index into AtomicNodeList::packages, -1 when only nodes name it
+        QList<int> nodes; ///< indexes into AtomicNodeList::nodes
+    };
+    struct NodeLocation
+    {
+        int packageRow = 0;
+        int row = 0;
+    };
+
+    void rebuild();
+    void onNodeChanged(const QString &nodeId);
+    const RosPackage *package(const PackageRow &row) const;
+    int nodeListIndex(const QModelIndex &index) const;
+
+    QVariant packageData(const PackageRow &row, int column, int role) const;
+    QVariant nodeData(const AtomicNode &node, int column, int role) const;
+    QVariant portData(const AtomicNode &node, const Port &port, int column, int role) const;
+
+    Document *m_document;
+    QList<PackageRow> m_packages;
+    QList<NodeLocation> m_nodeLocations; ///< parallel to AtomicNodeList::nodes
+};
+
+} // namespace rosarch

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "atomicnode.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace rosarch {
+
+struct RosPackage;
+
+/// The words the node tree shows: details columns and tooltips that say what an element
+/// is and where it comes from (file:line).
+class AtomicNodeText
+{
+    Q_DECLARE_TR_FUNCTIONS(rosarch::AtomicNodeText)
+public:
+    /// "Publisher", "Service server", ... for people.
+    static QString portKindLabel(PortKind kind);
+    /// "node: talker · exec: talker · Python"
+    static QString nodeDetails(const AtomicNode &node);
+    /// "callback: on_echo · param: echo_topic · guard: use_echo"
+    static QString portDetails(const Port &port);
+    /// `pkg` may be null for a package named only by node sources.
+    static QString packageToolTip(const QString &name, const RosPackage *pkg, int nodeCount);
+    static QString nodeToolTip(const AtomicNode &node);
+    static QString portToolTip(const AtomicNode &node, const Port &port);
+};
+
+} // namespace rosarch

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "port.h"
+
+#include <QIcon>
+
+namespace rosarch {
+
+/// The icons of the views (from the application resources, `:/icons/`), cached.
+/// The resources live in rosarch_app; callers in other executables run Q_INIT_RESOURCE.
+class Icons
+{
+public:
+    static QIcon application();
+    static QIcon package();
+    static QIcon node();
+    static QIcon port(PortKind kind);
+    static QIcon severity(Diagnostic::Severity severity);
+    static QIcon diagnostics();
+    static QIcon open();
+    static QIcon run();
+    static QIcon stop();
+
+private:
+    static QIcon fromResource(const char *name);
+};
+
+} // namespace rosarch
