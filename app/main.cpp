@@ -1,3 +1,4 @@
+#include "appsettings.h"
 #include "commandline.h"
 #include "mainwindow.h"
 
@@ -33,7 +34,10 @@ int main(int argc, char **argv)
     rosarch::MainWindow window;
     window.show();
     const QStringList args = app.arguments();
-    const QString workspace = args.size() > 1 ? args.at(1) : QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE);
+    // A path on the command line, else the last session's workspace, else the example.
+    QString workspace = args.size() > 1 ? args.at(1) : rosarch::AppSettings().lastWorkspace();
+    if (args.size() <= 1 && (workspace.isEmpty() || !QDir(workspace).exists()))
+        workspace = QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE);
     window.openWorkspace(QDir(workspace).absolutePath());
     return app.exec();
 }
