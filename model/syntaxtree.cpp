@@ -19,6 +19,7 @@ SyntaxTree::~SyntaxTree() = default;
 SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
 {
     SyntaxTree tree;
+    tree.m_grammar = grammar;
     tree.m_source = std::move(source);
     tree.m_file = std::move(file);
     TSParser *parser = ts_parser_new();
@@ -93,7 +94,8 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
             return false;
         if (ts::is(n, "ERROR") || ts_node_is_missing(n)) {
             Diagnostic d;
-            d.severity = Diagnostic::Severity::Warning;
+            d.severity = m_grammar == Grammar::Python ? Diagnostic::Severity::Error
+                                                      : Diagnostic::Severity::Warning;
             d.code = QStringLiteral("syntax-error");
             d.evidence = evidence(n);
             d.message = ts_node_is_missing(n)

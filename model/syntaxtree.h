@@ -39,12 +39,14 @@ public:
     std::string_view view(TSNode node) const;
     /// The node's range as evidence in this file (1-based lines and columns).
     Evidence evidence(TSNode node) const;
-    /// One diagnostic per ERROR / MISSING region, at most `limit`.
+    /// One diagnostic per ERROR / MISSING region, at most `limit`. Errors in Python are
+    /// reported as errors; in C++ as warnings, since unexpanded macros confuse any parser.
     QList<Diagnostic> syntaxErrors(int limit = 5) const;
 
 private:
     SyntaxTree() = default;
     struct TreeDeleter { void operator()(TSTree *t) const; };
+    Grammar m_grammar = Grammar::Python;
     QByteArray m_source;
     QString m_file;
     std::unique_ptr<TSTree, TreeDeleter> m_tree;

@@ -1,0 +1,386 @@
+#include "pythonmodulereader.h"
+
+#include "pythonsyntax.h"
+
+namespace rosarch {
+
+namespace {
+// Calls that build a node without a class of its own, and whether it is a lifecycle node.
+const std::pair<const char *, bool> kNodeFactories[] = {
+    {"rclpy.create_node", false},
+    {"rclpy.node.Node", false},
+    {"rclpy.lifecycle.Node", true},
+    {"rclpy.lifecycle.LifecycleNode", true},
+    {"rclpy.lifecycle.node.LifecycleNode", true},
+};
+
+bool skipInScope(TSNode n, TSNode body, bool moduleLevel)
+{
+    if (ts_node_eq(n, body))
+        return false;
+    const std::string_view t = ts::type(n);
+    return t == "class_definition" || (moduleLevel && t == "function_definition");
+}
+
+/// "std_msgs.msg.String", "pkg.srv.T.Request": a message, service or action type.
+bool isInterfaceName(const QString &dotted)
+{
+    return dotted.contains(QLatin1String(".msg.")) || dotted.contains(QLatin1String(".srv."))
+           || dotted.contains(QLatin1String(".action."));
+}
+
+PythonHandle parameterHandle(int index, const QString &name, const QString &method = {})
+{
+    PythonHandle h;
+    h.kind = PythonHandle::Kind::Parameter;
+    h.index = index;
+    h.name = name;
+    h.method = method;
+    return h;
+}
+
+bool isSuperCall(const SyntaxTree &tree, TSNode n)
+{
+    return ts::is(n, "call") && tree.view(ts::field(n, "function")) == "super";
+}
+} // namespace
+
+PythonModuleReader::PythonModuleReader(const SyntaxTree &tree, QString modulePath)
+    : m_tree(tree), m_resolver(tree, std::move(modulePath)), m_ports(m_resolver)
+{
+}
+
+PythonModuleFacts PythonModuleReader::read(const QString &package) const
+{
+    PythonModuleFacts facts;
+    facts.file = m_tree.file();
+    facts.package = package;
+    facts.modulePath = m_resolver.modulePath();
+    py::walk(m_tree.root(), [&](TSNode n) {
+        if (ts::is(n, "class_definition"))
+            facts.classes.append(readClass(n));
+        else if (ts::is(n, "function_definition")
+                 && m_resolver.scopes().isTopLevel(n))
+            facts.functions.append(readFunction(n));
+        return true;
+    });
+    facts.functions.append(readModuleStatements());
+    return facts;
+}
+
+QString PythonModuleReader::key(TSNode expr) const
+{
+    QString text = m_tree.text(expr);
+    text.remove(QLatin1Char(' '));
+    return text;
+}
+
+QList<PythonParameter> PythonModuleReader::parameters(TSNode function, bool skipSelf) const
+{
+    QList<PythonParameter> out;
+    const auto params = py::parameters(m_tree, function);
+    for (size_t i = skipSelf ? 1 : 0; i < params.size(); ++i) {
+        PythonParameter p;
+        p.name = params[i].name;
+        p.hasDefault = !ts::isNull(params[i].defaultValue);
+        if (p.hasDefault) {
+            p.defaultIsString = PythonResolver::stringLiteral(m_tree, params[i].defaultValue, &p.defaultValue);
+            if (!p.defaultIsString)
+                p.defaultValue = m_tree.text(params[i].defaultValue);
+        }
+        out.append(p);
+    }
+    return out;
+}
+
+QList<PythonArgument> PythonModuleReader::arguments(TSNode call, const QStringList &parameterNames,
+                                                    bool skipFirst) const
+{
+    QList<PythonArgument> out;
+    bool skipped = !skipFirst;
+    for (TSNode n : ts::namedChildren(ts::field(call, "arguments"))) {
+        const std::string_view t = ts::type(n);
+        if (t == "comment" || t == "dictionary_splat")
+            continue;
+        if (t == "list_splat")
+            break;
+        PythonArgument a;
+        TSNode value = n;
+        if (t == "keyword_argument") {
+            a.keyword = m_tree.text(ts::field(n, "name"));
+            value = ts::field(n, "value");
+        } else if (!skipped) {
+            skipped = true;
+            continue;
+        }
+        a.text = m_tree.text(value);
+        const PythonValue v = m_resolver.value(value);
+        a.isString = v.origin != NameOrigin::Expression;
+        a.origin = v.origin;
+        a.parameter = v.parameter;
+        if (a.isString)
+            a.value = v.value;
+        if (ts::is(value, "identifier"))
+            a.parameterIndex = int(parameterNames.indexOf(a.text));
+        if (py::isDottedName(value)) {
+            const QString type = m_resolver.interfaceType(value);
+            if (type.contains(QLatin1Char('/')))
+                a.interfaceType = type;
+        }
+        out.append(a);
+    }
+    return out;
+}
+
+bool PythonModuleReader::proceduralNode(TSNode expr, PythonProcedural *procedural) const
+{
+    if (!ts::is(expr, "call"))
+        return false;
+    const QString target = m_resolver.qualifiedName(ts::field(expr, "function"));
+    if (target.isEmpty())
+        return false;
+    for (const auto &[factory, lifecycle] : kNodeFactories) {
+        if (target != QLatin1String(factory))
+            continue;
+        TSNode name = py::argument(m_tree, expr, 0, "node_name");
+        if (!PythonResolver::stringLiteral(m_tree, name, &procedural->nodeName))
+            procedural->nodeName = m_tree.text(name);
+        procedural->lifecycle = lifecycle;
+        return true;
+    }
+    return false;
+}
+
+void PythonModuleReader::findAliases(TSNode body, Receivers *receivers, bool members,
+                                     const QString &function, TSNode evidence,
+                                     PythonScopeFacts *facts, const Receivers &visible) const
+{
+    const bool moduleLevel = ts::isNull(evidence);
+    py::walk(body, [&](TSNode n) {
+        if (skipInScope(n, body, moduleLevel))
+            return false;
+        if (!ts::is(n, "assignment"))
+            return true;
+        TSNode left = ts::field(n, "left");
+        TSNode right = ts::field(n, "right");
+        if (members ? !(ts::is(left, "attribute") && m_tree.view(ts::field(left, "object")) == "self")
+                    : !ts::is(left, "identifier"))
+            return true;
+        PythonProcedural procedural;
+        if (proceduralNode(right, &procedural)) {
+            procedural.function = function;
+            procedural.evidence = m_tree.evidence(moduleLevel ? n : evidence);
+            facts->procedurals.append(procedural);
+            PythonHandle h;
+            h.kind = PythonHandle::Kind::Procedural;
+            h.index = int(facts->procedurals.size() - 1);
+            receivers->insert(key(left), h);
+            return true;
+        }
+        const QString from = key(right);
+        if (receivers->contains(from))
+            receivers->insert(key(left), receivers->value(from));
+        else if (visible.contains(from))
+            receivers->insert(key(left), visible.value(from));
+        return true;
+    });
+}
+
+void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QString &method,
+                              const QStringList &parameterNames, PythonScopeFacts *facts) const
+{
+    const bool moduleLevel = ts::is(body, "module");
+    py::walk(body, [&](TSNode n) {
+        if (skipInScope(n, body, moduleLevel))
+            return false;
+        if (!ts::is(n, "call"))
+            return true;
+        PortKind kind;
+        TSNode receiver;
+        if (m_ports.recognize(n, &kind, &receiver)) {
+            const auto it = receivers.constFind(key(receiver));
+            if (it == receivers.constEnd())
+                return true;
+            PythonPortFact fact;
+            fact.port = m_ports.read(n, kind);
+            fact.method = method;
+            fact.handle = it.value();
+            // a name passed in through the constructor or function (directly or kept in a
+            // member) can be resolved per call site
+            auto parameterRef = [&](TSNode argument) {
+                PythonParameterRef ref;
+                const auto source = receivers.constFind(key(argument));
+                if (source != receivers.constEnd() && source->kind == PythonHandle::Kind::Parameter)
+                    ref = {source->index, source->name, source->method};
+                return ref;
+            };
+            fact.nameFrom = parameterRef(m_ports.nameArgument(n, kind));
+            fact.typeFrom = parameterRef(m_ports.typeArgument(n, kind));
+            facts->ports.append(fact);
+            return true;
+        }
+        TSNode function = ts::field(n, "function");
+        if (!py::isDottedName(function))
+            return true;
+        const QString target = m_resolver.qualifiedName(function);
+        // builtins (print, len, ...) and message constructors cannot take a node handle apart
+        const bool external = !target.contains(QLatin1Char('.')) || isInterfaceName(target);
+        int position = 0;
+        for (TSNode a : ts::namedChildren(ts::field(n, "arguments"))) {
+            const std::string_view t = ts::type(a);
+            if (t == "comment" || t == "dictionary_splat")
+                continue;
+            if (t == "list_splat")
+                break;
+            const bool named = t == "keyword_argument";
+            const auto it = external ? receivers.constEnd() : receivers.constFind(key(named ? ts::field(a, "value") : a));
+            if (it != receivers.constEnd()) {
+                PythonHandoff h;
+                h.target = target;
+                h.argument = named ? -1 : position;
+                if (named)
+                    h.keyword = m_tree.text(ts::field(a, "name"));
+                h.handle = it.value();
+                h.method = method;
+                h.arguments = arguments(n, parameterNames, false);
+                facts->handoffs.append(h);
+            }
+            if (!named)
+                ++position;
+        }
+        if (m_tree.view(function).substr(0, 5) != "self.") {
+            PythonCall call;
+            call.target = target;
+            const QString last = target.section(QLatin1Char('.'), -1);
+            if (!last.isEmpty() && last.at(0).isUpper() && !isInterfaceName(target))
+                call.arguments = arguments(n, parameterNames, false);
+            facts->calls.append(call);
+        }
+        return true;
+    });
+}
+
+PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
+{
+    PythonClassFacts facts;
+    facts.name = m_tree.text(ts::field(cls, "name"));
+    const QString &module = m_resolver.modulePath();
+    facts.qualifiedName = module.isEmpty() ? facts.name : module + QLatin1Char('.') + facts.name;
+    facts.evidence = m_tree.evidence(cls);
+    for (TSNode b : ts::namedChildren(ts::field(cls, "superclasses"))) {
+        const std::string_view t = ts::type(b);
+        if (t == "keyword_argument" || t == "comment" || t == "list_splat" || t == "dictionary_splat")
+            continue;
+        facts.bases.append(m_tree.text(b));
+        const QString q = m_resolver.qualifiedName(b);
+        facts.baseTargets.append(q.isEmpty() ? m_tree.text(b) : q);
+    }
+
+    std::vector<TSNode> methods;
+    for (TSNode child : ts::namedChildren(ts::field(cls, "body"))) {
+        TSNode def = py::undecorated(child);
+        if (ts::is(def, "function_definition")) {
+            methods.push_back(def);
+            facts.methods.append(m_tree.text(ts::field(def, "name")));
+            facts.methodParameters.append(parameters(def, true));
+        }
+    }
+
+    // How the constructor calls the base constructor, and which overrides call their base.
+    for (size_t i = 0; i < methods.size(); ++i) {
+        const QString &name = facts.methods.at(qsizetype(i));
+        const bool isInit = name == QLatin1String("__init__");
+        QStringList parameterNames;
+        if (isInit) {
+            facts.hasInit = true;
+            facts.initParameters = parameters(methods[i], true);
+            for (const PythonParameter &p : facts.initParameters)
+                parameterNames.append(p.name);
+        }
+        py::walk(ts::field(methods[i], "body"), [&](TSNode n) {
+            if (ts::is(n, "class_definition"))
+                return false;
+            if (!ts::is(n, "call"))
+                return true;
+            TSNode function = ts::field(n, "function");
+            if (!ts::is(function, "attribute") || m_tree.text(ts::field(function, "attribute")) != name)
+                return true;
+            TSNode object = ts::field(function, "object");
+            const bool viaSuper = isSuperCall(m_tree, object);
+            if (!viaSuper && !facts.bases.contains(key(object)))
+                return true;
+            if (!facts.superCalledMethods.contains(name))
+                facts.superCalledMethods.append(name);
+            if (isInit && !facts.hasBaseInitCall) {
+                facts.hasBaseInitCall = true;
+                facts.baseInitArguments = arguments(n, parameterNames, !viaSuper);
+            }
+            return true;
+        });
+    }
+
+    // Node handles held in members: `self.node = node` (constructor parameter) or
+    // `self.node = rclpy.create_node(...)`.
+    Receivers members;
+    for (size_t i = 0; i < methods.size(); ++i) {
+        Receivers visible;
+        const auto params = py::parameters(m_tree, methods[i]);
+        if (!params.empty())
+            visible.insert(params.front().name, PythonHandle{});
+        if (facts.methods.at(qsizetype(i)) == QLatin1String("__init__")) {
+            for (size_t p = 1; p < params.size(); ++p)
+                visible.insert(params[p].name, parameterHandle(int(p - 1), params[p].name));
+        }
+        findAliases(ts::field(methods[i], "body"), &members, true, facts.methods.at(qsizetype(i)),
+                    methods[i], &facts, visible);
+    }
+
+    for (size_t i = 0; i < methods.size(); ++i) {
+        const QString &name = facts.methods.at(qsizetype(i));
+        Receivers receivers = members;
+        const auto params = py::parameters(m_tree, methods[i]);
+        QStringList parameterNames;
+        if (!params.empty())
+            receivers.insert(params.front().name, PythonHandle{});
+        const bool isInit = name == QLatin1String("__init__");
+        for (size_t p = 1; p < params.size(); ++p) {
+            parameterNames.append(params[p].name);
+            receivers.insert(params[p].name,
+                             parameterHandle(int(p - 1), params[p].name, isInit ? QString() : name));
+        }
+        TSNode body = ts::field(methods[i], "body");
+        findAliases(body, &receivers, false, name, methods[i], &facts, {});
+        scan(body, receivers, name, parameterNames, &facts);
+    }
+    return facts;
+}
+
+PythonFunctionFacts PythonModuleReader::readFunction(TSNode function) const
+{
+    PythonFunctionFacts facts;
+    facts.name = m_tree.text(ts::field(function, "name"));
+    facts.parameters = parameters(function, false);
+    facts.evidence = m_tree.evidence(function);
+    Receivers receivers;
+    QStringList parameterNames;
+    for (int i = 0; i < facts.parameters.size(); ++i) {
+        const QString &p = facts.parameters.at(i).name;
+        parameterNames.append(p);
+        receivers.insert(p, parameterHandle(i, p));
+    }
+    TSNode body = ts::field(function, "body");
+    findAliases(body, &receivers, false, facts.name, function, &facts, {});
+    scan(body, receivers, QString(), parameterNames, &facts);
+    return facts;
+}
+
+PythonFunctionFacts PythonModuleReader::readModuleStatements() const
+{
+    PythonFunctionFacts facts;
+    Receivers receivers;
+    findAliases(m_tree.root(), &receivers, false, QString(), TSNode{}, &facts, {});
+    scan(m_tree.root(), receivers, QString(), {}, &facts);
+    return facts;
+}
+
+} // namespace rosarch

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "pythonmodulefacts.h"
+#include "pythonportreader.h"
+#include "pythonresolver.h"
+
+#include <QHash>
+
+namespace rosarch {
+
+/// Extracts the facts of one parsed Python file: classes with their bases, constructor
+/// arguments and the ports they create on each node handle, functions, procedural nodes,
+/// hand-offs of node handles to helpers, and calls that may instantiate classes.
+class PythonModuleReader
+{
+public:
+    PythonModuleReader(const SyntaxTree &tree, QString modulePath);
+
+    PythonModuleFacts read(const QString &package) const;
+
+private:
+    using Receivers = QHash<QString, PythonHandle>;
+
+    PythonClassFacts readClass(TSNode cls) const;
+    PythonFunctionFacts readFunction(TSNode function) const;
+    PythonFunctionFacts readModuleStatements() const;
+    void findAliases(TSNode body, Receivers *receivers, bool members, const QString &function,
+                     TSNode evidence, PythonScopeFacts *facts, const Receivers &visible) const;
+    void scan(TSNode body, const Receivers &receivers, const QString &method,
+              const QStringList &parameterNames, PythonScopeFacts *facts) const;
+    bool proceduralNode(TSNode expr, PythonProcedural *procedural) const;
+    QList<PythonArgument> arguments(TSNode call, const QStringList &parameterNames,
+                                    bool skipFirst) const;
+    QList<PythonParameter> parameters(TSNode function, bool skipSelf) const;
+    QString key(TSNode expr) const;
+
+    const SyntaxTree &m_tree;
+    PythonResolver m_resolver;
+    PythonPortReader m_ports;
+};
+
+} // namespace rosarch

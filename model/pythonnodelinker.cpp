@@ -1,0 +1,514 @@
+#include "pythonnodelinker.h"
+
+#include <QFileInfo>
+#include <QSet>
+
+#include <algorithm>
+
+namespace rosarch {
+
+namespace {
+constexpr int kMaxDepth = 8;
+
+// rclpy's node classes as reached through imports, and whether they are lifecycle nodes.
+const std::pair<const char *, bool> kRosNodeBases[] = {
+    {"rclpy.node.Node", false},
+    {"rclpy.Node", false},
+    {"rclpy.lifecycle.Node", true},
+    {"rclpy.lifecycle.LifecycleNode", true},
+    {"rclpy.lifecycle.node.LifecycleNode", true},
+};
+
+int rosNodeBase(const QString &target)
+{
+    for (const auto &[name, lifecycle] : kRosNodeBases)
+        if (target == QLatin1String(name))
+            return lifecycle ? 2 : 1;
+    return 0;
+}
+
+bool sameHandle(const PythonHandle &a, const PythonHandle &b)
+{
+    return a.kind == b.kind
+           && (a.kind == PythonHandle::Kind::Self || (a.index == b.index && a.method == b.method));
+}
+
+const PythonArgument *argumentAt(const QList<PythonArgument> &args, int index, const QString &keyword)
+{
+    if (!keyword.isEmpty())
+        for (const PythonArgument &a : args)
+            if (a.keyword == keyword)
+                return &a;
+    int position = 0;
+    for (const PythonArgument &a : args) {
+        if (!a.keyword.isEmpty())
+            continue;
+        if (position++ == index)
+            return &a;
+    }
+    return nullptr;
+}
+
+/// The port's name is a parameter; the caller passed `a` for it.
+void substituteName(Port *port, const PythonArgument &a)
+{
+    port->name = a.value;
+    port->nameOrigin = a.origin == NameOrigin::Literal ? NameOrigin::Local : a.origin;
+    port->parameter = a.parameter;
+}
+
+bool portLess(const Port &a, const Port &b)
+{
+    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column, a.via)
+           < std::tie(b.evidence.file, b.evidence.line, b.evidence.column, b.via);
+}
+
+QList<Port> sortedUnique(QList<Port> ports)
+{
+    std::stable_sort(ports.begin(), ports.end(), portLess);
+    QList<Port> out;
+    for (const Port &p : ports) {
+        // a helper built twice creates the same port twice; one is enough for the architecture
+        const bool seen = std::any_of(out.cbegin(), out.cend(), [&](const Port &q) {
+            return q.evidence == p.evidence && q.kind == p.kind && q.name == p.name;
+        });
+        if (!seen)
+            out.append(p);
+    }
+    return out;
+}
+} // namespace
+
+PythonNodeLinker::PythonNodeLinker(const QList<PythonModuleFacts> &modules)
+    : m_modules(modules), m_index(modules)
+{
+    auto indexCalls = [&](const PythonScopeFacts &scope) {
+        for (const PythonCall &call : scope.calls) {
+            const int id = m_index.findClass(call.target);
+            if (id >= 0)
+                m_instantiations[id].append(&call);
+        }
+    };
+    for (const PythonModuleFacts &module : m_modules) {
+        for (const PythonClassFacts &c : module.classes)
+            indexCalls(c);
+        for (const PythonFunctionFacts &f : module.functions)
+            indexCalls(f);
+    }
+    nameProcedurals();
+}
+
+int PythonNodeLinker::nodeKind(int id, int depth) const
+{
+    const auto it = m_kinds.constFind(id);
+    if (it != m_kinds.constEnd())
+        return it.value();
+    if (depth > kMaxDepth)
+        return NotANode;
+    m_kinds.insert(id, NotANode); // breaks inheritance cycles
+    int kind = NotANode;
+    for (const QString &base : m_index.classFacts(id).baseTargets)
+        if ((kind = rosNodeBase(base)) != NotANode)
+            break;
+    if (kind == NotANode) {
+        for (int base : m_index.projectBases(id))
+            if ((kind = nodeKind(base, depth + 1)) != NotANode)
+                break;
+    }
+    m_kinds.insert(id, kind);
+    return kind;
+}
+
+QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int depth) const
+{
+    QList<ScopedPort> out;
+    if (depth > kMaxDepth)
+        return out;
+    const PythonClassFacts &c = m_index.classFacts(id);
+    for (const PythonPortFact &f : c.ports) {
+        if (f.handle.kind != PythonHandle::Kind::Self)
+            continue;
+        ScopedPort sp;
+        sp.port = f.port;
+        sp.method = f.method;
+        if (f.nameFrom.isValid() && f.nameFrom.method.isEmpty()) {
+            sp.parameter = f.nameFrom.index;
+            sp.parameterName = f.nameFrom.name;
+        }
+        out.append(sp);
+    }
+    for (const PythonHandoff &h : c.handoffs)
+        if (h.handle.kind == PythonHandle::Kind::Self)
+            for (const Port &p : helperPorts(h, depth + 1)) {
+                ScopedPort sp;
+                sp.port = p;
+                sp.method = h.method;
+                out.append(sp);
+            }
+    for (int base : m_index.projectBases(id)) {
+        for (ScopedPort sp : classPorts(base, depth + 1)) {
+            // an override that does not call the base's version replaces its ports
+            if (!sp.method.isEmpty() && c.methods.contains(sp.method)
+                && !c.superCalledMethods.contains(sp.method))
+                continue;
+            sp.port.inherited = true;
+            // a name taken from the base constructor's parameter: see what this class passes
+            if (sp.parameter >= 0 && c.hasInit) {
+                const PythonArgument *a = c.hasBaseInitCall
+                                              ? argumentAt(c.baseInitArguments, sp.parameter, sp.parameterName)
+                                              : nullptr;
+                sp.parameter = -1;
+                if (a && a->parameterIndex >= 0) {
+                    sp.parameter = a->parameterIndex;
+                    sp.parameterName = a->text;
+                } else if (a && a->isString) {
+                    substituteName(&sp.port, *a);
+                }
+            }
+            out.append(sp);
+        }
+    }
+    return out;
+}
+
+QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff, int depth) const
+{
+    if (depth > kMaxDepth)
+        return {};
+    auto parameterHandle = [&](const QList<PythonParameter> &params, PythonHandle *handle) {
+        int index = handoff.argument;
+        if (index < 0)
+            for (int i = 0; i < params.size() && index < 0; ++i)
+                if (params.at(i).name == handoff.keyword)
+                    index = i;
+        if (index < 0 || index >= params.size())
+            return false;
+        handle->kind = PythonHandle::Kind::Parameter;
+        handle->index = index;
+        handle->name = params.at(index).name;
+        return true;
+    };
+    PythonHandle handle;
+    int cls = m_index.findClass(handoff.target);
+    // a helper without a constructor of its own takes the node through its base's constructor
+    for (int i = 0; i < 4 && cls >= 0 && !m_index.classFacts(cls).hasInit; ++i) {
+        const QList<int> bases = m_index.projectBases(cls);
+        cls = bases.isEmpty() ? -1 : bases.first();
+    }
+    if (cls >= 0) {
+        const PythonClassFacts &c = m_index.classFacts(cls);
+        if (!parameterHandle(c.initParameters, &handle))
+            return {};
+        return scopePorts(c, handle, c.name, depth, &handoff.arguments);
+    }
+    const int fn = m_index.findFunction(handoff.target);
+    if (fn < 0)
+        return methodPorts(handoff, depth);
+    const PythonFunctionFacts &function = m_index.functionFacts(fn);
+    if (!parameterHandle(function.parameters, &handle))
+        return {};
+    return scopePorts(function, handle, function.name, depth, &handoff.arguments);
+}
+
+QList<Port> PythonNodeLinker::methodPorts(const PythonHandoff &handoff, int depth) const
+{
+    // `obj.method(node)` on an object of unknown type: the one workspace class with such a
+    // method that takes the node at that position
+    const qsizetype dot = handoff.target.lastIndexOf(QLatin1Char('.'));
+    if (dot <= 0)
+        return {};
+    const QString method = handoff.target.mid(dot + 1);
+    int found = -1;
+    PythonHandle handle;
+    for (int id = 0; id < m_index.classCount(); ++id) {
+        const PythonClassFacts &c = m_index.classFacts(id);
+        const qsizetype m = c.methods.indexOf(method);
+        if (m < 0 || method == QLatin1String("__init__"))
+            continue;
+        const QList<PythonParameter> &params = c.methodParameters.at(m);
+        int index = handoff.argument;
+        if (index < 0)
+            for (int i = 0; i < params.size() && index < 0; ++i)
+                if (params.at(i).name == handoff.keyword)
+                    index = i;
+        if (index < 0 || index >= params.size())
+            continue;
+        if (found >= 0)
+            return {}; // ambiguous
+        found = id;
+        handle.kind = PythonHandle::Kind::Parameter;
+        handle.index = index;
+        handle.name = params.at(index).name;
+        handle.method = method;
+    }
+    if (found < 0)
+        return {};
+    const PythonClassFacts &c = m_index.classFacts(found);
+    return scopePorts(c, handle, c.name, depth, &handoff.arguments);
+}
+
+QList<Port> PythonNodeLinker::scopePorts(const PythonScopeFacts &scope, const PythonHandle &handle,
+                                         const QString &via, int depth,
+                                         const QList<PythonArgument> *arguments) const
+{
+    QList<Port> out;
+    for (const PythonPortFact &f : scope.ports) {
+        if (!sameHandle(f.handle, handle))
+            continue;
+        Port p = f.port;
+        if (p.via.isEmpty())
+            p.via = via;
+        if (arguments && f.nameFrom.isValid() && f.nameFrom.method == handle.method) {
+            const PythonArgument *a = argumentAt(*arguments, f.nameFrom.index, f.nameFrom.name);
+            if (a && a->isString)
+                substituteName(&p, *a);
+        }
+        if (arguments && f.typeFrom.isValid() && f.typeFrom.method == handle.method) {
+            const PythonArgument *a = argumentAt(*arguments, f.typeFrom.index, f.typeFrom.name);
+            if (a && !a->interfaceType.isEmpty())
+                p.type = a->interfaceType;
+        }
+        out.append(p);
+    }
+    for (const PythonHandoff &h : scope.handoffs)
+        if (sameHandle(h.handle, handle))
+            out.append(helperPorts(h, depth + 1));
+    return out;
+}
+
+PythonNodeLinker::NameInfo PythonNodeLinker::nameInfo(int id, int depth) const
+{
+    NameInfo info;
+    if (depth > kMaxDepth)
+        return info;
+    const PythonClassFacts &c = m_index.classFacts(id);
+    bool direct = false;
+    for (const QString &base : c.baseTargets)
+        direct = direct || rosNodeBase(base) != NotANode;
+    int nodeBase = -1;
+    if (!direct)
+        for (int b : m_index.projectBases(id))
+            if (nodeBase < 0 && nodeKind(b) != NotANode)
+                nodeBase = b;
+    if (!c.hasInit)
+        return nodeBase >= 0 ? nameInfo(nodeBase, depth + 1) : info;
+    if (!c.hasBaseInitCall)
+        return info;
+    auto evaluate = [&](const PythonArgument *a) {
+        NameInfo n;
+        if (!a)
+            return n;
+        if (a->parameterIndex >= 0) {
+            n.kind = NameInfo::Kind::Parameter;
+            n.text = a->text;
+            n.index = a->parameterIndex;
+            n.owner = id;
+        } else if (a->isString) {
+            n.kind = NameInfo::Kind::Literal;
+            n.text = a->value;
+        } else {
+            n.kind = NameInfo::Kind::Expression;
+            n.text = a->text;
+        }
+        return n;
+    };
+    if (direct)
+        return evaluate(argumentAt(c.baseInitArguments, 0, QStringLiteral("node_name")));
+    if (nodeBase < 0)
+        return info;
+    const NameInfo base = nameInfo(nodeBase, depth + 1);
+    if (base.kind != NameInfo::Kind::Parameter)
+        return base;
+    if (const PythonArgument *a = argumentAt(c.baseInitArguments, base.index, base.text))
+        return evaluate(a);
+    const PythonParameter &p = m_index.classFacts(base.owner).initParameters.at(base.index);
+    info.kind = p.defaultIsString ? NameInfo::Kind::Literal : NameInfo::Kind::Expression;
+    info.text = p.defaultIsString ? p.defaultValue : base.text;
+    return info;
+}
+
+bool PythonNodeLinker::agreedArgument(int id, int index, const QString &name, const QString &fallback,
+                                      PythonArgument *agreed) const
+{
+    // an instantiation that leaves the parameter out gets the fallback (the default)
+    bool unknown = false;
+    bool found = false;
+    for (const PythonCall *call : m_instantiations.value(id)) {
+        const PythonArgument *a = argumentAt(call->arguments, index, name);
+        PythonArgument value;
+        if (a && a->isString) {
+            value = *a;
+        } else if (!a && !fallback.isNull()) {
+            value.isString = true;
+            value.value = fallback;
+            value.origin = NameOrigin::Literal;
+        } else {
+            unknown = true;
+            break;
+        }
+        if (found && value.value != agreed->value) {
+            unknown = true;
+            break;
+        }
+        *agreed = value;
+        found = true;
+    }
+    return found && !unknown;
+}
+
+QString PythonNodeLinker::nodeName(int id) const
+{
+    const NameInfo info = nameInfo(id, 0);
+    if (info.kind != NameInfo::Kind::Parameter)
+        return info.text;
+    // the name is a constructor parameter: take it from the instantiations when they agree
+    const PythonParameter &param = m_index.classFacts(info.owner).initParameters.at(info.index);
+    const QString fallback = param.defaultIsString ? param.defaultValue : QString();
+    PythonArgument agreed;
+    if (agreedArgument(id, info.index, param.name, fallback, &agreed))
+        return agreed.value;
+    return param.defaultIsString ? param.defaultValue : info.text;
+}
+
+void PythonNodeLinker::nameProcedurals()
+{
+    for (const PythonModuleFacts &module : m_modules) {
+        QList<Procedural> found;
+        auto collect = [&](const PythonScopeFacts &scope, const QString &label) {
+            for (int k = 0; k < scope.procedurals.size(); ++k)
+                found.append({&module, &scope, k, label, {}, {}});
+        };
+        for (const PythonClassFacts &c : module.classes)
+            collect(c, c.name);
+        for (const PythonFunctionFacts &f : module.functions)
+            collect(f, f.name.isEmpty() ? QStringLiteral("module") : f.name);
+        std::sort(found.begin(), found.end(), [](const Procedural &a, const Procedural &b) {
+            const Evidence &ea = a.scope->procedurals.at(a.index).evidence;
+            const Evidence &eb = b.scope->procedurals.at(b.index).evidence;
+            return std::tie(ea.line, ea.column, a.index) < std::tie(eb.line, eb.column, b.index);
+        });
+        const QString stem = QFileInfo(module.file).completeBaseName();
+        QSet<QString> used;
+        for (Procedural &p : found) {
+            if (found.size() == 1) {
+                p.className = stem;
+                p.qualifiedName = module.modulePath;
+            } else {
+                // procedural nodes of one file are told apart by their class or function
+                QString name = stem + QLatin1Char('_') + p.label;
+                const QString base = name;
+                for (int n = 2; used.contains(name); ++n)
+                    name = base + QLatin1Char('_') + QString::number(n);
+                used.insert(name);
+                p.className = name;
+                p.qualifiedName = module.modulePath + QLatin1Char('.') + name.mid(stem.size() + 1);
+            }
+            m_procedurals.append(p);
+        }
+    }
+}
+
+QStringList PythonNodeLinker::startedNodes(int function, int depth, QList<int> *visited) const
+{
+    QStringList out;
+    auto add = [&](const QString &name) {
+        if (!out.contains(name))
+            out.append(name);
+    };
+    visited->append(function);
+    const PythonFunctionFacts &facts = m_index.functionFacts(function);
+    auto addProcedurals = [&](const PythonScopeFacts *scope) {
+        for (const Procedural &p : m_procedurals)
+            if (p.scope == scope)
+                add(p.qualifiedName);
+    };
+    for (const PythonCall &call : facts.calls) {
+        const int cls = m_index.findClass(call.target);
+        if (cls >= 0) {
+            if (nodeKind(cls) != NotANode)
+                add(m_index.classFacts(cls).qualifiedName);
+            else
+                addProcedurals(&m_index.classFacts(cls));
+            continue;
+        }
+        const int callee = depth < 3 ? m_index.findFunction(call.target) : -1;
+        if (callee >= 0 && !visited->contains(callee))
+            for (const QString &name : startedNodes(callee, depth + 1, visited))
+                add(name);
+    }
+    addProcedurals(&facts);
+    return out;
+}
+
+void PythonNodeLinker::link(LanguageAnalysis *out) const
+{
+    QList<AtomicNode> nodes;
+    for (int id = 0; id < m_index.classCount(); ++id) {
+        const int kind = nodeKind(id);
+        if (kind == NotANode)
+            continue;
+        const PythonClassFacts &c = m_index.classFacts(id);
+        const PythonModuleFacts &module = m_index.classModule(id);
+        AtomicNode n;
+        n.className = c.name;
+        n.qualifiedName = c.qualifiedName;
+        n.nodeName = nodeName(id);
+        n.packageName = module.package;
+        n.sourceFiles = {module.file};
+        n.compileType = AtomicNode::CompileType::Python;
+        n.baseClasses = c.bases;
+        n.lifecycle = kind == LifecycleNode;
+        n.evidence = c.evidence;
+        QList<Port> ports;
+        for (ScopedPort sp : classPorts(id, 0)) {
+            PythonArgument agreed;
+            const QString fallback = sp.port.isResolved() ? sp.port.name : QString();
+            if (sp.parameter >= 0 && agreedArgument(id, sp.parameter, sp.parameterName, fallback, &agreed)
+                && agreed.value != sp.port.name)
+                substituteName(&sp.port, agreed);
+            ports.append(sp.port);
+        }
+        n.ports = sortedUnique(ports);
+        nodes.append(n);
+    }
+    for (const Procedural &p : m_procedurals) {
+        const PythonProcedural &facts = p.scope->procedurals.at(p.index);
+        AtomicNode n;
+        n.className = p.className;
+        n.qualifiedName = p.qualifiedName;
+        n.nodeName = facts.nodeName;
+        n.packageName = p.module->package;
+        n.sourceFiles = {p.module->file};
+        n.compileType = AtomicNode::CompileType::Python;
+        n.lifecycle = facts.lifecycle;
+        n.procedural = true;
+        n.evidence = facts.evidence;
+        PythonHandle handle;
+        handle.kind = PythonHandle::Kind::Procedural;
+        handle.index = p.index;
+        n.ports = sortedUnique(scopePorts(*p.scope, handle, QString(), 0));
+        nodes.append(n);
+    }
+    std::sort(nodes.begin(), nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
+        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file, a.evidence.line)
+               < std::tie(b.packageName, b.className, b.qualifiedName, b.evidence.file, b.evidence.line);
+    });
+    out->nodes.append(nodes);
+
+    for (int id = 0; id < m_index.functionCount(); ++id) {
+        const PythonFunctionFacts &function = m_index.functionFacts(id);
+        if (function.name.isEmpty())
+            continue;
+        QList<int> visited;
+        EntryPoint e;
+        e.instantiatedClasses = startedNodes(id, 0, &visited);
+        if (e.instantiatedClasses.isEmpty())
+            continue;
+        e.file = m_index.functionModule(id).file;
+        e.function = function.name;
+        e.evidence = function.evidence;
+        out->entryPoints.append(e);
+    }
+}
+
+} // namespace rosarch

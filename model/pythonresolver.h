@@ -1,0 +1,83 @@
+#pragma once
+
+#include "port.h"
+#include "pythonscopeindex.h"
+#include "syntaxtree.h"
+
+#include <QHash>
+#include <QSet>
+#include <QString>
+#include <QStringList>
+
+namespace rosarch {
+
+/// What an expression evaluates to, as far as a static reader can tell.
+struct PythonValue
+{
+    NameOrigin origin = NameOrigin::Expression;
+    QString value;     ///< the string it holds; the expression text when origin is Expression
+    QString parameter; ///< the declared parameter it derives from, when known
+};
+
+/// Name resolution inside one parsed Python file: imports, string values of locals, members
+/// and declared parameters, interface types, callbacks and guards.
+class PythonResolver
+{
+public:
+    PythonResolver(const SyntaxTree &tree, QString modulePath);
+
+    const SyntaxTree &tree() const { return m_tree; }
+    const PythonScopeIndex &scopes() const { return m_scopes; }
+    const QString &modulePath() const { return m_modulePath; }
+
+    /// Qualifies a dotted name through the imports and the file's own definitions.
+    QString qualify(const QString &dotted) const;
+    /// The qualified name of an identifier or attribute chain; "" for anything else.
+    QString qualifiedName(TSNode expr) const;
+    /// Canonical "pkg/msg/T" for a type expression; the text as written when unresolvable.
+    QString interfaceType(TSNode expr) const;
+    /// The string the expression holds and where it comes from.
+    PythonValue value(TSNode expr) const;
+    /// "listener_callback" for self.listener_callback, "lambda" for a lambda, ...
+    QString callbackName(TSNode expr) const;
+    /// The conditions of the enclosing ifs (same function), and the parameter they test.
+    void guard(TSNode node, QString *guard, QString *guardParameter) const;
+
+    /// True for a plain (non-f) string literal or a concatenation of them.
+    static bool stringLiteral(const SyntaxTree &tree, TSNode node, QString *value);
+
+private:
+    struct Assignment
+    {
+        uint32_t byte = 0;
+        TSNode right{};
+    };
+    using AssignmentIndex = QHash<QString, QList<Assignment>>;
+
+    PythonValue valueAt(TSNode expr, int depth) const;
+    PythonValue identifierValue(TSNode expr, int depth) const;
+    PythonValue memberValue(TSNode expr, int depth) const;
+    PythonValue parameterValue(TSNode call, TSNode whole, int depth) const;
+    TSNode parameterCall(TSNode expr) const;
+    TSNode declaredDefault(TSNode at, const QString &parameter, bool *found) const;
+    const AssignmentIndex &locals(TSNode scope) const;
+    const AssignmentIndex &members(TSNode classNode) const;
+    void indexParameters() const;
+    void collectImports();
+    QString resolveRelative(TSNode relativeImport) const;
+    QString interfaceTypeAt(TSNode expr, int depth) const;
+
+    const SyntaxTree &m_tree;
+    PythonScopeIndex m_scopes;
+    QString m_modulePath;
+    QHash<QString, QString> m_bindings; ///< local name -> qualified dotted name
+    QStringList m_wildcards;            ///< modules imported with *
+    QSet<QString> m_definitions;        ///< classes and top-level functions of this file
+    mutable QHash<uint32_t, AssignmentIndex> m_locals;  ///< by scope start byte (+1; 0 = module)
+    mutable QHash<uint32_t, AssignmentIndex> m_members; ///< by class start byte
+    mutable bool m_parametersIndexed = false;
+    mutable QHash<uint32_t, QHash<QString, TSNode>> m_classParameters; ///< by class start byte
+    mutable QHash<QString, TSNode> m_fileParameters;
+};
+
+} // namespace rosarch
