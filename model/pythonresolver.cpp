@@ -75,7 +75,7 @@ void PythonResolver::collectImports()
     py::walk(m_tree.root(), [&](TSNode n) {
         const std::string_view t = ts::type(n);
         if (t == "import_statement") {
-            for (TSNode name : py::fieldChildren(n, "name")) {
+            for (TSNode name : ts::fieldChildren(n, "name")) {
                 if (ts::is(name, "dotted_name")) {
                     const QString full = m_tree.text(name);
                     const QString first = full.section(QLatin1Char('.'), 0, 0);
@@ -92,7 +92,7 @@ void PythonResolver::collectImports()
             const QString from = ts::is(module, "relative_import") ? resolveRelative(module)
                                                                   : m_tree.text(module);
             const QString prefix = from.isEmpty() ? QString() : from + QLatin1Char('.');
-            for (TSNode name : py::fieldChildren(n, "name")) {
+            for (TSNode name : ts::fieldChildren(n, "name")) {
                 if (ts::is(name, "dotted_name")) {
                     const QString text = m_tree.text(name);
                     m_bindings.insert(text, prefix + text);

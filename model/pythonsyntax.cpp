@@ -68,25 +68,6 @@ TSNode calleeObject(TSNode call)
     return ts::is(f, "attribute") ? ts::field(f, "object") : TSNode{};
 }
 
-std::vector<TSNode> fieldChildren(TSNode node, const char *field)
-{
-    // a cursor, because ts_node_field_name_for_child misreports repeated fields in some
-    // tree-sitter releases
-    std::vector<TSNode> out;
-    if (ts::isNull(node))
-        return out;
-    TSTreeCursor cursor = ts_tree_cursor_new(node);
-    if (ts_tree_cursor_goto_first_child(&cursor)) {
-        do {
-            const char *name = ts_tree_cursor_current_field_name(&cursor);
-            if (name && std::string_view(name) == field)
-                out.push_back(ts_tree_cursor_current_node(&cursor));
-        } while (ts_tree_cursor_goto_next_sibling(&cursor));
-    }
-    ts_tree_cursor_delete(&cursor);
-    return out;
-}
-
 bool isDottedName(TSNode node)
 {
     while (ts::is(node, "attribute"))

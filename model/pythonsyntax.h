@@ -46,8 +46,6 @@ TSNode argument(const SyntaxTree &tree, TSNode call, int index, std::string_view
 std::string_view calleeName(const SyntaxTree &tree, TSNode call);
 /// For `a.b.c(...)` the node `a.b`; null for a plain call.
 TSNode calleeObject(TSNode call);
-/// Every child stored under `field` (tree-sitter only returns the first one).
-std::vector<TSNode> fieldChildren(TSNode node, const char *field);
 /// An identifier or a chain of attributes over an identifier (`a.b.c`).
 bool isDottedName(TSNode node);
 /// One formal parameter of a function definition.

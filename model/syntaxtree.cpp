@@ -143,6 +143,23 @@ std::vector<TSNode> children(TSNode n)
     return out;
 }
 
+std::vector<TSNode> fieldChildren(TSNode n, const char *name)
+{
+    std::vector<TSNode> out;
+    if (ts_node_is_null(n))
+        return out;
+    TSTreeCursor cursor = ts_tree_cursor_new(n);
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+        do {
+            const char *field = ts_tree_cursor_current_field_name(&cursor);
+            if (field && strcmp(field, name) == 0)
+                out.push_back(ts_tree_cursor_current_node(&cursor));
+        } while (ts_tree_cursor_goto_next_sibling(&cursor));
+    }
+    ts_tree_cursor_delete(&cursor);
+    return out;
+}
+
 TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types)
 {
     for (TSNode p = ts_node_parent(n); !ts_node_is_null(p); p = ts_node_parent(p)) {

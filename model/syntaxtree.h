@@ -60,6 +60,9 @@ inline bool is(TSNode n, std::string_view t) { return type(n) == t; }
 TSNode field(TSNode n, const char *name);
 std::vector<TSNode> namedChildren(TSNode n);
 std::vector<TSNode> children(TSNode n);
+/// Every child under field `name` (a cursor: ts_node_field_name_for_child misreports
+/// fields after unnamed children in tree-sitter 0.20).
+std::vector<TSNode> fieldChildren(TSNode n, const char *name);
 /// The nearest ancestor of one of the given types (null node if none).
 TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types);
 /// Calls `visit` for `n` and every descendant in document order; return false to skip children.

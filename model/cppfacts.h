@@ -1,0 +1,164 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "evidence.h"
+#include "languageanalysis.h"
+#include "port.h"
+
+#include <QHash>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace rosarch {
+
+// Per-file facts that the C++ analyzer extracts in parallel (phase 1) and links afterwards
+// (phase 2). They hold text only, so the syntax trees can be freed before linking.
+
+/// What an expression (a port name, a parameter default, a guard variable) refers to, as far
+/// as the function it appears in can tell. Members and parameter defaults are looked up later.
+struct CppValue
+{
+    enum class Kind
+    {
+        None,              ///< no expression
+        Literal,           ///< a string literal (or a bool/number for parameter defaults)
+        Local,             ///< a local variable holding `literal`
+        Member,            ///< a member variable `variable`, resolved when linking
+        Parameter,         ///< the ROS parameter `parameter` (through `variable`, if any)
+        FunctionParameter, ///< parameter `index` of the enclosing function
+        SelfNode,          ///< `this`, `shared_from_this()`, a variable holding one of them
+        Expression,        ///< anything else
+    };
+    Kind kind = Kind::None;
+    QString text;    ///< the expression as written
+    QString literal; ///< Literal, Local
+    QString
+        variable; ///< Local, Member, Parameter (when read through a variable), FunctionParameter
+    QString parameter; ///< Parameter
+    int index = -1;    ///< FunctionParameter
+
+    bool isNone() const { return kind == Kind::None; }
+};
+
+/// A `declare_parameter("p", default)` (or a nav2 equivalent) in a function.
+struct CppParameterDeclaration
+{
+    QString parameter;
+    CppValue defaultValue;
+};
+
+/// A member variable receiving a value: in-class initializer, constructor initializer list,
+/// assignment, or `get_parameter("p", member_)`.
+struct CppMemberBinding
+{
+    QString member;
+    CppValue value;
+};
+
+/// A port-creating call, with everything the function itself can tell about it.
+struct CppPortCall
+{
+    PortKind kind = PortKind::Publisher;
+    CppValue name;
+    QString typeWritten; ///< the interface type as written in the template argument
+    bool typeIsTemplateParameter = false; ///< generic wrapper code, not a port
+    QString callback;
+    int callbackParameter = -1;  ///< the callback is this parameter of the enclosing function
+    QString guard;               ///< enclosing `if` conditions, joined with " && "
+    CppValue guardValue;         ///< the variable (or parameter read) the guard tests
+    QString receiver;            ///< "" for an implicit `this`, else the object expression
+    bool imageTransport = false; ///< image_transport call: the type is sensor_msgs/msg/Image
+    Evidence evidence;
+};
+
+/// `std::make_shared<X>(...)`, `std::make_unique<X>`, `X::make_shared()`, `new X(...)`,
+/// `X x(...)`, or a constructor-initializer of a member whose type is X.
+struct CppInstantiation
+{
+    QString className; ///< as written
+    QString member;    ///< member initialized in a constructor initializer list ("" otherwise)
+    QList<CppValue> arguments;
+    Evidence evidence;
+};
+
+/// A call of a free function that may hand it the node: `setup_publishers(node, "x")`.
+struct CppFreeCall
+{
+    QString function; ///< as written, e.g. "setup" or "ns::setup"
+    QList<CppValue> arguments;
+};
+
+/// `auto node = rclcpp::Node::make_shared("name")` and its equivalents: in a free function a
+/// procedural node; stored into a member of a class that is no node, a node-like component.
+struct CppProceduralNode
+{
+    QString variable;    ///< the variable holding the node ("" when not stored)
+    bool member = false; ///< `variable` is a member, not a local
+    CppValue nodeName;
+    bool lifecycle = false;
+    Evidence evidence; ///< the creating call
+};
+
+/// The initializer of a base class in a constructor: `Node("talker", options)`.
+struct CppBaseInitializer
+{
+    QString name; ///< as written, e.g. "Node", "rclcpp::Node", "nav2::LifecycleNode"
+    CppValue firstArgument;
+};
+
+/// A function definition (free, inline member or out-of-line member).
+struct CppFunction
+{
+    QString name;           ///< unqualified
+    QString ownerScope;     ///< out-of-line members: the class scope as written ("ns::Talker")
+    int ownerClass = -1;    ///< inline members: index into CppFileFacts::classes
+    QStringList namespaces; ///< enclosing namespaces at the definition
+    bool isConstructor = false;
+    QStringList parameterNames;
+    QStringList parameterTypes;
+    QStringList parameterDefaults; ///< literal defaults of parameters ("" when none)
+    int requiredParameters = 0;    ///< parameters without a default
+    bool variadic = false;
+    QHash<QString, QString> aliases; ///< function-local `using X = ...;`
+    QList<CppBaseInitializer> baseInitializers;
+    QList<CppPortCall> ports;
+    QList<CppParameterDeclaration> parameterDeclarations;
+    QList<CppMemberBinding> memberBindings;
+    QList<CppInstantiation> instantiations;
+    QList<CppFreeCall> freeCalls;
+    QList<CppProceduralNode> proceduralNodes;
+    Evidence evidence;
+};
+
+/// A class or struct definition with a body.
+struct CppClass
+{
+    QString name;          ///< unqualified
+    QString qualifiedName; ///< with enclosing namespaces and classes
+    QStringList scope;     ///< enclosing namespaces and classes, outermost first
+    QStringList bases;     ///< as written
+    QStringList templateParameters;
+    QHash<QString, QString> aliases;     ///< member `using X = ...;` / typedef
+    QHash<QString, QString> memberTypes; ///< member variable -> its type as written
+    QList<CppMemberBinding> memberInitializers;
+    Evidence evidence;
+};
+
+/// Everything extracted from one C++ file.
+struct CppFileFacts
+{
+    QString path;
+    QString package;
+    bool isHeader = false;
+    QList<CppClass> classes;
+    QList<CppFunction> functions;
+    QHash<QString, QString>
+        aliases;                 ///< namespace-level `using X = ...;`, typedefs, using-declarations
+    QStringList usingNamespaces; ///< `using namespace x;`
+    QHash<QString, QString> constants; ///< namespace-level string constants: kTopic -> "chatter"
+    QList<ComponentRegistration> registrations;
+    QList<Diagnostic> diagnostics;
+};
+
+} // namespace rosarch

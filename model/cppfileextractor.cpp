@@ -1,0 +1,456 @@
+#include "cppfileextractor.h"
+
+#include "cppfunctionextractor.h"
+#include "cppsyntax.h"
+
+namespace rosarch {
+
+using namespace cppsyntax;
+
+namespace {
+
+struct Scope
+{
+    QStringList namespaces;
+    QStringList path; ///< namespaces and enclosing classes
+    int classIndex = -1;
+    QString className;
+    QStringList templateParameters;
+};
+
+QStringList templateParameterNames(const SyntaxTree &tree, TSNode list)
+{
+    QStringList names;
+    for (TSNode p : ts::namedChildren(list)) {
+        TSNode name = ts::field(p, "name");
+        if (ts::isNull(name)) {
+            if (ts::is(p, "parameter_declaration") || ts::is(p, "optional_parameter_declaration"))
+                name = declaredName(ts::field(p, "declarator"));
+            else
+                for (TSNode c : ts::namedChildren(p))
+                    if (ts::is(c, "type_identifier") || ts::is(c, "identifier"))
+                        name = c;
+        }
+        if (!ts::isNull(name))
+            names.append(tree.text(name));
+    }
+    return names;
+}
+
+class Walker
+{
+public:
+    Walker(const SyntaxTree &tree, CppFileFacts &facts) : m_tree(tree), m_facts(facts)
+    {
+        const QByteArray &src = tree.source();
+        m_rclcppNode =
+            src.contains("using rclcpp::Node;") || src.contains("using namespace rclcpp;");
+        m_lifecycleNode = src.contains("using rclcpp_lifecycle::LifecycleNode;") ||
+                          src.contains("using namespace rclcpp_lifecycle;");
+    }
+
+    void visitScope(TSNode n, const Scope &scope)
+    {
+        for (TSNode child : ts::namedChildren(n))
+            visitDeclaration(child, scope, {});
+    }
+
+    void visitDeclaration(TSNode n, const Scope &scope, const QStringList &templateParameters)
+    {
+        const auto t = ts::type(n);
+        if (t == "namespace_definition") {
+            Scope inner = scope;
+            const QStringList parts = splitScope(simplified(m_tree, ts::field(n, "name")));
+            inner.namespaces += parts;
+            inner.path += parts;
+            visitScope(ts::field(n, "body"), inner);
+        } else if (t == "template_declaration") {
+            const QStringList params = templateParameterNames(m_tree, ts::field(n, "parameters"));
+            for (TSNode child : ts::namedChildren(n))
+                if (!ts::is(child, "template_parameter_list"))
+                    visitDeclaration(child, scope, params);
+        } else if (t == "class_specifier" || t == "struct_specifier") {
+            addClass(n, scope, templateParameters);
+        } else if (t == "function_definition") {
+            addFunction(n, scope, templateParameters);
+        } else if (t == "alias_declaration") {
+            addAlias(scope, m_tree.text(ts::field(n, "name")),
+                     simplified(m_tree, ts::field(n, "type")));
+        } else if (t == "type_definition") {
+            const QString type = simplified(m_tree, ts::field(n, "type"));
+            for (TSNode c : ts::namedChildren(n)) {
+                if (ts::is(c, "type_identifier") && !ts_node_eq(c, ts::field(n, "type")))
+                    addAlias(scope, m_tree.text(c), type);
+            }
+        } else if (t == "using_declaration") {
+            addUsing(n, scope);
+        } else if (t == "field_declaration") {
+            addField(n, scope);
+        } else if (t == "declaration") {
+            const TSNode type = ts::field(n, "type");
+            if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
+                addClass(type, scope, templateParameters);
+            else if (scope.classIndex < 0)
+                addConstant(n);
+        } else if (t == "linkage_specification") {
+            visitScope(ts::field(n, "body"), scope);
+        } else if (t == "preproc_if" || t == "preproc_ifdef" || t == "preproc_else" ||
+                   t == "preproc_elif" || t == "preproc_elifdef" || t == "declaration_list" ||
+                   t == "ERROR") {
+            visitScope(n, scope);
+        }
+    }
+
+private:
+    void addClass(TSNode n, const Scope &scope, const QStringList &templateParameters)
+    {
+        const TSNode body = ts::field(n, "body");
+        const TSNode nameNode = ts::field(n, "name");
+        if (ts::isNull(body) || ts::isNull(nameNode))
+            return;
+        QStringList written = splitScope(withoutTemplateArguments(simplified(m_tree, nameNode)));
+        if (written.isEmpty())
+            return;
+        CppClass c;
+        c.name = written.takeLast();
+        c.scope = scope.path + written;
+        c.qualifiedName = (c.scope + QStringList{c.name}).join(QStringLiteral("::"));
+        c.templateParameters = scope.templateParameters + templateParameters;
+        c.evidence = m_tree.evidence(n);
+        for (TSNode child : ts::namedChildren(n)) {
+            if (!ts::is(child, "base_class_clause"))
+                continue;
+            for (TSNode base : ts::namedChildren(child)) {
+                if (ts::is(base, "access_specifier") || ts::is(base, "comment"))
+                    continue;
+                QString text = simplified(m_tree, base);
+                if (text.startsWith(QLatin1String("virtual ")))
+                    text = text.mid(8);
+                c.bases.append(text);
+            }
+        }
+        const int index = int(m_facts.classes.size());
+        m_facts.classes.append(c);
+        Scope inner = scope;
+        inner.path = c.scope + QStringList{c.name};
+        inner.classIndex = index;
+        inner.className = c.name;
+        inner.templateParameters = c.templateParameters;
+        visitScope(body, inner);
+    }
+
+    void addFunction(TSNode n, const Scope &scope, const QStringList &templateParameters)
+    {
+        CppFunctionExtractor::Context context;
+        context.ownerClass = scope.classIndex;
+        context.className = scope.className;
+        context.namespaces = scope.namespaces;
+        context.templateParameters = scope.templateParameters;
+        context.rclcppNodeInScope = m_rclcppNode;
+        context.lifecycleNodeInScope = m_lifecycleNode;
+        CppFunctionExtractor extractor(m_tree, context);
+        m_facts.functions.append(extractor.extract(n, templateParameters));
+    }
+
+    void addAlias(const Scope &scope, const QString &name, const QString &type)
+    {
+        if (name.isEmpty() || type.isEmpty())
+            return;
+        if (scope.classIndex >= 0)
+            m_facts.classes[scope.classIndex].aliases.insert(name, type);
+        else if (!m_facts.aliases.contains(name))
+            m_facts.aliases.insert(name, type);
+    }
+
+    void addUsing(TSNode n, const Scope &scope)
+    {
+        bool isNamespace = false;
+        for (TSNode c : ts::children(n))
+            if (ts::is(c, "namespace"))
+                isNamespace = true;
+        TSNode target{};
+        for (TSNode c : ts::namedChildren(n))
+            if (!ts::is(c, "comment"))
+                target = c;
+        const QString name = simplified(m_tree, target);
+        if (name.isEmpty())
+            return;
+        if (isNamespace) {
+            if (!m_facts.usingNamespaces.contains(name))
+                m_facts.usingNamespaces.append(name);
+            return;
+        }
+        const QString last = lastSegment(name);
+        if (!last.isEmpty() && last != name)
+            addAlias(scope, last, name);
+    }
+
+    // A member: its type (helpers are found by it) and its in-class initializer.
+    void addField(TSNode n, const Scope &scope)
+    {
+        const TSNode type = ts::field(n, "type");
+        if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
+            addClass(type, scope, {});
+        if (scope.classIndex < 0)
+            return;
+        CppClass &c = m_facts.classes[scope.classIndex];
+        const QString typeText = simplified(m_tree, type);
+        for (TSNode child : ts::namedChildren(n)) {
+            if (ts::is(child, "function_declarator"))
+                return; // a method declaration
+        }
+        const TSNode declarator = ts::field(n, "declarator");
+        const QString name = m_tree.text(declaredName(declarator));
+        if (name.isEmpty())
+            return;
+        c.memberTypes.insert(name, typeText);
+        TSNode value = ts::field(n, "default_value");
+        if (ts::isNull(value))
+            return;
+        if (ts::is(value, "initializer_list")) {
+            const auto items = arguments(value);
+            if (items.size() != 1)
+                return;
+            value = items.front();
+        }
+        c.memberInitializers.append({name, valueOf(value)});
+    }
+
+    // `const std::string kTopic = "x";` at namespace scope.
+    void addConstant(TSNode n)
+    {
+        for (TSNode d : ts::namedChildren(n)) {
+            if (!ts::is(d, "init_declarator"))
+                continue;
+            QString literal;
+            TSNode value = ts::field(d, "value");
+            if (ts::is(value, "initializer_list") || ts::is(value, "argument_list")) {
+                const auto items = arguments(value);
+                value = items.size() == 1 ? items.front() : TSNode{};
+            }
+            if (ts::isNull(value) || !stringLiteral(m_tree, unwrap(m_tree, value), &literal))
+                continue;
+            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
+            if (!name.isEmpty() && !m_facts.constants.contains(name))
+                m_facts.constants.insert(name, literal);
+        }
+    }
+
+    CppValue valueOf(TSNode value) const
+    {
+        CppValue v;
+        v.text = simplified(m_tree, value);
+        const TSNode n = unwrap(m_tree, value);
+        QString literal;
+        if (stringLiteral(m_tree, n, &literal)) {
+            v.kind = CppValue::Kind::Literal;
+            v.literal = literal;
+        } else if (ts::is(n, "true") || ts::is(n, "false") || ts::is(n, "number_literal")) {
+            v.kind = CppValue::Kind::Literal;
+            v.literal = m_tree.text(n);
+        } else if (ts::is(n, "identifier")) {
+            v.kind = CppValue::Kind::Member;
+            v.variable = m_tree.text(n);
+        } else {
+            v.kind = CppValue::Kind::Expression;
+        }
+        return v;
+    }
+
+    const SyntaxTree &m_tree;
+    CppFileFacts &m_facts;
+    bool m_rclcppNode = false;
+    bool m_lifecycleNode = false;
+};
+
+bool isMacroName(std::string_view name)
+{
+    if (name.size() < 2)
+        return false;
+    if (name.substr(0, 3) == "PRI" || name.substr(0, 3) == "SCN")
+        return true; // <cinttypes> format macros: "%" PRId64
+    for (char c : name)
+        if (!(std::isupper(uchar(c)) || std::isdigit(uchar(c)) || c == '_'))
+            return false;
+    return true;
+}
+
+bool isSpecifierWord(std::string_view word)
+{
+    for (const char *k : {"explicit", "virtual", "inline", "static", "constexpr", "override",
+                          "final", "friend", "extern", "const"})
+        if (word == k)
+            return true;
+    return false;
+}
+
+// Tree-sitter does not expand macros, so ROS code is full of harmless "errors": a format
+// macro after a string ("%" PRId64), an export macro before a declaration, a registration
+// macro without a semicolon, an `extern "C"` split across #ifdef. Those are not reported.
+bool isMacroArtifact(const SyntaxTree &tree, TSNode n)
+{
+    if (ts_node_is_missing(n)) {
+        const std::string_view missing = ts::type(n);
+        if (!missing.empty() && missing.front() == '#')
+            return true;
+        if (missing == ";") {
+            // MACRO(args) without a semicolon: look at the text before the gap.
+            const QByteArray &src = tree.source();
+            qsizetype i = qsizetype(ts_node_start_byte(n)) - 1;
+            while (i >= 0 && std::isspace(uchar(src.at(i))))
+                --i;
+            if (i < 0 || src.at(i) != ')')
+                return false;
+            for (int depth = 0; i >= 0; --i) {
+                depth += src.at(i) == ')' ? 1 : src.at(i) == '(' ? -1 : 0;
+                if (depth == 0)
+                    break;
+            }
+            qsizetype end = i;
+            while (end > 0 && std::isspace(uchar(src.at(end - 1))))
+                --end;
+            qsizetype begin = end;
+            while (begin > 0 &&
+                   (std::isalnum(uchar(src.at(begin - 1))) || src.at(begin - 1) == '_'))
+                --begin;
+            return end > begin &&
+                   isMacroName(std::string_view(src.constData() + begin, size_t(end - begin)));
+        }
+        return false;
+    }
+    const auto kids = ts::namedChildren(n);
+    if (kids.empty()) { // `EXPORT_MACRO ~Foo()`: the stray token becomes the error
+        const TSNode previous = ts_node_prev_named_sibling(n);
+        return !ts::isNull(previous) && isMacroName(tree.view(previous));
+    }
+    bool strings = true;
+    bool words = true;
+    bool macro = false;
+    for (TSNode k : kids) {
+        const bool name = ts::is(k, "identifier") || ts::is(k, "type_identifier");
+        strings = strings && (ts::is(k, "string_literal") || ts::is(k, "concatenated_string"));
+        words = words && name && (isMacroName(tree.view(k)) || isSpecifierWord(tree.view(k)));
+        macro = macro || (name && isMacroName(tree.view(k)));
+    }
+    const TSNode next = ts_node_next_named_sibling(n);
+    const TSNode previous = ts_node_prev_named_sibling(n);
+    if (strings) // "%" PRId64: the string becomes the error, the macro its sibling
+        return ts::is(next, "identifier") && isMacroName(tree.view(next));
+    if (words && !macro) // `EXPORT_MACRO explicit Foo(...)`: the keyword becomes the error
+        return !ts::isNull(previous) && isMacroName(tree.view(previous));
+    return words;
+}
+
+QList<Diagnostic> syntaxErrors(const SyntaxTree &tree)
+{
+    const TSNode root = tree.root();
+    if (ts::isNull(root) || !ts_node_has_error(root))
+        return tree.syntaxErrors(1);
+    TSNode first{};
+    bool found = false;
+    ts::walk(root, [&](TSNode n) {
+        if (found)
+            return false;
+        if (ts::is(n, "ERROR") || ts_node_is_missing(n)) {
+            if (!isMacroArtifact(tree, n)) {
+                first = n;
+                found = true;
+            }
+            return false;
+        }
+        return bool(ts_node_has_error(n));
+    });
+    if (!found)
+        return {};
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.code = QStringLiteral("syntax-error");
+    d.evidence = tree.evidence(first);
+    d.message = ts_node_is_missing(first)
+                    ? QStringLiteral("Syntax error in %1 at line %2: missing %3; the rest of the "
+                                     "file is still analysed.")
+                          .arg(tree.file())
+                          .arg(d.evidence.line)
+                          .arg(QString::fromUtf8(ts_node_type(first)))
+                    : QStringLiteral(
+                          "Syntax error in %1 at line %2; the rest of the file is still analysed.")
+                          .arg(tree.file())
+                          .arg(d.evidence.line);
+    return {d};
+}
+
+int lineOf(const QByteArray &source, qsizetype offset, int *column)
+{
+    int line = 1;
+    qsizetype lineStart = 0;
+    for (qsizetype i = 0; i < offset && i < source.size(); ++i) {
+        if (source.at(i) == '\n') {
+            ++line;
+            lineStart = i + 1;
+        }
+    }
+    *column = int(offset - lineStart) + 1;
+    return line;
+}
+
+// RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class), found in the text so that a macro the parser
+// could not place still counts; comments and macro definitions are skipped.
+void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
+{
+    static const QByteArray macro("RCLCPP_COMPONENTS_REGISTER_NODE");
+    const QByteArray &src = tree.source();
+    qsizetype from = 0;
+    while (true) {
+        const qsizetype at = src.indexOf(macro, from);
+        if (at < 0)
+            break;
+        from = at + macro.size();
+        if (at > 0 && (std::isalnum(uchar(src.at(at - 1))) || src.at(at - 1) == '_'))
+            continue;
+        const TSNode here =
+            ts_node_descendant_for_byte_range(tree.root(), uint32_t(at), uint32_t(from));
+        if (ts::is(here, "comment") || ts::is(here, "string_content") ||
+            !ts::isNull(ts::ancestor(here, {"preproc_def", "preproc_function_def", "comment"})))
+            continue;
+        qsizetype i = from;
+        while (i < src.size() && std::isspace(uchar(src.at(i))))
+            ++i;
+        if (i >= src.size() || src.at(i) != '(')
+            continue;
+        const qsizetype close = src.indexOf(')', i);
+        if (close < 0)
+            continue;
+        const QString plugin =
+            QString::fromUtf8(src.mid(i + 1, close - i - 1)).simplified().remove(u' ');
+        if (plugin.isEmpty())
+            continue;
+        ComponentRegistration r;
+        r.file = facts.path;
+        r.pluginClass = plugin;
+        r.evidence.file = facts.path;
+        r.evidence.line = lineOf(src, at, &r.evidence.column);
+        r.evidence.endLine = lineOf(src, close + 1, &r.evidence.endColumn);
+        facts.registrations.append(r);
+    }
+}
+
+} // namespace
+
+CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &package)
+{
+    CppFileFacts facts;
+    facts.path = tree.file();
+    facts.package = package;
+    facts.isHeader = isHeaderPath(tree.file());
+    facts.diagnostics = syntaxErrors(tree);
+    const TSNode root = tree.root();
+    if (ts::isNull(root))
+        return facts;
+    Walker walker(tree, facts);
+    walker.visitScope(root, Scope());
+    if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE"))
+        findRegistrations(tree, facts);
+    return facts;
+}
+
+} // namespace rosarch

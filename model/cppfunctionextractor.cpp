@@ -1,0 +1,484 @@
+#include "cppfunctionextractor.h"
+
+#include <cstring>
+
+namespace rosarch {
+
+using namespace cppsyntax;
+
+namespace {
+
+bool nodesEqual(TSNode a, TSNode b)
+{
+    return !ts::isNull(a) && !ts::isNull(b) && ts_node_eq(a, b);
+}
+
+// The function_declarator inside a definition's declarator (through pointer/reference
+// declarators of the return type).
+TSNode functionDeclarator(TSNode declarator)
+{
+    TSNode n = declarator;
+    for (int guard = 0; guard < 8 && !ts::isNull(n); ++guard) {
+        if (ts::is(n, "function_declarator"))
+            return n;
+        TSNode inner = ts::field(n, "declarator");
+        if (ts::isNull(inner)) {
+            const auto kids = ts::namedChildren(n);
+            if (kids.empty())
+                break;
+            inner = kids.back();
+        }
+        n = inner;
+    }
+    TSNode null{};
+    return null;
+}
+
+} // namespace
+
+CppFunctionExtractor::CppFunctionExtractor(const SyntaxTree &tree, Context context)
+    : m_tree(tree), m_context(std::move(context))
+{
+}
+
+CppFunction CppFunctionExtractor::extract(TSNode definition,
+                                          const QStringList &functionTemplateParameters)
+{
+    m_definition = definition;
+    m_function = CppFunction();
+    m_function.ownerClass = m_context.ownerClass;
+    m_function.namespaces = m_context.namespaces;
+    m_function.evidence = m_tree.evidence(definition);
+    m_templateParameters = m_context.templateParameters + functionTemplateParameters;
+    readSignature(definition);
+    m_member = m_context.ownerClass >= 0 || !m_function.ownerScope.isEmpty();
+    readInitializers(definition);
+    visit(ts::field(definition, "body"));
+    // A function that returns the node it creates is a factory, not a node definition.
+    m_function.proceduralNodes.removeIf(
+        [this](const CppProceduralNode &n) { return m_returned.contains(n.variable); });
+    return std::move(m_function);
+}
+
+void CppFunctionExtractor::readSignature(TSNode definition)
+{
+    const TSNode fd = functionDeclarator(ts::field(definition, "declarator"));
+    TSNode nameNode = ts::field(fd, "declarator");
+    QStringList scope;
+    while (ts::is(nameNode, "qualified_identifier")) {
+        const TSNode s = ts::field(nameNode, "scope");
+        if (!ts::isNull(s))
+            scope.append(simplified(m_tree, s));
+        nameNode = ts::field(nameNode, "name");
+    }
+    if (ts::is(nameNode, "template_function"))
+        nameNode = ts::field(nameNode, "name");
+    m_function.name = simplified(m_tree, nameNode);
+    m_function.ownerScope = scope.join(QStringLiteral("::"));
+    const QString className =
+        m_function.ownerScope.isEmpty() ? m_context.className : lastSegment(m_function.ownerScope);
+    m_function.isConstructor = !className.isEmpty() && m_function.name == className;
+
+    for (TSNode p : ts::namedChildren(ts::field(fd, "parameters"))) {
+        if (ts::is(p, "comment") || m_tree.view(p) == "void")
+            continue;
+        const TSNode nameOf = declaredName(ts::field(p, "declarator"));
+        const TSNode def = ts::field(p, "default_value");
+        QString defaultValue;
+        stringLiteral(m_tree, def, &defaultValue);
+        // The declaration without its default: "const std::string & topic".
+        std::string_view declared = m_tree.view(p);
+        if (!ts::isNull(def))
+            declared = declared.substr(0, ts_node_start_byte(def) - ts_node_start_byte(p));
+        QString declaration =
+            QString::fromUtf8(declared.data(), qsizetype(declared.size())).simplified();
+        if (declaration.endsWith(u'='))
+            declaration = declaration.chopped(1).trimmed();
+        if (ts::is(p, "variadic_parameter_declaration") || m_tree.view(p) == "...")
+            m_function.variadic = true;
+        else if (!ts::is(p, "optional_parameter_declaration"))
+            ++m_function.requiredParameters;
+        m_function.parameterNames.append(m_tree.text(nameOf));
+        m_function.parameterTypes.append(declaration);
+        m_function.parameterDefaults.append(defaultValue);
+    }
+}
+
+void CppFunctionExtractor::readInitializers(TSNode definition)
+{
+    for (TSNode child : ts::namedChildren(definition)) {
+        if (!ts::is(child, "field_initializer_list"))
+            continue;
+        for (TSNode init : ts::namedChildren(child)) {
+            if (!ts::is(init, "field_initializer"))
+                continue;
+            TSNode nameNode{};
+            TSNode list{};
+            for (TSNode part : ts::namedChildren(init)) {
+                if (ts::is(part, "argument_list") || ts::is(part, "initializer_list"))
+                    list = part;
+                else if (ts::isNull(nameNode))
+                    nameNode = part;
+            }
+            const auto args = arguments(list);
+            CppBaseInitializer base;
+            base.name = simplified(m_tree, nameNode);
+            if (!args.empty())
+                base.firstArgument = evaluate(args.front());
+            m_function.baseInitializers.append(base);
+            if (ts::is(nameNode, "field_identifier")) {
+                if (args.size() == 1)
+                    m_function.memberBindings.append({base.name, base.firstArgument});
+                addInstantiation(QString(), args, init, base.name);
+            }
+            // Initializers can create ports and instantiate helpers, too.
+            for (TSNode a : args)
+                visit(a);
+        }
+    }
+}
+
+void CppFunctionExtractor::visit(TSNode body)
+{
+    ts::walk(body, [this](TSNode n) {
+        const auto t = ts::type(n);
+        if (t == "declaration") {
+            onDeclaration(n);
+        } else if (t == "assignment_expression") {
+            onAssignment(n);
+        } else if (t == "call_expression") {
+            onCall(n);
+        } else if (t == "new_expression") {
+            onNew(n);
+        } else if (t == "return_statement") {
+            const auto value = arguments(n);
+            if (value.size() == 1 && ts::is(unwrap(m_tree, value.front()), "identifier"))
+                m_returned.append(m_tree.text(unwrap(m_tree, value.front())));
+        } else if (t == "alias_declaration") {
+            m_function.aliases.insert(m_tree.text(ts::field(n, "name")),
+                                      simplified(m_tree, ts::field(n, "type")));
+            return false;
+        } else if (t == "using_declaration") {
+            // `using std_msgs::msg::Int32;` inside a function body
+            const auto kids = arguments(n);
+            const QString target = kids.empty() ? QString() : simplified(m_tree, kids.back());
+            const QString last = lastSegment(target);
+            bool isNamespace = false;
+            for (TSNode c : ts::children(n))
+                isNamespace = isNamespace || ts::is(c, "namespace");
+            if (!isNamespace && !last.isEmpty() && last != target)
+                m_function.aliases.insert(last, target);
+            return false;
+        } else if (t == "type_definition") {
+            const TSNode type = ts::field(n, "type");
+            for (TSNode c : ts::namedChildren(n))
+                if (ts::is(c, "type_identifier") && !ts_node_eq(c, type))
+                    m_function.aliases.insert(m_tree.text(c), simplified(m_tree, type));
+            return false;
+        } else if (t == "class_specifier" || t == "struct_specifier") {
+            return false; // local classes are not followed
+        }
+        return true;
+    });
+}
+
+void CppFunctionExtractor::onDeclaration(TSNode declaration)
+{
+    const QString type = simplified(m_tree, ts::field(declaration, "type"));
+    for (TSNode d : ts::fieldChildren(declaration, "declarator")) {
+        if (ts::is(d, "init_declarator")) {
+            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
+            const TSNode value = ts::field(d, "value");
+            Local local;
+            local.type = type;
+            if (ts::is(value, "argument_list") || ts::is(value, "initializer_list")) {
+                const auto args = arguments(value);
+                bool lifecycle = false;
+                if (isProceduralNodeType(type, &lifecycle)) {
+                    if (!m_member) { // `rclcpp::Node node("name");` in a free function
+                        CppProceduralNode node;
+                        node.variable = name;
+                        node.lifecycle = lifecycle;
+                        if (!args.empty())
+                            node.nodeName = evaluate(args.front());
+                        node.evidence = m_tree.evidence(declaration);
+                        m_function.proceduralNodes.append(node);
+                    }
+                } else {
+                    addInstantiation(type, args, declaration);
+                }
+                if (args.size() == 1) // std::string topic("chatter");
+                    local.value = args.front();
+            } else {
+                local.value = value;
+            }
+            if (!name.isEmpty())
+                m_locals.insert(name, local);
+        } else if (ts::is(d, "function_declarator")) {
+            // `image_transport::ImageTransport it(shared_from_this());` parses as a function
+            // declaration inside a body; treat it as a local constructed from its arguments.
+            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
+            if (name.isEmpty())
+                continue;
+            Local local;
+            local.type = type;
+            m_locals.insert(name, local);
+            std::vector<TSNode> args;
+            for (TSNode p : arguments(ts::field(d, "parameters")))
+                args.push_back(p);
+            addInstantiation(type, args, declaration);
+        } else {
+            const QString name = m_tree.text(declaredName(d));
+            if (!name.isEmpty()) {
+                Local local;
+                local.type = type;
+                m_locals.insert(name, local);
+            }
+        }
+    }
+}
+
+void CppFunctionExtractor::onAssignment(TSNode assignment)
+{
+    const TSNode left = ts::field(assignment, "left");
+    const TSNode right = ts::field(assignment, "right");
+    const TSNode op = ts::field(assignment, "operator");
+    const bool plain = ts::isNull(op) || m_tree.view(op) == "=";
+    const TSNode value = plain ? right : assignment;
+    if (ts::is(left, "identifier")) {
+        const QString name = m_tree.text(left);
+        auto it = m_locals.find(name);
+        if (it != m_locals.end()) {
+            it->value = value;
+            return;
+        }
+        if (m_function.parameterNames.contains(name))
+            return;
+        if (m_member)
+            m_function.memberBindings.append({name, evaluate(value)});
+    } else if (ts::is(left, "field_expression") && ts::is(ts::field(left, "argument"), "this")) {
+        m_function.memberBindings.append({m_tree.text(ts::field(left, "field")), evaluate(value)});
+    }
+}
+
+void CppFunctionExtractor::onNew(TSNode expression)
+{
+    const QString type = simplified(m_tree, ts::field(expression, "type"));
+    const auto args = arguments(ts::field(expression, "arguments"));
+    bool lifecycle = false;
+    if (isProceduralNodeType(type, &lifecycle)) {
+        addProceduralNode(expression, args, lifecycle);
+        return;
+    }
+    addInstantiation(type, args, expression);
+}
+
+void CppFunctionExtractor::onCall(TSNode call)
+{
+    const CallShape shape = callShape(m_tree, ts::field(call, "function"));
+    if (shape.name.isEmpty())
+        return;
+    const auto args = arguments(ts::field(call, "arguments"));
+    onParameterCall(shape.name, args);
+    if (onPortCall(call, shape, args))
+        return;
+
+    const bool makeShared =
+        shape.name == QLatin1String("make_shared") || shape.name == QLatin1String("make_unique");
+    if (!makeShared) {
+        addFreeCall(shape, args);
+        return;
+    }
+    QString className;
+    if (!ts::isNull(shape.templateArguments))
+        className = firstTemplateArgument(m_tree, shape.templateArguments);
+    else if (!shape.scope.isEmpty() && shape.scope != QLatin1String("std"))
+        className = shape.scope; // Talker::make_shared(...)
+    if (className.isEmpty())
+        return;
+    bool lifecycle = false;
+    if (isProceduralNodeType(className, &lifecycle)) {
+        addProceduralNode(call, args, lifecycle);
+        return;
+    }
+    addInstantiation(className, args, call);
+}
+
+void CppFunctionExtractor::onParameterCall(const QString &name, const std::vector<TSNode> &args)
+{
+    const QString lower = name.toLower();
+    const bool declares = lower.contains(QLatin1String("declare")) &&
+                          lower.contains(QLatin1String("parameter")) &&
+                          !lower.endsWith(QLatin1String("parameters"));
+    const bool gets = name == QLatin1String("get_parameter") ||
+                      name == QLatin1String("get_parameter_or") ||
+                      name == QLatin1String("get_parameter_or_set_default");
+    if (!declares && !gets)
+        return;
+    QString parameter;
+    const int at = literalParameterIndex(args, &parameter);
+    if (at < 0)
+        return;
+    const int next = at + 1;
+    if (declares) {
+        CppParameterDeclaration decl;
+        decl.parameter = parameter;
+        if (next < int(args.size()))
+            decl.defaultValue = evaluate(args[size_t(next)]);
+        m_function.parameterDeclarations.append(decl);
+        return;
+    }
+    if (next >= int(args.size()))
+        return;
+    // get_parameter("p", variable) / get_parameter_or("p", variable, default)
+    const TSNode target = args[size_t(next)];
+    if (name != QLatin1String("get_parameter") && next + 1 < int(args.size()))
+        m_function.parameterDeclarations.append({parameter, evaluate(args[size_t(next + 1)])});
+    CppValue bound;
+    bound.kind = CppValue::Kind::Parameter;
+    bound.parameter = parameter;
+    bound.text = simplified(m_tree, target);
+    if (ts::is(target, "identifier")) {
+        const QString var = m_tree.text(target);
+        auto it = m_locals.find(var);
+        if (it != m_locals.end()) {
+            it->parameter = parameter;
+            return;
+        }
+        bound.variable = var;
+        if (m_member && !m_function.parameterNames.contains(var))
+            m_function.memberBindings.append({var, bound});
+    } else if (ts::is(target, "field_expression") &&
+               ts::is(ts::field(target, "argument"), "this")) {
+        bound.variable = m_tree.text(ts::field(target, "field"));
+        m_function.memberBindings.append({bound.variable, bound});
+    }
+}
+
+void CppFunctionExtractor::addInstantiation(const QString &className,
+                                            const std::vector<TSNode> &args, TSNode where,
+                                            const QString &member)
+{
+    CppInstantiation inst;
+    inst.className = className;
+    inst.member = member;
+    inst.evidence = m_tree.evidence(where);
+    bool interesting = member.isEmpty() && !className.isEmpty();
+    for (TSNode a : args) {
+        CppValue v;
+        if (ts::is(a, "parameter_declaration")) {
+            // Most vexing parse: `T x(node)`; the "parameter" is the argument's text.
+            const QString text = simplified(m_tree, a);
+            if (!text.contains(u'('))
+                v = evaluateIdentifier(text, 0);
+            else if (text == QLatin1String("shared_from_this()") ||
+                     text == QLatin1String("weak_from_this()"))
+                v.kind = CppValue::Kind::SelfNode;
+            else
+                v.kind = CppValue::Kind::Expression;
+            v.text = text;
+        } else {
+            v = evaluate(a);
+        }
+        if (v.kind == CppValue::Kind::SelfNode)
+            interesting = true;
+        inst.arguments.append(v);
+    }
+    // Member initializers matter only when they hand the node to a helper.
+    if (!member.isEmpty())
+        for (const CppValue &v : std::as_const(inst.arguments))
+            if (v.kind == CppValue::Kind::SelfNode || v.kind == CppValue::Kind::FunctionParameter ||
+                v.kind == CppValue::Kind::Member)
+                interesting = true;
+    if (interesting)
+        m_function.instantiations.append(inst);
+}
+
+void CppFunctionExtractor::addFreeCall(const CallShape &shape, const std::vector<TSNode> &args)
+{
+    // Only calls without an object, and only those that pass something node-like: `this`, a
+    // parameter, a member or a plain variable (a procedural node).
+    if (!ts::isNull(shape.receiver) || args.empty() || shape.scope == QLatin1String("std"))
+        return;
+    if (shape.name == shape.name.toUpper())
+        return; // RCLCPP_INFO and other macros
+    CppFreeCall call;
+    call.function =
+        shape.scope.isEmpty() ? shape.name : shape.scope + QStringLiteral("::") + shape.name;
+    bool handsSomething = false;
+    for (TSNode a : args) {
+        const CppValue v = evaluate(a);
+        const bool plain = v.kind == CppValue::Kind::Expression && !v.text.isEmpty() &&
+                           (v.text.at(0).isLetter() || v.text.at(0) == u'_') &&
+                           !v.text.contains(u'(') && !v.text.contains(u' ');
+        handsSomething = handsSomething || plain || v.kind == CppValue::Kind::SelfNode ||
+                         v.kind == CppValue::Kind::FunctionParameter ||
+                         v.kind == CppValue::Kind::Member;
+        call.arguments.append(v);
+    }
+    if (handsSomething)
+        m_function.freeCalls.append(call);
+}
+
+void CppFunctionExtractor::addProceduralNode(TSNode creation, const std::vector<TSNode> &args,
+                                             bool lifecycle)
+{
+    CppProceduralNode node;
+    node.variable = assignedVariable(creation);
+    if (node.variable.startsWith(QLatin1String("this->")))
+        node.variable = node.variable.mid(6);
+    node.lifecycle = lifecycle;
+    if (!args.empty())
+        node.nodeName = evaluate(args.front());
+    node.evidence = m_tree.evidence(creation);
+    TSNode up = ts_node_parent(creation);
+    while (ts::is(up, "parenthesized_expression"))
+        up = ts_node_parent(up);
+    if (ts::is(up, "return_statement"))
+        return; // `return rclcpp::Node::make_shared(...)`: a factory
+    if (m_member) {
+        // In a member function only a node kept in a member matters (a node-like component).
+        if (node.variable.isEmpty() || m_locals.contains(node.variable) ||
+            m_function.parameterNames.contains(node.variable))
+            return;
+        node.member = true;
+    }
+    m_function.proceduralNodes.append(node);
+}
+
+bool CppFunctionExtractor::isProceduralNodeType(const QString &className, bool *lifecycle) const
+{
+    QString c = withoutTemplateArguments(className);
+    if (c.startsWith(QLatin1String("::")))
+        c = c.mid(2);
+    if (c == QLatin1String("rclcpp::Node") ||
+        (c == QLatin1String("Node") && m_context.rclcppNodeInScope)) {
+        *lifecycle = false;
+        return true;
+    }
+    if (c == QLatin1String("rclcpp_lifecycle::LifecycleNode") ||
+        (c == QLatin1String("LifecycleNode") && m_context.lifecycleNodeInScope)) {
+        *lifecycle = true;
+        return true;
+    }
+    return false;
+}
+
+QString CppFunctionExtractor::assignedVariable(TSNode expression) const
+{
+    TSNode n = expression;
+    TSNode p = ts_node_parent(n);
+    while (ts::is(p, "parenthesized_expression")) {
+        n = p;
+        p = ts_node_parent(p);
+    }
+    if (ts::is(p, "init_declarator") && nodesEqual(ts::field(p, "value"), n))
+        return m_tree.text(declaredName(ts::field(p, "declarator")));
+    if (ts::is(p, "assignment_expression") && nodesEqual(ts::field(p, "right"), n))
+        return simplified(m_tree, ts::field(p, "left"));
+    if (ts::is(p, "argument_list") && ts::is(ts_node_parent(p), "field_initializer"))
+        return simplified(m_tree, ts::namedChildren(ts_node_parent(p)).front());
+    return {};
+}
+
+} // namespace rosarch

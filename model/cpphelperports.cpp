@@ -1,0 +1,240 @@
+#include "cppnodelinker.h"
+
+#include "cppsyntax.h"
+
+// Ports created through helpers: classes and free functions that receive the node (`this`,
+// shared_from_this(), a procedural node) and create ports on it.
+namespace rosarch {
+
+using namespace cppsyntax;
+
+namespace {
+
+// "std::shared_ptr<ns::Helper<T>>", "ns::Helper::UniquePtr", "Helper *" -> "ns::Helper<T>".
+QString classFromType(const QString &type)
+{
+    QString t = type.simplified();
+    for (const char *prefix : {"const ", "mutable ", "static "})
+        if (t.startsWith(QLatin1String(prefix)))
+            t = t.mid(int(strlen(prefix)));
+    t.remove(u' ');
+    while (t.endsWith(u'*') || t.endsWith(u'&'))
+        t.chop(1);
+    for (const char *wrapper : {"std::shared_ptr<", "std::unique_ptr<", "std::weak_ptr<",
+                                "std::optional<", "shared_ptr<", "unique_ptr<"}) {
+        if (t.startsWith(QLatin1String(wrapper)) && t.endsWith(u'>')) {
+            t = t.mid(int(strlen(wrapper)));
+            t.chop(1);
+        }
+    }
+    QStringList parts = splitScope(t);
+    while (parts.size() > 1 &&
+           (parts.last() == QLatin1String("SharedPtr") ||
+            parts.last() == QLatin1String("UniquePtr") || parts.last() == QLatin1String("Ptr")))
+        parts.removeLast();
+    return parts.join(QStringLiteral("::"));
+}
+
+// "ns::Helper<a::B, C<int>>" -> {"a::B", "C<int>"}.
+QStringList templateArgumentsOf(const QString &type)
+{
+    const qsizetype open = type.indexOf(u'<');
+    if (open < 0 || !type.endsWith(u'>'))
+        return {};
+    QStringList out;
+    QString current;
+    int depth = 0;
+    for (qsizetype i = open + 1; i < type.size() - 1; ++i) {
+        const QChar c = type.at(i);
+        depth += c == u'<' ? 1 : c == u'>' ? -1 : 0;
+        if (c == u',' && depth == 0) {
+            out.append(current.trimmed());
+            current.clear();
+            continue;
+        }
+        current += c;
+    }
+    if (!current.trimmed().isEmpty())
+        out.append(current.trimmed());
+    return out;
+}
+
+bool looksLikeQos(const QString &text)
+{
+    return text.contains(QLatin1String("qos"), Qt::CaseInsensitive) ||
+           text.contains(QLatin1String("QoS"));
+}
+
+} // namespace
+
+void CppNodeLinker::addHelperPorts(const CppInstantiation &inst, const Context &ctx, int depth,
+                                   QList<Port> *ports) const
+{
+    if (depth > 3)
+        return;
+    bool handsNode = false;
+    for (const CppValue &arg : inst.arguments)
+        handsNode = handsNode || isNodeHandle(arg, ctx);
+    if (!handsNode)
+        return;
+    QStringList templateArguments;
+    const int helper = helperClass(inst, ctx, &templateArguments);
+    if (helper < 0 || helper == ctx.cls)
+        return;
+    *ports += helperPorts(helper, inst.arguments, templateArguments, ctx, depth + 1);
+}
+
+// `setup_publishers(node)`: the ports a free function creates on the node it is handed.
+void CppNodeLinker::addFreeCallPorts(const CppFreeCall &call, const Context &ctx, int depth,
+                                     QList<Port> *ports) const
+{
+    if (depth > 3)
+        return;
+    bool handsNode = false;
+    for (const CppValue &arg : call.arguments)
+        handsNode = handsNode || isNodeHandle(arg, ctx);
+    if (!handsNode)
+        return;
+    const int n = int(call.arguments.size());
+    const QStringList written = splitScope(call.function);
+    const QString scope = written.mid(0, written.size() - 1).join(QStringLiteral("::"));
+    QList<CppClassIndex::FunctionRef> candidates;
+    for (const auto &ref : m_freeFunctionsByName.value(written.value(written.size() - 1))) {
+        const CppFunction *fn = ref.function;
+        const QString ns = fn->namespaces.join(QStringLiteral("::"));
+        if (fn == ctx.fn || n < fn->requiredParameters ||
+            (!fn->variadic && n > fn->parameterNames.size()) ||
+            (!scope.isEmpty() && ns != scope && !ns.endsWith(QStringLiteral("::") + scope)))
+            continue;
+        candidates.append(ref);
+    }
+    // Inside a helper, a method called with the node (`configure(node)`) hands it on to what
+    // that method instantiates; its own port calls are already counted with the helper.
+    if (ctx.subst && ctx.cls >= 0) {
+        for (int c : m_index.lineage(ctx.cls)) {
+            for (const auto &ref : m_index.at(c).functions) {
+                const CppFunction *fn = ref.function;
+                if (fn == ctx.fn || fn->isConstructor ||
+                    fn->name != written.value(written.size() - 1) || n < fn->requiredParameters ||
+                    (!fn->variadic && n > fn->parameterNames.size()))
+                    continue;
+                const Substitution subst{call.arguments, ctx, ctx.subst->templateArguments, fn};
+                const Context inner{ctx.cls, fn, ref.file, &subst};
+                for (const CppInstantiation &inst : fn->instantiations)
+                    addHelperPorts(inst, inner, depth + 1, ports);
+                for (const CppFreeCall &next : fn->freeCalls)
+                    addFreeCallPorts(next, inner, depth + 1, ports);
+            }
+        }
+    }
+    // A same-named function in the caller's package wins over the rest of the workspace.
+    const QString package = ctx.file ? ctx.file->package : QString();
+    if (std::any_of(candidates.begin(), candidates.end(),
+                    [&](const auto &ref) { return ref.file->package == package; }))
+        candidates.removeIf([&](const auto &ref) { return ref.file->package != package; });
+    for (const auto &ref : std::as_const(candidates)) {
+        const CppFunction *fn = ref.function;
+        const Substitution subst{call.arguments, ctx, {}, fn};
+        const Context inner{-1, fn, ref.file, &subst};
+        for (const CppPortCall &port : fn->ports) {
+            if (port.typeIsTemplateParameter)
+                continue;
+            Port p = makePort(port, inner);
+            p.via = fn->name;
+            ports->append(p);
+        }
+        for (const CppInstantiation &inst : fn->instantiations)
+            addHelperPorts(inst, inner, depth + 1, ports);
+        for (const CppFreeCall &next : fn->freeCalls)
+            addFreeCallPorts(next, inner, depth + 1, ports);
+    }
+}
+
+int CppNodeLinker::helperClass(const CppInstantiation &inst, const Context &ctx,
+                               QStringList *templateArguments) const
+{
+    QString type = inst.className;
+    if (type.isEmpty() && !inst.member.isEmpty() && ctx.cls >= 0) {
+        for (int c : m_index.lineage(ctx.cls)) {
+            type = m_index.at(c).cls->memberTypes.value(inst.member);
+            if (!type.isEmpty())
+                break;
+        }
+    }
+    if (type.isEmpty())
+        return -1;
+    // `using ActionServer = SimpleActionServer<Action>; make_unique<ActionServer>(...)`
+    const QString written = classFromType(expandAliases(classFromType(type), ctx));
+    const int h = m_index.lookup(withoutTemplateArguments(written), scopeOf(ctx), ctx.file);
+    if (h < 0 || m_index.at(h).node || ownedNode(h))
+        return -1;
+    *templateArguments = templateArgumentsOf(written);
+    return h;
+}
+
+QList<Port> CppNodeLinker::helperPorts(int helper, const QList<CppValue> &arguments,
+                                       const QStringList &templateArguments, const Context &outer,
+                                       int depth) const
+{
+    QList<Port> ports;
+    Substitution subst{arguments, outer, {}};
+    // A helper template (SimpleActionServer<ActionT>) gets its interface type from the
+    // instantiation.
+    const QStringList &parameters = m_index.at(helper).cls->templateParameters;
+    for (qsizetype i = 0; i < parameters.size() && i < templateArguments.size(); ++i)
+        subst.templateArguments.insert(parameters.at(i),
+                                       expandAliases(templateArguments.at(i), outer));
+    const QString via = m_index.at(helper).cls->name;
+    QList<const CppFunction *> constructors;
+    for (const auto &ref : m_index.at(helper).functions)
+        if (ref.function->isConstructor)
+            constructors.append(ref.function);
+    for (int c : m_index.lineage(helper)) {
+        for (const auto &ref : m_index.at(c).functions) {
+            if (c == helper && ref.function->isConstructor &&
+                !constructorApplies(*ref.function, arguments, constructors))
+                continue;
+            const Context ctx{helper, ref.function, ref.file, &subst};
+            for (const CppPortCall &call : ref.function->ports) {
+                if (call.typeIsTemplateParameter &&
+                    !subst.templateArguments.contains(splitScope(call.typeWritten).value(0)))
+                    continue;
+                Port p = makePort(call, ctx);
+                p.via = via;
+                ports.append(p);
+            }
+            for (const CppInstantiation &inst : ref.function->instantiations)
+                addHelperPorts(inst, ctx, depth, &ports);
+            for (const CppFreeCall &call : ref.function->freeCalls)
+                addFreeCallPorts(call, ctx, depth, &ports);
+        }
+    }
+    return ports;
+}
+
+// Of overloaded constructors, only those the instantiation can call create ports: the
+// argument count must fit, and a QoS argument should meet a QoS parameter.
+bool CppNodeLinker::constructorApplies(const CppFunction &fn, const QList<CppValue> &arguments,
+                                       const QList<const CppFunction *> &constructors) const
+{
+    const int n = int(arguments.size());
+    auto fits = [n](const CppFunction *c) {
+        return n >= c->requiredParameters && (c->variadic || n <= c->parameterNames.size());
+    };
+    auto score = [&](const CppFunction *c) {
+        int s = 0;
+        for (int i = 0; i < n && i < c->parameterTypes.size(); ++i)
+            s +=
+                looksLikeQos(arguments.at(i).text) == looksLikeQos(c->parameterTypes.at(i)) ? 1 : 0;
+        return s;
+    };
+    int best = -1;
+    for (const CppFunction *c : constructors)
+        if (fits(c))
+            best = std::max(best, score(c));
+    if (best < 0)
+        return true; // nothing fits: the parse is incomplete, keep everything
+    return fits(&fn) && score(&fn) == best;
+}
+
+} // namespace rosarch

@@ -1,0 +1,377 @@
+#include "cppnodelinker.h"
+
+#include "cppsyntax.h"
+
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QSet>
+
+#include <algorithm>
+
+namespace rosarch {
+
+using namespace cppsyntax;
+
+namespace {
+
+bool evidenceLess(const Evidence &a, const Evidence &b)
+{
+    if (a.file != b.file)
+        return a.file < b.file;
+    if (a.line != b.line)
+        return a.line < b.line;
+    return a.column < b.column;
+}
+
+QString fileStem(const QString &path)
+{
+    return QFileInfo(path).completeBaseName();
+}
+
+// `std::bind(&C::f, this, _1)` / `[this](...) {...}` / `&C::f` / `cb` as text -> callback name.
+QString callbackFromText(const QString &text)
+{
+    const QString t = text.trimmed();
+    if (t.startsWith(u'['))
+        return QStringLiteral("lambda");
+    static const QRegularExpression member(QStringLiteral("&\\s*([A-Za-z_][\\w:]*)"));
+    const auto m = member.match(t);
+    if (m.hasMatch())
+        return lastSegment(m.captured(1));
+    static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_][\\w:]*$"));
+    return identifier.match(t).hasMatch() ? lastSegment(t) : QString();
+}
+
+// gtest bodies (TEST, TEST_F) parse as functions named by the macro; their nodes are fixtures.
+bool isMacroFunction(const QString &name)
+{
+    return !name.isEmpty() && name == name.toUpper() && name.at(0).isLetter();
+}
+
+} // namespace
+
+CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files) : m_files(files), m_index(files)
+{
+    for (const CppFileFacts &file : files) {
+        for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
+            if (!canonicalInterfaceType(it.value()).contains(u'/'))
+                continue;
+            for (const QString &scope : {file.package, QString()}) {
+                QHash<QString, QString> &aliases = m_interfaceAliases[scope];
+                if (!aliases.contains(it.key()))
+                    aliases.insert(it.key(), it.value());
+            }
+        }
+    }
+    // What each class's members hold and which parameters it declares, in source order.
+    m_facts.resize(size_t(m_index.size()));
+    for (int i = 0; i < m_index.size(); ++i) {
+        MemberFacts &f = m_facts[size_t(i)];
+        const CppClassIndex::ClassInfo &info = m_index.at(i);
+        for (const CppMemberBinding &b : info.cls->memberInitializers)
+            f.bindings[b.member].append({b.value, nullptr, info.file});
+        for (const auto &ref : info.functions) {
+            for (const CppMemberBinding &b : ref.function->memberBindings)
+                f.bindings[b.member].append({b.value, ref.function, ref.file});
+            for (const CppParameterDeclaration &d : ref.function->parameterDeclarations)
+                if (!f.parameters.contains(d.parameter))
+                    f.parameters.insert(d.parameter, d);
+        }
+    }
+    for (const auto &ref : m_index.freeFunctions())
+        if (ref.function->name != QLatin1String("main"))
+            m_freeFunctionsByName[ref.function->name].append(ref);
+    m_ownedNodes.assign(size_t(m_index.size()), nullptr);
+    QSet<QString> registered;
+    for (const CppFileFacts &file : files)
+        for (const ComponentRegistration &r : file.registrations)
+            registered.insert(r.pluginClass.startsWith(QLatin1String("::")) ? r.pluginClass.mid(2)
+                                                                            : r.pluginClass);
+    for (int i = 0; i < m_index.size(); ++i) {
+        const CppClassIndex::ClassInfo &info = m_index.at(i);
+        if (info.node)
+            continue;
+        // gtest fixtures own throwaway nodes; they are test scaffolding, not components.
+        bool fixture = false;
+        for (const QString &base : info.cls->bases)
+            fixture = fixture || base.contains(QLatin1String("testing::Test"));
+        if (fixture)
+            continue;
+        const CppProceduralNode *owned = nullptr;
+        bool ports = false;
+        for (const auto &ref : info.functions) {
+            ports = ports || !ref.function->ports.isEmpty();
+            for (const CppProceduralNode &pn : ref.function->proceduralNodes)
+                if (pn.member && !owned)
+                    owned = &pn;
+        }
+        if (owned && (ports || registered.contains(info.cls->qualifiedName)))
+            m_ownedNodes[size_t(i)] = owned;
+    }
+}
+
+// Parameters of the function in `ctx` stand for the arguments of the helper's instantiation
+// (its constructors) or of the call (a free helper function).
+bool CppNodeLinker::substitutes(const Context &ctx)
+{
+    if (!ctx.subst || !ctx.fn)
+        return false;
+    return ctx.subst->function ? ctx.fn == ctx.subst->function : ctx.fn->isConstructor;
+}
+
+const CppProceduralNode *CppNodeLinker::ownedNode(int cls) const
+{
+    return cls >= 0 && cls < int(m_ownedNodes.size()) ? m_ownedNodes[size_t(cls)] : nullptr;
+}
+
+LanguageAnalysis CppNodeLinker::link() const
+{
+    LanguageAnalysis out;
+    for (int i = 0; i < m_index.size(); ++i) {
+        if (m_index.at(i).node)
+            out.nodes.append(classNode(i));
+        else if (const CppProceduralNode *owned = ownedNode(i))
+            out.nodes.append(classNode(i, owned));
+    }
+    QHash<QString, int> stems;
+    for (const auto &ref : m_index.freeFunctions()) {
+        if (isMacroFunction(ref.function->name))
+            continue;
+        QList<AtomicNode> procedural;
+        addProceduralNodes(ref, &procedural, &stems);
+        addEntryPoint(ref, procedural, &out.entryPoints);
+        out.nodes += procedural;
+    }
+    for (const CppFileFacts &file : m_files)
+        out.registrations += file.registrations;
+    std::stable_sort(out.nodes.begin(), out.nodes.end(),
+                     [](const AtomicNode &a, const AtomicNode &b) {
+                         if (a.packageName != b.packageName)
+                             return a.packageName < b.packageName;
+                         if (a.className != b.className)
+                             return a.className < b.className;
+                         if (a.qualifiedName != b.qualifiedName)
+                             return a.qualifiedName < b.qualifiedName;
+                         return evidenceLess(a.evidence, b.evidence);
+                     });
+    return out;
+}
+
+AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) const
+{
+    const CppClassIndex::ClassInfo &info = m_index.at(index);
+    AtomicNode node;
+    node.className = info.cls->name;
+    node.qualifiedName = info.cls->qualifiedName;
+    node.packageName = info.file->package;
+    node.compileType = AtomicNode::CompileType::Cpp;
+    node.baseClasses = info.cls->bases;
+    node.lifecycle = info.lifecycle;
+    node.evidence = info.cls->evidence;
+    QStringList files{info.file->path};
+    for (const auto &ref : info.functions)
+        if (!files.contains(ref.file->path))
+            files.append(ref.file->path);
+    for (const QString &f : std::as_const(files))
+        (isHeaderPath(f) ? node.headerFiles : node.sourceFiles).append(f);
+    node.headerFiles.sort();
+    node.sourceFiles.sort();
+
+    node.nodeName = nodeNameOf(index, 0);
+    if (owned) { // a component that owns its rclcpp::Node instead of deriving from it
+        node.nodeName = owned->nodeName.kind == CppValue::Kind::Literal ? owned->nodeName.literal
+                                                                        : owned->nodeName.text;
+        node.lifecycle = owned->lifecycle;
+    }
+
+    QList<Port> ports = portsOf(index, false);
+    const QList<int> lineage = m_index.lineage(index);
+    for (qsizetype i = 1; i < lineage.size(); ++i)
+        ports += portsOf(lineage[i], true);
+    std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
+        return evidenceLess(a.evidence, b.evidence);
+    });
+    // One call can be reached twice (a helper instantiated twice with the same arguments).
+    for (const Port &p : std::as_const(ports))
+        if (!node.ports.contains(p))
+            node.ports.append(p);
+    return node;
+}
+
+// The first argument of the base-class initializer in a constructor; without one, the base's
+// default constructor names the node.
+QString CppNodeLinker::nodeNameOf(int index, int depth) const
+{
+    const CppClassIndex::ClassInfo &info = m_index.at(index);
+    QStringList baseNames;
+    for (const QString &b : info.cls->bases)
+        baseNames << withoutTemplateArguments(b).remove(u' ') << lastSegment(b);
+    QString fallback;
+    for (const auto &ref : info.functions) {
+        if (!ref.function->isConstructor)
+            continue;
+        for (const CppBaseInitializer &init : ref.function->baseInitializers) {
+            const QString name = withoutTemplateArguments(init.name).remove(u' ');
+            if (!baseNames.contains(name) && !baseNames.contains(lastSegment(name)))
+                continue;
+            if (init.firstArgument.kind == CppValue::Kind::Literal)
+                return init.firstArgument.literal;
+            if (fallback.isEmpty())
+                fallback = init.firstArgument.text;
+            break;
+        }
+    }
+    if (!fallback.isEmpty() || depth > kMaxDepth)
+        return fallback;
+    for (int b : info.projectBases)
+        if (m_index.at(b).node)
+            return nodeNameOf(b, depth + 1);
+    return {};
+}
+
+QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
+{
+    QList<Port> ports;
+    for (const auto &ref : m_index.at(cls).functions) {
+        const Context ctx{cls, ref.function, ref.file, nullptr};
+        for (const CppPortCall &call : ref.function->ports)
+            if (!call.typeIsTemplateParameter)
+                ports.append(makePort(call, ctx));
+        for (const CppInstantiation &inst : ref.function->instantiations)
+            addHelperPorts(inst, ctx, 0, &ports);
+        for (const CppFreeCall &call : ref.function->freeCalls)
+            addFreeCallPorts(call, ctx, 0, &ports);
+    }
+    for (Port &p : ports)
+        p.inherited = inherited;
+    return ports;
+}
+
+Port CppNodeLinker::makePort(const CppPortCall &call, const Context &ctx) const
+{
+    Port port;
+    port.kind = call.kind;
+    const Resolved r = resolve(call.name, ctx);
+    port.name = r.name;
+    port.nameOrigin = r.origin;
+    port.nameExpression = r.expression;
+    port.parameter = r.parameter;
+    port.type = call.imageTransport ? QStringLiteral("sensor_msgs/msg/Image")
+                                    : resolveType(call.typeWritten, ctx);
+    port.callback = call.callback;
+    if (call.callbackParameter >= 0 && substitutes(ctx) &&
+        call.callbackParameter < ctx.subst->arguments.size()) {
+        const QString handed =
+            callbackFromText(ctx.subst->arguments.at(call.callbackParameter).text);
+        if (!handed.isEmpty())
+            port.callback = handed;
+    }
+    port.guard = call.guard;
+    port.guardParameter = guardParameter(call.guardValue, ctx);
+    port.evidence = call.evidence;
+    return port;
+}
+
+void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
+                                       QList<AtomicNode> *nodes, QHash<QString, int> *stems) const
+{
+    const CppFunction &fn = *ref.function;
+    const Context ctx{-1, &fn, ref.file, nullptr};
+    QStringList variables;
+    for (const CppProceduralNode &pn : fn.proceduralNodes) {
+        // `node = make_shared<rclcpp::Node>(...)` in both branches of an if: one node.
+        if (!pn.variable.isEmpty() && variables.contains(pn.variable))
+            continue;
+        variables.append(pn.variable);
+        AtomicNode node;
+        const QString stem = fileStem(ref.file->path);
+        const int seen = (*stems)[ref.file->path]++;
+        node.className = seen == 0 ? stem : QStringLiteral("%1_%2").arg(stem).arg(seen + 1);
+        node.qualifiedName = node.className;
+        node.packageName = ref.file->package;
+        node.compileType = AtomicNode::CompileType::Cpp;
+        node.procedural = true;
+        node.lifecycle = pn.lifecycle;
+        node.evidence = fn.evidence;
+        (isHeaderPath(ref.file->path) ? node.headerFiles : node.sourceFiles).append(ref.file->path);
+        if (pn.nodeName.kind == CppValue::Kind::Literal)
+            node.nodeName = pn.nodeName.literal;
+        else if (!pn.nodeName.isNone())
+            node.nodeName = resolve(pn.nodeName, ctx).name;
+        if (pn.variable.isEmpty()) {
+            nodes->append(node);
+            continue;
+        }
+        auto onVariable = [&](const QString &receiver) {
+            if (receiver == pn.variable)
+                return true;
+            if (!receiver.startsWith(pn.variable))
+                return false;
+            const QChar next = receiver.at(pn.variable.size());
+            return !next.isLetterOrNumber() && next != u'_';
+        };
+        for (const CppPortCall &call : fn.ports)
+            if (!call.typeIsTemplateParameter && onVariable(call.receiver))
+                node.ports.append(makePort(call, ctx));
+        // Helpers handed this node see it as `this` would be seen in a node class.
+        auto handOver = [&](QList<CppValue> *arguments) {
+            bool uses = false;
+            for (CppValue &arg : *arguments) {
+                if (arg.text == pn.variable || arg.text == QStringLiteral("*") + pn.variable) {
+                    arg.kind = CppValue::Kind::SelfNode;
+                    uses = true;
+                }
+            }
+            return uses;
+        };
+        for (CppInstantiation inst : fn.instantiations)
+            if (handOver(&inst.arguments))
+                addHelperPorts(inst, ctx, 0, &node.ports);
+        for (CppFreeCall call : fn.freeCalls)
+            if (handOver(&call.arguments))
+                addFreeCallPorts(call, ctx, 0, &node.ports);
+        std::stable_sort(node.ports.begin(), node.ports.end(), [](const Port &a, const Port &b) {
+            return evidenceLess(a.evidence, b.evidence);
+        });
+        nodes->append(node);
+    }
+}
+
+void CppNodeLinker::addEntryPoint(const CppClassIndex::FunctionRef &ref,
+                                  const QList<AtomicNode> &procedural,
+                                  QList<EntryPoint> *entryPoints) const
+{
+    const CppFunction &fn = *ref.function;
+    EntryPoint entry;
+    entry.file = ref.file->path;
+    entry.function = fn.name;
+    entry.evidence = fn.evidence;
+    for (const CppInstantiation &inst : fn.instantiations) {
+        if (inst.className.isEmpty())
+            continue;
+        const int c = m_index.lookup(inst.className, fn.namespaces, ref.file);
+        if (c >= 0 && m_index.at(c).node && !entry.instantiatedClasses.contains(inst.className))
+            entry.instantiatedClasses.append(inst.className);
+    }
+    for (const AtomicNode &node : procedural)
+        if (!entry.instantiatedClasses.contains(node.className))
+            entry.instantiatedClasses.append(node.className);
+    if (!entry.instantiatedClasses.isEmpty())
+        entryPoints->append(entry);
+}
+
+QStringList CppNodeLinker::scopeOf(const Context &ctx) const
+{
+    if (ctx.cls >= 0) {
+        const CppClass &c = *m_index.at(ctx.cls).cls;
+        return c.scope + QStringList{c.name};
+    }
+    return ctx.fn ? ctx.fn->namespaces : QStringList();
+}
+
+const CppNodeLinker::MemberFacts &CppNodeLinker::facts(int cls) const
+{
+    return m_facts[size_t(cls)];
+}
+
+} // namespace rosarch

@@ -1,0 +1,284 @@
+#include "cppfunctionextractor.h"
+
+// The port-creating calls of a function: which calls create ports, their name and type
+// arguments, callbacks and the `if` conditions around them.
+namespace rosarch {
+
+using namespace cppsyntax;
+
+namespace {
+
+bool encloses(TSNode outer, TSNode inner)
+{
+    return !ts::isNull(outer) && ts_node_start_byte(inner) >= ts_node_start_byte(outer) &&
+           ts_node_end_byte(inner) <= ts_node_end_byte(outer);
+}
+
+bool sameNode(TSNode a, TSNode b)
+{
+    return !ts::isNull(a) && !ts::isNull(b) && ts_node_eq(a, b);
+}
+
+struct PortCallKind
+{
+    bool port = false;
+    bool generic = false; ///< create_generic_*: the type is the second argument, as a string
+    PortKind kind = PortKind::Publisher;
+    bool freeForm =
+        false;          ///< the node is the first argument: rclcpp_action::create_server(node, ...)
+    bool image = false; ///< image_transport: the type is always sensor_msgs/msg/Image
+};
+
+bool looksLikeImageTransport(const QString &receiver)
+{
+    const QString r = receiver.toLower();
+    return r == QLatin1String("it") || r == QLatin1String("it_") ||
+           r.contains(QLatin1String("transport")) || r.endsWith(QLatin1String("it_")) ||
+           r.contains(QLatin1String("image_transport"));
+}
+
+PortCallKind portCallKind(const CallShape &shape, const QString &receiverText,
+                          const QString &receiverType)
+{
+    PortCallKind k;
+    const QString &n = shape.name;
+    const QString &scope = shape.scope;
+    const bool scoped = !scope.isEmpty();
+    // `rclcpp::Node::create_publisher` names the member explicitly; anything else scoped is a
+    // free function that takes the node first.
+    const bool memberQualified = scoped && scope.endsWith(QLatin1String("Node"));
+    const bool free = scoped && !memberQualified;
+    const bool imageScope = scope.contains(QLatin1String("image_transport"));
+    k.freeForm = free;
+    if (imageScope) {
+        if (n == QLatin1String("create_publisher") ||
+            n == QLatin1String("create_camera_publisher")) {
+            k.port = true;
+            k.kind = PortKind::Publisher;
+            k.image = true;
+        } else if (n == QLatin1String("create_subscription") ||
+                   n == QLatin1String("create_camera_subscription")) {
+            k.port = true;
+            k.kind = PortKind::Subscriber;
+            k.image = true;
+        }
+        return k;
+    }
+    if (n == QLatin1String("create_publisher")) {
+        k.port = true;
+        k.kind = PortKind::Publisher;
+    } else if (n == QLatin1String("create_subscription")) {
+        k.port = true;
+        k.kind = PortKind::Subscriber;
+    } else if (n == QLatin1String("create_service")) {
+        k.port = true;
+        k.kind = PortKind::ServiceServer;
+    } else if (n == QLatin1String("create_client")) {
+        k.port = true;
+        k.kind = scope.contains(QLatin1String("rclcpp_action")) ? PortKind::ActionClient
+                                                                : PortKind::ServiceClient;
+    } else if (n == QLatin1String("create_server") &&
+               scope.contains(QLatin1String("rclcpp_action"))) {
+        k.port = true;
+        k.kind = PortKind::ActionServer;
+    } else if (n == QLatin1String("create_generic_publisher") ||
+               n == QLatin1String("create_generic_subscription")) {
+        k.port = true;
+        k.generic = true;
+        k.kind =
+            n.endsWith(QLatin1String("publisher")) ? PortKind::Publisher : PortKind::Subscriber;
+    } else if (n == QLatin1String("create_action_server")) {
+        k.port = true;
+        k.kind = PortKind::ActionServer;
+    } else if (n == QLatin1String("create_action_client")) {
+        k.port = true;
+        k.kind = PortKind::ActionClient;
+    } else if (!scoped && !ts::isNull(shape.receiver) &&
+               (n == QLatin1String("advertise") || n == QLatin1String("advertiseCamera"))) {
+        k.port = true;
+        k.kind = PortKind::Publisher;
+        k.image = true;
+    } else if (!scoped && !ts::isNull(shape.receiver) &&
+               (n == QLatin1String("subscribe") || n == QLatin1String("subscribeCamera")) &&
+               (receiverType.contains(QLatin1String("ImageTransport")) ||
+                looksLikeImageTransport(receiverText))) {
+        k.port = true;
+        k.kind = PortKind::Subscriber;
+        k.image = true;
+    }
+    return k;
+}
+
+bool isNodeHandleArgument(const QString &text)
+{
+    return text.contains(QLatin1String("get_node_")) || text.contains(QLatin1String("_interface"));
+}
+
+bool looksLikeNonCallback(const QString &text)
+{
+    const QString t = text.toLower();
+    return t.contains(QLatin1String("qos")) || t.contains(QLatin1String("option")) ||
+           t.contains(QLatin1String("group")) || t.contains(QLatin1String("profile")) ||
+           t == QLatin1String("nullptr") || t == QLatin1String("null");
+}
+
+} // namespace
+
+bool CppFunctionExtractor::onPortCall(TSNode call, const CallShape &shape,
+                                      const std::vector<TSNode> &args)
+{
+    QString receiverText;
+    QString receiverType;
+    if (!ts::isNull(shape.receiver)) {
+        receiverText = simplified(m_tree, shape.receiver);
+        const auto it = m_locals.constFind(receiverText);
+        if (it != m_locals.constEnd())
+            receiverType = it->type;
+    }
+    const PortCallKind k = portCallKind(shape, receiverText, receiverType);
+    if (!k.port)
+        return false;
+    int nameIndex = 0;
+    if (k.freeForm) {
+        nameIndex = 1;
+        while (nameIndex < int(args.size()) - 1 &&
+               isNodeHandleArgument(simplified(m_tree, args[size_t(nameIndex)])))
+            ++nameIndex;
+    }
+    if (nameIndex >= int(args.size()))
+        return false;
+
+    CppPortCall port;
+    port.kind = k.kind;
+    port.imageTransport = k.image;
+    port.evidence = m_tree.evidence(call);
+    port.name = evaluate(args[size_t(nameIndex)]);
+    if (!ts::isNull(shape.templateArguments))
+        port.typeWritten = firstTemplateArgument(m_tree, shape.templateArguments);
+    int callbackFrom = nameIndex + 1;
+    if (k.generic && nameIndex + 1 < int(args.size())) {
+        const CppValue type = evaluate(args[size_t(nameIndex + 1)]);
+        port.typeWritten =
+            type.kind == CppValue::Kind::Literal || type.kind == CppValue::Kind::Local
+                ? type.literal
+                : type.text;
+        ++callbackFrom;
+    }
+    if (!port.typeWritten.isEmpty() && !k.generic) {
+        const QString head = splitScope(withoutTemplateArguments(port.typeWritten)).value(0);
+        port.typeIsTemplateParameter =
+            m_templateParameters.contains(head) || m_templateParameters.contains(port.typeWritten);
+    }
+    if (k.freeForm)
+        port.receiver = simplified(m_tree, args.front());
+    else if (!ts::isNull(shape.receiver))
+        port.receiver = receiverText;
+    if (port.kind == PortKind::Subscriber || port.kind == PortKind::ServiceServer ||
+        port.kind == PortKind::ActionServer) {
+        port.callback = callbackName(args, callbackFrom);
+        const int at = m_function.parameterNames.indexOf(port.callback);
+        if (at >= 0 && !m_locals.contains(port.callback))
+            port.callbackParameter = at;
+    }
+    guardOf(call, &port.guard, &port.guardValue);
+    m_function.ports.append(port);
+    return true;
+}
+
+QString CppFunctionExtractor::callbackName(const std::vector<TSNode> &args, int first) const
+{
+    for (int i = first; i < int(args.size()); ++i) {
+        const TSNode a = unwrap(m_tree, args[size_t(i)]);
+        const auto t = ts::type(a);
+        if (t == "lambda_expression")
+            return QStringLiteral("lambda");
+        if (t == "pointer_expression") {
+            const QString target = simplified(m_tree, ts::field(a, "argument"));
+            return lastSegment(target);
+        }
+        if (t == "call_expression") {
+            const CallShape shape = callShape(m_tree, ts::field(a, "function"));
+            if (shape.name == QLatin1String("bind") || shape.name == QLatin1String("bind_front")) {
+                const auto bound = arguments(ts::field(a, "arguments"));
+                if (bound.empty())
+                    return QStringLiteral("bind");
+                const TSNode target = unwrap(m_tree, bound.front());
+                if (ts::is(target, "pointer_expression"))
+                    return lastSegment(simplified(m_tree, ts::field(target, "argument")));
+                if (ts::is(target, "lambda_expression"))
+                    return QStringLiteral("lambda");
+                return lastSegment(simplified(m_tree, target));
+            }
+            continue; // QoS constructors and the like
+        }
+        if (t == "identifier" || t == "field_expression" || t == "qualified_identifier") {
+            const QString text = simplified(m_tree, a);
+            if (looksLikeNonCallback(text))
+                continue;
+            if (t == "identifier") {
+                const auto it = m_locals.constFind(text);
+                if (it != m_locals.constEnd() && !ts::isNull(it->value)) {
+                    const TSNode value = unwrap(m_tree, it->value);
+                    if (ts::is(value, "call_expression")) {
+                        // A local holding std::bind(&C::f, ...) names f.
+                        const QString bound = callbackName({value}, 0);
+                        if (!bound.isEmpty() && bound != QLatin1String("lambda"))
+                            return bound;
+                    }
+                }
+                return text;
+            }
+            if (t == "field_expression")
+                return m_tree.text(ts::field(a, "field"));
+            return lastSegment(text);
+        }
+    }
+    return {};
+}
+
+void CppFunctionExtractor::guardOf(TSNode call, QString *guard, CppValue *guardValue) const
+{
+    QStringList conditions;
+    TSNode child = call;
+    for (TSNode p = ts_node_parent(call); !ts::isNull(p) && !sameNode(p, m_definition);
+         child = p, p = ts_node_parent(p)) {
+        if (!ts::is(p, "if_statement"))
+            continue;
+        const TSNode clause = ts::field(p, "condition");
+        TSNode value = ts::field(clause, "value");
+        if (ts::isNull(value))
+            value = clause;
+        QString text = simplified(m_tree, value);
+        if (ts::is(value, "condition_clause") && text.startsWith(u'(') && text.endsWith(u')'))
+            text = text.mid(1, text.size() - 2).trimmed();
+        bool negated = false;
+        if (encloses(ts::field(p, "consequence"), child))
+            negated = false;
+        else if (encloses(ts::field(p, "alternative"), child))
+            negated = true;
+        else
+            continue; // inside the condition itself
+        conditions.prepend(negated ? QStringLiteral("!(%1)").arg(text) : text);
+        if (guardValue->isNone()) {
+            CppValue found;
+            ts::walk(value, [&](TSNode n) {
+                if (found.kind == CppValue::Kind::Parameter)
+                    return false;
+                const auto t = ts::type(n);
+                if (t == "identifier" || t == "field_expression" || t == "call_expression") {
+                    const CppValue v = evaluate(n);
+                    if (v.kind == CppValue::Kind::Parameter ||
+                        (found.isNone() &&
+                         (v.kind == CppValue::Kind::Member || v.kind == CppValue::Kind::Local)))
+                        found = v;
+                    return false;
+                }
+                return true;
+            });
+            *guardValue = found;
+        }
+    }
+    *guard = conditions.join(QStringLiteral(" && "));
+}
+
+} // namespace rosarch

@@ -1,0 +1,357 @@
+#include "cppsyntax.h"
+
+#include <QRegularExpression>
+
+namespace rosarch::cppsyntax {
+
+namespace {
+
+QString nodeText(const SyntaxTree &tree, TSNode n)
+{
+    return tree.text(n);
+}
+
+// Descends the `scope::scope::name` chain of a qualified_identifier.
+void splitQualifiedIdentifier(const SyntaxTree &tree, TSNode n, QStringList *scope, TSNode *last)
+{
+    while (ts::is(n, "qualified_identifier")) {
+        const TSNode s = ts::field(n, "scope");
+        if (!ts::isNull(s))
+            scope->append(simplified(tree, s));
+        n = ts::field(n, "name");
+    }
+    *last = n;
+}
+
+} // namespace
+
+CallShape callShape(const SyntaxTree &tree, TSNode function)
+{
+    CallShape shape;
+    TSNode n = function;
+    if (ts::is(n, "qualified_identifier")) {
+        QStringList scope;
+        splitQualifiedIdentifier(tree, n, &scope, &n);
+        shape.scope = scope.join(QStringLiteral("::"));
+    } else if (ts::is(n, "field_expression")) {
+        shape.receiver = ts::field(n, "argument");
+        const TSNode op = ts::field(n, "operator");
+        shape.arrow = ts::isNull(op) ? tree.view(n).find("->") != std::string_view::npos
+                                     : tree.view(op) == "->";
+        n = ts::field(n, "field");
+        if (ts::is(n, "qualified_identifier")) {
+            QStringList scope;
+            splitQualifiedIdentifier(tree, n, &scope, &n);
+            shape.scope = scope.join(QStringLiteral("::"));
+        }
+    }
+    if (ts::is(n, "template_function") || ts::is(n, "template_method")) {
+        shape.name = nodeText(tree, ts::field(n, "name"));
+        shape.templateArguments = ts::field(n, "arguments");
+    } else if (ts::is(n, "identifier") || ts::is(n, "field_identifier")) {
+        shape.name = nodeText(tree, n);
+    }
+    return shape;
+}
+
+QString firstTemplateArgument(const SyntaxTree &tree, TSNode templateArguments)
+{
+    for (TSNode a : ts::namedChildren(templateArguments)) {
+        if (ts::is(a, "comment"))
+            continue;
+        return simplified(tree, a);
+    }
+    return {};
+}
+
+std::vector<TSNode> arguments(TSNode list)
+{
+    std::vector<TSNode> out;
+    for (TSNode a : ts::namedChildren(list))
+        if (!ts::is(a, "comment"))
+            out.push_back(a);
+    return out;
+}
+
+bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content)
+{
+    if (ts::is(n, "string_literal")) {
+        const std::string_view v = tree.view(n);
+        const size_t open = v.find('"');
+        if (open == std::string_view::npos || v.size() < open + 2 || v.back() != '"')
+            return false;
+        *content = QString::fromUtf8(v.data() + open + 1, qsizetype(v.size() - open - 2));
+        return true;
+    }
+    if (ts::is(n, "raw_string_literal")) {
+        static const QRegularExpression raw(QStringLiteral("^[uUL8]*R\"([^(]*)\\((.*)\\)\\1\"$"),
+                                            QRegularExpression::DotMatchesEverythingOption);
+        const auto m = raw.match(tree.text(n));
+        if (!m.hasMatch())
+            return false;
+        *content = m.captured(2);
+        return true;
+    }
+    if (ts::is(n, "concatenated_string")) {
+        QString all;
+        for (TSNode part : arguments(n)) {
+            QString piece;
+            if (!stringLiteral(tree, part, &piece))
+                return false;
+            all += piece;
+        }
+        *content = all;
+        return true;
+    }
+    return false;
+}
+
+TSNode unwrap(const SyntaxTree &tree, TSNode n)
+{
+    for (int guard = 0; guard < 16 && !ts::isNull(n); ++guard) {
+        if (ts::is(n, "parenthesized_expression")) {
+            const auto inner = arguments(n);
+            if (inner.size() != 1)
+                return n;
+            n = inner.front();
+            continue;
+        }
+        if (ts::is(n, "cast_expression")) {
+            n = ts::field(n, "value");
+            continue;
+        }
+        if (ts::is(n, "call_expression") || ts::is(n, "compound_literal_expression")) {
+            QString name;
+            QString scope;
+            if (ts::is(n, "call_expression")) {
+                const CallShape shape = callShape(tree, ts::field(n, "function"));
+                name = shape.name;
+                scope = shape.scope;
+            } else {
+                const QStringList parts = splitScope(simplified(tree, ts::field(n, "type")));
+                name = parts.isEmpty() ? QString() : parts.last();
+                scope = parts.mid(0, parts.size() - 1).join(QStringLiteral("::"));
+            }
+            const bool transparent =
+                name == QLatin1String("static_cast") || name == QLatin1String("const_cast") ||
+                name == QLatin1String("reinterpret_cast") ||
+                ((name == QLatin1String("move") || name == QLatin1String("forward")) &&
+                 (scope.isEmpty() || scope == QLatin1String("std"))) ||
+                (name == QLatin1String("string") && scope == QLatin1String("std")) ||
+                name == QLatin1String("ParameterValue");
+            if (!transparent)
+                return n;
+            const TSNode list =
+                ts::is(n, "call_expression") ? ts::field(n, "arguments") : ts::field(n, "value");
+            const auto args = arguments(list);
+            if (args.empty())
+                return n;
+            n = args.front();
+            continue;
+        }
+        return n;
+    }
+    return n;
+}
+
+TSNode declaredName(TSNode declarator)
+{
+    TSNode n = declarator;
+    for (int guard = 0; guard < 16 && !ts::isNull(n); ++guard) {
+        const auto t = ts::type(n);
+        if (t == "identifier" || t == "field_identifier")
+            return n;
+        TSNode inner = ts::field(n, "declarator");
+        if (ts::isNull(inner)) {
+            // reference_declarator keeps its identifier as an unnamed-field child.
+            const auto kids = ts::namedChildren(n);
+            if (kids.empty())
+                break;
+            inner = kids.back();
+        }
+        n = inner;
+    }
+    TSNode null{};
+    return null;
+}
+
+QString simplified(const SyntaxTree &tree, TSNode n)
+{
+    return tree.text(n).simplified();
+}
+
+QStringList splitScope(const QString &qualified)
+{
+    QStringList out;
+    QString current;
+    int depth = 0;
+    const QString s = qualified.trimmed();
+    for (qsizetype i = 0; i < s.size(); ++i) {
+        const QChar c = s.at(i);
+        if (c == u'<' || c == u'(')
+            ++depth;
+        else if ((c == u'>' || c == u')') && depth > 0)
+            --depth;
+        if (depth == 0 && c == u':' && i + 1 < s.size() && s.at(i + 1) == u':') {
+            if (!current.trimmed().isEmpty())
+                out.append(current.trimmed());
+            current.clear();
+            ++i;
+            continue;
+        }
+        current += c;
+    }
+    if (!current.trimmed().isEmpty())
+        out.append(current.trimmed());
+    return out;
+}
+
+QString withoutTemplateArguments(const QString &name)
+{
+    QString out;
+    int depth = 0;
+    for (QChar c : name) {
+        if (c == u'<') {
+            ++depth;
+            continue;
+        }
+        if (c == u'>') {
+            if (depth > 0)
+                --depth;
+            continue;
+        }
+        if (depth == 0)
+            out += c;
+    }
+    return out.trimmed();
+}
+
+QString lastSegment(const QString &qualified)
+{
+    const QStringList parts = splitScope(withoutTemplateArguments(qualified));
+    return parts.isEmpty() ? QString() : parts.last();
+}
+
+QString canonicalInterfaceType(const QString &written)
+{
+    QString s = written.simplified();
+    for (const char *prefix : {"typename ", "const ", "struct ", "class "})
+        if (s.startsWith(QLatin1String(prefix)))
+            s = s.mid(int(strlen(prefix)));
+    s.remove(u' ');
+    while (s.endsWith(u'&') || s.endsWith(u'*'))
+        s.chop(1);
+    for (const char *wrapper : {"std::shared_ptr<", "std::unique_ptr<", "shared_ptr<"}) {
+        if (s.startsWith(QLatin1String(wrapper)) && s.endsWith(u'>')) {
+            s = s.mid(int(strlen(wrapper)));
+            s.chop(1);
+            if (s.startsWith(QLatin1String("const")))
+                s = s.mid(5);
+        }
+    }
+    // rclcpp::TypeAdapter<CustomType, ros_message_type>: the ROS type goes over the wire.
+    if (s.startsWith(QLatin1String("rclcpp::TypeAdapter<")) && s.endsWith(u'>')) {
+        const QString inner = s.mid(20, s.size() - 21);
+        int depth = 0;
+        for (qsizetype i = 0; i < inner.size(); ++i) {
+            const QChar c = inner.at(i);
+            depth += c == u'<' ? 1 : c == u'>' ? -1 : 0;
+            if (c == u',' && depth == 0)
+                return canonicalInterfaceType(inner.mid(i + 1));
+        }
+    }
+    QStringList parts = splitScope(s);
+    static const QStringList pointers = {
+        QStringLiteral("SharedPtr"), QStringLiteral("ConstSharedPtr"), QStringLiteral("UniquePtr"),
+        QStringLiteral("Ptr"),       QStringLiteral("ConstPtr"),       QStringLiteral("WeakPtr")};
+    while (parts.size() > 1 && pointers.contains(parts.last()))
+        parts.removeLast();
+    for (qsizetype i = parts.size() - 2; i >= 1; --i) {
+        const QString &kind = parts.at(i);
+        if (kind == QLatin1String("msg") || kind == QLatin1String("srv") ||
+            kind == QLatin1String("action")) {
+            QString type = parts.at(i + 1);
+            // Message templates with an allocator: String_<std::allocator<void>>.
+            if (type.contains(u'<')) {
+                type = withoutTemplateArguments(type);
+                if (type.endsWith(u'_'))
+                    type.chop(1);
+            }
+            // Nested types keep their ROS name: Fibonacci::Impl::FeedbackMessage ->
+            // Fibonacci_FeedbackMessage.
+            for (qsizetype j = i + 2; j < parts.size(); ++j)
+                if (parts.at(j) != QLatin1String("Impl"))
+                    type += u'_' + withoutTemplateArguments(parts.at(j));
+            return parts.at(i - 1) + u'/' + kind + u'/' + type;
+        }
+    }
+    return parts.join(QStringLiteral("::"));
+}
+
+void blankExportMacros(QByteArray *source)
+{
+    static const char *suffixes[] = {"_PUBLIC", "_LOCAL",       "_EXPORT",
+                                     "_IMPORT", "_PUBLIC_TYPE", "_API",
+                                     "_HIDDEN", "_DLLEXPORT",   "_DLLIMPORT"};
+    char *data = source->data();
+    const qsizetype size = source->size();
+    bool lineStart = true;
+    bool preprocessor = false;
+    for (qsizetype i = 0; i < size;) {
+        const char c = data[i];
+        if (c == '\n') {
+            // A continued preprocessor line stays a preprocessor line.
+            if (!(i > 0 && data[i - 1] == '\\'))
+                preprocessor = false;
+            lineStart = true;
+            ++i;
+            continue;
+        }
+        if (lineStart && (c == ' ' || c == '\t')) {
+            ++i;
+            continue;
+        }
+        if (lineStart && c == '#')
+            preprocessor = true;
+        lineStart = false;
+        if (c == '"') { // topic names in string literals stay as written
+            ++i;
+            while (i < size && data[i] != '"' && data[i] != '\n')
+                i += data[i] == '\\' ? 2 : 1;
+            ++i;
+            continue;
+        }
+        if (!(std::isalpha(uchar(c)) || c == '_')) {
+            ++i;
+            continue;
+        }
+        qsizetype end = i;
+        bool upper = true;
+        while (end < size && (std::isalnum(uchar(data[end])) || data[end] == '_')) {
+            upper = upper && !std::islower(uchar(data[end]));
+            ++end;
+        }
+        if (!preprocessor && upper && end - i > 7) {
+            const std::string_view word(data + i, size_t(end - i));
+            for (const char *suffix : suffixes) {
+                const std::string_view sv(suffix);
+                if (word.size() > sv.size() && word.substr(word.size() - sv.size()) == sv) {
+                    std::fill(data + i, data + end, ' ');
+                    break;
+                }
+            }
+        }
+        i = end;
+    }
+}
+
+bool isHeaderPath(const QString &path)
+{
+    const QString lower = path.toLower();
+    for (const char *ext : {".h", ".hh", ".hpp", ".hxx", ".inl", ".ipp"})
+        if (lower.endsWith(QLatin1String(ext)))
+            return true;
+    return false;
+}
+
+} // namespace rosarch::cppsyntax

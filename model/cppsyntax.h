@@ -1,0 +1,62 @@
+#pragma once
+
+#include "syntaxtree.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace rosarch::cppsyntax {
+
+// Small helpers over the tree-sitter C++ grammar and over C++ names as text.
+
+/// The shape of a call's function: `scope::name<templateArguments>` or `receiver->name<...>`.
+struct CallShape
+{
+    QString name;  ///< last identifier: "create_publisher", "make_shared", "bind"
+    QString scope; ///< qualifier before the name: "rclcpp_action", "std", "rclcpp::Node"
+    TSNode templateArguments{}; ///< template_argument_list, null when none
+    TSNode receiver{};          ///< field_expression object, null when none
+    bool arrow = false;         ///< receiver->name (else receiver.name)
+};
+
+/// Decomposes the `function` child of a call_expression.
+CallShape callShape(const SyntaxTree &tree, TSNode function);
+
+/// The first template argument's text (simplified), "" when none.
+QString firstTemplateArgument(const SyntaxTree &tree, TSNode templateArguments);
+
+/// Named arguments of an argument_list / initializer_list (comments skipped).
+std::vector<TSNode> arguments(TSNode list);
+
+/// The content of a string literal or of adjacent literals ("a" "b"); false when `n` is none.
+bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content);
+
+/// Strips parentheses, casts, std::move, std::string(...), rclcpp::ParameterValue(...).
+TSNode unwrap(const SyntaxTree &tree, TSNode n);
+
+/// The identifier a declarator declares (through references, pointers, arrays, initializers).
+TSNode declaredName(TSNode declarator);
+
+/// Source text with runs of whitespace collapsed to one space.
+QString simplified(const SyntaxTree &tree, TSNode n);
+
+/// Splits "a::b<c::d>::E" into {"a", "b<c::d>", "E"}; a leading "::" is dropped.
+QStringList splitScope(const QString &qualified);
+/// "ns::Foo<int>" -> "ns::Foo".
+QString withoutTemplateArguments(const QString &name);
+/// "ns::Foo<int>" -> "Foo".
+QString lastSegment(const QString &qualified);
+
+/// "std_msgs::msg::String", "std_msgs::msg::String::SharedPtr" -> "std_msgs/msg/String";
+/// anything that is not an interface type is returned simplified as written.
+QString canonicalInterfaceType(const QString &written);
+
+/// Overwrites symbol-visibility macros (FOO_PUBLIC, FOO_EXPORT, ...) outside preprocessor lines
+/// with spaces: the parser cannot expand them and they derail whole class bodies. Offsets,
+/// lines and columns stay the same.
+void blankExportMacros(QByteArray *source);
+
+/// True for header extensions (.h .hh .hpp .hxx .inl).
+bool isHeaderPath(const QString &path);
+
+} // namespace rosarch::cppsyntax

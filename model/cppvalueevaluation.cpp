@@ -1,0 +1,151 @@
+#include "cppfunctionextractor.h"
+
+// What an expression refers to, seen from inside its function: a literal, a local holding
+// one, a declared parameter, a member, a function parameter, the node itself.
+namespace rosarch {
+
+using namespace cppsyntax;
+
+int CppFunctionExtractor::literalParameterIndex(const std::vector<TSNode> &args,
+                                                QString *parameter) const
+{
+    for (size_t i = 0; i < args.size() && i < 3; ++i) {
+        const CppValue v = evaluate(args[i]);
+        if (v.kind != CppValue::Kind::Literal && v.kind != CppValue::Kind::Local)
+            continue;
+        // A bool or a number (or nothing) is not a parameter name.
+        const QChar first = v.literal.isEmpty() ? QChar() : v.literal.at(0);
+        if (first.isNull() || first.isDigit() || first == u'-' || first == u'.' ||
+            v.literal == QLatin1String("true") || v.literal == QLatin1String("false"))
+            continue;
+        *parameter = v.literal;
+        return int(i);
+    }
+    return -1;
+}
+
+CppValue CppFunctionExtractor::evaluate(TSNode expression, int depth) const
+{
+    CppValue v;
+    if (ts::isNull(expression))
+        return v;
+    v.text = simplified(m_tree, expression);
+    const TSNode n = unwrap(m_tree, expression);
+    QString literal;
+    if (stringLiteral(m_tree, n, &literal)) {
+        v.kind = CppValue::Kind::Literal;
+        v.literal = literal;
+        return v;
+    }
+    const auto t = ts::type(n);
+    if (t == "true" || t == "false" || t == "number_literal" || t == "char_literal") {
+        v.kind = CppValue::Kind::Literal; // as written, for parameter defaults and guards
+        v.literal = m_tree.text(n);
+        return v;
+    }
+    if (t == "this") {
+        v.kind = CppValue::Kind::SelfNode;
+        return v;
+    }
+    if (t == "pointer_expression" && ts::is(ts::field(n, "argument"), "this")) {
+        v.kind = CppValue::Kind::SelfNode;
+        return v;
+    }
+    if (t == "identifier") {
+        CppValue r = evaluateIdentifier(m_tree.text(n), depth);
+        r.text = v.text;
+        return r;
+    }
+    if (t == "field_expression" && ts::is(ts::field(n, "argument"), "this")) {
+        v.kind = CppValue::Kind::Member;
+        v.variable = m_tree.text(ts::field(n, "field"));
+        return v;
+    }
+    if (t == "call_expression") {
+        const CallShape shape = callShape(m_tree, ts::field(n, "function"));
+        const bool onSelf = ts::isNull(shape.receiver) || ts::is(shape.receiver, "this");
+        if ((shape.name == QLatin1String("shared_from_this") ||
+             shape.name == QLatin1String("weak_from_this")) &&
+            onSelf) {
+            v.kind = CppValue::Kind::SelfNode;
+            return v;
+        }
+        const QString lower = shape.name.toLower();
+        if (lower.contains(QLatin1String("parameter")) &&
+            !lower.endsWith(QLatin1String("parameters")) &&
+            (lower.contains(QLatin1String("get")) || lower.contains(QLatin1String("declare")))) {
+            QString parameter;
+            if (literalParameterIndex(arguments(ts::field(n, "arguments")), &parameter) >= 0) {
+                v.kind = CppValue::Kind::Parameter;
+                v.parameter = parameter;
+                return v;
+            }
+        }
+        if (!ts::isNull(shape.receiver) && depth < 6) {
+            // get_parameter("p").as_string(), .get_value<T>(), node.lock(), ...
+            const CppValue inner = evaluate(shape.receiver, depth + 1);
+            if (inner.kind == CppValue::Kind::Parameter) {
+                CppValue r = inner;
+                r.text = v.text;
+                return r;
+            }
+            if (inner.kind == CppValue::Kind::SelfNode && shape.name == QLatin1String("lock")) {
+                v.kind = CppValue::Kind::SelfNode;
+                return v;
+            }
+        }
+    }
+    v.kind = CppValue::Kind::Expression;
+    return v;
+}
+
+CppValue CppFunctionExtractor::evaluateIdentifier(const QString &name, int depth) const
+{
+    CppValue v;
+    v.text = name;
+    v.variable = name;
+    const auto it = m_locals.constFind(name);
+    if (it != m_locals.constEnd()) {
+        if (!it->parameter.isEmpty()) {
+            v.kind = CppValue::Kind::Parameter;
+            v.parameter = it->parameter;
+            return v;
+        }
+        if (!ts::isNull(it->value) && depth < 6) {
+            const CppValue inner = evaluate(it->value, depth + 1);
+            switch (inner.kind) {
+            case CppValue::Kind::Literal:
+            case CppValue::Kind::Local:
+                v.kind = CppValue::Kind::Local;
+                v.literal = inner.literal;
+                return v;
+            case CppValue::Kind::Parameter:
+                v.kind = CppValue::Kind::Parameter;
+                v.parameter = inner.parameter;
+                return v;
+            case CppValue::Kind::SelfNode:
+            case CppValue::Kind::Member:
+            case CppValue::Kind::FunctionParameter: {
+                CppValue r = inner;
+                r.text = name;
+                return r;
+            }
+            default:
+                break;
+            }
+        }
+        v.kind = CppValue::Kind::Expression;
+        return v;
+    }
+    const qsizetype index = m_function.parameterNames.indexOf(name);
+    if (index >= 0) {
+        v.kind = CppValue::Kind::FunctionParameter;
+        v.index = int(index);
+        return v;
+    }
+    // Not a local: a member (or a namespace-level constant, which the linker also knows).
+    v.kind = CppValue::Kind::Member;
+    return v;
+}
+
+} // namespace rosarch
