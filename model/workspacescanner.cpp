@@ -34,6 +34,10 @@ SourceFile::Language languageOf(const QString &fileName)
     const QString suffix = QFileInfo(fileName).suffix().toLower();
     if (suffix == QLatin1String("py"))
         return SourceFile::Language::Python;
+    if (suffix == QLatin1String("xml"))
+        return SourceFile::Language::Xml; // launch files are told apart by content later
+    if (suffix == QLatin1String("yaml") || suffix == QLatin1String("yml"))
+        return SourceFile::Language::Yaml;
     static const QSet<QString> cpp{QStringLiteral("cpp"), QStringLiteral("cc"), QStringLiteral("cxx"),
                                    QStringLiteral("hpp"), QStringLiteral("h"), QStringLiteral("hh"),
                                    QStringLiteral("hxx"), QStringLiteral("ipp")};

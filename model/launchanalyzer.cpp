@@ -1,0 +1,11 @@
+#include "launchanalyzer.h"
+
+namespace rosarch {
+
+LaunchDependencies LaunchAnalyzer::run(const Workspace &, const AtomicNodeList &, const LaunchOptions &,
+                                       const StageControl &)
+{
+    return {};
+}
+
+} // namespace rosarch

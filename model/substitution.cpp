@@ -1,0 +1,65 @@
+#include "substitution.h"
+
+#include <QStringList>
+
+namespace rosarch {
+
+Substitution Substitution::literal(const QString &text)
+{
+    Substitution s;
+    s.kind = Kind::Text;
+    s.text = text;
+    return s;
+}
+
+Substitution Substitution::unknown(const QString &expression)
+{
+    Substitution s;
+    s.kind = Kind::Unknown;
+    s.text = expression;
+    return s;
+}
+
+Substitution Substitution::configuration(const QString &name)
+{
+    Substitution s;
+    s.kind = Kind::LaunchConfiguration;
+    s.text = name;
+    return s;
+}
+
+Substitution Substitution::concat(QList<Substitution> parts)
+{
+    if (parts.size() == 1)
+        return parts.first();
+    Substitution s;
+    s.kind = Kind::Concat;
+    s.parts = std::move(parts);
+    return s;
+}
+
+QString Substitution::describe() const
+{
+    auto joined = [&](const QString &sep) {
+        QStringList out;
+        for (const Substitution &p : parts)
+            out << p.describe();
+        return out.join(sep);
+    };
+    switch (kind) {
+    case Kind::Text: return text;
+    case Kind::LaunchConfiguration: return QStringLiteral("$(var %1)").arg(text);
+    case Kind::EnvironmentVariable: return QStringLiteral("$(env %1)").arg(text);
+    case Kind::FindPackageShare: return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
+    case Kind::FindPackagePrefix: return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
+    case Kind::PathJoin: return joined(QStringLiteral("/"));
+    case Kind::Concat: return joined(QString());
+    case Kind::Eval: return QStringLiteral("$(eval %1)").arg(joined(QString()));
+    case Kind::ThisLaunchFileDir: return QStringLiteral("$(dirname)");
+    case Kind::ThisLaunchFile: return QStringLiteral("$(filename)");
+    case Kind::Unknown: return text;
+    }
+    return text;
+}
+
+} // namespace rosarch
