@@ -30,3 +30,12 @@ public:
 };
 
 } // namespace rosarch
+
+namespace rosarch {
+
+/// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer
+/// against stage 1's result.
+LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,
+                                      const LaunchOptions &options = {}, const StageControl &control = {});
+
+} // namespace rosarch
