@@ -1,6 +1,6 @@
 #include "commandline.h"
 #include "artifactwriter.h"
-#include "nodeanalyzer.h"
+#include "recovery.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -23,11 +23,23 @@ QString usageText()
         "rosarch::CommandLine",
         "Usage:\n"
         "  rosarch [workspace]                       open the GUI (on the example workspace by default)\n"
-        "  rosarch recover <workspace> --out <dir>   run the stages headless and write the artifacts\n"
+        "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root <file>]\n"
+        "                                            run the stages headless and write the artifacts\n"
         "  rosarch --help | --version\n"
         "\n"
-        "Artifacts written by recover: atomic_nodes.json, diagnostics.json, acd/<ClassName>.puml\n"
+        "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, diagnostics.json,\n"
+        "acd/<ClassName>.puml\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
+}
+
+int unresolvedCount(const LaunchDependencies &launch)
+{
+    qsizetype n = 0;
+    for (const LaunchFileInstance &i : launch.instances)
+        n += i.unresolved.size();
+    for (const NodeInstance &i : launch.nodes)
+        n += i.unresolved.size();
+    return int(n);
 }
 
 int recover(const QStringList &arguments)
@@ -46,8 +58,17 @@ int recover(const QStringList &arguments)
         QStringLiteral("dir"));
     const QCommandLineOption quietOption(QStringList{QStringLiteral("q"), QStringLiteral("quiet")},
         QCoreApplication::translate("rosarch::CommandLine", "Print only errors."));
+    const QCommandLineOption argOption(QStringLiteral("launch-arg"),
+        QCoreApplication::translate("rosarch::CommandLine", "Set a launch argument (repeatable)."),
+        QStringLiteral("name:=value"));
+    const QCommandLineOption rootOption(QStringLiteral("launch-root"),
+        QCoreApplication::translate("rosarch::CommandLine",
+            "Analyse only this launch file (relative to the workspace) as the root."),
+        QStringLiteral("file"));
     parser.addOption(outOption);
     parser.addOption(quietOption);
+    parser.addOption(argOption);
+    parser.addOption(rootOption);
     if (!parser.parse(arguments)) {
         err << parser.errorText() << "\n\n" << usageText();
         return CommandLine::UsageError;
@@ -68,14 +89,28 @@ int recover(const QStringList &arguments)
         return CommandLine::UsageError;
     }
     const bool quiet = parser.isSet(quietOption);
+    LaunchOptions options;
+    options.rootFile = parser.value(rootOption);
+    for (const QString &arg : parser.values(argOption)) {
+        const qsizetype sep = arg.indexOf(QLatin1String(":="));
+        if (sep <= 0) {
+            err << QCoreApplication::translate("rosarch::CommandLine",
+                       "--launch-arg expects name:=value, got '%1'.\n").arg(arg);
+            return CommandLine::UsageError;
+        }
+        options.arguments.insert(arg.left(sep), arg.mid(sep + 2));
+    }
 
     QElapsedTimer timer;
     timer.start();
-    const AtomicNodeList nodes = recoverAtomicNodes(workspace);
+    const Recovery recovery = recoverWorkspace(workspace, options);
+    const AtomicNodeList &nodes = recovery.nodes;
     const qint64 elapsed = timer.elapsed();
 
+    QList<Diagnostic> diagnostics = nodes.diagnostics;
+    diagnostics.append(recovery.launch.diagnostics);
     int errors = 0;
-    for (const Diagnostic &d : nodes.diagnostics) {
+    for (const Diagnostic &d : std::as_const(diagnostics)) {
         if (d.severity == Diagnostic::Severity::Error)
             ++errors;
         if (quiet && d.severity != Diagnostic::Severity::Error)
@@ -87,7 +122,7 @@ int recover(const QStringList &arguments)
     }
     QStringList written;
     QString error;
-    if (!ArtifactWriter::writeAll(nodes, parser.value(outOption), &written, &error)) {
+    if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error)) {
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }
@@ -96,10 +131,13 @@ int recover(const QStringList &arguments)
         for (const AtomicNode &n : nodes.nodes)
             ports += int(n.ports.size());
         out << QCoreApplication::translate("rosarch::CommandLine",
-                   "Recovered %1 node classes with %2 ports in %3 packages in %4 ms; %5 diagnostics (%6 errors).\n"
-                   "Wrote %7 files to %8\n")
-                   .arg(nodes.nodes.size()).arg(ports).arg(nodes.packages.size()).arg(elapsed)
-                   .arg(nodes.diagnostics.size()).arg(errors).arg(written.size())
+                   "Recovered %1 node classes with %2 ports in %3 packages; %4 launch files, %5 launch-file "
+                   "instances, %6 node instances, %7 unresolved items; in %8 ms; %9 diagnostics (%10 errors).\n"
+                   "Wrote %11 files to %12\n")
+                   .arg(nodes.nodes.size()).arg(ports).arg(nodes.packages.size())
+                   .arg(recovery.launch.launchFiles.size()).arg(recovery.launch.instances.size())
+                   .arg(recovery.launch.nodes.size()).arg(unresolvedCount(recovery.launch)).arg(elapsed)
+                   .arg(diagnostics.size()).arg(errors).arg(written.size())
                    .arg(QDir(parser.value(outOption)).absolutePath());
     }
     out.flush();

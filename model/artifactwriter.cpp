@@ -1,6 +1,7 @@
 #include "artifactwriter.h"
 #include "acdwriter.h"
 #include "atomicnodesjson.h"
+#include "launchdependenciesjson.h"
 
 #include <QDir>
 #include <QSaveFile>
@@ -24,6 +25,21 @@ bool writeFile(const QString &path, const QByteArray &content, QStringList *writ
 bool ArtifactWriter::writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
                               QString *error)
 {
+    Recovery r;
+    r.nodes = nodes;
+    return writeAll(r, dir, written, error, false);
+}
+
+bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
+                              QString *error)
+{
+    return writeAll(recovery, dir, written, error, true);
+}
+
+bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
+                              QString *error, bool withLaunch)
+{
+    const AtomicNodeList &nodes = recovery.nodes;
     QDir out(dir);
     if (!out.mkpath(QStringLiteral("acd"))) {
         *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
@@ -35,7 +51,13 @@ bool ArtifactWriter::writeAll(const AtomicNodeList &nodes, const QString &dir, Q
         acd.remove(old);
     if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes), written, error))
         return false;
-    if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")), DiagnosticsJson::write(nodes.diagnostics), written, error))
+    if (withLaunch && !writeFile(out.filePath(QStringLiteral("launch_dependencies.json")),
+                                 LaunchDependenciesJson::write(recovery.launch), written, error))
+        return false;
+    QList<Diagnostic> diagnostics = nodes.diagnostics;
+    if (withLaunch)
+        diagnostics.append(recovery.launch.diagnostics);
+    if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")), DiagnosticsJson::write(diagnostics), written, error))
         return false;
     const QMap<QString, QString> stems = AcdWriter::fileStems(nodes);
     for (const AtomicNode &n : nodes.nodes) {

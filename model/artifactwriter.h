@@ -1,6 +1,7 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "recovery.h"
 
 #include <QString>
 #include <QStringList>
@@ -8,13 +9,20 @@
 namespace rosarch {
 
 /// Writes a run's artifacts into one folder with the fixed layout:
-/// atomic_nodes.json, diagnostics.json, acd/<ClassName>.puml.
+/// atomic_nodes.json, launch_dependencies.json, diagnostics.json, acd/<ClassName>.puml.
 class ArtifactWriter
 {
 public:
     /// Returns false with a message when a file cannot be written; `written` lists the files.
+    static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
+                         QString *error);
+    /// Stage 1 only (no launch_dependencies.json).
     static bool writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
                          QString *error);
+
+private:
+    static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
+                         QString *error, bool withLaunch);
 };
 
 } // namespace rosarch

@@ -1,0 +1,443 @@
+#include "launchexecutor.h"
+#include "substitutionevaluator.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+namespace rosarch {
+
+namespace {
+constexpr int kMaxIncludeDepth = 40;
+
+QString dirOf(const QString &file)
+{
+    const qsizetype slash = file.lastIndexOf(QLatin1Char('/'));
+    return slash < 0 ? QString() : file.left(slash);
+}
+
+QString formatName(LaunchFileDescription::Format f)
+{
+    switch (f) {
+    case LaunchFileDescription::Format::Python: return QStringLiteral("python");
+    case LaunchFileDescription::Format::Xml: return QStringLiteral("xml");
+    case LaunchFileDescription::Format::Yaml: return QStringLiteral("yaml");
+    }
+    return {};
+}
+
+QString nsKey(const QString &ns)
+{
+    return ns.isEmpty() ? QStringLiteral("/") : ns;
+}
+} // namespace
+
+QString joinNamespace(const QString &outer, const QString &inner)
+{
+    QString in = inner.trimmed();
+    if (in.startsWith(QLatin1Char('/')))
+        return in == QLatin1String("/") ? QString() : in;
+    if (in.isEmpty())
+        return outer;
+    while (in.endsWith(QLatin1Char('/')))
+        in.chop(1);
+    return outer + QLatin1Char('/') + in;
+}
+
+LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes, Loader loader,
+                               LaunchDependencies *out)
+    : m_workspace(workspace), m_nodes(nodes), m_load(std::move(loader)), m_out(out)
+{
+    for (const RosPackage &p : workspace.packages)
+        m_packagePaths.insert(p.name, p.path);
+}
+
+IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QString &fromFile) const
+{
+    IncludeTarget t;
+    QString path = rawPath.trimmed();
+    static const QRegularExpression share(QStringLiteral("^\\$\\(find-pkg-(?:share|prefix) ([^)\\s]+)\\)/*(.*)$"));
+    const auto m = share.match(path);
+    auto existing = [&](const QString &rel) {
+        return m_workspace.absolutePath(rel).isEmpty() ? false : QFileInfo(m_workspace.absolutePath(rel)).isFile();
+    };
+    if (m.hasMatch()) {
+        t.package = m.captured(1);
+        QString rest = m.captured(2);
+        if (rest.startsWith(QLatin1String("share/") + t.package + QLatin1Char('/')))
+            rest = rest.mid(7 + t.package.size()); // find-pkg-prefix + share/<pkg>/...
+        if (!m_packagePaths.contains(t.package)) {
+            t.external = true;
+            return t;
+        }
+        const QString pkgPath = m_packagePaths.value(t.package);
+        const QString direct = pkgPath.isEmpty() ? rest : pkgPath + QLatin1Char('/') + rest;
+        if (existing(direct)) {
+            t.file = direct;
+            return t;
+        }
+        // Installed share layouts rarely mirror the source tree: match on the longest suffix.
+        const QString name = QFileInfo(rest).fileName();
+        int best = -1;
+        for (const SourceFile &f : m_workspace.files) {
+            if (f.package != t.package || QFileInfo(f.path).fileName() != name)
+                continue;
+            int score = 0;
+            const QStringList a = f.path.split(QLatin1Char('/'));
+            const QStringList b = rest.split(QLatin1Char('/'));
+            while (score < a.size() && score < b.size() && a[a.size() - 1 - score] == b[b.size() - 1 - score])
+                ++score;
+            if (score > best) {
+                best = score;
+                t.file = f.path;
+            }
+        }
+        return t;
+    }
+    // Relative to the including file (ThisLaunchFileDir, or a bare relative path).
+    if (!path.startsWith(QLatin1Char('/'))) {
+        const QString rel = QFileInfo(path).isRelative() && !existing(path)
+                                ? dirOf(fromFile) + QLatin1Char('/') + path
+                                : path;
+        const QString clean = QDir::cleanPath(rel);
+        if (existing(clean)) {
+            t.file = clean;
+            t.package = QString();
+            for (const SourceFile &f : m_workspace.files)
+                if (f.path == clean)
+                    t.package = f.package;
+            return t;
+        }
+    }
+    return t;
+}
+
+void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &arguments)
+{
+    const LaunchFileDescription *d = m_load(file);
+    if (!d)
+        return;
+    LaunchFileInstance inst;
+    inst.id = QStringLiteral("lf%1").arg(m_out->instances.size() + 1);
+    inst.type = QFileInfo(file).fileName();
+    inst.file = file;
+    for (const SourceFile &f : m_workspace.files)
+        if (f.path == file)
+            inst.package = f.package;
+    inst.format = formatName(d->format);
+    inst.evidence.file = file;
+    inst.evidence.line = 1;
+    inst.evidence.column = 1;
+    inst.evidence.endLine = 1;
+    inst.evidence.endColumn = 1;
+    m_out->instances.append(inst);
+
+    Scope scope;
+    scope.configurations = arguments;
+    Frame frame;
+    frame.instance = int(m_out->instances.size()) - 1;
+    frame.file = file;
+    frame.chain = QStringList{file};
+    frame.root = true;
+    execute(d->actions, scope, frame, 0);
+    for (auto it = arguments.cbegin(); it != arguments.cend(); ++it)
+        m_out->instances[frame.instance].arguments.append({it.key(), it.value()});
+}
+
+QStringList LaunchExecutor::directIncludes(const QString &file)
+{
+    QStringList includes;
+    const LaunchFileDescription *d = m_load(file);
+    if (!d)
+        return includes;
+    Scope scope;
+    Frame frame;
+    frame.file = file;
+    frame.chain = QStringList{file};
+    frame.collectOnly = true;
+    frame.includes = &includes;
+    execute(d->actions, scope, frame, 0);
+    return includes;
+}
+
+QString LaunchExecutor::evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
+                                 QList<Unresolved> *unresolved, const Evidence &evidence) const
+{
+    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file));
+    SubstitutionEvaluator::Result r = eval.evaluate(s);
+    for (Unresolved &u : r.unresolved) {
+        u.evidence = evidence;
+        if (u.guess.isEmpty())
+            u.guess = r.value;
+        if (unresolved)
+            unresolved->append(u);
+    }
+    return r.value;
+}
+
+bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
+                                    QList<Unresolved> *unresolved) const
+{
+    if (!a.condition.isSet())
+        return true;
+    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file));
+    QList<Unresolved> found;
+    bool holds = eval.isTrue(a.condition.expression, &found);
+    if (!found.isEmpty()) {
+        for (Unresolved &u : found) {
+            u.evidence = a.evidence;
+            u.expression = a.condition.text.isEmpty() ? u.expression : a.condition.text;
+        }
+        if (unresolved)
+            unresolved->append(found);
+        return true; // undecidable: keep it (the best guess), marked unresolved
+    }
+    return a.condition.unless ? !holds : holds;
+}
+
+void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QString &id)
+{
+    if (instance >= 0)
+        m_out->instances[instance].namespaces[nsKey(ns)].append(id);
+}
+
+void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame, int depth)
+{
+    auto unresolvedSink = [&]() -> QList<Unresolved> * {
+        return frame.instance >= 0 ? &m_out->instances[frame.instance].unresolved : nullptr;
+    };
+    for (const LaunchAction &a : actions) {
+        switch (a.kind) {
+        case LaunchAction::Kind::DeclareArgument: {
+            const QString name = evaluate(a.name, scope, frame, nullptr, a.evidence);
+            if (frame.root && !frame.collectOnly) {
+                LaunchArgument arg;
+                arg.name = name;
+                arg.hasDefault = a.hasValue;
+                arg.defaultValue = a.hasValue ? evaluate(a.value, scope, frame, nullptr, a.evidence) : QString();
+                arg.description = a.description;
+                arg.launchFile = frame.file;
+                arg.evidence = a.evidence;
+                m_out->arguments.append(arg);
+            }
+            if (scope.configurations.contains(name))
+                break; // given by the person or by the including file
+            if (a.hasValue) {
+                scope.configurations.insert(name, evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+            } else if (!frame.collectOnly && frame.instance >= 0) {
+                m_out->instances[frame.instance].unresolved.append(
+                    {QStringLiteral("argument"), QStringLiteral("launch argument '%1' has no default").arg(name),
+                     QString(), a.evidence});
+            }
+            break;
+        }
+        case LaunchAction::Kind::SetLaunchConfiguration:
+            scope.configurations.insert(evaluate(a.name, scope, frame, nullptr, a.evidence),
+                                        evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+            break;
+        case LaunchAction::Kind::PushNamespace:
+            if (conditionHolds(a, scope, frame, unresolvedSink()))
+                scope.nameSpace = joinNamespace(scope.nameSpace, evaluate(a.nameSpace, scope, frame, unresolvedSink(), a.evidence));
+            break;
+        case LaunchAction::Kind::SetRemap:
+            for (const LaunchRemap &r : a.remaps)
+                scope.remaps.append({evaluate(r.from, scope, frame, unresolvedSink(), r.evidence),
+                                     evaluate(r.to, scope, frame, unresolvedSink(), r.evidence)});
+            break;
+        case LaunchAction::Kind::SetParameter:
+            for (const LaunchParameter &p : a.parameters)
+                scope.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, nullptr, p.evidence),
+                                         evaluate(p.value, scope, frame, unresolvedSink(), p.evidence)});
+            break;
+        case LaunchAction::Kind::Group: {
+            Scope inner = scope;
+            inner.active = scope.active && conditionHolds(a, scope, frame, unresolvedSink());
+            if (!inner.active && frame.collectOnly)
+                break;
+            execute(a.children, inner, frame, depth + 1);
+            if (!a.scoped)
+                scope = Scope{inner.configurations, inner.nameSpace, inner.remaps, inner.parameters, scope.active};
+            break;
+        }
+        case LaunchAction::Kind::Node:
+            if (!frame.collectOnly)
+                executeNode(a, scope, frame, QString());
+            break;
+        case LaunchAction::Kind::ComposableContainer: {
+            if (frame.collectOnly)
+                break;
+            executeNode(a, scope, frame, QString());
+            const QString containerId = m_out->nodes.last().id;
+            Scope inner = scope;
+            inner.active = m_out->nodes.last().active;
+            for (const LaunchAction &c : a.children)
+                executeNode(c, inner, frame, containerId);
+            break;
+        }
+        case LaunchAction::Kind::LoadComposableNodes: {
+            if (frame.collectOnly)
+                break;
+            QList<Unresolved> *sink = unresolvedSink();
+            const QString target = evaluate(a.target, scope, frame, sink, a.evidence);
+            // The container is found by its name (plain or fully qualified).
+            QString containerId = target;
+            for (const NodeInstance &n : std::as_const(m_out->nodes)) {
+                const QString fq = joinNamespace(n.nameSpace, n.nodeName);
+                if (!target.isEmpty() && (n.nodeName == target || fq == target || fq == joinNamespace(scope.nameSpace, target)))
+                    containerId = n.id;
+            }
+            Scope inner = scope;
+            inner.active = scope.active && conditionHolds(a, scope, frame, sink);
+            for (const LaunchAction &c : a.children)
+                executeNode(c, inner, frame, containerId);
+            break;
+        }
+        case LaunchAction::Kind::Include:
+            executeInclude(a, scope, frame, depth);
+            break;
+        case LaunchAction::Kind::ComposableNode:
+            if (!frame.collectOnly)
+                executeNode(a, scope, frame, QString());
+            break;
+        case LaunchAction::Kind::Unresolved:
+            if (frame.instance >= 0)
+                m_out->instances[frame.instance].unresolved.append(
+                    {a.expression.startsWith(QLatin1String("OpaqueFunction")) ? QStringLiteral("opaque-function")
+                                                                               : QStringLiteral("action"),
+                     a.expression, QString(), a.evidence});
+            break;
+        }
+    }
+}
+
+const AtomicNode *LaunchExecutor::resolveClass(const QString &package, const QString &executable, bool plugin) const
+{
+    QString wanted = executable;
+    if (plugin && wanted.startsWith(QLatin1String("::")))
+        wanted.remove(0, 2);
+    for (const AtomicNode &n : m_nodes.nodes) {
+        if (plugin) {
+            if (n.plugins.contains(wanted))
+                return &n;
+        } else if (n.packageName == package && n.executables.contains(executable)) {
+            return &n;
+        }
+    }
+    return nullptr;
+}
+
+void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame, const QString &container)
+{
+    NodeInstance n;
+    n.id = QStringLiteral("n%1").arg(m_out->nodes.size() + 1);
+    n.launchFileId = m_out->instances[frame.instance].id;
+    n.evidence = a.evidence;
+    n.lifecycle = a.lifecycle;
+    n.container = container;
+    QList<Unresolved> &u = n.unresolved;
+    n.package = evaluate(a.package, scope, frame, &u, a.evidence);
+    const bool composable = a.kind == LaunchAction::Kind::ComposableNode;
+    n.execName = evaluate(composable ? a.plugin : a.executable, scope, frame, &u, a.evidence);
+    const QString launchName = evaluate(a.name, scope, frame, &u, a.evidence);
+    const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence);
+    n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));
+    n.condition = a.condition.text;
+    n.active = scope.active && conditionHolds(a, scope, frame, &u);
+    if (a.condition.isSet() && !n.active)
+        n.active = false;
+    if (const AtomicNode *cls = resolveClass(n.package, n.execName, composable)) {
+        n.className = cls->className;
+        n.classId = cls->id;
+        n.lifecycle = n.lifecycle || cls->lifecycle;
+        n.nodeKind = composable ? QStringLiteral("composable") : compileTypeName(cls->compileType);
+        n.nodeName = launchName.isEmpty() ? cls->nodeName : launchName;
+    } else {
+        n.nodeName = launchName;
+        if (composable) {
+            n.nodeKind = QStringLiteral("composable");
+        } else if (a.kind == LaunchAction::Kind::ComposableContainer) {
+            n.nodeKind = QStringLiteral("cpp"); // component containers are C++ processes
+        } else if (const RosPackage *p = m_workspace.package(n.package)) {
+            n.nodeKind = p->buildType == QLatin1String("ament_python") ? QStringLiteral("python") : QStringLiteral("cpp");
+        }
+    }
+    n.remaps = scope.remaps;
+    for (const LaunchRemap &r : a.remaps)
+        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence), evaluate(r.to, scope, frame, &u, r.evidence)});
+    n.parameters = scope.parameters;
+    for (const LaunchParameter &p : a.parameters)
+        n.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, &u, p.evidence),
+                             evaluate(p.value, scope, frame, &u, p.evidence)});
+    m_out->instances[frame.instance].nodes.append(n.id);
+    addToNamespace(frame.instance, n.nameSpace, n.id);
+    m_out->nodes.append(n);
+}
+
+void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
+{
+    QList<Unresolved> found;
+    const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
+    const bool active = scope.active && conditionHolds(a, scope, frame, &found);
+    const IncludeTarget target = resolveInclude(path, frame.file);
+    if (frame.collectOnly) {
+        if (!target.file.isEmpty() && active)
+            frame.includes->append(target.file);
+        return;
+    }
+    LaunchFileInstance inst;
+    inst.id = QStringLiteral("lf%1").arg(m_out->instances.size() + 1);
+    inst.parentId = m_out->instances[frame.instance].id;
+    inst.type = QFileInfo(target.file.isEmpty() ? path : target.file).fileName();
+    inst.file = target.file;
+    inst.package = target.package;
+    inst.external = target.external;
+    inst.evidence = a.evidence;
+    inst.condition = a.condition.text;
+    inst.active = active;
+    inst.unresolved = found;
+
+    Scope inner = scope;
+    inner.active = active;
+    for (const auto &[name, value] : a.arguments) {
+        const QString n = evaluate(name, scope, frame, &inst.unresolved, a.evidence);
+        const QString v = evaluate(value, scope, frame, &inst.unresolved, a.evidence);
+        inner.configurations.insert(n, v);
+        inst.arguments.append({n, v});
+    }
+    if (target.file.isEmpty() && !target.external) {
+        inst.unresolved.append({QStringLiteral("include"), path, QString(), a.evidence});
+    }
+    const LaunchFileDescription *d = target.file.isEmpty() ? nullptr : m_load(target.file);
+    if (d)
+        inst.format = formatName(d->format);
+    const bool cycle = !target.file.isEmpty() && frame.chain.contains(target.file);
+    if (cycle) {
+        inst.unresolved.append({QStringLiteral("cycle"), (frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")),
+                                QString(), a.evidence});
+        Diagnostic diag;
+        diag.severity = Diagnostic::Severity::Error;
+        diag.code = QStringLiteral("include-cycle");
+        diag.message = QStringLiteral("Include cycle: %1; the repeated include is not followed.")
+                           .arg((frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")));
+        diag.evidence = a.evidence;
+        m_out->diagnostics.append(diag);
+    }
+    const QString parentNs = scope.nameSpace;
+    m_out->instances.append(inst);
+    const int index = int(m_out->instances.size()) - 1;
+    m_out->instances[frame.instance].includedLaunchFiles.append(inst.id);
+    addToNamespace(frame.instance, parentNs, inst.id);
+    if (!d || cycle)
+        return;
+    if (depth >= kMaxIncludeDepth || frame.chain.size() >= kMaxIncludeDepth) {
+        m_out->instances[index].unresolved.append({QStringLiteral("include"), QStringLiteral("include depth limit"), QString(), a.evidence});
+        return;
+    }
+    Frame child;
+    child.instance = index;
+    child.file = target.file;
+    child.chain = frame.chain + QStringList{target.file};
+    execute(d->actions, inner, child, depth + 1);
+}
+
+} // namespace rosarch

@@ -1,0 +1,85 @@
+#pragma once
+
+#include "atomicnodelist.h"
+#include "launchaction.h"
+#include "launchdependencies.h"
+#include "workspace.h"
+
+#include <QHash>
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+
+namespace rosarch {
+
+/// Where an include points, once its path is evaluated.
+struct IncludeTarget
+{
+    QString file;    ///< workspace-relative launch file ("" when not found)
+    QString package; ///< the package named by the path, if any
+    bool external = false; ///< the package is not in the workspace
+};
+
+/// Executes launch descriptions symbolically, the way `ros2 launch` would walk them: launch
+/// configurations, scoped groups, pushed namespaces and remaps, conditions, includes (with
+/// cycle detection) and composable containers. Appends instances to a LaunchDependencies.
+class LaunchExecutor
+{
+public:
+    using Loader = std::function<const LaunchFileDescription *(const QString &file)>;
+
+    LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes, Loader loader,
+                   LaunchDependencies *out);
+
+    /// Runs `file` as a root with the given argument values; records declared arguments.
+    void runRoot(const QString &file, const QMap<QString, QString> &arguments);
+
+    /// Evaluates an include path (as produced by SubstitutionEvaluator) to a launch file.
+    IncludeTarget resolveInclude(const QString &path, const QString &fromFile) const;
+
+    /// Every workspace launch file an include of `file` points to, without running them
+    /// (defaults only); used to find the top-level launch files.
+    QStringList directIncludes(const QString &file);
+
+private:
+    struct Scope
+    {
+        QMap<QString, QString> configurations;
+        QString nameSpace; ///< "" = root
+        QList<QPair<QString, QString>> remaps;
+        QList<QPair<QString, QString>> parameters;
+        bool active = true;
+    };
+    struct Frame
+    {
+        int instance = -1; ///< index into m_out->instances (-1 when collecting only)
+        QString file;
+        QStringList chain; ///< files from the root to here, for cycle detection
+        bool root = false;
+        bool collectOnly = false; ///< directIncludes(): no instances, no recursion
+        QStringList *includes = nullptr;
+    };
+
+    void execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame, int depth);
+    void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame, const QString &container);
+    void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
+    QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
+                     QList<Unresolved> *unresolved, const Evidence &evidence) const;
+    bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
+                        QList<Unresolved> *unresolved) const;
+    const AtomicNode *resolveClass(const QString &package, const QString &executable, bool plugin) const;
+    void addToNamespace(int instance, const QString &ns, const QString &id);
+
+    const Workspace &m_workspace;
+    const AtomicNodeList &m_nodes;
+    Loader m_load;
+    LaunchDependencies *m_out;
+    QHash<QString, QString> m_packagePaths; ///< package -> folder
+};
+
+/// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.
+QString joinNamespace(const QString &outer, const QString &inner);
+
+} // namespace rosarch

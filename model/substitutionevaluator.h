@@ -1,0 +1,46 @@
+#pragma once
+
+#include "launchdependencies.h"
+#include "substitution.h"
+
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+
+namespace rosarch {
+
+/// Evaluates substitutions against launch configurations, statically. A package's share
+/// folder evaluates to "$(find-pkg-share pkg)" so that include paths stay recognisable;
+/// what cannot be decided is reported in `unresolved` with the guess used instead.
+class SubstitutionEvaluator
+{
+public:
+    struct Result
+    {
+        QString value;
+        QList<Unresolved> unresolved;
+        bool isResolved() const { return unresolved.isEmpty(); }
+    };
+
+    SubstitutionEvaluator(const QMap<QString, QString> &configurations, QString launchFileDir);
+
+    Result evaluate(const Substitution &s) const;
+    /// A launch condition's truth: "true"/"1" and "false"/"0"/"" (case-insensitive). Anything
+    /// else, or an unresolved expression, counts as true (the best guess) and is reported.
+    bool isTrue(const Substitution &s, QList<Unresolved> *unresolved) const;
+
+    /// Evaluates the small Python expressions launch files put in PythonExpression / $(eval):
+    /// literals, ==, !=, not, and, or, parentheses, `in` over a literal list. Returns false
+    /// when the expression is beyond that.
+    static bool evaluatePython(const QString &expression, QString *value);
+
+private:
+    void evaluateInto(const Substitution &s, Result *r, int depth) const;
+
+    const QMap<QString, QString> &m_configurations;
+    QString m_launchFileDir;
+};
+
+} // namespace rosarch
