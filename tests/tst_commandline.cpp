@@ -53,7 +53,7 @@ private Q_SLOTS:
         const QByteArray json = rosarch::test::readFile(out.filePath(QStringLiteral("atomic_nodes.json")));
         const QJsonObject root = QJsonDocument::fromJson(json).object();
         const QJsonArray packages = root.value(QStringLiteral("list_packages")).toArray();
-        QCOMPARE(packages.size(), 4);
+        QCOMPARE(packages.size(), 5);
         int nodes = 0;
         QStringList classes;
         for (const auto &p : packages)
@@ -71,6 +71,35 @@ private Q_SLOTS:
         QCOMPARE(acd.entryList({QStringLiteral("*.puml")}, QDir::Files).size(), nodes);
         QVERIFY(acd.exists(QStringLiteral("LidarFilter.puml")));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("diagnostics.json"))));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("launch_dependencies.json"))));
+    }
+
+    void launchArgumentsChangeTheInstances()
+    {
+        QTemporaryDir out;
+        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
+                                  QStringLiteral("--launch-arg"), QStringLiteral("robot_ns:=r2"),
+                                  QStringLiteral("--launch-arg"), QStringLiteral("use_camera:=false")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject root = QJsonDocument::fromJson(
+            rosarch::test::readFile(out.filePath(QStringLiteral("launch_dependencies.json")))).object();
+        QCOMPARE(root.value(QStringLiteral("launch_files")).toArray().size(), 4);
+        QStringList instances;
+        for (const auto &n : root.value(QStringLiteral("list_atom_node_instances")).toArray()) {
+            const QJsonObject o = n.toObject();
+            instances << QStringLiteral("%1%2%3 %4").arg(o.value(QStringLiteral("namespace")).toString(),
+                                                        o.value(QStringLiteral("namespace")).toString() == QLatin1String("/") ? QString() : QStringLiteral("/"),
+                                                        o.value(QStringLiteral("node_name")).toString(),
+                                                        o.value(QStringLiteral("active")).toBool() ? QStringLiteral("on") : QStringLiteral("off"));
+        }
+        QVERIFY2(instances.contains(QStringLiteral("/r2/navigator on")), qPrintable(instances.join(',')));
+        QVERIFY2(instances.contains(QStringLiteral("/r2/front_camera off")), qPrintable(instances.join(',')));
+        QVERIFY2(instances.contains(QStringLiteral("/r2/monitoring/battery_monitor on")), qPrintable(instances.join(',')));
+
+        const Run bad = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
+                                    QStringLiteral("--launch-arg"), QStringLiteral("robot_ns")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY(bad.err.contains(QStringLiteral("name:=value")));
     }
 
     void errorsInTheWorkspaceGiveExitCodeOne()

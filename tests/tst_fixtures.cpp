@@ -1,9 +1,12 @@
-// Data-driven: every tests/data/<case>/ with expected/atomic_nodes.json is a row. The case's
+// Data-driven: every tests/data/<case>/ with expected/atomic_nodes.json is a row; when the case
+// also has expected/launch_dependencies.json, stage 2's output is compared too. The case's
 // workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
 #include "acdwriter.h"
 #include "atomicnodesjson.h"
+#include "launchdependenciesjson.h"
 #include "nodeanalyzer.h"
+#include "recovery.h"
 #include "testsupport.h"
 
 #include <QDirIterator>
@@ -64,9 +67,13 @@ private Q_SLOTS:
         QFETCH(QString, caseDir);
         const QString ws = workspaceOf(caseDir);
         QVERIFY2(QFileInfo(ws).isDir(), qPrintable(ws));
-        const AtomicNodeList list = recoverAtomicNodes(ws);
+        const Recovery recovery = recoverWorkspace(ws);
+        const AtomicNodeList &list = recovery.nodes;
         QVERIFY(!list.canceled);
         compareOrUpdate(AtomicNodesJson::write(list), QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
+        const QString launchExpected = QDir(caseDir).filePath(QStringLiteral("expected/launch_dependencies.json"));
+        if (QFileInfo::exists(launchExpected))
+            compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
 
         // Expected ACDs, when the case has them, must match file by file.
         const QDir acdDir(QDir(caseDir).filePath(QStringLiteral("expected/acd")));
