@@ -16,6 +16,11 @@ const QString kState = QStringLiteral("window/state");
 const QString kSelWorkspace = QStringLiteral("session/workspace");
 const QString kSelNode = QStringLiteral("session/node");
 const QString kSelPort = QStringLiteral("session/port");
+const QString kSelLaunch = QStringLiteral("session/launchItem");
+// One map for every workspace: workspace paths hold '/', which QSettings keys cannot.
+const QString kLaunchOptions = QStringLiteral("launch/options");
+const QString kRootKey = QStringLiteral("root");
+const QString kArgumentsKey = QStringLiteral("arguments");
 
 QString normalized(const QString &path)
 {
@@ -126,6 +131,45 @@ void AppSettings::setSelection(const QString &workspace, const QString &nodeId,
     m_settings->setValue(kSelWorkspace, normalized(workspace));
     m_settings->setValue(kSelNode, nodeId);
     m_settings->setValue(kSelPort, portId);
+}
+
+QString AppSettings::launchSelection(const QString &workspace) const
+{
+    const bool same = m_settings->value(kSelWorkspace).toString() == normalized(workspace);
+    return same ? m_settings->value(kSelLaunch).toString() : QString();
+}
+
+void AppSettings::setLaunchSelection(const QString &workspace, const QString &instanceId)
+{
+    m_settings->setValue(kSelWorkspace, normalized(workspace));
+    m_settings->setValue(kSelLaunch, instanceId);
+}
+
+LaunchOptions AppSettings::launchOptions(const QString &workspace) const
+{
+    const QVariantMap all = m_settings->value(kLaunchOptions).toMap();
+    const QVariantMap stored = all.value(normalized(workspace)).toMap();
+    LaunchOptions options;
+    options.rootFile = stored.value(kRootKey).toString();
+    const QVariantMap arguments = stored.value(kArgumentsKey).toMap();
+    for (auto it = arguments.cbegin(); it != arguments.cend(); ++it)
+        options.arguments.insert(it.key(), it.value().toString());
+    return options;
+}
+
+void AppSettings::setLaunchOptions(const QString &workspace, const LaunchOptions &options)
+{
+    QVariantMap all = m_settings->value(kLaunchOptions).toMap();
+    if (options == LaunchOptions()) {
+        all.remove(normalized(workspace));
+    } else {
+        QVariantMap arguments;
+        for (auto it = options.arguments.cbegin(); it != options.arguments.cend(); ++it)
+            arguments.insert(it.key(), it.value());
+        all.insert(normalized(workspace),
+                   QVariantMap{{kRootKey, options.rootFile}, {kArgumentsKey, arguments}});
+    }
+    m_settings->setValue(kLaunchOptions, all);
 }
 
 } // namespace rosarch

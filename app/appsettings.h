@@ -1,5 +1,7 @@
 #pragma once
 
+#include "launchanalyzer.h"
+
 #include <QByteArray>
 #include <QStringList>
 
@@ -9,8 +11,8 @@ class QSettings;
 
 namespace rosarch {
 
-/// What the application remembers between runs: recent workspaces, the window layout and
-/// the last selection. One place that knows the keys.
+/// What the application remembers between runs: recent workspaces, the window layout, the
+/// last selection and the launch options of each workspace. One place that knows the keys.
 class AppSettings
 {
 public:
@@ -38,6 +40,15 @@ public:
     /// The node (and port) selected when the window closed on `workspace`.
     void selection(const QString &workspace, QString *nodeId, QString *portId) const;
     void setSelection(const QString &workspace, const QString &nodeId, const QString &portId);
+
+    /// The launch-tree row (a launch-file or node instance id) selected on `workspace`.
+    QString launchSelection(const QString &workspace) const;
+    void setLaunchSelection(const QString &workspace, const QString &instanceId);
+
+    /// The root launch file and argument values a person chose for `workspace` (empty when
+    /// never chosen).
+    LaunchOptions launchOptions(const QString &workspace) const;
+    void setLaunchOptions(const QString &workspace, const LaunchOptions &options);
 
 private:
     std::unique_ptr<QSettings> m_settings;

@@ -7,9 +7,14 @@
 #include "diagnosticmodel.h"
 #include "document.h"
 #include "icons.h"
+#include "launchargumentsdialog.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
 #include "logview.h"
 #include "sourceview.h"
+#include "stagecontroller.h"
 #include "stagerunner.h"
+#include "traceability.h"
 
 #include <Qsci/qsciscintilla.h>
 
@@ -44,6 +49,7 @@ namespace rosarch {
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_document(new Document(this)), m_runner(new StageRunner(this)),
       m_nodeModel(new AtomicNodeModel(m_document, this)),
+      m_launchModel(new LaunchTreeModel(m_document, this)),
       m_diagnosticModel(new DiagnosticModel(m_document, this))
 {
     initResources();
@@ -53,20 +59,25 @@ MainWindow::MainWindow(QWidget *parent)
     setDockNestingEnabled(true);
 
     createPanels();
+    m_stages = new StageController(m_document, m_runner, m_traceability, m_logView, this);
     createActions();
     createMenus();
     createStatusBar();
 
+    connect(m_stages, &StageController::statusMessage, statusBar(), &QStatusBar::showMessage);
     connect(m_runner, &StageRunner::stageStarted, this, &MainWindow::onStageStarted);
     connect(m_runner, &StageRunner::stageProgressed, this, &MainWindow::onStageProgressed);
-    connect(m_runner, &StageRunner::stageFinished, this, &MainWindow::onStageFinished);
-    connect(m_runner, &StageRunner::stageCanceled, this, &MainWindow::onStageCanceled);
-    connect(m_document, &Document::modelReset, this, [this] {
+    connect(m_runner, &StageRunner::stageFinished, this, [this] { setRunning(false); });
+    connect(m_runner, &StageRunner::launchStageFinished, this, [this] { setRunning(false); });
+    connect(m_runner, &StageRunner::stageCanceled, this, [this] { setRunning(false); });
+    const auto filesMayHaveChanged = [this] {
         // The files may have changed since they were shown; start the source view afresh.
         m_sourceView->setWorkspaceRoot(m_document->workspaceRoot());
         m_sourceView->clear();
         updateCounts();
-    });
+    };
+    connect(m_document, &Document::modelReset, this, filesMayHaveChanged);
+    connect(m_document, &Document::launchDependenciesReset, this, filesMayHaveChanged);
 
     restoreSession();
     updateCounts();
@@ -75,10 +86,17 @@ MainWindow::MainWindow(QWidget *parent)
 
 MainWindow::~MainWindow() = default;
 
+QString MainWindow::workspace() const
+{
+    return m_stages->workspace();
+}
+
 void MainWindow::createPanels()
 {
     m_nodePanel = new AtomicNodePanel(this);
     m_nodePanel->setModel(m_nodeModel);
+    m_launchPanel = new LaunchTreePanel(this);
+    m_launchPanel->setModel(m_launchModel);
     m_sourceView = new SourceView(this);
     m_logView = new LogView(this);
     m_logView->setModel(m_diagnosticModel);
@@ -97,34 +115,46 @@ void MainWindow::createPanels()
         return dock;
     };
     m_nodeDock = makeDock(m_nodePanel, tr("Atomic nodes"), QStringLiteral("atomicNodesDock"));
+    m_launchDock = makeDock(m_launchPanel, tr("Launch tree"), QStringLiteral("launchTreeDock"));
     m_sourceDock = makeDock(m_sourceView, tr("Source"), QStringLiteral("sourceDock"));
     m_logDock = makeDock(m_logView, tr("Log"), QStringLiteral("logDock"));
     resetLayout();
 
-    connect(m_nodePanel, &AtomicNodePanel::currentSourceIndexChanged, this,
-            &MainWindow::onNodeSelected);
-    connect(m_sourceView, &SourceView::cursorLineChanged, this, &MainWindow::onSourceLineChanged);
-    connect(m_logView, &LogView::evidenceRequested, this, &MainWindow::showEvidence);
+    m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
+                                      m_sourceView, this);
+    connect(m_traceability, &Traceability::evidenceUnavailable, this,
+            [this](const Evidence &evidence) {
+                statusBar()->showMessage(tr("Cannot show %1").arg(evidence.file), 5000);
+            });
+    connect(m_launchPanel, &LaunchTreePanel::classRequested, this, [this] {
+        m_nodeDock->show();
+        m_nodeDock->raise();
+    });
+    connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
 }
 
 void MainWindow::resetLayout()
 {
-    for (QDockWidget *dock : {m_nodeDock, m_sourceDock, m_logDock}) {
+    const QList<QDockWidget *> docks{m_nodeDock, m_launchDock, m_sourceDock, m_logDock};
+    for (QDockWidget *dock : docks) {
         removeDockWidget(dock);
         dock->setFloating(false);
     }
     // One nested dock area fills the window (there is no central widget): the model views
-    // side by side on top, the log across the bottom. Growing the window grows them all.
+    // side by side on top (atomic nodes | launch tree | source), the log across the bottom.
+    // Growing the window grows them all.
     addDockWidget(Qt::TopDockWidgetArea, m_nodeDock);
     splitDockWidget(m_nodeDock, m_logDock, Qt::Vertical);
-    splitDockWidget(m_nodeDock, m_sourceDock, Qt::Horizontal);
-    for (QDockWidget *dock : {m_nodeDock, m_sourceDock, m_logDock})
+    splitDockWidget(m_nodeDock, m_launchDock, Qt::Horizontal);
+    splitDockWidget(m_launchDock, m_sourceDock, Qt::Horizontal);
+    for (QDockWidget *dock : docks)
         dock->show();
     if (m_toolBar)
         m_toolBar->show();
     const int w = std::max(width(), 800);
     const int h = std::max(height(), 600);
-    resizeDocks({m_nodeDock, m_sourceDock}, {w * 11 / 20, w * 9 / 20}, Qt::Horizontal);
+    resizeDocks({m_nodeDock, m_launchDock, m_sourceDock}, {w * 3 / 10, w * 4 / 10, w * 3 / 10},
+                Qt::Horizontal);
     resizeDocks({m_nodeDock, m_logDock}, {h * 4 / 5, h / 5}, Qt::Vertical);
 }
 
@@ -138,7 +168,8 @@ void MainWindow::createActions()
     m_exportAction = new QAction(tr("&Export Artifacts…"), this);
     m_exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     m_exportAction->setStatusTip(
-        tr("Write atomic_nodes.json, diagnostics.json and one PlantUML diagram per node"));
+        tr("Write atomic_nodes.json, launch_dependencies.json, diagnostics.json and one "
+           "PlantUML diagram per node"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportArtifactsDialog);
 
     m_quitAction = new QAction(tr("&Quit"), this);
@@ -153,8 +184,15 @@ void MainWindow::createActions()
 
     m_findAction = new QAction(tr("&Find…"), this);
     m_findAction->setShortcut(QKeySequence::Find);
-    m_findAction->setStatusTip(tr("Filter the node tree by name or type"));
+    m_findAction->setStatusTip(tr("Filter the node tree, or the launch tree when it has the "
+                                  "focus, by name"));
     connect(m_findAction, &QAction::triggered, this, [this] {
+        // Find filters the tree a person works in; the atomic nodes by default.
+        if (m_launchPanel->isAncestorOf(QApplication::focusWidget()) &&
+            m_launchPanel->isVisible()) {
+            m_launchPanel->focusFilter();
+            return;
+        }
         m_nodeDock->show();
         m_nodeDock->raise();
         m_nodePanel->focusFilter();
@@ -173,12 +211,31 @@ void MainWindow::createActions()
         m_logView->selectPreviousDiagnostic();
     });
 
-    m_runAction = new QAction(Icons::run(), tr("Run Stage &1: Atomic Nodes"), this);
-    m_runAction->setIconText(tr("Run"));
+    m_runAction = new QAction(Icons::run(), tr("&Run All Stages"), this);
+    m_runAction->setIconText(tr("Run all"));
     m_runAction->setShortcut(QKeySequence(Qt::Key_F5));
-    m_runAction->setToolTip(tr("Recover the atomic nodes of the workspace (F5)"));
-    m_runAction->setStatusTip(tr("Find node classes, their ports and their executables"));
-    connect(m_runAction, &QAction::triggered, this, &MainWindow::runStage1);
+    m_runAction->setToolTip(tr("Recover the atomic nodes and the launch tree of the workspace "
+                               "(F5)"));
+    m_runAction->setStatusTip(tr("Stage 1 finds node classes, their ports and executables; "
+                                 "stage 2 reads the launch files"));
+    connect(m_runAction, &QAction::triggered, this, &MainWindow::runAllStages);
+
+    m_runLaunchAction = new QAction(Icons::runLaunch(), tr("Run Stage &2: Launch Files"), this);
+    m_runLaunchAction->setIconText(tr("Stage 2"));
+    m_runLaunchAction->setShortcut(QKeySequence(Qt::Key_F6));
+    m_runLaunchAction->setToolTip(tr("Read the launch files again against the current atomic "
+                                     "nodes, with the chosen launch arguments (F6)"));
+    m_runLaunchAction->setStatusTip(tr("Re-run stage 2 only: launch files, includes, namespaces "
+                                       "and node instances"));
+    connect(m_runLaunchAction, &QAction::triggered, this, &MainWindow::runLaunchStage);
+
+    m_launchArgumentsAction = new QAction(Icons::launchArguments(), tr("Launch &Arguments…"), this);
+    m_launchArgumentsAction->setIconText(tr("Arguments"));
+    m_launchArgumentsAction->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
+    m_launchArgumentsAction->setToolTip(
+        tr("Choose the root launch file and the launch argument values for stage 2"));
+    connect(m_launchArgumentsAction, &QAction::triggered, this,
+            &MainWindow::showLaunchArgumentsDialog);
 
     m_cancelAction = new QAction(Icons::stop(), tr("&Cancel Stage"), this);
     m_cancelAction->setIconText(tr("Cancel"));
@@ -227,10 +284,12 @@ void MainWindow::createMenus()
     m_toolBar->addAction(m_openAction);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_runAction);
+    m_toolBar->addAction(m_runLaunchAction);
+    m_toolBar->addAction(m_launchArgumentsAction);
     m_toolBar->addAction(m_cancelAction);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget *dock : {m_nodeDock, m_sourceDock, m_logDock})
+    for (QDockWidget *dock : {m_nodeDock, m_launchDock, m_sourceDock, m_logDock})
         view->addAction(dock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
@@ -239,6 +298,10 @@ void MainWindow::createMenus()
 
     QMenu *stages = menuBar()->addMenu(tr("&Stages"));
     stages->addAction(m_runAction);
+    stages->addAction(m_runLaunchAction);
+    stages->addSeparator();
+    stages->addAction(m_launchArgumentsAction);
+    stages->addSeparator();
     stages->addAction(m_cancelAction);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
@@ -282,10 +345,10 @@ void MainWindow::saveSession()
     AppSettings settings;
     settings.setWindowGeometry(saveGeometry());
     settings.setWindowState(saveState());
-    if (!m_workspace.isEmpty()) {
-        const QModelIndex current = m_nodePanel->currentSourceIndex();
-        settings.setSelection(m_workspace, current.data(AtomicNodeModel::NodeIdRole).toString(),
-                              current.data(AtomicNodeModel::PortIdRole).toString());
+    if (!workspace().isEmpty()) {
+        settings.setSelection(workspace(), m_traceability->currentNodeId(),
+                              m_traceability->currentPortId());
+        settings.setLaunchSelection(workspace(), m_traceability->currentLaunchId());
     }
 }
 
@@ -315,7 +378,7 @@ void MainWindow::dropEvent(QDropEvent *event)
 
 void MainWindow::openWorkspaceDialog()
 {
-    const QString start = m_workspace.isEmpty() ? QDir::homePath() : m_workspace;
+    const QString start = workspace().isEmpty() ? QDir::homePath() : workspace();
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Open ROS 2 Workspace"),
                                                              start, QFileDialog::ShowDirsOnly);
     if (!folder.isEmpty())
@@ -335,37 +398,49 @@ void MainWindow::openWorkspace(const QString &path)
         return;
     }
     const QString root = info.canonicalFilePath();
-    if (root != m_workspace) {
-        // Keep the old result only while re-running the same workspace.
-        if (!m_workspace.isEmpty())
-            saveSession();
-        AtomicNodeList empty;
-        empty.workspaceRoot = root;
-        m_document->setAtomicNodes(empty);
-        m_logView->clearLog();
-        AppSettings().selection(root, &m_restoreNodeId, &m_restorePortId);
-    }
-    m_workspace = root;
+    // Keep the old result only while re-running the same workspace.
+    if (root != workspace() && !workspace().isEmpty())
+        saveSession();
+    m_stages->setWorkspace(root);
     AppSettings settings;
     settings.addRecentWorkspace(root);
     settings.setLastWorkspace(root);
     setWindowTitle(tr("%1 — rosarch").arg(QFileInfo(root).fileName()));
     setWindowFilePath(root);
-    runStage1();
+    runAllStages();
 }
 
-void MainWindow::runStage1()
+void MainWindow::runAllStages()
 {
-    if (m_workspace.isEmpty()) {
+    if (workspace().isEmpty())
         openWorkspaceDialog();
-        return;
-    }
-    if (m_restoreNodeId.isEmpty()) {
-        const QModelIndex current = m_nodePanel->currentSourceIndex();
-        m_restoreNodeId = current.data(AtomicNodeModel::NodeIdRole).toString();
-        m_restorePortId = current.data(AtomicNodeModel::PortIdRole).toString();
-    }
-    m_runner->run(m_workspace);
+    else
+        m_stages->runAll();
+}
+
+void MainWindow::runLaunchStage()
+{
+    if (workspace().isEmpty())
+        openWorkspaceDialog();
+    else
+        m_stages->runLaunch();
+}
+
+void MainWindow::applyLaunchOptions(const LaunchOptions &options)
+{
+    m_stages->applyLaunchOptions(options);
+}
+
+void MainWindow::showLaunchArgumentsDialog()
+{
+    auto *dialog = new LaunchArgumentsDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setLaunchDependencies(m_document->launchDependencies(),
+                                  m_document->launchOptions().rootFile);
+    dialog->setOptions(m_document->launchOptions());
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog] { applyLaunchOptions(dialog->options()); });
+    dialog->open();
 }
 
 void MainWindow::updateRecentMenu()
@@ -395,7 +470,7 @@ void MainWindow::exportArtifactsDialog()
     AppSettings settings;
     QString start = settings.lastExportFolder();
     if (start.isEmpty())
-        start = m_workspace.isEmpty() ? QDir::homePath() : QFileInfo(m_workspace).path();
+        start = workspace().isEmpty() ? QDir::homePath() : QFileInfo(workspace()).path();
     const QString folder =
         QFileDialog::getExistingDirectory(this, tr("Export Artifacts To"), start);
     if (folder.isEmpty())
@@ -408,7 +483,8 @@ bool MainWindow::exportArtifactsTo(const QString &folder)
 {
     QStringList written;
     QString error;
-    if (!ArtifactWriter::writeAll(m_document->atomicNodes(), folder, &written, &error)) {
+    const Recovery recovery{m_document->atomicNodes(), m_document->launchDependencies()};
+    if (!ArtifactWriter::writeAll(recovery, folder, &written, &error)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\n"
                      "Choose a folder you can write to, or free some space, and export again.")
@@ -434,9 +510,16 @@ void MainWindow::showError(const QString &title, const QString &text)
 void MainWindow::updateCounts()
 {
     const AtomicNodeList &list = m_document->atomicNodes();
+    const LaunchDependencies &launch = m_document->launchDependencies();
     int ports = 0;
     for (const AtomicNode &n : list.nodes)
         ports += int(n.ports.size());
+    qsizetype unresolved = 0;
+    for (const NodeInstance &n : launch.nodes)
+        unresolved += n.unresolved.size();
+    for (const LaunchFileInstance &i : launch.instances)
+        unresolved += i.unresolved.size();
+    const qsizetype diagnostics = list.diagnostics.size() + launch.diagnostics.size();
     // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
     const auto count = [](qsizetype n, const QString &one, const QString &many) {
         return n == 1 ? one : many.arg(n);
@@ -445,11 +528,37 @@ void MainWindow::updateCounts()
         count(list.packages.size(), tr("1 package"), tr("%1 packages")),
         count(list.nodes.size(), tr("1 node"), tr("%1 nodes")),
         count(ports, tr("1 port"), tr("%1 ports")),
-        count(list.diagnostics.size(), tr("1 diagnostic"), tr("%1 diagnostics"))};
+        count(launch.launchFiles.size(), tr("1 launch file"), tr("%1 launch files")),
+        count(launch.nodes.size(), tr("1 instance"), tr("%1 instances")),
+        count(unresolved, tr("1 unresolved"), tr("%1 unresolved")),
+        count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
     m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
+                                 "Stage 2: launch files found, node instances they start and "
+                                 "expressions that could not be resolved statically."));
     m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
-    m_nextDiagnosticAction->setEnabled(!list.diagnostics.isEmpty());
-    m_previousDiagnosticAction->setEnabled(!list.diagnostics.isEmpty());
+    m_nextDiagnosticAction->setEnabled(diagnostics > 0);
+    m_previousDiagnosticAction->setEnabled(diagnostics > 0);
+    updateLaunchPlaceholder();
+}
+
+void MainWindow::updateLaunchPlaceholder()
+{
+    const LaunchDependencies &launch = m_document->launchDependencies();
+    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty())
+        m_launchPanel->setPlaceholderText(
+            tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree."));
+    else if (m_runner->isRunning())
+        m_launchPanel->setPlaceholderText(tr("Reading the launch files…"));
+    else if (launch.launchFiles.isEmpty())
+        m_launchPanel->setPlaceholderText(
+            tr("No launch files found in this workspace.\n\nStage 2 reads *.launch.py, "
+               "*.launch.xml and *.launch.yaml files and any file holding a launch "
+               "description."));
+    else
+        m_launchPanel->setPlaceholderText(
+            tr("No launch file was analysed as a root.\n\nChoose one in Stages → Launch "
+               "Arguments…"));
 }
 
 void MainWindow::setRunning(bool running)
@@ -457,16 +566,14 @@ void MainWindow::setRunning(bool running)
     m_progressBar->setVisible(running);
     m_cancelButton->setVisible(running);
     m_cancelAction->setEnabled(running);
+    updateLaunchPlaceholder();
 }
 
-void MainWindow::onStageStarted(const QString &root)
+void MainWindow::onStageStarted()
 {
-    m_runTimer.start();
     m_lastProgressText.clear();
     m_progressBar->setRange(0, 0);
     setRunning(true);
-    m_logView->appendLog(tr("Stage 1 (atomic nodes) started on %1").arg(root));
-    statusBar()->showMessage(tr("Recovering atomic nodes…"));
 }
 
 void MainWindow::onStageProgressed(int done, int total, const QString &what)
@@ -482,74 +589,6 @@ void MainWindow::onStageProgressed(int done, int total, const QString &what)
         statusBar()->showMessage(what);
         m_logView->appendLog(total > 0 ? tr("[%1/%2] %3").arg(done).arg(total).arg(what) : what);
     }
-}
-
-void MainWindow::onStageFinished(const AtomicNodeList &result)
-{
-    setRunning(false);
-    AtomicNodeList list = result;
-    if (list.workspaceRoot.isEmpty())
-        list.workspaceRoot = m_workspace;
-    const QString nodeId = m_restoreNodeId;
-    const QString portId = m_restorePortId;
-    m_restoreNodeId.clear();
-    m_restorePortId.clear();
-
-    m_document->setAtomicNodes(list);
-    int ports = 0;
-    for (const AtomicNode &n : list.nodes)
-        ports += int(n.ports.size());
-    const QString summary = tr("Stage 1 finished in %1 s: %2 nodes, %3 ports, %4 diagnostics")
-                                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
-                                .arg(list.nodes.size())
-                                .arg(ports)
-                                .arg(list.diagnostics.size());
-    m_logView->appendLog(summary);
-    statusBar()->showMessage(summary, 8000);
-    if (!nodeId.isEmpty())
-        selectNode(nodeId, portId);
-}
-
-void MainWindow::onStageCanceled()
-{
-    setRunning(false);
-    m_restoreNodeId.clear();
-    m_restorePortId.clear();
-    m_logView->appendLog(tr("Stage 1 canceled; the previous result is kept."));
-    statusBar()->showMessage(tr("Stage 1 canceled"), 5000);
-}
-
-void MainWindow::selectNode(const QString &nodeId, const QString &portId)
-{
-    const QModelIndex index =
-        portId.isEmpty() ? m_nodeModel->nodeIndex(nodeId) : m_nodeModel->portIndex(nodeId, portId);
-    if (index.isValid())
-        m_nodePanel->selectSourceIndex(index);
-}
-
-void MainWindow::onNodeSelected(const QModelIndex &sourceIndex)
-{
-    if (m_syncingSelection)
-        return;
-    const Evidence evidence = m_nodeModel->evidence(sourceIndex);
-    if (evidence.isValid())
-        showEvidence(evidence);
-}
-
-void MainWindow::showEvidence(const Evidence &evidence)
-{
-    if (!m_sourceView->showEvidence(evidence))
-        statusBar()->showMessage(tr("Cannot show %1").arg(evidence.file), 5000);
-}
-
-void MainWindow::onSourceLineChanged(const QString &file, int line)
-{
-    const QModelIndex index = m_nodeModel->indexAt(file, line);
-    if (!index.isValid())
-        return;
-    m_syncingSelection = true;
-    m_nodePanel->selectSourceIndex(index);
-    m_syncingSelection = false;
 }
 
 } // namespace rosarch

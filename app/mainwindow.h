@@ -1,9 +1,7 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "evidence.h"
+#include "launchanalyzer.h"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 
 class QDockWidget;
@@ -19,12 +17,17 @@ class AtomicNodeModel;
 class AtomicNodePanel;
 class DiagnosticModel;
 class Document;
+class LaunchTreeModel;
+class LaunchTreePanel;
 class LogView;
 class SourceView;
+class StageController;
 class StageRunner;
+class Traceability;
 
 /// The main window: wires the Document, the stage runner and the panels (atomic nodes,
-/// source, log), owns the menus, toolbar and status bar, and remembers the session.
+/// launch tree, source, log), owns the menus, toolbar and status bar, and remembers the
+/// session.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -32,9 +35,18 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a workspace folder and runs stage 1 on it.
+    /// Opens a workspace folder and runs stages 1 and 2 on it with the launch options
+    /// remembered for it.
     void openWorkspace(const QString &path);
-    QString workspace() const { return m_workspace; }
+    /// Runs stages 1 and 2 again (F5).
+    void runAllStages();
+    /// Runs stage 2 alone against the current atomic nodes, with the current launch options.
+    void runLaunchStage();
+    /// Stores `options` (Document and settings) and runs stage 2 with them.
+    void applyLaunchOptions(const LaunchOptions &options);
+    /// Opens Stages → Launch Arguments… (window-modal; OK applies the options).
+    void showLaunchArgumentsDialog();
+    QString workspace() const;
 
     /// Writes the artifacts of the current model into `folder`; false (and a dialog) on error.
     bool exportArtifactsTo(const QString &folder);
@@ -44,6 +56,10 @@ public:
     StageRunner *runner() const { return m_runner; }
     AtomicNodeModel *nodeModel() const { return m_nodeModel; }
     AtomicNodePanel *nodePanel() const { return m_nodePanel; }
+    LaunchTreeModel *launchModel() const { return m_launchModel; }
+    LaunchTreePanel *launchPanel() const { return m_launchPanel; }
+    QAction *runLaunchAction() const { return m_runLaunchAction; }
+    QAction *launchArgumentsAction() const { return m_launchArgumentsAction; }
     SourceView *sourceView() const { return m_sourceView; }
     LogView *logView() const { return m_logView; }
     QLabel *countsLabel() const { return m_countsLabel; }
@@ -64,31 +80,29 @@ private:
 
     void openWorkspaceDialog();
     void exportArtifactsDialog();
-    void runStage1();
     void updateRecentMenu();
     void updateCounts();
+    void updateLaunchPlaceholder();
     void showError(const QString &title, const QString &text);
 
-    void onStageStarted(const QString &root);
+    void onStageStarted();
     void onStageProgressed(int done, int total, const QString &what);
-    void onStageFinished(const AtomicNodeList &result);
-    void onStageCanceled();
     void setRunning(bool running);
-
-    void onNodeSelected(const QModelIndex &sourceIndex);
-    void onSourceLineChanged(const QString &file, int line);
-    void showEvidence(const Evidence &evidence);
-    void selectNode(const QString &nodeId, const QString &portId);
 
     Document *m_document;
     StageRunner *m_runner;
     AtomicNodeModel *m_nodeModel;
+    LaunchTreeModel *m_launchModel;
     DiagnosticModel *m_diagnosticModel;
+    Traceability *m_traceability = nullptr;
+    StageController *m_stages = nullptr;
 
     AtomicNodePanel *m_nodePanel = nullptr;
+    LaunchTreePanel *m_launchPanel = nullptr;
     SourceView *m_sourceView = nullptr;
     LogView *m_logView = nullptr;
     QDockWidget *m_nodeDock = nullptr;
+    QDockWidget *m_launchDock = nullptr;
     QDockWidget *m_sourceDock = nullptr;
     QDockWidget *m_logDock = nullptr;
     QToolBar *m_toolBar = nullptr;
@@ -102,6 +116,8 @@ private:
     QAction *m_nextDiagnosticAction = nullptr;
     QAction *m_previousDiagnosticAction = nullptr;
     QAction *m_runAction = nullptr;
+    QAction *m_runLaunchAction = nullptr;
+    QAction *m_launchArgumentsAction = nullptr;
     QAction *m_cancelAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_aboutAction = nullptr;
@@ -112,13 +128,8 @@ private:
     QProgressBar *m_progressBar = nullptr;
     QToolButton *m_cancelButton = nullptr;
 
-    QString m_workspace;
     QByteArray m_defaultState;
-    QElapsedTimer m_runTimer;
     QString m_lastProgressText;
-    QString m_restoreNodeId; ///< selection to restore when the next result arrives
-    QString m_restorePortId;
-    bool m_syncingSelection = false; ///< the tree follows the source; do not echo back
 };
 
 } // namespace rosarch

@@ -1,5 +1,4 @@
 #include "stagerunner.h"
-#include "nodeanalyzer.h"
 
 #include <QMutex>
 #include <QPromise>
@@ -8,6 +7,22 @@
 #include <exception>
 
 namespace rosarch {
+
+namespace {
+
+Diagnostic internalError(int stage, const std::exception &e)
+{
+    // A bug in a stage must not take the window down; show it as a diagnostic.
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Error;
+    d.code = QStringLiteral("stage-failed");
+    d.message = StageRunner::tr("Stage %1 stopped with an internal error: %2")
+                    .arg(stage)
+                    .arg(QString::fromLocal8Bit(e.what()));
+    return d;
+}
+
+} // namespace
 
 /// The latest progress report of one run. QFuture progress values must grow, but a stage
 /// may restart its count per phase, so the future only carries a tick and this the numbers.
@@ -21,8 +36,13 @@ struct StageRunner::Progress
 };
 
 StageRunner::StageRunner(QObject *parent)
-    : QObject(parent), m_stage([](const QString &root, const StageControl &control) {
-          return recoverAtomicNodes(root, control);
+    : QObject(parent),
+      m_stage([](const QString &root, const LaunchOptions &options, const StageControl &control) {
+          return recoverWorkspace(root, options, control);
+      }),
+      m_launchStage([](const QString &root, const AtomicNodeList &nodes,
+                       const LaunchOptions &options, const StageControl &control) {
+          return analyzeLaunchFiles(root, nodes, options, control);
       })
 {
 }
@@ -31,18 +51,56 @@ StageRunner::~StageRunner()
 {
     for (Watcher *w : std::as_const(m_watchers)) {
         w->disconnect(this);
-        QFuture<AtomicNodeList> future = w->future();
+        QFuture<Recovery> future = w->future();
         future.cancel();
         future.waitForFinished();
     }
 }
 
-void StageRunner::setStageFunction(StageFunction stage)
+void StageRunner::setStageFunction(RecoveryFunction stage)
 {
     m_stage = std::move(stage);
 }
 
-void StageRunner::run(const QString &root)
+void StageRunner::setLaunchFunction(LaunchFunction stage)
+{
+    m_launchStage = std::move(stage);
+}
+
+void StageRunner::run(const QString &root, const LaunchOptions &options)
+{
+    const RecoveryFunction stage = m_stage;
+    start(root, Job::Recovery, [stage, root, options](const StageControl &control) {
+        Recovery result;
+        try {
+            result = stage(root, options, control);
+        } catch (const std::exception &e) {
+            result = {};
+            result.nodes.diagnostics.append(internalError(1, e));
+        }
+        if (result.nodes.workspaceRoot.isEmpty())
+            result.nodes.workspaceRoot = root;
+        return result;
+    });
+}
+
+void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
+                            const LaunchOptions &options)
+{
+    const LaunchFunction stage = m_launchStage;
+    start(root, Job::LaunchOnly, [stage, root, nodes, options](const StageControl &control) {
+        Recovery result;
+        try {
+            result.launch = stage(root, nodes, options, control);
+        } catch (const std::exception &e) {
+            result.launch = {};
+            result.launch.diagnostics.append(internalError(2, e));
+        }
+        return result;
+    });
+}
+
+void StageRunner::start(const QString &root, Job job, Work work)
 {
     if (m_current)
         m_current->future().cancel();
@@ -50,46 +108,32 @@ void StageRunner::run(const QString &root)
     auto progress = std::make_shared<Progress>();
     auto *watcher = new Watcher(this);
     m_current = watcher;
+    m_currentJob = job;
     m_watchers.append(watcher);
     connect(watcher, &Watcher::finished, this,
-            [this, watcher, generation] { onFinished(watcher, generation); });
+            [this, watcher, generation, job] { onFinished(watcher, generation, job); });
     connect(watcher, &Watcher::progressValueChanged, this,
             [this, progress, generation] { onProgress(progress, generation); });
 
-    const StageFunction stage = m_stage;
-    watcher->setFuture(
-        QtConcurrent::run([stage, root, progress](QPromise<AtomicNodeList> &promise) {
-            StageControl control;
-            control.canceled = [&promise] { return promise.isCanceled(); };
-            control.progressed = [&promise, progress](int done, int total, const QString &what) {
-                int tick = 0;
-                {
-                    QMutexLocker lock(&progress->mutex);
-                    progress->done = done;
-                    progress->total = total;
-                    progress->what = what;
-                    tick = ++progress->tick;
-                }
-                promise.setProgressValueAndText(tick, what);
-            };
-            AtomicNodeList result;
-            try {
-                result = stage(root, control);
-            } catch (const std::exception &e) {
-                // A bug in a stage must not take the window down; show it as a diagnostic.
-                result = {};
-                result.workspaceRoot = root;
-                Diagnostic d;
-                d.severity = Diagnostic::Severity::Error;
-                d.code = QStringLiteral("stage-failed");
-                d.message = tr("Stage 1 stopped with an internal error: %1")
-                                .arg(QString::fromLocal8Bit(e.what()));
-                result.diagnostics.append(d);
+    watcher->setFuture(QtConcurrent::run([work, progress](QPromise<Recovery> &promise) {
+        StageControl control;
+        control.canceled = [&promise] { return promise.isCanceled(); };
+        control.progressed = [&promise, progress](int done, int total, const QString &what) {
+            int tick = 0;
+            {
+                QMutexLocker lock(&progress->mutex);
+                progress->done = done;
+                progress->total = total;
+                progress->what = what;
+                tick = ++progress->tick;
             }
-            if (!promise.isCanceled())
-                promise.addResult(std::move(result));
-        }));
-    Q_EMIT stageStarted(root);
+            promise.setProgressValueAndText(tick, what);
+        };
+        Recovery result = work(control);
+        if (!promise.isCanceled())
+            promise.addResult(std::move(result));
+    }));
+    Q_EMIT stageStarted(root, job);
 }
 
 void StageRunner::cancel()
@@ -116,24 +160,29 @@ void StageRunner::onProgress(const std::shared_ptr<Progress> &progress, int gene
     Q_EMIT stageProgressed(done, total, what);
 }
 
-void StageRunner::onFinished(Watcher *watcher, int generation)
+void StageRunner::onFinished(Watcher *watcher, int generation, Job job)
 {
     m_watchers.removeOne(watcher);
     watcher->deleteLater();
     if (generation != m_generation)
         return; // superseded by a later run
     m_current = nullptr;
-    const QFuture<AtomicNodeList> future = watcher->future();
+    const QFuture<Recovery> future = watcher->future();
     if (future.isCanceled() || future.resultCount() == 0) {
-        Q_EMIT stageCanceled();
+        Q_EMIT stageCanceled(job);
         return;
     }
-    AtomicNodeList result = future.result();
-    if (result.canceled) {
-        Q_EMIT stageCanceled();
+    const Recovery result = future.result();
+    const bool canceled = job == Job::Recovery ? result.nodes.canceled || result.launch.canceled
+                                               : result.launch.canceled;
+    if (canceled) {
+        Q_EMIT stageCanceled(job);
         return;
     }
-    Q_EMIT stageFinished(result);
+    if (job == Job::Recovery)
+        Q_EMIT stageFinished(result);
+    else
+        Q_EMIT launchStageFinished(result.launch);
 }
 
 } // namespace rosarch

@@ -1,6 +1,9 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "launchanalyzer.h"
+#include "launchdependencies.h"
+#include "recovery.h"
 #include "stagecontrol.h"
 
 #include <QFutureWatcher>
@@ -11,45 +14,70 @@
 
 namespace rosarch {
 
-/// Runs stage 1 off the UI thread (QtConcurrent + QPromise) and reports back on the UI
-/// thread. Starting a new run cancels the previous one; its late result is dropped by
-/// comparing generation numbers, so only the latest run ever reports.
+/// Runs the stages off the UI thread (QtConcurrent + QPromise) and reports back on the UI
+/// thread: stages 1 and 2 together, or stage 2 alone against a stage 1 result. Starting a
+/// new run cancels the previous one; its late result is dropped by comparing generation
+/// numbers, so only the latest run ever reports.
 class StageRunner : public QObject
 {
     Q_OBJECT
 public:
-    using StageFunction = std::function<AtomicNodeList(const QString &root, const StageControl &)>;
+    /// What a run computes.
+    enum class Job
+    {
+        Recovery,   ///< stages 1 and 2
+        LaunchOnly, ///< stage 2 against the given atomic nodes
+    };
+    Q_ENUM(Job)
+
+    using RecoveryFunction =
+        std::function<Recovery(const QString &root, const LaunchOptions &, const StageControl &)>;
+    using LaunchFunction = std::function<LaunchDependencies(
+        const QString &root, const AtomicNodeList &, const LaunchOptions &, const StageControl &)>;
 
     explicit StageRunner(QObject *parent = nullptr);
     /// Cancels what still runs and waits for it; no worker outlives the runner.
     ~StageRunner() override;
 
-    /// Replaces the stage (default: recoverAtomicNodes); tests use slow or counting stages.
-    void setStageFunction(StageFunction stage);
+    /// Replaces stages 1+2 (default: recoverWorkspace); tests use slow or counting stages.
+    void setStageFunction(RecoveryFunction stage);
+    /// Replaces the stage 2 re-run (default: analyzeLaunchFiles).
+    void setLaunchFunction(LaunchFunction stage);
 
-    /// Starts stage 1 on `root`, superseding any run in progress.
-    void run(const QString &root);
+    /// Starts stages 1 and 2 on `root`, superseding any run in progress.
+    void run(const QString &root, const LaunchOptions &options = {});
+    /// Starts stage 2 alone on `root` against `nodes`, superseding any run in progress.
+    void runLaunch(const QString &root, const AtomicNodeList &nodes, const LaunchOptions &options);
     /// Asks the current run to stop; stageCanceled follows once it has.
     void cancel();
     bool isRunning() const { return m_current != nullptr; }
-    /// Incremented by every run(); results of older generations are dropped.
+    /// The job of the run in progress (meaningless when none is).
+    Job currentJob() const { return m_currentJob; }
+    /// Incremented by every run; results of older generations are dropped.
     int generation() const { return m_generation; }
 
 Q_SIGNALS:
-    void stageStarted(const QString &root);
+    void stageStarted(const QString &root, rosarch::StageRunner::Job job);
     void stageProgressed(int done, int total, const QString &what);
-    void stageFinished(const rosarch::AtomicNodeList &result);
-    void stageCanceled();
+    /// Stages 1 and 2 finished (run()).
+    void stageFinished(const rosarch::Recovery &result);
+    /// Stage 2 alone finished (runLaunch()).
+    void launchStageFinished(const rosarch::LaunchDependencies &result);
+    void stageCanceled(rosarch::StageRunner::Job job);
 
 private:
     struct Progress;
-    using Watcher = QFutureWatcher<AtomicNodeList>;
+    using Watcher = QFutureWatcher<Recovery>;
+    using Work = std::function<Recovery(const StageControl &)>;
 
-    void onFinished(Watcher *watcher, int generation);
+    void start(const QString &root, Job job, Work work);
+    void onFinished(Watcher *watcher, int generation, Job job);
     void onProgress(const std::shared_ptr<Progress> &progress, int generation);
 
-    StageFunction m_stage;
+    RecoveryFunction m_stage;
+    LaunchFunction m_launchStage;
     Watcher *m_current = nullptr;
+    Job m_currentJob = Job::Recovery;
     QList<Watcher *> m_watchers; ///< every run whose worker has not finished yet
     int m_generation = 0;
 };

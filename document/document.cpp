@@ -5,12 +5,33 @@ namespace rosarch {
 
 Document::Document(QObject *parent) : QObject(parent) {}
 
-void Document::setAtomicNodes(AtomicNodeList nodes)
+void Document::setRecovery(Recovery recovery)
 {
     Q_EMIT modelAboutToBeReset();
     m_undoStack.clear();
-    m_nodes = std::move(nodes);
+    m_nodes = std::move(recovery.nodes);
+    m_launch = std::move(recovery.launch);
     Q_EMIT modelReset();
+}
+
+void Document::setAtomicNodes(AtomicNodeList nodes)
+{
+    setRecovery({std::move(nodes), {}});
+}
+
+void Document::setLaunchDependencies(LaunchDependencies launch)
+{
+    Q_EMIT launchDependenciesAboutToBeReset();
+    m_launch = std::move(launch);
+    Q_EMIT launchDependenciesReset();
+}
+
+void Document::setLaunchOptions(const LaunchOptions &options)
+{
+    if (options == m_launchOptions)
+        return;
+    m_launchOptions = options;
+    Q_EMIT launchOptionsChanged(m_launchOptions);
 }
 
 void Document::setNodeDescription(const QString &nodeId, const QString &description)

@@ -1,6 +1,9 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "launchanalyzer.h"
+#include "launchdependencies.h"
+#include "recovery.h"
 
 #include <QObject>
 #include <QUndoStack>
@@ -17,10 +20,21 @@ public:
 
     QString workspaceRoot() const { return m_nodes.workspaceRoot; }
     const AtomicNodeList &atomicNodes() const { return m_nodes; }
+    /// Stage 2's result; empty until stage 2 ran.
+    const LaunchDependencies &launchDependencies() const { return m_launch; }
+    /// The root launch file and argument values stage 2 runs with (a person's choice).
+    const LaunchOptions &launchOptions() const { return m_launchOptions; }
     QUndoStack *undoStack() { return &m_undoStack; }
 
-    /// Replaces the recovered model with a new stage result (clears undo history).
+    /// Replaces the whole model with the result of stages 1 and 2 (clears undo history).
+    void setRecovery(Recovery recovery);
+    /// Replaces the whole model with a stage 1 result and no launch dependencies.
     void setAtomicNodes(AtomicNodeList nodes);
+    /// Replaces only stage 2's result (a re-run of stage 2); the atomic nodes and their
+    /// undo history stay.
+    void setLaunchDependencies(LaunchDependencies launch);
+    /// Stores what the next stage 2 run uses; it does not run anything.
+    void setLaunchOptions(const LaunchOptions &options);
 
     /// Pushes an undoable change of a node's description (a person's correction).
     void setNodeDescription(const QString &nodeId, const QString &description);
@@ -30,6 +44,12 @@ Q_SIGNALS:
     void modelAboutToBeReset();
     /// The whole model was replaced (a stage finished).
     void modelReset();
+    /// Only the launch dependencies are about to be replaced (stage 2 re-run).
+    void launchDependenciesAboutToBeReset();
+    /// Only the launch dependencies were replaced (stage 2 re-run).
+    void launchDependenciesReset();
+    /// The launch options changed.
+    void launchOptionsChanged(const rosarch::LaunchOptions &options);
     /// One node changed (an edit, its undo or redo).
     void nodeChanged(const QString &nodeId);
 
@@ -38,6 +58,8 @@ private:
     void applyNodeDescription(const QString &nodeId, const QString &description);
 
     AtomicNodeList m_nodes;
+    LaunchDependencies m_launch;
+    LaunchOptions m_launchOptions;
     QUndoStack m_undoStack;
 };
 

@@ -1,4 +1,3 @@
-#include "aboutdialog.h"
 #include "appsettings.h"
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
@@ -10,11 +9,8 @@
 #include "stagerunner.h"
 #include "testsupport.h"
 
-#include <Qsci/qsciglobal.h>
 #include <Qsci/qscilexer.h>
-#include <Qsci/qscilexerpython.h>
 #include <Qsci/qsciscintilla.h>
-#include <tree_sitter/api.h>
 
 #include <QDockWidget>
 #include <QLabel>
@@ -34,89 +30,19 @@
 
 using namespace rosarch;
 
+using namespace rosarch::test::gui;
+using rosarch::test::saveScreenshot;
+
 namespace {
 
-const QString kTalker = QStringLiteral("src/py_talker/py_talker/talker.py");
-const QString kListener = QStringLiteral("src/cpp_listener/src/listener.cpp");
-
-QString fixture()
-{
-    return QFileInfo(test::dataDir(QStringLiteral("gui_ws"))).canonicalFilePath();
-}
-
-Port port(const QString &id, PortKind kind, const QString &name, const QString &type,
-          const QString &callback, const Evidence &evidence)
-{
-    Port p;
-    p.id = id;
-    p.kind = kind;
-    p.name = name;
-    p.type = type;
-    p.callback = callback;
-    p.evidence = evidence;
-    return p;
-}
-
-/// What stage 1 should recover from tests/data/gui_ws, written by hand with the fixture's
-/// real lines, so the traceability tests do not depend on the analyzers.
 AtomicNodeList handBuiltFixtureModel()
 {
-    AtomicNodeList list;
-    list.workspaceRoot = fixture();
-    RosPackage py;
-    py.name = QStringLiteral("py_talker");
-    py.buildType = QStringLiteral("ament_python");
-    py.path = QStringLiteral("src/py_talker");
-    RosPackage cpp;
-    cpp.name = QStringLiteral("cpp_listener");
-    cpp.buildType = QStringLiteral("ament_cmake");
-    cpp.path = QStringLiteral("src/cpp_listener");
-    list.packages = {cpp, py};
-
-    AtomicNode listener;
-    listener.id = QStringLiteral("arc_1");
-    listener.className = QStringLiteral("Listener");
-    listener.packageName = cpp.name;
-    listener.nodeName = QStringLiteral("listener");
-    listener.evidence = {kListener, 11, 1, 41, 3};
-    listener.ports = {port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("chatter"),
-                           QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_message"),
-                           {kListener, 17, 21, 18, 87}),
-                      port(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("reset"),
-                           QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"),
-                           {kListener, 19, 16, 20, 98})};
-    AtomicNode talker;
-    talker.id = QStringLiteral("arc_2");
-    talker.className = QStringLiteral("Talker");
-    talker.packageName = py.name;
-    talker.compileType = AtomicNode::CompileType::Python;
-    talker.evidence = {kTalker, 6, 1, 21, 40};
-    talker.ports = {port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("chatter"),
-                         QStringLiteral("std_msgs/msg/String"), {}, {kTalker, 11, 26, 11, 70}),
-                    port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("echo"),
-                         QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_echo"),
-                         {kTalker, 12, 29, 12, 88})};
-    list.nodes = {listener, talker};
-    Diagnostic d;
-    d.code = QStringLiteral("test");
-    d.message = QStringLiteral("A diagnostic about the service.");
-    d.evidence = {kListener, 19, 5, 19, 20};
-    list.diagnostics = {d};
-    return list;
+    return handBuiltNodes();
 }
 
 QModelIndex treeCurrent(MainWindow &w)
 {
     return w.nodePanel()->currentSourceIndex();
-}
-
-void saveScreenshot(QWidget &w, const QString &name)
-{
-    const QString dir = qEnvironmentVariable("ROSARCH_SCREENSHOT_DIR");
-    if (dir.isEmpty())
-        return;
-    QTest::qWait(100); // let posted layout requests settle, as they would on screen
-    w.grab().save(QDir(dir).filePath(name));
 }
 
 } // namespace
@@ -286,59 +212,6 @@ private Q_SLOTS:
         QTest::keyClick(&w, Qt::Key_F8, Qt::ShiftModifier);
         QCOMPARE(w.sourceView()->currentFile(), kListener);
         QCOMPARE(w.sourceView()->highlighted().line, 19);
-    }
-
-    void followsADarkPalette()
-    {
-        const QPalette light = QApplication::palette();
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(0x2d, 0x2d, 0x30));
-        dark.setColor(QPalette::WindowText, QColor(0xdc, 0xdc, 0xdc));
-        dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
-        dark.setColor(QPalette::AlternateBase, QColor(0x26, 0x26, 0x28));
-        dark.setColor(QPalette::Text, QColor(0xdc, 0xdc, 0xdc));
-        dark.setColor(QPalette::Button, QColor(0x33, 0x33, 0x37));
-        dark.setColor(QPalette::ButtonText, QColor(0xdc, 0xdc, 0xdc));
-        dark.setColor(QPalette::Highlight, QColor(0x26, 0x4f, 0x78));
-        dark.setColor(QPalette::HighlightedText, Qt::white);
-        dark.setColor(QPalette::PlaceholderText, QColor(0x8a, 0x8a, 0x8a));
-        dark.setColor(QPalette::Disabled, QPalette::Text, QColor(0x80, 0x80, 0x80));
-
-        MainWindow w;
-        w.resize(1400, 900);
-        w.show();
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
-        QsciScintilla *editor = w.sourceView()->editor();
-        QVERIFY(editor->lexer()->paper(0).lightnessF() > 0.5);
-
-        // the system switches to dark while the window is open
-        QApplication::setPalette(dark);
-        const auto restore = qScopeGuard([&] { QApplication::setPalette(light); });
-        QsciLexer *lexer = editor->lexer();
-        QTRY_COMPARE(lexer->paper(0), dark.color(QPalette::Base)); // palette changes are posted
-        QCOMPARE(lexer->defaultPaper(), dark.color(QPalette::Base));
-        for (int style = 0; style < 128; ++style) {
-            if (lexer->description(style).isEmpty())
-                continue;
-            QVERIFY2(lexer->color(style).lightnessF() >= 0.55,
-                     qPrintable(lexer->description(style) + QStringLiteral(" is too dark: ") +
-                                lexer->color(style).name()));
-            QCOMPARE(lexer->paper(style), dark.color(QPalette::Base));
-        }
-        const QColor margin(int(editor->SendScintilla(QsciScintilla::SCI_STYLEGETBACK,
-                                                      QsciScintilla::STYLE_LINENUMBER)) &
-                            0xffffff);
-        // Scintilla stores colours as 0xBBGGRR; darkness does not care about the order.
-        QVERIFY2(qGray(margin.blue(), margin.green(), margin.red()) < 100,
-                 qPrintable(margin.name()));
-        saveScreenshot(w, QStringLiteral("mainwindow_dark.png"));
-
-        // and back to light: the keywords are dark again
-        QApplication::setPalette(light);
-        QTRY_COMPARE(lexer->paper(0), light.color(QPalette::Base));
-        QVERIFY(lexer->color(QsciLexerPython::Keyword).lightnessF() < 0.5);
     }
 
     void exampleWorkspace()
@@ -566,32 +439,20 @@ private Q_SLOTS:
         QVERIFY(log->isVisible());
     }
 
-    void aboutShowsVersions()
-    {
-        const QString html = AboutDialog::versionsHtml();
-        QVERIFY(html.contains(QString::fromLatin1(qVersion())));
-        QVERIFY(html.contains(QStringLiteral(QSCINTILLA_VERSION_STR)));
-        QVERIFY(html.contains(QString::number(TREE_SITTER_LANGUAGE_VERSION)));
-        QVERIFY(html.contains(QStringLiteral(ROSARCH_VERSION)));
-        AboutDialog dialog;
-        dialog.show();
-        QVERIFY(dialog.findChild<QLabel *>(QString(), Qt::FindDirectChildrenOnly));
-        saveScreenshot(dialog, QStringLiteral("about.png"));
-    }
-
     void windowStaysResponsiveWhileRunning()
     {
         MainWindow w;
         w.show();
-        w.runner()->setStageFunction([](const QString &root, const StageControl &control) {
-            AtomicNodeList list;
-            list.workspaceRoot = root;
+        w.runner()->setStageFunction([](const QString &root, const LaunchOptions &,
+                                        const StageControl &control) {
+            Recovery result;
+            result.nodes.workspaceRoot = root;
             for (int i = 0; i < 400 && !control.isCanceled(); ++i) {
                 control.report(i, 400, QStringLiteral("Reading file %1").arg(i));
                 QThread::msleep(5);
             }
-            list.canceled = control.isCanceled();
-            return list;
+            result.nodes.canceled = control.isCanceled();
+            return result;
         });
         QSignalSpy progressed(w.runner(), &StageRunner::stageProgressed);
         QSignalSpy canceled(w.runner(), &StageRunner::stageCanceled);

@@ -19,19 +19,20 @@ private Q_SLOTS:
     {
         StageRunner runner;
         std::atomic<bool> sawCancel{false};
-        runner.setStageFunction([&sawCancel](const QString &root, const StageControl &control) {
-            AtomicNodeList list;
-            list.workspaceRoot = root;
+        runner.setStageFunction([&sawCancel](const QString &root, const LaunchOptions &,
+                                             const StageControl &control) {
+            Recovery result;
+            result.nodes.workspaceRoot = root;
             for (int i = 0; i < 2000; ++i) {
                 if (control.isCanceled()) {
                     sawCancel = true;
-                    list.canceled = true;
-                    return list;
+                    result.nodes.canceled = true;
+                    return result;
                 }
                 control.report(i, 2000, QStringLiteral("file %1").arg(i));
                 QThread::msleep(5);
             }
-            return list;
+            return result;
         });
         QSignalSpy progressed(&runner, &StageRunner::stageProgressed);
         QSignalSpy canceled(&runner, &StageRunner::stageCanceled);
@@ -56,15 +57,16 @@ private Q_SLOTS:
         StageRunner runner;
         std::atomic<int> calls{0};
         std::atomic<bool> firstStarted{false};
-        runner.setStageFunction([&](const QString &root, const StageControl &) {
+        runner.setStageFunction([&](const QString &root, const LaunchOptions &,
+                                    const StageControl &) {
             ++calls;
             if (root == QLatin1String("/first"))
                 firstStarted = true;
             // The first run ignores cancellation and ends first; its result is stale.
             QThread::msleep(root == QLatin1String("/first") ? 250 : 600);
-            AtomicNodeList list;
-            list.workspaceRoot = root;
-            return list;
+            Recovery result;
+            result.nodes.workspaceRoot = root;
+            return result;
         });
         QSignalSpy finished(&runner, &StageRunner::stageFinished);
         QSignalSpy canceled(&runner, &StageRunner::stageCanceled);
@@ -77,7 +79,7 @@ private Q_SLOTS:
         QTest::qWait(200);
         QCOMPARE(calls.load(), 2);
         QCOMPARE(finished.count(), 1);
-        QCOMPARE(finished.first().at(0).value<AtomicNodeList>().workspaceRoot,
+        QCOMPARE(finished.first().at(0).value<Recovery>().nodes.workspaceRoot,
                  QStringLiteral("/second"));
         QCOMPARE(canceled.count(), 0); // a superseded run is silent
     }
@@ -85,19 +87,78 @@ private Q_SLOTS:
     void runnerReportsStageErrors()
     {
         StageRunner runner;
-        runner.setStageFunction([](const QString &, const StageControl &) -> AtomicNodeList {
-            throw std::runtime_error("boom");
-        });
+        runner.setStageFunction(
+            [](const QString &, const LaunchOptions &, const StageControl &) -> Recovery {
+                throw std::runtime_error("boom");
+            });
         QSignalSpy finished(&runner, &StageRunner::stageFinished);
         runner.run(QStringLiteral("/broken"));
         QVERIFY(finished.wait(5000));
-        const AtomicNodeList list = finished.first().at(0).value<AtomicNodeList>();
+        const AtomicNodeList list = finished.first().at(0).value<Recovery>().nodes;
+        QCOMPARE(list.workspaceRoot, QStringLiteral("/broken"));
         QCOMPARE(list.diagnostics.size(), 1);
         QCOMPARE(list.diagnostics.first().severity, Diagnostic::Severity::Error);
         QVERIFY(list.diagnostics.first().message.contains(QStringLiteral("boom")));
+
+        // stage 2 alone reports its own failure as a stage 2 diagnostic
+        runner.setLaunchFunction([](const QString &, const AtomicNodeList &,
+                                    const LaunchOptions &, const StageControl &)
+                                     -> LaunchDependencies { throw std::runtime_error("bang"); });
+        QSignalSpy launchFinished(&runner, &StageRunner::launchStageFinished);
+        runner.runLaunch(QStringLiteral("/broken"), list, {});
+        QVERIFY(launchFinished.wait(5000));
+        const LaunchDependencies launch = launchFinished.first().at(0).value<LaunchDependencies>();
+        QCOMPARE(launch.diagnostics.size(), 1);
+        QVERIFY(launch.diagnostics.first().message.contains(QStringLiteral("Stage 2")));
+        QVERIFY(launch.diagnostics.first().message.contains(QStringLiteral("bang")));
     }
 
-    void defaultStageRunsStageOne()
+    void launchOnlyRunGetsNodesAndOptions()
+    {
+        StageRunner runner;
+        std::atomic<int> fullRuns{0};
+        runner.setStageFunction([&](const QString &, const LaunchOptions &, const StageControl &) {
+            ++fullRuns;
+            return Recovery();
+        });
+        AtomicNodeList seenNodes;
+        LaunchOptions seenOptions;
+        QString seenRoot;
+        runner.setLaunchFunction([&](const QString &root, const AtomicNodeList &nodes,
+                                     const LaunchOptions &options, const StageControl &control) {
+            seenRoot = root;
+            seenNodes = nodes;
+            seenOptions = options;
+            control.report(1, 2, QStringLiteral("reading bringup.launch.py"));
+            LaunchDependencies d;
+            d.launchFiles = {QStringLiteral("src/a/launch/bringup.launch.py")};
+            return d;
+        });
+        AtomicNodeList nodes;
+        nodes.workspaceRoot = QStringLiteral("/ws");
+        AtomicNode n;
+        n.id = QStringLiteral("arc_1");
+        nodes.nodes = {n};
+        LaunchOptions options;
+        options.rootFile = QStringLiteral("src/a/launch/bringup.launch.py");
+        options.arguments = {{QStringLiteral("robot"), QStringLiteral("r2")}};
+        QSignalSpy started(&runner, &StageRunner::stageStarted);
+        QSignalSpy finished(&runner, &StageRunner::launchStageFinished);
+        QSignalSpy fullFinished(&runner, &StageRunner::stageFinished);
+        runner.runLaunch(QStringLiteral("/ws"), nodes, options);
+        QCOMPARE(started.count(), 1);
+        QCOMPARE(started.first().at(1).value<StageRunner::Job>(), StageRunner::Job::LaunchOnly);
+        QCOMPARE(runner.currentJob(), StageRunner::Job::LaunchOnly);
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(seenRoot, QStringLiteral("/ws"));
+        QCOMPARE(seenNodes.nodes.size(), 1);
+        QCOMPARE(seenOptions, options);
+        QCOMPARE(finished.first().at(0).value<LaunchDependencies>().launchFiles.size(), 1);
+        QCOMPARE(fullFinished.count(), 0);
+        QCOMPARE(fullRuns.load(), 0);
+    }
+
+    void defaultStageRunsStagesOneAndTwo()
     {
         StageRunner runner;
         QSignalSpy started(&runner, &StageRunner::stageStarted);
@@ -107,9 +168,10 @@ private Q_SLOTS:
         QCOMPARE(started.count(), 1);
         QCOMPARE(started.first().at(0).toString(), root);
         QVERIFY(finished.wait(60000));
-        const AtomicNodeList list = finished.first().at(0).value<AtomicNodeList>();
-        QCOMPARE(list.nodes.size(), 2);
-        QCOMPARE(list.packages.size(), 2);
+        const Recovery result = finished.first().at(0).value<Recovery>();
+        QCOMPARE(result.nodes.nodes.size(), 2);
+        QCOMPARE(result.nodes.packages.size(), 2);
+        QCOMPARE(started.first().at(1).value<StageRunner::Job>(), StageRunner::Job::Recovery);
     }
 };
 

@@ -9,11 +9,16 @@ DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
 {
     connect(document, &Document::modelAboutToBeReset, this, [this] { beginResetModel(); });
     connect(document, &Document::modelReset, this, [this] { endResetModel(); });
+    connect(document, &Document::launchDependenciesAboutToBeReset, this,
+            [this] { beginResetModel(); });
+    connect(document, &Document::launchDependenciesReset, this, [this] { endResetModel(); });
 }
 
 int DiagnosticModel::rowCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : int(m_document->atomicNodes().diagnostics.size());
+    return parent.isValid() ? 0
+                            : int(m_document->atomicNodes().diagnostics.size() +
+                                  m_document->launchDependencies().diagnostics.size());
 }
 
 int DiagnosticModel::columnCount(const QModelIndex &parent) const
@@ -23,10 +28,15 @@ int DiagnosticModel::columnCount(const QModelIndex &parent) const
 
 const Diagnostic *DiagnosticModel::diagnostic(const QModelIndex &index) const
 {
-    const QList<Diagnostic> &all = m_document->atomicNodes().diagnostics;
-    if (!index.isValid() || index.model() != this || index.row() >= all.size())
+    // Stage 1's diagnostics, then stage 2's.
+    const QList<Diagnostic> &nodes = m_document->atomicNodes().diagnostics;
+    const QList<Diagnostic> &launch = m_document->launchDependencies().diagnostics;
+    if (!index.isValid() || index.model() != this || index.row() < 0)
         return nullptr;
-    return &all[index.row()];
+    if (index.row() < nodes.size())
+        return &nodes[index.row()];
+    const qsizetype row = index.row() - nodes.size();
+    return row < launch.size() ? &launch[row] : nullptr;
 }
 
 QString DiagnosticModel::severityLabel(Diagnostic::Severity severity)

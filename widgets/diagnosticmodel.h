@@ -8,7 +8,8 @@ namespace rosarch {
 
 class Document;
 
-/// The diagnostics of the last stage run as a read-only table: message, location, code.
+/// The diagnostics of the last stage runs (stage 1's, then stage 2's) as a read-only table:
+/// message, location, code.
 class DiagnosticModel : public QAbstractTableModel
 {
     Q_OBJECT

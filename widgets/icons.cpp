@@ -42,6 +42,46 @@ QIcon Icons::stop()
 {
     return fromResource("stop");
 }
+QIcon Icons::runLaunch()
+{
+    return fromResource("run_launch");
+}
+QIcon Icons::launchArguments()
+{
+    return fromResource("launch_arguments");
+}
+QIcon Icons::launchFile()
+{
+    return fromResource("launch_file");
+}
+QIcon Icons::include()
+{
+    return fromResource("include");
+}
+QIcon Icons::externalInclude()
+{
+    return fromResource("external");
+}
+QIcon Icons::nodeInstance()
+{
+    return fromResource("node_instance");
+}
+QIcon Icons::nameSpace()
+{
+    return fromResource("namespace");
+}
+QIcon Icons::container()
+{
+    return fromResource("container");
+}
+QIcon Icons::composable()
+{
+    return fromResource("composable");
+}
+QIcon Icons::unresolved()
+{
+    return fromResource("unresolved");
+}
 
 QIcon Icons::port(PortKind kind)
 {

@@ -21,6 +21,18 @@ public:
     static QIcon open();
     static QIcon run();
     static QIcon stop();
+    static QIcon runLaunch();
+    static QIcon launchArguments();
+
+    // Launch tree
+    static QIcon launchFile();
+    static QIcon include();
+    static QIcon externalInclude();
+    static QIcon nodeInstance();
+    static QIcon nameSpace();
+    static QIcon container();
+    static QIcon composable();
+    static QIcon unresolved();
 
 private:
     static QIcon fromResource(const char *name);

@@ -3,11 +3,19 @@
 
 namespace rosarch {
 
-NodeFilterProxyModel::NodeFilterProxyModel(QObject *parent) : QSortFilterProxyModel(parent)
+NodeFilterProxyModel::NodeFilterProxyModel(QObject *parent)
+    : QSortFilterProxyModel(parent), m_columns{AtomicNodeModel::NameColumn,
+                                               AtomicNodeModel::TypeColumn}
 {
     setRecursiveFilteringEnabled(true);
     setAutoAcceptChildRows(true);
     setFilterCaseSensitivity(Qt::CaseInsensitive);
+}
+
+void NodeFilterProxyModel::setFilterColumns(const QList<int> &columns)
+{
+    m_columns = columns;
+    invalidateFilter();
 }
 
 bool NodeFilterProxyModel::filterAcceptsRow(int sourceRow, const QModelIndex &sourceParent) const
@@ -15,7 +23,7 @@ bool NodeFilterProxyModel::filterAcceptsRow(int sourceRow, const QModelIndex &so
     const QRegularExpression re = filterRegularExpression();
     if (re.pattern().isEmpty())
         return true;
-    for (int column : {AtomicNodeModel::NameColumn, AtomicNodeModel::TypeColumn}) {
+    for (int column : m_columns) {
         const QModelIndex index = sourceModel()->index(sourceRow, column, sourceParent);
         if (index.data(Qt::DisplayRole).toString().contains(re))
             return true;

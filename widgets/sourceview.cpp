@@ -4,6 +4,7 @@
 #include <Qsci/qscilexercpp.h>
 #include <Qsci/qscilexerpython.h>
 #include <Qsci/qscilexerxml.h>
+#include <Qsci/qscilexeryaml.h>
 #include <Qsci/qsciscintilla.h>
 
 #include <QDir>
@@ -43,6 +44,8 @@ QString languageKey(const QString &file)
                                  QStringLiteral("sdf")};
     if (xml.contains(suffix))
         return QStringLiteral("xml");
+    if (suffix == QLatin1String("yaml") || suffix == QLatin1String("yml"))
+        return QStringLiteral("yaml");
     return {};
 }
 
@@ -265,6 +268,8 @@ QsciLexer *SourceView::lexerFor(const QString &file)
         lexer = new QsciLexerCPP;
     else if (key == QLatin1String("cmake"))
         lexer = new QsciLexerCMake;
+    else if (key == QLatin1String("yaml"))
+        lexer = new QsciLexerYAML;
     else
         lexer = new QsciLexerXML;
     m_lexers.insert(key, lexer);
@@ -336,7 +341,7 @@ void SourceView::updateHeader()
         return;
     }
     if (m_file.isEmpty()) {
-        m_pathLabel->setText(tr("Select a node, port or diagnostic to see its source."));
+        m_pathLabel->setText(tr("Select a node, port, launch item or diagnostic to see its source."));
         m_pathLabel->setToolTip(QString());
         m_lineLabel->clear();
         return;

@@ -1,0 +1,154 @@
+#include "stagecontroller.h"
+#include "appsettings.h"
+#include "document.h"
+#include "logview.h"
+#include "traceability.h"
+
+#include <utility>
+
+namespace rosarch {
+
+StageController::StageController(Document *document, StageRunner *runner,
+                                 Traceability *traceability, LogView *log, QObject *parent)
+    : QObject(parent), m_document(document), m_runner(runner), m_traceability(traceability),
+      m_log(log)
+{
+    connect(m_runner, &StageRunner::stageStarted, this, &StageController::onStageStarted);
+    connect(m_runner, &StageRunner::stageFinished, this, &StageController::onStageFinished);
+    connect(m_runner, &StageRunner::launchStageFinished, this,
+            &StageController::onLaunchStageFinished);
+    connect(m_runner, &StageRunner::stageCanceled, this, &StageController::onStageCanceled);
+}
+
+void StageController::setWorkspace(const QString &root)
+{
+    if (root == m_workspace)
+        return;
+    m_workspace = root;
+    AtomicNodeList empty;
+    empty.workspaceRoot = root;
+    m_document->setAtomicNodes(empty);
+    m_log->clearLog();
+    AppSettings settings;
+    settings.selection(root, &m_restoreNodeId, &m_restorePortId);
+    m_restoreLaunchId = settings.launchSelection(root);
+    m_document->setLaunchOptions(settings.launchOptions(root));
+}
+
+void StageController::runAll()
+{
+    if (m_workspace.isEmpty())
+        return;
+    rememberSelection();
+    m_runner->run(m_workspace, m_document->launchOptions());
+}
+
+void StageController::runLaunch()
+{
+    // Stage 2 needs stage 1's classes of this workspace; without them run both.
+    if (m_workspace.isEmpty() || m_document->workspaceRoot() != m_workspace ||
+        (m_runner->isRunning() && m_runner->currentJob() == StageRunner::Job::Recovery)) {
+        runAll();
+        return;
+    }
+    rememberSelection();
+    m_runner->runLaunch(m_workspace, m_document->atomicNodes(), m_document->launchOptions());
+}
+
+void StageController::applyLaunchOptions(const LaunchOptions &options)
+{
+    m_document->setLaunchOptions(options);
+    if (!m_workspace.isEmpty())
+        AppSettings().setLaunchOptions(m_workspace, options);
+    runLaunch();
+}
+
+void StageController::rememberSelection()
+{
+    // Kept until the next result arrives, unless a restore from the session is pending.
+    if (m_restoreNodeId.isEmpty()) {
+        m_restoreNodeId = m_traceability->currentNodeId();
+        m_restorePortId = m_traceability->currentPortId();
+    }
+    if (m_restoreLaunchId.isEmpty())
+        m_restoreLaunchId = m_traceability->currentLaunchId();
+}
+
+void StageController::restoreSelection()
+{
+    const QString nodeId = std::exchange(m_restoreNodeId, QString());
+    const QString portId = std::exchange(m_restorePortId, QString());
+    const QString launchId = std::exchange(m_restoreLaunchId, QString());
+    if (!nodeId.isEmpty())
+        m_traceability->selectNode(nodeId, portId);
+    // Selected last, the launch row shows its line: it was the more specific choice.
+    if (!launchId.isEmpty())
+        m_traceability->selectLaunchItem(launchId);
+}
+
+void StageController::report(const QString &summary)
+{
+    m_log->appendLog(summary);
+    Q_EMIT statusMessage(summary, 8000);
+}
+
+void StageController::onStageStarted(const QString &root, StageRunner::Job job)
+{
+    m_runTimer.start();
+    if (job == StageRunner::Job::Recovery) {
+        m_log->appendLog(tr("Stages 1–2 (atomic nodes, launch files) started on %1").arg(root));
+        Q_EMIT statusMessage(tr("Recovering atomic nodes and launch files…"), 0);
+    } else {
+        m_log->appendLog(tr("Stage 2 (launch files) started on %1").arg(root));
+        Q_EMIT statusMessage(tr("Reading launch files…"), 0);
+    }
+}
+
+void StageController::onStageFinished(const Recovery &result)
+{
+    Recovery recovery = result;
+    if (recovery.nodes.workspaceRoot.isEmpty())
+        recovery.nodes.workspaceRoot = m_workspace;
+    m_document->setRecovery(recovery);
+    const AtomicNodeList &list = m_document->atomicNodes();
+    const LaunchDependencies &launch = m_document->launchDependencies();
+    int ports = 0;
+    for (const AtomicNode &n : list.nodes)
+        ports += int(n.ports.size());
+    report(tr("Stages 1–2 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node "
+              "instances, %6 diagnostics")
+               .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
+               .arg(list.nodes.size())
+               .arg(ports)
+               .arg(launch.launchFiles.size())
+               .arg(launch.nodes.size())
+               .arg(list.diagnostics.size() + launch.diagnostics.size()));
+    restoreSelection();
+}
+
+void StageController::onLaunchStageFinished(const LaunchDependencies &result)
+{
+    m_document->setLaunchDependencies(result);
+    report(tr("Stage 2 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node "
+              "instances, %5 diagnostics")
+               .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
+               .arg(result.launchFiles.size())
+               .arg(result.instances.size())
+               .arg(result.nodes.size())
+               .arg(result.diagnostics.size()));
+    m_restoreNodeId.clear(); // the atomic tree was not rebuilt; its selection stands
+    m_restorePortId.clear();
+    restoreSelection();
+}
+
+void StageController::onStageCanceled(StageRunner::Job job)
+{
+    m_restoreNodeId.clear();
+    m_restorePortId.clear();
+    m_restoreLaunchId.clear();
+    const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–2") : tr("Stage 2");
+    m_log->appendLog(tr("%1 canceled; the previous result is kept.").arg(what));
+    Q_EMIT statusMessage(tr("%1 canceled").arg(what), 5000);
+}
+
+} // namespace rosarch

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "evidence.h"
+
+#include <QModelIndex>
+#include <QObject>
+
+namespace rosarch {
+
+class AtomicNodeModel;
+class AtomicNodePanel;
+class LaunchTreeModel;
+class LaunchTreePanel;
+class SourceView;
+
+/// Keeps the atomic node tree, the launch tree and the source view on the same element:
+/// selecting a row shows its evidence; a node instance also selects its class; moving the
+/// cursor in the source selects the innermost element of that line. Selections made to
+/// follow another view never echo back.
+class Traceability : public QObject
+{
+    Q_OBJECT
+public:
+    Traceability(AtomicNodeModel *nodeModel, AtomicNodePanel *nodePanel,
+                 LaunchTreeModel *launchModel, LaunchTreePanel *launchPanel, SourceView *sourceView,
+                 QObject *parent = nullptr);
+
+    /// Selects a node (or one of its ports) in the atomic tree, showing its evidence.
+    void selectNode(const QString &nodeId, const QString &portId = {});
+    /// Selects a launch-file or node instance in the launch tree, showing its evidence.
+    void selectLaunchItem(const QString &instanceId);
+    /// Selects the class in the atomic tree and shows its definition (Go to Class).
+    void goToClass(const QString &classId);
+
+    void showEvidence(const Evidence &evidence);
+
+    /// The current rows, as ids ("" for none): for remembering them across runs.
+    QString currentNodeId() const;
+    QString currentPortId() const;
+    QString currentLaunchId() const;
+
+Q_SIGNALS:
+    /// The source view could not show `evidence` (the file is missing or unreadable).
+    void evidenceUnavailable(const rosarch::Evidence &evidence);
+
+private:
+    void onNodeSelected(const QModelIndex &sourceIndex);
+    void onLaunchItemSelected(const QModelIndex &sourceIndex);
+    void onSourceLineChanged(const QString &file, int line);
+    /// Selects the class of a node instance in the atomic tree without moving the source.
+    void followClass(const QModelIndex &launchIndex);
+
+    AtomicNodeModel *m_nodeModel;
+    AtomicNodePanel *m_nodePanel;
+    LaunchTreeModel *m_launchModel;
+    LaunchTreePanel *m_launchPanel;
+    SourceView *m_sourceView;
+    bool m_syncing = false; ///< a view follows another; do not echo back
+};
+
+} // namespace rosarch

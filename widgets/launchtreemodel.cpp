@@ -1,0 +1,395 @@
+#include "launchtreemodel.h"
+#include "document.h"
+#include "icons.h"
+#include "launchtreetext.h"
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QIcon>
+#include <QPalette>
+
+#include <algorithm>
+
+namespace rosarch {
+
+LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
+    : QAbstractItemModel(parent), m_document(document)
+{
+    const auto begin = [this] { beginResetModel(); };
+    const auto end = [this] {
+        rebuild();
+        endResetModel();
+    };
+    connect(document, &Document::modelAboutToBeReset, this, begin);
+    connect(document, &Document::modelReset, this, end);
+    connect(document, &Document::launchDependenciesAboutToBeReset, this, begin);
+    connect(document, &Document::launchDependenciesReset, this, end);
+    // Class names in tooltips come from the atomic nodes; a description edit changes nothing here.
+    rebuild();
+}
+
+void LaunchTreeModel::rebuild()
+{
+    m_layout = LaunchTreeLayout(m_document->launchDependencies());
+}
+
+int LaunchTreeModel::itemOf(const QModelIndex &index) const
+{
+    if (!index.isValid() || index.model() != this)
+        return -1;
+    const int item = int(index.internalId());
+    return item >= 0 && item < m_layout.items().size() ? item : -1;
+}
+
+QModelIndex LaunchTreeModel::indexOfItem(int item, int column) const
+{
+    const QList<Item> &items = m_layout.items();
+    if (item < 0 || item >= m_layout.items().size())
+        return {};
+    return createIndex(items[item].row, column, quintptr(item));
+}
+
+QModelIndex LaunchTreeModel::index(int row, int column, const QModelIndex &parent) const
+{
+    const QList<Item> &items = m_layout.items();
+    if (row < 0 || column < 0 || column >= ColumnCount)
+        return {};
+    if (!parent.isValid())
+        return row < m_layout.roots().size()
+                   ? createIndex(row, column, quintptr(m_layout.roots()[row]))
+                   : QModelIndex();
+    const int p = itemOf(parent);
+    if (p < 0 || parent.column() != 0 || row >= items[p].children.size())
+        return {};
+    return createIndex(row, column, quintptr(items[p].children[row]));
+}
+
+QModelIndex LaunchTreeModel::parent(const QModelIndex &child) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(child);
+    return item < 0 ? QModelIndex() : indexOfItem(items[item].parent, 0);
+}
+
+int LaunchTreeModel::rowCount(const QModelIndex &parent) const
+{
+    const QList<Item> &items = m_layout.items();
+    if (!parent.isValid())
+        return int(m_layout.roots().size());
+    const int item = itemOf(parent);
+    return item < 0 || parent.column() != 0 ? 0 : int(items[item].children.size());
+}
+
+int LaunchTreeModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
+
+LaunchTreeModel::ItemKind LaunchTreeModel::kind(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    return item < 0 ? ItemKind::None : items[item].kind;
+}
+
+const LaunchFileInstance *LaunchTreeModel::launchFile(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    const QList<LaunchFileInstance> &all = m_document->launchDependencies().instances;
+    return item < 0 || items[item].instance >= all.size() ? nullptr : &all[items[item].instance];
+}
+
+const NodeInstance *LaunchTreeModel::node(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    if (item < 0 || items[item].kind != ItemKind::Node)
+        return nullptr;
+    return &m_document->launchDependencies().nodes[items[item].ref];
+}
+
+const Unresolved *LaunchTreeModel::unresolved(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    if (item < 0 || items[item].kind != ItemKind::Unresolved)
+        return nullptr;
+    return &launchFile(index)->unresolved[items[item].ref];
+}
+
+Evidence LaunchTreeModel::evidence(const QModelIndex &index) const
+{
+    switch (kind(index)) {
+    case ItemKind::LaunchFile: {
+        const LaunchFileInstance *lf = launchFile(index);
+        if (lf->evidence.isValid())
+            return lf->evidence;
+        // A root whose evidence is the file itself: show its top.
+        return lf->file.isEmpty() ? Evidence() : Evidence{lf->file, 1, 0, 1, 0};
+    }
+    case ItemKind::Node:
+        return node(index)->evidence;
+    case ItemKind::Unresolved:
+        return unresolved(index)->evidence;
+    case ItemKind::Namespace:
+    case ItemKind::None:
+        break;
+    }
+    return {};
+}
+
+bool LaunchTreeModel::isActive(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    return item < 0 || items[item].active;
+}
+
+QModelIndex LaunchTreeModel::launchFileIndex(const QString &instanceId, int column) const
+{
+    return indexOfItem(m_layout.launchFileItem(instanceId), column);
+}
+
+QModelIndex LaunchTreeModel::nodeIndex(const QString &nodeId, int column) const
+{
+    return indexOfItem(m_layout.nodeItem(nodeId), column);
+}
+
+QModelIndex LaunchTreeModel::indexAt(const QString &file, int line, const QModelIndex &near) const
+{
+    return indexOfItem(m_layout.itemAt(m_document->launchDependencies(), file, line, itemOf(near)),
+                       0);
+}
+
+QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    if (item < 0)
+        return {};
+    const Item &it = items[item];
+    if (role == Qt::ForegroundRole && !it.active)
+        return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+    if (role == ActiveRole)
+        return it.active;
+    if (role == KindRole)
+        return int(it.kind);
+    if (role == InstanceIdRole && it.kind != ItemKind::Node)
+        return m_document->launchDependencies().instances.value(it.instance).id;
+    QVariant value;
+    switch (it.kind) {
+    case ItemKind::LaunchFile:
+        value = launchFileData(it, index.column(), role);
+        break;
+    case ItemKind::Namespace:
+        value = namespaceData(it, index.column(), role);
+        break;
+    case ItemKind::Node:
+        value = nodeData(it, index.column(), role);
+        break;
+    case ItemKind::Unresolved:
+        value = unresolvedData(it, index.column(), role);
+        break;
+    case ItemKind::None:
+        break;
+    }
+    // Inactive rows are greyed, icons included.
+    if (role == Qt::DecorationRole && !it.active && value.canConvert<QIcon>())
+        return QIcon(value.value<QIcon>().pixmap(QSize(16, 16), QIcon::Disabled));
+    return value;
+}
+
+Qt::ItemFlags LaunchTreeModel::flags(const QModelIndex &index) const
+{
+    const QList<Item> &items = m_layout.items();
+    const int item = itemOf(index);
+    if (item < 0)
+        return Qt::NoItemFlags;
+    Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
+    if (items[item].children.isEmpty() && items[item].kind != ItemKind::LaunchFile &&
+        items[item].kind != ItemKind::Namespace)
+        f |= Qt::ItemNeverHasChildren;
+    return f;
+}
+
+QVariant LaunchTreeModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case NameColumn:
+        return tr("Name");
+    case NamespaceColumn:
+        return tr("Namespace");
+    case ExecutableColumn:
+        return tr("Package / executable");
+    case ClassColumn:
+        return tr("Class");
+    case DetailsColumn:
+        return tr("Details");
+    default:
+        return {};
+    }
+}
+
+QVariant LaunchTreeModel::launchFileData(const Item &item, int column, int role) const
+{
+    const QList<Item> &items = m_layout.items();
+    const LaunchFileInstance &lf = m_document->launchDependencies().instances[item.ref];
+    const bool unresolvedInclude = lf.file.isEmpty() && !lf.external;
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            if (!lf.type.isEmpty())
+                return lf.type;
+            return lf.file.isEmpty() ? tr("(unresolved include)") : lf.file.section('/', -1);
+        case ExecutableColumn:
+            return lf.package;
+        case DetailsColumn:
+            return LaunchTreeText::launchFileDetails(lf);
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        if (column == NameColumn) {
+            if (lf.external)
+                return Icons::externalInclude();
+            if (unresolvedInclude)
+                return Icons::unresolved();
+            return lf.parentId.isEmpty() ? Icons::launchFile() : Icons::include();
+        }
+        if (column == DetailsColumn && !unresolvedInclude &&
+            !LaunchTreeLayout::attributeUnresolved(lf, m_document->launchDependencies()).isEmpty())
+            return Icons::unresolved();
+        return {};
+    case Qt::FontRole:
+        if (column == NameColumn && (lf.parentId.isEmpty() || lf.external || unresolvedInclude)) {
+            QFont f;
+            f.setBold(lf.parentId.isEmpty());
+            f.setItalic(lf.external || unresolvedInclude);
+            return f;
+        }
+        return {};
+    case Qt::ToolTipRole: {
+        const int parent = item.parent;
+        return LaunchTreeText::launchFileToolTip(
+            lf, LaunchTreeLayout::attributeUnresolved(lf, m_document->launchDependencies()),
+            parent < 0 || items[parent].active);
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant LaunchTreeModel::namespaceData(const Item &item, int column, int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+        if (column == NameColumn)
+            return item.nameSpace;
+        if (column == DetailsColumn)
+            return tr("namespace scope");
+        return {};
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::nameSpace() : QVariant();
+    case Qt::ToolTipRole:
+        return LaunchTreeText::namespaceToolTip(
+            item.nameSpace, m_document->launchDependencies().instances[item.instance],
+            int(item.children.size()));
+    default:
+        return {};
+    }
+}
+
+QVariant LaunchTreeModel::nodeData(const Item &item, int column, int role) const
+{
+    const QList<Item> &items = m_layout.items();
+    const NodeInstance &n = m_document->launchDependencies().nodes[item.ref];
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return n.nodeName.isEmpty() ? n.execName : n.nodeName;
+        case NamespaceColumn:
+            return n.nameSpace.isEmpty() ? QStringLiteral("/") : n.nameSpace;
+        case ExecutableColumn:
+            return LaunchTreeText::nodeExecutable(n);
+        case ClassColumn:
+            if (!n.className.isEmpty())
+                return n.className;
+            return isWorkspacePackage(n.package) ? tr("(not found)") : tr("(external)");
+        case DetailsColumn:
+            return LaunchTreeText::nodeDetails(n, item.composableCount);
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        if (column == NameColumn) {
+            if (item.composableCount > 0)
+                return Icons::container();
+            return n.nodeKind == QLatin1String("composable") ? Icons::composable()
+                                                             : Icons::nodeInstance();
+        }
+        if (column == DetailsColumn && !n.unresolved.isEmpty())
+            return Icons::unresolved();
+        return {};
+    case Qt::FontRole:
+        if (column == ClassColumn && n.className.isEmpty()) {
+            QFont f;
+            f.setItalic(true);
+            return f;
+        }
+        return {};
+    case Qt::ToolTipRole: {
+        const AtomicNode *cls =
+            n.classId.isEmpty() ? nullptr : m_document->atomicNodes().node(n.classId);
+        const int parent = item.parent;
+        return LaunchTreeText::nodeToolTip(n, cls, isWorkspacePackage(n.package),
+                                           parent < 0 || items[parent].active);
+    }
+    case InstanceIdRole:
+        return n.id;
+    case ClassIdRole:
+        return n.classId;
+    default:
+        return {};
+    }
+}
+
+bool LaunchTreeModel::isWorkspacePackage(const QString &package) const
+{
+    const QList<RosPackage> &packages = m_document->atomicNodes().packages;
+    return std::any_of(packages.cbegin(), packages.cend(),
+                       [&](const RosPackage &p) { return p.name == package; });
+}
+
+QVariant LaunchTreeModel::unresolvedData(const Item &item, int column, int role) const
+{
+    const Unresolved &u =
+        m_document->launchDependencies().instances[item.instance].unresolved[item.ref];
+    switch (role) {
+    case Qt::DisplayRole:
+        if (column == NameColumn)
+            return u.expression.simplified();
+        if (column == DetailsColumn)
+            return LaunchTreeText::unresolvedDetails(u);
+        return {};
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::unresolved() : QVariant();
+    case Qt::FontRole:
+        if (column == NameColumn) {
+            QFont f;
+            f.setItalic(true);
+            return f;
+        }
+        return {};
+    case Qt::ToolTipRole:
+        return LaunchTreeText::unresolvedToolTip(u);
+    default:
+        return {};
+    }
+}
+
+} // namespace rosarch

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "evidence.h"
+#include "launchdependencies.h"
+#include "launchtreelayout.h"
+
+#include <QAbstractItemModel>
+
+namespace rosarch {
+
+class Document;
+
+/// The Launch File Dependency Description as a tree: root launch-file instances → included
+/// instances → node instances, with namespace scopes as intermediate rows, composable nodes
+/// under their container and unresolved actions at the line they stand on. Read-only.
+class LaunchTreeModel : public QAbstractItemModel
+{
+    Q_OBJECT
+public:
+    enum Column
+    {
+        NameColumn,
+        NamespaceColumn,
+        ClassColumn, ///< before the executable: the link to the atomic nodes stays in sight
+        ExecutableColumn,
+        DetailsColumn,
+        ColumnCount
+    };
+    using ItemKind = LaunchTreeLayout::Kind;
+    enum Role
+    {
+        KindRole = Qt::UserRole + 1, ///< int(ItemKind)
+        InstanceIdRole,              ///< "lf2" or "n3"; the owning launch file for other rows
+        ClassIdRole,                 ///< node rows: the atomic node's id ("" when unknown)
+        ActiveRole,                  ///< false when a condition (here or above) is false
+    };
+
+    explicit LaunchTreeModel(Document *document, QObject *parent = nullptr);
+
+    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
+    QModelIndex parent(const QModelIndex &child) const override;
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
+
+    ItemKind kind(const QModelIndex &index) const;
+    /// The launch-file instance of a launch-file row, or the one a row belongs to.
+    const LaunchFileInstance *launchFile(const QModelIndex &index) const;
+    const NodeInstance *node(const QModelIndex &index) const;
+    const Unresolved *unresolved(const QModelIndex &index) const;
+    /// Where the row's element comes from (invalid for namespace rows).
+    Evidence evidence(const QModelIndex &index) const;
+    /// Whether the row's condition and those of all its ancestors hold.
+    bool isActive(const QModelIndex &index) const;
+
+    QModelIndex launchFileIndex(const QString &instanceId, int column = 0) const;
+    QModelIndex nodeIndex(const QString &nodeId, int column = 0) const;
+    /// The innermost row whose evidence covers file:line. A file included twice has its lines
+    /// in two instances; then the one `near` (a row, usually the current one) lies in wins.
+    QModelIndex indexAt(const QString &file, int line, const QModelIndex &near = {}) const;
+
+private:
+    using Item = LaunchTreeLayout::Item;
+
+    void rebuild();
+    int itemOf(const QModelIndex &index) const;
+    QModelIndex indexOfItem(int item, int column) const;
+    /// Whether stage 1 found `package` in the workspace (else its classes are not analysed).
+    bool isWorkspacePackage(const QString &package) const;
+
+    QVariant launchFileData(const Item &item, int column, int role) const;
+    QVariant namespaceData(const Item &item, int column, int role) const;
+    QVariant nodeData(const Item &item, int column, int role) const;
+    QVariant unresolvedData(const Item &item, int column, int role) const;
+
+    Document *m_document;
+    LaunchTreeLayout m_layout;
+};
+
+} // namespace rosarch

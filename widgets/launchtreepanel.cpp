@@ -1,0 +1,193 @@
+#include "launchtreepanel.h"
+#include "launchtreemodel.h"
+#include "nodefilterproxymodel.h"
+
+#include <QAction>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace rosarch {
+
+LaunchTreePanel::LaunchTreePanel(QWidget *parent)
+    : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
+      m_tree(new QTreeView(this)), m_placeholder(new QLabel(this)),
+      m_goToClass(new QAction(tr("&Go to Class"), this))
+{
+    m_proxy->setFilterColumns({LaunchTreeModel::NameColumn, LaunchTreeModel::NamespaceColumn,
+                               LaunchTreeModel::ClassColumn, LaunchTreeModel::ExecutableColumn});
+    m_filter->setPlaceholderText(tr("Filter by name, namespace, class or executable"));
+    m_filter->setClearButtonEnabled(true);
+    m_filter->setToolTip(tr("Shows the launch files, namespaces and node instances whose name, "
+                            "namespace, class or executable contains this text. Esc clears "
+                            "the filter."));
+    m_filter->installEventFilter(this);
+    connect(m_filter, &QLineEdit::textChanged, this, &LaunchTreePanel::applyFilter);
+
+    m_tree->setModel(m_proxy);
+    m_tree->setUniformRowHeights(true);
+    m_tree->setAlternatingRowColors(true);
+    m_tree->setAllColumnsShowFocus(true);
+    m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_tree->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_tree->setExpandsOnDoubleClick(false); // double-click goes to the class; arrows expand
+    m_tree->header()->setStretchLastSection(true);
+    m_tree->setFrameShape(QFrame::NoFrame);
+
+    m_goToClass->setShortcut(QKeySequence(Qt::Key_F12));
+    m_goToClass->setShortcutContext(Qt::WidgetShortcut);
+    m_goToClass->setStatusTip(tr("Select the atomic node class this node instance runs"));
+    connect(m_goToClass, &QAction::triggered, this, [this] {
+        const QString classId = currentClassId();
+        if (!classId.isEmpty())
+            Q_EMIT classRequested(classId);
+    });
+    auto *separator = new QAction(this);
+    separator->setSeparator(true);
+    auto *expandAll = new QAction(tr("&Expand All"), this);
+    connect(expandAll, &QAction::triggered, m_tree, &QTreeView::expandAll);
+    auto *collapseAll = new QAction(tr("&Collapse All"), this);
+    connect(collapseAll, &QAction::triggered, m_tree, &QTreeView::collapseAll);
+    m_tree->addActions({m_goToClass, separator, expandAll, collapseAll});
+    m_tree->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    connect(m_tree, &QTreeView::doubleClicked, this, [this](const QModelIndex &index) {
+        const QString classId = index.data(LaunchTreeModel::ClassIdRole).toString();
+        if (!classId.isEmpty())
+            Q_EMIT classRequested(classId);
+        else
+            m_tree->setExpanded(index.siblingAtColumn(0),
+                                !m_tree->isExpanded(index.siblingAtColumn(0)));
+    });
+    connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex &current) {
+                updateActions();
+                Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
+            });
+
+    m_placeholder->setAlignment(Qt::AlignCenter);
+    m_placeholder->setWordWrap(true);
+    m_placeholder->setMargin(16);
+    m_placeholder->setForegroundRole(QPalette::PlaceholderText);
+    m_placeholder->setText(tr("No launch files analysed yet."));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(m_filter);
+    layout->addWidget(m_tree, 1);
+    layout->addWidget(m_placeholder, 1);
+    setFocusProxy(m_tree);
+    updateActions();
+    updatePlaceholder();
+}
+
+void LaunchTreePanel::setModel(LaunchTreeModel *model)
+{
+    if (m_model)
+        disconnect(m_model, nullptr, this, nullptr);
+    m_model = model;
+    m_proxy->setSourceModel(model);
+    connect(model, &QAbstractItemModel::modelReset, this, &LaunchTreePanel::onModelReset);
+    onModelReset();
+}
+
+void LaunchTreePanel::setPlaceholderText(const QString &text)
+{
+    m_placeholder->setText(text);
+}
+
+void LaunchTreePanel::onModelReset()
+{
+    m_tree->expandAll();
+    // Fit the columns to their content within bounds, so that a long plugin name does not
+    // push the class (the link to the atomic nodes) out of sight.
+    const QList<std::pair<int, int>> bounds{{LaunchTreeModel::NameColumn, 160},
+                                            {LaunchTreeModel::NamespaceColumn, 90},
+                                            {LaunchTreeModel::ClassColumn, 90},
+                                            {LaunchTreeModel::ExecutableColumn, 120}};
+    for (const auto &[column, minimum] : bounds) {
+        m_tree->resizeColumnToContents(column);
+        const int maximum = column == LaunchTreeModel::NameColumn ? 320 : 220;
+        m_tree->setColumnWidth(column, qBound(minimum, m_tree->columnWidth(column) + 8, maximum));
+    }
+    updateActions();
+    updatePlaceholder();
+}
+
+void LaunchTreePanel::updatePlaceholder()
+{
+    const bool empty = !m_model || m_model->rowCount() == 0;
+    m_tree->setVisible(!empty);
+    m_filter->setEnabled(!empty);
+    m_placeholder->setVisible(empty);
+}
+
+void LaunchTreePanel::applyFilter(const QString &text)
+{
+    m_proxy->setFilterRegularExpression(QRegularExpression(
+        QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
+    m_tree->expandAll();
+}
+
+QString LaunchTreePanel::currentClassId() const
+{
+    return m_tree->currentIndex().data(LaunchTreeModel::ClassIdRole).toString();
+}
+
+void LaunchTreePanel::updateActions()
+{
+    m_goToClass->setEnabled(!currentClassId().isEmpty());
+}
+
+QModelIndex LaunchTreePanel::currentSourceIndex() const
+{
+    return m_proxy->mapToSource(m_tree->currentIndex());
+}
+
+void LaunchTreePanel::selectSourceIndex(const QModelIndex &sourceIndex)
+{
+    QModelIndex proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
+    if (!proxyIndex.isValid() && sourceIndex.isValid() && !m_filter->text().isEmpty()) {
+        m_filter->clear();
+        proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
+    }
+    if (!proxyIndex.isValid()) {
+        m_tree->selectionModel()->clearCurrentIndex();
+        m_tree->clearSelection();
+        return;
+    }
+    for (QModelIndex p = proxyIndex.parent(); p.isValid(); p = p.parent())
+        m_tree->expand(p);
+    m_tree->selectionModel()->setCurrentIndex(proxyIndex, QItemSelectionModel::ClearAndSelect |
+                                                              QItemSelectionModel::Rows);
+    m_tree->scrollTo(proxyIndex);
+}
+
+void LaunchTreePanel::focusFilter()
+{
+    m_filter->setFocus(Qt::ShortcutFocusReason);
+    m_filter->selectAll();
+}
+
+bool LaunchTreePanel::eventFilter(QObject *watched, QEvent *event)
+{
+    // Esc in a non-empty filter clears it rather than reaching a window-wide shortcut.
+    if (watched == m_filter &&
+        (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Escape && !m_filter->text().isEmpty()) {
+            event->accept();
+            if (event->type() == QEvent::KeyPress)
+                m_filter->clear();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace rosarch
