@@ -131,7 +131,13 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                     reached.insert(i.file);
             }
     }
-    // Unresolved items are diagnostics too, so a headless run lists them.
+    // The same problem met through two include chains is one diagnostic.
+    QList<Diagnostic> unique;
+    for (const Diagnostic &d : std::as_const(out.diagnostics))
+        if (!unique.contains(d))
+            unique.append(d);
+    out.diagnostics = unique;
+    // External includes are listed too, so a headless run shows what was not followed.
     for (const LaunchFileInstance &i : std::as_const(out.instances))
         if (i.external) {
             Diagnostic d;

@@ -1,19 +1,270 @@
 #include "yamllaunchreader.h"
+#include "frontendactionmapper.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
 
 namespace rosarch {
 
+namespace {
+
+// Launch files nest a handful of levels; deeper entities are skipped so that mapping them can
+// never exhaust the stack.
+constexpr int kMaxDepth = 200;
+
+struct Position
+{
+    int line = 0;
+    int column = 0;
+    bool operator<(const Position &o) const
+    {
+        return line != o.line ? line < o.line : column < o.column;
+    }
+};
+
+Position startOf(const YAML::Node &n)
+{
+    const YAML::Mark m = n.Mark();
+    if (m.is_null())
+        return {};
+    return {m.line + 1, m.column + 1};
+}
+
+// yaml-cpp keeps no end marks: the end is where the last scalar inside ends.
+void extendEnd(const YAML::Node &n, Position *end, int depth = 0)
+{
+    if (depth > kMaxDepth)
+        return;
+    if (n.IsScalar()) {
+        Position p = startOf(n);
+        const bool quoted = n.Tag() == "!";
+        p.column += int(n.Scalar().size()) + (quoted ? 2 : 0);
+        *end = std::max(*end, p);
+    } else if (n.IsSequence()) {
+        for (const YAML::Node &item : n)
+            extendEnd(item, end, depth + 1);
+    } else if (n.IsMap()) {
+        for (const auto &kv : n) {
+            extendEnd(kv.first, end, depth + 1);
+            extendEnd(kv.second, end, depth + 1);
+        }
+    }
+}
+
+QString scalarText(const YAML::Node &n)
+{
+    if (n.IsScalar())
+        return QString::fromStdString(n.Scalar());
+    if (n.IsSequence()) {
+        QStringList items;
+        for (const YAML::Node &item : n)
+            items << scalarText(item);
+        return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
+    }
+    return {};
+}
+
+bool isListOfMappings(const YAML::Node &n)
+{
+    if (!n.IsSequence() || n.size() == 0)
+        return false;
+    return std::all_of(n.begin(), n.end(), [](const YAML::Node &item) { return item.IsMap(); });
+}
+
+class EntityBuilder
+{
+public:
+    EntityBuilder(const QString &file, QList<Diagnostic> *diagnostics)
+        : m_file(file), m_diagnostics(diagnostics)
+    {
+    }
+
+    Evidence evidence(const YAML::Node &start, const YAML::Node &content) const
+    {
+        Evidence e;
+        e.file = m_file;
+        const Position begin = startOf(start);
+        Position end = begin;
+        extendEnd(content, &end);
+        e.line = begin.line;
+        e.column = begin.column;
+        e.endLine = end.line;
+        e.endColumn = end.column;
+        return e;
+    }
+
+    /// Items of `children` (or of the root `launch` list): each a mapping {type: entity}.
+    void appendChildren(const YAML::Node &list, QList<FrontendEntity> *out, int depth)
+    {
+        for (const YAML::Node &item : list) {
+            if (!item.IsMap() || item.size() != 1) {
+                report(QStringLiteral("invalid-entity"),
+                       QStringLiteral("A launch entity must be a mapping with one key, the "
+                                      "entity type."),
+                       evidence(item, item));
+                continue;
+            }
+            const auto kv = *item.begin();
+            *out << build(QString::fromStdString(kv.first.Scalar()), item, kv.second, depth + 1);
+        }
+    }
+
+    FrontendEntity build(const QString &type, const YAML::Node &start, const YAML::Node &n,
+                         int depth)
+    {
+        FrontendEntity e;
+        e.type = type;
+        e.evidence = evidence(start, n);
+        if (depth > kMaxDepth) {
+            report(
+                QStringLiteral("nesting-too-deep"),
+                QStringLiteral("Entities nested deeper than %1 levels are skipped.").arg(kMaxDepth),
+                e.evidence);
+            return e;
+        }
+        if (n.IsSequence()) { // `- group: [ ...children ]`
+            appendChildren(n, &e.children, depth);
+            return e;
+        }
+        if (!n.IsMap())
+            return e;
+        for (const auto &kv : n) {
+            const QString key =
+                QString::fromStdString(kv.first.IsScalar() ? kv.first.Scalar() : std::string());
+            const YAML::Node &v = kv.second;
+            if (key == u"children" && v.IsSequence()) {
+                appendChildren(v, &e.children, depth);
+            } else if (isListOfMappings(v)) {
+                for (const YAML::Node &item : v)
+                    e.children << build(key, item, item, depth + 1);
+            } else if (v.IsMap()) { // a single nested entity written without its list
+                e.children << build(key, kv.first, v, depth + 1);
+            } else {
+                FrontendAttribute a;
+                a.name = key;
+                a.value = scalarText(v);
+                a.evidence = evidence(v.IsNull() ? kv.first : v, v.IsNull() ? kv.first : v);
+                e.attributes << a;
+            }
+        }
+        return e;
+    }
+
+private:
+    void report(const QString &code, const QString &message, const Evidence &evidence)
+    {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.code = code;
+        d.message = message;
+        d.evidence = evidence;
+        m_diagnostics->append(d);
+    }
+
+    QString m_file;
+    QList<Diagnostic> *m_diagnostics;
+};
+
+} // namespace
+
 bool YamlLaunchReader::isLaunchFile(const QByteArray &content)
 {
-    Q_UNUSED(content);
+    // A top-level `launch:` key holding a list of entities. Looking at lines is enough, and
+    // cheap: parameter files have no such key, and other YAML with a `launch:` mapping (design
+    // files, configs) is told apart by what follows.
+    bool afterKey = false;
+    qsizetype pos = 0;
+    while (pos < content.size()) {
+        qsizetype eol = content.indexOf('\n', pos);
+        if (eol < 0)
+            eol = content.size();
+        const QByteArray line = content.mid(pos, eol - pos);
+        pos = eol + 1;
+        const QByteArray trimmed = line.trimmed();
+        if (afterKey) {
+            if (trimmed.isEmpty() || trimmed.startsWith('#'))
+                continue;
+            return trimmed == "-" || trimmed.startsWith("- ") || trimmed.startsWith("-\t");
+        }
+        if (!line.startsWith("launch"))
+            continue;
+        const QByteArray rest = line.mid(6).trimmed();
+        if (!rest.startsWith(':'))
+            continue;
+        const QByteArray value = rest.mid(1).trimmed();
+        if (value.startsWith('['))
+            return true;
+        afterKey = value.isEmpty() || value.startsWith('#');
+    }
     return false;
 }
 
 LaunchFileDescription YamlLaunchReader::read(const QByteArray &content, const QString &file)
 {
-    Q_UNUSED(content);
     LaunchFileDescription d;
     d.file = file;
     d.format = LaunchFileDescription::Format::Yaml;
+
+    YAML::Node root;
+    Diagnostic error;
+    try {
+        root = YAML::Load(content.toStdString());
+    } catch (const YAML::Exception &ex) {
+        error.severity = Diagnostic::Severity::Error;
+        error.code = QStringLiteral("malformed-yaml");
+        error.evidence.file = file;
+        error.evidence.line = error.evidence.endLine = ex.mark.is_null() ? 1 : ex.mark.line + 1;
+        error.evidence.column = error.evidence.endColumn =
+            ex.mark.is_null() ? 1 : ex.mark.column + 1;
+        error.message = QStringLiteral("Malformed YAML at line %1, column %2: %3.")
+                            .arg(error.evidence.line)
+                            .arg(error.evidence.column)
+                            .arg(QString::fromStdString(ex.msg));
+        // Keep what was read: the lines before the error, if they parse on their own.
+        qsizetype cut = 0;
+        for (int line = 1; line < error.evidence.line && cut >= 0; ++line) {
+            cut = content.indexOf('\n', cut);
+            if (cut >= 0)
+                ++cut;
+        }
+        try {
+            root = cut > 0 ? YAML::Load(content.left(cut).toStdString()) : YAML::Node();
+        } catch (const YAML::Exception &) {
+            root = YAML::Node();
+        }
+    }
+
+    const YAML::Node &r = root;
+    const YAML::Node launch = r.IsMap() ? r["launch"] : YAML::Node();
+    if (launch.IsDefined() && (launch.IsSequence() || (launch.IsMap() && launch["children"]))) {
+        EntityBuilder builder(file, &d.diagnostics);
+        FrontendEntity entity;
+        try {
+            entity = builder.build(QStringLiteral("launch"), launch, launch, 0);
+        } catch (const YAML::Exception &ex) { // not expected on a loaded tree; never fatal
+            Diagnostic diag;
+            diag.code = QStringLiteral("malformed-yaml");
+            diag.message = QStringLiteral("Cannot read the YAML tree: %1.")
+                               .arg(QString::fromStdString(ex.msg));
+            diag.evidence.file = file;
+            diag.evidence.line = diag.evidence.endLine = 1;
+            diag.evidence.column = diag.evidence.endColumn = 1;
+            d.diagnostics << diag;
+        }
+        FrontendActionMapper mapper(&d.diagnostics);
+        d.actions = mapper.map(entity.children);
+    } else if (error.code.isEmpty()) {
+        Diagnostic diag;
+        diag.code = QStringLiteral("not-a-launch-file");
+        diag.message = QStringLiteral("The YAML file has no top-level 'launch' list.");
+        diag.evidence.file = file;
+        diag.evidence.line = diag.evidence.endLine = 1;
+        diag.evidence.column = diag.evidence.endColumn = 1;
+        d.diagnostics << diag;
+    }
+    if (!error.code.isEmpty())
+        d.diagnostics << error;
     return d;
 }
 
