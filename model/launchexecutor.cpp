@@ -310,20 +310,22 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
     }
 }
 
-const AtomicNode *LaunchExecutor::resolveClass(const QString &package, const QString &executable, bool plugin) const
+QList<const AtomicNode *> LaunchExecutor::resolveClasses(const QString &package, const QString &executable,
+                                                         bool plugin) const
 {
     QString wanted = executable;
     if (plugin && wanted.startsWith(QLatin1String("::")))
         wanted.remove(0, 2);
+    QList<const AtomicNode *> out;
     for (const AtomicNode &n : m_nodes.nodes) {
         if (plugin) {
             if (n.plugins.contains(wanted))
-                return &n;
+                return {&n};
         } else if (n.packageName == package && n.executables.contains(executable)) {
-            return &n;
+            out.append(&n);
         }
     }
-    return nullptr;
+    return out;
 }
 
 void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame, const QString &container)
@@ -345,7 +347,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.active = scope.active && conditionHolds(a, scope, frame, &u);
     if (a.condition.isSet() && !n.active)
         n.active = false;
-    if (const AtomicNode *cls = resolveClass(n.package, n.execName, composable)) {
+    const QList<const AtomicNode *> classes = resolveClasses(n.package, n.execName, composable);
+    if (const AtomicNode *cls = classes.value(0)) {
         n.className = cls->className;
         n.classId = cls->id;
         n.lifecycle = n.lifecycle || cls->lifecycle;
@@ -371,6 +374,18 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     m_out->instances[frame.instance].nodes.append(n.id);
     addToNamespace(frame.instance, n.nameSpace, n.id);
     m_out->nodes.append(n);
+    // An executable whose main spins several nodes starts one instance of each.
+    for (qsizetype k = 1; k < classes.size(); ++k) {
+        NodeInstance more = n;
+        more.id = QStringLiteral("n%1").arg(m_out->nodes.size() + 1);
+        more.className = classes[k]->className;
+        more.classId = classes[k]->id;
+        more.lifecycle = a.lifecycle || classes[k]->lifecycle;
+        more.nodeName = launchName.isEmpty() ? classes[k]->nodeName : launchName;
+        m_out->instances[frame.instance].nodes.append(more.id);
+        addToNamespace(frame.instance, more.nameSpace, more.id);
+        m_out->nodes.append(more);
+    }
 }
 
 void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)

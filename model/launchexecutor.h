@@ -69,7 +69,8 @@ private:
                      QList<Unresolved> *unresolved, const Evidence &evidence) const;
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
                         QList<Unresolved> *unresolved) const;
-    const AtomicNode *resolveClass(const QString &package, const QString &executable, bool plugin) const;
+    /// The classes an executable starts (several when its main spins more than one node).
+    QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable, bool plugin) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
 
     const Workspace &m_workspace;

@@ -295,6 +295,29 @@ private Q_SLOTS:
         QCOMPARE(d.nodes[2].container, QStringLiteral("n1"));
     }
 
+    void executableWithTwoNodesStartsBoth()
+    {
+        Fixture fx;
+        AtomicNode a;
+        a.id = QStringLiteral("arc_3");
+        a.className = QStringLiteral("Driver");
+        a.nodeName = QStringLiteral("driver");
+        a.packageName = QStringLiteral("demo");
+        a.executables << QStringLiteral("duo");
+        AtomicNode b = a;
+        b.id = QStringLiteral("arc_4");
+        b.className = QStringLiteral("Odometry");
+        b.nodeName = QStringLiteral("odometry");
+        fx.nodes.nodes << a << b;
+        fx.add(QStringLiteral("bringup/launch/d.launch.py"), {node(QStringLiteral("demo"), QStringLiteral("duo"), QString(), 2)});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/d.launch.py"));
+        QCOMPARE(summary(d), (QStringList{
+            "/ driver duo class=Driver kind=cpp active=1 remaps=[] params=[]",
+            "/ odometry duo class=Odometry kind=cpp active=1 remaps=[] params=[]"}));
+        QCOMPARE(d.instances[0].nodes, (QStringList{"n1", "n2"}));
+        QCOMPARE(d.nodes[1].evidence, d.nodes[0].evidence);
+    }
+
     void pythonExpressions_data()
     {
         QTest::addColumn<QString>("expression");
