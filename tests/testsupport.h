@@ -2,8 +2,11 @@
 
 // Shared helpers for the Qt Test executables.
 #include "atomicnodelist.h"
+#include "cppnodeanalyzer.h"
 #include "launchdependencies.h"
 #include "recovery.h"
+#include "substitution.h"
+#include "workspacescanner.h"
 
 #include <QDir>
 #include <QFile>
@@ -26,6 +29,15 @@ inline QByteArray readFile(const QString &path)
     if (!f.open(QIODevice::ReadOnly))
         return {};
     return f.readAll();
+}
+
+/// Writes `content` to `path`, creating the folders on the way; fails the test if it cannot.
+inline void writeFile(const QString &path, const QByteArray &content)
+{
+    QDir().mkpath(QFileInfo(path).path());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(content);
 }
 
 /// Saves `w` as `name` into $ROSARCH_SCREENSHOT_DIR when that is set.
@@ -238,5 +250,63 @@ inline Recovery handBuiltRecovery()
 }
 
 } // namespace gui
+
+// The C++ analyzer on the fixture workspaces tests/data/cpp_*/ws.
+namespace cpp {
+
+inline LanguageAnalysis analyzeCase(const QString &name)
+{
+    const Workspace ws = WorkspaceScanner::scan(dataDir(name + QStringLiteral("/ws")));
+    return CppNodeAnalyzer(ws).analyze();
+}
+
+inline const AtomicNode *findNode(const LanguageAnalysis &a, const QString &className)
+{
+    for (const AtomicNode &n : a.nodes)
+        if (n.className == className)
+            return &n;
+    return nullptr;
+}
+
+inline QStringList classNames(const LanguageAnalysis &a)
+{
+    QStringList names;
+    for (const AtomicNode &n : a.nodes)
+        names << n.packageName + QLatin1Char('/') + n.className;
+    return names;
+}
+
+// "publisher chatter std_msgs/msg/String cb= origin=literal expr= param= guard= gp= via=
+// @file:line"
+inline QString describe(const Port &p)
+{
+    return QStringLiteral(
+               "%1 %2 %3 cb=%4 origin=%5 expr=%6 param=%7 guard=%8 gp=%9 via=%10%11 @%12:%13")
+        .arg(portKindName(p.kind), p.name, p.type, p.callback, nameOriginName(p.nameOrigin),
+             p.nameExpression, p.parameter, p.guard, p.guardParameter)
+        .arg(p.via, p.inherited ? QStringLiteral(" inherited") : QString(), p.evidence.file)
+        .arg(p.evidence.line);
+}
+
+inline QStringList describePorts(const AtomicNode &n)
+{
+    QStringList out;
+    for (const Port &p : n.ports)
+        out << describe(p);
+    return out;
+}
+
+} // namespace cpp
+
+// Launch descriptions read from XML and YAML.
+namespace launch {
+
+/// A $(var name) substitution.
+inline Substitution var(const QString &name)
+{
+    return Substitution::configuration(name);
+}
+
+} // namespace launch
 
 } // namespace rosarch::test

@@ -7,16 +7,9 @@
 #include <QtTest>
 
 using namespace rosarch;
+using test::writeFile;
 
 namespace {
-void writeFile(const QString &path, const QByteArray &content)
-{
-    QDir().mkpath(QFileInfo(path).path());
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(content);
-}
-
 int count(const QList<Diagnostic> &ds, const QString &code, const QString &file)
 {
     int n = 0;

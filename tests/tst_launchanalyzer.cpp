@@ -9,17 +9,13 @@
 #include <QtTest>
 
 using namespace rosarch;
+using rosarch::test::launch::var;
 
 namespace {
 
 Substitution lit(const QString &s)
 {
     return Substitution::literal(s);
-}
-
-Substitution var(const QString &name)
-{
-    return Substitution::configuration(name);
 }
 
 Substitution share(const QString &pkg, const QString &rest)
