@@ -4,39 +4,25 @@
 
 #include <QAction>
 #include <QHeaderView>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
-#include <QRegularExpression>
 #include <QTreeView>
 #include <QVBoxLayout>
 
 namespace rosarch {
 
 LaunchTreePanel::LaunchTreePanel(QWidget *parent)
-    : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
-      m_tree(new QTreeView(this)), m_placeholder(new QLabel(this)),
+    : FilteredTreePanel(parent), m_placeholder(new QLabel(this)),
       m_goToClass(new QAction(tr("&Go to Class"), this))
 {
     m_proxy->setFilterColumns({LaunchTreeModel::NameColumn, LaunchTreeModel::NamespaceColumn,
                                LaunchTreeModel::ClassColumn, LaunchTreeModel::ExecutableColumn});
     m_filter->setPlaceholderText(tr("Filter by name, namespace, class or executable"));
-    m_filter->setClearButtonEnabled(true);
     m_filter->setToolTip(tr("Shows the launch files, namespaces and node instances whose name, "
                             "namespace, class or executable contains this text. Esc clears "
                             "the filter."));
-    m_filter->installEventFilter(this);
-    connect(m_filter, &QLineEdit::textChanged, this, &LaunchTreePanel::applyFilter);
-
-    m_tree->setModel(m_proxy);
-    m_tree->setUniformRowHeights(true);
-    m_tree->setAlternatingRowColors(true);
-    m_tree->setAllColumnsShowFocus(true);
-    m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
     m_tree->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_tree->setExpandsOnDoubleClick(false); // double-click goes to the class; arrows expand
-    m_tree->header()->setStretchLastSection(true);
-    m_tree->setFrameShape(QFrame::NoFrame);
 
     m_goToClass->setShortcut(QKeySequence(Qt::Key_F12));
     m_goToClass->setShortcutContext(Qt::WidgetShortcut);
@@ -63,11 +49,7 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
             m_tree->setExpanded(index.siblingAtColumn(0),
                                 !m_tree->isExpanded(index.siblingAtColumn(0)));
     });
-    connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
-            [this](const QModelIndex &current) {
-                updateActions();
-                Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
-            });
+    connect(this, &FilteredTreePanel::currentSourceIndexChanged, this, &LaunchTreePanel::updateActions);
 
     m_placeholder->setAlignment(Qt::AlignCenter);
     m_placeholder->setWordWrap(true);
@@ -75,13 +57,7 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
     m_placeholder->setForegroundRole(QPalette::PlaceholderText);
     m_placeholder->setText(tr("No launch files analysed yet."));
 
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->setSpacing(2);
-    layout->addWidget(m_filter);
-    layout->addWidget(m_tree, 1);
-    layout->addWidget(m_placeholder, 1);
-    setFocusProxy(m_tree);
+    m_layout->addWidget(m_placeholder, 1);
     updateActions();
     updatePlaceholder();
 }
@@ -127,13 +103,6 @@ void LaunchTreePanel::updatePlaceholder()
     m_placeholder->setVisible(empty);
 }
 
-void LaunchTreePanel::applyFilter(const QString &text)
-{
-    m_proxy->setFilterRegularExpression(QRegularExpression(
-        QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
-    m_tree->expandAll();
-}
-
 QString LaunchTreePanel::currentClassId() const
 {
     return m_tree->currentIndex().data(LaunchTreeModel::ClassIdRole).toString();
@@ -142,52 +111,6 @@ QString LaunchTreePanel::currentClassId() const
 void LaunchTreePanel::updateActions()
 {
     m_goToClass->setEnabled(!currentClassId().isEmpty());
-}
-
-QModelIndex LaunchTreePanel::currentSourceIndex() const
-{
-    return m_proxy->mapToSource(m_tree->currentIndex());
-}
-
-void LaunchTreePanel::selectSourceIndex(const QModelIndex &sourceIndex)
-{
-    QModelIndex proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
-    if (!proxyIndex.isValid() && sourceIndex.isValid() && !m_filter->text().isEmpty()) {
-        m_filter->clear();
-        proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
-    }
-    if (!proxyIndex.isValid()) {
-        m_tree->selectionModel()->clearCurrentIndex();
-        m_tree->clearSelection();
-        return;
-    }
-    for (QModelIndex p = proxyIndex.parent(); p.isValid(); p = p.parent())
-        m_tree->expand(p);
-    m_tree->selectionModel()->setCurrentIndex(proxyIndex, QItemSelectionModel::ClearAndSelect |
-                                                              QItemSelectionModel::Rows);
-    m_tree->scrollTo(proxyIndex);
-}
-
-void LaunchTreePanel::focusFilter()
-{
-    m_filter->setFocus(Qt::ShortcutFocusReason);
-    m_filter->selectAll();
-}
-
-bool LaunchTreePanel::eventFilter(QObject *watched, QEvent *event)
-{
-    // Esc in a non-empty filter clears it rather than reaching a window-wide shortcut.
-    if (watched == m_filter &&
-        (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
-        auto *key = static_cast<QKeyEvent *>(event);
-        if (key->key() == Qt::Key_Escape && !m_filter->text().isEmpty()) {
-            event->accept();
-            if (event->type() == QEvent::KeyPress)
-                m_filter->clear();
-            return true;
-        }
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 } // namespace rosarch

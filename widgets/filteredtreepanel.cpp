@@ -1,0 +1,93 @@
+#include "filteredtreepanel.h"
+#include "nodefilterproxymodel.h"
+
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace rosarch {
+
+FilteredTreePanel::FilteredTreePanel(QWidget *parent)
+    : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
+      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this))
+{
+    m_filter->setClearButtonEnabled(true);
+    m_filter->installEventFilter(this);
+    connect(m_filter, &QLineEdit::textChanged, this, &FilteredTreePanel::applyFilter);
+
+    m_tree->setModel(m_proxy);
+    m_tree->setUniformRowHeights(true);
+    m_tree->setAlternatingRowColors(true);
+    m_tree->setAllColumnsShowFocus(true);
+    m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_tree->header()->setStretchLastSection(true);
+    m_tree->setFrameShape(QFrame::NoFrame);
+    connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex &current) {
+                Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
+            });
+
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->setSpacing(2);
+    m_layout->addWidget(m_filter);
+    m_layout->addWidget(m_tree, 1);
+    setFocusProxy(m_tree);
+}
+
+void FilteredTreePanel::applyFilter(const QString &text)
+{
+    m_proxy->setFilterRegularExpression(QRegularExpression(
+        QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
+    m_tree->expandAll();
+}
+
+QModelIndex FilteredTreePanel::currentSourceIndex() const
+{
+    return m_proxy->mapToSource(m_tree->currentIndex());
+}
+
+void FilteredTreePanel::selectSourceIndex(const QModelIndex &sourceIndex)
+{
+    QModelIndex proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
+    if (!proxyIndex.isValid() && sourceIndex.isValid() && !m_filter->text().isEmpty()) {
+        m_filter->clear();
+        proxyIndex = m_proxy->mapFromSource(sourceIndex.siblingAtColumn(0));
+    }
+    if (!proxyIndex.isValid()) {
+        m_tree->selectionModel()->clearCurrentIndex();
+        m_tree->clearSelection();
+        return;
+    }
+    for (QModelIndex p = proxyIndex.parent(); p.isValid(); p = p.parent())
+        m_tree->expand(p);
+    m_tree->selectionModel()->setCurrentIndex(proxyIndex, QItemSelectionModel::ClearAndSelect |
+                                                              QItemSelectionModel::Rows);
+    m_tree->scrollTo(proxyIndex);
+}
+
+void FilteredTreePanel::focusFilter()
+{
+    m_filter->setFocus(Qt::ShortcutFocusReason);
+    m_filter->selectAll();
+}
+
+bool FilteredTreePanel::eventFilter(QObject *watched, QEvent *event)
+{
+    // Esc in a non-empty filter clears it rather than reaching a window-wide shortcut.
+    if (watched == m_filter &&
+        (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Escape && !m_filter->text().isEmpty()) {
+            event->accept();
+            if (event->type() == QEvent::KeyPress)
+                m_filter->clear();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+} // namespace rosarch
