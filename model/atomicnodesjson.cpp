@@ -1,31 +1,21 @@
 #include "atomicnodesjson.h"
 #include "evidencejson.h"
+#include "jsonsupport.h"
 
 #include <nlohmann/json.hpp>
 
 namespace rosarch {
 
 using Json = nlohmann::ordered_json;
+using JsonSupport::strings;
+using JsonSupport::utf8;
 
 namespace {
-
-std::string s(const QString &q)
-{
-    return q.toStdString();
-}
 
 QString q(const Json &j, const char *key)
 {
     const auto it = j.find(key);
     return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
-}
-
-Json stringList(const QStringList &list)
-{
-    Json a = Json::array();
-    for (const QString &v : list)
-        a.push_back(s(v));
-    return a;
 }
 
 QStringList readStringList(const Json &j, const char *key)
@@ -42,22 +32,22 @@ QStringList readStringList(const Json &j, const char *key)
 Json portJson(const Port &p)
 {
     Json j;
-    j["id"] = s(p.id);
-    j["kind"] = s(portKindName(p.kind));
-    j["name"] = s(p.name);
-    j["type"] = s(p.type);
-    j["callback"] = s(p.callback);
-    j["name_origin"] = s(nameOriginName(p.nameOrigin));
+    j["id"] = utf8(p.id);
+    j["kind"] = utf8(portKindName(p.kind));
+    j["name"] = utf8(p.name);
+    j["type"] = utf8(p.type);
+    j["callback"] = utf8(p.callback);
+    j["name_origin"] = utf8(nameOriginName(p.nameOrigin));
     if (!p.nameExpression.isEmpty())
-        j["name_expression"] = s(p.nameExpression);
+        j["name_expression"] = utf8(p.nameExpression);
     if (!p.parameter.isEmpty())
-        j["parameter"] = s(p.parameter);
+        j["parameter"] = utf8(p.parameter);
     if (!p.guard.isEmpty())
-        j["guard"] = s(p.guard);
+        j["guard"] = utf8(p.guard);
     if (!p.guardParameter.isEmpty())
-        j["guard_parameter"] = s(p.guardParameter);
+        j["guard_parameter"] = utf8(p.guardParameter);
     if (!p.via.isEmpty())
-        j["via"] = s(p.via);
+        j["via"] = utf8(p.via);
     if (p.inherited)
         j["inherited"] = true;
     j["evidence"] = EvidenceJson::toJson(p.evidence);
@@ -67,18 +57,18 @@ Json portJson(const Port &p)
 Json nodeJson(const AtomicNode &n)
 {
     Json j;
-    j["id"] = s(n.id);
-    j["class_name"] = s(n.className);
-    j["node_name"] = s(n.nodeName);
-    j["header_file_paths"] = stringList(n.headerFiles);
-    j["source_file_paths"] = stringList(n.sourceFiles);
-    j["description"] = s(n.description);
-    j["compile_type"] = s(compileTypeName(n.compileType));
-    j["execution"] = s(n.execution());
-    j["qualified_name"] = s(n.qualifiedName);
-    j["executables"] = stringList(n.executables);
-    j["plugins"] = stringList(n.plugins);
-    j["base_classes"] = stringList(n.baseClasses);
+    j["id"] = utf8(n.id);
+    j["class_name"] = utf8(n.className);
+    j["node_name"] = utf8(n.nodeName);
+    j["header_file_paths"] = strings(n.headerFiles);
+    j["source_file_paths"] = strings(n.sourceFiles);
+    j["description"] = utf8(n.description);
+    j["compile_type"] = utf8(compileTypeName(n.compileType));
+    j["execution"] = utf8(n.execution());
+    j["qualified_name"] = utf8(n.qualifiedName);
+    j["executables"] = strings(n.executables);
+    j["plugins"] = strings(n.plugins);
+    j["base_classes"] = strings(n.baseClasses);
     j["lifecycle"] = n.lifecycle;
     j["procedural"] = n.procedural;
     j["evidence"] = EvidenceJson::toJson(n.evidence);
@@ -126,9 +116,9 @@ QByteArray AtomicNodesJson::write(const AtomicNodeList &list)
     Json packages = Json::array();
     auto packageEntry = [&](const QString &name, const QString &buildType, const QString &path) {
         Json p;
-        p["package_name"] = s(name);
-        p["build_type"] = s(buildType);
-        p["path"] = s(path);
+        p["package_name"] = utf8(name);
+        p["build_type"] = utf8(buildType);
+        p["path"] = utf8(path);
         Json nodes = Json::array();
         for (const AtomicNode *n : list.nodesOfPackage(name))
             nodes.push_back(nodeJson(*n));
@@ -209,9 +199,9 @@ QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
     Json a = Json::array();
     for (const Diagnostic &d : diagnostics) {
         Json j;
-        j["severity"] = s(Diagnostic::severityName(d.severity));
-        j["code"] = s(d.code);
-        j["message"] = s(d.message);
+        j["severity"] = utf8(Diagnostic::severityName(d.severity));
+        j["code"] = utf8(d.code);
+        j["message"] = utf8(d.message);
         j["evidence"] = EvidenceJson::toJson(d.evidence);
         a.push_back(j);
     }

@@ -1,34 +1,24 @@
 #include "launchdependenciesjson.h"
 #include "evidencejson.h"
+#include "jsonsupport.h"
 
 #include <nlohmann/json.hpp>
 
 namespace rosarch {
 
 using Json = nlohmann::ordered_json;
+using JsonSupport::strings;
+using JsonSupport::utf8;
 
 namespace {
-
-std::string s(const QString &q)
-{
-    return q.toStdString();
-}
-
-Json strings(const QStringList &list)
-{
-    Json a = Json::array();
-    for (const QString &v : list)
-        a.push_back(s(v));
-    return a;
-}
 
 Json pairs(const QList<QPair<QString, QString>> &list, const char *first, const char *second)
 {
     Json a = Json::array();
     for (const auto &[k, v] : list) {
         Json j;
-        j[first] = s(k);
-        j[second] = s(v);
+        j[first] = utf8(k);
+        j[second] = utf8(v);
         a.push_back(j);
     }
     return a;
@@ -39,9 +29,9 @@ Json unresolvedJson(const QList<Unresolved> &list)
     Json a = Json::array();
     for (const Unresolved &u : list) {
         Json j;
-        j["kind"] = s(u.kind);
-        j["expression"] = s(u.expression);
-        j["guess"] = s(u.guess);
+        j["kind"] = utf8(u.kind);
+        j["expression"] = utf8(u.expression);
+        j["guess"] = utf8(u.guess);
         j["evidence"] = EvidenceJson::toJson(u.evidence);
         a.push_back(j);
     }
@@ -55,21 +45,21 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
     Json files = Json::array();
     for (const LaunchFileInstance &i : launch.instances) {
         Json j;
-        j["id"] = s(i.id);
-        j["type"] = s(i.type);
+        j["id"] = utf8(i.id);
+        j["type"] = utf8(i.type);
         j["nodes"] = strings(i.nodes);
         j["included_launch_files"] = strings(i.includedLaunchFiles);
         Json ns = Json::object();
         for (auto it = i.namespaces.cbegin(); it != i.namespaces.cend(); ++it)
-            ns[s(it.key())] = strings(it.value());
+            ns[utf8(it.key())] = strings(it.value());
         j["namespace"] = ns;
-        j["file"] = s(i.file);
-        j["package"] = s(i.package);
-        j["format"] = s(i.format);
-        j["parent"] = s(i.parentId);
+        j["file"] = utf8(i.file);
+        j["package"] = utf8(i.package);
+        j["format"] = utf8(i.format);
+        j["parent"] = utf8(i.parentId);
         j["external"] = i.external;
         j["arguments"] = pairs(i.arguments, "name", "value");
-        j["condition"] = s(i.condition);
+        j["condition"] = utf8(i.condition);
         j["active"] = i.active;
         j["unresolved"] = unresolvedJson(i.unresolved);
         j["evidence"] = EvidenceJson::toJson(i.evidence);
@@ -78,20 +68,20 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
     Json nodes = Json::array();
     for (const NodeInstance &n : launch.nodes) {
         Json j;
-        j["id"] = s(n.id);
-        j["node_kind"] = s(n.nodeKind);
-        j["exec_name"] = s(n.execName);
-        j["class_name"] = s(n.className);
-        j["node_name"] = s(n.nodeName);
-        j["namespace"] = s(n.nameSpace);
-        j["package"] = s(n.package);
-        j["class_id"] = s(n.classId);
-        j["launch_file"] = s(n.launchFileId);
-        j["container"] = s(n.container);
+        j["id"] = utf8(n.id);
+        j["node_kind"] = utf8(n.nodeKind);
+        j["exec_name"] = utf8(n.execName);
+        j["class_name"] = utf8(n.className);
+        j["node_name"] = utf8(n.nodeName);
+        j["namespace"] = utf8(n.nameSpace);
+        j["package"] = utf8(n.package);
+        j["class_id"] = utf8(n.classId);
+        j["launch_file"] = utf8(n.launchFileId);
+        j["container"] = utf8(n.container);
         j["lifecycle"] = n.lifecycle;
         j["remaps"] = pairs(n.remaps, "from", "to");
         j["parameters"] = pairs(n.parameters, "name", "value");
-        j["condition"] = s(n.condition);
+        j["condition"] = utf8(n.condition);
         j["active"] = n.active;
         j["unresolved"] = unresolvedJson(n.unresolved);
         j["evidence"] = EvidenceJson::toJson(n.evidence);
@@ -100,11 +90,11 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
     Json args = Json::array();
     for (const LaunchArgument &a : launch.arguments) {
         Json j;
-        j["name"] = s(a.name);
-        j["default"] = s(a.defaultValue);
+        j["name"] = utf8(a.name);
+        j["default"] = utf8(a.defaultValue);
         j["has_default"] = a.hasDefault;
-        j["description"] = s(a.description);
-        j["launch_file"] = s(a.launchFile);
+        j["description"] = utf8(a.description);
+        j["launch_file"] = utf8(a.launchFile);
         j["evidence"] = EvidenceJson::toJson(a.evidence);
         args.push_back(j);
     }

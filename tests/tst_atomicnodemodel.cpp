@@ -23,19 +23,6 @@ Evidence at(const QString &file, int line, int endLine, int column = 1, int endC
     return Evidence{file, line, column, endLine, endColumn};
 }
 
-Port makePort(const QString &id, PortKind kind, const QString &name, const QString &type,
-              const QString &callback, const Evidence &evidence)
-{
-    Port p;
-    p.id = id;
-    p.kind = kind;
-    p.name = name;
-    p.type = type;
-    p.callback = callback;
-    p.evidence = evidence;
-    return p;
-}
-
 /// Two packages: a Python one with one node (two ports) and a C++ one with two nodes.
 AtomicNodeList sampleList()
 {
@@ -66,9 +53,9 @@ AtomicNodeList sampleList()
     talker.baseClasses = {QStringLiteral("Node")};
     talker.executables = {QStringLiteral("talker")};
     talker.evidence = at(talkerFile, 6, 21);
-    Port pub = makePort(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("chatter"),
+    Port pub = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("chatter"),
                         QStringLiteral("std_msgs/msg/String"), {}, at(talkerFile, 11, 11, 26, 70));
-    Port sub = makePort(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("echo"),
+    Port sub = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("echo"),
                         QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_echo"),
                         at(talkerFile, 12, 12, 29, 88));
     sub.nameOrigin = NameOrigin::Parameter;
@@ -88,13 +75,13 @@ AtomicNodeList sampleList()
     listener.plugins = {QStringLiteral("beta_cpp::Listener")};
     listener.evidence = at(listenerFile, 11, 41);
     listener.description = QStringLiteral("Counts messages.");
-    Port csub = makePort(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("chatter"),
+    Port csub = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("chatter"),
                          QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_message"),
                          at(listenerFile, 17, 18, 21, 90));
-    Port srv = makePort(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("reset"),
+    Port srv = test::gui::port(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("reset"),
                         QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"),
                         at(listenerFile, 19, 20, 16, 99));
-    Port dyn = makePort(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("topic_name_"),
+    Port dyn = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("topic_name_"),
                         QStringLiteral("std_msgs/msg/Int32"), {}, at(listenerFile, 22, 22));
     dyn.nameOrigin = NameOrigin::Expression;
     dyn.nameExpression = QStringLiteral("topic_name_");
