@@ -140,8 +140,8 @@ private:
                 if (!atom(&r))
                     return false;
                 *v = boolean(v->equals(r) == eq);
-            } else if (keyword("not") ) {
-                if (!keyword("in"))
+            } else if (bool negated = false; keyword("in") || (negated = keyword("not"))) {
+                if (negated && !keyword("in"))
                     return false;
                 Value r;
                 if (!atom(&r) || r.kind != Value::List)
@@ -149,15 +149,7 @@ private:
                 bool found = false;
                 for (const Value &i : r.items)
                     found = found || i.equals(*v);
-                *v = boolean(!found);
-            } else if (keyword("in")) {
-                Value r;
-                if (!atom(&r) || r.kind != Value::List)
-                    return false;
-                bool found = false;
-                for (const Value &i : r.items)
-                    found = found || i.equals(*v);
-                *v = boolean(found);
+                *v = boolean(found != negated);
             } else {
                 return true;
             }
