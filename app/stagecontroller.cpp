@@ -126,9 +126,10 @@ void StageController::onStageFinished(const Recovery &result)
     restoreSelection();
 }
 
-void StageController::onLaunchStageFinished(const LaunchDependencies &result)
+void StageController::onLaunchStageFinished(const LaunchDependencies &result,
+                                            const Architecture &architecture)
 {
-    m_document->setLaunchDependencies(result);
+    m_document->setLaunchDependencies(result, architecture);
     report(tr("Stage 2 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node "
               "instances, %5 diagnostics")
                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))

@@ -44,7 +44,7 @@ Q_SIGNALS:
 private:
     void onStageStarted(const QString &root, StageRunner::Job job);
     void onStageFinished(const Recovery &result);
-    void onLaunchStageFinished(const LaunchDependencies &result);
+    void onLaunchStageFinished(const LaunchDependencies &result, const Architecture &architecture);
     void onStageCanceled(StageRunner::Job job);
     void rememberSelection();
     void restoreSelection();

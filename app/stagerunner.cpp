@@ -92,6 +92,8 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
         Recovery result;
         try {
             result.launch = stage(root, nodes, options, control);
+            if (!result.launch.canceled && !control.isCanceled())
+                result.architecture = composeArchitecture(nodes, result.launch, control);
         } catch (const std::exception &e) {
             result.launch = {};
             result.launch.diagnostics.append(internalError(2, e));
@@ -182,7 +184,7 @@ void StageRunner::onFinished(Watcher *watcher, int generation, Job job)
     if (job == Job::Recovery)
         Q_EMIT stageFinished(result);
     else
-        Q_EMIT launchStageFinished(result.launch);
+        Q_EMIT launchStageFinished(result.launch, result.architecture);
 }
 
 } // namespace rosarch

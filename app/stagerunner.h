@@ -62,7 +62,8 @@ Q_SIGNALS:
     /// Stages 1 and 2 finished (run()).
     void stageFinished(const rosarch::Recovery &result);
     /// Stage 2 alone finished (runLaunch()).
-    void launchStageFinished(const rosarch::LaunchDependencies &result);
+    void launchStageFinished(const rosarch::LaunchDependencies &result,
+                             const rosarch::Architecture &architecture);
     void stageCanceled(rosarch::StageRunner::Job job);
 
 private:

@@ -11,6 +11,7 @@ void Document::setRecovery(Recovery recovery)
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
     m_launch = std::move(recovery.launch);
+    m_architecture = std::move(recovery.architecture);
     Q_EMIT modelReset();
 }
 
@@ -19,10 +20,11 @@ void Document::setAtomicNodes(AtomicNodeList nodes)
     setRecovery({std::move(nodes), {}});
 }
 
-void Document::setLaunchDependencies(LaunchDependencies launch)
+void Document::setLaunchDependencies(LaunchDependencies launch, Architecture architecture)
 {
     Q_EMIT launchDependenciesAboutToBeReset();
     m_launch = std::move(launch);
+    m_architecture = std::move(architecture);
     Q_EMIT launchDependenciesReset();
 }
 

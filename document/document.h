@@ -22,6 +22,8 @@ public:
     const AtomicNodeList &atomicNodes() const { return m_nodes; }
     /// Stage 2's result; empty until stage 2 ran.
     const LaunchDependencies &launchDependencies() const { return m_launch; }
+    /// Stage 3's result (composites per launch-file instance); empty until stage 3 ran.
+    const Architecture &architecture() const { return m_architecture; }
     /// The root launch file and argument values stage 2 runs with (a person's choice).
     const LaunchOptions &launchOptions() const { return m_launchOptions; }
     QUndoStack *undoStack() { return &m_undoStack; }
@@ -30,9 +32,9 @@ public:
     void setRecovery(Recovery recovery);
     /// Replaces the whole model with a stage 1 result and no launch dependencies.
     void setAtomicNodes(AtomicNodeList nodes);
-    /// Replaces only stage 2's result (a re-run of stage 2); the atomic nodes and their
-    /// undo history stay.
-    void setLaunchDependencies(LaunchDependencies launch);
+    /// Replaces only the results of stages 2 and 3 (a re-run of stage 2); the atomic nodes
+    /// and their undo history stay.
+    void setLaunchDependencies(LaunchDependencies launch, Architecture architecture = {});
     /// Stores what the next stage 2 run uses; it does not run anything.
     void setLaunchOptions(const LaunchOptions &options);
 
@@ -59,6 +61,7 @@ private:
 
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
+    Architecture m_architecture;
     LaunchOptions m_launchOptions;
     QUndoStack m_undoStack;
 };

@@ -1,6 +1,8 @@
 #include "artifactwriter.h"
 #include "acdwriter.h"
+#include "architecturejson.h"
 #include "atomicnodesjson.h"
+#include "ccdwriter.h"
 #include "launchdependenciesjson.h"
 
 #include <QDir>
@@ -45,24 +47,43 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
         *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
         return false;
     }
+    if (withLaunch && !out.mkpath(QStringLiteral("ccd"))) {
+        *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("ccd")));
+        return false;
+    }
     // Diagrams of an earlier run would otherwise linger beside the new ones.
     QDir acd(out.filePath(QStringLiteral("acd")));
-    for (const QString &old : acd.entryList({QStringLiteral("*.puml")}, QDir::Files))
-        acd.remove(old);
+    QDir ccd(out.filePath(QStringLiteral("ccd")));
+    for (QDir *d : {&acd, &ccd})
+        for (const QString &old : d->entryList({QStringLiteral("*.puml")}, QDir::Files))
+            d->remove(old);
     if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes), written, error))
         return false;
     if (withLaunch && !writeFile(out.filePath(QStringLiteral("launch_dependencies.json")),
                                  LaunchDependenciesJson::write(recovery.launch), written, error))
         return false;
     QList<Diagnostic> diagnostics = nodes.diagnostics;
-    if (withLaunch)
+    if (withLaunch) {
         diagnostics.append(recovery.launch.diagnostics);
+        diagnostics.append(recovery.architecture.diagnostics);
+    }
     if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")), DiagnosticsJson::write(diagnostics), written, error))
         return false;
     const QMap<QString, QString> stems = AcdWriter::fileStems(nodes);
     for (const AtomicNode &n : nodes.nodes) {
         const QString path = acd.filePath(stems.value(n.id) + QStringLiteral(".puml"));
         if (!writeFile(path, AcdWriter::write(n).toUtf8(), written, error))
+            return false;
+    }
+    if (!withLaunch)
+        return true;
+    const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
+    if (!writeFile(out.filePath(QStringLiteral("architecture.json")),
+                   ArchitectureJson::write(recovery.architecture, ccdStems), written, error))
+        return false;
+    for (const Composite *c : recovery.architecture.representatives()) {
+        const QString path = ccd.filePath(ccdStems.value(c->instanceId) + QStringLiteral(".puml"));
+        if (!writeFile(path, CcdWriter::write(*c).toUtf8(), written, error))
             return false;
     }
     return true;

@@ -9,7 +9,8 @@
 namespace rosarch {
 
 /// Writes a run's artifacts into one folder with the fixed layout:
-/// atomic_nodes.json, launch_dependencies.json, diagnostics.json, acd/<ClassName>.puml.
+/// atomic_nodes.json, launch_dependencies.json, architecture.json, diagnostics.json,
+/// acd/<ClassName>.puml, ccd/<launch stem>.puml.
 class ArtifactWriter
 {
 public:

@@ -46,6 +46,8 @@ Json portJson(const Port &p)
         j["guard"] = utf8(p.guard);
     if (!p.guardParameter.isEmpty())
         j["guard_parameter"] = utf8(p.guardParameter);
+    if (!p.guardDefault.isEmpty())
+        j["guard_default"] = utf8(p.guardDefault);
     if (!p.via.isEmpty())
         j["via"] = utf8(p.via);
     if (p.inherited)
@@ -102,6 +104,7 @@ bool readPort(const Json &j, Port *p, QString *error)
     p->parameter = q(j, "parameter");
     p->guard = q(j, "guard");
     p->guardParameter = q(j, "guard_parameter");
+    p->guardDefault = q(j, "guard_default");
     p->via = q(j, "via");
     p->inherited = j.value("inherited", false);
     if (j.contains("evidence"))

@@ -268,6 +268,8 @@ Port CppNodeLinker::makePort(const CppPortCall &call, const Context &ctx) const
     }
     port.guard = call.guard;
     port.guardParameter = guardParameter(call.guardValue, ctx);
+    if (!port.guardParameter.isEmpty())
+        port.guardDefault = parameterDefault(port.guardParameter, ctx, 0);
     port.evidence = call.evidence;
     return port;
 }

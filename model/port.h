@@ -38,6 +38,7 @@ struct Port
     QString parameter;      ///< the parameter the name comes from (NameOrigin::Parameter)
     QString guard;          ///< condition under which the port exists, as written ("" = always)
     QString guardParameter; ///< the parameter the guard depends on, when known
+    QString guardDefault;   ///< that parameter's declared default, when known
     QString via;            ///< helper class through which the port is created ("" = the node)
     bool inherited = false; ///< declared in a project base class
     Evidence evidence;

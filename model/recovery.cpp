@@ -1,4 +1,6 @@
 #include "recovery.h"
+#include "architecturechecks.h"
+#include "composer.h"
 #include "nodeanalyzer.h"
 #include "workspacescanner.h"
 
@@ -14,7 +16,19 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options, con
         return r;
     }
     r.launch = LaunchAnalyzer::run(ws, r.nodes, options, control);
+    if (r.launch.canceled || control.isCanceled())
+        return r;
+    r.architecture = composeArchitecture(r.nodes, r.launch, control);
     return r;
+}
+
+Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                                 const StageControl &control)
+{
+    Architecture arch = Composer::run(nodes, launch, control);
+    if (!arch.canceled)
+        arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
+    return arch;
 }
 
 LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,

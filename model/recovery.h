@@ -1,6 +1,7 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "composition.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
 #include "stagecontrol.h"
@@ -14,9 +15,14 @@ struct Recovery
 {
     AtomicNodeList nodes;      ///< stage 1
     LaunchDependencies launch; ///< stage 2
+    Architecture architecture; ///< stage 3
 };
 
-/// Runs stages 1 and 2 on `root` (one scan, shared).
+/// Stage 3: the composites of every launch-file instance plus the architecture checks.
+Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                                 const StageControl &control = {});
+
+/// Runs stages 1, 2 and 3 on `root` (one scan, shared).
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
                           const StageControl &control = {});
 

@@ -3,6 +3,8 @@
 // workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
 #include "acdwriter.h"
+#include "architecturejson.h"
+#include "ccdwriter.h"
 #include "atomicnodesjson.h"
 #include "launchdependenciesjson.h"
 #include "nodeanalyzer.h"
@@ -47,6 +49,17 @@ private:
     }
 
 private Q_SLOTS:
+    static void compareDiagrams(const QMap<QString, QByteArray> &produced, const QString &expectedDir)
+    {
+        const QDir dir(expectedDir);
+        if (!dir.exists())
+            return;
+        for (auto it = produced.cbegin(); it != produced.cend(); ++it)
+            compareOrUpdate(it.value(), dir.filePath(it.key()));
+        if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED"))
+            QCOMPARE(produced.keys(), dir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name));
+    }
+
     void recovery_data()
     {
         QTest::addColumn<QString>("caseDir");
@@ -75,22 +88,21 @@ private Q_SLOTS:
         if (QFileInfo::exists(launchExpected))
             compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
 
-        // Expected ACDs, when the case has them, must match file by file.
-        const QDir acdDir(QDir(caseDir).filePath(QStringLiteral("expected/acd")));
-        if (!acdDir.exists())
-            return;
+        const QString archExpected = QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
+        const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
+        if (QFileInfo::exists(archExpected))
+            compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems), archExpected);
+
+        // Expected ACDs and CCDs, when the case has them, must match file by file.
+        QMap<QString, QByteArray> acds;
         const QMap<QString, QString> stems = AcdWriter::fileStems(list);
-        QStringList produced;
-        for (const AtomicNode &n : list.nodes) {
-            const QString name = stems.value(n.id) + QStringLiteral(".puml");
-            produced << name;
-            compareOrUpdate(AcdWriter::write(n).toUtf8(), acdDir.filePath(name));
-        }
-        if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED")) {
-            QStringList expected = acdDir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name);
-            produced.sort();
-            QCOMPARE(produced, expected);
-        }
+        for (const AtomicNode &n : list.nodes)
+            acds.insert(stems.value(n.id) + QStringLiteral(".puml"), AcdWriter::write(n).toUtf8());
+        compareDiagrams(acds, QDir(caseDir).filePath(QStringLiteral("expected/acd")));
+        QMap<QString, QByteArray> ccds;
+        for (const Composite *c : recovery.architecture.representatives())
+            ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"), CcdWriter::write(*c).toUtf8());
+        compareDiagrams(ccds, QDir(caseDir).filePath(QStringLiteral("expected/ccd")));
     }
 
     void outputIsDeterministic()

@@ -1,0 +1,108 @@
+#include "architecturejson.h"
+#include "evidencejson.h"
+#include "jsonsupport.h"
+
+namespace rosarch {
+
+using Json = nlohmann::ordered_json;
+using JsonSupport::utf8;
+
+namespace {
+
+Json portJson(const PartPort &p)
+{
+    Json j;
+    j["id"] = utf8(p.id);
+    j["kind"] = utf8(portKindName(p.kind));
+    j["name"] = utf8(p.name);
+    if (!p.nameAsWritten.isEmpty())
+        j["name_as_written"] = utf8(p.nameAsWritten);
+    j["type"] = utf8(p.type);
+    if (!p.resolved)
+        j["unresolved"] = true;
+    if (p.parameterDerived)
+        j["parameter_derived"] = true;
+    if (p.remapped)
+        j["remapped"] = true;
+    if (!p.guard.isEmpty()) {
+        j["guard"] = utf8(p.guard);
+        j["active"] = p.active;
+    }
+    if (p.evidence.isValid())
+        j["evidence"] = EvidenceJson::toJson(p.evidence);
+    return j;
+}
+
+Json partJson(const RosNodePart &part)
+{
+    Json j;
+    j["id"] = utf8(part.id);
+    j["kind"] = part.kind == RosNodePart::Kind::Node ? "node" : "launch";
+    j["instance"] = utf8(part.instanceId);
+    if (!part.name.isEmpty())
+        j["name"] = utf8(part.name);
+    j["type"] = utf8(part.typeName);
+    j["type_id"] = utf8(part.typeId);
+    j["namespace"] = utf8(part.nameSpace);
+    j["active"] = part.active;
+    if (part.external)
+        j["external"] = true;
+    if (!part.typed)
+        j["typed"] = false;
+    Json ports = Json::array();
+    for (const PartPort &p : part.ports)
+        ports.push_back(portJson(p));
+    j["ports"] = ports;
+    if (part.evidence.isValid())
+        j["evidence"] = EvidenceJson::toJson(part.evidence);
+    return j;
+}
+
+Json compositeJson(const Composite &c, const QString &ccd)
+{
+    Json j;
+    j["id"] = utf8(c.instanceId);
+    j["launch_file"] = utf8(c.file);
+    j["stem"] = utf8(c.stem);
+    j["package"] = utf8(c.package);
+    j["parent"] = utf8(c.parentId);
+    if (!ccd.isEmpty())
+        j["ccd"] = utf8(ccd);
+    Json parts = Json::array();
+    for (const RosNodePart &p : c.parts)
+        parts.push_back(partJson(p));
+    j["parts"] = parts;
+    Json channels = Json::array();
+    for (const Channel &ch : c.channels)
+        channels.push_back({{"id", utf8(ch.id)}, {"kind", utf8(channelKindName(ch.kind))},
+                            {"name", utf8(ch.name)}, {"type", utf8(ch.type)}});
+    j["channels"] = channels;
+    Json boundary = Json::array();
+    for (const BoundaryPort &b : c.boundary)
+        boundary.push_back({{"id", utf8(b.id)}, {"direction", b.isInput() ? "in" : "out"},
+                            {"kind", utf8(portKindName(b.kind))}, {"name", utf8(b.name)},
+                            {"type", utf8(b.type)}});
+    j["boundary_ports"] = boundary;
+    Json connections = Json::array();
+    for (const Connection &k : c.connections)
+        connections.push_back({{"kind", utf8(connectionKindName(k.kind))}, {"part", utf8(k.partId)},
+                               {"port", utf8(k.portId)}, {"target", utf8(k.targetId)}});
+    j["connections"] = connections;
+    return j;
+}
+
+} // namespace
+
+QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString, QString> &ccdStems)
+{
+    Json root;
+    Json list = Json::array();
+    for (const Composite &c : arch.composites) {
+        const QString stem = ccdStems.value(c.instanceId);
+        list.push_back(compositeJson(c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem)));
+    }
+    root["list_composed_ros_node_classifiers"] = list;
+    return QByteArray::fromStdString(root.dump(2)) + '\n';
+}
+
+} // namespace rosarch

@@ -1,0 +1,172 @@
+#include "ccdwriter.h"
+
+#include <QHash>
+#include <QSet>
+
+namespace rosarch {
+
+namespace {
+
+QString label(QString text)
+{
+    text.replace(QLatin1Char('"'), QLatin1Char('\''));
+    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+    return text;
+}
+
+QString umlType(const QString &type)
+{
+    return type.isEmpty() ? QStringLiteral("?") : QString(type).replace(QLatin1Char('/'), QLatin1String("::"));
+}
+
+bool isInput(PortKind k)
+{
+    return k == PortKind::Subscriber || k == PortKind::ServiceServer || k == PortKind::ActionServer;
+}
+
+QString safe(const QString &text)
+{
+    QString s;
+    for (const QChar c : text)
+        s += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
+    return s;
+}
+
+QString arrow(Connection::Kind kind)
+{
+    switch (kind) {
+    case Connection::Kind::Publish:
+    case Connection::Kind::DelegationOut: return QStringLiteral("--[#Green,bold]-->");
+    case Connection::Kind::Subscribe:
+    case Connection::Kind::DelegationIn: return QStringLiteral("--[#Blue,bold]-->");
+    case Connection::Kind::Client: return QStringLiteral("--[#Red,bold]-->");
+    case Connection::Kind::Server: return QStringLiteral("--[#Purple,bold]-->");
+    }
+    return {};
+}
+
+QString namespaceLabel(const QString &ns)
+{
+    QString n = ns;
+    while (n.startsWith(QLatin1Char('/')))
+        n.remove(0, 1);
+    return n;
+}
+
+QString partBlock(const RosNodePart &part, const QString &indent)
+{
+    QString out;
+    const QString caption = part.kind == RosNodePart::Kind::Launch
+                                ? QStringLiteral(":%1").arg(label(part.typeName))
+                                : QStringLiteral("%1:\\n%2").arg(label(part.name), label(part.typeName));
+    QStringList ports;
+    for (const PartPort &p : part.ports) {
+        if (!p.active)
+            continue;
+        QString line = QStringLiteral("%1  %2 \"%3\" as %4_%3").arg(indent, isInput(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"), p.id, part.id);
+        if (!p.resolved)
+            line += QStringLiteral(" ' name unresolved: %1").arg(label(p.name));
+        ports << line;
+    }
+    out += QStringLiteral("%1component \"%2\" as %3 <<RosNodePart>>").arg(indent, caption, part.id);
+    if (ports.isEmpty())
+        return out + QLatin1Char('\n');
+    out += QStringLiteral(" {\n") + ports.join(QLatin1Char('\n')) + QLatin1Char('\n') + indent + QStringLiteral("}\n");
+    return out;
+}
+
+} // namespace
+
+QString CcdWriter::write(const Composite &c)
+{
+    const QString top = safe(c.stem);
+    QString out = QStringLiteral("@startuml\n");
+    out += QStringLiteral("' launch file %1 (%2)\n").arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
+    out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n").arg(label(c.stem), top);
+    for (const BoundaryPort &b : c.boundary)
+        out += QStringLiteral("  %1 \"%2 / %3\" as b_%2  ' %4\n")
+                   .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id, umlType(b.type), label(b.name));
+
+    // Parts grouped by namespace, namespaces in order of first appearance; the root's parts
+    // sit directly in the composite.
+    QStringList namespaces;
+    QHash<QString, QList<const RosNodePart *>> byNamespace;
+    for (const RosNodePart &part : c.parts) {
+        if (!part.active)
+            continue;
+        const QString ns = namespaceLabel(part.nameSpace);
+        if (!byNamespace.contains(ns))
+            namespaces.append(ns);
+        byNamespace[ns].append(&part);
+    }
+    QSet<QString> nsAliases;
+    for (const QString &ns : std::as_const(namespaces)) {
+        const bool scoped = !ns.isEmpty();
+        const QString indent = scoped ? QStringLiteral("    ") : QStringLiteral("  ");
+        if (scoped) {
+            QString alias = QStringLiteral("ns_") + safe(ns);
+            for (int n = 2; nsAliases.contains(alias); ++n)
+                alias = QStringLiteral("ns_%1_%2").arg(safe(ns)).arg(n);
+            nsAliases.insert(alias);
+            out += QStringLiteral("  package \"%1\" as %2 <<namespace>> {\n").arg(label(ns), alias);
+        }
+        for (const RosNodePart *part : byNamespace.value(ns))
+            out += partBlock(*part, indent);
+        if (scoped)
+            out += QStringLiteral("  }\n");
+    }
+    for (const Channel &ch : c.channels) {
+        switch (ch.kind) {
+        case Channel::Kind::Topic:
+            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            break;
+        case Channel::Kind::Service:
+            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            break;
+        case Channel::Kind::Action:
+            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            break;
+        }
+    }
+    for (const Connection &k : c.connections) {
+        const QString port = QStringLiteral("%1_%2").arg(k.partId, k.portId);
+        switch (k.kind) {
+        case Connection::Kind::Subscribe:
+            out += QStringLiteral("  %1 %2 %3\n").arg(k.targetId, arrow(k.kind), port);
+            break;
+        case Connection::Kind::DelegationIn:
+            out += QStringLiteral("  b_%1 %2 %3\n").arg(k.targetId, arrow(k.kind), port);
+            break;
+        case Connection::Kind::DelegationOut:
+            out += QStringLiteral("  %1 %2 b_%3\n").arg(port, arrow(k.kind), k.targetId);
+            break;
+        default:
+            out += QStringLiteral("  %1 %2 %3\n").arg(port, arrow(k.kind), k.targetId);
+        }
+    }
+    out += QStringLiteral("}\n@enduml\n");
+    return out;
+}
+
+QMap<QString, QString> CcdWriter::fileStems(const Architecture &arch)
+{
+    const QList<const Composite *> reps = arch.representatives();
+    QHash<QString, int> uses;
+    for (const Composite *c : reps)
+        ++uses[c->stem];
+    QMap<QString, QString> stems;
+    QSet<QString> taken;
+    for (const Composite *c : reps) {
+        QString stem = uses.value(c->stem) > 1 && !c->package.isEmpty()
+                           ? QStringLiteral("%1__%2").arg(c->package, c->stem)
+                           : c->stem;
+        const QString base = stem;
+        for (int n = 2; taken.contains(stem); ++n)
+            stem = QStringLiteral("%1_%2").arg(base).arg(n);
+        taken.insert(stem);
+        stems.insert(c->instanceId, stem);
+    }
+    return stems;
+}
+
+} // namespace rosarch

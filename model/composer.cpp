@@ -1,0 +1,320 @@
+#include "composer.h"
+#include "rosnames.h"
+
+#include <QHash>
+#include <QSet>
+
+#include <algorithm>
+
+namespace rosarch {
+
+namespace {
+
+enum class Family { Topic, Service, Action };
+
+Family familyOf(PortKind k)
+{
+    switch (k) {
+    case PortKind::Publisher:
+    case PortKind::Subscriber: return Family::Topic;
+    case PortKind::ServiceServer:
+    case PortKind::ServiceClient: return Family::Service;
+    default: return Family::Action;
+    }
+}
+
+/// The side of a family that provides: publisher, server.
+bool isProvider(PortKind k)
+{
+    return k == PortKind::Publisher || k == PortKind::ServiceServer || k == PortKind::ActionServer;
+}
+
+QString parameterValue(const NodeInstance &instance, const QString &name, bool *found)
+{
+    for (const auto &[key, value] : instance.parameters) {
+        if (!key.isEmpty() && key == name) {
+            *found = true;
+            return value;
+        }
+    }
+    *found = false;
+    return {};
+}
+
+QString runtimeNodeName(const AtomicNode &node, const NodeInstance &instance)
+{
+    if (!instance.nodeName.isEmpty())
+        return instance.nodeName;
+    if (!node.nodeName.isEmpty())
+        return node.nodeName;
+    return instance.execName;
+}
+
+/// A PlantUML-safe alias from a name: "/robot_ns/scan" -> "robot_ns_scan".
+QString aliasOf(const QString &prefix, const QString &name, QSet<QString> *taken)
+{
+    QString s;
+    for (const QChar c : name)
+        s += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
+    while (s.startsWith(QLatin1Char('_')))
+        s.remove(0, 1);
+    while (s.contains(QLatin1String("__")))
+        s.replace(QLatin1String("__"), QLatin1String("_"));
+    QString alias = prefix + (s.isEmpty() ? QStringLiteral("root") : s);
+    const QString base = alias;
+    for (int n = 2; taken->contains(alias); ++n)
+        alias = QStringLiteral("%1_%2").arg(base).arg(n);
+    taken->insert(alias);
+    return alias;
+}
+
+struct Endpoint
+{
+    const RosNodePart *part;
+    const PartPort *port;
+};
+
+/// Binds ports with a counterpart into channels and promotes the rest to the boundary.
+void wire(Composite *c)
+{
+    QList<QPair<Family, QString>> order;
+    QHash<QString, QList<Endpoint>> groups;
+    auto keyOf = [](Family f, const QString &name) { return QString::number(int(f)) + name; };
+    for (const RosNodePart &part : c->parts) {
+        if (!part.active)
+            continue;
+        for (const PartPort &port : part.ports) {
+            if (!port.active || !port.resolved)
+                continue;
+            const Family f = familyOf(port.kind);
+            const QString key = keyOf(f, port.name);
+            if (!groups.contains(key))
+                order.append({f, port.name});
+            groups[key].append({&part, &port});
+        }
+    }
+    QSet<QString> aliases;
+    QHash<QString, QString> boundaryIds; // kind + name -> id
+    QHash<QString, int> counters;
+    for (const auto &[family, name] : order) {
+        const QList<Endpoint> &eps = groups.value(keyOf(family, name));
+        const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return isProvider(e.port->kind); });
+        const bool users = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return !isProvider(e.port->kind); });
+        if (providers && users) {
+            Channel ch;
+            ch.kind = family == Family::Topic     ? Channel::Kind::Topic
+                      : family == Family::Service ? Channel::Kind::Service
+                                                  : Channel::Kind::Action;
+            const QString prefix = family == Family::Topic ? QStringLiteral("q_")
+                                   : family == Family::Service ? QStringLiteral("c_") : QStringLiteral("a_");
+            ch.id = aliasOf(prefix, name, &aliases);
+            ch.name = name;
+            for (const Endpoint &e : eps)
+                if (ch.type.isEmpty())
+                    ch.type = e.port->type;
+            c->channels.append(ch);
+            for (bool provider : {true, false}) {
+                for (const Endpoint &e : eps) {
+                    if (isProvider(e.port->kind) != provider)
+                        continue;
+                    Connection::Kind k = family == Family::Topic
+                                             ? (provider ? Connection::Kind::Publish : Connection::Kind::Subscribe)
+                                             : (provider ? Connection::Kind::Server : Connection::Kind::Client);
+                    c->connections.append({k, e.part->id, e.port->id, ch.id});
+                }
+            }
+            continue;
+        }
+        for (const Endpoint &e : eps) {
+            const QString bkey = portKindName(e.port->kind) + QLatin1Char(' ') + name;
+            QString id = boundaryIds.value(bkey);
+            if (id.isEmpty()) {
+                const QString prefix = portIdPrefix(e.port->kind);
+                id = prefix + QString::number(++counters[prefix]);
+                boundaryIds.insert(bkey, id);
+                c->boundary.append({id, e.port->kind, name, e.port->type});
+            }
+            const bool in = c->boundaryPort(id)->isInput();
+            c->connections.append({in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut,
+                                   e.part->id, e.port->id, id});
+        }
+    }
+}
+
+QString namespaceOfInclude(const LaunchFileInstance &parent, const QString &childId)
+{
+    for (auto it = parent.namespaces.cbegin(); it != parent.namespaces.cend(); ++it)
+        if (it.value().contains(childId))
+            return it.key();
+    return QStringLiteral("/");
+}
+
+bool evidenceBefore(const Evidence &a, const Evidence &b)
+{
+    return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+}
+
+} // namespace
+
+QString launchStem(const QString &fileName)
+{
+    QString stem = fileName.section(QLatin1Char('/'), -1);
+    for (const char *suffix : {".launch.py", ".launch.xml", ".launch.yaml", ".launch.yml", "_launch.py",
+                               "_launch.xml", "_launch.yaml", ".py", ".xml", ".yaml", ".yml", ".launch"}) {
+        if (stem.endsWith(QLatin1String(suffix)) && stem.size() > int(qstrlen(suffix))) {
+            stem.chop(int(qstrlen(suffix)));
+            break;
+        }
+    }
+    return stem;
+}
+
+QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstance &instance,
+                                       const NodeInstance *container, QList<int> *rulesUsed)
+{
+    QList<QPair<QString, QString>> rules = instance.remaps;
+    if (container && container != &instance)
+        rules += container->remaps; // process-wide rules of the container reach its components
+    const QString nodeName = runtimeNodeName(node, instance);
+    QList<PartPort> out;
+    for (const Port &p : node.ports) {
+        PartPort pp;
+        pp.id = p.id;
+        pp.kind = p.kind;
+        pp.nameAsWritten = p.name;
+        pp.type = p.type;
+        pp.guard = p.guard;
+        pp.evidence = p.evidence;
+        pp.resolved = p.isResolved();
+        QString base = p.name;
+        if (p.nameOrigin == NameOrigin::Parameter) {
+            pp.parameterDerived = true;
+            bool set = false;
+            const QString v = parameterValue(instance, p.parameter, &set);
+            if (set && !v.isEmpty())
+                base = v;
+        }
+        if (pp.resolved) {
+            int used = -1;
+            pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);
+            pp.remapped = used >= 0;
+            if (used >= 0 && rulesUsed)
+                rulesUsed->append(used);
+        } else {
+            pp.name = base;
+        }
+        if (!p.guard.isEmpty() && !p.guardParameter.isEmpty()) {
+            bool set = false;
+            QString v = parameterValue(instance, p.guardParameter, &set);
+            if (!set)
+                v = p.guardDefault;
+            bool known = false;
+            const bool holds = RosNames::evaluateGuard(p.guard, v, &known);
+            pp.active = !known || holds;
+        }
+        out.append(pp);
+    }
+    return out;
+}
+
+Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                           const StageControl &control)
+{
+    Architecture arch;
+    QHash<QString, const AtomicNode *> classes;
+    for (const AtomicNode &n : nodes.nodes)
+        classes.insert(n.id, &n);
+    QHash<QString, const NodeInstance *> instances;
+    QHash<QString, const NodeInstance *> byName; // containers referred to by name
+    for (const NodeInstance &n : launch.nodes) {
+        instances.insert(n.id, &n);
+        byName.insert(RosNames::fullyQualified(n.nameSpace, n.nodeName), &n);
+        byName.insert(n.nodeName, &n);
+    }
+
+    QHash<QString, Composite> built;
+    const int total = int(launch.instances.size());
+    for (int i = total - 1; i >= 0; --i) { // children come after their parent: build them first
+        if (control.isCanceled()) {
+            arch.canceled = true;
+            return arch;
+        }
+        const LaunchFileInstance &lf = launch.instances.at(i);
+        Composite c;
+        c.instanceId = lf.id;
+        c.stem = launchStem(lf.type);
+        c.file = lf.file;
+        c.package = lf.package;
+        c.parentId = lf.parentId;
+
+        struct Entry { bool node; QString id; Evidence evidence; };
+        QList<Entry> entries;
+        for (const QString &id : lf.nodes)
+            if (const NodeInstance *n = instances.value(id))
+                entries.append({true, id, n->evidence});
+        for (const QString &id : lf.includedLaunchFiles)
+            if (const LaunchFileInstance *child = launch.instance(id))
+                entries.append({false, id, child->evidence});
+        std::stable_sort(entries.begin(), entries.end(), [&](const Entry &a, const Entry &b) {
+            const bool aHere = a.evidence.file == lf.file, bHere = b.evidence.file == lf.file;
+            if (aHere != bHere)
+                return aHere;
+            return evidenceBefore(a.evidence, b.evidence);
+        });
+
+        for (const Entry &e : entries) {
+            RosNodePart part;
+            part.id = QStringLiteral("part%1").arg(c.parts.size() + 1);
+            part.instanceId = e.id;
+            part.evidence = e.evidence;
+            if (e.node) {
+                const NodeInstance &n = *instances.value(e.id);
+                const AtomicNode *cls = classes.value(n.classId);
+                part.kind = RosNodePart::Kind::Node;
+                part.typeName = !n.className.isEmpty() ? n.className : n.execName;
+                part.typeId = n.classId;
+                part.nameSpace = n.nameSpace.isEmpty() ? QStringLiteral("/") : n.nameSpace;
+                part.active = n.active && lf.active;
+                part.typed = cls != nullptr;
+                if (cls) {
+                    part.name = runtimeNodeName(*cls, n);
+                    const NodeInstance *container = nullptr;
+                    if (!n.container.isEmpty())
+                        container = instances.value(n.container, byName.value(n.container));
+                    part.ports = resolvePorts(*cls, n, container);
+                } else {
+                    part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;
+                }
+            } else {
+                const LaunchFileInstance &child = *launch.instance(e.id);
+                part.kind = RosNodePart::Kind::Launch;
+                part.typeName = launchStem(child.type);
+                part.typeId = child.id;
+                part.nameSpace = namespaceOfInclude(lf, child.id);
+                part.active = child.active && lf.active;
+                part.external = child.external;
+                part.typed = !child.external;
+                const auto it = built.constFind(child.id);
+                if (it != built.constEnd()) {
+                    for (const BoundaryPort &b : it->boundary) {
+                        PartPort pp;
+                        pp.id = b.id;
+                        pp.kind = b.kind;
+                        pp.name = b.name;
+                        pp.type = b.type;
+                        part.ports.append(pp);
+                    }
+                }
+            }
+            c.parts.append(part);
+        }
+        wire(&c);
+        built.insert(lf.id, c);
+        control.report(total - i, total, lf.type);
+    }
+    for (const LaunchFileInstance &lf : launch.instances)
+        arch.composites.append(built.take(lf.id));
+    return arch;
+}
+
+} // namespace rosarch

@@ -1,0 +1,82 @@
+#include "composition.h"
+
+namespace rosarch {
+
+namespace {
+template<typename T>
+const T *findById(const QList<T> &list, const QString &id)
+{
+    for (const T &item : list)
+        if (item.id == id)
+            return &item;
+    return nullptr;
+}
+} // namespace
+
+bool BoundaryPort::isInput() const
+{
+    return kind == PortKind::Subscriber || kind == PortKind::ServiceServer
+           || kind == PortKind::ActionServer;
+}
+
+const RosNodePart *Composite::part(const QString &id) const
+{
+    return findById(parts, id);
+}
+
+const Channel *Composite::channel(const QString &id) const
+{
+    return findById(channels, id);
+}
+
+const BoundaryPort *Composite::boundaryPort(const QString &id) const
+{
+    return findById(boundary, id);
+}
+
+const Composite *Architecture::composite(const QString &instanceId) const
+{
+    for (const Composite &c : composites)
+        if (c.instanceId == instanceId)
+            return &c;
+    return nullptr;
+}
+
+QList<const Composite *> Architecture::representatives() const
+{
+    QList<const Composite *> out;
+    QStringList seen;
+    for (const Composite &c : composites) {
+        const QString key = c.file.isEmpty() ? c.stem : c.file;
+        if (seen.contains(key))
+            continue;
+        seen.append(key);
+        out.append(&c);
+    }
+    return out;
+}
+
+QString connectionKindName(Connection::Kind kind)
+{
+    switch (kind) {
+    case Connection::Kind::Publish: return QStringLiteral("publish");
+    case Connection::Kind::Subscribe: return QStringLiteral("subscribe");
+    case Connection::Kind::Client: return QStringLiteral("client");
+    case Connection::Kind::Server: return QStringLiteral("server");
+    case Connection::Kind::DelegationIn: return QStringLiteral("delegation_in");
+    case Connection::Kind::DelegationOut: return QStringLiteral("delegation_out");
+    }
+    return {};
+}
+
+QString channelKindName(Channel::Kind kind)
+{
+    switch (kind) {
+    case Channel::Kind::Topic: return QStringLiteral("topic");
+    case Channel::Kind::Service: return QStringLiteral("service");
+    case Channel::Kind::Action: return QStringLiteral("action");
+    }
+    return {};
+}
+
+} // namespace rosarch

@@ -1,0 +1,92 @@
+#include "rosnames.h"
+
+#include <QRegularExpression>
+
+namespace rosarch::RosNames {
+
+namespace {
+QString trimmedNamespace(QString ns)
+{
+    ns = ns.trimmed();
+    while (ns.endsWith(QLatin1Char('/')))
+        ns.chop(1);
+    if (!ns.isEmpty() && !ns.startsWith(QLatin1Char('/')))
+        ns.prepend(QLatin1Char('/'));
+    return ns;
+}
+} // namespace
+
+QString fullyQualified(const QString &nameSpace, const QString &nodeName)
+{
+    return trimmedNamespace(nameSpace) + QLatin1Char('/') + nodeName;
+}
+
+QString expand(const QString &name, const QString &nameSpace, const QString &nodeName)
+{
+    const QString n = name.trimmed();
+    if (n.startsWith(QLatin1Char('/')))
+        return n;
+    if (n == QLatin1String("~"))
+        return fullyQualified(nameSpace, nodeName);
+    if (n.startsWith(QLatin1String("~/")))
+        return fullyQualified(nameSpace, nodeName) + n.mid(1);
+    return trimmedNamespace(nameSpace) + QLatin1Char('/') + n;
+}
+
+bool isNameRule(const QString &from)
+{
+    const QString f = from.trimmed();
+    return !f.isEmpty() && f != QLatin1String("__node") && f != QLatin1String("__name")
+           && f != QLatin1String("__ns") && !f.contains(QLatin1Char(':'));
+}
+
+QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
+              const QString &nameSpace, const QString &nodeName, int *ruleUsed)
+{
+    const QString expanded = expand(name, nameSpace, nodeName);
+    for (qsizetype i = 0; i < rules.size(); ++i) {
+        const auto &[from, to] = rules.at(i);
+        if (!isNameRule(from) || to.trimmed().isEmpty())
+            continue;
+        if (expand(from, nameSpace, nodeName) == expanded) {
+            if (ruleUsed)
+                *ruleUsed = int(i);
+            return expand(to, nameSpace, nodeName);
+        }
+    }
+    if (ruleUsed)
+        *ruleUsed = -1;
+    return expanded;
+}
+
+bool truthy(const QString &value, bool *known)
+{
+    const QString v = value.trimmed().toLower();
+    *known = true;
+    if (v == QLatin1String("true") || v == QLatin1String("1"))
+        return true;
+    if (v == QLatin1String("false") || v == QLatin1String("0"))
+        return false;
+    *known = false;
+    return true;
+}
+
+bool evaluateGuard(const QString &guard, const QString &parameterValue, bool *known)
+{
+    static const QRegularExpression single(QStringLiteral(
+        R"(^\s*(!|not\s+)?\s*(?:this->|self\.)?[A-Za-z_][A-Za-z0-9_]*\s*(?:==\s*(true|false|True|False))?\s*$)"));
+    const auto m = single.match(guard);
+    if (!m.hasMatch()) {
+        *known = false;
+        return true;
+    }
+    bool value = truthy(parameterValue, known);
+    if (!*known)
+        return true;
+    const QString compared = m.captured(2).toLower();
+    if (compared == QLatin1String("false"))
+        value = !value;
+    return m.captured(1).isEmpty() ? value : !value;
+}
+
+} // namespace rosarch::RosNames

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <QList>
+#include <QPair>
+#include <QString>
+
+namespace rosarch::RosNames {
+
+/// The fully qualified node name: "/ns/node" ("/node" at the root).
+QString fullyQualified(const QString &nameSpace, const QString &nodeName);
+
+/// Expands a topic or service name as ROS 2 does for a node: absolute names stay, relative
+/// names get the namespace, private names ("~", "~/x") get the node's fully qualified name.
+QString expand(const QString &name, const QString &nameSpace, const QString &nodeName);
+
+/// Applies the first remapping rule whose `from` expands to the same name as `name`; returns
+/// the expanded result and the index of the rule used (-1 when none matched). Rules for the
+/// node's own name or namespace (`__node`, `__ns`) and rules for another node ("n:from") are skipped.
+QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
+              const QString &nameSpace, const QString &nodeName, int *ruleUsed = nullptr);
+
+/// True when a remapping rule applies to topic and service names (not `__node`/`__ns`).
+bool isNameRule(const QString &from);
+
+/// A parameter value read as a boolean, as rclcpp/rclpy would: true/True/1 and false/False/0.
+/// Returns false in `*known` when the value is not a boolean literal.
+bool truthy(const QString &value, bool *known);
+
+/// Evaluates a port guard as written ("use_x", "!use_x", "this->use_x_", "not self.use_x")
+/// given the value of the parameter behind it; `*known` is false when the guard is more than
+/// a single (possibly negated) variable, or the value is not a boolean.
+bool evaluateGuard(const QString &guard, const QString &parameterValue, bool *known);
+
+} // namespace rosarch::RosNames
