@@ -148,7 +148,8 @@ private:
     QSet<QString> m_seen;
 };
 
-/// A remap rule is reported when no instance carrying it has a port it renames.
+/// A remap rule is reported when no instance carrying it has a port it renames; the
+/// evidence is the first node the rule applies to.
 void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch, QList<Diagnostic> *out)
 {
     struct Rule { QString text; Evidence evidence; bool used = false; bool decidable = true; };
@@ -166,7 +167,8 @@ void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch, 
             const auto &[from, to] = n.remaps.at(i);
             if (!RosNames::isNameRule(from))
                 continue;
-            const QString key = n.launchFileId + QLatin1Char('\n') + from + QLatin1Char('\n') + to;
+            // A scoped SetRemap reaches nodes of several files: the rule is judged as a whole.
+            const QString key = from + QLatin1Char('\n') + to;
             int at = index.value(key, -1);
             if (at < 0) {
                 at = int(rules.size());
