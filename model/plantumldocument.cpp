@@ -1,0 +1,87 @@
+#include "plantumldocument.h"
+#include "umlnames.h"
+
+namespace rosarch {
+
+PlantUmlDocument::PlantUmlDocument(const PlantUmlSyntax &syntax, UmlDiagram *diagram)
+    : m_syntax(syntax), m_diagram(diagram)
+{
+    for (const PlantUmlDeclaration &d : syntax.declarations) {
+        QStringList canonical;
+        for (const QString &written : d.stereotypes) {
+            QString why;
+            const QString s = UmlNames::stereotype(written, &why);
+            if (!why.isEmpty())
+                note(d.line, why);
+            if (!s.isEmpty())
+                canonical << s;
+        }
+        m_stereotypes << canonical;
+    }
+}
+
+bool PlantUmlDocument::is(int index, const QString &stereotype) const
+{
+    return index >= 0 && index < m_stereotypes.size() &&
+           m_stereotypes.at(index).contains(stereotype);
+}
+
+int PlantUmlDocument::first(const QString &stereotype) const
+{
+    for (int i = 0; i < size(); ++i)
+        if (is(i, stereotype))
+            return i;
+    return -1;
+}
+
+bool PlantUmlDocument::isPort(int index) const
+{
+    const QString &k = at(index).keyword;
+    return k == QLatin1String("portin") || k == QLatin1String("portout") ||
+           k == QLatin1String("port");
+}
+
+int PlantUmlDocument::owner(int index) const
+{
+    for (int p = at(index).parent; p >= 0; p = at(p).parent) {
+        if (at(p).keyword == QLatin1String("component") || at(p).keyword == QLatin1String("node") ||
+            is(p, UmlNames::AtomicRosNodeClassifier) ||
+            is(p, UmlNames::ComposedRosNodeClassifier) || is(p, UmlNames::RosNodePart))
+            return p;
+    }
+    return -1;
+}
+
+bool PlantUmlDocument::encloses(int ancestor, int index) const
+{
+    for (int p = at(index).parent; p >= 0; p = at(p).parent)
+        if (p == ancestor)
+            return true;
+    return false;
+}
+
+QList<int> PlantUmlDocument::children(int index) const
+{
+    QList<int> out;
+    for (int i = 0; i < size(); ++i)
+        if (at(i).parent == index)
+            out << i;
+    return out;
+}
+
+void PlantUmlDocument::note(int line, const QString &text) const
+{
+    m_diagram->notes << QStringLiteral("line %1: %2").arg(line).arg(text);
+}
+
+void PlantUmlDocument::warn(int line, const QString &text) const
+{
+    m_diagram->warnings << QStringLiteral("line %1: %2").arg(line).arg(text);
+}
+
+void PlantUmlDocument::add(const QString &kind, const QString &value, int line) const
+{
+    m_diagram->elements << UmlElement{kind, value, line};
+}
+
+} // namespace rosarch

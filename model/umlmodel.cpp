@@ -1,0 +1,64 @@
+#include "umlmodel.h"
+#include "plantumlreader.h"
+
+#include <QDir>
+#include <QDirIterator>
+#include <QFile>
+#include <QFileInfo>
+
+namespace rosarch {
+
+bool UmlModel::load(const QString &path, UmlModel *model, QString *error)
+{
+    *model = {};
+    model->path = path;
+    const QFileInfo info(path);
+    QStringList files;
+    if (info.isDir()) {
+        QDirIterator it(path, {QStringLiteral("*.puml")}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        while (it.hasNext())
+            files << it.next();
+        files.sort(); // deterministic order: the report lists diagrams as they were read
+    } else if (info.isFile() && info.isReadable()) {
+        files << path;
+    } else {
+        if (error)
+            *error = info.exists() ? QStringLiteral("cannot read %1").arg(path)
+                                   : QStringLiteral("no such file or folder: %1").arg(path);
+        return false;
+    }
+    for (const QString &file : std::as_const(files)) {
+        QFile f(file);
+        if (!f.open(QIODevice::ReadOnly)) {
+            model->errors << QStringLiteral("%1: cannot be read").arg(file);
+            continue;
+        }
+        model->diagrams.append(PlantUmlReader::read(QString::fromUtf8(f.readAll()), file));
+    }
+    return true;
+}
+
+QList<UmlDiagram> UmlModel::ofLevel(UmlLevel level) const
+{
+    QList<UmlDiagram> out;
+    for (const UmlDiagram &d : diagrams)
+        if (d.level == level)
+            out << d;
+    return out;
+}
+
+QList<UmlDiagram> UmlModel::unparseable() const
+{
+    return ofLevel(UmlLevel::Unknown);
+}
+
+bool UmlModel::hasLevel(UmlLevel level) const
+{
+    for (const UmlDiagram &d : diagrams)
+        if (d.level == level)
+            return true;
+    return false;
+}
+
+} // namespace rosarch

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "umldiagram.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+namespace rosarch {
+
+/// All diagrams read from a folder of PlantUML files (or from one file): a reference model
+/// written by hand, or a recovered one.
+struct UmlModel
+{
+    QString path;               ///< what was loaded
+    QList<UmlDiagram> diagrams; ///< in file order (sorted paths), Unknown-level ones included
+    QStringList errors;         ///< files that could not be read
+
+    /// Reads every `*.puml` below `path` (recursively, sorted) or the single file `path`.
+    /// Returns false, with `error` set, when `path` is neither a readable file nor a folder.
+    static bool load(const QString &path, UmlModel *model, QString *error);
+    /// Diagrams of one level.
+    QList<UmlDiagram> ofLevel(UmlLevel level) const;
+    /// The diagrams that are neither an ACD nor a CCD (nothing recognisable in them).
+    QList<UmlDiagram> unparseable() const;
+    /// True when the model has diagrams of `level`.
+    bool hasLevel(UmlLevel level) const;
+};
+
+} // namespace rosarch
