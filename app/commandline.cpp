@@ -1,6 +1,8 @@
 #include "commandline.h"
 #include "artifactwriter.h"
+#include "evalcommand.h"
 #include "recovery.h"
+#include "suggestcommand.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -15,7 +17,7 @@ namespace rosarch {
 
 namespace {
 
-const char *const kCommands[] = {"recover"};
+const char *const kCommands[] = {"recover", "eval", "suggest"};
 
 QString usageText()
 {
@@ -25,10 +27,15 @@ QString usageText()
         "  rosarch [workspace]                       open the GUI (on the example workspace by default)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root <file>]\n"
         "                                            run the stages headless and write the artifacts\n"
+        "  rosarch eval --reference <dir|file> --recovered <dir|file> [--level acd|ccd] [--json]\n"
+        "                                            score recovered PlantUML diagrams against a reference\n"
+        "  rosarch suggest <workspace> --out <dir> [--llm-endpoint URL] [--llm-model NAME] [--llm-timeout S]\n"
+        "                                            write checked suggestions to suggestions.json\n"
+        "                                            (deterministic only without an endpoint)\n"
         "  rosarch --help | --version\n"
         "\n"
-        "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, diagnostics.json,\n"
-        "acd/<ClassName>.puml\n"
+        "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, architecture.json,\n"
+        "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
 }
 
@@ -109,6 +116,7 @@ int recover(const QStringList &arguments)
 
     QList<Diagnostic> diagnostics = nodes.diagnostics;
     diagnostics.append(recovery.launch.diagnostics);
+    diagnostics.append(recovery.architecture.diagnostics);
     int errors = 0;
     for (const Diagnostic &d : std::as_const(diagnostics)) {
         if (d.severity == Diagnostic::Severity::Error)
@@ -132,11 +140,12 @@ int recover(const QStringList &arguments)
             ports += int(n.ports.size());
         out << QCoreApplication::translate("rosarch::CommandLine",
                    "Recovered %1 node classes with %2 ports in %3 packages; %4 launch files, %5 launch-file "
-                   "instances, %6 node instances, %7 unresolved items; in %8 ms; %9 diagnostics (%10 errors).\n"
-                   "Wrote %11 files to %12\n")
+                   "instances, %6 node instances, %7 unresolved items, %8 composites; in %9 ms; %10 diagnostics "
+                   "(%11 errors).\nWrote %12 files to %13\n")
                    .arg(nodes.nodes.size()).arg(ports).arg(nodes.packages.size())
                    .arg(recovery.launch.launchFiles.size()).arg(recovery.launch.instances.size())
-                   .arg(recovery.launch.nodes.size()).arg(unresolvedCount(recovery.launch)).arg(elapsed)
+                   .arg(recovery.launch.nodes.size()).arg(unresolvedCount(recovery.launch))
+                   .arg(recovery.architecture.composites.size()).arg(elapsed)
                    .arg(diagnostics.size()).arg(errors).arg(written.size())
                    .arg(QDir(parser.value(outOption)).absolutePath());
     }
@@ -175,6 +184,10 @@ int CommandLine::run(const QStringList &arguments)
     }
     if (first == QLatin1String("recover"))
         return recover(arguments);
+    if (first == QLatin1String("eval"))
+        return runEval(arguments);
+    if (first == QLatin1String("suggest"))
+        return runSuggest(arguments);
     err << QCoreApplication::translate("rosarch::CommandLine", "Unknown command: %1\n\n").arg(first) << usageText();
     return UsageError;
 }

@@ -72,6 +72,18 @@ private Q_SLOTS:
         QVERIFY(acd.exists(QStringLiteral("LidarFilter.puml")));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("diagnostics.json"))));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("launch_dependencies.json"))));
+        QVERIFY(r.out.contains(QStringLiteral("4 composites")));
+
+        // Stage 3: one CCD per launch file and the architecture JSON.
+        const QDir ccd(out.filePath(QStringLiteral("ccd")));
+        QCOMPARE(ccd.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name),
+                 (QStringList{QStringLiteral("mission.puml"), QStringLiteral("navigation.puml"),
+                              QStringLiteral("robot.puml"), QStringLiteral("sensing.puml")}));
+        QVERIFY(rosarch::test::readFile(ccd.filePath(QStringLiteral("robot.puml")))
+                    .contains("component \":sensing\" as part1 <<RosNodePart>>"));
+        const QJsonObject arch = QJsonDocument::fromJson(
+            rosarch::test::readFile(out.filePath(QStringLiteral("architecture.json")))).object();
+        QVERIFY(!arch.value(QStringLiteral("list_composed_ros_node_classifiers")).toArray().isEmpty());
     }
 
     void launchArgumentsChangeTheInstances()

@@ -1,0 +1,203 @@
+#include "evalcommand.h"
+#include "commandline.h"
+#include "evaluationjson.h"
+#include "evaluator.h"
+#include "umlmodel.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+namespace rosarch {
+
+namespace {
+
+/// Gives the command's strings a translation context lupdate can see.
+struct EvalText
+{
+    Q_DECLARE_TR_FUNCTIONS(rosarch::EvalCommand)
+};
+
+QString ratio(double v)
+{
+    return QString::number(v, 'f', 3);
+}
+
+QString counts(const EvaluationScore &s)
+{
+    return QStringLiteral("%1 %2 %3").arg(s.tp, 5).arg(s.fp, 5).arg(s.fn, 5);
+}
+
+QString ratios(const EvaluationScore &s)
+{
+    return QStringLiteral("%1 %2 %3").arg(ratio(s.precision), ratio(s.recall), ratio(s.f1));
+}
+
+QString levelTitle(UmlLevel level)
+{
+    return level == UmlLevel::Acd ? EvalText::tr("ACD (AtomicClassifierDiagrams)")
+                                  : EvalText::tr("CCD (ComposedClassifierDiagrams)");
+}
+
+void printLevel(QTextStream &out, const LevelEvaluation &l, int recovered)
+{
+    int missing = 0;
+    for (const DiagramEvaluation &d : l.diagrams)
+        missing += d.missing ? 1 : 0;
+    out << "== " << levelTitle(l.level) << " ==\n";
+    out << EvalText::tr("%1 reference diagrams, %2 recovered: %3 matched, %4 missing, %5 extra\n")
+               .arg(l.diagrams.size())
+               .arg(recovered)
+               .arg(l.diagrams.size() - missing)
+               .arg(missing)
+               .arg(l.extra.size());
+    out << QStringLiteral("%1 %2 %3 %4   %5   %6\n")
+               .arg(EvalText::tr("kind"), -22)
+               .arg(EvalText::tr("TP"), 5)
+               .arg(EvalText::tr("FP"), 5)
+               .arg(EvalText::tr("FN"), 5)
+               .arg(EvalText::tr("micro P/R/F1"), -17)
+               .arg(EvalText::tr("macro P/R/F1"));
+    for (const KindSummary &k : l.kinds)
+        out << QStringLiteral("%1 %2   %3   %4\n")
+                   .arg(umlKindLabel(k.kind), -22)
+                   .arg(counts(k.micro), ratios(k.micro), ratios(k.macro));
+    out << QStringLiteral("%1 %2   %3   %4\n")
+               .arg(EvalText::tr("all kinds"), -22)
+               .arg(counts(l.micro), ratios(l.micro), ratios(l.macro));
+    out << EvalText::tr("Per diagram (P R F1 over all kinds):\n");
+    for (const DiagramEvaluation &d : l.diagrams)
+        out << QStringLiteral("  %1 %2   %3%4\n")
+                   .arg(d.name, -20)
+                   .arg(counts(d.total), ratios(d.total),
+                        d.missing ? EvalText::tr("   missing: no recovered diagram") : QString());
+    for (const UmlDiagram &d : l.extra)
+        out << EvalText::tr("  extra recovered diagram, not scored: %1 (%2)\n").arg(d.name, d.file);
+    bool header = false;
+    for (const DiagramEvaluation &d : l.diagrams) {
+        bool named = false;
+        for (const KindEvaluation &k : d.kinds) {
+            for (const auto &[list, tag, file] :
+                 {std::tuple{&k.falsePositives, "FP", d.recoveredFile},
+                  std::tuple{&k.falseNegatives, "FN", d.referenceFile}}) {
+                for (const UmlElement &e : *list) {
+                    if (!header)
+                        out << EvalText::tr("Differences (FP: recovered but not in the reference; "
+                                            "FN: in the reference "
+                                            "but not recovered):\n");
+                    if (!named)
+                        out << "  " << d.name << ":\n";
+                    header = named = true;
+                    out << QStringLiteral("    %1 %2: %3  (%4:%5)\n")
+                               .arg(QLatin1String(tag), umlKindLabel(k.kind), e.value, file)
+                               .arg(e.line);
+                }
+            }
+        }
+    }
+    out << '\n';
+}
+
+void printMessages(QTextStream &err, const UmlModel &model)
+{
+    for (const QString &e : model.errors)
+        err << EvalText::tr("error: %1\n").arg(e);
+    for (const UmlDiagram &d : model.diagrams) {
+        for (const QString &n : d.notes)
+            err << d.file << ": " << EvalText::tr("note: ") << n << '\n';
+        for (const QString &w : d.warnings)
+            err << d.file << ": " << EvalText::tr("warning: ") << w << '\n';
+    }
+}
+
+} // namespace
+
+int runEval(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        EvalText::tr("Score a recovered PlantUML model against a reference model."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("eval"), QString());
+    const QCommandLineOption referenceOption(
+        QStringLiteral("reference"),
+        EvalText::tr(
+            "The reference model: a .puml file or a folder of them (searched recursively)."),
+        QStringLiteral("dir|file"));
+    const QCommandLineOption recoveredOption(
+        QStringLiteral("recovered"),
+        EvalText::tr("The recovered model: a .puml file or a folder of them."),
+        QStringLiteral("dir|file"));
+    const QCommandLineOption levelOption(
+        QStringLiteral("level"),
+        EvalText::tr("Evaluate only ACDs or only CCDs (default: every level present)."),
+        QStringLiteral("acd|ccd"));
+    const QCommandLineOption jsonOption(QStringLiteral("json"),
+                                        EvalText::tr("Print the result as JSON."));
+    parser.addOption(referenceOption);
+    parser.addOption(recoveredOption);
+    parser.addOption(levelOption);
+    parser.addOption(jsonOption);
+    const QString usage =
+        EvalText::tr("Usage: rosarch eval --reference <dir|file> --recovered <dir|file> "
+                     "[--level acd|ccd] [--json]\n");
+    if (!parser.parse(arguments)) {
+        err << parser.errorText() << "\n\n" << usage;
+        return CommandLine::UsageError;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return CommandLine::Ok;
+    }
+    if (!parser.isSet(referenceOption) || !parser.isSet(recoveredOption) ||
+        parser.positionalArguments().size() != 1) {
+        err << EvalText::tr("eval needs --reference and --recovered, and no other arguments.\n\n")
+            << usage;
+        return CommandLine::UsageError;
+    }
+    QList<UmlLevel> levels;
+    if (parser.isSet(levelOption)) {
+        const QString l = parser.value(levelOption).toLower();
+        if (l != QLatin1String("acd") && l != QLatin1String("ccd")) {
+            err << EvalText::tr("--level expects acd or ccd, got '%1'.\n")
+                       .arg(parser.value(levelOption));
+            return CommandLine::UsageError;
+        }
+        levels << (l == QLatin1String("acd") ? UmlLevel::Acd : UmlLevel::Ccd);
+    }
+    UmlModel reference, recovered;
+    QString error;
+    if (!UmlModel::load(parser.value(referenceOption), &reference, &error) ||
+        !UmlModel::load(parser.value(recoveredOption), &recovered, &error)) {
+        err << EvalText::tr("eval: %1\n").arg(error);
+        return CommandLine::UsageError;
+    }
+    if (levels.isEmpty())
+        for (UmlLevel l : {UmlLevel::Acd, UmlLevel::Ccd})
+            if (reference.hasLevel(l) || recovered.hasLevel(l))
+                levels << l;
+    const Evaluation evaluation =
+        Evaluator::evaluate(reference.diagrams, recovered.diagrams, levels);
+    const bool json = parser.isSet(jsonOption);
+    if (json) {
+        out << QString::fromUtf8(EvaluationJson::write(evaluation, reference, recovered));
+    } else {
+        printMessages(err, reference);
+        printMessages(err, recovered);
+        if (levels.isEmpty())
+            out << EvalText::tr("Nothing to evaluate: no ACD or CCD found in either input.\n");
+        for (const LevelEvaluation &l : evaluation.levels)
+            printLevel(out, l, int(recovered.ofLevel(l.level).size()));
+    }
+    const QList<UmlDiagram> bad = reference.unparseable() + recovered.unparseable();
+    if (!bad.isEmpty() || !reference.errors.isEmpty() || !recovered.errors.isEmpty()) {
+        for (const UmlDiagram &d : bad)
+            err << EvalText::tr("eval: %1 is neither an ACD nor a CCD\n").arg(d.file);
+        return CommandLine::AnalysisErrors;
+    }
+    return CommandLine::Ok;
+}
+
+} // namespace rosarch

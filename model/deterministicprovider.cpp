@@ -1,0 +1,247 @@
+#include "deterministicprovider.h"
+#include "subsystemgrouper.h"
+
+#include <QRegularExpression>
+#include <QSet>
+
+namespace rosarch {
+
+namespace {
+
+/// The first paragraph of a doc text as one line, shortened to its first sentence when long.
+QString summary(const QStringList &text)
+{
+    QStringList paragraph;
+    for (const QString &l : text) {
+        if (l.trimmed().isEmpty()) {
+            if (!paragraph.isEmpty())
+                break;
+            continue;
+        }
+        paragraph << l.trimmed();
+    }
+    QString s = paragraph.join(QLatin1Char(' ')).simplified();
+    if (s.size() > 200) {
+        const qsizetype dot = s.indexOf(QLatin1String(". "));
+        s = dot > 0 && dot < 200 ? s.left(dot + 1) : s.left(197) + QStringLiteral("...");
+    }
+    return s;
+}
+
+bool looksLikeLicense(const QStringList &text)
+{
+    const QString all = text.join(QLatin1Char(' '));
+    return all.contains(QLatin1String("Copyright")) || all.contains(QLatin1String("License")) ||
+           all.contains(QLatin1String("SPDX"));
+}
+
+/// A Python string literal (docstring) starting on line `at` (0-based).
+bool pythonDocstring(const QStringList &lines, int at, QStringList *text, int *last)
+{
+    if (at < 0 || at >= lines.size())
+        return false;
+    QString t = lines[at].trimmed();
+    if (t.size() > 1 && QStringLiteral("rRuUbB").contains(t.at(0)) && (t.at(1) == QLatin1Char('"') || t.at(1) == QLatin1Char('\'')))
+        t = t.mid(1);
+    for (const QString &delim : {QStringLiteral("\"\"\""), QStringLiteral("'''"), QStringLiteral("\""), QStringLiteral("'")}) {
+        if (!t.startsWith(delim))
+            continue;
+        QString rest = t.mid(delim.size());
+        const qsizetype close = rest.indexOf(delim);
+        if (close >= 0) {
+            *text = {rest.left(close)};
+            *last = at;
+            return true;
+        }
+        if (delim.size() == 1)
+            return false;
+        *text = {rest};
+        for (int i = at + 1; i < lines.size(); ++i) {
+            const qsizetype end = lines[i].indexOf(delim);
+            if (end >= 0) {
+                text->append(lines[i].left(end));
+                *last = i;
+                return true;
+            }
+            text->append(lines[i]);
+        }
+        return false;
+    }
+    return false;
+}
+
+/// The comment block (C++ // /// /* */ or Python #) that ends right above line `above` (0-based).
+bool commentAbove(const QStringList &lines, int above, bool python, QStringList *text, int *first, int *last)
+{
+    int i = above - 1;
+    while (i >= 0 && lines[i].trimmed().startsWith(QLatin1String("template")))
+        --i; // a template header sits between the comment and the class
+    const int end = i;
+    auto isComment = [&](const QString &t) {
+        return python ? t.startsWith(QLatin1Char('#'))
+                      : t.startsWith(QLatin1String("//")) || t.startsWith(QLatin1String("/*")) ||
+                            t.startsWith(QLatin1Char('*')) || t.endsWith(QLatin1String("*/"));
+    };
+    while (i >= 0 && isComment(lines[i].trimmed()))
+        --i;
+    if (i == end)
+        return false;
+    static const QRegularExpression markers(QStringLiteral("^(#+!?|///?<?|//!|/\\*\\*?!?|\\*+/?)\\s*"));
+    static const QRegularExpression brief(QStringLiteral("^[@\\\\]brief\\s+"));
+    text->clear();
+    for (int l = i + 1; l <= end; ++l) {
+        QString t = lines[l].trimmed();
+        if (t.endsWith(QLatin1String("*/")))
+            t.chop(2);
+        t.remove(markers);
+        t.remove(brief);
+        text->append(t.trimmed());
+    }
+    *first = i + 1;
+    *last = end;
+    return true;
+}
+
+QString firstContentLine(const QStringList &text)
+{
+    for (const QString &l : text)
+        if (!l.trimmed().isEmpty())
+            return l.trimmed();
+    return {};
+}
+
+} // namespace
+
+DeterministicProvider::DeterministicProvider(const QString &workspaceRoot, const Recovery &recovery,
+                                             const QDateTime &timestamp)
+    : m_recovery(recovery)
+    , m_source(workspaceRoot)
+    , m_timestamp(timestamp.toUTC())
+{
+}
+
+Suggestion DeterministicProvider::make(Suggestion::Kind kind) const
+{
+    Suggestion s;
+    s.kind = kind;
+    s.origin.provider = QStringLiteral("deterministic");
+    s.origin.prompt = kind == Suggestion::Kind::NodeDescription ? QStringLiteral("docstring")
+                                                                : QStringLiteral("communication-graph");
+    s.origin.timestamp = m_timestamp;
+    return s;
+}
+
+bool DeterministicProvider::documentation(const AtomicNode &node, QString *text, int *first, int *last,
+                                          QString *quote) const
+{
+    const QStringList lines = m_source.lines(node.evidence.file);
+    const int start = node.evidence.line - 1;
+    if (lines.isEmpty() || start < 0 || start >= lines.size())
+        return false;
+    const bool python = node.compileType == AtomicNode::CompileType::Python;
+    QStringList doc;
+    int from = 0;
+    int to = 0;
+    bool found = false;
+    if (python && !node.procedural) {
+        int header = start;
+        while (header < lines.size() && !lines[header].section(QLatin1Char('#'), 0, 0).trimmed().endsWith(QLatin1Char(':')))
+            ++header;
+        int body = header + 1;
+        while (body < lines.size() && lines[body].trimmed().isEmpty())
+            ++body;
+        found = pythonDocstring(lines, body, &doc, &to);
+        from = body;
+    }
+    if (!found)
+        found = commentAbove(lines, start, python, &doc, &from, &to) && !looksLikeLicense(doc);
+    if (!found && python) {
+        // A procedural node (or an undocumented class) is described by its module docstring.
+        int top = 0;
+        while (top < lines.size() && (lines[top].trimmed().isEmpty() || lines[top].trimmed().startsWith(QLatin1Char('#'))))
+            ++top;
+        found = pythonDocstring(lines, top, &doc, &to);
+        from = top;
+    }
+    if (!found)
+        return false;
+    *text = summary(doc);
+    *quote = firstContentLine(doc);
+    *first = from + 1;
+    *last = to + 1;
+    return !text->isEmpty() && !quote->isEmpty();
+}
+
+QList<Suggestion> DeterministicProvider::describeNodes() const
+{
+    QList<Suggestion> out;
+    for (const AtomicNode &node : m_recovery.nodes.nodes) {
+        QString text;
+        QString quote;
+        int first = 0;
+        int last = 0;
+        if (!documentation(node, &text, &first, &last, &quote))
+            continue;
+        Suggestion s = make(Suggestion::Kind::NodeDescription);
+        s.targetId = node.id;
+        s.value = text;
+        s.rationale = QStringLiteral("The documentation of %1 in %2, lines %3-%4.")
+                          .arg(node.className, node.evidence.file).arg(first).arg(last);
+        s.evidence.append({{node.evidence.file, first, 1, last, 0}, quote});
+        out << s;
+    }
+    return out;
+}
+
+QList<Suggestion> DeterministicProvider::groupSubsystems() const
+{
+    QList<Suggestion> out;
+    const SubsystemGrouper grouper(m_recovery);
+    for (const LaunchFileInstance &root : m_recovery.launch.instances) {
+        if (!root.parentId.isEmpty())
+            continue;
+        QSet<QString> scope{root.id};
+        for (const LaunchFileInstance &lf : m_recovery.launch.instances)
+            if (scope.contains(lf.parentId))
+                scope.insert(lf.id);
+        QStringList ids;
+        for (const NodeInstance &n : m_recovery.launch.nodes)
+            if (scope.contains(n.launchFileId))
+                ids << n.id;
+        for (const SubsystemGrouper::Group &g : grouper.groups(ids)) {
+            Suggestion s = make(Suggestion::Kind::SubsystemGrouping);
+            s.targetId = root.id;
+            s.memberIds = g.memberIds;
+            s.value = g.name;
+            QStringList names = g.sharedNames.mid(0, 8);
+            if (g.sharedNames.size() > 8)
+                names << QStringLiteral("... (%1 in all)").arg(g.sharedNames.size());
+            s.rationale = QStringLiteral("The instances communicate through %1 (label propagation over the "
+                                         "communication graph of %2; hub topics ignored).")
+                              .arg(names.join(QStringLiteral(", ")), root.type);
+            for (const QString &id : g.memberIds) {
+                const NodeInstance *n = m_recovery.launch.node(id);
+                const QStringList lines = m_source.lines(n->evidence.file);
+                const int first = n->evidence.line;
+                const int last = qMax(first, n->evidence.endLine);
+                if (first < 1 || last > lines.size())
+                    continue;
+                const QString cited = lines.mid(first - 1, last - first + 1).join(QLatin1Char(' '));
+                for (const QString &quote : {n->nodeName, n->execName})
+                    if (!quote.isEmpty() && cited.contains(quote)) {
+                        s.evidence.append({{n->evidence.file, first, n->evidence.column, last, n->evidence.endColumn}, quote});
+                        break;
+                    }
+            }
+            out << s;
+        }
+    }
+    return out;
+}
+
+QList<Suggestion> DeterministicProvider::suggest() const
+{
+    return describeNodes() + groupSubsystems();
+}
+
+} // namespace rosarch

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "llmrequest.h"
+#include "llmresult.h"
+#include "llmsettings.h"
+
+#include <atomic>
+
+namespace rosarch {
+
+/// A synchronous client for OpenAI-compatible `POST /v1/chat/completions` over libcurl.
+/// Safe to call from worker threads: every call uses its own CURL easy handle.
+class LlmClient
+{
+public:
+    explicit LlmClient(const LlmSettings &settings);
+
+    /// Sends the conversation, asking for JSON that fits `request.schema`; retries 429/5xx with
+    /// bounded back-off, falls back from json_schema to json_object to no response_format when
+    /// the server rejects it (400), and retries once with the validation error appended.
+    LlmResult complete(const LlmRequest &request) const;
+    const LlmSettings &settings() const { return m_settings; }
+
+private:
+    LlmSettings m_settings;
+    /// 0 json_schema, 1 json_object, 2 none; remembered so later calls skip rejected formats.
+    mutable std::atomic_int m_formatLevel{0};
+};
+
+} // namespace rosarch
