@@ -45,6 +45,7 @@ struct RosNodePart
     bool typed = true;     ///< false when the class could not be found (no ports known)
     QList<PartPort> ports;
     Evidence evidence;     ///< the node or include in the launch file
+    QString subsystem;     ///< accepted subsystem grouping ("" = none)
     bool operator==(const RosNodePart &) const = default;
 };
 

@@ -1,0 +1,55 @@
+#include "diagrambreadcrumbbar.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QToolButton>
+
+namespace rosarch {
+
+DiagramBreadcrumbBar::DiagramBreadcrumbBar(QWidget *parent)
+    : QWidget(parent), m_layout(new QHBoxLayout(this))
+{
+    m_layout->setContentsMargins(4, 0, 4, 0);
+    m_layout->setSpacing(0);
+    m_layout->addStretch(1);
+}
+
+void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path)
+{
+    qDeleteAll(m_widgets);
+    m_widgets.clear();
+    m_path = path;
+    for (int i = 0; i < path.size(); ++i) {
+        const Crumb &crumb = path[i];
+        if (i > 0) {
+            auto *separator = new QLabel(QStringLiteral(" › "), this);
+            separator->setForegroundRole(QPalette::PlaceholderText);
+            m_layout->insertWidget(m_layout->count() - 1, separator);
+            m_widgets << separator;
+        }
+        auto *button = new QToolButton(this);
+        button->setObjectName(QStringLiteral("crumb_") + crumb.id);
+        button->setText(crumb.label);
+        button->setToolTip(crumb.toolTip);
+        button->setAutoRaise(true);
+        const bool last = i == path.size() - 1;
+        if (last) {
+            QFont f = button->font();
+            f.setBold(true);
+            button->setFont(f);
+        }
+        connect(button, &QToolButton::clicked, this, [this, id = crumb.id, last] {
+            if (!last)
+                Q_EMIT crumbClicked(id);
+        });
+        m_layout->insertWidget(m_layout->count() - 1, button);
+        m_widgets << button;
+    }
+}
+
+QToolButton *DiagramBreadcrumbBar::button(const QString &id) const
+{
+    return findChild<QToolButton *>(QStringLiteral("crumb_") + id);
+}
+
+} // namespace rosarch

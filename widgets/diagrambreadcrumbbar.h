@@ -1,0 +1,40 @@
+#pragma once
+
+#include <QList>
+#include <QWidget>
+
+class QHBoxLayout;
+class QToolButton;
+
+namespace rosarch {
+
+/// "root › included › …": one button per composite from the root down to the one shown.
+class DiagramBreadcrumbBar : public QWidget
+{
+    Q_OBJECT
+public:
+    struct Crumb
+    {
+        QString id;
+        QString label;
+        QString toolTip;
+    };
+
+    explicit DiagramBreadcrumbBar(QWidget *parent = nullptr);
+
+    void setPath(const QList<Crumb> &path);
+    QList<Crumb> path() const { return m_path; }
+    /// The button of a crumb, for tests and keyboard navigation; null when absent.
+    QToolButton *button(const QString &id) const;
+
+Q_SIGNALS:
+    /// A person clicked a crumb other than the last one.
+    void crumbClicked(const QString &id);
+
+private:
+    QHBoxLayout *m_layout;
+    QList<Crumb> m_path;
+    QList<QWidget *> m_widgets;
+};
+
+} // namespace rosarch

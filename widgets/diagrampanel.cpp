@@ -1,0 +1,482 @@
+#include "diagrampanel.h"
+#include "diagrambreadcrumbbar.h"
+#include "diagramscene.h"
+#include "diagramtext.h"
+#include "diagramview.h"
+
+#include <QAction>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFontMetricsF>
+#include <QFutureWatcher>
+#include <QLineEdit>
+#include <QMenu>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+
+namespace rosarch {
+
+namespace {
+constexpr int kCacheSize = 24;
+
+QAction *toggle(QToolBar *bar, const QString &text, const QString &toolTip)
+{
+    QAction *a = bar->addAction(text);
+    a->setCheckable(true);
+    a->setChecked(true);
+    a->setToolTip(toolTip);
+    return a;
+}
+} // namespace
+
+DiagramPanel::DiagramPanel(QWidget *parent)
+    : QWidget(parent), m_breadcrumbs(new DiagramBreadcrumbBar(this)), m_toolBar(new QToolBar(this)),
+      m_search(new QLineEdit(this)), m_scene(new DiagramScene(this)), m_view(new DiagramView(this))
+{
+    m_search->setPlaceholderText(tr("Find in diagram"));
+    m_search->setToolTip(tr("Highlights the parts, topics, services and namespaces whose name "
+                            "contains this text. Enter goes to the next match."));
+    m_search->setClearButtonEnabled(true);
+    m_search->setMaximumWidth(220);
+    m_toolBar->setIconSize(QSize(16, 16));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_toolBar->addWidget(m_search);
+    m_toolBar->addSeparator();
+    m_showParameters =
+        toggle(m_toolBar, tr("Parameters"), tr("Show ports whose name comes from a parameter"));
+    m_showInactive = toggle(m_toolBar, tr("Inactive"),
+                            tr("Show parts and ports whose launch condition or guard is false"));
+    m_showExternal = toggle(m_toolBar, tr("External"),
+                            tr("Show includes of launch files outside the workspace"));
+    m_toolBar->addSeparator();
+    QAction *zoomOut = m_toolBar->addAction(tr("−"), m_view, &DiagramView::zoomOut);
+    zoomOut->setToolTip(tr("Zoom out (-, Ctrl+wheel)"));
+    QAction *zoomIn = m_toolBar->addAction(tr("+"), m_view, &DiagramView::zoomIn);
+    zoomIn->setToolTip(tr("Zoom in (+, Ctrl+wheel)"));
+    QAction *fit = m_toolBar->addAction(tr("Fit"), m_view, &DiagramView::fitDiagram);
+    fit->setToolTip(tr("Fit the whole diagram in the view (0)"));
+    m_exportAction = m_toolBar->addAction(tr("Export…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export Diagram"),
+            composite() ? composite()->stem + QStringLiteral(".svg") : QString(),
+            tr("SVG image (*.svg);;PNG image (*.png)"));
+        if (!path.isEmpty())
+            path.endsWith(QLatin1String(".png"), Qt::CaseInsensitive) ? exportPng(path)
+                                                                      : exportSvg(path);
+    });
+    m_exportAction->setToolTip(tr("Save the whole diagram as SVG or PNG"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(m_breadcrumbs);
+    layout->addWidget(m_toolBar);
+    layout->addWidget(m_view, 1);
+    m_view->setScene(m_scene);
+    m_scene->setDiagramStyle(DiagramStyle::fromPalette(palette()));
+
+    connect(m_search, &QLineEdit::textChanged, this, [this] { updateSearch(true); });
+    connect(m_search, &QLineEdit::returnPressed, this, &DiagramPanel::findNext);
+    for (QAction *a : {m_showParameters, m_showInactive, m_showExternal})
+        connect(a, &QAction::toggled, this, &DiagramPanel::onFilterToggled);
+    connect(m_breadcrumbs, &DiagramBreadcrumbBar::crumbClicked, this, &DiagramPanel::showComposite);
+    connect(m_scene, &DiagramScene::elementClicked, this, &DiagramPanel::onElementClicked);
+    connect(m_scene, &DiagramScene::elementDoubleClicked, this,
+            &DiagramPanel::onElementDoubleClicked);
+    connect(m_scene, &DiagramScene::elementContextMenuRequested, this,
+            &DiagramPanel::onContextMenu);
+    showMessage(tr("No composed diagram yet. Run stage 3 to compose the launch files."));
+}
+
+DiagramPanel::~DiagramPanel()
+{
+    if (m_cancel)
+        m_cancel->store(true); // a running helper is killed; its result is dropped
+}
+
+void DiagramPanel::setArchitecture(const Architecture &architecture)
+{
+    m_architecture = architecture;
+    QString show = m_current;
+    if (!m_architecture.composite(show)) {
+        show.clear();
+        for (const Composite &c : std::as_const(m_architecture.composites))
+            if (c.parentId.isEmpty()) {
+                show = c.instanceId;
+                break;
+            }
+        if (show.isEmpty() && !m_architecture.composites.isEmpty())
+            show = m_architecture.composites.first().instanceId;
+    }
+    if (show.isEmpty()) {
+        m_current.clear();
+        updateBreadcrumbs();
+        relayout();
+        return;
+    }
+    if (show == m_current) {
+        updateBreadcrumbs();
+        relayout();
+        return;
+    }
+    showComposite(show);
+}
+
+void DiagramPanel::showComposite(const QString &instanceId)
+{
+    if (!m_architecture.composite(instanceId))
+        return;
+    if (instanceId != m_current) {
+        m_current = instanceId;
+        m_marks.clear();
+        m_missing.clear();
+        m_view->setBanner({});
+        m_fitPending = true;
+        m_scene->clearDiagram();
+    }
+    updateBreadcrumbs();
+    relayout();
+    Q_EMIT compositeShown(instanceId);
+}
+
+QStringList DiagramPanel::breadcrumbIds() const
+{
+    QStringList ids;
+    for (const DiagramBreadcrumbBar::Crumb &c : m_breadcrumbs->path())
+        ids << c.id;
+    return ids;
+}
+
+const Composite *DiagramPanel::composite() const
+{
+    return m_architecture.composite(m_current);
+}
+
+void DiagramPanel::setOptions(const DiagramOptions &options)
+{
+    m_options = options;
+    const QSignalBlocker b1(m_showParameters), b2(m_showInactive), b3(m_showExternal);
+    m_showParameters->setChecked(options.showParameterPorts);
+    m_showInactive->setChecked(options.showInactive);
+    m_showExternal->setChecked(options.showExternal);
+    relayout();
+}
+
+void DiagramPanel::onFilterToggled()
+{
+    m_options.showParameterPorts = m_showParameters->isChecked();
+    m_options.showInactive = m_showInactive->isChecked();
+    m_options.showExternal = m_showExternal->isChecked();
+    relayout();
+}
+
+void DiagramPanel::setNamespaceCollapsed(const QString &nameSpace, bool collapsed)
+{
+    QStringList &list = m_collapsed[m_current];
+    if (collapsed == list.contains(nameSpace))
+        return;
+    if (collapsed)
+        list << nameSpace;
+    else
+        list.removeAll(nameSpace);
+    list.sort();
+    relayout();
+}
+
+bool DiagramPanel::isNamespaceCollapsed(const QString &nameSpace) const
+{
+    return m_collapsed.value(m_current).contains(nameSpace);
+}
+
+void DiagramPanel::setMarks(const QHash<QString, DiagramMark> &marks, const QStringList &missing)
+{
+    m_marks = marks;
+    m_missing = missing;
+    m_scene->setMarks(marks);
+    m_view->setBanner(DiagramText::missingBanner(missing));
+}
+
+bool DiagramPanel::exportSvg(const QString &path)
+{
+    const Composite *c = composite();
+    return c && m_scene->exportSvg(path, c->stem);
+}
+
+bool DiagramPanel::exportPng(const QString &path)
+{
+    return m_scene->exportPng(path);
+}
+
+QString DiagramPanel::message() const
+{
+    return m_view->message();
+}
+
+DiagramMetrics DiagramPanel::metrics() const
+{
+    const DiagramStyle &s = m_scene->diagramStyle();
+    DiagramMetrics m;
+    const auto width = [](const QFont &font) {
+        return
+            [fm = QFontMetricsF(font)](const QString &text) { return fm.horizontalAdvance(text); };
+    };
+    m.titleWidth = width(s.titleFont);
+    m.textWidth = width(s.textFont);
+    m.smallWidth = width(s.smallFont);
+    m.titleHeight = QFontMetricsF(s.titleFont).height();
+    m.textHeight = QFontMetricsF(s.textFont).height();
+    m.smallHeight = QFontMetricsF(s.smallFont).height();
+    return m;
+}
+
+void DiagramPanel::relayout()
+{
+    if (m_cancel)
+        m_cancel->store(true); // the previous helper is no longer wanted
+    m_cancel.reset();
+    m_pending = false;
+    m_view->setBusyText({});
+    const quint64 generation = ++m_generation;
+    const Composite *c = composite();
+    if (!c) {
+        m_scene->clearDiagram();
+        showMessage(m_architecture.composites.isEmpty()
+                        ? tr("No composed diagram yet. Run stage 3 to compose the launch files.")
+                        : tr("This launch file is not part of the architecture."));
+        return;
+    }
+    DiagramOptions options = m_options;
+    options.collapsedNamespaces = m_collapsed.value(m_current);
+    const LayoutGraph graph = DiagramBuilder::build(*c, options, metrics());
+    if (graph.nodes.isEmpty()) {
+        m_scene->clearDiagram();
+        showMessage(c->parts.isEmpty()
+                        ? tr("%1 starts no nodes and includes no launch files.").arg(c->stem)
+                        : tr("Every element of %1 is hidden by the filters.").arg(c->stem));
+        Q_EMIT layoutFinished(true);
+        return;
+    }
+    const QString dot = GraphLayout::toDot(graph);
+    if (m_cache.contains(dot)) {
+        LayoutResult cached;
+        cached.ok = true;
+        cached.geometry = m_cache.value(dot);
+        applyLayout(graph, cached, m_fitPending);
+        return;
+    }
+    auto cancel = std::make_shared<std::atomic_bool>(false);
+    m_cancel = cancel;
+    LayoutOptions layoutOptions;
+    layoutOptions.timeoutMs = m_timeoutMs;
+    layoutOptions.canceled = [cancel] { return cancel->load(); };
+    m_pending = true;
+    m_view->setBusyText(tr("Laying out…"));
+    auto *watcher = new QFutureWatcher<LayoutResult>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, graph, dot, generation] {
+        watcher->deleteLater();
+        const LayoutResult result = watcher->result();
+        if (result.ok) {
+            m_cache.insert(dot, result.geometry);
+            m_cacheOrder << dot;
+            if (m_cacheOrder.size() > kCacheSize)
+                m_cache.remove(m_cacheOrder.takeFirst());
+        }
+        if (generation != m_generation) // a newer request supersedes this result
+            return;
+        m_pending = false;
+        m_view->setBusyText({});
+        applyLayout(graph, result, m_fitPending);
+    });
+    watcher->setFuture(QtConcurrent::run(
+        [graph, layoutOptions] { return GraphLayout::layout(graph, layoutOptions); }));
+}
+
+void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit)
+{
+    const Composite *c = composite();
+    if (!c)
+        return;
+    if (!result.ok) {
+        m_scene->clearDiagram();
+        showMessage(tr("%1\n\nCollapse namespaces or hide elements to make the diagram "
+                       "smaller, then try again.")
+                        .arg(result.error));
+        Q_EMIT layoutFinished(false);
+        return;
+    }
+    m_lastLayoutMs = result.elapsedMs;
+    showMessage({});
+    m_scene->setDiagram(graph, result.geometry, c->stem, DiagramText::frameDetail(*c));
+    m_scene->setToolTips(DiagramText::toolTips(*c));
+    m_scene->setMarks(m_marks);
+    updateSearch(false);
+    if (fit) {
+        m_view->fitDiagram();
+        m_fitPending = false;
+    }
+    Q_EMIT layoutFinished(true);
+}
+
+void DiagramPanel::showMessage(const QString &text)
+{
+    m_view->setMessage(text);
+}
+
+void DiagramPanel::updateBreadcrumbs()
+{
+    QList<DiagramBreadcrumbBar::Crumb> path;
+    QStringList seen;
+    for (const Composite *c = composite(); c && !seen.contains(c->instanceId);
+         c = m_architecture.composite(c->parentId)) {
+        seen << c->instanceId;
+        path.prepend({c->instanceId, c->stem, c->file.isEmpty() ? c->stem : c->file});
+    }
+    m_breadcrumbs->setPath(path);
+}
+
+void DiagramPanel::updateSearch(bool centre)
+{
+    m_matches = m_scene->find(m_search->text());
+    m_scene->setMatches(m_matches);
+    m_matchIndex = m_matches.isEmpty() ? -1 : 0;
+    if (centre && m_matchIndex >= 0)
+        selectKey(m_matches.first());
+}
+
+void DiagramPanel::findNext()
+{
+    if (m_matches.isEmpty())
+        return;
+    m_matchIndex = (m_matchIndex + 1) % m_matches.size();
+    selectKey(m_matches[m_matchIndex]);
+}
+
+void DiagramPanel::focusSearch()
+{
+    m_search->setFocus(Qt::ShortcutFocusReason);
+    m_search->selectAll();
+}
+
+void DiagramPanel::selectKey(const QString &key)
+{
+    DiagramItem *item = m_scene->item(key);
+    if (!item)
+        return;
+    m_scene->clearSelection();
+    item->setSelected(true);
+    m_view->centerOn(item);
+}
+
+bool DiagramPanel::selectInstance(const QString &instanceId)
+{
+    const Composite *c = composite();
+    if (!c)
+        return false;
+    for (const RosNodePart &part : c->parts) {
+        if (part.instanceId != instanceId)
+            continue;
+        QString key = DiagramBuilder::partKey(part.id);
+        // Inside a collapsed namespace, the namespace's box stands for the part.
+        for (const QString &ns : DiagramBuilder::namespaceChain(part.nameSpace))
+            if (isNamespaceCollapsed(ns)) {
+                key = DiagramBuilder::namespaceKey(ns);
+                break;
+            }
+        if (!m_scene->item(key))
+            return false;
+        selectKey(key);
+        return true;
+    }
+    return false;
+}
+
+void DiagramPanel::onElementClicked(const QString &key)
+{
+    const Composite *c = composite();
+    if (!c)
+        return;
+    const DiagramKey k = DiagramKey::parse(key);
+    if (k.kind == DiagramKey::Kind::Part) {
+        if (const RosNodePart *part = c->part(k.id))
+            Q_EMIT partActivated(part->instanceId);
+    } else if (k.kind == DiagramKey::Kind::Port) {
+        if (DiagramBuilder::port(*c, k.id, k.portId))
+            Q_EMIT portActivated(c->part(k.id)->instanceId, k.portId);
+    }
+    const Evidence evidence = DiagramBuilder::evidence(*c, key);
+    if (evidence.isValid())
+        Q_EMIT evidenceActivated(evidence);
+}
+
+void DiagramPanel::onElementDoubleClicked(const QString &key)
+{
+    const Composite *c = composite();
+    const DiagramKey k = DiagramKey::parse(key);
+    if (!c)
+        return;
+    if (k.kind == DiagramKey::Kind::Part) {
+        const RosNodePart *part = c->part(k.id);
+        if (part && part->kind == RosNodePart::Kind::Launch &&
+            m_architecture.composite(part->instanceId))
+            showComposite(part->instanceId);
+    } else if (k.kind == DiagramKey::Kind::Namespace && isNamespaceCollapsed(k.id)) {
+        setNamespaceCollapsed(k.id, false);
+    }
+}
+
+QList<QAction *> DiagramPanel::elementActions(const QString &key)
+{
+    QList<QAction *> actions;
+    const Composite *c = composite();
+    const DiagramKey k = DiagramKey::parse(key);
+    if (!c)
+        return actions;
+    if (k.kind == DiagramKey::Kind::Namespace) {
+        const bool collapsed = isNamespaceCollapsed(k.id);
+        auto *a = new QAction(collapsed ? tr("Expand Namespace %1").arg(k.id)
+                                        : tr("Collapse Namespace %1").arg(k.id),
+                              this);
+        connect(a, &QAction::triggered, this,
+                [this, ns = k.id, collapsed] { setNamespaceCollapsed(ns, !collapsed); });
+        actions << a;
+    } else if (k.kind == DiagramKey::Kind::Part) {
+        const RosNodePart *part = c->part(k.id);
+        if (part && part->kind == RosNodePart::Kind::Launch &&
+            m_architecture.composite(part->instanceId)) {
+            auto *a = new QAction(tr("Open %1").arg(part->typeName), this);
+            connect(a, &QAction::triggered, this,
+                    [this, id = part->instanceId] { showComposite(id); });
+            actions << a;
+        }
+        const QStringList chain =
+            part ? DiagramBuilder::namespaceChain(part->nameSpace) : QStringList();
+        if (!chain.isEmpty()) {
+            auto *a = new QAction(tr("Collapse Namespace %1").arg(chain.last()), this);
+            connect(a, &QAction::triggered, this,
+                    [this, ns = chain.last()] { setNamespaceCollapsed(ns, true); });
+            actions << a;
+        }
+    }
+    return actions;
+}
+
+void DiagramPanel::onContextMenu(const QString &key, const QPoint &screenPos)
+{
+    const QList<QAction *> actions = elementActions(key);
+    if (actions.isEmpty())
+        return;
+    QMenu menu(this);
+    menu.addActions(actions);
+    menu.exec(screenPos);
+    qDeleteAll(actions);
+}
+
+void DiagramPanel::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        m_scene->setDiagramStyle(DiagramStyle::fromPalette(palette()));
+}
+
+} // namespace rosarch

@@ -1,0 +1,142 @@
+#pragma once
+
+#include "composition.h"
+#include "diagrambuilder.h"
+#include "diagramitem.h"
+#include "graphlayout.h"
+
+#include <QHash>
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+
+class QAction;
+class QLineEdit;
+class QToolBar;
+
+namespace rosarch {
+
+class DiagramBreadcrumbBar;
+class DiagramScene;
+class DiagramView;
+
+/// The "Composed diagram" panel: one composite of the architecture laid out by Graphviz (off
+/// the UI thread), with breadcrumbs down the include tree, search, filters, zoom and export.
+/// Element keys are DiagramBuilder's: "part:part1", "port:part1/s1", "channel:q_x",
+/// "boundary:s1", "connection:3", "namespace:/robot1".
+class DiagramPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit DiagramPanel(QWidget *parent = nullptr);
+    ~DiagramPanel() override;
+
+    /// The architecture to draw (a copy). Keeps the composite shown if it still exists,
+    /// else shows the first root.
+    void setArchitecture(const Architecture &architecture);
+    const Architecture &architecture() const { return m_architecture; }
+    /// Shows a composite by its launch-file instance id; the breadcrumbs follow its parents.
+    void showComposite(const QString &instanceId);
+    QString currentComposite() const { return m_current; }
+    /// The instance ids on the breadcrumb bar, root first.
+    QStringList breadcrumbIds() const;
+
+    DiagramOptions options() const { return m_options; }
+    void setOptions(const DiagramOptions &options);
+    /// Draws a namespace of the current composite as one box, or as its parts again.
+    void setNamespaceCollapsed(const QString &nameSpace, bool collapsed);
+    bool isNamespaceCollapsed(const QString &nameSpace) const;
+    /// Graphviz gets this long per layout before the panel gives up (default 20 s).
+    void setLayoutTimeout(int milliseconds) { m_timeoutMs = milliseconds; }
+
+    /// Marks for a reference comparison of the current composite (cleared when another is
+    /// shown), and the reference elements missing from it, listed in a banner.
+    void setMarks(const QHash<QString, DiagramMark> &marks, const QStringList &missing = {});
+
+    /// The whole current diagram, light paper, for documentation.
+    bool exportSvg(const QString &path);
+    bool exportPng(const QString &path);
+
+    /// True while the layout of what the panel should show is still running.
+    bool isLayingOut() const { return m_pending; }
+    /// The text shown instead of a drawing (errors, empty states); "" while a diagram shows.
+    QString message() const;
+    qint64 lastLayoutMs() const { return m_lastLayoutMs; }
+    /// The context-menu actions for an element (collapse/expand a namespace, open an include).
+    QList<QAction *> elementActions(const QString &key);
+
+    DiagramScene *scene() const { return m_scene; }
+    DiagramView *view() const { return m_view; }
+    DiagramBreadcrumbBar *breadcrumbBar() const { return m_breadcrumbs; }
+    QLineEdit *searchField() const { return m_search; }
+    QAction *showParametersAction() const { return m_showParameters; }
+    QAction *showInactiveAction() const { return m_showInactive; }
+    QAction *showExternalAction() const { return m_showExternal; }
+    /// The toolbar's "Export…" (a file dialog); hide it when the window offers its own.
+    QAction *exportAction() const { return m_exportAction; }
+
+public Q_SLOTS:
+    /// Highlights and centres the part of a node (or launch-file) instance, if it is drawn.
+    bool selectInstance(const QString &instanceId);
+    /// Selects and centres the next search match.
+    void findNext();
+    void focusSearch();
+
+Q_SIGNALS:
+    /// A part was clicked: its node or launch-file instance id.
+    void partActivated(const QString &instanceId);
+    void portActivated(const QString &instanceId, const QString &portId);
+    /// Where the clicked element comes from: a part's launch line, a port's (or a
+    /// connection's port's) creation in code.
+    void evidenceActivated(const rosarch::Evidence &evidence);
+    void compositeShown(const QString &instanceId);
+    /// A layout finished and the scene shows it (ok), or the message says why not.
+    void layoutFinished(bool ok);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    const Composite *composite() const;
+    DiagramMetrics metrics() const;
+    void relayout();
+    void applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit);
+    void showMessage(const QString &text);
+    void updateBreadcrumbs();
+    void updateSearch(bool centre);
+    void selectKey(const QString &key);
+    void onElementClicked(const QString &key);
+    void onElementDoubleClicked(const QString &key);
+    void onContextMenu(const QString &key, const QPoint &screenPos);
+    void onFilterToggled();
+
+    Architecture m_architecture;
+    QString m_current;
+    DiagramOptions m_options;
+    QHash<QString, QStringList> m_collapsed; // per composite
+    QHash<QString, DiagramMark> m_marks;
+    QStringList m_missing;
+    QStringList m_matches;
+    int m_matchIndex = -1;
+    int m_timeoutMs = 20000;
+    quint64 m_generation = 0;
+    bool m_pending = false;
+    bool m_fitPending = true;
+    qint64 m_lastLayoutMs = 0;
+    std::shared_ptr<std::atomic_bool> m_cancel;
+    QHash<QString, LayoutGeometry> m_cache; // by DOT text
+    QStringList m_cacheOrder;
+
+    DiagramBreadcrumbBar *m_breadcrumbs;
+    QToolBar *m_toolBar;
+    QLineEdit *m_search;
+    QAction *m_showParameters;
+    QAction *m_showInactive;
+    QAction *m_showExternal;
+    QAction *m_exportAction;
+    DiagramScene *m_scene;
+    DiagramView *m_view;
+};
+
+} // namespace rosarch

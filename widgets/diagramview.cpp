@@ -1,0 +1,172 @@
+#include "diagramview.h"
+
+#include <QKeyEvent>
+#include <QLabel>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rosarch {
+
+namespace {
+constexpr qreal kMinZoom = 0.1;
+constexpr qreal kMaxZoom = 4.0;
+constexpr qreal kStep = 1.2;
+
+QLabel *overlay(QWidget *parent, const QString &objectName)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(objectName);
+    label->setWordWrap(true);
+    label->setAlignment(Qt::AlignCenter);
+    label->setAutoFillBackground(true);
+    label->setMargin(10);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    label->hide();
+    return label;
+}
+} // namespace
+
+DiagramView::DiagramView(QWidget *parent)
+    : QGraphicsView(parent), m_busy(overlay(this, QStringLiteral("diagramBusy"))),
+      m_message(overlay(this, QStringLiteral("diagramMessage"))),
+      m_banner(overlay(this, QStringLiteral("diagramBanner")))
+{
+    setDragMode(ScrollHandDrag);
+    setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing |
+                   QPainter::SmoothPixmapTransform);
+    setTransformationAnchor(AnchorUnderMouse);
+    setResizeAnchor(AnchorViewCenter);
+    setViewportUpdateMode(SmartViewportUpdate);
+    setFocusPolicy(Qt::StrongFocus);
+    m_busy->setFrameShape(QFrame::StyledPanel);
+    m_message->setForegroundRole(QPalette::PlaceholderText);
+    m_message->setAutoFillBackground(false);
+    m_banner->setFrameShape(QFrame::StyledPanel);
+    m_banner->setAlignment(Qt::AlignLeft | Qt::AlignVCenter);
+    m_banner->setBackgroundRole(QPalette::ToolTipBase);
+    m_banner->setForegroundRole(QPalette::ToolTipText);
+}
+
+void DiagramView::setZoom(qreal zoom)
+{
+    zoom = std::clamp(zoom, kMinZoom, kMaxZoom);
+    if (qFuzzyCompare(zoom, this->zoom()))
+        return;
+    setTransform(QTransform::fromScale(zoom, zoom));
+    Q_EMIT zoomChanged(zoom);
+}
+
+void DiagramView::zoomIn()
+{
+    setZoom(zoom() * kStep);
+}
+
+void DiagramView::zoomOut()
+{
+    setZoom(zoom() / kStep);
+}
+
+void DiagramView::fitDiagram()
+{
+    const QRectF rect = sceneRect();
+    if (rect.isEmpty())
+        return;
+    const QSizeF available = viewport()->size() - QSizeF(4, 4);
+    const qreal fit =
+        std::min(available.width() / rect.width(), available.height() / rect.height());
+    setZoom(std::min(fit, 1.0));
+    centerOn(rect.center());
+}
+
+void DiagramView::setBusyText(const QString &text)
+{
+    m_busy->setText(text);
+    m_busy->setVisible(!text.isEmpty());
+    placeOverlays();
+}
+
+QString DiagramView::busyText() const
+{
+    return m_busy->isVisibleTo(this) ? m_busy->text() : QString();
+}
+
+void DiagramView::setMessage(const QString &text)
+{
+    m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
+    placeOverlays();
+}
+
+QString DiagramView::message() const
+{
+    return m_message->isVisibleTo(this) ? m_message->text() : QString();
+}
+
+void DiagramView::setBanner(const QString &text)
+{
+    m_banner->setText(text);
+    m_banner->setToolTip(text);
+    m_banner->setVisible(!text.isEmpty());
+    placeOverlays();
+}
+
+QString DiagramView::banner() const
+{
+    return m_banner->isVisibleTo(this) ? m_banner->text() : QString();
+}
+
+void DiagramView::wheelEvent(QWheelEvent *event)
+{
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QGraphicsView::wheelEvent(event);
+        return;
+    }
+    const int delta = event->angleDelta().y();
+    if (delta != 0)
+        setZoom(zoom() * std::pow(kStep, delta / 120.0));
+    event->accept();
+}
+
+void DiagramView::keyPressEvent(QKeyEvent *event)
+{
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        zoomIn();
+        return;
+    case Qt::Key_Minus:
+        zoomOut();
+        return;
+    case Qt::Key_0:
+        fitDiagram();
+        return;
+    default:
+        QGraphicsView::keyPressEvent(event);
+    }
+}
+
+void DiagramView::resizeEvent(QResizeEvent *event)
+{
+    QGraphicsView::resizeEvent(event);
+    placeOverlays();
+}
+
+void DiagramView::placeOverlays()
+{
+    const QRect area = viewport()->geometry();
+    const int width = std::min(area.width() - 24, 460);
+    for (QLabel *label : {m_busy, m_message}) {
+        const int height = label->heightForWidth(width);
+        label->setGeometry(area.left() + (area.width() - width) / 2,
+                           area.top() + (area.height() - height) / 2, width, height);
+    }
+    const int bannerHeight = m_banner->heightForWidth(area.width() - 16);
+    m_banner->setGeometry(area.left() + 8, area.top() + 8, area.width() - 16, bannerHeight);
+    m_busy->raise();
+    m_banner->raise();
+}
+
+} // namespace rosarch
