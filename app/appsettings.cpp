@@ -21,6 +21,13 @@ const QString kSelLaunch = QStringLiteral("session/launchItem");
 const QString kLaunchOptions = QStringLiteral("launch/options");
 const QString kRootKey = QStringLiteral("root");
 const QString kArgumentsKey = QStringLiteral("arguments");
+// The LLM; the API key has no key here on purpose: it only comes from the environment.
+const QString kLlmEndpoint = QStringLiteral("llm/endpoint");
+const QString kLlmModel = QStringLiteral("llm/model");
+const QString kLlmTemperature = QStringLiteral("llm/temperature");
+const QString kLlmConnectTimeout = QStringLiteral("llm/connectTimeoutMs");
+const QString kLlmRequestTimeout = QStringLiteral("llm/requestTimeoutMs");
+const QString kLlmUse = QStringLiteral("llm/use");
 
 QString normalized(const QString &path)
 {
@@ -170,6 +177,36 @@ void AppSettings::setLaunchOptions(const QString &workspace, const LaunchOptions
                    QVariantMap{{kRootKey, options.rootFile}, {kArgumentsKey, arguments}});
     }
     m_settings->setValue(kLaunchOptions, all);
+}
+
+LlmSettings AppSettings::llmSettings() const
+{
+    LlmSettings s = LlmSettings::fromEnvironment();
+    s.endpoint = m_settings->value(kLlmEndpoint, s.endpoint).toString();
+    s.model = m_settings->value(kLlmModel, s.model).toString();
+    s.temperature = m_settings->value(kLlmTemperature, s.temperature).toDouble();
+    s.connectTimeoutMs = m_settings->value(kLlmConnectTimeout, s.connectTimeoutMs).toInt();
+    s.requestTimeoutMs = m_settings->value(kLlmRequestTimeout, s.requestTimeoutMs).toInt();
+    return s;
+}
+
+void AppSettings::setLlmSettings(const LlmSettings &settings)
+{
+    m_settings->setValue(kLlmEndpoint, settings.endpoint);
+    m_settings->setValue(kLlmModel, settings.model);
+    m_settings->setValue(kLlmTemperature, settings.temperature);
+    m_settings->setValue(kLlmConnectTimeout, settings.connectTimeoutMs);
+    m_settings->setValue(kLlmRequestTimeout, settings.requestTimeoutMs);
+}
+
+bool AppSettings::useLlm() const
+{
+    return m_settings->value(kLlmUse, false).toBool();
+}
+
+void AppSettings::setUseLlm(bool use)
+{
+    m_settings->setValue(kLlmUse, use);
 }
 
 } // namespace rosarch

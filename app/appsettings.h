@@ -1,6 +1,7 @@
 #pragma once
 
 #include "launchanalyzer.h"
+#include "llmsettings.h"
 
 #include <QByteArray>
 #include <QStringList>
@@ -49,6 +50,14 @@ public:
     /// never chosen).
     LaunchOptions launchOptions(const QString &workspace) const;
     void setLaunchOptions(const QString &workspace, const LaunchOptions &options);
+
+    /// The LLM endpoint, model, temperature and timeouts (never the API key); when nothing
+    /// was stored, $ROSARCH_LLM_ENDPOINT / $ROSARCH_LLM_MODEL or the defaults.
+    LlmSettings llmSettings() const;
+    void setLlmSettings(const LlmSettings &settings);
+    /// Whether suggestion runs ask the LLM (off until a person turns it on).
+    bool useLlm() const;
+    void setUseLlm(bool use);
 
 private:
     std::unique_ptr<QSettings> m_settings;

@@ -5,6 +5,8 @@
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
 #include "diagnosticmodel.h"
+#include "diagramcontroller.h"
+#include "diagrampanel.h"
 #include "document.h"
 #include "icons.h"
 #include "launchargumentsdialog.h"
@@ -14,6 +16,9 @@
 #include "sourceview.h"
 #include "stagecontroller.h"
 #include "stagerunner.h"
+#include "suggestioncontroller.h"
+#include "suggestionmodel.h"
+#include "suggestionpanel.h"
 #include "traceability.h"
 
 #include <Qsci/qsciscintilla.h>
@@ -97,6 +102,7 @@ void MainWindow::createPanels()
     m_nodePanel->setModel(m_nodeModel);
     m_launchPanel = new LaunchTreePanel(this);
     m_launchPanel->setModel(m_launchModel);
+    m_diagramPanel = new DiagramPanel(this);
     m_sourceView = new SourceView(this);
     m_logView = new LogView(this);
     m_logView->setModel(m_diagnosticModel);
@@ -116,8 +122,14 @@ void MainWindow::createPanels()
     };
     m_nodeDock = makeDock(m_nodePanel, tr("Atomic nodes"), QStringLiteral("atomicNodesDock"));
     m_launchDock = makeDock(m_launchPanel, tr("Launch tree"), QStringLiteral("launchTreeDock"));
+    m_diagramDock = makeDock(m_diagramPanel, tr("Composed diagram"), QStringLiteral("diagramDock"));
     m_sourceDock = makeDock(m_sourceView, tr("Source"), QStringLiteral("sourceDock"));
     m_logDock = makeDock(m_logView, tr("Log"), QStringLiteral("logDock"));
+    m_suggestionModel = new SuggestionModel(m_document, this);
+    m_suggestionPanel = new SuggestionPanel(this);
+    m_suggestionPanel->setModel(m_suggestionModel);
+    m_suggestionDock =
+        makeDock(m_suggestionPanel, tr("Suggestions"), QStringLiteral("suggestionsDock"));
     resetLayout();
 
     m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
@@ -131,182 +143,51 @@ void MainWindow::createPanels()
         m_nodeDock->raise();
     });
     connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
+    m_diagrams = new DiagramController(m_document, m_diagramPanel, m_launchPanel, m_traceability,
+                                       m_logView, this);
+    connect(m_diagrams, &DiagramController::statusMessage, statusBar(), &QStatusBar::showMessage);
+
+    m_suggestions = new SuggestionController(m_document, m_suggestionPanel, this);
+    m_suggestions->setPreviews(
+        {[this](const Evidence &e) { m_traceability->showEvidence(e); },
+         [this](const QString &arcId) { m_traceability->selectNode(arcId); },
+         [this](const QStringList &ids) {
+             if (!ids.isEmpty())
+                 m_traceability->selectLaunchItem(ids.first());
+         }});
+    connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
+    connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
+            &QStatusBar::showMessage);
 }
 
 void MainWindow::resetLayout()
 {
-    const QList<QDockWidget *> docks{m_nodeDock, m_launchDock, m_sourceDock, m_logDock};
+    const QList<QDockWidget *> docks{m_nodeDock,   m_launchDock, m_diagramDock,
+                                     m_sourceDock, m_logDock,    m_suggestionDock};
     for (QDockWidget *dock : docks) {
         removeDockWidget(dock);
         dock->setFloating(false);
     }
     // One nested dock area fills the window (there is no central widget): the model views
-    // side by side on top (atomic nodes | launch tree | source), the log across the bottom.
+    // side by side on top (atomic nodes | launch tree | diagram | source), the log across the
+    // bottom.
     // Growing the window grows them all.
     addDockWidget(Qt::TopDockWidgetArea, m_nodeDock);
-    splitDockWidget(m_nodeDock, m_logDock, Qt::Vertical);
+    splitDockWidget(m_nodeDock, m_suggestionDock, Qt::Vertical);
+    splitDockWidget(m_suggestionDock, m_logDock, Qt::Horizontal);
     splitDockWidget(m_nodeDock, m_launchDock, Qt::Horizontal);
-    splitDockWidget(m_launchDock, m_sourceDock, Qt::Horizontal);
+    splitDockWidget(m_launchDock, m_diagramDock, Qt::Horizontal);
+    splitDockWidget(m_diagramDock, m_sourceDock, Qt::Horizontal);
     for (QDockWidget *dock : docks)
         dock->show();
     if (m_toolBar)
         m_toolBar->show();
     const int w = std::max(width(), 800);
     const int h = std::max(height(), 600);
-    resizeDocks({m_nodeDock, m_launchDock, m_sourceDock}, {w * 3 / 10, w * 4 / 10, w * 3 / 10},
-                Qt::Horizontal);
-    resizeDocks({m_nodeDock, m_logDock}, {h * 4 / 5, h / 5}, Qt::Vertical);
-}
-
-void MainWindow::createActions()
-{
-    m_openAction = new QAction(Icons::open(), tr("&Open Workspace…"), this);
-    m_openAction->setShortcut(QKeySequence::Open);
-    m_openAction->setStatusTip(tr("Open a ROS 2 workspace folder and recover its architecture"));
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::openWorkspaceDialog);
-
-    m_exportAction = new QAction(tr("&Export Artifacts…"), this);
-    m_exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
-    m_exportAction->setStatusTip(
-        tr("Write atomic_nodes.json, launch_dependencies.json, diagnostics.json and one "
-           "PlantUML diagram per node"));
-    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportArtifactsDialog);
-
-    m_quitAction = new QAction(tr("&Quit"), this);
-    m_quitAction->setShortcut(QKeySequence::Quit);
-    m_quitAction->setMenuRole(QAction::QuitRole);
-    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
-
-    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
-    m_undoAction->setShortcut(QKeySequence::Undo);
-    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    m_redoAction->setShortcut(QKeySequence::Redo);
-
-    m_findAction = new QAction(tr("&Find…"), this);
-    m_findAction->setShortcut(QKeySequence::Find);
-    m_findAction->setStatusTip(tr("Filter the node tree, or the launch tree when it has the "
-                                  "focus, by name"));
-    connect(m_findAction, &QAction::triggered, this, [this] {
-        // Find filters the tree a person works in; the atomic nodes by default.
-        if (m_launchPanel->isAncestorOf(QApplication::focusWidget()) &&
-            m_launchPanel->isVisible()) {
-            m_launchPanel->focusFilter();
-            return;
-        }
-        m_nodeDock->show();
-        m_nodeDock->raise();
-        m_nodePanel->focusFilter();
-    });
-
-    m_nextDiagnosticAction = new QAction(tr("&Next Diagnostic"), this);
-    m_nextDiagnosticAction->setShortcut(QKeySequence(Qt::Key_F8));
-    connect(m_nextDiagnosticAction, &QAction::triggered, this, [this] {
-        m_logDock->show();
-        m_logView->selectNextDiagnostic();
-    });
-    m_previousDiagnosticAction = new QAction(tr("&Previous Diagnostic"), this);
-    m_previousDiagnosticAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F8));
-    connect(m_previousDiagnosticAction, &QAction::triggered, this, [this] {
-        m_logDock->show();
-        m_logView->selectPreviousDiagnostic();
-    });
-
-    m_runAction = new QAction(Icons::run(), tr("&Run All Stages"), this);
-    m_runAction->setIconText(tr("Run all"));
-    m_runAction->setShortcut(QKeySequence(Qt::Key_F5));
-    m_runAction->setToolTip(tr("Recover the atomic nodes and the launch tree of the workspace "
-                               "(F5)"));
-    m_runAction->setStatusTip(tr("Stage 1 finds node classes, their ports and executables; "
-                                 "stage 2 reads the launch files"));
-    connect(m_runAction, &QAction::triggered, this, &MainWindow::runAllStages);
-
-    m_runLaunchAction = new QAction(Icons::runLaunch(), tr("Run Stage &2: Launch Files"), this);
-    m_runLaunchAction->setIconText(tr("Stage 2"));
-    m_runLaunchAction->setShortcut(QKeySequence(Qt::Key_F6));
-    m_runLaunchAction->setToolTip(tr("Read the launch files again against the current atomic "
-                                     "nodes, with the chosen launch arguments (F6)"));
-    m_runLaunchAction->setStatusTip(tr("Re-run stage 2 only: launch files, includes, namespaces "
-                                       "and node instances"));
-    connect(m_runLaunchAction, &QAction::triggered, this, &MainWindow::runLaunchStage);
-
-    m_launchArgumentsAction = new QAction(Icons::launchArguments(), tr("Launch &Arguments…"), this);
-    m_launchArgumentsAction->setIconText(tr("Arguments"));
-    m_launchArgumentsAction->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
-    m_launchArgumentsAction->setToolTip(
-        tr("Choose the root launch file and the launch argument values for stage 2"));
-    connect(m_launchArgumentsAction, &QAction::triggered, this,
-            &MainWindow::showLaunchArgumentsDialog);
-
-    m_cancelAction = new QAction(Icons::stop(), tr("&Cancel Stage"), this);
-    m_cancelAction->setIconText(tr("Cancel"));
-    m_cancelAction->setShortcut(QKeySequence(Qt::Key_Escape));
-    m_cancelAction->setToolTip(tr("Stop the running stage and keep the previous result (Esc)"));
-    connect(m_cancelAction, &QAction::triggered, m_runner, &StageRunner::cancel);
-
-    m_resetLayoutAction = new QAction(tr("&Reset Layout"), this);
-    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
-
-    m_aboutAction = new QAction(tr("&About rosarch"), this);
-    m_aboutAction->setMenuRole(QAction::AboutRole);
-    connect(m_aboutAction, &QAction::triggered, this, [this] {
-        AboutDialog dialog(this);
-        dialog.exec();
-    });
-    m_aboutQtAction = new QAction(tr("About &Qt"), this);
-    m_aboutQtAction->setMenuRole(QAction::AboutQtRole);
-    connect(m_aboutQtAction, &QAction::triggered, qApp, &QApplication::aboutQt);
-}
-
-void MainWindow::createMenus()
-{
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_openAction);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
-    file->addSeparator();
-    file->addAction(m_exportAction);
-    file->addSeparator();
-    file->addAction(m_quitAction);
-
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(m_undoAction);
-    edit->addAction(m_redoAction);
-    edit->addSeparator();
-    edit->addAction(m_findAction);
-    edit->addSeparator();
-    edit->addAction(m_nextDiagnosticAction);
-    edit->addAction(m_previousDiagnosticAction);
-
-    m_toolBar = addToolBar(tr("Main"));
-    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
-    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_toolBar->setMovable(false);
-    m_toolBar->addAction(m_openAction);
-    m_toolBar->addSeparator();
-    m_toolBar->addAction(m_runAction);
-    m_toolBar->addAction(m_runLaunchAction);
-    m_toolBar->addAction(m_launchArgumentsAction);
-    m_toolBar->addAction(m_cancelAction);
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget *dock : {m_nodeDock, m_launchDock, m_sourceDock, m_logDock})
-        view->addAction(dock->toggleViewAction());
-    m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
-    view->addAction(m_toolBar->toggleViewAction());
-    view->addSeparator();
-    view->addAction(m_resetLayoutAction);
-
-    QMenu *stages = menuBar()->addMenu(tr("&Stages"));
-    stages->addAction(m_runAction);
-    stages->addAction(m_runLaunchAction);
-    stages->addSeparator();
-    stages->addAction(m_launchArgumentsAction);
-    stages->addSeparator();
-    stages->addAction(m_cancelAction);
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(m_aboutAction);
-    help->addAction(m_aboutQtAction);
+    resizeDocks({m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock},
+                {w * 2 / 10, w * 2 / 10, w * 4 / 10, w * 2 / 10}, Qt::Horizontal);
+    resizeDocks({m_nodeDock, m_suggestionDock}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
+    resizeDocks({m_suggestionDock, m_logDock}, {w / 2, w / 2}, Qt::Horizontal);
 }
 
 void MainWindow::createStatusBar()
@@ -483,7 +364,9 @@ bool MainWindow::exportArtifactsTo(const QString &folder)
 {
     QStringList written;
     QString error;
-    const Recovery recovery{m_document->atomicNodes(), m_document->launchDependencies()};
+    // Accepted subsystem groupings are exported as nested composites in the CCDs.
+    const Recovery recovery{m_document->atomicNodes(), m_document->launchDependencies(),
+                            DiagramController::groupedArchitecture(*m_document)};
     if (!ArtifactWriter::writeAll(recovery, folder, &written, &error)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\n"
@@ -519,7 +402,9 @@ void MainWindow::updateCounts()
         unresolved += n.unresolved.size();
     for (const LaunchFileInstance &i : launch.instances)
         unresolved += i.unresolved.size();
-    const qsizetype diagnostics = list.diagnostics.size() + launch.diagnostics.size();
+    const Architecture &arch = m_document->architecture();
+    const qsizetype diagnostics =
+        list.diagnostics.size() + launch.diagnostics.size() + arch.diagnostics.size();
     // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
     const auto count = [](qsizetype n, const QString &one, const QString &many) {
         return n == 1 ? one : many.arg(n);
@@ -531,11 +416,13 @@ void MainWindow::updateCounts()
         count(launch.launchFiles.size(), tr("1 launch file"), tr("%1 launch files")),
         count(launch.nodes.size(), tr("1 instance"), tr("%1 instances")),
         count(unresolved, tr("1 unresolved"), tr("%1 unresolved")),
+        count(arch.composites.size(), tr("1 composite"), tr("%1 composites")),
         count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
     m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
     m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
                                  "Stage 2: launch files found, node instances they start and "
-                                 "expressions that could not be resolved statically."));
+                                 "expressions that could not be resolved statically.\n"
+                                 "Stage 3: composites, one per launch-file instance."));
     m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
     m_nextDiagnosticAction->setEnabled(diagnostics > 0);
     m_previousDiagnosticAction->setEnabled(diagnostics > 0);

@@ -15,6 +15,8 @@ namespace rosarch {
 
 class AtomicNodeModel;
 class AtomicNodePanel;
+class DiagramController;
+class DiagramPanel;
 class DiagnosticModel;
 class Document;
 class LaunchTreeModel;
@@ -23,10 +25,13 @@ class LogView;
 class SourceView;
 class StageController;
 class StageRunner;
+class SuggestionController;
+class SuggestionModel;
+class SuggestionPanel;
 class Traceability;
 
 /// The main window: wires the Document, the stage runner and the panels (atomic nodes,
-/// launch tree, source, log), owns the menus, toolbar and status bar, and remembers the
+/// launch tree, composed diagram, source, log), owns the menus, toolbar and status bar, and remembers the
 /// session.
 class MainWindow : public QMainWindow
 {
@@ -35,10 +40,10 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a workspace folder and runs stages 1 and 2 on it with the launch options
+    /// Opens a workspace folder and runs stages 1 to 3 on it with the launch options
     /// remembered for it.
     void openWorkspace(const QString &path);
-    /// Runs stages 1 and 2 again (F5).
+    /// Runs stages 1 to 3 again (F5).
     void runAllStages();
     /// Runs stage 2 alone against the current atomic nodes, with the current launch options.
     void runLaunchStage();
@@ -61,6 +66,11 @@ public:
     QAction *runLaunchAction() const { return m_runLaunchAction; }
     QAction *launchArgumentsAction() const { return m_launchArgumentsAction; }
     SourceView *sourceView() const { return m_sourceView; }
+    DiagramPanel *diagramPanel() const { return m_diagramPanel; }
+    DiagramController *diagrams() const { return m_diagrams; }
+    SuggestionPanel *suggestionPanel() const { return m_suggestionPanel; }
+    SuggestionController *suggestions() const { return m_suggestions; }
+    QAction *suggestAction() const { return m_suggestAction; }
     LogView *logView() const { return m_logView; }
     QLabel *countsLabel() const { return m_countsLabel; }
 
@@ -100,9 +110,16 @@ private:
     AtomicNodePanel *m_nodePanel = nullptr;
     LaunchTreePanel *m_launchPanel = nullptr;
     SourceView *m_sourceView = nullptr;
+    DiagramPanel *m_diagramPanel = nullptr;
+    DiagramController *m_diagrams = nullptr;
+    SuggestionModel *m_suggestionModel = nullptr;
+    SuggestionPanel *m_suggestionPanel = nullptr;
+    SuggestionController *m_suggestions = nullptr;
+    QDockWidget *m_suggestionDock = nullptr;
     LogView *m_logView = nullptr;
     QDockWidget *m_nodeDock = nullptr;
     QDockWidget *m_launchDock = nullptr;
+    QDockWidget *m_diagramDock = nullptr;
     QDockWidget *m_sourceDock = nullptr;
     QDockWidget *m_logDock = nullptr;
     QToolBar *m_toolBar = nullptr;
@@ -119,6 +136,7 @@ private:
     QAction *m_runLaunchAction = nullptr;
     QAction *m_launchArgumentsAction = nullptr;
     QAction *m_cancelAction = nullptr;
+    QAction *m_suggestAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_aboutAction = nullptr;
     QAction *m_aboutQtAction = nullptr;

@@ -96,10 +96,10 @@ void StageController::onStageStarted(const QString &root, StageRunner::Job job)
 {
     m_runTimer.start();
     if (job == StageRunner::Job::Recovery) {
-        m_log->appendLog(tr("Stages 1–2 (atomic nodes, launch files) started on %1").arg(root));
-        Q_EMIT statusMessage(tr("Recovering atomic nodes and launch files…"), 0);
+        m_log->appendLog(tr("Stages 1–3 (atomic nodes, launch files, composition) started on %1").arg(root));
+        Q_EMIT statusMessage(tr("Recovering atomic nodes, launch files and their composition…"), 0);
     } else {
-        m_log->appendLog(tr("Stage 2 (launch files) started on %1").arg(root));
+        m_log->appendLog(tr("Stages 2–3 (launch files, composition) started on %1").arg(root));
         Q_EMIT statusMessage(tr("Reading launch files…"), 0);
     }
 }
@@ -115,14 +115,16 @@ void StageController::onStageFinished(const Recovery &result)
     int ports = 0;
     for (const AtomicNode &n : list.nodes)
         ports += int(n.ports.size());
-    report(tr("Stages 1–2 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node "
-              "instances, %6 diagnostics")
+    const Architecture &arch = m_document->architecture();
+    report(tr("Stages 1–3 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node "
+              "instances, %6 composites, %7 diagnostics")
                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
                .arg(list.nodes.size())
                .arg(ports)
                .arg(launch.launchFiles.size())
                .arg(launch.nodes.size())
-               .arg(list.diagnostics.size() + launch.diagnostics.size()));
+               .arg(arch.composites.size())
+               .arg(list.diagnostics.size() + launch.diagnostics.size() + arch.diagnostics.size()));
     restoreSelection();
 }
 
@@ -130,13 +132,14 @@ void StageController::onLaunchStageFinished(const LaunchDependencies &result,
                                             const Architecture &architecture)
 {
     m_document->setLaunchDependencies(result, architecture);
-    report(tr("Stage 2 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node "
-              "instances, %5 diagnostics")
+    report(tr("Stages 2–3 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node "
+              "instances, %5 composites, %6 diagnostics")
                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
                .arg(result.launchFiles.size())
                .arg(result.instances.size())
                .arg(result.nodes.size())
-               .arg(result.diagnostics.size()));
+               .arg(architecture.composites.size())
+               .arg(result.diagnostics.size() + architecture.diagnostics.size()));
     m_restoreNodeId.clear(); // the atomic tree was not rebuilt; its selection stands
     m_restorePortId.clear();
     restoreSelection();
@@ -147,7 +150,7 @@ void StageController::onStageCanceled(StageRunner::Job job)
     m_restoreNodeId.clear();
     m_restorePortId.clear();
     m_restoreLaunchId.clear();
-    const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–2") : tr("Stage 2");
+    const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–3") : tr("Stages 2–3");
     m_log->appendLog(tr("%1 canceled; the previous result is kept.").arg(what));
     Q_EMIT statusMessage(tr("%1 canceled").arg(what), 5000);
 }

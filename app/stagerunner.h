@@ -15,7 +15,7 @@
 namespace rosarch {
 
 /// Runs the stages off the UI thread (QtConcurrent + QPromise) and reports back on the UI
-/// thread: stages 1 and 2 together, or stage 2 alone against a stage 1 result. Starting a
+/// thread: stages 1 to 3 together, or stages 2 and 3 against a stage 1 result. Starting a
 /// new run cancels the previous one; its late result is dropped by comparing generation
 /// numbers, so only the latest run ever reports.
 class StageRunner : public QObject
@@ -25,7 +25,7 @@ public:
     /// What a run computes.
     enum class Job
     {
-        Recovery,   ///< stages 1 and 2
+        Recovery,   ///< stages 1 to 3
         LaunchOnly, ///< stage 2 against the given atomic nodes
     };
     Q_ENUM(Job)
@@ -44,7 +44,7 @@ public:
     /// Replaces the stage 2 re-run (default: analyzeLaunchFiles).
     void setLaunchFunction(LaunchFunction stage);
 
-    /// Starts stages 1 and 2 on `root`, superseding any run in progress.
+    /// Starts stages 1 to 3 on `root`, superseding any run in progress.
     void run(const QString &root, const LaunchOptions &options = {});
     /// Starts stage 2 alone on `root` against `nodes`, superseding any run in progress.
     void runLaunch(const QString &root, const AtomicNodeList &nodes, const LaunchOptions &options);

@@ -1,12 +1,19 @@
 #pragma once
 
+#include "acceptedgrouping.h"
 #include "atomicnodelist.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
 #include "recovery.h"
+#include "suggestiondecision.h"
+#include "suggestionreport.h"
 
+#include <QHash>
+#include <QMap>
 #include <QObject>
 #include <QUndoStack>
+
+#include <optional>
 
 namespace rosarch {
 
@@ -41,6 +48,44 @@ public:
     /// Pushes an undoable change of a node's description (a person's correction).
     void setNodeDescription(const QString &nodeId, const QString &description);
 
+    // Suggestions (issue 5). Decisions are kept per workspace (DecisionStore) and applied
+    // again whenever the model or the suggestions are replaced.
+
+    /// The last suggestion run, each suggestion with its current status.
+    const SuggestionReport &suggestionReport() const { return m_suggestionReport; }
+    const QList<Suggestion> &suggestions() const { return m_suggestionReport.suggestions; }
+    /// The suggestion with `id`, or null.
+    const Suggestion *suggestion(const QString &id) const;
+    /// Replaces the suggestions with a new run's. Suggestions whose subject and proposal were
+    /// decided before get that status; accepted descriptions are applied again. Returns how
+    /// many were already decided.
+    int setSuggestions(SuggestionReport report);
+    /// Pushes an undoable accept; false when there is no such suggestion or it is accepted.
+    bool acceptSuggestion(const QString &id);
+    /// Pushes an undoable reject; false when there is no such suggestion or it is rejected.
+    bool rejectSuggestion(const QString &id);
+    /// Accepts every pending suggestion of `kind` as one undo step; returns how many.
+    int acceptAllSuggestions(Suggestion::Kind kind);
+    /// Every decision of this workspace, by SuggestionDecision::key.
+    const QMap<QString, SuggestionDecision> &decisions() const { return m_decisions; }
+    /// Accepted subsystem groupings whose root and members exist in the current model.
+    QList<AcceptedGrouping> acceptedGroupings() const;
+    /// Accepted values of unresolved items that exist in the current model: item id → value.
+    QMap<QString, QString> acceptedNames() const;
+    /// The decisions file of the workspace ("" without a workspace).
+    QString decisionsPath() const;
+
+    /// What a decision touches, captured for undo: the stored decision of one subject and
+    /// proposal and, for a node description, the node's description.
+    struct DecisionSnapshot
+    {
+        QString key;
+        std::optional<SuggestionDecision> decision; ///< none = pending
+        QString nodeId;                              ///< "" unless a node description
+        QString description;
+        bool operator==(const DecisionSnapshot &) const = default;
+    };
+
 Q_SIGNALS:
     /// The whole model is about to be replaced; item models begin their reset here.
     void modelAboutToBeReset();
@@ -54,15 +99,37 @@ Q_SIGNALS:
     void launchOptionsChanged(const rosarch::LaunchOptions &options);
     /// One node changed (an edit, its undo or redo).
     void nodeChanged(const QString &nodeId);
+    /// The suggestion list is about to be replaced (a suggestion run, or the model changed).
+    void suggestionsAboutToBeReset();
+    /// The suggestion list was replaced.
+    void suggestionsReset();
+    /// One suggestion's status changed (a decision, its undo or redo).
+    void suggestionChanged(const QString &id);
+    /// The accepted decisions changed (groupings, names, descriptions).
+    void decisionsChanged();
+    /// The decisions could not be written; `message` says where and why.
+    void decisionsSaveFailed(const QString &message);
 
 private:
     friend class SetNodeDescriptionCommand;
+    friend class DecideSuggestionCommand;
     void applyNodeDescription(const QString &nodeId, const QString &description);
+
+    DecisionSnapshot snapshot(const Suggestion &suggestion) const;
+    DecisionSnapshot decided(const Suggestion &suggestion, Suggestion::Status status) const;
+    void restore(const DecisionSnapshot &snapshot);
+    /// Reads the workspace's decisions and applies the accepted descriptions (no signals).
+    void loadDecisions();
+    void saveDecisions();
+    void clearSuggestions();
 
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
     Architecture m_architecture;
     LaunchOptions m_launchOptions;
+    SuggestionReport m_suggestionReport;
+    QMap<QString, SuggestionDecision> m_decisions;
+    QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
 };
 

@@ -100,6 +100,7 @@ QString CcdWriter::write(const Composite &c)
         byNamespace[ns].append(&part);
     }
     QSet<QString> nsAliases;
+    QSet<QString> subAliases;
     for (const QString &ns : std::as_const(namespaces)) {
         const bool scoped = !ns.isEmpty();
         const QString indent = scoped ? QStringLiteral("    ") : QStringLiteral("  ");
@@ -110,8 +111,29 @@ QString CcdWriter::write(const Composite &c)
             nsAliases.insert(alias);
             out += QStringLiteral("  package \"%1\" as %2 <<namespace>> {\n").arg(label(ns), alias);
         }
-        for (const RosNodePart *part : byNamespace.value(ns))
-            out += partBlock(*part, indent);
+        // A subsystem is written where its first part stands, with all its parts of this
+        // namespace; without subsystems this is the plain list of parts.
+        const QList<const RosNodePart *> parts = byNamespace.value(ns);
+        QSet<QString> written;
+        for (const RosNodePart *part : parts) {
+            if (part->subsystem.isEmpty()) {
+                out += partBlock(*part, indent);
+                continue;
+            }
+            if (written.contains(part->subsystem))
+                continue;
+            written.insert(part->subsystem);
+            QString alias = QStringLiteral("sub_") + safe(part->subsystem);
+            for (int n = 2; subAliases.contains(alias); ++n)
+                alias = QStringLiteral("sub_%1_%2").arg(safe(part->subsystem)).arg(n);
+            subAliases.insert(alias);
+            out += QStringLiteral("%1component \"%2\" as %3 <<Subsystem>> {\n")
+                       .arg(indent, label(part->subsystem), alias);
+            for (const RosNodePart *member : parts)
+                if (member->subsystem == part->subsystem)
+                    out += partBlock(*member, indent + QStringLiteral("  "));
+            out += indent + QStringLiteral("}\n");
+        }
         if (scoped)
             out += QStringLiteral("  }\n");
     }

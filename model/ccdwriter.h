@@ -9,7 +9,8 @@ namespace rosarch {
 
 /// Writes ComposedClassifierDiagrams (blueprint §3) in PlantUML, deterministically: active
 /// parts with their active ports, one package per namespace, bound topics, services and
-/// actions, and the promoted boundary ports with their delegations.
+/// actions, and the promoted boundary ports with their delegations. Parts of an accepted
+/// subsystem (RosNodePart::subsystem) sit in a nested <<Subsystem>> component per namespace.
 class CcdWriter
 {
 public:

@@ -9,6 +9,12 @@ PlantUmlDocument::PlantUmlDocument(const PlantUmlSyntax &syntax, UmlDiagram *dia
     for (const PlantUmlDeclaration &d : syntax.declarations) {
         QStringList canonical;
         for (const QString &written : d.stereotypes) {
+            // Our writer's nested subsystem: structure only, no element of its own (§4), so
+            // it is known (no "not one of ours" note) but read as a plain container.
+            if (written.trimmed().compare(QLatin1String("Subsystem"), Qt::CaseInsensitive) == 0) {
+                canonical << QStringLiteral("Subsystem");
+                continue;
+            }
             QString why;
             const QString s = UmlNames::stereotype(written, &why);
             if (!why.isEmpty())

@@ -2,10 +2,9 @@
 // (tests/data/<case>/expected/{acd,ccd}), and deliberately broken variants of the
 // compose_system CCDs (tests/data/compose_system/broken) scored below 1.0 on exactly the
 // elements that were broken.
-#include "acdwriter.h"
-#include "ccdwriter.h"
 #include "evaluator.h"
 #include "plantumlreader.h"
+#include "recovereddiagrams.h"
 #include "recovery.h"
 #include "testsupport.h"
 #include "umlmodel.h"
@@ -15,19 +14,6 @@
 using namespace rosarch;
 
 namespace {
-
-/// What rosarch writes for a workspace, read back through the PlantUML reader.
-QList<UmlDiagram> recoveredDiagrams(const Recovery &r)
-{
-    QList<UmlDiagram> out;
-    const QMap<QString, QString> acdStems = AcdWriter::fileStems(r.nodes);
-    for (const AtomicNode &n : r.nodes.nodes)
-        out += PlantUmlReader::read(AcdWriter::write(n), acdStems.value(n.id) + QStringLiteral(".puml"));
-    const QMap<QString, QString> ccdStems = CcdWriter::fileStems(r.architecture);
-    for (const Composite *c : r.architecture.representatives())
-        out += PlantUmlReader::read(CcdWriter::write(*c), ccdStems.value(c->instanceId) + QStringLiteral(".puml"));
-    return out;
-}
 
 QStringList differences(const LevelEvaluation &level)
 {
@@ -63,7 +49,7 @@ private Q_SLOTS:
         QFETCH(QString, caseName);
         QFETCH(QString, workspace);
         const Recovery r = recoverWorkspace(workspace);
-        const QList<UmlDiagram> recovered = recoveredDiagrams(r);
+        const QList<UmlDiagram> recovered = recoveredDiagrams(r.nodes, r.architecture);
         for (const QString &level : {QStringLiteral("acd"), QStringLiteral("ccd")}) {
             const QString dir = test::dataDir(caseName + QStringLiteral("/expected/") + level);
             if (!QFileInfo(dir).isDir())

@@ -283,6 +283,55 @@ endlegend
         QCOMPARE(d.warnings, QStringList());
     }
 
+    void ccdWithSubsystemsReadsLikeWithout()
+    {
+        // Our writer's accepted groupings: <<Subsystem>> components around parts, inside a
+        // namespace package and at the root. They add structure but no element, change no
+        // namespace, and are not taken for parts.
+        const UmlDiagram d = readOne(QStringLiteral(R"uml(@startuml
+component "demo" as demo <<ComposedRosNodeClassifier>> {
+  portin "s1 / sensor_msgs::msg::LaserScan" as b_s1
+  portout "p1 / std_msgs::msg::String" as b_p1
+  package "robot1" as ns_robot1 <<namespace>> {
+    component "talking" as sub_talking <<Subsystem>> {
+      component "talker:\nTalker" as part1 <<RosNodePart>> {
+        portin "s1" as part1_s1
+        portout "p1" as part1_p1
+      }
+    }
+  }
+  component "listening" as sub_listening <<Subsystem>> {
+    component "listener:\nListener" as part2 <<RosNodePart>> {
+      portin "s1" as part2_s1
+      portout "p1" as part2_p1
+    }
+  }
+  queue "/chatter" as q_chatter
+  part1_p1 --[#Green,bold]--> q_chatter
+  q_chatter --[#Blue,bold]--> part2_s1
+  b_s1 --[#Blue,bold]--> part1_s1
+  part2_p1 --[#Green,bold]--> b_p1
+}
+@enduml
+)uml"));
+        QCOMPARE(d.level, UmlLevel::Ccd);
+        QCOMPARE(d.name, QStringLiteral("demo"));
+        QCOMPARE(describe(d),
+                 sorted({QStringLiteral("part=talker"), QStringLiteral("part=listener"),
+                         QStringLiteral("part_type=talker:Talker"),
+                         QStringLiteral("part_type=listener:Listener"),
+                         QStringLiteral("namespace=(robot1, talker)"),
+                         QStringLiteral("namespace=(/, listener)"), QStringLiteral("topic=chatter"),
+                         QStringLiteral("boundary_port=(in, sensor_msgs/msg/LaserScan)"),
+                         QStringLiteral("boundary_port=(out, std_msgs/msg/String)"),
+                         QStringLiteral("connection=publish talker -> chatter"),
+                         QStringLiteral("connection=subscribe chatter -> listener"),
+                         QStringLiteral("connection=delegation boundary:in/sensor_msgs/msg/LaserScan -> talker"),
+                         QStringLiteral("connection=delegation listener -> boundary:out/std_msgs/msg/String")}));
+        QCOMPARE(d.notes, QStringList());
+        QCOMPARE(d.warnings, QStringList());
+    }
+
     void ccdVariants_data()
     {
         QTest::addColumn<QString>("text");

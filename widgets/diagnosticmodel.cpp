@@ -18,7 +18,8 @@ int DiagnosticModel::rowCount(const QModelIndex &parent) const
 {
     return parent.isValid() ? 0
                             : int(m_document->atomicNodes().diagnostics.size() +
-                                  m_document->launchDependencies().diagnostics.size());
+                                  m_document->launchDependencies().diagnostics.size() +
+                                  m_document->architecture().diagnostics.size());
 }
 
 int DiagnosticModel::columnCount(const QModelIndex &parent) const
@@ -28,15 +29,18 @@ int DiagnosticModel::columnCount(const QModelIndex &parent) const
 
 const Diagnostic *DiagnosticModel::diagnostic(const QModelIndex &index) const
 {
-    // Stage 1's diagnostics, then stage 2's.
-    const QList<Diagnostic> &nodes = m_document->atomicNodes().diagnostics;
-    const QList<Diagnostic> &launch = m_document->launchDependencies().diagnostics;
     if (!index.isValid() || index.model() != this || index.row() < 0)
         return nullptr;
-    if (index.row() < nodes.size())
-        return &nodes[index.row()];
-    const qsizetype row = index.row() - nodes.size();
-    return row < launch.size() ? &launch[row] : nullptr;
+    // Stage 1's diagnostics, then stage 2's, then stage 3's.
+    qsizetype row = index.row();
+    for (const QList<Diagnostic> *list : {&m_document->atomicNodes().diagnostics,
+                                          &m_document->launchDependencies().diagnostics,
+                                          &m_document->architecture().diagnostics}) {
+        if (row < list->size())
+            return &(*list)[row];
+        row -= list->size();
+    }
+    return nullptr;
 }
 
 QString DiagnosticModel::severityLabel(Diagnostic::Severity severity)

@@ -1,0 +1,313 @@
+#include "diagramcontroller.h"
+#include "appsettings.h"
+#include "diagrampanel.h"
+#include "document.h"
+#include "evaluationreport.h"
+#include "evaluator.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
+#include "logview.h"
+#include "recovereddiagrams.h"
+#include "subsystemgrouping.h"
+#include "traceability.h"
+#include "umlmodel.h"
+
+#include <QAction>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QPlainTextEdit>
+#include <QVBoxLayout>
+
+namespace rosarch {
+
+namespace {
+
+QString plain(QString name)
+{
+    while (name.startsWith(QLatin1Char('/')))
+        name.remove(0, 1);
+    return name;
+}
+
+QString partName(const RosNodePart &p)
+{
+    return p.name.isEmpty() ? p.typeName : p.name;
+}
+
+/// The canonical value (blueprint §4, as the reader writes it) of each drawn element, so an
+/// evaluation's false positives can be found in the diagram by key.
+QHash<QString, QStringList> keysByElement(const Composite &c)
+{
+    QHash<QString, QStringList> keys;
+    const auto add = [&](const QString &kind, const QString &value, const QString &key) {
+        keys[kind + QLatin1Char('\n') + value].append(key);
+    };
+    for (const RosNodePart &p : c.parts) {
+        const QString key = QStringLiteral("part:") + p.id;
+        const QString ns = p.nameSpace == QLatin1String("/") ? QStringLiteral("/") : plain(p.nameSpace);
+        add(QStringLiteral("part"), partName(p), key);
+        add(QStringLiteral("part_type"),
+            p.kind == RosNodePart::Kind::Launch ? QLatin1Char(':') + p.typeName : p.name + QLatin1Char(':') + p.typeName, key);
+        add(QStringLiteral("namespace"), QStringLiteral("(%1, %2)").arg(ns, partName(p)), key);
+    }
+    for (const Channel &ch : c.channels)
+        add(channelKindName(ch.kind), plain(ch.name), QStringLiteral("channel:") + ch.id);
+    for (const BoundaryPort &b : c.boundary)
+        add(QStringLiteral("boundary_port"),
+            QStringLiteral("(%1, %2)").arg(b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.type),
+            QStringLiteral("boundary:") + b.id);
+    for (qsizetype i = 0; i < c.connections.size(); ++i) {
+        const Connection &k = c.connections.at(i);
+        const RosNodePart *part = c.part(k.partId);
+        const Channel *ch = c.channel(k.targetId);
+        const BoundaryPort *b = c.boundaryPort(k.targetId);
+        if (!part)
+            continue;
+        const QString p = partName(*part);
+        const QString target = ch ? plain(ch->name)
+                               : b ? QStringLiteral("boundary:%1/%2").arg(b->isInput() ? QStringLiteral("in") : QStringLiteral("out"), b->type)
+                                   : QString();
+        QString value;
+        switch (k.kind) {
+        case Connection::Kind::Publish: value = QStringLiteral("publish %1 -> %2").arg(p, target); break;
+        case Connection::Kind::Subscribe: value = QStringLiteral("subscribe %1 -> %2").arg(target, p); break;
+        case Connection::Kind::Client: value = QStringLiteral("client %1 -> %2").arg(p, target); break;
+        case Connection::Kind::Server: value = QStringLiteral("server %1 -> %2").arg(p, target); break;
+        case Connection::Kind::DelegationIn: value = QStringLiteral("delegation %1 -> %2").arg(target, p); break;
+        case Connection::Kind::DelegationOut: value = QStringLiteral("delegation %1 -> %2").arg(p, target); break;
+        }
+        add(QStringLiteral("connection"), value, QStringLiteral("connection:%1").arg(i));
+    }
+    return keys;
+}
+
+} // namespace
+
+DiagramController::DiagramController(Document *document, DiagramPanel *panel,
+                                     LaunchTreePanel *launchPanel, Traceability *traceability,
+                                     LogView *log, QWidget *window)
+    : QObject(window), m_document(document), m_panel(panel), m_launchPanel(launchPanel),
+      m_traceability(traceability), m_log(log), m_window(window)
+{
+    m_exportSvg = new QAction(tr("Export Diagram as &SVG…"), this);
+    m_exportSvg->setStatusTip(tr("Write the composed diagram shown as an SVG drawing"));
+    connect(m_exportSvg, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("svg")); });
+    m_exportPng = new QAction(tr("Export Diagram as &PNG…"), this);
+    m_exportPng->setStatusTip(tr("Write the composed diagram shown as a PNG image"));
+    connect(m_exportPng, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("png")); });
+    m_compare = new QAction(tr("&Compare with Reference Model…"), this);
+    m_compare->setStatusTip(tr("Score the recovered model against hand-written PlantUML "
+                               "diagrams and mark the differences in the composed diagram"));
+    connect(m_compare, &QAction::triggered, this, &DiagramController::compareDialog);
+    m_clearComparison = new QAction(tr("C&lear Comparison"), this);
+    connect(m_clearComparison, &QAction::triggered, this, [this] {
+        m_evaluation = {};
+        m_referencePath.clear();
+        applyMarks();
+        updateActions();
+    });
+
+    connect(m_document, &Document::modelReset, this, &DiagramController::onModelReset);
+    connect(m_document, &Document::launchDependenciesReset, this, &DiagramController::onModelReset);
+    // Accepting or undoing a grouping changes only how the model is drawn, not the model.
+    connect(m_document, &Document::decisionsChanged, this,
+            [this] { m_panel->setArchitecture(groupedArchitecture(*m_document)); });
+    connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
+            [this](const QModelIndex &index) {
+                onLaunchItemSelected(index.data(LaunchTreeModel::InstanceIdRole).toString());
+            });
+    connect(m_panel, &DiagramPanel::partActivated, this, &DiagramController::onPartActivated);
+    connect(m_panel, &DiagramPanel::evidenceActivated, m_traceability, &Traceability::showEvidence);
+    connect(m_panel, &DiagramPanel::compositeShown, this, &DiagramController::applyMarks);
+    connect(m_panel, &DiagramPanel::layoutFinished, this, [this](bool ok) {
+        if (ok && !m_pendingInstance.isEmpty())
+            m_panel->selectInstance(m_pendingInstance);
+        m_pendingInstance.clear();
+        if (!ok && !m_panel->message().isEmpty())
+            m_log->appendLog(tr("Composed diagram: %1").arg(m_panel->message()));
+        applyMarks();
+    });
+    updateActions();
+}
+
+void DiagramController::onModelReset()
+{
+    m_panel->setArchitecture(groupedArchitecture(*m_document));
+    if (!m_referencePath.isEmpty()) { // the model changed: score it again
+        QString error;
+        compareWithReference(m_referencePath, &error);
+    }
+    updateActions();
+}
+
+Architecture DiagramController::groupedArchitecture(const Document &document)
+{
+    QList<SubsystemGroup> groups;
+    for (const AcceptedGrouping &g : document.acceptedGroupings())
+        groups.append({g.name, g.memberIds, g.rootId});
+    return SubsystemGrouping::apply(document.architecture(), groups);
+}
+
+void DiagramController::onLaunchItemSelected(const QString &instanceId)
+{
+    if (m_fromDiagram || instanceId.isEmpty())
+        return;
+    const LaunchDependencies &launch = m_document->launchDependencies();
+    QString composite = instanceId;
+    if (const NodeInstance *n = launch.node(instanceId))
+        composite = n->launchFileId;
+    else if (!launch.instance(instanceId))
+        return;
+    if (composite != m_panel->currentComposite()) {
+        m_pendingInstance = instanceId == composite ? QString() : instanceId;
+        m_panel->showComposite(composite);
+        return;
+    }
+    if (instanceId != composite)
+        m_panel->selectInstance(instanceId);
+}
+
+void DiagramController::onPartActivated(const QString &instanceId)
+{
+    m_fromDiagram = true;
+    m_traceability->selectLaunchItem(instanceId);
+    m_fromDiagram = false;
+}
+
+void DiagramController::applyMarks()
+{
+    const Composite *c = m_document->architecture().composite(m_panel->currentComposite());
+    const LevelEvaluation *ccd = m_evaluation.level(UmlLevel::Ccd);
+    if (!c || !ccd) {
+        m_panel->setMarks({});
+        return;
+    }
+    const DiagramEvaluation *d = ccd->diagram(c->stem);
+    if (!d) {
+        m_panel->setMarks({}, {tr("the reference has no diagram for %1").arg(c->stem)});
+        return;
+    }
+    const QHash<QString, QStringList> keys = keysByElement(*c);
+    QHash<QString, DiagramMark> marks;
+    QStringList missing;
+    for (const KindEvaluation &k : d->kinds) {
+        for (const UmlElement &e : k.falsePositives)
+            for (const QString &key : keys.value(e.kind + QLatin1Char('\n') + e.value))
+                marks.insert(key, DiagramMark::Extra);
+        for (const UmlElement &e : k.falseNegatives)
+            missing << QStringLiteral("%1 %2").arg(umlKindLabel(e.kind), e.value);
+    }
+    m_panel->setMarks(marks, missing);
+}
+
+QString DiagramController::compareWithReference(const QString &path, QString *error)
+{
+    UmlModel reference;
+    if (!UmlModel::load(path, &reference, error))
+        return {};
+    const QList<UmlDiagram> recovered =
+        recoveredDiagrams(m_document->atomicNodes(), m_document->architecture());
+    QList<UmlLevel> levels;
+    for (UmlLevel l : {UmlLevel::Acd, UmlLevel::Ccd})
+        if (reference.hasLevel(l))
+            levels << l;
+    if (levels.isEmpty()) {
+        *error = tr("No ACD or CCD diagram could be read in %1.").arg(QDir::toNativeSeparators(path));
+        return {};
+    }
+    m_evaluation = Evaluator::evaluate(reference.ofLevel(UmlLevel::Acd) + reference.ofLevel(UmlLevel::Ccd),
+                                       recovered, levels);
+    m_referencePath = path;
+    QString text;
+    for (const LevelEvaluation &l : m_evaluation.levels) {
+        int count = 0;
+        for (const UmlDiagram &d : recovered)
+            count += d.level == l.level ? 1 : 0;
+        text += EvaluationReport::levelText(l, count);
+        m_log->appendLog(tr("Compared with %1 (%2): micro F1 %3, macro F1 %4")
+                             .arg(QDir::toNativeSeparators(path), umlLevelName(l.level).toUpper())
+                             .arg(l.micro.f1, 0, 'f', 3)
+                             .arg(l.macro.f1, 0, 'f', 3));
+    }
+    for (const UmlDiagram &d : reference.diagrams)
+        for (const QString &n : d.notes)
+            text += QStringLiteral("%1: %2\n").arg(d.file, n);
+    applyMarks();
+    updateActions();
+    return text;
+}
+
+void DiagramController::compareDialog()
+{
+    AppSettings settings;
+    const QString start = m_referencePath.isEmpty() ? settings.lastExportFolder() : m_referencePath;
+    const QString path = QFileDialog::getExistingDirectory(
+        m_window, tr("Reference Model (folder of PlantUML diagrams)"), start);
+    if (path.isEmpty())
+        return;
+    QString error;
+    const QString report = compareWithReference(path, &error);
+    if (report.isEmpty()) {
+        m_log->appendLog(tr("Comparison failed: %1").arg(error));
+        Q_EMIT statusMessage(error, 8000);
+        return;
+    }
+    auto *dialog = new QDialog(m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Comparison with %1").arg(QDir::toNativeSeparators(path)));
+    auto *layout = new QVBoxLayout(dialog);
+    auto *text = new QPlainTextEdit(report, dialog);
+    text->setReadOnly(true);
+    text->setLineWrapMode(QPlainTextEdit::NoWrap);
+    text->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    layout->addWidget(text);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::reject);
+    layout->addWidget(buttons);
+    dialog->resize(900, 600);
+    dialog->open();
+}
+
+bool DiagramController::exportDiagram(const QString &path)
+{
+    const bool svg = path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive);
+    const bool ok = svg ? m_panel->exportSvg(path) : m_panel->exportPng(path);
+    const QString where = QDir::toNativeSeparators(path);
+    m_log->appendLog(ok ? tr("Exported the composed diagram to %1").arg(where)
+                        : tr("Could not write the composed diagram to %1").arg(where));
+    Q_EMIT statusMessage(ok ? tr("Exported %1").arg(where) : tr("Export failed: %1").arg(where), 5000);
+    return ok;
+}
+
+void DiagramController::exportDialog(const QString &suffix)
+{
+    AppSettings settings;
+    const Composite *c = m_document->architecture().composite(m_panel->currentComposite());
+    const QString name = (c ? c->stem : QStringLiteral("diagram")) + QLatin1Char('.') + suffix;
+    const QString start = QDir(settings.lastExportFolder().isEmpty() ? QDir::homePath()
+                                                                    : settings.lastExportFolder())
+                              .filePath(name);
+    const QString filter = suffix == QLatin1String("svg") ? tr("SVG drawing (*.svg)") : tr("PNG image (*.png)");
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Export Composed Diagram"), start, filter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QLatin1Char('.') + suffix;
+    settings.setLastExportFolder(QFileInfo(path).path());
+    exportDiagram(path);
+}
+
+void DiagramController::updateActions()
+{
+    const bool drawn = !m_document->architecture().composites.isEmpty();
+    m_exportSvg->setEnabled(drawn);
+    m_exportPng->setEnabled(drawn);
+    m_compare->setEnabled(!m_document->workspaceRoot().isEmpty());
+    m_clearComparison->setEnabled(!m_evaluation.levels.isEmpty());
+}
+
+} // namespace rosarch

@@ -1,0 +1,76 @@
+#pragma once
+
+#include "composition.h"
+#include "evaluation.h"
+
+#include <QObject>
+#include <QPointer>
+
+class QAction;
+class QWidget;
+
+namespace rosarch {
+
+class DiagramPanel;
+class Document;
+class LaunchTreePanel;
+class LogView;
+class Traceability;
+
+/// Wires the composed-diagram panel into the window: the Document's architecture into the
+/// panel, launch tree selection into the shown composite and part, clicks in the diagram
+/// back to the launch tree and the source, the diagram exports, and the comparison with a
+/// reference PlantUML model (extra elements marked, missing ones listed).
+class DiagramController : public QObject
+{
+    Q_OBJECT
+public:
+    DiagramController(Document *document, DiagramPanel *panel, LaunchTreePanel *launchPanel,
+                      Traceability *traceability, LogView *log, QWidget *window);
+
+    QAction *exportSvgAction() const { return m_exportSvg; }
+    QAction *exportPngAction() const { return m_exportPng; }
+    QAction *compareAction() const { return m_compare; }
+    QAction *clearComparisonAction() const { return m_clearComparison; }
+
+    /// Scores the current model against the reference at `path` (a folder or a .puml file),
+    /// marks the diagram and returns the report text; "" with `error` set when unreadable.
+    QString compareWithReference(const QString &path, QString *error);
+    /// The evaluation of the last comparison (empty when none).
+    const Evaluation &comparison() const { return m_evaluation; }
+    /// Writes the shown diagram; false with a message in the log on failure.
+    bool exportDiagram(const QString &path);
+    /// The architecture as drawn and exported: the Document's, with its accepted subsystem
+    /// groupings applied as nested composites.
+    static Architecture groupedArchitecture(const Document &document);
+
+Q_SIGNALS:
+    void statusMessage(const QString &text, int timeout);
+
+private:
+    void onModelReset();
+    void onLaunchItemSelected(const QString &instanceId);
+    void onPartActivated(const QString &instanceId);
+    void applyMarks();
+    void exportDialog(const QString &suffix);
+    void compareDialog();
+    void updateActions();
+
+    Document *m_document;
+    DiagramPanel *m_panel;
+    LaunchTreePanel *m_launchPanel;
+    Traceability *m_traceability;
+    LogView *m_log;
+    QPointer<QWidget> m_window;
+    QString m_pendingInstance; ///< select once the layout of its composite is done
+    bool m_fromDiagram = false; ///< a diagram click is being forwarded to the launch tree
+    Evaluation m_evaluation;
+    QString m_referencePath;
+
+    QAction *m_exportSvg;
+    QAction *m_exportPng;
+    QAction *m_compare;
+    QAction *m_clearComparison;
+};
+
+} // namespace rosarch

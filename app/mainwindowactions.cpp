@@ -1,0 +1,195 @@
+// MainWindow's actions, menus and toolbar (the rest of the class is in mainwindow.cpp).
+#include "aboutdialog.h"
+#include "atomicnodepanel.h"
+#include "diagramcontroller.h"
+#include "document.h"
+#include "icons.h"
+#include "launchtreepanel.h"
+#include "logview.h"
+#include "mainwindow.h"
+#include "stagerunner.h"
+#include "suggestioncontroller.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QMenu>
+#include <QMenuBar>
+#include <QToolBar>
+#include <QUndoStack>
+
+namespace rosarch {
+
+void MainWindow::createActions()
+{
+    m_openAction = new QAction(Icons::open(), tr("&Open Workspace…"), this);
+    m_openAction->setShortcut(QKeySequence::Open);
+    m_openAction->setStatusTip(tr("Open a ROS 2 workspace folder and recover its architecture"));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::openWorkspaceDialog);
+
+    m_exportAction = new QAction(tr("&Export Artifacts…"), this);
+    m_exportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
+    m_exportAction->setStatusTip(
+        tr("Write the JSON artifacts and the PlantUML diagrams: one per node class (ACD) and "
+           "one per launch file (CCD)"));
+    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportArtifactsDialog);
+
+    m_quitAction = new QAction(tr("&Quit"), this);
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setShortcut(QKeySequence::Redo);
+
+    m_findAction = new QAction(tr("&Find…"), this);
+    m_findAction->setShortcut(QKeySequence::Find);
+    m_findAction->setStatusTip(tr("Filter the node tree, or the launch tree when it has the "
+                                  "focus, by name"));
+    connect(m_findAction, &QAction::triggered, this, [this] {
+        // Find filters the tree a person works in; the atomic nodes by default.
+        if (m_launchPanel->isAncestorOf(QApplication::focusWidget()) &&
+            m_launchPanel->isVisible()) {
+            m_launchPanel->focusFilter();
+            return;
+        }
+        m_nodeDock->show();
+        m_nodeDock->raise();
+        m_nodePanel->focusFilter();
+    });
+
+    m_nextDiagnosticAction = new QAction(tr("&Next Diagnostic"), this);
+    m_nextDiagnosticAction->setShortcut(QKeySequence(Qt::Key_F8));
+    connect(m_nextDiagnosticAction, &QAction::triggered, this, [this] {
+        m_logDock->show();
+        m_logView->selectNextDiagnostic();
+    });
+    m_previousDiagnosticAction = new QAction(tr("&Previous Diagnostic"), this);
+    m_previousDiagnosticAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F8));
+    connect(m_previousDiagnosticAction, &QAction::triggered, this, [this] {
+        m_logDock->show();
+        m_logView->selectPreviousDiagnostic();
+    });
+
+    m_runAction = new QAction(Icons::run(), tr("&Run All Stages"), this);
+    m_runAction->setIconText(tr("Run all"));
+    m_runAction->setShortcut(QKeySequence(Qt::Key_F5));
+    m_runAction->setToolTip(tr("Recover the atomic nodes, the launch tree and the composed "
+                               "architecture of the workspace (F5)"));
+    m_runAction->setStatusTip(tr("Stage 1 finds node classes, their ports and executables; "
+                                 "stage 2 reads the launch files; stage 3 composes them"));
+    connect(m_runAction, &QAction::triggered, this, &MainWindow::runAllStages);
+
+    m_runLaunchAction = new QAction(Icons::runLaunch(), tr("Run Stage &2: Launch Files"), this);
+    m_runLaunchAction->setIconText(tr("Stage 2"));
+    m_runLaunchAction->setShortcut(QKeySequence(Qt::Key_F6));
+    m_runLaunchAction->setToolTip(tr("Read the launch files again against the current atomic "
+                                     "nodes, with the chosen launch arguments (F6)"));
+    m_runLaunchAction->setStatusTip(tr("Re-run stage 2 only: launch files, includes, namespaces "
+                                       "and node instances"));
+    connect(m_runLaunchAction, &QAction::triggered, this, &MainWindow::runLaunchStage);
+
+    m_launchArgumentsAction = new QAction(Icons::launchArguments(), tr("Launch &Arguments…"), this);
+    m_launchArgumentsAction->setIconText(tr("Arguments"));
+    m_launchArgumentsAction->setShortcut(QKeySequence(tr("Ctrl+Shift+A")));
+    m_launchArgumentsAction->setToolTip(
+        tr("Choose the root launch file and the launch argument values for stage 2"));
+    connect(m_launchArgumentsAction, &QAction::triggered, this,
+            &MainWindow::showLaunchArgumentsDialog);
+
+    m_cancelAction = new QAction(Icons::stop(), tr("&Cancel Stage"), this);
+    m_cancelAction->setIconText(tr("Cancel"));
+    m_cancelAction->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_cancelAction->setToolTip(tr("Stop the running stage and keep the previous result (Esc)"));
+    connect(m_cancelAction, &QAction::triggered, m_runner, &StageRunner::cancel);
+
+    m_suggestAction = new QAction(tr("&Suggest (Stage 4)"), this);
+    m_suggestAction->setIconText(tr("LLM"));
+    m_suggestAction->setShortcut(QKeySequence(Qt::Key_F7));
+    m_suggestAction->setToolTip(tr("Propose node descriptions and subsystem groupings for review "
+                                   "(F7); asks the LLM when one is configured"));
+    connect(m_suggestAction, &QAction::triggered, this, [this] {
+        m_suggestionDock->show();
+        m_suggestionDock->raise();
+        m_suggestions->run();
+    });
+    connect(m_suggestions, &SuggestionController::runningChanged, m_suggestAction,
+            [this](bool running) { m_suggestAction->setEnabled(!running); });
+
+    m_resetLayoutAction = new QAction(tr("&Reset Layout"), this);
+    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+
+    m_aboutAction = new QAction(tr("&About rosarch"), this);
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, [this] {
+        AboutDialog dialog(this);
+        dialog.exec();
+    });
+    m_aboutQtAction = new QAction(tr("About &Qt"), this);
+    m_aboutQtAction->setMenuRole(QAction::AboutQtRole);
+    connect(m_aboutQtAction, &QAction::triggered, qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_openAction);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
+    file->addSeparator();
+    file->addAction(m_exportAction);
+    file->addAction(m_diagrams->exportSvgAction());
+    file->addAction(m_diagrams->exportPngAction());
+    file->addSeparator();
+    file->addAction(m_diagrams->compareAction());
+    file->addAction(m_diagrams->clearComparisonAction());
+    file->addSeparator();
+    file->addAction(m_quitAction);
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(m_undoAction);
+    edit->addAction(m_redoAction);
+    edit->addSeparator();
+    edit->addAction(m_findAction);
+    edit->addSeparator();
+    edit->addAction(m_nextDiagnosticAction);
+    edit->addAction(m_previousDiagnosticAction);
+
+    m_toolBar = addToolBar(tr("Main"));
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_toolBar->setMovable(false);
+    m_toolBar->addAction(m_openAction);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_runAction);
+    m_toolBar->addAction(m_runLaunchAction);
+    m_toolBar->addAction(m_launchArgumentsAction);
+    m_toolBar->addAction(m_suggestAction);
+    m_toolBar->addAction(m_cancelAction);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget *dock :
+         {m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock, m_suggestionDock, m_logDock})
+        view->addAction(dock->toggleViewAction());
+    m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
+    view->addAction(m_toolBar->toggleViewAction());
+    view->addSeparator();
+    view->addAction(m_resetLayoutAction);
+
+    QMenu *stages = menuBar()->addMenu(tr("&Stages"));
+    stages->addAction(m_runAction);
+    stages->addAction(m_runLaunchAction);
+    stages->addAction(m_suggestAction);
+    stages->addSeparator();
+    stages->addAction(m_launchArgumentsAction);
+    stages->addSeparator();
+    stages->addAction(m_cancelAction);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_aboutAction);
+    help->addAction(m_aboutQtAction);
+}
+
+} // namespace rosarch

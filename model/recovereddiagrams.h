@@ -1,0 +1,16 @@
+#pragma once
+
+#include "atomicnodelist.h"
+#include "composition.h"
+#include "umldiagram.h"
+
+#include <QList>
+
+namespace rosarch {
+
+/// The recovered model as the evaluator sees it: every ACD and CCD rosarch would export,
+/// written and read back through the PlantUML reader, so a comparison with a reference in
+/// the GUI scores exactly what `rosarch eval` would score on the exported files.
+QList<UmlDiagram> recoveredDiagrams(const AtomicNodeList &nodes, const Architecture &architecture);
+
+} // namespace rosarch
