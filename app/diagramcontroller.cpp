@@ -115,12 +115,13 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     connect(m_document, &Document::launchDependenciesReset, this, &DiagramController::onModelReset);
     // Accepting or undoing a grouping changes only how the model is drawn, not the model.
     connect(m_document, &Document::decisionsChanged, this,
-            [this] { m_panel->setArchitecture(groupedArchitecture(*m_document)); });
+            [this] { showArchitecture(); });
     connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) {
                 onLaunchItemSelected(index.data(LaunchTreeModel::InstanceIdRole).toString());
             });
     connect(m_panel, &DiagramPanel::partActivated, this, &DiagramController::onPartActivated);
+    connect(m_panel, &DiagramPanel::portActivated, this, &DiagramController::onPortActivated);
     connect(m_panel, &DiagramPanel::evidenceActivated, m_traceability, &Traceability::showEvidence);
     connect(m_panel, &DiagramPanel::compositeShown, this, &DiagramController::applyMarks);
     connect(m_panel, &DiagramPanel::layoutFinished, this, [this](bool ok) {
@@ -134,9 +135,35 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     updateActions();
 }
 
+void DiagramController::showArchitecture()
+{
+    if (m_preview.isEmpty()) {
+        m_panel->setArchitecture(groupedArchitecture(*m_document));
+        return;
+    }
+    QList<SubsystemGroup> groups = m_preview;
+    for (const AcceptedGrouping &g : m_document->acceptedGroupings())
+        groups.append({g.name, g.memberIds, g.rootId});
+    m_panel->setArchitecture(SubsystemGrouping::apply(m_document->architecture(), groups));
+}
+
+void DiagramController::previewGrouping(const QString &name, const QStringList &memberIds,
+                                        const QString &rootId)
+{
+    const QList<SubsystemGroup> preview =
+        name.isEmpty() ? QList<SubsystemGroup>{} : QList<SubsystemGroup>{{name, memberIds, rootId}};
+    if (preview.isEmpty() && m_preview.isEmpty())
+        return;
+    m_preview = preview;
+    showArchitecture();
+    if (!memberIds.isEmpty())
+        onLaunchItemSelected(memberIds.first());
+}
+
 void DiagramController::onModelReset()
 {
-    m_panel->setArchitecture(groupedArchitecture(*m_document));
+    m_preview.clear();
+    showArchitecture();
     if (!m_referencePath.isEmpty()) { // the model changed: score it again
         QString error;
         compareWithReference(m_referencePath, &error);
@@ -175,6 +202,18 @@ void DiagramController::onPartActivated(const QString &instanceId)
 {
     m_fromDiagram = true;
     m_traceability->selectLaunchItem(instanceId);
+    m_fromDiagram = false;
+}
+
+void DiagramController::onPortActivated(const QString &instanceId, const QString &portId)
+{
+    // The instance in the launch tree and, for a node's port, the port in the node list; the
+    // panel's evidenceActivated (emitted right after) then shows the port's line in code.
+    m_fromDiagram = true;
+    m_traceability->selectLaunchItem(instanceId);
+    if (const NodeInstance *n = m_document->launchDependencies().node(instanceId);
+        n && !n->classId.isEmpty())
+        m_traceability->selectNode(n->classId, portId);
     m_fromDiagram = false;
 }
 

@@ -2,6 +2,7 @@
 
 #include "composition.h"
 #include "evaluation.h"
+#include "subsystemgroup.h"
 
 #include <QObject>
 #include <QPointer>
@@ -38,6 +39,9 @@ public:
     QString compareWithReference(const QString &path, QString *error);
     /// The evaluation of the last comparison (empty when none).
     const Evaluation &comparison() const { return m_evaluation; }
+    /// Draws a pending grouping as it would look once accepted (a preview; nothing changes in
+    /// the model) and shows the composite of its first member; an empty name ends the preview.
+    void previewGrouping(const QString &name, const QStringList &memberIds, const QString &rootId);
     /// Writes the shown diagram; false with a message in the log on failure.
     bool exportDiagram(const QString &path);
     /// The architecture as drawn and exported: the Document's, with its accepted subsystem
@@ -51,6 +55,8 @@ private:
     void onModelReset();
     void onLaunchItemSelected(const QString &instanceId);
     void onPartActivated(const QString &instanceId);
+    void onPortActivated(const QString &instanceId, const QString &portId);
+    void showArchitecture();
     void applyMarks();
     void exportDialog(const QString &suffix);
     void compareDialog();
@@ -66,6 +72,7 @@ private:
     bool m_fromDiagram = false; ///< a diagram click is being forwarded to the launch tree
     Evaluation m_evaluation;
     QString m_referencePath;
+    QList<SubsystemGroup> m_preview; ///< a pending grouping drawn as if accepted
 
     QAction *m_exportSvg;
     QAction *m_exportPng;

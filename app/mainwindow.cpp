@@ -155,6 +155,16 @@ void MainWindow::createPanels()
              if (!ids.isEmpty())
                  m_traceability->selectLaunchItem(ids.first());
          }});
+    // A pending grouping is drawn in the composed diagram as it would look once accepted.
+    connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this,
+            [this](const QString &id) {
+                const Suggestion *s = m_document->suggestion(id);
+                if (s && s->kind == Suggestion::Kind::SubsystemGrouping &&
+                    s->status == Suggestion::Status::Pending)
+                    m_diagrams->previewGrouping(s->value, s->memberIds, s->targetId);
+                else
+                    m_diagrams->previewGrouping({}, {}, {});
+            });
     connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);

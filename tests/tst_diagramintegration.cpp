@@ -1,6 +1,8 @@
 // The composed diagram inside the main window, on tests/data/compose_system: it follows the
 // launch tree, a click in it selects the launch tree and the source, it exports, and a
 // comparison with a reference model marks extra elements and lists missing ones.
+#include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
 #include "diagramcontroller.h"
 #include "diagramitem.h"
 #include "diagrampanel.h"
@@ -118,6 +120,39 @@ private Q_SLOTS:
         // The launch line of the instance shows in the source view.
         QCOMPARE(m_window->sourceView()->currentFile(), QStringLiteral("src/planning/launch/system.launch.py"));
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1")); // no jump elsewhere
+    }
+
+    void portClickSelectsInstanceAndNodePort()
+    {
+        const QString rectifier = instanceNamed(doc(), QStringLiteral("rectifier"));
+        const NodeInstance *n = doc()->launchDependencies().node(rectifier);
+        Q_EMIT panel()->portActivated(rectifier, QStringLiteral("p1")); // what a click on the port emits
+        QCOMPARE(m_window->launchPanel()->currentSourceIndex().data(LaunchTreeModel::InstanceIdRole).toString(),
+                 rectifier);
+        const QModelIndex port = m_window->nodePanel()->currentSourceIndex();
+        QCOMPARE(port.data(AtomicNodeModel::NodeIdRole).toString(), n->classId);
+        QCOMPARE(port.data(AtomicNodeModel::PortIdRole).toString(), QStringLiteral("p1"));
+        QCOMPARE(m_window->sourceView()->currentFile(), QStringLiteral("src/vision/src/rectifier.cpp"));
+    }
+
+    void pendingGroupingIsPreviewedWithoutChangingTheModel()
+    {
+        const QStringList members{instanceNamed(doc(), QStringLiteral("planner")),
+                                  instanceNamed(doc(), QStringLiteral("backup_planner"))};
+        m_window->diagrams()->previewGrouping(QStringLiteral("planning"), members, QStringLiteral("lf1"));
+        QVERIFY(waitForLayout());
+        QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1"));
+        QStringList grouped;
+        for (const RosNodePart &p : panel()->architecture().composite(QStringLiteral("lf1"))->parts)
+            if (p.subsystem == QLatin1String("planning"))
+                grouped << p.name;
+        QCOMPARE(grouped, (QStringList{QStringLiteral("planner"), QStringLiteral("backup_planner")}));
+        QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
+        for (const RosNodePart &p : doc()->architecture().composite(QStringLiteral("lf1"))->parts)
+            QVERIFY(p.subsystem.isEmpty()); // only a preview
+        m_window->diagrams()->previewGrouping({}, {}, {});
+        QVERIFY(waitForLayout());
+        QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
     }
 
     void comparisonMarksExtraAndListsMissing()
