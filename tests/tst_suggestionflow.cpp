@@ -449,6 +449,9 @@ private Q_SLOTS:
 
         // Accepting it through the panel changes the model; Undo takes it back.
         panel.selectSuggestion(llm.id);
+        panel.resize(1100, 460);
+        panel.show();
+        test::saveScreenshot(panel, QStringLiteral("suggestions-fake-llm.png"));
         panel.acceptAction()->trigger();
         QCOMPARE(doc.atomicNodes().node(QStringLiteral("arc_1"))->description, llm.value);
         doc.undoStack()->undo();
@@ -484,6 +487,9 @@ private Q_SLOTS:
         QCOMPARE(errors.size(), 1);
         QVERIFY2(errors[0].contains(QStringLiteral("Cannot connect")), qPrintable(errors[0]));
         QCOMPARE(panel.progressLabel()->text(), QStringLiteral("The LLM failed; see the log"));
+        panel.resize(1100, 460);
+        panel.show();
+        test::saveScreenshot(panel, QStringLiteral("suggestions-failed-llm.png"));
         QVERIFY(log.contains(QStringLiteral("Suggestions: 9 new (8 descriptions, 1 grouping)")));
     }
 
