@@ -19,32 +19,8 @@ namespace {
 
 const QByteArray kKey = "sk-e2e-7d1c0b99";
 
-struct Run
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-/// Runs the binary while this thread's event loop keeps serving the fake server.
-Run runRosarch(const QStringList &args, const QMap<QString, QString> &extraEnv = {})
-{
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    for (const char *name : {"ROSARCH_LLM_ENDPOINT", "ROSARCH_LLM_MODEL", "ROSARCH_PROMPT_DIR", "ROSARCH_LLM_API_KEY", "OPENAI_API_KEY", "DISPLAY", "QT_QPA_PLATFORM"})
-        env.remove(QString::fromLatin1(name));
-    for (auto it = extraEnv.begin(); it != extraEnv.end(); ++it)
-        env.insert(it.key(), it.value());
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(ROSARCH_BINARY), args);
-    Run r;
-    if (!p.waitForStarted(10000) || !QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 120000))
-        return r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
+using rosarch::test::Run;
+using rosarch::test::runRosarch;
 
 QString exampleWorkspace()
 {
