@@ -155,16 +155,25 @@ void MainWindow::createPanels()
              if (!ids.isEmpty())
                  m_traceability->selectLaunchItem(ids.first());
          }});
-    // A pending grouping is drawn in the composed diagram as it would look once accepted.
-    connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this,
-            [this](const QString &id) {
+    // A pending suggestion is previewed where it would land: a description in the node
+    // list, a grouping in the composed diagram. The model changes only on Accept.
+    const auto preview = [this](const QString &id) {
                 const Suggestion *s = m_document->suggestion(id);
-                if (s && s->kind == Suggestion::Kind::SubsystemGrouping &&
-                    s->status == Suggestion::Status::Pending)
+                const bool pending = s && s->status == Suggestion::Status::Pending;
+                if (pending && s->kind == Suggestion::Kind::SubsystemGrouping)
                     m_diagrams->previewGrouping(s->value, s->memberIds, s->targetId);
                 else
                     m_diagrams->previewGrouping({}, {}, {});
-            });
+                if (pending && s->kind == Suggestion::Kind::NodeDescription)
+                    m_nodeModel->setDescriptionPreview(s->targetId, s->value);
+                else
+                    m_nodeModel->setDescriptionPreview({}, {});
+            };
+    connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this, preview);
+    connect(m_document, &Document::suggestionChanged, this, [this, preview](const QString &id) {
+        if (id == m_suggestionPanel->currentSuggestionId()) // accepted or rejected: no preview
+            preview(id);
+    });
     connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);

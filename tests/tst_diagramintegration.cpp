@@ -12,6 +12,7 @@
 #include "launchtreepanel.h"
 #include "mainwindow.h"
 #include "sourceview.h"
+#include "suggestionpanel.h"
 #include "stagerunner.h"
 #include "testsupport.h"
 
@@ -150,6 +151,48 @@ private Q_SLOTS:
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
         for (const RosNodePart &p : doc()->architecture().composite(QStringLiteral("lf1"))->parts)
             QVERIFY(p.subsystem.isEmpty()); // only a preview
+        m_window->diagrams()->previewGrouping({}, {}, {});
+        QVERIFY(waitForLayout());
+        QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
+    }
+
+    void selectedSuggestionsArePreviewed()
+    {
+        const AtomicNode &planner = *std::find_if(doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
+                                                  [](const AtomicNode &n) { return n.className == QLatin1String("Planner"); });
+        Suggestion description;
+        description.id = QStringLiteral("s1");
+        description.kind = Suggestion::Kind::NodeDescription;
+        description.targetId = planner.id;
+        description.value = QStringLiteral("Plans velocity commands from detections.");
+        Suggestion grouping;
+        grouping.id = QStringLiteral("s2");
+        grouping.kind = Suggestion::Kind::SubsystemGrouping;
+        grouping.targetId = QStringLiteral("lf1");
+        grouping.value = QStringLiteral("planning");
+        grouping.memberIds = {instanceNamed(doc(), QStringLiteral("planner")),
+                              instanceNamed(doc(), QStringLiteral("backup_planner"))};
+        SuggestionReport report;
+        report.suggestions = {description, grouping};
+        doc()->setSuggestions(report);
+
+        m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s1"));
+        const QModelIndex cell = m_window->nodeModel()->nodeIndex(planner.id, AtomicNodeModel::DescriptionColumn);
+        QCOMPARE(cell.data().toString(), QStringLiteral("Plans velocity commands from detections. (suggested)"));
+        QVERIFY(cell.data(Qt::FontRole).value<QFont>().italic());
+        QVERIFY(doc()->atomicNodes().node(planner.id)->description.isEmpty()); // only a preview
+
+        m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s2"));
+        QVERIFY(waitForLayout());
+        QCOMPARE(cell.data().toString(), QString()); // the description preview ended
+        QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
+
+        doc()->acceptSuggestion(QStringLiteral("s2")); // accepted: drawn as the model, not a preview
+        QVERIFY(waitForLayout());
+        QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
+        doc()->undoStack()->undo();
+        QVERIFY(waitForLayout());
+        doc()->setSuggestions({});
         m_window->diagrams()->previewGrouping({}, {}, {});
         QVERIFY(waitForLayout());
         QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));

@@ -51,6 +51,7 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
 {
     connect(document, &Document::modelAboutToBeReset, this, [this] { beginResetModel(); });
     connect(document, &Document::modelReset, this, [this] {
+        m_previewNodeId.clear();
         rebuild();
         endResetModel();
     });
@@ -373,6 +374,20 @@ QVariant AtomicNodeModel::packageData(const PackageRow &row, int column, int rol
     }
 }
 
+void AtomicNodeModel::setDescriptionPreview(const QString &nodeId, const QString &description)
+{
+    if (nodeId == m_previewNodeId && description == m_previewDescription)
+        return;
+    const QString previous = m_previewNodeId;
+    m_previewNodeId = nodeId;
+    m_previewDescription = description;
+    for (const QString &id : {previous, nodeId}) {
+        const QModelIndex index = nodeIndex(id, DescriptionColumn);
+        if (index.isValid())
+            Q_EMIT dataChanged(index, index, {Qt::DisplayRole, Qt::FontRole});
+    }
+}
+
 QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role) const
 {
     switch (role) {
@@ -388,12 +403,21 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
         case DetailsColumn:
             return AtomicNodeText::nodeDetails(node);
         case DescriptionColumn:
+            if (role == Qt::DisplayRole && node.id == m_previewNodeId)
+                return tr("%1 (suggested)").arg(m_previewDescription);
             return node.description;
         default:
             return {};
         }
     case Qt::DecorationRole:
         return column == NameColumn ? Icons::node() : QVariant();
+    case Qt::FontRole:
+        if (column == DescriptionColumn && node.id == m_previewNodeId) {
+            QFont f;
+            f.setItalic(true);
+            return f;
+        }
+        return {};
     case Qt::ToolTipRole:
         return AtomicNodeText::nodeToolTip(node);
     case KindRole:

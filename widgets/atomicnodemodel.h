@@ -64,6 +64,10 @@ public:
     /// The innermost element whose evidence covers file:line (a port before its node).
     QModelIndex indexAt(const QString &file, int line) const;
 
+    /// Shows a proposed description of one node (a pending suggestion) in the description
+    /// column, marked as suggested; the model is not changed. An empty id ends the preview.
+    void setDescriptionPreview(const QString &nodeId, const QString &description);
+
 private:
     struct PackageRow
     {
@@ -87,6 +91,8 @@ private:
     QVariant portData(const AtomicNode &node, const Port &port, int column, int role) const;
 
     Document *m_document;
+    QString m_previewNodeId;
+    QString m_previewDescription;
     QList<PackageRow> m_packages;
     QList<NodeLocation> m_nodeLocations; ///< parallel to AtomicNodeList::nodes
 };
