@@ -32,9 +32,9 @@ SuggestionController::SuggestionController(Document *document, SuggestionPanel *
     connect(m_panel, &SuggestionPanel::acceptAllRequested, this, [this](Suggestion::Kind kind) {
         const int n = m_document->acceptAllSuggestions(kind);
         if (n > 0)
-            Q_EMIT logged(tr("Suggestions: accepted %1 %2 as one step (Undo takes it back)")
+            Q_EMIT logged(tr("Suggestions: accepted %1 (%2) as one step (Undo takes it back)")
                               .arg(n)
-                              .arg(SuggestionModel::kindPlural(kind).toLower()));
+                              .arg(SuggestionModel::kindPlural(kind)));
     });
     connect(m_panel, &SuggestionPanel::evidenceActivated, this, [this](const Evidence &e) {
         if (m_previews.showEvidence)
