@@ -8,6 +8,7 @@
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "recovereddiagrams.h"
+#include "recovery.h"
 #include "subsystemgrouping.h"
 #include "traceability.h"
 #include "umlmodel.h"
@@ -141,10 +142,8 @@ void DiagramController::showArchitecture()
         m_panel->setArchitecture(groupedArchitecture(*m_document));
         return;
     }
-    QList<SubsystemGroup> groups = m_preview;
-    for (const AcceptedGrouping &g : m_document->acceptedGroupings())
-        groups.append({g.name, g.memberIds, g.rootId});
-    m_panel->setArchitecture(SubsystemGrouping::apply(m_document->architecture(), groups));
+    // The accepted model with the previewed grouping on top.
+    m_panel->setArchitecture(SubsystemGrouping::apply(groupedArchitecture(*m_document), m_preview));
 }
 
 void DiagramController::previewGrouping(const QString &name, const QStringList &memberIds,
@@ -173,10 +172,32 @@ void DiagramController::onModelReset()
 
 Architecture DiagramController::groupedArchitecture(const Document &document)
 {
+    // Accepted names for ports the code names by an expression ("arc_2/p1" -> value) are
+    // composed again, so they resolve, wire and promote like any literal name.
+    const QMap<QString, QString> names = document.acceptedNames();
+    AtomicNodeList nodes;
+    bool renamed = false;
+    for (auto it = names.cbegin(); it != names.cend(); ++it) {
+        const QString nodeId = it.key().section(QLatin1Char('/'), 0, 0);
+        const QString portId = it.key().section(QLatin1Char('/'), 1);
+        if (portId.isEmpty() || it.key().contains(QLatin1Char('#')))
+            continue; // launch items need a stage 2 run with the value
+        if (!renamed)
+            nodes = document.atomicNodes();
+        for (AtomicNode &n : nodes.nodes)
+            for (Port &p : n.ports)
+                if (n.id == nodeId && p.id == portId && !p.isResolved()) {
+                    p.name = it.value();
+                    p.nameOrigin = NameOrigin::Literal;
+                    renamed = true;
+                }
+    }
+    const Architecture base = renamed ? composeArchitecture(nodes, document.launchDependencies())
+                                      : document.architecture();
     QList<SubsystemGroup> groups;
     for (const AcceptedGrouping &g : document.acceptedGroupings())
         groups.append({g.name, g.memberIds, g.rootId});
-    return SubsystemGrouping::apply(document.architecture(), groups);
+    return SubsystemGrouping::apply(base, groups);
 }
 
 void DiagramController::onLaunchItemSelected(const QString &instanceId)

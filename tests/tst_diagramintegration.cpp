@@ -198,6 +198,40 @@ private Q_SLOTS:
         QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
     }
 
+    void acceptedPortNameIsComposedAgain()
+    {
+        const AtomicNode &commander = *std::find_if(doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
+                                                    [](const AtomicNode &n) { return n.className == QLatin1String("Commander"); });
+        Suggestion name;
+        name.id = QStringLiteral("s3");
+        name.kind = Suggestion::Kind::NameResolution;
+        name.targetId = commander.id + QStringLiteral("/p2"); // self.get_name() + '/report'
+        name.value = QStringLiteral("~/report");
+        SuggestionReport report;
+        report.suggestions = {name};
+        doc()->setSuggestions(report);
+        doc()->acceptSuggestion(QStringLiteral("s3"));
+        const auto reportPort = [this]() -> const PartPort * {
+            for (const RosNodePart &p : panel()->architecture().composite(QStringLiteral("lf1"))->parts)
+                if (p.name == QLatin1String("commander"))
+                    for (const PartPort &port : p.ports)
+                        if (port.id == QLatin1String("p2"))
+                            return &port;
+            return nullptr;
+        };
+        QVERIFY(reportPort());
+        QVERIFY(reportPort()->resolved);
+        QCOMPARE(reportPort()->name, QStringLiteral("/commander/report"));
+        bool promoted = false; // no one listens inside: it becomes a boundary port
+        for (const BoundaryPort &b : panel()->architecture().composite(QStringLiteral("lf1"))->boundary)
+            promoted = promoted || b.name == QLatin1String("/commander/report");
+        QVERIFY(promoted);
+        doc()->undoStack()->undo();
+        QVERIFY(!reportPort()->resolved);
+        doc()->setSuggestions({});
+        QVERIFY(waitForLayout());
+    }
+
     void comparisonMarksExtraAndListsMissing()
     {
         QTemporaryDir reference;
