@@ -49,6 +49,8 @@ Json partJson(const RosNodePart &part)
         j["external"] = true;
     if (!part.typed)
         j["typed"] = false;
+    if (!part.subsystem.isEmpty())
+        j["subsystem"] = utf8(part.subsystem);
     Json ports = Json::array();
     for (const PartPort &p : part.ports)
         ports.push_back(portJson(p));

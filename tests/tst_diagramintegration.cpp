@@ -190,6 +190,11 @@ private Q_SLOTS:
         doc()->acceptSuggestion(QStringLiteral("s2")); // accepted: drawn as the model, not a preview
         QVERIFY(waitForLayout());
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
+        test::saveScreenshot(*panel(), QStringLiteral("diagram-subsystem.png"));
+        QTemporaryDir out;
+        QVERIFY(m_window->exportArtifactsTo(out.path()));
+        QVERIFY(test::readFile(out.filePath(QStringLiteral("architecture.json"))).contains("\"subsystem\": \"planning\""));
+        QVERIFY(test::readFile(out.filePath(QStringLiteral("ccd/system.puml"))).contains("<<Subsystem>>"));
         doc()->undoStack()->undo();
         QVERIFY(waitForLayout());
         doc()->setSuggestions({});
