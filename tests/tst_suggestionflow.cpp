@@ -107,6 +107,25 @@ quint16 closedPort()
 
 } // namespace
 
+/// A Document shown in a suggestions panel and driven by a controller, with its log kept.
+struct Rig
+{
+    Document doc;
+    SuggestionModel model{&doc};
+    SuggestionPanel panel;
+    SuggestionController controller{&doc, &panel};
+    QStringList log;
+
+    explicit Rig(const Recovery *recovery = nullptr)
+    {
+        if (recovery)
+            doc.setRecovery(*recovery);
+        panel.setModel(&model);
+        QObject::connect(&controller, &SuggestionController::logged, &controller,
+                         [this](const QString &l) { log << l; });
+    }
+};
+
 class TestSuggestionFlow : public QObject
 {
     Q_OBJECT
@@ -402,15 +421,8 @@ private Q_SLOTS:
         server.setHandler([](const FakeRequest &r) { return reply(r, true); });
         configureLlm(server.endpoint(), true);
 
-        Document doc;
-        doc.setRecovery(m_recovery);
-        SuggestionModel model(&doc);
-        SuggestionPanel panel;
-        panel.setModel(&model);
-        SuggestionController controller(&doc, &panel);
-        QStringList log;
-        connect(&controller, &SuggestionController::logged, this,
-                [&log](const QString &l) { log << l; });
+        Rig rig(&m_recovery);
+        auto &[doc, model, panel, controller, log] = rig;
         QSignalSpy progressed(controller.runner(), &SuggestionRunner::suggestionsProgressed);
         QSignalSpy finished(controller.runner(), &SuggestionRunner::suggestionsFinished);
 
@@ -467,15 +479,8 @@ private Q_SLOTS:
     void failingEndpointShowsTheErrorAndTheDeterministicSuggestions()
     {
         configureLlm(QStringLiteral("http://127.0.0.1:%1").arg(closedPort()), true);
-        Document doc;
-        doc.setRecovery(m_recovery);
-        SuggestionModel model(&doc);
-        SuggestionPanel panel;
-        panel.setModel(&model);
-        SuggestionController controller(&doc, &panel);
-        QStringList log;
-        connect(&controller, &SuggestionController::logged, this,
-                [&log](const QString &l) { log << l; });
+        Rig rig(&m_recovery);
+        auto &[doc, model, panel, controller, log] = rig;
         QSignalSpy finished(controller.runner(), &SuggestionRunner::suggestionsFinished);
         controller.run();
         QVERIFY(finished.wait(30000));
@@ -495,14 +500,8 @@ private Q_SLOTS:
 
     void runWithoutAModelSaysWhatToDo()
     {
-        Document doc;
-        SuggestionModel model(&doc);
-        SuggestionPanel panel;
-        panel.setModel(&model);
-        SuggestionController controller(&doc, &panel);
-        QStringList log;
-        connect(&controller, &SuggestionController::logged, this,
-                [&log](const QString &l) { log << l; });
+        Rig rig;
+        auto &[doc, model, panel, controller, log] = rig;
         controller.run();
         QVERIFY(!controller.runner()->isRunning());
         QCOMPARE(log.size(), 1);
@@ -511,11 +510,8 @@ private Q_SLOTS:
 
     void settingsEditorStoresTheChoice()
     {
-        Document doc;
-        SuggestionModel model(&doc);
-        SuggestionPanel panel;
-        panel.setModel(&model);
-        SuggestionController controller(&doc, &panel);
+        Rig rig;
+        auto &[doc, model, panel, controller, log] = rig;
         controller.setSettingsEditor([](LlmSettings *s, bool *use) {
             s->endpoint = QStringLiteral("http://llm.example:8000/v1");
             s->model = QStringLiteral("llama3.1");
@@ -523,9 +519,6 @@ private Q_SLOTS:
             *use = true;
             return true;
         });
-        QStringList log;
-        connect(&controller, &SuggestionController::logged, this,
-                [&log](const QString &l) { log << l; });
         panel.settingsAction()->trigger();
         const SuggestionRunner::Options options = controller.runOptions();
         QVERIFY(options.useLlm);
