@@ -1,24 +1,14 @@
 #include "acdwriter.h"
+#include "plantumltext.h"
 
 #include <QHash>
 #include <QSet>
 
 namespace rosarch {
 
+using PlantUmlText::label;
+
 namespace {
-
-QString label(QString text)
-{
-    text.replace(QLatin1Char('"'), QLatin1Char('\''));
-    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
-    return text;
-}
-
-/// "pkg/msg/T" -> "pkg::msg::T" (the ACD notation).
-QString umlType(const QString &type)
-{
-    return type.isEmpty() ? QStringLiteral("?") : QString(type).replace(QLatin1Char('/'), QLatin1String("::"));
-}
 
 QString comment(const Port &p)
 {
@@ -63,7 +53,7 @@ QString AcdWriter::write(const AtomicNode &node)
         out += comment(p);
         if (isTopic(p.kind)) {
             out += QStringLiteral("frame \"%1\" as topic_%2 {\n").arg(caption, p.id);
-            out += QStringLiteral("  rectangle \"**%1**\" as t_%2\n").arg(umlType(p.type), p.id);
+            out += QStringLiteral("  rectangle \"**%1**\" as t_%2\n").arg(PlantUmlText::type(p.type), p.id);
             out += QStringLiteral("}\n");
             continue;
         }
@@ -73,7 +63,7 @@ QString AcdWriter::write(const AtomicNode &node)
         const QString t = service ? QStringLiteral("st") : QStringLiteral("at");
         const QString f = service ? QStringLiteral("sf") : QStringLiteral("af");
         out += QStringLiteral("folder \"%1\" as %2_%3 {\n").arg(caption, prefix, p.id);
-        out += QStringLiteral("  rectangle \"**%1**\" as %2_%3\n").arg(umlType(p.type), t, p.id);
+        out += QStringLiteral("  rectangle \"**%1**\" as %2_%3\n").arg(PlantUmlText::type(p.type), t, p.id);
         if (provided && !p.callback.isEmpty())
             out += QStringLiteral("  rectangle \"%1(...)\" as %2_%3\n").arg(label(p.callback), f, p.id);
         out += QStringLiteral("}\n");

@@ -21,11 +21,6 @@ struct Family
     QList<Use> users;     ///< subscribers, clients
 };
 
-bool isProvider(PortKind k)
-{
-    return k == PortKind::Publisher || k == PortKind::ServiceServer || k == PortKind::ActionServer;
-}
-
 QString familyName(PortKind k)
 {
     switch (k) {
@@ -76,7 +71,7 @@ private:
                 if (!m_system.contains(key))
                     m_order.append(key);
                 Family &f = m_system[key];
-                (isProvider(port.kind) ? f.providers : f.users).append({&part, &port});
+                (isProvidingPort(port.kind) ? f.providers : f.users).append({&part, &port});
             }
         }
     }

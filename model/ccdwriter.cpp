@@ -1,28 +1,14 @@
 #include "ccdwriter.h"
+#include "plantumltext.h"
 
 #include <QHash>
 #include <QSet>
 
 namespace rosarch {
 
+using PlantUmlText::label;
+
 namespace {
-
-QString label(QString text)
-{
-    text.replace(QLatin1Char('"'), QLatin1Char('\''));
-    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
-    return text;
-}
-
-QString umlType(const QString &type)
-{
-    return type.isEmpty() ? QStringLiteral("?") : QString(type).replace(QLatin1Char('/'), QLatin1String("::"));
-}
-
-bool isInput(PortKind k)
-{
-    return k == PortKind::Subscriber || k == PortKind::ServiceServer || k == PortKind::ActionServer;
-}
 
 QString safe(const QString &text)
 {
@@ -63,7 +49,7 @@ QString partBlock(const RosNodePart &part, const QString &indent)
     for (const PartPort &p : part.ports) {
         if (!p.active)
             continue;
-        QString line = QStringLiteral("%1  %2 \"%3\" as %4_%3").arg(indent, isInput(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"), p.id, part.id);
+        QString line = QStringLiteral("%1  %2 \"%3\" as %4_%3").arg(indent, isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"), p.id, part.id);
         if (!p.resolved)
             line += QStringLiteral(" ' name unresolved: %1").arg(label(p.name));
         ports << line;
@@ -85,7 +71,7 @@ QString CcdWriter::write(const Composite &c)
     out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n").arg(label(c.stem), top);
     for (const BoundaryPort &b : c.boundary)
         out += QStringLiteral("  %1 \"%2 / %3\" as b_%2  ' %4\n")
-                   .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id, umlType(b.type), label(b.name));
+                   .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id, PlantUmlText::type(b.type), label(b.name));
 
     // Parts grouped by namespace, namespaces in order of first appearance; the root's parts
     // sit directly in the composite.
@@ -140,13 +126,13 @@ QString CcdWriter::write(const Composite &c)
     for (const Channel &ch : c.channels) {
         switch (ch.kind) {
         case Channel::Kind::Topic:
-            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         case Channel::Kind::Service:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         case Channel::Kind::Action:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n").arg(label(ch.name), ch.id, umlType(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         }
     }

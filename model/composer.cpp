@@ -23,12 +23,6 @@ Family familyOf(PortKind k)
     }
 }
 
-/// The side of a family that provides: publisher, server.
-bool isProvider(PortKind k)
-{
-    return k == PortKind::Publisher || k == PortKind::ServiceServer || k == PortKind::ActionServer;
-}
-
 QString parameterValue(const NodeInstance &instance, const QString &name, bool *found)
 {
     for (const auto &[key, value] : instance.parameters) {
@@ -98,8 +92,8 @@ void wire(Composite *c)
     QHash<QString, int> counters;
     for (const auto &[family, name] : order) {
         const QList<Endpoint> &eps = groups.value(keyOf(family, name));
-        const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return isProvider(e.port->kind); });
-        const bool users = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return !isProvider(e.port->kind); });
+        const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return isProvidingPort(e.port->kind); });
+        const bool users = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return !isProvidingPort(e.port->kind); });
         if (providers && users) {
             Channel ch;
             ch.kind = family == Family::Topic     ? Channel::Kind::Topic
@@ -115,7 +109,7 @@ void wire(Composite *c)
             c->channels.append(ch);
             for (bool provider : {true, false}) {
                 for (const Endpoint &e : eps) {
-                    if (isProvider(e.port->kind) != provider)
+                    if (isProvidingPort(e.port->kind) != provider)
                         continue;
                     Connection::Kind k = family == Family::Topic
                                              ? (provider ? Connection::Kind::Publish : Connection::Kind::Subscribe)

@@ -15,8 +15,7 @@ const T *findById(const QList<T> &list, const QString &id)
 
 bool BoundaryPort::isInput() const
 {
-    return kind == PortKind::Subscriber || kind == PortKind::ServiceServer
-           || kind == PortKind::ActionServer;
+    return isInputPort(kind);
 }
 
 const RosNodePart *Composite::part(const QString &id) const

@@ -110,7 +110,7 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const Di
         p.id = port.id;
         p.key = DiagramBuilder::portKey(part.id, port.id);
         p.label = portLabel(port);
-        p.input = DiagramBuilder::isInput(port.kind);
+        p.input = isInputPort(port.kind);
         p.flags = (port.active ? 0 : LayoutInactive) | (port.resolved ? 0 : LayoutUnresolved) |
                   (port.parameterDerived ? LayoutParameterDerived : 0);
         double &side = p.input ? inputWidth : outputWidth;
@@ -285,12 +285,6 @@ QStringList DiagramBuilder::namespaceChain(const QString &nameSpace)
     return chain;
 }
 
-bool DiagramBuilder::isInput(PortKind kind)
-{
-    return kind == PortKind::Subscriber || kind == PortKind::ServiceServer ||
-           kind == PortKind::ActionServer;
-}
-
 const PartPort *DiagramBuilder::port(const Composite &composite, const QString &partId,
                                      const QString &portId)
 {
@@ -376,7 +370,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
     };
 
     for (const BoundaryPort &b : c.boundary) {
-        if (!isInput(b.kind) || !shown(b.id))
+        if (!isInputPort(b.kind) || !shown(b.id))
             continue;
         LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
         n.rank = LayoutNode::Rank::Source;
@@ -447,7 +441,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
         g.nodes << n;
     }
     for (const BoundaryPort &b : c.boundary) {
-        if (isInput(b.kind) || !shown(b.id))
+        if (isInputPort(b.kind) || !shown(b.id))
             continue;
         LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
         n.rank = LayoutNode::Rank::Sink;

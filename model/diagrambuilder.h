@@ -72,8 +72,6 @@ public:
 
     /// "/a/b" → {"/a", "/a/b"}; the root ("/" or "") has none.
     static QStringList namespaceChain(const QString &nameSpace);
-    /// True for an input port kind (subscriber, service server, action server).
-    static bool isInput(PortKind kind);
     /// Where an element comes from: a part's launch line, a port's creation in code; a
     /// connection or boundary port answers with its (first) part port's. Invalid for none.
     static Evidence evidence(const Composite &composite, const QString &key);

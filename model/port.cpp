@@ -60,4 +60,16 @@ QString nameOriginName(NameOrigin origin)
     return {};
 }
 
+bool isInputPort(PortKind kind)
+{
+    return kind == PortKind::Subscriber || kind == PortKind::ServiceServer ||
+           kind == PortKind::ActionServer;
+}
+
+bool isProvidingPort(PortKind kind)
+{
+    return kind == PortKind::Publisher || kind == PortKind::ServiceServer ||
+           kind == PortKind::ActionServer;
+}
+
 } // namespace rosarch

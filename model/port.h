@@ -14,6 +14,10 @@ QString portKindName(PortKind kind);
 bool portKindFromName(const QString &name, PortKind *kind);
 /// ACD port-id prefix: p, s, ps, rs, pa, ra.
 QString portIdPrefix(PortKind kind);
+/// Subscriber, service server, action server: ports that take input (`portin`).
+bool isInputPort(PortKind kind);
+/// Publisher, service server, action server: the side that provides a topic, service or action.
+bool isProvidingPort(PortKind kind);
 
 /// How the port's name was obtained from the code.
 enum class NameOrigin {

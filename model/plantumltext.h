@@ -1,0 +1,22 @@
+#pragma once
+
+#include <QString>
+
+namespace rosarch::PlantUmlText {
+
+/// Text that is safe inside a PlantUML label: no double quotes, no line breaks.
+inline QString label(QString text)
+{
+    text.replace(QLatin1Char('"'), QLatin1Char('\''));
+    text.replace(QLatin1Char('\n'), QLatin1Char(' '));
+    return text;
+}
+
+/// "pkg/msg/T" -> "pkg::msg::T", the blueprint's notation ("?" when unknown).
+inline QString type(const QString &canonical)
+{
+    return canonical.isEmpty() ? QStringLiteral("?")
+                               : QString(canonical).replace(QLatin1Char('/'), QLatin1String("::"));
+}
+
+} // namespace rosarch::PlantUmlText
