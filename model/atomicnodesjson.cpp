@@ -12,23 +12,6 @@ using JsonSupport::utf8;
 
 namespace {
 
-QString q(const Json &j, const char *key)
-{
-    const auto it = j.find(key);
-    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
-}
-
-QStringList readStringList(const Json &j, const char *key)
-{
-    QStringList out;
-    const auto it = j.find(key);
-    if (it != j.end() && it->is_array())
-        for (const auto &v : *it)
-            if (v.is_string())
-                out.append(QString::fromStdString(v.get<std::string>()));
-    return out;
-}
-
 Json portJson(const Port &p)
 {
     Json j;
@@ -87,25 +70,25 @@ bool readPort(const Json &j, Port *p, QString *error)
         *error = QStringLiteral("a port is not an object");
         return false;
     }
-    p->id = q(j, "id");
-    if (!portKindFromName(q(j, "kind"), &p->kind)) {
-        *error = QStringLiteral("port %1 has an unknown kind '%2'").arg(p->id, q(j, "kind"));
+    p->id = JsonSupport::string(j, "id");
+    if (!portKindFromName(JsonSupport::string(j, "kind"), &p->kind)) {
+        *error = QStringLiteral("port %1 has an unknown kind '%2'").arg(p->id, JsonSupport::string(j, "kind"));
         return false;
     }
-    p->name = q(j, "name");
-    p->type = q(j, "type");
-    p->callback = q(j, "callback");
-    const QString origin = q(j, "name_origin");
+    p->name = JsonSupport::string(j, "name");
+    p->type = JsonSupport::string(j, "type");
+    p->callback = JsonSupport::string(j, "callback");
+    const QString origin = JsonSupport::string(j, "name_origin");
     for (NameOrigin o : {NameOrigin::Literal, NameOrigin::Member, NameOrigin::Local,
                          NameOrigin::Parameter, NameOrigin::Expression})
         if (nameOriginName(o) == origin)
             p->nameOrigin = o;
-    p->nameExpression = q(j, "name_expression");
-    p->parameter = q(j, "parameter");
-    p->guard = q(j, "guard");
-    p->guardParameter = q(j, "guard_parameter");
-    p->guardDefault = q(j, "guard_default");
-    p->via = q(j, "via");
+    p->nameExpression = JsonSupport::string(j, "name_expression");
+    p->parameter = JsonSupport::string(j, "parameter");
+    p->guard = JsonSupport::string(j, "guard");
+    p->guardParameter = JsonSupport::string(j, "guard_parameter");
+    p->guardDefault = JsonSupport::string(j, "guard_default");
+    p->via = JsonSupport::string(j, "via");
     p->inherited = j.value("inherited", false);
     if (j.contains("evidence"))
         p->evidence = EvidenceJson::fromJson(j["evidence"]);
@@ -153,9 +136,9 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
     AtomicNodeList out;
     for (const Json &pj : *packages) {
         RosPackage pkg;
-        pkg.name = q(pj, "package_name");
-        pkg.buildType = q(pj, "build_type");
-        pkg.path = q(pj, "path");
+        pkg.name = JsonSupport::string(pj, "package_name");
+        pkg.buildType = JsonSupport::string(pj, "build_type");
+        pkg.path = JsonSupport::string(pj, "path");
         if (!pkg.name.isEmpty())
             out.packages.append(pkg);
         const auto nodes = pj.find("list_atomic_ros_node_classifiers");
@@ -163,21 +146,21 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
             continue;
         for (const Json &nj : *nodes) {
             AtomicNode n;
-            n.id = q(nj, "id");
-            n.className = q(nj, "class_name");
-            n.nodeName = q(nj, "node_name");
+            n.id = JsonSupport::string(nj, "id");
+            n.className = JsonSupport::string(nj, "class_name");
+            n.nodeName = JsonSupport::string(nj, "node_name");
             n.packageName = pkg.name;
-            n.headerFiles = readStringList(nj, "header_file_paths");
-            n.sourceFiles = readStringList(nj, "source_file_paths");
-            n.description = q(nj, "description");
-            n.compileType = q(nj, "compile_type") == QLatin1String("python") ? AtomicNode::CompileType::Python
+            n.headerFiles = JsonSupport::stringList(nj, "header_file_paths");
+            n.sourceFiles = JsonSupport::stringList(nj, "source_file_paths");
+            n.description = JsonSupport::string(nj, "description");
+            n.compileType = JsonSupport::string(nj, "compile_type") == QLatin1String("python") ? AtomicNode::CompileType::Python
                                                                              : AtomicNode::CompileType::Cpp;
-            n.qualifiedName = q(nj, "qualified_name");
-            n.executables = readStringList(nj, "executables");
-            n.plugins = readStringList(nj, "plugins");
-            if (n.executables.isEmpty() && n.plugins.isEmpty() && !q(nj, "execution").isEmpty())
-                n.executables.append(q(nj, "execution"));
-            n.baseClasses = readStringList(nj, "base_classes");
+            n.qualifiedName = JsonSupport::string(nj, "qualified_name");
+            n.executables = JsonSupport::stringList(nj, "executables");
+            n.plugins = JsonSupport::stringList(nj, "plugins");
+            if (n.executables.isEmpty() && n.plugins.isEmpty() && !JsonSupport::string(nj, "execution").isEmpty())
+                n.executables.append(JsonSupport::string(nj, "execution"));
+            n.baseClasses = JsonSupport::stringList(nj, "base_classes");
             n.lifecycle = nj.value("lifecycle", false);
             n.procedural = nj.value("procedural", false);
             if (nj.contains("evidence"))

@@ -24,4 +24,23 @@ inline Json strings(const QStringList &list)
     return a;
 }
 
+/// The string at `key`, or "" when it is missing or not a string.
+inline QString string(const Json &j, const char *key)
+{
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
+}
+
+/// The strings of the array at `key` (other values skipped); empty when missing.
+inline QStringList stringList(const Json &j, const char *key)
+{
+    QStringList out;
+    const auto it = j.find(key);
+    if (it != j.end() && it->is_array())
+        for (const Json &v : *it)
+            if (v.is_string())
+                out.append(QString::fromStdString(v.get<std::string>()));
+    return out;
+}
+
 } // namespace rosarch::JsonSupport

@@ -10,23 +10,6 @@ using JsonSupport::utf8;
 
 namespace {
 
-QString q(const Json &j, const char *key)
-{
-    const auto it = j.find(key);
-    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
-}
-
-QStringList stringList(const Json &j, const char *key)
-{
-    QStringList out;
-    const auto it = j.find(key);
-    if (it != j.end() && it->is_array())
-        for (const Json &v : *it)
-            if (v.is_string())
-                out << QString::fromStdString(v.get<std::string>());
-    return out;
-}
-
 const char *targetElement(Suggestion::Kind kind)
 {
     switch (kind) {
@@ -134,27 +117,27 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
     SuggestionReport out;
     for (const Json &j : root["suggestions"]) {
         Suggestion s;
-        s.id = q(j, "id");
-        if (!Suggestion::kindFromName(q(j, "kind"), &s.kind)) {
-            *error = QStringLiteral("suggestion %1 has an unknown kind '%2'").arg(s.id, q(j, "kind"));
+        s.id = JsonSupport::string(j, "id");
+        if (!Suggestion::kindFromName(JsonSupport::string(j, "kind"), &s.kind)) {
+            *error = QStringLiteral("suggestion %1 has an unknown kind '%2'").arg(s.id, JsonSupport::string(j, "kind"));
             return false;
         }
         const Json target = j.value("target", Json::object());
-        s.targetId = q(target, "id");
-        s.memberIds = stringList(target, "node_instance_ids");
+        s.targetId = JsonSupport::string(target, "id");
+        s.memberIds = JsonSupport::stringList(target, "node_instance_ids");
         const Json proposal = j.value("proposal", Json::object());
-        s.value = s.kind == Suggestion::Kind::NodeDescription ? q(proposal, "description")
-                  : s.kind == Suggestion::Kind::SubsystemGrouping ? q(proposal, "group_name")
-                                                                  : q(proposal, "value");
-        s.rationale = q(j, "rationale");
+        s.value = s.kind == Suggestion::Kind::NodeDescription ? JsonSupport::string(proposal, "description")
+                  : s.kind == Suggestion::Kind::SubsystemGrouping ? JsonSupport::string(proposal, "group_name")
+                                                                  : JsonSupport::string(proposal, "value");
+        s.rationale = JsonSupport::string(j, "rationale");
         if (j.contains("evidence") && j["evidence"].is_array())
             for (const Json &e : j["evidence"])
-                s.evidence.append({EvidenceJson::fromJson(e), q(e, "quote")});
+                s.evidence.append({EvidenceJson::fromJson(e), JsonSupport::string(e, "quote")});
         const Json origin = j.value("origin", Json::object());
-        s.origin.provider = q(origin, "provider");
-        s.origin.prompt = q(origin, "prompt");
-        s.origin.timestamp = QDateTime::fromString(q(origin, "timestamp"), Qt::ISODate);
-        if (!Suggestion::statusFromName(q(j, "status"), &s.status))
+        s.origin.provider = JsonSupport::string(origin, "provider");
+        s.origin.prompt = JsonSupport::string(origin, "prompt");
+        s.origin.timestamp = QDateTime::fromString(JsonSupport::string(origin, "timestamp"), Qt::ISODate);
+        if (!Suggestion::statusFromName(JsonSupport::string(j, "status"), &s.status))
             s.status = Suggestion::Status::Pending;
         out.suggestions.append(s);
     }
@@ -164,24 +147,24 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
             for (auto it = d["reasons"].begin(); it != d["reasons"].end(); ++it)
                 if (it.value().is_number_integer())
                     out.discarded.insert(QString::fromStdString(it.key()), it.value().get<int>());
-        out.discardedDetails = stringList(d, "details");
+        out.discardedDetails = JsonSupport::stringList(d, "details");
     }
     if (root.contains("prompts") && root["prompts"].contains("list"))
         for (const Json &p : root["prompts"]["list"]) {
             SuggestionReport::PromptUsage u;
-            u.prompt = q(p, "prompt");
-            u.scope = q(p, "scope");
+            u.prompt = JsonSupport::string(p, "prompt");
+            u.scope = JsonSupport::string(p, "scope");
             u.chars = p.value("chars", qint64(0));
             u.estimatedTokens = p.value("estimated_tokens", qint64(0));
             u.sent = p.value("sent", false);
             u.requests = p.value("requests", 0);
-            u.outcome = q(p, "outcome");
+            u.outcome = JsonSupport::string(p, "outcome");
             out.prompts.append(u);
         }
-    out.errors = stringList(root, "errors");
+    out.errors = JsonSupport::stringList(root, "errors");
     if (root.contains("llm")) {
         out.llmUsed = root["llm"].value("used", false);
-        out.llmModel = q(root["llm"], "model");
+        out.llmModel = JsonSupport::string(root["llm"], "model");
     }
     *report = std::move(out);
     return true;
