@@ -76,14 +76,8 @@ int recover(const QStringList &arguments)
     parser.addOption(quietOption);
     parser.addOption(argOption);
     parser.addOption(rootOption);
-    if (!parser.parse(arguments)) {
-        err << parser.errorText() << "\n\n" << usageText();
-        return CommandLine::UsageError;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return CommandLine::Ok;
-    }
+    if (const int done = CommandLine::parseOrFinish(parser, arguments, usageText()); done >= 0)
+        return done;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 2 || !parser.isSet(outOption)) {
         err << QCoreApplication::translate("rosarch::CommandLine",
@@ -154,6 +148,20 @@ int recover(const QStringList &arguments)
 }
 
 } // namespace
+
+int CommandLine::parseOrFinish(QCommandLineParser &parser, const QStringList &arguments,
+                               const QString &usage)
+{
+    if (!parser.parse(arguments)) {
+        QTextStream(stderr) << parser.errorText() << (usage.isEmpty() ? QStringLiteral("\n") : QStringLiteral("\n\n") + usage);
+        return UsageError;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        QTextStream(stdout) << parser.helpText();
+        return Ok;
+    }
+    return -1;
+}
 
 bool CommandLine::isHeadless(int argc, char **argv)
 {

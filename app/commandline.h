@@ -2,6 +2,8 @@
 
 #include <QStringList>
 
+class QCommandLineParser;
+
 namespace rosarch {
 
 /// The headless side of the one executable: `rosarch recover <workspace> --out <dir>`,
@@ -16,6 +18,10 @@ public:
     static bool isHeadless(int argc, char **argv);
     /// Runs the headless command; `arguments` includes the program name.
     static int run(const QStringList &arguments);
+    /// Parses a command's arguments. Returns the exit code when the command ends here (a
+    /// parse error, printed with `usage`, or --help, printed to stdout), else -1.
+    static int parseOrFinish(QCommandLineParser &parser, const QStringList &arguments,
+                             const QString &usage = {});
 };
 
 } // namespace rosarch

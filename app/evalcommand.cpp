@@ -69,14 +69,8 @@ int runEval(const QStringList &arguments)
     const QString usage =
         EvalText::tr("Usage: rosarch eval --reference <dir|file> --recovered <dir|file> "
                      "[--level acd|ccd] [--json]\n");
-    if (!parser.parse(arguments)) {
-        err << parser.errorText() << "\n\n" << usage;
-        return CommandLine::UsageError;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return CommandLine::Ok;
-    }
+    if (const int done = CommandLine::parseOrFinish(parser, arguments, usage); done >= 0)
+        return done;
     if (!parser.isSet(referenceOption) || !parser.isSet(recoveredOption) ||
         parser.positionalArguments().size() != 1) {
         err << EvalText::tr("eval needs --reference and --recovered, and no other arguments.\n\n")

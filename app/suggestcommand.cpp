@@ -40,14 +40,8 @@ int runSuggest(const QStringList &arguments)
                                          QCoreApplication::translate("rosarch::SuggestCommand", "Print only errors."));
     for (const QCommandLineOption &o : {outOption, endpointOption, modelOption, timeoutOption, promptOption, quietOption})
         parser.addOption(o);
-    if (!parser.parse(arguments)) {
-        err << parser.errorText() << '\n';
-        return CommandLine::UsageError;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
-        return CommandLine::Ok;
-    }
+    if (const int done = CommandLine::parseOrFinish(parser, arguments); done >= 0)
+        return done;
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 2 || !parser.isSet(outOption)) {
         err << QCoreApplication::translate("rosarch::SuggestCommand", "suggest needs a workspace folder and --out <dir>.\n");
