@@ -56,6 +56,16 @@ struct FakeRequest
 class FakeLlmServer
 {
 public:
+    /// A local port nothing listens on (for "connection refused").
+    static quint16 closedPort()
+    {
+        QTcpServer probe;
+        probe.listen(QHostAddress::LocalHost, 0);
+        const quint16 port = probe.serverPort();
+        probe.close();
+        return port;
+    }
+
     FakeLlmServer()
     {
         m_server.listen(QHostAddress::LocalHost, 0);

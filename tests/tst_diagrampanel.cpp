@@ -54,18 +54,6 @@ QPoint scenePoint(DiagramPanel &panel, const QPointF &p)
     return panel.view()->mapFromScene(p);
 }
 
-QString script(const QTemporaryDir &dir, const QString &name, const QByteArray &body)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write("#!/bin/sh\n" + body + "\n");
-    f.close();
-    f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
-    return path;
-}
-
 /// A panel on screen showing the hand-made architecture's root.
 struct ShownPanel
 {
@@ -398,7 +386,7 @@ void TestDiagramPanel::layoutFailuresAreShownInTheView()
 {
     QTemporaryDir dir;
     qputenv("ROSARCH_LAYOUT",
-            script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$").toLocal8Bit());
+            test::script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$").toLocal8Bit());
     {
         DiagramPanel panel;
         panel.resize(800, 500);
@@ -413,7 +401,7 @@ void TestDiagramPanel::layoutFailuresAreShownInTheView()
         saveScreenshot(panel, QStringLiteral("diagram_error.png"));
     }
     qputenv("ROSARCH_LAYOUT",
-            script(dir, QStringLiteral("slow.sh"), "exec sleep 30").toLocal8Bit());
+            test::script(dir, QStringLiteral("slow.sh"), "exec sleep 30").toLocal8Bit());
     {
         DiagramPanel panel;
         panel.setLayoutTimeout(300);

@@ -70,19 +70,6 @@ LayoutGraph smallGraph()
     return g;
 }
 
-/// An executable shell script in `dir`.
-QString script(const QTemporaryDir &dir, const QString &name, const QByteArray &body)
-{
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write("#!/bin/sh\n" + body + "\n");
-    f.close();
-    f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
-    return path;
-}
-
 } // namespace
 
 class TestGraphLayout : public QObject
@@ -184,7 +171,7 @@ void TestGraphLayout::timeoutKillsTheHelper()
 {
     QTemporaryDir dir;
     LayoutOptions options;
-    options.helperPath = script(dir, QStringLiteral("slow.sh"), "exec sleep 30");
+    options.helperPath = test::script(dir, QStringLiteral("slow.sh"), "exec sleep 30");
     options.timeoutMs = 300;
     QElapsedTimer clock;
     clock.start();
@@ -201,7 +188,7 @@ void TestGraphLayout::crashIsReported()
 {
     QTemporaryDir dir;
     LayoutOptions options;
-    options.helperPath = script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$");
+    options.helperPath = test::script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$");
     const LayoutResult r = GraphLayout::layout(smallGraph(), options);
     QVERIFY(!r.ok);
     QCOMPARE(r.error, QStringLiteral("Graphviz crashed (signal 6) on this diagram"));
@@ -210,7 +197,7 @@ void TestGraphLayout::crashIsReported()
 void TestGraphLayout::environmentChoosesTheHelper()
 {
     QTemporaryDir dir;
-    const QString abort = script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$");
+    const QString abort = test::script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$");
     qputenv("ROSARCH_LAYOUT", abort.toLocal8Bit());
     QCOMPARE(GraphLayout::helperPath(), abort);
     const LayoutResult r = GraphLayout::layout(smallGraph());
@@ -230,12 +217,12 @@ void TestGraphLayout::failuresAreMessages()
     QVERIFY(r.error.contains(QLatin1String("could not be started")));
 
     options.helperPath =
-        script(dir, QStringLiteral("fail.sh"), "cat >/dev/null; echo boom >&2; exit 3");
+        test::script(dir, QStringLiteral("fail.sh"), "cat >/dev/null; echo boom >&2; exit 3");
     r = GraphLayout::layout(smallGraph(), options);
     QCOMPARE(r.error,
              QStringLiteral("Graphviz could not lay out this diagram (exit code 3). boom"));
 
-    options.helperPath = script(dir, QStringLiteral("junk.sh"), "cat >/dev/null; echo '{junk'");
+    options.helperPath = test::script(dir, QStringLiteral("junk.sh"), "cat >/dev/null; echo '{junk'");
     r = GraphLayout::layout(smallGraph(), options);
     QVERIFY(!r.ok);
     QVERIFY(
@@ -255,7 +242,7 @@ void TestGraphLayout::cancelStopsTheHelper()
 {
     QTemporaryDir dir;
     LayoutOptions options;
-    options.helperPath = script(dir, QStringLiteral("slow.sh"), "exec sleep 30");
+    options.helperPath = test::script(dir, QStringLiteral("slow.sh"), "exec sleep 30");
     int polls = 0;
     options.canceled = [&polls] { return ++polls > 2; };
     QElapsedTimer clock;

@@ -49,15 +49,6 @@ LlmSettings settings(const FakeLlmServer &server, bool stream = false)
     return s;
 }
 
-quint16 closedPort()
-{
-    QTcpServer probe;
-    probe.listen(QHostAddress::LocalHost, 0);
-    const quint16 port = probe.serverPort();
-    probe.close();
-    return port;
-}
-
 } // namespace
 
 class TestLlmClient : public QObject
@@ -148,7 +139,7 @@ private Q_SLOTS:
     void refusedConnection()
     {
         LlmSettings s;
-        s.endpoint = QStringLiteral("http://127.0.0.1:%1").arg(closedPort());
+        s.endpoint = QStringLiteral("http://127.0.0.1:%1").arg(FakeLlmServer::closedPort());
         const LlmResult r = LlmClient(s).complete(describeRequest());
         QCOMPARE(r.error, LlmResult::Error::ConnectionRefused);
         QVERIFY2(r.message.contains(s.completionsUrl()), qPrintable(r.message));

@@ -96,15 +96,6 @@ FakeResponse reply(const FakeRequest &r, bool stream)
     return stream ? FakeLlmServer::stream(content, 24) : FakeLlmServer::chat(content);
 }
 
-quint16 closedPort()
-{
-    QTcpServer probe;
-    probe.listen(QHostAddress::LocalHost, 0);
-    const quint16 port = probe.serverPort();
-    probe.close();
-    return port;
-}
-
 } // namespace
 
 /// A Document shown in a suggestions panel and driven by a controller, with its log kept.
@@ -478,7 +469,7 @@ private Q_SLOTS:
 
     void failingEndpointShowsTheErrorAndTheDeterministicSuggestions()
     {
-        configureLlm(QStringLiteral("http://127.0.0.1:%1").arg(closedPort()), true);
+        configureLlm(QStringLiteral("http://127.0.0.1:%1").arg(FakeLlmServer::closedPort()), true);
         Rig rig(&m_recovery);
         auto &[doc, model, panel, controller, log] = rig;
         QSignalSpy finished(controller.runner(), &SuggestionRunner::suggestionsFinished);
