@@ -1,5 +1,6 @@
 #include "diagramcontroller.h"
 #include "appsettings.h"
+#include "composearchitecture.h"
 #include "diagrampanel.h"
 #include "document.h"
 #include "evaluationreport.h"

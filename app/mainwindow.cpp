@@ -43,12 +43,6 @@
 #include <QTreeView>
 #include <QUndoStack>
 
-// The resources live in this static library; make sure the linker keeps them.
-static void initResources()
-{
-    Q_INIT_RESOURCE(resources);
-}
-
 namespace rosarch {
 
 MainWindow::MainWindow(QWidget *parent)
@@ -57,7 +51,6 @@ MainWindow::MainWindow(QWidget *parent)
       m_launchModel(new LaunchTreeModel(m_document, this)),
       m_diagnosticModel(new DiagnosticModel(m_document, this))
 {
-    initResources();
     setWindowTitle(tr("rosarch"));
     setWindowIcon(Icons::application());
     setAcceptDrops(true);

@@ -1,4 +1,5 @@
 #include "stagerunner.h"
+#include "composearchitecture.h"
 
 #include <QMutex>
 #include <QPromise>

@@ -2,10 +2,20 @@
 
 #include <QHash>
 
+#include <mutex>
+
+// Resources of a static library must be registered explicitly; outside any namespace.
+static void initIconResources()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { Q_INIT_RESOURCE(resources); });
+}
+
 namespace rosarch {
 
 QIcon Icons::fromResource(const char *name)
 {
+    initIconResources();
     static QHash<QString, QIcon> cache;
     const QString path = QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name));
     auto it = cache.constFind(path);

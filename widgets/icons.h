@@ -7,8 +7,7 @@
 
 namespace rosarch {
 
-/// The icons of the views (from the application resources, `:/icons/`), cached.
-/// The resources live in rosarch_app; callers in other executables run Q_INIT_RESOURCE.
+/// The icons of the views (from this library's resources, `:/icons/`), cached.
 class Icons
 {
 public:

@@ -1,0 +1,19 @@
+#include "atomicnode.h"
+
+namespace rosarch {
+
+QString AtomicNode::execution() const
+{
+    if (!executables.isEmpty())
+        return executables.first();
+    if (!plugins.isEmpty())
+        return plugins.first();
+    return {};
+}
+
+QString compileTypeName(AtomicNode::CompileType type)
+{
+    return type == AtomicNode::CompileType::Python ? QStringLiteral("python") : QStringLiteral("cpp");
+}
+
+} // namespace rosarch

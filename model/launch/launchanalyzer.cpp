@@ -1,0 +1,162 @@
+#include "launchanalyzer.h"
+#include "launchexecutor.h"
+#include "pythonlaunchreader.h"
+#include "sourcereader.h"
+#include "workspacescanner.h"
+#include "xmllaunchreader.h"
+#include "yamllaunchreader.h"
+
+#include <QHash>
+#include <QSet>
+
+#include <map>
+
+namespace rosarch {
+
+namespace {
+
+/// Finds launch files by content and reads each once.
+class LaunchFileIndex
+{
+public:
+    LaunchFileIndex(const Workspace &ws, const StageControl &control, QList<Diagnostic> *diagnostics)
+    {
+        const SourceReader reader(ws.root);
+        int done = 0;
+        for (const SourceFile &f : ws.files) {
+            ++done;
+            if (control.isCanceled())
+                return;
+            const bool candidate = f.language == SourceFile::Language::Python
+                                   || f.language == SourceFile::Language::Xml
+                                   || f.language == SourceFile::Language::Yaml;
+            if (!candidate)
+                continue;
+            QByteArray content;
+            QList<Diagnostic> readProblems; // already reported by the node analyzers for .py
+            if (!reader.read(f.path, &content, &readProblems)) {
+                if (f.language != SourceFile::Language::Python)
+                    diagnostics->append(readProblems);
+                continue;
+            }
+            LaunchFileDescription d;
+            if (f.language == SourceFile::Language::Python && PythonLaunchReader::isLaunchFile(content))
+                d = PythonLaunchReader::read(content, f.path);
+            else if (f.language == SourceFile::Language::Xml && XmlLaunchReader::isLaunchFile(content))
+                d = XmlLaunchReader::read(content, f.path);
+            else if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
+                d = YamlLaunchReader::read(content, f.path);
+            else
+                continue;
+            control.report(done, int(ws.files.size()), f.path);
+            if (f.language != SourceFile::Language::Python) // Python syntax errors come from stage 1
+                diagnostics->append(d.diagnostics);
+            else
+                for (const Diagnostic &diag : d.diagnostics)
+                    if (diag.code != QLatin1String("syntax-error"))
+                        diagnostics->append(diag);
+            m_files.emplace(f.path, std::move(d));
+        }
+    }
+
+    const LaunchFileDescription *find(const QString &file) const
+    {
+        const auto it = m_files.find(file);
+        return it == m_files.end() ? nullptr : &it->second;
+    }
+    QStringList files() const
+    {
+        QStringList out;
+        for (const auto &[file, d] : m_files)
+            out.append(file);
+        return out; // std::map keeps them sorted
+    }
+
+private:
+    std::map<QString, LaunchFileDescription> m_files;
+};
+
+} // namespace
+
+LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
+                                       const LaunchOptions &options, const StageControl &control)
+{
+    LaunchDependencies out;
+    const LaunchFileIndex index(workspace, control, &out.diagnostics);
+    if (control.isCanceled()) {
+        out.canceled = true;
+        return out;
+    }
+    out.launchFiles = index.files();
+    LaunchExecutor executor(workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);
+
+    QStringList roots;
+    if (!options.rootFile.isEmpty()) {
+        if (index.find(options.rootFile)) {
+            roots << options.rootFile;
+        } else {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Error;
+            d.code = QStringLiteral("no-such-launch-file");
+            d.message = QStringLiteral("The chosen root launch file %1 is not a launch file of this workspace.")
+                            .arg(options.rootFile);
+            out.diagnostics.append(d);
+        }
+    } else {
+        // Top-level launch files: those no other launch file includes.
+        QSet<QString> included;
+        for (const QString &f : std::as_const(out.launchFiles))
+            for (const QString &inc : executor.directIncludes(f))
+                if (inc != f)
+                    included.insert(inc);
+        for (const QString &f : std::as_const(out.launchFiles))
+            if (!included.contains(f))
+                roots << f;
+    }
+    for (const QString &root : std::as_const(roots)) {
+        if (control.isCanceled()) {
+            out.canceled = true;
+            return out;
+        }
+        executor.runRoot(root, options.arguments);
+    }
+    if (options.rootFile.isEmpty()) {
+        // Files only reachable through a cycle have no top-level includer: run them as roots too.
+        QSet<QString> reached;
+        for (const LaunchFileInstance &i : std::as_const(out.instances))
+            reached.insert(i.file);
+        for (const QString &f : std::as_const(out.launchFiles))
+            if (!reached.contains(f)) {
+                executor.runRoot(f, options.arguments);
+                for (const LaunchFileInstance &i : std::as_const(out.instances))
+                    reached.insert(i.file);
+            }
+    }
+    // The same problem met through two include chains is one diagnostic.
+    QList<Diagnostic> unique;
+    for (const Diagnostic &d : std::as_const(out.diagnostics))
+        if (!unique.contains(d))
+            unique.append(d);
+    out.diagnostics = unique;
+    // External includes are listed too, so a headless run shows what was not followed.
+    for (const LaunchFileInstance &i : std::as_const(out.instances))
+        if (i.external) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Info;
+            d.code = QStringLiteral("external-include");
+            d.message = QStringLiteral("Include of %1 from package %2, which is not in the workspace.")
+                            .arg(i.type, i.package);
+            d.evidence = i.evidence;
+            out.diagnostics.append(d);
+        }
+    return out;
+}
+
+LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,
+                                      const LaunchOptions &options, const StageControl &control)
+{
+    const Workspace ws = WorkspaceScanner::scan(root, control);
+    return LaunchAnalyzer::run(ws, nodes, options, control);
+}
+
+} // namespace rosarch

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "atomicnodelist.h"
+#include "launchdependencies.h"
+#include "stagecontrol.h"
+#include "workspace.h"
+
+#include <QMap>
+#include <QString>
+
+namespace rosarch {
+
+/// What a person chose for stage 2: the root launch file and launch argument values.
+struct LaunchOptions
+{
+    QString rootFile;                 ///< workspace-relative; "" = every top-level launch file
+    QMap<QString, QString> arguments; ///< name -> value (`--launch-arg name:=value`)
+    bool operator==(const LaunchOptions &) const = default;
+};
+
+/// Stage 2: finds launch files by content, reads them (Python, XML, YAML), and executes their
+/// descriptions symbolically: arguments, scopes, namespaces, remaps, conditions, includes
+/// (resolved through the workspace's packages, cycles reported), composable containers.
+/// Node instances are resolved against stage 1's executables and plugins.
+class LaunchAnalyzer
+{
+public:
+    static LaunchDependencies run(const Workspace &workspace, const AtomicNodeList &nodes,
+                                  const LaunchOptions &options = {}, const StageControl &control = {});
+};
+
+/// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer
+/// against stage 1's result.
+LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,
+                                      const LaunchOptions &options = {}, const StageControl &control = {});
+
+} // namespace rosarch

@@ -1,0 +1,503 @@
+#include "appsettings.h"
+#include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
+#include "document.h"
+#include "launchargumentsdialog.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
+#include "logview.h"
+#include "mainwindow.h"
+#include "nodefilterproxymodel.h"
+#include "sourceview.h"
+#include "stagerunner.h"
+#include "screenshot.h"
+#include "guifixture.h"
+#include "testsupport.h"
+
+#include <Qsci/qscilexer.h>
+#include <Qsci/qsciscintilla.h>
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QToolBar>
+#include <QTreeView>
+#include <QtTest>
+
+using namespace rosarch;
+using namespace rosarch::test::gui;
+using rosarch::test::saveScreenshot;
+
+namespace {
+
+QStringList childNames(const QAbstractItemModel *model, const QModelIndex &parent)
+{
+    QStringList names;
+    for (int r = 0; r < model->rowCount(parent); ++r)
+        names << model->index(r, 0, parent).data().toString();
+    return names;
+}
+
+QString lexerLanguage(MainWindow &w)
+{
+    QsciLexer *lexer = w.sourceView()->editor()->lexer();
+    return lexer ? QString::fromLatin1(lexer->language()) : QString();
+}
+
+bool markedLine(MainWindow &w, int line)
+{
+    return w.sourceView()->editor()->markersAtLine(line - 1) &
+           (1u << w.sourceView()->evidenceMarker());
+}
+
+/// A window on gui_ws whose stages are stubs: stage 1+2 give the hand-built model, stage 2
+/// alone records the options it ran with.
+struct StubbedWindow
+{
+    MainWindow w;
+    QList<LaunchOptions> fullRuns;
+    QList<LaunchOptions> launchRuns;
+
+    StubbedWindow()
+    {
+        w.runner()->setStageFunction(
+            [this](const QString &, const LaunchOptions &options, const StageControl &) {
+                fullRuns << options;
+                return handBuiltRecovery();
+            });
+        w.runner()->setLaunchFunction([this](const QString &, const AtomicNodeList &nodes,
+                                             const LaunchOptions &options, const StageControl &) {
+            launchRuns << options;
+            LaunchDependencies d = handBuiltLaunch();
+            d.nodes[0].nodeName = QStringLiteral("talker_%1").arg(nodes.nodes.size());
+            return d;
+        });
+    }
+};
+
+} // namespace
+
+class TestLaunchPanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(QFileInfo(fixture()).isDir());
+    }
+
+    void init()
+    {
+        QSettings(QStringLiteral("rosarch"), QCoreApplication::applicationName()).clear();
+    }
+
+    void launchTreeSitsBetweenNodesAndSource()
+    {
+        MainWindow w;
+        w.resize(1500, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QDockWidget *nodes = w.findChild<QDockWidget *>(QStringLiteral("atomicNodesDock"));
+        QDockWidget *launch = w.findChild<QDockWidget *>(QStringLiteral("launchTreeDock"));
+        QDockWidget *source = w.findChild<QDockWidget *>(QStringLiteral("sourceDock"));
+        QVERIFY(nodes && launch && source);
+        QCOMPARE(launch->windowTitle(), QStringLiteral("Launch tree"));
+        QVERIFY(launch->isVisible());
+        QVERIFY(nodes->geometry().right() < launch->geometry().left());
+        QVERIFY(launch->geometry().right() < source->geometry().left());
+        // before a run the panel says what to do instead of showing an empty tree
+        QVERIFY(w.launchPanel()->placeholderLabel()->isVisible());
+        QVERIFY(w.launchPanel()->placeholderLabel()->text().contains(QStringLiteral("Open")));
+        // reachable from the View menu, the Stages menu and the toolbar
+        QAction *toggle = launch->toggleViewAction();
+        toggle->trigger();
+        QVERIFY(!launch->isVisible());
+        toggle->trigger();
+        QVERIFY(launch->isVisible());
+        QToolBar *toolBar = w.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
+        QVERIFY(toolBar->actions().contains(w.launchArgumentsAction()));
+        QVERIFY(toolBar->actions().contains(w.runLaunchAction()));
+        QMenu *stages = nullptr;
+        for (QMenu *m : w.findChildren<QMenu *>())
+            if (m->title() == QStringLiteral("&Stages"))
+                stages = m;
+        QVERIFY(stages && stages->actions().contains(w.launchArgumentsAction()));
+        QCOMPARE(w.launchArgumentsAction()->text(), QStringLiteral("Launch &Arguments…"));
+    }
+
+    void realRunShowsTheFixtureLaunchTree()
+    {
+        MainWindow w;
+        w.resize(1500, 900);
+        w.show();
+        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
+        QVERIFY(finished.wait(60000));
+        LaunchTreeModel *model = w.launchModel();
+        QCOMPARE(model->rowCount(), 1);
+        const QModelIndex root = model->index(0, 0);
+        QCOMPARE(root.data().toString(), QStringLiteral("demo.launch.py"));
+        QCOMPARE(childNames(model, root),
+                 (QStringList{QStringLiteral("talker"), QStringLiteral("/robot1"),
+                              QStringLiteral("echo_talker")}));
+        const QModelIndex robot1 = model->index(1, 0, root);
+        QCOMPARE(childNames(model, robot1), QStringList{QStringLiteral("listener.launch.xml")});
+        const QModelIndex listenerFile = model->index(0, 0, robot1);
+        QCOMPARE(childNames(model, listenerFile),
+                 (QStringList{QStringLiteral("listener"), QStringLiteral("extra.launch.yaml"),
+                              QStringLiteral("talker.launch.py")}));
+        const QModelIndex listener = model->index(0, 0, listenerFile);
+        QCOMPARE(listener.siblingAtColumn(LaunchTreeModel::NamespaceColumn).data().toString(),
+                 QStringLiteral("/robot1"));
+        QCOMPARE(listener.siblingAtColumn(LaunchTreeModel::ClassColumn).data().toString(),
+                 QStringLiteral("Listener"));
+        QVERIFY(!model->isActive(model->index(2, 0, root))); // echo_talker: use_echo is false
+        QVERIFY(model->launchFile(model->index(2, 0, listenerFile))->external);
+        QVERIFY2(w.countsLabel()->text().contains(
+                     QStringLiteral("3 launch files · 4 instances · 0 unresolved")),
+                 qPrintable(w.countsLabel()->text()));
+        QVERIFY(!w.launchPanel()->placeholderLabel()->isVisible());
+        QVERIFY(w.launchPanel()->treeView()->isVisible());
+        // stage 2's note about the external include is in the log
+        bool external = false;
+        for (int r = 0; r < w.logView()->diagnosticsView()->model()->rowCount(); ++r)
+            external |=
+                w.logView()->diagnosticsView()->model()->index(r, 0).data().toString().contains(
+                    QStringLiteral("demo_nodes_cpp"));
+        QVERIFY(external);
+
+        // selecting the node instance shows its launch line and selects its class
+        w.launchPanel()->selectSourceIndex(listener);
+        QCOMPARE(w.sourceView()->currentFile(), kListenerLaunch);
+        QCOMPARE(w.sourceView()->highlighted().line, 3);
+        QVERIFY(markedLine(w, 3));
+        QCOMPARE(lexerLanguage(w), QStringLiteral("XML"));
+        const QModelIndex cls = w.nodePanel()->currentSourceIndex();
+        QCOMPARE(cls.data(AtomicNodeModel::NodeIdRole).toString(),
+                 w.document()->launchDependencies().node(QStringLiteral("n2"))->classId);
+        QCOMPARE(cls.data().toString(), QStringLiteral("Listener"));
+        saveScreenshot(w, QStringLiteral("launchtree_fixture.png"));
+
+        // File → Export writes stage 2's artifact too
+        QTemporaryDir out;
+        QVERIFY(w.exportArtifactsTo(out.path()));
+        const QByteArray json = test::readFile(
+            QDir(out.path()).filePath(QStringLiteral("launch_dependencies.json")));
+        QVERIFY2(json.contains("listener.launch.xml") && json.contains("second_listener"),
+                 json.left(300).constData());
+    }
+
+    void selectingInstancesTracesToClassAndSource()
+    {
+        MainWindow w;
+        w.resize(1500, 900);
+        w.show();
+        w.document()->setRecovery(handBuiltRecovery());
+        LaunchTreeModel *model = w.launchModel();
+
+        // a node of the Python launch file: Python lexer, the Node(...) call marked
+        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
+        QCOMPARE(w.sourceView()->currentFile(), kDemoLaunch);
+        QCOMPARE(w.sourceView()->highlighted(), (Evidence{kDemoLaunch, 18, 9, 20, 41}));
+        QCOMPARE(lexerLanguage(w), QStringLiteral("Python"));
+        QVERIFY(w.sourceView()->editor()->text(17).contains(
+            QStringLiteral("Node(package='py_talker'")));
+        QCOMPARE(w.nodePanel()->currentSourceIndex(),
+                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
+
+        // an include row shows the include line in the including file
+        w.launchPanel()->selectSourceIndex(model->launchFileIndex(QStringLiteral("lf3")));
+        QCOMPARE(w.sourceView()->currentFile(), kListenerLaunch);
+        QCOMPARE(w.sourceView()->highlighted().line, 6);
+        QVERIFY(w.sourceView()->editor()->text(5).contains(QStringLiteral("extra.launch.yaml")));
+        // the YAML file's node: YAML lexer
+        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n3")));
+        QCOMPARE(w.sourceView()->currentFile(), kExtraLaunch);
+        QCOMPARE(lexerLanguage(w), QStringLiteral("YAML"));
+        QVERIFY(markedLine(w, 2));
+
+        // Go to Class: the atomic tree takes over the source view
+        QAction *goToClass = w.launchPanel()->goToClassAction();
+        QVERIFY(goToClass->isEnabled());
+        goToClass->trigger();
+        QCOMPARE(w.nodePanel()->currentSourceIndex(),
+                 w.nodeModel()->nodeIndex(QStringLiteral("arc_1")));
+        QCOMPARE(w.sourceView()->currentFile(), kListener);
+        QCOMPARE(w.sourceView()->highlighted().line, 11);
+        // not for rows without a class
+        w.launchPanel()->selectSourceIndex(model->launchFileIndex(QStringLiteral("lf4")));
+        QVERIFY(!goToClass->isEnabled());
+
+        // double-click on a node instance goes to its class too
+        const QModelIndex talkerRow =
+            w.launchPanel()->proxyModel()->mapFromSource(model->nodeIndex(QStringLiteral("n4")));
+        QTreeView *tree = w.launchPanel()->treeView();
+        tree->scrollTo(talkerRow);
+        const QPoint center = tree->visualRect(talkerRow).center();
+        QSignalSpy requested(w.launchPanel(), &LaunchTreePanel::classRequested);
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, center);  // the press a
+        QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, center); // double-click needs
+        QCOMPARE(requested.count(), 1);
+        QCOMPARE(w.nodePanel()->currentSourceIndex(),
+                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
+        QCOMPARE(w.sourceView()->currentFile(), kTalker);
+    }
+
+    void sourceCursorSelectsTheLaunchItem()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.document()->setRecovery(handBuiltRecovery());
+        LaunchTreeModel *model = w.launchModel();
+        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
+        const Evidence shown = w.sourceView()->highlighted();
+        QsciScintilla *editor = w.sourceView()->editor();
+        QTest::qWait(50); // QScintilla reports cursor moves on its next UI update
+        QCOMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n1")));
+
+        editor->setCursorPosition(28, 12); // line 29: inside the echo talker's Node(...)
+        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n4")));
+        QCOMPARE(w.nodePanel()->currentSourceIndex(),
+                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
+        // following the cursor moves neither the source nor its highlight
+        QCOMPARE(w.sourceView()->highlighted(), shown);
+        QCOMPARE(w.sourceView()->currentFile(), kDemoLaunch);
+        int line = -1, index = -1;
+        editor->getCursorPosition(&line, &index);
+        QCOMPARE(line, 28);
+
+        editor->setCursorPosition(23, 4); // line 24: the include of listener.launch.xml
+        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(),
+                     model->launchFileIndex(QStringLiteral("lf2")));
+        editor->setCursorPosition(9, 0); // line 10: no action, the file itself
+        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(),
+                     model->launchFileIndex(QStringLiteral("lf1")));
+
+        // with a filter hiding the item, following the cursor clears the filter
+        w.launchPanel()->filterEdit()->setText(QStringLiteral("second_listener"));
+        editor->setCursorPosition(17, 10);
+        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n1")));
+        QVERIFY(w.launchPanel()->filterEdit()->text().isEmpty());
+    }
+
+    void filterAndFindInTheLaunchTree()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.document()->setRecovery(handBuiltRecovery());
+        QTreeView *tree = w.launchPanel()->treeView();
+        tree->setFocus();
+        QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier); // Find in the tree with focus
+        QLineEdit *filter = w.launchPanel()->filterEdit();
+        QVERIFY(filter->hasFocus());
+        QTest::keyClicks(filter, QStringLiteral("/robot1/extra"));
+        QAbstractItemModel *proxy = tree->model();
+        QCOMPARE(proxy->rowCount(), 1);
+        QModelIndex row = proxy->index(0, 0);
+        QStringList path;
+        while (proxy->rowCount(row) > 0) {
+            row = proxy->index(0, 0, row);
+            path << row.data().toString();
+        }
+        QCOMPARE(path,
+                 (QStringList{QStringLiteral("/robot1"), QStringLiteral("listener.launch.xml"),
+                              QStringLiteral("extra.launch.yaml"), QStringLiteral("/robot1/extra"),
+                              QStringLiteral("second_listener")}));
+        QTest::keyClick(filter, Qt::Key_Escape);
+        QVERIFY(filter->text().isEmpty());
+        QCOMPARE(proxy->rowCount(proxy->index(0, 0)), 3);
+    }
+
+    void argumentsDialogShowsAndReturnsOptions()
+    {
+        LaunchArgumentsDialog dialog;
+        dialog.setLaunchDependencies(handBuiltLaunch(), QString());
+        LaunchOptions given;
+        given.arguments = {{QStringLiteral("use_echo"), QStringLiteral("true")}};
+        dialog.setOptions(given);
+        QComboBox *root = dialog.rootCombo();
+        QCOMPARE(root->count(), 4);
+        QCOMPARE(root->itemText(0), QStringLiteral("All top-level launch files"));
+        QCOMPARE(root->currentIndex(), 0);
+        QTableWidget *table = dialog.table();
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::NameColumn)->text(),
+                 QStringLiteral("robot"));
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::DefaultColumn)->text(),
+                 QStringLiteral("robot1"));
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::DescriptionColumn)->text(),
+                 QStringLiteral("Namespace of the robot"));
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::FileColumn)->text(),
+                 QStringLiteral("demo.launch.py"));
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::FileColumn)->toolTip(),
+                 kDemoLaunch + QStringLiteral(":14"));
+        QCOMPARE(table->item(1, LaunchArgumentsDialog::ValueColumn)->text(),
+                 QStringLiteral("true"));
+        QVERIFY(
+            !(table->item(0, LaunchArgumentsDialog::DefaultColumn)->flags() & Qt::ItemIsEditable));
+        QVERIFY(table->item(0, LaunchArgumentsDialog::ValueColumn)->flags() & Qt::ItemIsEditable);
+        saveScreenshot(dialog, QStringLiteral("launch_arguments.png"));
+
+        table->item(0, LaunchArgumentsDialog::ValueColumn)->setText(QStringLiteral("r2"));
+        root->setCurrentIndex(root->findData(kDemoLaunch));
+        QCOMPARE(table->rowCount(), 2); // demo.launch.py declares both
+        QCOMPARE(table->item(0, LaunchArgumentsDialog::ValueColumn)->text(), QStringLiteral("r2"));
+        LaunchOptions expected;
+        expected.rootFile = kDemoLaunch;
+        expected.arguments = {{QStringLiteral("robot"), QStringLiteral("r2")},
+                              {QStringLiteral("use_echo"), QStringLiteral("true")}};
+        QCOMPARE(dialog.options(), expected);
+
+        // a root stage 2 has not analysed: its arguments are unknown; typed values stay
+        root->setCurrentIndex(root->findData(kListenerLaunch));
+        QVERIFY(dialog.hintLabel()->isVisibleTo(&dialog));
+        QVERIFY(dialog.hintLabel()->text().contains(QStringLiteral("listener.launch.xml")));
+        QCOMPARE(table->rowCount(), 2); // the values set, as arguments it does not declare
+        QVERIFY(table->item(0, LaunchArgumentsDialog::NameColumn)->flags() & Qt::ItemIsEditable);
+        QCOMPARE(dialog.options().arguments, expected.arguments);
+        QCOMPARE(dialog.options().rootFile, kListenerLaunch);
+
+        // Use Defaults clears every value
+        for (QPushButton *b : dialog.findChildren<QPushButton *>())
+            if (b->text() == QStringLiteral("Use &Defaults"))
+                b->click();
+        QVERIFY(dialog.options().arguments.isEmpty());
+    }
+
+    void argumentsDialogRerunsStageTwoAndOptionsPersist()
+    {
+        LaunchOptions chosen;
+        chosen.rootFile = kDemoLaunch;
+        chosen.arguments = {{QStringLiteral("robot"), QStringLiteral("r2")}};
+        {
+            StubbedWindow s;
+            MainWindow &w = s.w;
+            w.show();
+            QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+            QSignalSpy launchFinished(w.runner(), &StageRunner::launchStageFinished);
+            w.openWorkspace(fixture());
+            QVERIFY(finished.wait(10000));
+            QCOMPARE(s.fullRuns.size(), 1);
+            QCOMPARE(s.fullRuns.first(), LaunchOptions()); // nothing chosen yet
+            w.launchPanel()->selectSourceIndex(w.launchModel()->nodeIndex(QStringLiteral("n3")));
+
+            w.launchArgumentsAction()->trigger();
+            auto *dialog = w.findChild<LaunchArgumentsDialog *>();
+            QVERIFY(dialog && dialog->isVisible());
+            QCOMPARE(dialog->table()->rowCount(), 2);
+            dialog->table()
+                ->item(0, LaunchArgumentsDialog::ValueColumn)
+                ->setText(QStringLiteral("r2"));
+            dialog->rootCombo()->setCurrentIndex(dialog->rootCombo()->findData(kDemoLaunch));
+            dialog->accept();
+
+            QCOMPARE(w.document()->launchOptions(), chosen);
+            QCOMPARE(AppSettings().launchOptions(fixture()), chosen);
+            QVERIFY(launchFinished.wait(10000));
+            QCOMPARE(s.launchRuns, QList<LaunchOptions>{chosen});
+            QCOMPARE(s.fullRuns.size(), 1); // stage 2 alone, against the current classes
+            QCOMPARE(w.document()->launchDependencies().nodes.first().nodeName,
+                     QStringLiteral("talker_2"));
+            QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
+            // the selection survives the re-run
+            QCOMPARE(w.launchPanel()->currentSourceIndex(),
+                     w.launchModel()->nodeIndex(QStringLiteral("n3")));
+
+            // re-running keeps them: stage 2 alone (F6) and both stages (F5)
+            w.runLaunchAction()->trigger();
+            QVERIFY(launchFinished.wait(10000));
+            QCOMPARE(s.launchRuns.last(), chosen);
+            w.runAllStages();
+            QVERIFY(finished.wait(10000));
+            QCOMPARE(s.fullRuns.last(), chosen);
+            w.close();
+        }
+        // another window on the same workspace starts from them
+        StubbedWindow again;
+        QSignalSpy finished(again.w.runner(), &StageRunner::stageFinished);
+        again.w.openWorkspace(fixture());
+        QCOMPARE(again.w.document()->launchOptions(), chosen);
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(again.fullRuns.first(), chosen);
+        // and restores the launch item selected when the last one closed
+        QCOMPARE(again.w.launchPanel()->currentSourceIndex(),
+                 again.w.launchModel()->nodeIndex(QStringLiteral("n3")));
+    }
+
+    void launchOptionsAreKeptPerWorkspace()
+    {
+        QTemporaryDir other;
+        LaunchOptions a;
+        a.rootFile = kDemoLaunch;
+        a.arguments = {{QStringLiteral("robot"), QStringLiteral("alpha")},
+                       {QStringLiteral("path"), QStringLiteral("/opt/x y")}};
+        LaunchOptions b;
+        b.arguments = {{QStringLiteral("use_sim_time"), QStringLiteral("true")}};
+        AppSettings().setLaunchOptions(fixture(), a);
+        AppSettings().setLaunchOptions(other.path(), b);
+        QCOMPARE(AppSettings().launchOptions(fixture()), a);
+        QCOMPARE(AppSettings().launchOptions(other.path()), b);
+        AppSettings().setLaunchOptions(other.path(), {});
+        QCOMPARE(AppSettings().launchOptions(other.path()), LaunchOptions());
+        QCOMPARE(AppSettings().launchOptions(fixture()), a);
+    }
+
+    void exampleWorkspaceLaunchTree()
+    {
+        MainWindow w;
+        w.resize(1600, 950);
+        w.show();
+        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
+        QVERIFY(finished.wait(60000));
+        const LaunchDependencies &launch = w.document()->launchDependencies();
+        QVERIFY(launch.launchFiles.size() >= 4);
+        LaunchTreeModel *model = w.launchModel();
+        QModelIndex robot;
+        for (int r = 0; r < model->rowCount(); ++r)
+            if (model->index(r, 0).data().toString() == QLatin1String("robot.launch.py"))
+                robot = model->index(r, 0);
+        QVERIFY(robot.isValid());
+        // every node instance has a row, shows its line and, with a class, selects it
+        int withClass = 0;
+        for (const NodeInstance &n : launch.nodes) {
+            const QModelIndex row = model->nodeIndex(n.id);
+            QVERIFY2(row.isValid(), qPrintable(n.id));
+            w.launchPanel()->selectSourceIndex(row);
+            QCOMPARE(w.sourceView()->currentFile(), n.evidence.file);
+            QVERIFY(markedLine(w, n.evidence.line));
+            if (!n.classId.isEmpty()) {
+                ++withClass;
+                QCOMPARE(w.nodePanel()->currentSourceIndex(), w.nodeModel()->nodeIndex(n.classId));
+            }
+        }
+        QVERIFY(withClass >= 6);
+        // a composable node sits under its container
+        bool composableUnderContainer = false;
+        for (const NodeInstance &n : launch.nodes)
+            if (n.nodeKind == QLatin1String("composable") && launch.node(n.container))
+                composableUnderContainer |=
+                    model->nodeIndex(n.id).parent() == model->nodeIndex(n.container);
+        QVERIFY(composableUnderContainer);
+        QVERIFY(w.countsLabel()->text().contains(
+            QStringLiteral("%1 launch files").arg(launch.launchFiles.size())));
+        QTest::qWait(50);
+        const auto it = std::find_if(launch.nodes.cbegin(), launch.nodes.cend(),
+                                     [](const NodeInstance &n) { return !n.classId.isEmpty(); });
+        w.launchPanel()->selectSourceIndex(model->nodeIndex(it->id));
+        saveScreenshot(w, QStringLiteral("launchtree_example.png"));
+    }
+};
+
+QTEST_MAIN(TestLaunchPanel)
+#include "tst_launchpanel.moc"

@@ -1,0 +1,323 @@
+// Stage 3: name resolution, guards, wiring, promotion across includes and the architecture
+// checks, on hand-built instances and on tests/data/compose_system (two includes of one
+// launch file under different namespaces, a container with its own remaps, a guarded
+// service, a parameter-derived topic, SetRemap, an inactive node and an unresolved name).
+#include "ccdwriter.h"
+#include "composer.h"
+#include "recovery.h"
+#include "rosnames.h"
+#include "guifixture.h"
+#include "testsupport.h"
+
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+const RosNodePart *partNamed(const Composite &c, const QString &name)
+{
+    for (const RosNodePart &p : c.parts)
+        if (p.name == name || (p.name.isEmpty() && p.typeName == name))
+            return &p;
+    return nullptr;
+}
+
+const PartPort *portOf(const RosNodePart *part, const QString &id)
+{
+    if (!part)
+        return nullptr;
+    for (const PartPort &p : part->ports)
+        if (p.id == id)
+            return &p;
+    return nullptr;
+}
+
+QStringList connectionsOf(const Composite &c, const QString &targetId)
+{
+    QStringList out;
+    for (const Connection &k : c.connections)
+        if (k.targetId == targetId)
+            out << QStringLiteral("%1 %2.%3").arg(connectionKindName(k.kind), c.part(k.partId)->name.isEmpty()
+                                                  ? c.part(k.partId)->typeName : c.part(k.partId)->name, k.portId);
+    return out;
+}
+
+QStringList codes(const QList<Diagnostic> &list)
+{
+    QStringList out;
+    for (const Diagnostic &d : list)
+        out << d.code;
+    out.sort();
+    return out;
+}
+
+} // namespace
+
+class TestComposition : public QObject
+{
+    Q_OBJECT
+
+    Recovery m_recovery;
+    const Composite *m_system = nullptr;
+    const Composite *m_front = nullptr;
+    const Composite *m_rear = nullptr;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_recovery = recoverWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
+        const Architecture &arch = m_recovery.architecture;
+        QCOMPARE(arch.composites.size(), 3);
+        m_system = &arch.composites.at(0);
+        m_front = &arch.composites.at(1);
+        m_rear = &arch.composites.at(2);
+        QCOMPARE(m_system->stem, QStringLiteral("system"));
+        QCOMPARE(m_front->stem, QStringLiteral("vision"));
+        QCOMPARE(m_front->parentId, m_system->instanceId);
+    }
+
+    void expandsNames_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("ns");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("absolute") << "/scan" << "/robot" << "/scan";
+        QTest::newRow("relative") << "scan" << "/robot" << "/robot/scan";
+        QTest::newRow("relative at root") << "scan" << "/" << "/scan";
+        QTest::newRow("nested relative") << "camera/image" << "/a/b" << "/a/b/camera/image";
+        QTest::newRow("private") << "~/status" << "/robot" << "/robot/driver/status";
+        QTest::newRow("private at root") << "~/status" << "/" << "/driver/status";
+        QTest::newRow("tilde alone") << "~" << "/robot" << "/robot/driver";
+    }
+
+    void expandsNames()
+    {
+        QFETCH(QString, name);
+        QFETCH(QString, ns);
+        QFETCH(QString, expected);
+        QCOMPARE(RosNames::expand(name, ns, QStringLiteral("driver")), expected);
+    }
+
+    void remapsTheNameAsWritten()
+    {
+        const QList<QPair<QString, QString>> rules{{QStringLiteral("__ns"), QStringLiteral("/x")},
+                                                   {QStringLiteral("/robot/scan"), QStringLiteral("scan_raw")},
+                                                   {QStringLiteral("~/out"), QStringLiteral("/result")},
+                                                   {QStringLiteral("scan"), QStringLiteral("never_used")}};
+        int used = -1;
+        // "scan" expands to /robot/scan, which the absolute rule names: the first match wins.
+        QCOMPARE(RosNames::remap(QStringLiteral("scan"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+                 QStringLiteral("/robot/scan_raw"));
+        QCOMPARE(used, 1);
+        QCOMPARE(RosNames::remap(QStringLiteral("~/out"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+                 QStringLiteral("/result"));
+        QCOMPARE(used, 2);
+        QCOMPARE(RosNames::remap(QStringLiteral("other"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+                 QStringLiteral("/robot/other"));
+        QCOMPARE(used, -1);
+    }
+
+    void evaluatesGuards_data()
+    {
+        QTest::addColumn<QString>("guard");
+        QTest::addColumn<QString>("value");
+        QTest::addColumn<bool>("known");
+        QTest::addColumn<bool>("holds");
+        QTest::newRow("true") << "use_x" << "true" << true << true;
+        QTest::newRow("False") << "use_x" << "False" << true << false;
+        QTest::newRow("negated") << "!use_x" << "false" << true << true;
+        QTest::newRow("python not") << "not self.use_x" << "True" << true << false;
+        QTest::newRow("member") << "this->use_x_" << "1" << true << true;
+        QTest::newRow("compared") << "use_x == false" << "false" << true << true;
+        QTest::newRow("compound") << "use_x && ready" << "true" << false << true;
+        QTest::newRow("not a bool") << "use_x" << "maybe" << false << true;
+    }
+
+    void evaluatesGuards()
+    {
+        QFETCH(QString, guard);
+        QFETCH(QString, value);
+        QFETCH(bool, known);
+        QFETCH(bool, holds);
+        bool k = !known;
+        QCOMPARE(RosNames::evaluateGuard(guard, value, &k), holds);
+        QCOMPARE(k, known);
+    }
+
+    void launchValuesOverrideParameterDerivedNames()
+    {
+        AtomicNode node;
+        node.nodeName = QStringLiteral("rectifier");
+        Port out = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("image_rect"),
+                                   QStringLiteral("sensor_msgs/msg/Image"), QString(), {});
+        out.nameOrigin = NameOrigin::Parameter;
+        out.parameter = QStringLiteral("output_topic");
+        Port guarded = test::gui::port(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("~/reset"),
+                                       QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"), {});
+        guarded.guard = QStringLiteral("enable_reset");
+        guarded.guardParameter = QStringLiteral("enable_reset");
+        guarded.guardDefault = QStringLiteral("false");
+        node.ports = {out, guarded};
+
+        NodeInstance instance;
+        instance.nodeName = QStringLiteral("rect");
+        instance.nameSpace = QStringLiteral("/cam");
+        QList<PartPort> ports = Composer::resolvePorts(node, instance, nullptr);
+        QCOMPARE(ports.at(0).name, QStringLiteral("/cam/image_rect"));
+        QVERIFY(ports.at(0).parameterDerived);
+        QVERIFY(!ports.at(1).active); // the declared default is false
+        QCOMPARE(ports.at(1).name, QStringLiteral("/cam/rect/reset"));
+
+        instance.parameters = {{QStringLiteral("output_topic"), QStringLiteral("/custom")},
+                               {QStringLiteral("enable_reset"), QStringLiteral("true")}};
+        NodeInstance container;
+        container.remaps = {{QStringLiteral("/custom"), QStringLiteral("/final")}};
+        ports = Composer::resolvePorts(node, instance, &container);
+        QCOMPARE(ports.at(0).name, QStringLiteral("/final"));
+        QVERIFY(ports.at(0).remapped);
+        QVERIFY(ports.at(1).active);
+    }
+
+    void resolvesPortsPerInstance()
+    {
+        const RosNodePart *camera = partNamed(*m_front, QStringLiteral("front_camera"));
+        QVERIFY(camera);
+        QCOMPARE(camera->nameSpace, QStringLiteral("/front"));
+        QCOMPARE(portOf(camera, QStringLiteral("p1"))->name, QStringLiteral("/front/camera/image"));
+        QVERIFY(portOf(camera, QStringLiteral("p1"))->remapped);
+        QCOMPARE(portOf(camera, QStringLiteral("ps1"))->name, QStringLiteral("/front/front_camera/set_exposure"));
+        QVERIFY(portOf(camera, QStringLiteral("ps1"))->active);
+
+        // The rear include passes exposure:=false: the guarded service is kept but inactive.
+        const RosNodePart *rearCamera = partNamed(*m_rear, QStringLiteral("rear_camera"));
+        QVERIFY(rearCamera);
+        QVERIFY(!portOf(rearCamera, QStringLiteral("ps1"))->active);
+
+        // Container-level remap (image_rect -> rectified) reaches the parameter-derived output.
+        const PartPort *rectified = portOf(partNamed(*m_front, QStringLiteral("rectifier")), QStringLiteral("p1"));
+        QCOMPARE(rectified->name, QStringLiteral("/front/rectified"));
+        QVERIFY(rectified->parameterDerived);
+        QCOMPARE(portOf(partNamed(*m_front, QStringLiteral("detector")), QStringLiteral("s1"))->name,
+                 QStringLiteral("/front/rectified"));
+        // SetRemap in the rear group renames an absolute name inside the included file.
+        QCOMPARE(portOf(partNamed(*m_rear, QStringLiteral("detector")), QStringLiteral("p1"))->name,
+                 QStringLiteral("/rear/detections"));
+        // An expression stays unresolved, with its text as the guess, and is not wired.
+        const PartPort *report = portOf(partNamed(*m_system, QStringLiteral("commander")), QStringLiteral("p2"));
+        QVERIFY(!report->resolved);
+        QCOMPARE(report->name, QStringLiteral("self.get_name() + '/report'"));
+        for (const Connection &k : m_system->connections)
+            QVERIFY(!(k.portId == QLatin1String("p2") && m_system->part(k.partId)->name == QLatin1String("commander")));
+    }
+
+    void wiresInsideAndPromotesTheRest()
+    {
+        QStringList channels;
+        for (const Channel &ch : m_front->channels)
+            channels << ch.name;
+        QCOMPARE(channels, (QStringList{QStringLiteral("/front/camera/image"), QStringLiteral("/front/rectified")}));
+        QStringList boundary;
+        for (const BoundaryPort &b : m_front->boundary)
+            boundary << QStringLiteral("%1 %2 %3").arg(b.id, b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.name);
+        QCOMPARE(boundary, (QStringList{QStringLiteral("s1 in /front/trigger"),
+                                        QStringLiteral("ps1 in /front/front_camera/set_exposure"),
+                                        QStringLiteral("p1 out /detections"),
+                                        QStringLiteral("rs1 out /front/get_calibration")}));
+        // The rear composite has no exposure service to promote.
+        QCOMPARE(m_rear->boundary.size(), 3);
+    }
+
+    void wiresAcrossIncludes()
+    {
+        const RosNodePart *front = nullptr;
+        for (const RosNodePart &p : m_system->parts)
+            if (p.kind == RosNodePart::Kind::Launch && p.typeId == m_front->instanceId)
+                front = &p;
+        QVERIFY(front);
+        QCOMPARE(front->nameSpace, QStringLiteral("/front"));
+        QCOMPARE(front->ports.size(), m_front->boundary.size());
+
+        const Channel *detections = nullptr;
+        for (const Channel &ch : m_system->channels)
+            if (ch.name == QLatin1String("/detections"))
+                detections = &ch;
+        QVERIFY(detections);
+        QCOMPARE(connectionsOf(*m_system, detections->id),
+                 (QStringList{QStringLiteral("publish vision.p1"), QStringLiteral("subscribe planner.s1"),
+                              QStringLiteral("subscribe backup_planner.s1")}));
+        // The planners' relative front/trigger reaches the front camera's promoted subscription.
+        QCOMPARE(connectionsOf(*m_system, QStringLiteral("q_front_trigger")),
+                 (QStringList{QStringLiteral("publish planner.p2"), QStringLiteral("publish backup_planner.p2"),
+                              QStringLiteral("subscribe vision.s1")}));
+        QCOMPARE(connectionsOf(*m_system, QStringLiteral("a_navigate")),
+                 (QStringList{QStringLiteral("server planner.pa1"), QStringLiteral("server backup_planner.pa1"),
+                              QStringLiteral("client commander.ra1")}));
+        // Three publishers of /robot/cmd_vel and no subscriber: one boundary port, three delegations.
+        const BoundaryPort *cmd = nullptr;
+        for (const BoundaryPort &b : m_system->boundary)
+            if (b.name == QLatin1String("/robot/cmd_vel"))
+                cmd = &b;
+        QVERIFY(cmd);
+        QCOMPARE(connectionsOf(*m_system, cmd->id).size(), 3);
+    }
+
+    void inactivePartsAreKeptButNotWired()
+    {
+        const RosNodePart *sim = partNamed(*m_system, QStringLiteral("sim_commander"));
+        QVERIFY(sim);
+        QVERIFY(!sim->active);
+        for (const Connection &k : m_system->connections)
+            QVERIFY(k.partId != sim->id);
+        QVERIFY(!CcdWriter::write(*m_system).contains(QLatin1String("sim_commander")));
+    }
+
+    void reportsArchitectureChecks()
+    {
+        const QList<Diagnostic> &d = m_recovery.architecture.diagnostics;
+        QCOMPARE(codes(d), (QStringList{QStringLiteral("duplicate-server"), QStringLiteral("duplicate-server"),
+                                        QStringLiteral("remap-unmatched"), QStringLiteral("topic-unheard"),
+                                        QStringLiteral("topic-unheard"), QStringLiteral("topic-unheard"),
+                                        QStringLiteral("topic-unheard"), QStringLiteral("topic-unpublished"),
+                                        QStringLiteral("topic-unpublished"), QStringLiteral("type-mismatch"),
+                                        QStringLiteral("unserved-client"), QStringLiteral("unserved-client")}));
+        for (const Diagnostic &x : d) {
+            QVERIFY2(x.evidence.isValid(), qPrintable(x.message));
+            if (x.code == QLatin1String("remap-unmatched")) {
+                QCOMPARE(x.evidence.file, QStringLiteral("src/vision/launch/vision.launch.xml"));
+                QVERIFY(x.message.contains(QLatin1String("camera_info:=camera/info")));
+            }
+            if (x.code == QLatin1String("type-mismatch"))
+                QVERIFY(x.message.contains(QLatin1String("geometry_msgs/msg/Twist, geometry_msgs/msg/TwistStamped")));
+        }
+    }
+
+    void representativeIsTheFirstInstance()
+    {
+        const QList<const Composite *> reps = m_recovery.architecture.representatives();
+        QCOMPARE(reps.size(), 2);
+        QCOMPARE(reps.at(1), m_front);
+        const QMap<QString, QString> stems = CcdWriter::fileStems(m_recovery.architecture);
+        QCOMPARE(stems.value(m_front->instanceId), QStringLiteral("vision"));
+    }
+
+    void cancelStopsTheStage()
+    {
+        StageControl control;
+        control.canceled = [] { return true; };
+        const Architecture arch = Composer::run(m_recovery.nodes, m_recovery.launch, control);
+        QVERIFY(arch.canceled);
+        QVERIFY(arch.composites.isEmpty());
+    }
+
+    void stemsOfLaunchFiles()
+    {
+        QCOMPARE(launchStem(QStringLiteral("robot.launch.py")), QStringLiteral("robot"));
+        QCOMPARE(launchStem(QStringLiteral("nav_launch.py")), QStringLiteral("nav"));
+        QCOMPARE(launchStem(QStringLiteral("a/b/mission.launch.yaml")), QStringLiteral("mission"));
+        QCOMPARE(launchStem(QStringLiteral("bringup.xml")), QStringLiteral("bringup"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestComposition)
+#include "tst_composition.moc"

@@ -1,0 +1,369 @@
+// Stage 2 semantics on hand-built launch descriptions (readers are tested separately), the
+// substitution evaluator, and the same system in three formats read from fixture files.
+#include "launchexecutor.h"
+#include "recovery.h"
+#include "substitutionevaluator.h"
+#include "launchsupport.h"
+#include "testsupport.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rosarch;
+using rosarch::test::launch::var;
+
+namespace {
+
+Substitution lit(const QString &s)
+{
+    return Substitution::literal(s);
+}
+
+Substitution share(const QString &pkg, const QString &rest)
+{
+    Substitution s;
+    s.kind = Substitution::Kind::FindPackageShare;
+    s.parts << lit(pkg);
+    Substitution join;
+    join.kind = Substitution::Kind::PathJoin;
+    join.parts << s << lit(rest);
+    return join;
+}
+
+Evidence at(const QString &file, int line)
+{
+    return Evidence{file, line, 1, line, 10};
+}
+
+LaunchAction node(const QString &pkg, const QString &exe, const QString &name, int line)
+{
+    LaunchAction a;
+    a.kind = LaunchAction::Kind::Node;
+    a.package = lit(pkg);
+    a.executable = lit(exe);
+    a.name = lit(name);
+    a.evidence = at(QStringLiteral("x"), line);
+    return a;
+}
+
+LaunchAction declare(const QString &name, const QString *value)
+{
+    LaunchAction a;
+    a.kind = LaunchAction::Kind::DeclareArgument;
+    a.name = lit(name);
+    if (value) {
+        a.value = lit(*value);
+        a.hasValue = true;
+    }
+    return a;
+}
+
+LaunchAction include(const Substitution &path, QList<QPair<Substitution, Substitution>> args = {})
+{
+    LaunchAction a;
+    a.kind = LaunchAction::Kind::Include;
+    a.path = path;
+    a.arguments = std::move(args);
+    return a;
+}
+
+/// A workspace folder with real files (include resolution checks them) and hand-built readers.
+struct Fixture
+{
+    QTemporaryDir dir;
+    Workspace ws;
+    AtomicNodeList nodes;
+    QMap<QString, LaunchFileDescription> files;
+
+    Fixture()
+    {
+        ws.root = dir.path();
+        RosPackage pkg;
+        pkg.name = QStringLiteral("bringup");
+        pkg.path = QStringLiteral("bringup");
+        pkg.buildType = QStringLiteral("ament_cmake");
+        ws.packages << pkg;
+        AtomicNode talker;
+        talker.id = QStringLiteral("arc_1");
+        talker.className = QStringLiteral("Talker");
+        talker.nodeName = QStringLiteral("talker_in_code");
+        talker.packageName = QStringLiteral("demo");
+        talker.executables << QStringLiteral("talker");
+        talker.compileType = AtomicNode::CompileType::Python;
+        AtomicNode filter;
+        filter.id = QStringLiteral("arc_2");
+        filter.className = QStringLiteral("Filter");
+        filter.nodeName = QStringLiteral("filter");
+        filter.packageName = QStringLiteral("demo");
+        filter.plugins << QStringLiteral("demo::Filter");
+        nodes.nodes << talker << filter;
+    }
+
+    void add(const QString &path, QList<LaunchAction> actions)
+    {
+        QDir(dir.path()).mkpath(QFileInfo(path).path());
+        QFile f(dir.filePath(path));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("# launch\n");
+        SourceFile sf;
+        sf.path = path;
+        sf.package = QStringLiteral("bringup");
+        sf.language = SourceFile::Language::Python;
+        ws.files << sf;
+        LaunchFileDescription d;
+        d.file = path;
+        d.actions = std::move(actions);
+        files.insert(path, d);
+    }
+
+    LaunchDependencies run(const QString &root, const QMap<QString, QString> &args = {})
+    {
+        LaunchDependencies out;
+        LaunchExecutor exec(ws, nodes, [this](const QString &f) -> const LaunchFileDescription * {
+            const auto it = files.constFind(f);
+            return it == files.constEnd() ? nullptr : &*it;
+        }, &out);
+        exec.runRoot(root, args);
+        return out;
+    }
+};
+
+QStringList summary(const LaunchDependencies &d)
+{
+    QStringList out;
+    for (const NodeInstance &n : d.nodes) {
+        QStringList remaps;
+        for (const auto &[f, t] : n.remaps)
+            remaps << f + QStringLiteral("->") + t;
+        QStringList params;
+        for (const auto &[k, v] : n.parameters)
+            params << k + QLatin1Char('=') + v;
+        out << QStringLiteral("%1 %2 %3 class=%4 kind=%5 active=%6 remaps=[%7] params=[%8]")
+                   .arg(n.nameSpace, n.nodeName, n.execName, n.className, n.nodeKind)
+                   .arg(n.active)
+                   .arg(remaps.join(','), params.join(','));
+    }
+    return out;
+}
+
+} // namespace
+
+class TestLaunchAnalyzer : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void namespacesAndScopes()
+    {
+        Fixture fx;
+        LaunchAction push;
+        push.kind = LaunchAction::Kind::PushNamespace;
+        push.nameSpace = var(QStringLiteral("ns"));
+        LaunchAction group;
+        group.kind = LaunchAction::Kind::Group;
+        group.children << push << node(QStringLiteral("demo"), QStringLiteral("talker"), QString(), 3);
+        LaunchAction absolute = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("abs"), 4);
+        absolute.nameSpace = lit(QStringLiteral("/fixed"));
+        group.children << absolute;
+        const QString ns = QStringLiteral("robot");
+        fx.add(QStringLiteral("bringup/launch/a.launch.py"),
+               {declare(QStringLiteral("ns"), &ns), group, node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("after"), 5)});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/a.launch.py"));
+        QCOMPARE(summary(d), (QStringList{
+            "/robot talker_in_code talker class=Talker kind=python active=1 remaps=[] params=[]",
+            "/fixed abs talker class=Talker kind=python active=1 remaps=[] params=[]",
+            "/ after talker class=Talker kind=python active=1 remaps=[] params=[]"}));
+        QCOMPARE(d.instances.size(), 1);
+        QCOMPARE(d.instances[0].namespaces.value(QStringLiteral("/robot")), QStringList{"n1"});
+        QCOMPARE(d.instances[0].namespaces.value(QStringLiteral("/")), QStringList{"n3"});
+        QCOMPARE(d.arguments.size(), 1);
+        QCOMPARE(d.arguments[0].defaultValue, QStringLiteral("robot"));
+
+        // The person's value wins over the default.
+        const LaunchDependencies d2 = fx.run(QStringLiteral("bringup/launch/a.launch.py"), {{"ns", "other"}});
+        QCOMPARE(d2.nodes[0].nameSpace, QStringLiteral("/other"));
+    }
+
+    void includesPassArgumentsAndResolveThroughPackages()
+    {
+        Fixture fx;
+        LaunchAction remap;
+        remap.kind = LaunchAction::Kind::SetRemap;
+        remap.remaps << LaunchRemap{lit(QStringLiteral("a")), lit(QStringLiteral("b")), {}};
+        LaunchAction child = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("t"), 2);
+        LaunchParameter p{lit(QStringLiteral("rate")), var(QStringLiteral("rate")), false, {}};
+        child.parameters << p;
+        fx.add(QStringLiteral("bringup/launch/child.launch.py"), {declare(QStringLiteral("rate"), nullptr), child});
+        LaunchAction ext = include(share(QStringLiteral("not_here"), QStringLiteral("launch/x.launch.py")));
+        fx.add(QStringLiteral("bringup/launch/root.launch.py"),
+               {remap,
+                include(share(QStringLiteral("bringup"), QStringLiteral("launch/child.launch.py")),
+                        {{lit(QStringLiteral("rate")), lit(QStringLiteral("10"))}}),
+                include(share(QStringLiteral("bringup"), QStringLiteral("launch/child.launch.py"))),
+                ext});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/root.launch.py"));
+        QCOMPARE(d.instances.size(), 4); // root, child twice, external
+        QCOMPARE(d.instances[0].includedLaunchFiles, (QStringList{"lf2", "lf3", "lf4"}));
+        QCOMPARE(d.instances[1].file, QStringLiteral("bringup/launch/child.launch.py"));
+        QCOMPARE(d.instances[1].parentId, QStringLiteral("lf1"));
+        QCOMPARE(d.instances[2].file, QStringLiteral("bringup/launch/child.launch.py"));
+        QVERIFY(d.instances[3].external);
+        QCOMPARE(d.instances[3].package, QStringLiteral("not_here"));
+        QCOMPARE(summary(d), (QStringList{
+            "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=10]",
+            "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=]"}));
+        // The second include passes no value: recorded, not dropped.
+        QCOMPARE(d.instances[2].unresolved.size(), 1);
+        QCOMPARE(d.instances[2].unresolved[0].kind, QStringLiteral("argument"));
+        QCOMPARE(d.nodes[1].unresolved.size(), 1);
+        QCOMPARE(d.nodes[1].unresolved[0].kind, QStringLiteral("launch-configuration"));
+    }
+
+    void includeCyclesAreReported()
+    {
+        Fixture fx;
+        fx.add(QStringLiteral("bringup/launch/a.launch.py"),
+               {include(share(QStringLiteral("bringup"), QStringLiteral("launch/b.launch.py")))});
+        fx.add(QStringLiteral("bringup/launch/b.launch.py"),
+               {include(share(QStringLiteral("bringup"), QStringLiteral("launch/a.launch.py")))});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/a.launch.py"));
+        QCOMPARE(d.instances.size(), 3);
+        QCOMPARE(d.diagnostics.size(), 1);
+        QCOMPARE(d.diagnostics[0].code, QStringLiteral("include-cycle"));
+        QVERIFY(d.diagnostics[0].message.contains(QStringLiteral("a.launch.py → bringup/launch/b.launch.py → bringup/launch/a.launch.py")));
+        QCOMPARE(d.instances[2].unresolved.last().kind, QStringLiteral("cycle"));
+    }
+
+    void conditionsDecideOrAreMarked()
+    {
+        Fixture fx;
+        LaunchAction off = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("off"), 2);
+        off.condition.expression = var(QStringLiteral("flag"));
+        off.condition.text = QStringLiteral("IfCondition(flag)");
+        LaunchAction on = off;
+        on.name = lit(QStringLiteral("on"));
+        on.condition.unless = true;
+        LaunchAction unknown = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("unknown"), 4);
+        unknown.condition.expression = Substitution::unknown(QStringLiteral("context.perform()"));
+        unknown.condition.text = QStringLiteral("context.perform()");
+        LaunchAction eval = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("eval"), 5);
+        eval.condition.expression.kind = Substitution::Kind::Eval;
+        eval.condition.expression.parts << lit(QStringLiteral("'")) << var(QStringLiteral("flag")) << lit(QStringLiteral("' == 'false'"));
+        eval.condition.text = QStringLiteral("PythonExpression");
+        const QString flag = QStringLiteral("false");
+        fx.add(QStringLiteral("bringup/launch/c.launch.py"), {declare(QStringLiteral("flag"), &flag), off, on, unknown, eval});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/c.launch.py"));
+        QCOMPARE(d.nodes.size(), 4);
+        QCOMPARE(d.nodes[0].active, false);
+        QCOMPARE(d.nodes[1].active, true);
+        QCOMPARE(d.nodes[2].active, true);
+        QCOMPARE(d.nodes[2].unresolved.size(), 1);
+        QCOMPARE(d.nodes[2].unresolved[0].kind, QStringLiteral("condition"));
+        QCOMPARE(d.nodes[2].unresolved[0].guess, QStringLiteral("true"));
+        QCOMPARE(d.nodes[3].active, true);
+        QVERIFY(d.nodes[3].unresolved.isEmpty());
+    }
+
+    void composableNodesAndContainers()
+    {
+        Fixture fx;
+        LaunchAction container;
+        container.kind = LaunchAction::Kind::ComposableContainer;
+        container.package = lit(QStringLiteral("rclcpp_components"));
+        container.executable = lit(QStringLiteral("component_container"));
+        container.name = lit(QStringLiteral("box"));
+        LaunchAction comp;
+        comp.kind = LaunchAction::Kind::ComposableNode;
+        comp.package = lit(QStringLiteral("demo"));
+        comp.plugin = lit(QStringLiteral("demo::Filter"));
+        container.children << comp;
+        LaunchAction load;
+        load.kind = LaunchAction::Kind::LoadComposableNodes;
+        load.target = lit(QStringLiteral("box"));
+        LaunchAction later = comp;
+        later.name = lit(QStringLiteral("later"));
+        load.children << later;
+        fx.add(QStringLiteral("bringup/launch/k.launch.py"), {container, load});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/k.launch.py"));
+        QCOMPARE(summary(d), (QStringList{
+            "/ box component_container class= kind=cpp active=1 remaps=[] params=[]",
+            "/ filter demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]",
+            "/ later demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]"}));
+        QCOMPARE(d.nodes[1].container, QStringLiteral("n1"));
+        QCOMPARE(d.nodes[2].container, QStringLiteral("n1"));
+    }
+
+    void executableWithTwoNodesStartsBoth()
+    {
+        Fixture fx;
+        AtomicNode a;
+        a.id = QStringLiteral("arc_3");
+        a.className = QStringLiteral("Driver");
+        a.nodeName = QStringLiteral("driver");
+        a.packageName = QStringLiteral("demo");
+        a.executables << QStringLiteral("duo");
+        AtomicNode b = a;
+        b.id = QStringLiteral("arc_4");
+        b.className = QStringLiteral("Odometry");
+        b.nodeName = QStringLiteral("odometry");
+        fx.nodes.nodes << a << b;
+        fx.add(QStringLiteral("bringup/launch/d.launch.py"), {node(QStringLiteral("demo"), QStringLiteral("duo"), QString(), 2)});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/d.launch.py"));
+        QCOMPARE(summary(d), (QStringList{
+            "/ driver duo class=Driver kind=cpp active=1 remaps=[] params=[]",
+            "/ odometry duo class=Odometry kind=cpp active=1 remaps=[] params=[]"}));
+        QCOMPARE(d.instances[0].nodes, (QStringList{"n1", "n2"}));
+        QCOMPARE(d.nodes[1].evidence, d.nodes[0].evidence);
+    }
+
+    void pythonExpressions_data()
+    {
+        QTest::addColumn<QString>("expression");
+        QTest::addColumn<QString>("value");
+        QTest::newRow("eq") << "'a' == 'a'" << "true";
+        QTest::newRow("neq") << "'a' != 'a'" << "false";
+        QTest::newRow("not") << "not true" << "false";
+        QTest::newRow("and-or") << "('x' == 'y') or (True and not False)" << "true";
+        QTest::newRow("in") << "'b' in ['a', 'b']" << "true";
+        QTest::newRow("not in") << "'c' not in ['a', 'b']" << "true";
+        QTest::newRow("number") << "2 == 2.0" << "true";
+    }
+
+    void pythonExpressions()
+    {
+        QFETCH(QString, expression);
+        QFETCH(QString, value);
+        QString out;
+        QVERIFY(SubstitutionEvaluator::evaluatePython(expression, &out));
+        QCOMPARE(out, value);
+    }
+
+    void pythonExpressionsBeyondTheSubsetAreRefused()
+    {
+        QString out;
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("os.environ['X']"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a' =="), &out));
+    }
+
+    void sameSystemInThreeFormats()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("launch_formats/ws")));
+        QCOMPARE(r.launch.launchFiles.size(), 3);
+        QMap<QString, QStringList> byFormat;
+        for (const LaunchFileInstance &i : r.launch.instances) {
+            LaunchDependencies one;
+            for (const NodeInstance &n : r.launch.nodes)
+                if (n.launchFileId == i.id)
+                    one.nodes << n;
+            byFormat.insert(i.format, summary(one));
+        }
+        QCOMPARE(byFormat.size(), 3);
+        QCOMPARE(byFormat.value(QStringLiteral("xml")), byFormat.value(QStringLiteral("python")));
+        QCOMPARE(byFormat.value(QStringLiteral("yaml")), byFormat.value(QStringLiteral("python")));
+        QCOMPARE(byFormat.value(QStringLiteral("python")), (QStringList{
+            "/chat talker talker class=Talker kind=python active=1 remaps=[chatter->conversation] params=[]",
+            "/chat listener listener class=Listener kind=python active=1 remaps=[chatter->conversation] params=[rate=5]"}));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLaunchAnalyzer)
+#include "tst_launchanalyzer.moc"

@@ -1,0 +1,57 @@
+#pragma once
+
+// The C++ analyzer on the fixture workspaces, and ports as comparable text.
+#include "cppnodeanalyzer.h"
+#include "testsupport.h"
+#include "workspacescanner.h"
+
+namespace rosarch::test {
+
+// The C++ analyzer on the fixture workspaces tests/data/cpp_*/ws.
+namespace cpp {
+
+inline LanguageAnalysis analyzeCase(const QString &name)
+{
+    const Workspace ws = WorkspaceScanner::scan(dataDir(name + QStringLiteral("/ws")));
+    return CppNodeAnalyzer(ws).analyze();
+}
+
+inline const AtomicNode *findNode(const LanguageAnalysis &a, const QString &className)
+{
+    for (const AtomicNode &n : a.nodes)
+        if (n.className == className)
+            return &n;
+    return nullptr;
+}
+
+inline QStringList classNames(const LanguageAnalysis &a)
+{
+    QStringList names;
+    for (const AtomicNode &n : a.nodes)
+        names << n.packageName + QLatin1Char('/') + n.className;
+    return names;
+}
+
+// "publisher chatter std_msgs/msg/String cb= origin=literal expr= param= guard= gp= via=
+// @file:line"
+inline QString describe(const Port &p)
+{
+    return QStringLiteral(
+               "%1 %2 %3 cb=%4 origin=%5 expr=%6 param=%7 guard=%8 gp=%9 via=%10%11 @%12:%13")
+        .arg(portKindName(p.kind), p.name, p.type, p.callback, nameOriginName(p.nameOrigin),
+             p.nameExpression, p.parameter, p.guard, p.guardParameter)
+        .arg(p.via, p.inherited ? QStringLiteral(" inherited") : QString(), p.evidence.file)
+        .arg(p.evidence.line);
+}
+
+inline QStringList describePorts(const AtomicNode &n)
+{
+    QStringList out;
+    for (const Port &p : n.ports)
+        out << describe(p);
+    return out;
+}
+
+} // namespace cpp
+
+} // namespace rosarch::test

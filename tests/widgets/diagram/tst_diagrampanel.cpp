@@ -1,0 +1,480 @@
+#include "diagramarchitecture.h"
+#include "diagrambreadcrumbbar.h"
+#include "diagramclusteritem.h"
+#include "diagramedgeitem.h"
+#include "diagramnodeitem.h"
+#include "diagrampanel.h"
+#include "diagramscene.h"
+#include "diagramview.h"
+#include "screenshot.h"
+#include "testsupport.h"
+
+#include <QAction>
+#include <QFile>
+#include <QImage>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace rosarch;
+using rosarch::test::saveScreenshot;
+
+namespace {
+
+/// Runs `trigger` and waits until the panel has drawn (or failed to draw) its result.
+template <typename F> bool laidOut(DiagramPanel &panel, F &&trigger)
+{
+    QSignalSpy spy(&panel, &DiagramPanel::layoutFinished);
+    trigger();
+    while (spy.isEmpty() || panel.isLayingOut())
+        if (!spy.wait(30000))
+            return false;
+    return true;
+}
+
+DiagramNodeItem *nodeItem(DiagramPanel &panel, const QString &key)
+{
+    return dynamic_cast<DiagramNodeItem *>(panel.scene()->item(key));
+}
+
+/// A point on a node's title, in viewport coordinates.
+QPoint titlePoint(DiagramPanel &panel, const QString &key)
+{
+    DiagramNodeItem *item = nodeItem(panel, key);
+    if (!item)
+        return {};
+    panel.view()->centerOn(item);
+    return panel.view()->mapFromScene(item->mapToScene(QPointF(item->node().width / 2, 12)));
+}
+
+QPoint scenePoint(DiagramPanel &panel, const QPointF &p)
+{
+    panel.view()->centerOn(p);
+    return panel.view()->mapFromScene(p);
+}
+
+/// A panel on screen showing the hand-made architecture's root.
+struct ShownPanel
+{
+    DiagramPanel panel;
+    bool ok = false;
+    ShownPanel()
+    {
+        panel.resize(1100, 720);
+        panel.show();
+        if (!QTest::qWaitForWindowExposed(&panel))
+            return;
+        ok = laidOut(panel, [this] { panel.setArchitecture(test::diagram::architecture()); });
+    }
+};
+
+} // namespace
+
+class TestDiagramPanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void drawsTheRootComposite();
+    void searchFindsParts();
+    void doubleClickOpensTheIncludeAndCrumbsGoBack();
+    void filtersHideElements();
+    void collapseReducesANamespaceToOneBox();
+    void clicksCarryIds();
+    void selectInstanceCentresThePart();
+    void marksAndMissingBanner();
+    void exportsSvgAndPng();
+    void layoutFailuresAreShownInTheView();
+    void staleLayoutsAreDropped();
+    void zoomKeys();
+    void biggerDiagram();
+};
+
+void TestDiagramPanel::drawsTheRootComposite()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    qInfo("root composite laid out in %lld ms", panel.lastLayoutMs());
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf1"));
+    QCOMPARE(panel.breadcrumbIds(), QStringList{QStringLiteral("lf1")});
+    QVERIFY(panel.message().isEmpty());
+    const QStringList keys = panel.scene()->keys();
+    for (const char *key :
+         {"part:part1", "part:part2", "part:part3", "part:part4", "part:part5", "channel:q_chatter",
+          "channel:c_reset", "channel:a_navigate", "boundary:s1", "boundary:p1",
+          "namespace:/robot1", "namespace:/robot1/extra", "connection:0", "connection:7"})
+        QVERIFY2(keys.contains(QLatin1String(key)), key);
+    QCOMPARE(keys.size(), 5 + 3 + 2 + 2 + 8);
+    QVERIFY(dynamic_cast<DiagramClusterItem *>(
+        panel.scene()->item(QStringLiteral("namespace:/robot1"))));
+    // Nodes do not overlap; namespaces hold their parts; boundary ports sit on the frame.
+    QList<QRectF> rects;
+    for (const QString &key : keys)
+        if (DiagramNodeItem *n = nodeItem(panel, key))
+            rects << n->mapRectToScene(QRectF(0, 0, n->node().width, n->node().height));
+    for (int i = 0; i < rects.size(); ++i)
+        for (int j = i + 1; j < rects.size(); ++j)
+            QVERIFY(!rects[i].intersects(rects[j]));
+    QVERIFY(panel.scene()
+                ->item(QStringLiteral("namespace:/robot1"))
+                ->sceneBoundingRect()
+                .contains(nodeItem(panel, QStringLiteral("part:part4"))->sceneBoundingRect()));
+    const QRectF frame = panel.scene()->frameRect();
+    DiagramNodeItem *in = nodeItem(panel, QStringLiteral("boundary:s1"));
+    QVERIFY(std::abs(in->mapRectToScene(in->rect()).left() - frame.left()) < 0.5);
+    DiagramNodeItem *out = nodeItem(panel, QStringLiteral("boundary:p1"));
+    QVERIFY(std::abs(out->mapRectToScene(out->rect()).right() - frame.right()) < 0.5);
+    // Inactive and unresolved are carried to the drawing.
+    QVERIFY(nodeItem(panel, QStringLiteral("part:part3"))->node().flags & LayoutInactive);
+    // Tooltips say what a thing is and where it comes from.
+    QVERIFY(panel.scene()
+                ->toolTip(QStringLiteral("port:part1/s1"))
+                .contains(QLatin1String("talker.py:12")));
+    saveScreenshot(panel, QStringLiteral("diagram_root.png"));
+
+    QPalette dark = panel.palette();
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+    dark.setColor(QPalette::WindowText, Qt::white);
+    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+    dark.setColor(QPalette::Text, Qt::white);
+    dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
+    dark.setColor(QPalette::ButtonText, Qt::white);
+    panel.setPalette(dark);
+    QVERIFY(panel.scene()->diagramStyle().dark);
+    saveScreenshot(panel, QStringLiteral("diagram_root_dark.png"));
+}
+
+void TestDiagramPanel::searchFindsParts()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    panel.searchField()->setText(QStringLiteral("navig"));
+    const QStringList matched = {QStringLiteral("part:part4"),
+                                 QStringLiteral("channel:a_navigate")};
+    for (const QString &key : matched)
+        QVERIFY(panel.scene()->item(key)->isMatched());
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part1"))->isMatched());
+    QList<QGraphicsItem *> selected = panel.scene()->selectedItems();
+    QCOMPARE(selected.size(), 1);
+    const QString first = dynamic_cast<DiagramItem *>(selected.first())->key();
+    QVERIFY(matched.contains(first));
+    QTest::keyClick(panel.searchField(), Qt::Key_Return);
+    selected = panel.scene()->selectedItems();
+    QCOMPARE(selected.size(), 1);
+    const QString second = dynamic_cast<DiagramItem *>(selected.first())->key();
+    QVERIFY(matched.contains(second));
+    QVERIFY(second != first);
+    saveScreenshot(panel, QStringLiteral("diagram_search.png"));
+    QTest::keyClick(panel.searchField(), Qt::Key_Return); // wraps around
+    QCOMPARE(dynamic_cast<DiagramItem *>(panel.scene()->selectedItems().first())->key(), first);
+    // Namespaces are found too; nothing matches nonsense.
+    panel.searchField()->setText(QStringLiteral("extra"));
+    QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot1/extra"))->isMatched());
+    panel.searchField()->setText(QStringLiteral("zzz"));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part4"))->isMatched());
+}
+
+void TestDiagramPanel::doubleClickOpensTheIncludeAndCrumbsGoBack()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    QSignalSpy shown(&panel, &DiagramPanel::compositeShown);
+    QVERIFY(laidOut(panel, [&] {
+        QTest::mouseDClick(panel.view()->viewport(), Qt::LeftButton, {},
+                           titlePoint(panel, QStringLiteral("part:part2")));
+    }));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf2"));
+    QCOMPARE(shown.size(), 1);
+    QCOMPARE(shown.first().first().toString(), QStringLiteral("lf2"));
+    QCOMPARE(panel.breadcrumbIds(), QStringList({QStringLiteral("lf1"), QStringLiteral("lf2")}));
+    QCOMPARE(panel.breadcrumbBar()->button(QStringLiteral("lf1"))->text(), QStringLiteral("demo"));
+    QCOMPARE(panel.breadcrumbBar()->button(QStringLiteral("lf2"))->text(),
+             QStringLiteral("listener"));
+    QVERIFY(panel.scene()->item(QStringLiteral("boundary:ps1")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part5")));
+    QVERIFY(nodeItem(panel, QStringLiteral("part:part1"))->node().ports[2].flags &
+            LayoutUnresolved);
+    saveScreenshot(panel, QStringLiteral("diagram_child.png"));
+
+    QVERIFY(laidOut(panel, [&] {
+        QTest::mouseClick(panel.breadcrumbBar()->button(QStringLiteral("lf1")), Qt::LeftButton);
+    }));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf1"));
+    QCOMPARE(panel.breadcrumbIds(), QStringList{QStringLiteral("lf1")});
+    QCOMPARE(shown.last().first().toString(), QStringLiteral("lf1"));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part5")));
+    // The external include has no diagram of its own: double-click leaves the view alone.
+    QTest::mouseDClick(panel.view()->viewport(), Qt::LeftButton, {},
+                       titlePoint(panel, QStringLiteral("part:part5")));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf1"));
+}
+
+void TestDiagramPanel::filtersHideElements()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part3")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("namespace:/robot1/extra")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("boundary:p1")));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part1")));
+    QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part3")));
+
+    QVERIFY(laidOut(panel, [&] { panel.showParametersAction()->trigger(); }));
+    QCOMPARE(nodeItem(panel, QStringLiteral("part:part1"))->node().ports.size(), 3);
+    QVERIFY(!panel.scene()->item(QStringLiteral("boundary:s1")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("connection:6")));
+    QVERIFY(!panel.options().showParameterPorts);
+
+    QVERIFY(laidOut(panel, [&] { panel.showExternalAction()->trigger(); }));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part5")));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part2")));
+}
+
+void TestDiagramPanel::collapseReducesANamespaceToOneBox()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    const QList<QAction *> actions = panel.elementActions(QStringLiteral("namespace:/robot1"));
+    QCOMPARE(actions.size(), 1);
+    QCOMPARE(actions.first()->text(), QStringLiteral("Collapse Namespace /robot1"));
+    QVERIFY(laidOut(panel, [&] { actions.first()->trigger(); }));
+    QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot1")));
+    for (const char *gone : {"part:part2", "part:part3", "part:part4", "namespace:/robot1/extra"})
+        QVERIFY2(!panel.scene()->item(QLatin1String(gone)), gone);
+    DiagramNodeItem *box = nodeItem(panel, QStringLiteral("namespace:/robot1"));
+    QVERIFY(box);
+    QCOMPARE(box->node().shape, LayoutNode::Shape::Folder);
+    int attached = 0;
+    for (QGraphicsItem *item : panel.scene()->items())
+        if (auto *e = dynamic_cast<DiagramEdgeItem *>(item))
+            attached += e->edge().head == box->key() || e->edge().tail == box->key();
+    QCOMPARE(attached, 4);
+    QCOMPARE(panel.elementActions(box->key()).first()->text(),
+             QStringLiteral("Expand Namespace /robot1"));
+    QVERIFY(panel.selectInstance(QStringLiteral("n5"))); // its part is inside the box
+    QVERIFY(box->isSelected());
+    saveScreenshot(panel, QStringLiteral("diagram_collapsed.png"));
+
+    // Double-click on the box expands it again.
+    QVERIFY(laidOut(panel, [&] {
+        QTest::mouseDClick(panel.view()->viewport(), Qt::LeftButton, {},
+                           titlePoint(panel, QStringLiteral("namespace:/robot1")));
+    }));
+    QVERIFY(!panel.isNamespaceCollapsed(QStringLiteral("/robot1")));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part4")));
+}
+
+void TestDiagramPanel::clicksCarryIds()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    QSignalSpy parts(&panel, &DiagramPanel::partActivated);
+    QSignalSpy ports(&panel, &DiagramPanel::portActivated);
+    QSignalSpy evidence(&panel, &DiagramPanel::evidenceActivated);
+
+    const QPoint title = titlePoint(panel, QStringLiteral("part:part1"));
+    QCOMPARE(panel.scene()->keyAt(panel.view()->mapToScene(title)), QStringLiteral("part:part1"));
+    QTest::mouseClick(panel.view()->viewport(), Qt::LeftButton, {}, title);
+    QCOMPARE(parts.size(), 1);
+    QCOMPARE(parts.first().first().toString(), QStringLiteral("n1"));
+    QCOMPARE(evidence.size(), 1);
+    QCOMPARE(evidence.last().first().value<Evidence>().line, 18);
+
+    DiagramNodeItem *talker = nodeItem(panel, QStringLiteral("part:part1"));
+    const QPointF s1 = talker->portScenePos(QStringLiteral("s1")) + QPointF(20, 0);
+    QCOMPARE(panel.scene()->keyAt(s1), QStringLiteral("port:part1/s1"));
+    QTest::mouseClick(panel.view()->viewport(), Qt::LeftButton, {}, scenePoint(panel, s1));
+    QCOMPARE(ports.size(), 1);
+    QCOMPARE(ports.first().at(0).toString(), QStringLiteral("n1"));
+    QCOMPARE(ports.first().at(1).toString(), QStringLiteral("s1"));
+    QCOMPARE(evidence.last().first().value<Evidence>().line, 12);
+
+    auto *edge =
+        dynamic_cast<DiagramEdgeItem *>(panel.scene()->item(QStringLiteral("connection:0")));
+    QVERIFY(edge);
+    const QPointF middle = edge->path().pointAtPercent(0.5);
+    QCOMPARE(panel.scene()->keyAt(middle), QStringLiteral("connection:0"));
+    QTest::mouseClick(panel.view()->viewport(), Qt::LeftButton, {}, scenePoint(panel, middle));
+    QCOMPARE(evidence.size(), 3);
+    const Evidence e = evidence.last().first().value<Evidence>();
+    QCOMPARE(e.file, QStringLiteral("src/demo/demo/talker.py"));
+    QCOMPARE(e.line, 11); // the publisher p1
+    QCOMPARE(parts.size(), 1);
+}
+
+void TestDiagramPanel::selectInstanceCentresThePart()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    panel.resize(420, 320);
+    QTest::qWait(50); // the layout hands the view its new size
+    panel.view()->setZoom(1.0);
+    QVERIFY(panel.selectInstance(QStringLiteral("n5")));
+    DiagramItem *navigator = panel.scene()->item(QStringLiteral("part:part4"));
+    QVERIFY(navigator->isSelected());
+    QCOMPARE(panel.scene()->selectedItems().size(), 1);
+    const QPoint centre = panel.view()->mapFromScene(navigator->sceneBoundingRect().center());
+    QVERIFY(panel.view()->viewport()->rect().contains(centre));
+    QVERIFY(panel.selectInstance(QStringLiteral("n1")));
+    QVERIFY(!navigator->isSelected());
+    QVERIFY(!panel.selectInstance(QStringLiteral("n2"))); // in the child composite only
+}
+
+void TestDiagramPanel::marksAndMissingBanner()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    panel.setMarks({{QStringLiteral("part:part1"), DiagramMark::Extra},
+                    {QStringLiteral("channel:c_reset"), DiagramMark::Extra}},
+                   {QStringLiteral("part ghost"), QStringLiteral("topic /ghost"),
+                    QStringLiteral("service /x")});
+    QCOMPARE(panel.scene()->item(QStringLiteral("part:part1"))->mark(), DiagramMark::Extra);
+    QCOMPARE(panel.scene()->item(QStringLiteral("part:part2"))->mark(), DiagramMark::None);
+    QCOMPARE(panel.view()->banner(),
+             QStringLiteral("3 elements of the reference are missing: part ghost, topic /ghost, "
+                            "service /x"));
+    // Marks survive a re-layout of the same composite, and go with another composite.
+    QVERIFY(laidOut(panel, [&] { panel.showExternalAction()->trigger(); }));
+    QCOMPARE(panel.scene()->item(QStringLiteral("channel:c_reset"))->mark(), DiagramMark::Extra);
+    saveScreenshot(panel, QStringLiteral("diagram_marks.png"));
+    QVERIFY(laidOut(panel, [&] { panel.showComposite(QStringLiteral("lf2")); }));
+    QVERIFY(panel.view()->banner().isEmpty());
+    QCOMPARE(panel.scene()->item(QStringLiteral("part:part1"))->mark(), DiagramMark::None);
+}
+
+void TestDiagramPanel::exportsSvgAndPng()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    QTemporaryDir dir;
+    const QString svgPath = dir.filePath(QStringLiteral("demo.svg"));
+    const QString pngPath = dir.filePath(QStringLiteral("demo.png"));
+    QVERIFY(panel.exportSvg(svgPath));
+    QVERIFY(panel.exportPng(pngPath));
+    const QByteArray svg = test::readFile(svgPath);
+    QVERIFY(svg.contains("<svg"));
+    QVERIFY(svg.contains("</svg>"));
+    for (const char *text : {"talker", "listener", "navigator", "/chatter", "/robot1", "demo"})
+        QVERIFY2(svg.contains(text), text);
+    const QImage png(pngPath);
+    QVERIFY(!png.isNull());
+    const QRectF scene = panel.scene()->sceneRect();
+    QCOMPARE(png.width(), qRound(scene.width() * 2));
+    QVERIFY(std::abs(double(png.width()) / png.height() - scene.width() / scene.height()) < 0.02);
+    QCOMPARE(png.pixelColor(2, 2), QColor(Qt::white)); // light paper whatever the screen
+    const QString shots = qEnvironmentVariable("ROSARCH_SCREENSHOT_DIR");
+    if (!shots.isEmpty())
+        panel.exportPng(QDir(shots).filePath(QStringLiteral("diagram_export.png")));
+
+    DiagramPanel empty;
+    QVERIFY(!empty.exportSvg(dir.filePath(QStringLiteral("none.svg"))));
+    QVERIFY(!empty.message().isEmpty());
+}
+
+void TestDiagramPanel::layoutFailuresAreShownInTheView()
+{
+    QTemporaryDir dir;
+    qputenv("ROSARCH_LAYOUT",
+            test::script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$").toLocal8Bit());
+    {
+        DiagramPanel panel;
+        panel.resize(800, 500);
+        panel.show();
+        QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
+        QVERIFY(laidOut(panel, [&] { panel.setArchitecture(test::diagram::architecture()); }));
+        QCOMPARE(finished.last().first().toBool(), false);
+        QVERIFY2(panel.message().startsWith(
+                     QLatin1String("Graphviz crashed (signal 6) on this diagram")),
+                 qPrintable(panel.message()));
+        QVERIFY(panel.scene()->keys().isEmpty());
+        saveScreenshot(panel, QStringLiteral("diagram_error.png"));
+    }
+    qputenv("ROSARCH_LAYOUT",
+            test::script(dir, QStringLiteral("slow.sh"), "exec sleep 30").toLocal8Bit());
+    {
+        DiagramPanel panel;
+        panel.setLayoutTimeout(300);
+        QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
+        panel.setArchitecture(test::diagram::architecture());
+        QVERIFY(panel.isLayingOut());
+        QCOMPARE(panel.view()->busyText(), QStringLiteral("Laying out…"));
+        QVERIFY(finished.wait(10000));
+        QVERIFY(panel.message().startsWith(QLatin1String("Graphviz did not finish within 0.3 s")));
+        QVERIFY(panel.view()->busyText().isEmpty());
+    }
+    qunsetenv("ROSARCH_LAYOUT");
+}
+
+void TestDiagramPanel::staleLayoutsAreDropped()
+{
+    DiagramPanel panel;
+    QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
+    QSignalSpy shown(&panel, &DiagramPanel::compositeShown);
+    panel.setArchitecture(test::diagram::architecture()); // lf1, in the background
+    panel.showComposite(QStringLiteral("lf2"));           // supersedes it
+    while (panel.isLayingOut())
+        QVERIFY(finished.wait(30000));
+    QTest::qWait(50);
+    QCOMPARE(finished.size(), 1);
+    QCOMPARE(shown.size(), 2);
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf2"));
+    QVERIFY(panel.scene()->item(QStringLiteral("boundary:ps1")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part5")));
+}
+
+void TestDiagramPanel::zoomKeys()
+{
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramView *view = s.panel.view();
+    view->setZoom(1.0);
+    QTest::keyClick(view, Qt::Key_Plus);
+    QVERIFY(view->zoom() > 1.1);
+    QTest::keyClick(view, Qt::Key_Minus);
+    QTest::keyClick(view, Qt::Key_Minus);
+    QVERIFY(view->zoom() < 0.9);
+    QTest::keyClick(view, Qt::Key_0);
+    QVERIFY(view->zoom() <= 1.0);
+    const QRectF visible = view->mapToScene(view->viewport()->rect()).boundingRect();
+    QVERIFY(visible.adjusted(-2, -2, 2, 2).contains(s.panel.scene()->frameRect()));
+}
+
+void TestDiagramPanel::biggerDiagram()
+{
+    Architecture arch;
+    arch.composites << test::diagram::fleet(3);
+    DiagramPanel panel;
+    panel.resize(1280, 800);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(arch); }));
+    qInfo("fleet(3) laid out in %lld ms", panel.lastLayoutMs());
+    QVERIFY(panel.message().isEmpty());
+    QCOMPARE(panel.breadcrumbIds(), QStringList{QStringLiteral("lf9")});
+    QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot3/sensors")));
+    saveScreenshot(panel, QStringLiteral("diagram_fleet.png"));
+    const QString shots = qEnvironmentVariable("ROSARCH_SCREENSHOT_DIR");
+    if (!shots.isEmpty())
+        QVERIFY(panel.exportPng(QDir(shots).filePath(QStringLiteral("diagram_fleet_export.png"))));
+    // Searching a name shared by several parts finds each of them, in reading order.
+    panel.searchField()->setText(QStringLiteral("planner"));
+    int matched = 0;
+    for (const QString &key : panel.scene()->keys())
+        matched += panel.scene()->item(key)->isMatched();
+    QCOMPARE(matched, 3);
+}
+
+QTEST_MAIN(TestDiagramPanel)
+#include "tst_diagrampanel.moc"
