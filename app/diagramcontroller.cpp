@@ -50,17 +50,21 @@ QHash<QString, QStringList> keysByElement(const Composite &c)
     };
     for (const RosNodePart &p : c.parts) {
         const QString key = QStringLiteral("part:") + p.id;
-        const QString ns = p.nameSpace == QLatin1String("/") ? QStringLiteral("/") : plain(p.nameSpace);
+        const QString ns =
+            p.nameSpace == QLatin1String("/") ? QStringLiteral("/") : plain(p.nameSpace);
         add(QStringLiteral("part"), partName(p), key);
         add(QStringLiteral("part_type"),
-            p.kind == RosNodePart::Kind::Launch ? QLatin1Char(':') + p.typeName : p.name + QLatin1Char(':') + p.typeName, key);
+            p.kind == RosNodePart::Kind::Launch ? QLatin1Char(':') + p.typeName
+                                                : p.name + QLatin1Char(':') + p.typeName,
+            key);
         add(QStringLiteral("namespace"), QStringLiteral("(%1, %2)").arg(ns, partName(p)), key);
     }
     for (const Channel &ch : c.channels)
         add(channelKindName(ch.kind), plain(ch.name), QStringLiteral("channel:") + ch.id);
     for (const BoundaryPort &b : c.boundary)
         add(QStringLiteral("boundary_port"),
-            QStringLiteral("(%1, %2)").arg(b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.type),
+            QStringLiteral("(%1, %2)")
+                .arg(b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.type),
             QStringLiteral("boundary:") + b.id);
     for (qsizetype i = 0; i < c.connections.size(); ++i) {
         const Connection &k = c.connections.at(i);
@@ -70,17 +74,31 @@ QHash<QString, QStringList> keysByElement(const Composite &c)
         if (!part)
             continue;
         const QString p = partName(*part);
-        const QString target = ch ? plain(ch->name)
-                               : b ? QStringLiteral("boundary:%1/%2").arg(b->isInput() ? QStringLiteral("in") : QStringLiteral("out"), b->type)
-                                   : QString();
+        const QString target =
+            ch  ? plain(ch->name)
+            : b ? QStringLiteral("boundary:%1/%2")
+                      .arg(b->isInput() ? QStringLiteral("in") : QStringLiteral("out"), b->type)
+                : QString();
         QString value;
         switch (k.kind) {
-        case Connection::Kind::Publish: value = QStringLiteral("publish %1 -> %2").arg(p, target); break;
-        case Connection::Kind::Subscribe: value = QStringLiteral("subscribe %1 -> %2").arg(target, p); break;
-        case Connection::Kind::Client: value = QStringLiteral("client %1 -> %2").arg(p, target); break;
-        case Connection::Kind::Server: value = QStringLiteral("server %1 -> %2").arg(p, target); break;
-        case Connection::Kind::DelegationIn: value = QStringLiteral("delegation %1 -> %2").arg(target, p); break;
-        case Connection::Kind::DelegationOut: value = QStringLiteral("delegation %1 -> %2").arg(p, target); break;
+        case Connection::Kind::Publish:
+            value = QStringLiteral("publish %1 -> %2").arg(p, target);
+            break;
+        case Connection::Kind::Subscribe:
+            value = QStringLiteral("subscribe %1 -> %2").arg(target, p);
+            break;
+        case Connection::Kind::Client:
+            value = QStringLiteral("client %1 -> %2").arg(p, target);
+            break;
+        case Connection::Kind::Server:
+            value = QStringLiteral("server %1 -> %2").arg(p, target);
+            break;
+        case Connection::Kind::DelegationIn:
+            value = QStringLiteral("delegation %1 -> %2").arg(target, p);
+            break;
+        case Connection::Kind::DelegationOut:
+            value = QStringLiteral("delegation %1 -> %2").arg(p, target);
+            break;
         }
         add(QStringLiteral("connection"), value, QStringLiteral("connection:%1").arg(i));
     }
@@ -97,10 +115,12 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
 {
     m_exportSvg = new QAction(tr("Export Diagram as &SVG…"), this);
     m_exportSvg->setStatusTip(tr("Write the composed diagram shown as an SVG drawing"));
-    connect(m_exportSvg, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("svg")); });
+    connect(m_exportSvg, &QAction::triggered, this,
+            [this] { exportDialog(QStringLiteral("svg")); });
     m_exportPng = new QAction(tr("Export Diagram as &PNG…"), this);
     m_exportPng->setStatusTip(tr("Write the composed diagram shown as a PNG image"));
-    connect(m_exportPng, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("png")); });
+    connect(m_exportPng, &QAction::triggered, this,
+            [this] { exportDialog(QStringLiteral("png")); });
     m_compare = new QAction(tr("&Compare with Reference Model…"), this);
     m_compare->setStatusTip(tr("Score the recovered model against hand-written PlantUML "
                                "diagrams and mark the differences in the composed diagram"));
@@ -116,8 +136,7 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     connect(m_document, &Document::modelReset, this, &DiagramController::onModelReset);
     connect(m_document, &Document::launchDependenciesReset, this, &DiagramController::onModelReset);
     // Accepting or undoing a grouping changes only how the model is drawn, not the model.
-    connect(m_document, &Document::decisionsChanged, this,
-            [this] { showArchitecture(); });
+    connect(m_document, &Document::decisionsChanged, this, [this] { showArchitecture(); });
     connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) {
                 onLaunchItemSelected(index.data(LaunchTreeModel::InstanceIdRole).toString());
@@ -277,11 +296,12 @@ QString DiagramController::compareWithReference(const QString &path, QString *er
         if (reference.hasLevel(l))
             levels << l;
     if (levels.isEmpty()) {
-        *error = tr("No ACD or CCD diagram could be read in %1.").arg(QDir::toNativeSeparators(path));
+        *error =
+            tr("No ACD or CCD diagram could be read in %1.").arg(QDir::toNativeSeparators(path));
         return {};
     }
-    m_evaluation = Evaluator::evaluate(reference.ofLevel(UmlLevel::Acd) + reference.ofLevel(UmlLevel::Ccd),
-                                       recovered, levels);
+    m_evaluation = Evaluator::evaluate(
+        reference.ofLevel(UmlLevel::Acd) + reference.ofLevel(UmlLevel::Ccd), recovered, levels);
     m_referencePath = path;
     QString text;
     for (const LevelEvaluation &l : m_evaluation.levels) {
@@ -340,7 +360,8 @@ bool DiagramController::exportDiagram(const QString &path)
     const QString where = QDir::toNativeSeparators(path);
     m_log->appendLog(ok ? tr("Exported the composed diagram to %1").arg(where)
                         : tr("Could not write the composed diagram to %1").arg(where));
-    Q_EMIT statusMessage(ok ? tr("Exported %1").arg(where) : tr("Export failed: %1").arg(where), 5000);
+    Q_EMIT statusMessage(ok ? tr("Exported %1").arg(where) : tr("Export failed: %1").arg(where),
+                         5000);
     return ok;
 }
 
@@ -349,11 +370,13 @@ void DiagramController::exportDialog(const QString &suffix)
     AppSettings settings;
     const Composite *c = m_document->architecture().composite(m_panel->currentComposite());
     const QString name = (c ? c->stem : QStringLiteral("diagram")) + QLatin1Char('.') + suffix;
-    const QString start = QDir(settings.lastExportFolder().isEmpty() ? QDir::homePath()
-                                                                    : settings.lastExportFolder())
-                              .filePath(name);
-    const QString filter = suffix == QLatin1String("svg") ? tr("SVG drawing (*.svg)") : tr("PNG image (*.png)");
-    QString path = QFileDialog::getSaveFileName(m_window, tr("Export Composed Diagram"), start, filter);
+    const QString start =
+        QDir(settings.lastExportFolder().isEmpty() ? QDir::homePath() : settings.lastExportFolder())
+            .filePath(name);
+    const QString filter =
+        suffix == QLatin1String("svg") ? tr("SVG drawing (*.svg)") : tr("PNG image (*.png)");
+    QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Export Composed Diagram"), start, filter);
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())

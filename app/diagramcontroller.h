@@ -68,7 +68,7 @@ private:
     Traceability *m_traceability;
     LogView *m_log;
     QPointer<QWidget> m_window;
-    QString m_pendingInstance; ///< select once the layout of its composite is done
+    QString m_pendingInstance;  ///< select once the layout of its composite is done
     bool m_fromDiagram = false; ///< a diagram click is being forwarded to the launch tree
     Evaluation m_evaluation;
     QString m_referencePath;

@@ -28,7 +28,8 @@ int main(int argc, char **argv)
     QApplication app(argc, argv);
     describeApplication();
     QTranslator translator;
-    if (translator.load(QLocale(), QStringLiteral("rosarch"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+    if (translator.load(QLocale(), QStringLiteral("rosarch"), QStringLiteral("_"),
+                        QStringLiteral(":/i18n")))
         QCoreApplication::installTranslator(&translator);
 
     rosarch::MainWindow window;

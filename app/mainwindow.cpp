@@ -141,27 +141,26 @@ void MainWindow::createPanels()
     connect(m_diagrams, &DiagramController::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     m_suggestions = new SuggestionController(m_document, m_suggestionPanel, this);
-    m_suggestions->setPreviews(
-        {[this](const Evidence &e) { m_traceability->showEvidence(e); },
-         [this](const QString &arcId) { m_traceability->selectNode(arcId); },
-         [this](const QStringList &ids) {
-             if (!ids.isEmpty())
-                 m_traceability->selectLaunchItem(ids.first());
-         }});
+    m_suggestions->setPreviews({[this](const Evidence &e) { m_traceability->showEvidence(e); },
+                                [this](const QString &arcId) { m_traceability->selectNode(arcId); },
+                                [this](const QStringList &ids) {
+                                    if (!ids.isEmpty())
+                                        m_traceability->selectLaunchItem(ids.first());
+                                }});
     // A pending suggestion is previewed where it would land: a description in the node
     // list, a grouping in the composed diagram. The model changes only on Accept.
     const auto preview = [this](const QString &id) {
-                const Suggestion *s = m_document->suggestion(id);
-                const bool pending = s && s->status == Suggestion::Status::Pending;
-                if (pending && s->kind == Suggestion::Kind::SubsystemGrouping)
-                    m_diagrams->previewGrouping(s->value, s->memberIds, s->targetId);
-                else
-                    m_diagrams->previewGrouping({}, {}, {});
-                if (pending && s->kind == Suggestion::Kind::NodeDescription)
-                    m_nodeModel->setDescriptionPreview(s->targetId, s->value);
-                else
-                    m_nodeModel->setDescriptionPreview({}, {});
-            };
+        const Suggestion *s = m_document->suggestion(id);
+        const bool pending = s && s->status == Suggestion::Status::Pending;
+        if (pending && s->kind == Suggestion::Kind::SubsystemGrouping)
+            m_diagrams->previewGrouping(s->value, s->memberIds, s->targetId);
+        else
+            m_diagrams->previewGrouping({}, {}, {});
+        if (pending && s->kind == Suggestion::Kind::NodeDescription)
+            m_nodeModel->setDescriptionPreview(s->targetId, s->value);
+        else
+            m_nodeModel->setDescriptionPreview({}, {});
+    };
     connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this, preview);
     connect(m_document, &Document::suggestionChanged, this, [this, preview](const QString &id) {
         if (id == m_suggestionPanel->currentSuggestionId()) // accepted or rejected: no preview

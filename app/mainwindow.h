@@ -31,8 +31,8 @@ class SuggestionPanel;
 class Traceability;
 
 /// The main window: wires the Document, the stage runner and the panels (atomic nodes,
-/// launch tree, composed diagram, source, log), owns the menus, toolbar and status bar, and remembers the
-/// session.
+/// launch tree, composed diagram, source, log), owns the menus, toolbar and status bar, and
+/// remembers the session.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT

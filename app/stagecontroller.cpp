@@ -96,7 +96,8 @@ void StageController::onStageStarted(const QString &root, StageRunner::Job job)
 {
     m_runTimer.start();
     if (job == StageRunner::Job::Recovery) {
-        m_log->appendLog(tr("Stages 1–3 (atomic nodes, launch files, composition) started on %1").arg(root));
+        m_log->appendLog(
+            tr("Stages 1–3 (atomic nodes, launch files, composition) started on %1").arg(root));
         Q_EMIT statusMessage(tr("Recovering atomic nodes, launch files and their composition…"), 0);
     } else {
         m_log->appendLog(tr("Stages 2–3 (launch files, composition) started on %1").arg(root));

@@ -89,7 +89,8 @@ int Document::setSuggestions(SuggestionReport report)
         if (it == m_decisions.cend())
             continue;
         ++decidedBefore;
-        if (s.status == Suggestion::Status::Accepted && s.kind == Suggestion::Kind::NodeDescription) {
+        if (s.status == Suggestion::Status::Accepted &&
+            s.kind == Suggestion::Kind::NodeDescription) {
             for (AtomicNode &n : m_nodes.nodes)
                 if (n.id == s.targetId && n.description != s.value) {
                     n.description = s.value;
@@ -107,7 +108,8 @@ int Document::setSuggestions(SuggestionReport report)
 void Document::clearSuggestions()
 {
     const SuggestionReport &r = m_suggestionReport;
-    if (r.suggestions.isEmpty() && r.prompts.isEmpty() && r.errors.isEmpty() && r.discarded.isEmpty())
+    if (r.suggestions.isEmpty() && r.prompts.isEmpty() && r.errors.isEmpty() &&
+        r.discarded.isEmpty())
         return;
     Q_EMIT suggestionsAboutToBeReset();
     m_suggestionReport = {};
@@ -145,8 +147,9 @@ int Document::acceptAllSuggestions(Suggestion::Kind kind)
     if (pending.isEmpty())
         return 0;
     // One parent command: the whole batch is one undo step.
-    auto *macro = new QUndoCommand(
-        QCoreApplication::translate("rosarch::Document", "Accept %1 suggestions").arg(pending.size()));
+    auto *macro =
+        new QUndoCommand(QCoreApplication::translate("rosarch::Document", "Accept %1 suggestions")
+                             .arg(pending.size()));
     for (const Suggestion *s : pending)
         new DecideSuggestionCommand(this, *s, Suggestion::Status::Accepted, macro);
     m_undoStack.push(macro);
@@ -157,7 +160,8 @@ QList<AcceptedGrouping> Document::acceptedGroupings() const
 {
     QList<AcceptedGrouping> out;
     for (const SuggestionDecision &d : m_decisions) {
-        if (d.kind != Suggestion::Kind::SubsystemGrouping || d.status != Suggestion::Status::Accepted)
+        if (d.kind != Suggestion::Kind::SubsystemGrouping ||
+            d.status != Suggestion::Status::Accepted)
             continue;
         const LaunchFileInstance *root = m_launch.instance(d.targetId);
         if (!root || !root->parentId.isEmpty())
@@ -178,8 +182,8 @@ QMap<QString, QString> Document::acceptedNames() const
     for (const SuggestionItem &item : SuggestionItem::collect({m_nodes, m_launch, m_architecture}))
         items.insert(item.id);
     for (const SuggestionDecision &d : m_decisions)
-        if (d.kind == Suggestion::Kind::NameResolution && d.status == Suggestion::Status::Accepted &&
-            items.contains(d.targetId))
+        if (d.kind == Suggestion::Kind::NameResolution &&
+            d.status == Suggestion::Status::Accepted && items.contains(d.targetId))
             out.insert(d.targetId, d.proposal);
     return out;
 }

@@ -81,7 +81,7 @@ public:
     {
         QString key;
         std::optional<SuggestionDecision> decision; ///< none = pending
-        QString nodeId;                              ///< "" unless a node description
+        QString nodeId;                             ///< "" unless a node description
         QString description;
         bool operator==(const DecisionSnapshot &) const = default;
     };

@@ -9,8 +9,7 @@
 
 namespace rosarch {
 
-AtomicNodePanel::AtomicNodePanel(QWidget *parent)
-    : FilteredTreePanel(parent)
+AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
 {
     m_filter->setPlaceholderText(tr("Filter by name or type (Ctrl+F)"));
     m_filter->setToolTip(tr("Shows the packages, nodes and ports whose name or type contains "

@@ -33,9 +33,9 @@ const Diagnostic *DiagnosticModel::diagnostic(const QModelIndex &index) const
         return nullptr;
     // Stage 1's diagnostics, then stage 2's, then stage 3's.
     qsizetype row = index.row();
-    for (const QList<Diagnostic> *list : {&m_document->atomicNodes().diagnostics,
-                                          &m_document->launchDependencies().diagnostics,
-                                          &m_document->architecture().diagnostics}) {
+    for (const QList<Diagnostic> *list :
+         {&m_document->atomicNodes().diagnostics, &m_document->launchDependencies().diagnostics,
+          &m_document->architecture().diagnostics}) {
         if (row < list->size())
             return &(*list)[row];
         row -= list->size();

@@ -49,7 +49,8 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
             m_tree->setExpanded(index.siblingAtColumn(0),
                                 !m_tree->isExpanded(index.siblingAtColumn(0)));
     });
-    connect(this, &FilteredTreePanel::currentSourceIndexChanged, this, &LaunchTreePanel::updateActions);
+    connect(this, &FilteredTreePanel::currentSourceIndexChanged, this,
+            &LaunchTreePanel::updateActions);
 
     m_placeholder->setAlignment(Qt::AlignCenter);
     m_placeholder->setWordWrap(true);

@@ -127,8 +127,9 @@ QString LaunchTreeText::launchFileDetails(const LaunchFileInstance &instance)
 QString LaunchTreeText::unresolvedDetails(const Unresolved &unresolved)
 {
     const QString kind = unresolvedKindLabel(unresolved.kind);
-    return unresolved.guess.isEmpty() ? tr("unresolved (%1)").arg(kind)
-                                      : tr("unresolved (%1) · guess: %2").arg(kind, unresolved.guess);
+    return unresolved.guess.isEmpty()
+               ? tr("unresolved (%1)").arg(kind)
+               : tr("unresolved (%1) · guess: %2").arg(kind, unresolved.guess);
 }
 
 QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *atomicNode,

@@ -341,7 +341,8 @@ void SourceView::updateHeader()
         return;
     }
     if (m_file.isEmpty()) {
-        m_pathLabel->setText(tr("Select a node, port, launch item or diagnostic to see its source."));
+        m_pathLabel->setText(
+            tr("Select a node, port, launch item or diagnostic to see its source."));
         m_pathLabel->setToolTip(QString());
         m_lineLabel->clear();
         return;

@@ -44,14 +44,13 @@ QString lineRange(const Evidence &e)
 } // namespace
 
 SuggestionPanel::SuggestionPanel(QWidget *parent)
-    : QWidget(parent), m_proxy(new SuggestionFilterModel(this)),
-      m_countsLabel(new QLabel(this)), m_statusFilter(new QComboBox(this)),
-      m_kindFilter(new QComboBox(this)), m_progressLabel(new QLabel(this)),
-      m_llmLabel(new QLabel(this)), m_stack(new QStackedWidget(this)),
-      m_emptyLabel(new QLabel(m_stack)), m_view(new QTreeView(m_stack)),
-      m_acceptButton(new QPushButton(this)), m_rejectButton(new QPushButton(this)),
-      m_acceptAllButton(new QPushButton(this)), m_details(new QTextBrowser(this)),
-      m_splitter(new QSplitter(Qt::Vertical, this))
+    : QWidget(parent), m_proxy(new SuggestionFilterModel(this)), m_countsLabel(new QLabel(this)),
+      m_statusFilter(new QComboBox(this)), m_kindFilter(new QComboBox(this)),
+      m_progressLabel(new QLabel(this)), m_llmLabel(new QLabel(this)),
+      m_stack(new QStackedWidget(this)), m_emptyLabel(new QLabel(m_stack)),
+      m_view(new QTreeView(m_stack)), m_acceptButton(new QPushButton(this)),
+      m_rejectButton(new QPushButton(this)), m_acceptAllButton(new QPushButton(this)),
+      m_details(new QTextBrowser(this)), m_splitter(new QSplitter(Qt::Vertical, this))
 {
     createActions();
 

@@ -24,17 +24,24 @@ QString usageText()
     return QCoreApplication::translate(
         "rosarch::CommandLine",
         "Usage:\n"
-        "  rosarch [workspace]                       open the GUI (on the example workspace by default)\n"
-        "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root <file>]\n"
-        "                                            run the stages headless and write the artifacts\n"
+        "  rosarch [workspace]                       open the GUI (on the example workspace by "
+        "default)\n"
+        "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
+        "<file>]\n"
+        "                                            run the stages headless and write the "
+        "artifacts\n"
         "  rosarch eval --reference <dir|file> --recovered <dir|file> [--level acd|ccd] [--json]\n"
-        "                                            score recovered PlantUML diagrams against a reference\n"
-        "  rosarch suggest <workspace> --out <dir> [--llm-endpoint URL] [--llm-model NAME] [--llm-timeout S]\n"
-        "                                            write checked suggestions to suggestions.json\n"
+        "                                            score recovered PlantUML diagrams against a "
+        "reference\n"
+        "  rosarch suggest <workspace> --out <dir> [--llm-endpoint URL] [--llm-model NAME] "
+        "[--llm-timeout S]\n"
+        "                                            write checked suggestions to "
+        "suggestions.json\n"
         "                                            (deterministic only without an endpoint)\n"
         "  rosarch --help | --version\n"
         "\n"
-        "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, architecture.json,\n"
+        "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, "
+        "architecture.json,\n"
         "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
 }
@@ -54,22 +61,29 @@ int recover(const QStringList &arguments)
     QTextStream out(stdout);
     QTextStream err(stderr);
     QCommandLineParser parser;
-    parser.setApplicationDescription(QCoreApplication::translate("rosarch::CommandLine",
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "rosarch::CommandLine",
         "Recover the architecture of a ROS 2 workspace and write the artifacts."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("recover"), QString());
-    parser.addPositionalArgument(QStringLiteral("workspace"),
+    parser.addPositionalArgument(
+        QStringLiteral("workspace"),
         QCoreApplication::translate("rosarch::CommandLine", "The workspace folder to analyse."));
-    const QCommandLineOption outOption(QStringList{QStringLiteral("o"), QStringLiteral("out")},
+    const QCommandLineOption outOption(
+        QStringList{QStringLiteral("o"), QStringLiteral("out")},
         QCoreApplication::translate("rosarch::CommandLine", "Folder for the artifacts."),
         QStringLiteral("dir"));
-    const QCommandLineOption quietOption(QStringList{QStringLiteral("q"), QStringLiteral("quiet")},
+    const QCommandLineOption quietOption(
+        QStringList{QStringLiteral("q"), QStringLiteral("quiet")},
         QCoreApplication::translate("rosarch::CommandLine", "Print only errors."));
-    const QCommandLineOption argOption(QStringLiteral("launch-arg"),
+    const QCommandLineOption argOption(
+        QStringLiteral("launch-arg"),
         QCoreApplication::translate("rosarch::CommandLine", "Set a launch argument (repeatable)."),
         QStringLiteral("name:=value"));
-    const QCommandLineOption rootOption(QStringLiteral("launch-root"),
-        QCoreApplication::translate("rosarch::CommandLine",
+    const QCommandLineOption rootOption(
+        QStringLiteral("launch-root"),
+        QCoreApplication::translate(
+            "rosarch::CommandLine",
             "Analyse only this launch file (relative to the workspace) as the root."),
         QStringLiteral("file"));
     parser.addOption(outOption);
@@ -81,12 +95,14 @@ int recover(const QStringList &arguments)
     const QStringList positional = parser.positionalArguments();
     if (positional.size() != 2 || !parser.isSet(outOption)) {
         err << QCoreApplication::translate("rosarch::CommandLine",
-                   "recover needs a workspace folder and --out <dir>.\n\n") << usageText();
+                                           "recover needs a workspace folder and --out <dir>.\n\n")
+            << usageText();
         return CommandLine::UsageError;
     }
     const QString workspace = positional.at(1);
     if (!QFileInfo(workspace).isDir()) {
-        err << QCoreApplication::translate("rosarch::CommandLine", "Not a folder: %1\n").arg(workspace);
+        err << QCoreApplication::translate("rosarch::CommandLine", "Not a folder: %1\n")
+                   .arg(workspace);
         return CommandLine::UsageError;
     }
     const bool quiet = parser.isSet(quietOption);
@@ -96,7 +112,8 @@ int recover(const QStringList &arguments)
         const qsizetype sep = arg.indexOf(QLatin1String(":="));
         if (sep <= 0) {
             err << QCoreApplication::translate("rosarch::CommandLine",
-                       "--launch-arg expects name:=value, got '%1'.\n").arg(arg);
+                                               "--launch-arg expects name:=value, got '%1'.\n")
+                       .arg(arg);
             return CommandLine::UsageError;
         }
         options.arguments.insert(arg.left(sep), arg.mid(sep + 2));
@@ -117,9 +134,11 @@ int recover(const QStringList &arguments)
             ++errors;
         if (quiet && d.severity != Diagnostic::Severity::Error)
             continue;
-        const QString where = d.evidence.file.isEmpty() ? QString()
-                              : d.evidence.line > 0 ? QStringLiteral("%1:%2: ").arg(d.evidence.file).arg(d.evidence.line)
-                                                    : d.evidence.file + QStringLiteral(": ");
+        const QString where =
+            d.evidence.file.isEmpty() ? QString()
+            : d.evidence.line > 0
+                ? QStringLiteral("%1:%2: ").arg(d.evidence.file).arg(d.evidence.line)
+                : d.evidence.file + QStringLiteral(": ");
         err << where << Diagnostic::severityName(d.severity) << ": " << d.message << '\n';
     }
     QStringList written;
@@ -133,14 +152,23 @@ int recover(const QStringList &arguments)
         for (const AtomicNode &n : nodes.nodes)
             ports += int(n.ports.size());
         out << QCoreApplication::translate("rosarch::CommandLine",
-                   "Recovered %1 node classes with %2 ports in %3 packages; %4 launch files, %5 launch-file "
-                   "instances, %6 node instances, %7 unresolved items, %8 composites; in %9 ms; %10 diagnostics "
-                   "(%11 errors).\nWrote %12 files to %13\n")
-                   .arg(nodes.nodes.size()).arg(ports).arg(nodes.packages.size())
-                   .arg(recovery.launch.launchFiles.size()).arg(recovery.launch.instances.size())
-                   .arg(recovery.launch.nodes.size()).arg(unresolvedCount(recovery.launch))
-                   .arg(recovery.architecture.composites.size()).arg(elapsed)
-                   .arg(diagnostics.size()).arg(errors).arg(written.size())
+                                           "Recovered %1 node classes with %2 ports in %3 "
+                                           "packages; %4 launch files, %5 launch-file "
+                                           "instances, %6 node instances, %7 unresolved items, %8 "
+                                           "composites; in %9 ms; %10 diagnostics "
+                                           "(%11 errors).\nWrote %12 files to %13\n")
+                   .arg(nodes.nodes.size())
+                   .arg(ports)
+                   .arg(nodes.packages.size())
+                   .arg(recovery.launch.launchFiles.size())
+                   .arg(recovery.launch.instances.size())
+                   .arg(recovery.launch.nodes.size())
+                   .arg(unresolvedCount(recovery.launch))
+                   .arg(recovery.architecture.composites.size())
+                   .arg(elapsed)
+                   .arg(diagnostics.size())
+                   .arg(errors)
+                   .arg(written.size())
                    .arg(QDir(parser.value(outOption)).absolutePath());
     }
     out.flush();
@@ -153,7 +181,9 @@ int CommandLine::parseOrFinish(QCommandLineParser &parser, const QStringList &ar
                                const QString &usage)
 {
     if (!parser.parse(arguments)) {
-        QTextStream(stderr) << parser.errorText() << (usage.isEmpty() ? QStringLiteral("\n") : QStringLiteral("\n\n") + usage);
+        QTextStream(stderr) << parser.errorText()
+                            << (usage.isEmpty() ? QStringLiteral("\n")
+                                                : QStringLiteral("\n\n") + usage);
         return UsageError;
     }
     if (parser.isSet(QStringLiteral("help"))) {
@@ -183,10 +213,12 @@ int CommandLine::run(const QStringList &arguments)
     QTextStream err(stderr);
     const QString first = arguments.value(1);
     if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
-        out << QCoreApplication::applicationName() << ' ' << QCoreApplication::applicationVersion() << '\n';
+        out << QCoreApplication::applicationName() << ' ' << QCoreApplication::applicationVersion()
+            << '\n';
         return Ok;
     }
-    if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("--help-all")) {
+    if (first == QLatin1String("--help") || first == QLatin1String("-h") ||
+        first == QLatin1String("--help-all")) {
         out << usageText();
         return Ok;
     }
@@ -196,7 +228,8 @@ int CommandLine::run(const QStringList &arguments)
         return runEval(arguments);
     if (first == QLatin1String("suggest"))
         return runSuggest(arguments);
-    err << QCoreApplication::translate("rosarch::CommandLine", "Unknown command: %1\n\n").arg(first) << usageText();
+    err << QCoreApplication::translate("rosarch::CommandLine", "Unknown command: %1\n\n").arg(first)
+        << usageText();
     return UsageError;
 }
 

@@ -12,7 +12,12 @@ namespace rosarch {
 class CommandLine
 {
 public:
-    enum ExitCode { Ok = 0, AnalysisErrors = 1, UsageError = 2 };
+    enum ExitCode
+    {
+        Ok = 0,
+        AnalysisErrors = 1,
+        UsageError = 2
+    };
 
     /// True when the arguments ask for a headless command rather than the GUI.
     static bool isHeadless(int argc, char **argv);

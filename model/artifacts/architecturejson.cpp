@@ -76,19 +76,25 @@ Json compositeJson(const Composite &c, const QString &ccd)
     j["parts"] = parts;
     Json channels = Json::array();
     for (const Channel &ch : c.channels)
-        channels.push_back({{"id", utf8(ch.id)}, {"kind", utf8(channelKindName(ch.kind))},
-                            {"name", utf8(ch.name)}, {"type", utf8(ch.type)}});
+        channels.push_back({{"id", utf8(ch.id)},
+                            {"kind", utf8(channelKindName(ch.kind))},
+                            {"name", utf8(ch.name)},
+                            {"type", utf8(ch.type)}});
     j["channels"] = channels;
     Json boundary = Json::array();
     for (const BoundaryPort &b : c.boundary)
-        boundary.push_back({{"id", utf8(b.id)}, {"direction", b.isInput() ? "in" : "out"},
-                            {"kind", utf8(portKindName(b.kind))}, {"name", utf8(b.name)},
+        boundary.push_back({{"id", utf8(b.id)},
+                            {"direction", b.isInput() ? "in" : "out"},
+                            {"kind", utf8(portKindName(b.kind))},
+                            {"name", utf8(b.name)},
                             {"type", utf8(b.type)}});
     j["boundary_ports"] = boundary;
     Json connections = Json::array();
     for (const Connection &k : c.connections)
-        connections.push_back({{"kind", utf8(connectionKindName(k.kind))}, {"part", utf8(k.partId)},
-                               {"port", utf8(k.portId)}, {"target", utf8(k.targetId)}});
+        connections.push_back({{"kind", utf8(connectionKindName(k.kind))},
+                               {"part", utf8(k.partId)},
+                               {"port", utf8(k.portId)},
+                               {"target", utf8(k.targetId)}});
     j["connections"] = connections;
     return j;
 }
@@ -101,7 +107,8 @@ QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString,
     Json list = Json::array();
     for (const Composite &c : arch.composites) {
         const QString stem = ccdStems.value(c.instanceId);
-        list.push_back(compositeJson(c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem)));
+        list.push_back(
+            compositeJson(c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem)));
     }
     root["list_composed_ros_node_classifiers"] = list;
     return QByteArray::fromStdString(root.dump(2)) + '\n';

@@ -44,11 +44,13 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
     const AtomicNodeList &nodes = recovery.nodes;
     QDir out(dir);
     if (!out.mkpath(QStringLiteral("acd"))) {
-        *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
+        *error =
+            QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
         return false;
     }
     if (withLaunch && !out.mkpath(QStringLiteral("ccd"))) {
-        *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("ccd")));
+        *error =
+            QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("ccd")));
         return false;
     }
     // Diagrams of an earlier run would otherwise linger beside the new ones.
@@ -57,7 +59,8 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
     for (QDir *d : {&acd, &ccd})
         for (const QString &old : d->entryList({QStringLiteral("*.puml")}, QDir::Files))
             d->remove(old);
-    if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes), written, error))
+    if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes),
+                   written, error))
         return false;
     if (withLaunch && !writeFile(out.filePath(QStringLiteral("launch_dependencies.json")),
                                  LaunchDependenciesJson::write(recovery.launch), written, error))
@@ -67,7 +70,8 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
         diagnostics.append(recovery.launch.diagnostics);
         diagnostics.append(recovery.architecture.diagnostics);
     }
-    if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")), DiagnosticsJson::write(diagnostics), written, error))
+    if (!writeFile(out.filePath(QStringLiteral("diagnostics.json")),
+                   DiagnosticsJson::write(diagnostics), written, error))
         return false;
     const QMap<QString, QString> stems = AcdWriter::fileStems(nodes);
     for (const AtomicNode &n : nodes.nodes) {

@@ -72,7 +72,8 @@ bool readPort(const Json &j, Port *p, QString *error)
     }
     p->id = JsonSupport::string(j, "id");
     if (!portKindFromName(JsonSupport::string(j, "kind"), &p->kind)) {
-        *error = QStringLiteral("port %1 has an unknown kind '%2'").arg(p->id, JsonSupport::string(j, "kind"));
+        *error = QStringLiteral("port %1 has an unknown kind '%2'")
+                     .arg(p->id, JsonSupport::string(j, "kind"));
         return false;
     }
     p->name = JsonSupport::string(j, "name");
@@ -153,12 +154,14 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
             n.headerFiles = JsonSupport::stringList(nj, "header_file_paths");
             n.sourceFiles = JsonSupport::stringList(nj, "source_file_paths");
             n.description = JsonSupport::string(nj, "description");
-            n.compileType = JsonSupport::string(nj, "compile_type") == QLatin1String("python") ? AtomicNode::CompileType::Python
-                                                                             : AtomicNode::CompileType::Cpp;
+            n.compileType = JsonSupport::string(nj, "compile_type") == QLatin1String("python")
+                                ? AtomicNode::CompileType::Python
+                                : AtomicNode::CompileType::Cpp;
             n.qualifiedName = JsonSupport::string(nj, "qualified_name");
             n.executables = JsonSupport::stringList(nj, "executables");
             n.plugins = JsonSupport::stringList(nj, "plugins");
-            if (n.executables.isEmpty() && n.plugins.isEmpty() && !JsonSupport::string(nj, "execution").isEmpty())
+            if (n.executables.isEmpty() && n.plugins.isEmpty() &&
+                !JsonSupport::string(nj, "execution").isEmpty())
                 n.executables.append(JsonSupport::string(nj, "execution"));
             n.baseClasses = JsonSupport::stringList(nj, "base_classes");
             n.lifecycle = nj.value("lifecycle", false);

@@ -28,7 +28,8 @@ inline Json strings(const QStringList &list)
 inline QString string(const Json &j, const char *key)
 {
     const auto it = j.find(key);
-    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
+    return it != j.end() && it->is_string() ? QString::fromStdString(it->get<std::string>())
+                                            : QString();
 }
 
 /// The strings of the array at `key` (other values skipped); empty when missing.

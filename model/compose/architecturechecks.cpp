@@ -25,10 +25,13 @@ QString familyName(PortKind k)
 {
     switch (k) {
     case PortKind::Publisher:
-    case PortKind::Subscriber: return QStringLiteral("topic");
+    case PortKind::Subscriber:
+        return QStringLiteral("topic");
     case PortKind::ServiceServer:
-    case PortKind::ServiceClient: return QStringLiteral("service");
-    default: return QStringLiteral("action");
+    case PortKind::ServiceClient:
+        return QStringLiteral("service");
+    default:
+        return QStringLiteral("action");
     }
 }
 
@@ -76,7 +79,8 @@ private:
         }
     }
 
-    void add(Diagnostic::Severity severity, const QString &code, const QString &message, const Evidence &evidence)
+    void add(Diagnostic::Severity severity, const QString &code, const QString &message,
+             const Evidence &evidence)
     {
         Diagnostic d{severity, code, message, evidence};
         const QString key = code + message + evidence.file + QString::number(evidence.line);
@@ -108,13 +112,15 @@ private:
             if (f.providers.isEmpty())
                 for (const Use &u : f.users)
                     add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
-                        QStringLiteral("%1 subscribes to %2, which no node started by %3 publishes.")
+                        QStringLiteral(
+                            "%1 subscribes to %2, which no node started by %3 publishes.")
                             .arg(who(*u.part), name, system),
                         u.port->evidence);
             if (f.users.isEmpty())
                 for (const Use &u : f.providers)
                     add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
-                        QStringLiteral("%1 publishes %2, which no node started by %3 subscribes to.")
+                        QStringLiteral(
+                            "%1 publishes %2, which no node started by %3 subscribes to.")
                             .arg(who(*u.part), name, system),
                         u.port->evidence);
             return;
@@ -125,7 +131,9 @@ private:
                 servers << who(*u.part);
             add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-server"),
                 QStringLiteral("The %1 %2 has %3 servers in %4: %5.")
-                    .arg(kind, name).arg(f.providers.size()).arg(system, servers.join(QStringLiteral(", "))),
+                    .arg(kind, name)
+                    .arg(f.providers.size())
+                    .arg(system, servers.join(QStringLiteral(", "))),
                 f.providers.at(1).port->evidence);
         }
         if (f.providers.isEmpty())
@@ -145,9 +153,16 @@ private:
 
 /// A remap rule is reported when no instance carrying it has a port it renames; the
 /// evidence is the first node the rule applies to.
-void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch, QList<Diagnostic> *out)
+void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                 QList<Diagnostic> *out)
 {
-    struct Rule { QString text; Evidence evidence; bool used = false; bool decidable = true; };
+    struct Rule
+    {
+        QString text;
+        Evidence evidence;
+        bool used = false;
+        bool decidable = true;
+    };
     QList<Rule> rules;
     QHash<QString, int> index;
     for (const NodeInstance &n : launch.nodes) {
@@ -177,7 +192,8 @@ void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch, 
     for (const Rule &r : std::as_const(rules))
         if (!r.used && r.decidable)
             out->append({Diagnostic::Severity::Warning, QStringLiteral("remap-unmatched"),
-                         QStringLiteral("The remap %1 matches no port of the nodes it applies to.").arg(r.text),
+                         QStringLiteral("The remap %1 matches no port of the nodes it applies to.")
+                             .arg(r.text),
                          r.evidence});
 }
 

@@ -10,16 +10,24 @@ namespace rosarch {
 
 namespace {
 
-enum class Family { Topic, Service, Action };
+enum class Family
+{
+    Topic,
+    Service,
+    Action
+};
 
 Family familyOf(PortKind k)
 {
     switch (k) {
     case PortKind::Publisher:
-    case PortKind::Subscriber: return Family::Topic;
+    case PortKind::Subscriber:
+        return Family::Topic;
     case PortKind::ServiceServer:
-    case PortKind::ServiceClient: return Family::Service;
-    default: return Family::Action;
+    case PortKind::ServiceClient:
+        return Family::Service;
+    default:
+        return Family::Action;
     }
 }
 
@@ -92,15 +100,20 @@ void wire(Composite *c)
     QHash<QString, int> counters;
     for (const auto &[family, name] : order) {
         const QList<Endpoint> &eps = groups.value(keyOf(family, name));
-        const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return isProvidingPort(e.port->kind); });
-        const bool users = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) { return !isProvidingPort(e.port->kind); });
+        const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) {
+            return isProvidingPort(e.port->kind);
+        });
+        const bool users = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) {
+            return !isProvidingPort(e.port->kind);
+        });
         if (providers && users) {
             Channel ch;
             ch.kind = family == Family::Topic     ? Channel::Kind::Topic
                       : family == Family::Service ? Channel::Kind::Service
                                                   : Channel::Kind::Action;
-            const QString prefix = family == Family::Topic ? QStringLiteral("q_")
-                                   : family == Family::Service ? QStringLiteral("c_") : QStringLiteral("a_");
+            const QString prefix = family == Family::Topic     ? QStringLiteral("q_")
+                                   : family == Family::Service ? QStringLiteral("c_")
+                                                               : QStringLiteral("a_");
             ch.id = aliasOf(prefix, name, &aliases);
             ch.name = name;
             for (const Endpoint &e : eps)
@@ -111,9 +124,10 @@ void wire(Composite *c)
                 for (const Endpoint &e : eps) {
                     if (isProvidingPort(e.port->kind) != provider)
                         continue;
-                    Connection::Kind k = family == Family::Topic
-                                             ? (provider ? Connection::Kind::Publish : Connection::Kind::Subscribe)
-                                             : (provider ? Connection::Kind::Server : Connection::Kind::Client);
+                    Connection::Kind k =
+                        family == Family::Topic
+                            ? (provider ? Connection::Kind::Publish : Connection::Kind::Subscribe)
+                            : (provider ? Connection::Kind::Server : Connection::Kind::Client);
                     c->connections.append({k, e.part->id, e.port->id, ch.id});
                 }
             }
@@ -129,8 +143,9 @@ void wire(Composite *c)
                 c->boundary.append({id, e.port->kind, name, e.port->type});
             }
             const bool in = c->boundaryPort(id)->isInput();
-            c->connections.append({in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut,
-                                   e.part->id, e.port->id, id});
+            c->connections.append(
+                {in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut, e.part->id,
+                 e.port->id, id});
         }
     }
 }
@@ -153,8 +168,9 @@ bool evidenceBefore(const Evidence &a, const Evidence &b)
 QString launchStem(const QString &fileName)
 {
     QString stem = fileName.section(QLatin1Char('/'), -1);
-    for (const char *suffix : {".launch.py", ".launch.xml", ".launch.yaml", ".launch.yml", "_launch.py",
-                               "_launch.xml", "_launch.yaml", ".py", ".xml", ".yaml", ".yml", ".launch"}) {
+    for (const char *suffix :
+         {".launch.py", ".launch.xml", ".launch.yaml", ".launch.yml", "_launch.py", "_launch.xml",
+          "_launch.yaml", ".py", ".xml", ".yaml", ".yml", ".launch"}) {
         if (stem.endsWith(QLatin1String(suffix)) && stem.size() > int(qstrlen(suffix))) {
             stem.chop(int(qstrlen(suffix)));
             break;
@@ -241,7 +257,12 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
         c.package = lf.package;
         c.parentId = lf.parentId;
 
-        struct Entry { bool node; QString id; Evidence evidence; };
+        struct Entry
+        {
+            bool node;
+            QString id;
+            Evidence evidence;
+        };
         QList<Entry> entries;
         for (const QString &id : lf.nodes)
             if (const NodeInstance *n = instances.value(id))

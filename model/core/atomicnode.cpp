@@ -13,7 +13,8 @@ QString AtomicNode::execution() const
 
 QString compileTypeName(AtomicNode::CompileType type)
 {
-    return type == AtomicNode::CompileType::Python ? QStringLiteral("python") : QStringLiteral("cpp");
+    return type == AtomicNode::CompileType::Python ? QStringLiteral("python")
+                                                   : QStringLiteral("cpp");
 }
 
 } // namespace rosarch

@@ -12,10 +12,14 @@ namespace rosarch {
 /// An AtomicRosNodeClassifier: one node class (or procedurally built node) with its ports.
 struct AtomicNode
 {
-    enum class CompileType { Python, Cpp };
+    enum class CompileType
+    {
+        Python,
+        Cpp
+    };
 
-    QString id;            ///< "arc_1", ... assigned in deterministic order by the stage
-    QString className;     ///< unqualified class name; for procedural nodes the function's file stem
+    QString id;        ///< "arc_1", ... assigned in deterministic order by the stage
+    QString className; ///< unqualified class name; for procedural nodes the function's file stem
     QString qualifiedName; ///< with C++ namespaces ("demo_nodes_cpp::Talker") or Python module path
     QString nodeName;      ///< as written in the code ("" when not given)
     QString packageName;
@@ -25,10 +29,10 @@ struct AtomicNode
     CompileType compileType = CompileType::Cpp;
     QStringList baseClasses; ///< direct bases as written
     bool lifecycle = false;
-    bool procedural = false;  ///< rclpy.create_node / make_shared<rclcpp::Node>(...)
-    QStringList executables;  ///< executables that start it (from build files)
-    QStringList plugins;      ///< component plugin names (rclcpp_components)
-    Evidence evidence;        ///< the class definition (or the create_node call)
+    bool procedural = false; ///< rclpy.create_node / make_shared<rclcpp::Node>(...)
+    QStringList executables; ///< executables that start it (from build files)
+    QStringList plugins;     ///< component plugin names (rclcpp_components)
+    Evidence evidence;       ///< the class definition (or the create_node call)
     QList<Port> ports;
 
     /// The blueprint's `execution`: the first executable, else the first plugin.

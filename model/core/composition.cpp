@@ -3,8 +3,7 @@
 namespace rosarch {
 
 namespace {
-template<typename T>
-const T *findById(const QList<T> &list, const QString &id)
+template <typename T> const T *findById(const QList<T> &list, const QString &id)
 {
     for (const T &item : list)
         if (item.id == id)
@@ -58,12 +57,18 @@ QList<const Composite *> Architecture::representatives() const
 QString connectionKindName(Connection::Kind kind)
 {
     switch (kind) {
-    case Connection::Kind::Publish: return QStringLiteral("publish");
-    case Connection::Kind::Subscribe: return QStringLiteral("subscribe");
-    case Connection::Kind::Client: return QStringLiteral("client");
-    case Connection::Kind::Server: return QStringLiteral("server");
-    case Connection::Kind::DelegationIn: return QStringLiteral("delegation_in");
-    case Connection::Kind::DelegationOut: return QStringLiteral("delegation_out");
+    case Connection::Kind::Publish:
+        return QStringLiteral("publish");
+    case Connection::Kind::Subscribe:
+        return QStringLiteral("subscribe");
+    case Connection::Kind::Client:
+        return QStringLiteral("client");
+    case Connection::Kind::Server:
+        return QStringLiteral("server");
+    case Connection::Kind::DelegationIn:
+        return QStringLiteral("delegation_in");
+    case Connection::Kind::DelegationOut:
+        return QStringLiteral("delegation_out");
     }
     return {};
 }
@@ -71,9 +76,12 @@ QString connectionKindName(Connection::Kind kind)
 QString channelKindName(Channel::Kind kind)
 {
     switch (kind) {
-    case Channel::Kind::Topic: return QStringLiteral("topic");
-    case Channel::Kind::Service: return QStringLiteral("service");
-    case Channel::Kind::Action: return QStringLiteral("action");
+    case Channel::Kind::Topic:
+        return QStringLiteral("topic");
+    case Channel::Kind::Service:
+        return QStringLiteral("service");
+    case Channel::Kind::Action:
+        return QStringLiteral("action");
     }
     return {};
 }

@@ -14,26 +14,30 @@ namespace rosarch {
 /// boundary port of the composite that types a launch-file part.
 struct PartPort
 {
-    QString id;   ///< the ARC port id (p1, s1, ps1, ...) or the included composite's boundary id
+    QString id; ///< the ARC port id (p1, s1, ps1, ...) or the included composite's boundary id
     PortKind kind = PortKind::Publisher;
     QString nameAsWritten; ///< the name in code ("" for a launch part's port)
-    QString name;          ///< the resolved absolute name ("/robot_ns/scan"); the guess when unresolved
-    QString type;          ///< canonical "pkg/msg/T"
-    bool resolved = true;  ///< false when the name is an expression the analysis could not decide
+    QString name; ///< the resolved absolute name ("/robot_ns/scan"); the guess when unresolved
+    QString type; ///< canonical "pkg/msg/T"
+    bool resolved = true; ///< false when the name is an expression the analysis could not decide
     bool parameterDerived = false; ///< the name comes from a parameter (default or launch value)
     bool remapped = false;
-    bool active = true;    ///< the guard holds for this instance (or is undecidable)
-    QString guard;         ///< as written ("" = always)
-    Evidence evidence;     ///< the port's creation in code (or the inner port for a boundary)
+    bool active = true; ///< the guard holds for this instance (or is undecidable)
+    QString guard;      ///< as written ("" = always)
+    Evidence evidence;  ///< the port's creation in code (or the inner port for a boundary)
     bool operator==(const PartPort &) const = default;
 };
 
 /// A launch-time instance inside a composite: a node instance, or an included launch file.
 struct RosNodePart
 {
-    enum class Kind { Node, Launch };
+    enum class Kind
+    {
+        Node,
+        Launch
+    };
 
-    QString id;            ///< "part1", ... unique within the composite, in declaration order
+    QString id; ///< "part1", ... unique within the composite, in declaration order
     Kind kind = Kind::Node;
     QString instanceId;    ///< node instance id ("n3") or launch-file instance id ("lf2")
     QString name;          ///< node name; "" for a launch part
@@ -44,29 +48,34 @@ struct RosNodePart
     bool external = false; ///< an include of a launch file outside the workspace
     bool typed = true;     ///< false when the class could not be found (no ports known)
     QList<PartPort> ports;
-    Evidence evidence;     ///< the node or include in the launch file
-    QString subsystem;     ///< accepted subsystem grouping ("" = none)
+    Evidence evidence; ///< the node or include in the launch file
+    QString subsystem; ///< accepted subsystem grouping ("" = none)
     bool operator==(const RosNodePart &) const = default;
 };
 
 /// A topic, service or action bound inside a composite (it has both sides there).
 struct Channel
 {
-    enum class Kind { Topic, Service, Action };
+    enum class Kind
+    {
+        Topic,
+        Service,
+        Action
+    };
 
-    QString id;    ///< PlantUML-safe alias: "q_robot_ns_scan", "c_...", "a_..."
+    QString id; ///< PlantUML-safe alias: "q_robot_ns_scan", "c_...", "a_..."
     Kind kind = Kind::Topic;
-    QString name;  ///< resolved absolute name
-    QString type;  ///< the first type seen; conflicts are diagnostics
+    QString name; ///< resolved absolute name
+    QString type; ///< the first type seen; conflicts are diagnostics
     bool operator==(const Channel &) const = default;
 };
 
 /// A boundary port of a composite: an inner port with no counterpart inside, promoted.
 struct BoundaryPort
 {
-    QString id;    ///< "s1", "p1", "ps1", ... per composite, in order of first appearance
+    QString id; ///< "s1", "p1", "ps1", ... per composite, in order of first appearance
     PortKind kind = PortKind::Publisher; ///< the kind of the inner port(s)
-    QString name;  ///< resolved absolute name (what wiring at the next level up matches)
+    QString name; ///< resolved absolute name (what wiring at the next level up matches)
     QString type;
     bool isInput() const; ///< subscriber, service server, action server
     bool operator==(const BoundaryPort &) const = default;
@@ -75,7 +84,15 @@ struct BoundaryPort
 /// An edge inside a composite; endpoints are a part's port and a channel or boundary port.
 struct Connection
 {
-    enum class Kind { Publish, Subscribe, Client, Server, DelegationIn, DelegationOut };
+    enum class Kind
+    {
+        Publish,
+        Subscribe,
+        Client,
+        Server,
+        DelegationIn,
+        DelegationOut
+    };
 
     Kind kind = Kind::Publish;
     QString partId;
@@ -87,11 +104,11 @@ struct Connection
 /// A ComposedRosNodeClassifier: the composition one launch-file instance defines.
 struct Composite
 {
-    QString instanceId;    ///< the launch-file instance ("lf1")
-    QString stem;          ///< launch file stem: "robot" for robot.launch.py
-    QString file;          ///< workspace-relative path ("" when external)
+    QString instanceId; ///< the launch-file instance ("lf1")
+    QString stem;       ///< launch file stem: "robot" for robot.launch.py
+    QString file;       ///< workspace-relative path ("" when external)
     QString package;
-    QString parentId;      ///< the including launch-file instance ("" for a root)
+    QString parentId; ///< the including launch-file instance ("" for a root)
     QList<RosNodePart> parts;
     QList<Channel> channels;
     QList<BoundaryPort> boundary;

@@ -9,7 +9,12 @@ namespace rosarch {
 /// A message from a stage about the input: a broken file, something skipped, something unsure.
 struct Diagnostic
 {
-    enum class Severity { Info, Warning, Error };
+    enum class Severity
+    {
+        Info,
+        Warning,
+        Error
+    };
 
     Severity severity = Severity::Warning;
     QString code;    ///< stable machine-readable kind, e.g. "syntax-error", "binary-file"

@@ -14,8 +14,8 @@ namespace rosarch {
 /// node classes it instantiates, so that build-file executables map to classes by evidence.
 struct EntryPoint
 {
-    QString file;     ///< relative to the workspace root
-    QString function; ///< "main", ...
+    QString file;                    ///< relative to the workspace root
+    QString function;                ///< "main", ...
     QStringList instantiatedClasses; ///< class names as written (possibly qualified)
     Evidence evidence;
 

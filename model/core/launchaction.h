@@ -21,7 +21,7 @@ struct LaunchRemap
 /// One parameter given to a node: a name and value, or a parameter file (`isFile`).
 struct LaunchParameter
 {
-    Substitution name; ///< empty for a parameter file
+    Substitution name;  ///< empty for a parameter file
     Substitution value; ///< the value, or the file path
     bool isFile = false;
     Evidence evidence;
@@ -42,19 +42,22 @@ struct LaunchCondition
 /// produce these trees; the LaunchAnalyzer executes them (scopes, arguments, includes).
 struct LaunchAction
 {
-    enum class Kind {
-        Node,                  ///< Node / LifecycleNode / <node>
-        ComposableContainer,   ///< ComposableNodeContainer / <node_container>; children = ComposableNode
-        ComposableNode,        ///< ComposableNode / <composable_node>
-        LoadComposableNodes,   ///< LoadComposableNodes(target_container=...); children = ComposableNode
-        Include,               ///< IncludeLaunchDescription / <include>
-        Group,                 ///< GroupAction / <group>; children
-        PushNamespace,         ///< PushRosNamespace / <push-ros-namespace>; `nameSpace`
-        SetRemap,              ///< SetRemap / <remap> at scope level; remaps[0]
-        DeclareArgument,       ///< DeclareLaunchArgument / <arg>; `name`, `value` (default), `hasValue`
-        SetLaunchConfiguration,///< SetLaunchConfiguration / <let>; `name`, `value`
-        SetParameter,          ///< SetParameter / <set_parameter>; parameters[0]
-        Unresolved,            ///< OpaqueFunction, unknown action: `expression` says what
+    enum class Kind
+    {
+        Node,                ///< Node / LifecycleNode / <node>
+        ComposableContainer, ///< ComposableNodeContainer / <node_container>; children =
+                             ///< ComposableNode
+        ComposableNode,      ///< ComposableNode / <composable_node>
+        LoadComposableNodes, ///< LoadComposableNodes(target_container=...); children =
+                             ///< ComposableNode
+        Include,             ///< IncludeLaunchDescription / <include>
+        Group,               ///< GroupAction / <group>; children
+        PushNamespace,       ///< PushRosNamespace / <push-ros-namespace>; `nameSpace`
+        SetRemap,            ///< SetRemap / <remap> at scope level; remaps[0]
+        DeclareArgument, ///< DeclareLaunchArgument / <arg>; `name`, `value` (default), `hasValue`
+        SetLaunchConfiguration, ///< SetLaunchConfiguration / <let>; `name`, `value`
+        SetParameter,           ///< SetParameter / <set_parameter>; parameters[0]
+        Unresolved,             ///< OpaqueFunction, unknown action: `expression` says what
     };
 
     Kind kind = Kind::Node;
@@ -64,17 +67,18 @@ struct LaunchAction
     // Node, ComposableNode, ComposableContainer
     Substitution package;
     Substitution executable;
-    Substitution plugin;     ///< ComposableNode
-    Substitution name;       ///< node name; argument / configuration name for DeclareArgument, SetLaunchConfiguration
-    Substitution nameSpace;  ///< node namespace; the pushed namespace for PushNamespace
+    Substitution plugin;    ///< ComposableNode
+    Substitution name;      ///< node name; argument / configuration name for DeclareArgument,
+                            ///< SetLaunchConfiguration
+    Substitution nameSpace; ///< node namespace; the pushed namespace for PushNamespace
     bool lifecycle = false;
     QList<LaunchRemap> remaps;
     QList<LaunchParameter> parameters;
 
     // Group (children), ComposableContainer and LoadComposableNodes (composable children)
     QList<LaunchAction> children;
-    bool scoped = true;      ///< Group: whether configurations and namespaces pop at its end
-    Substitution target;     ///< LoadComposableNodes: the container's name
+    bool scoped = true;  ///< Group: whether configurations and namespaces pop at its end
+    Substitution target; ///< LoadComposableNodes: the container's name
 
     // Include: the file, and launch_arguments (name, value) in `arguments`
     Substitution path;
@@ -93,7 +97,12 @@ struct LaunchAction
 /// What a reader recovers from one launch file.
 struct LaunchFileDescription
 {
-    enum class Format { Python, Xml, Yaml };
+    enum class Format
+    {
+        Python,
+        Xml,
+        Yaml
+    };
 
     QString file; ///< relative to the workspace root
     Format format = Format::Python;

@@ -13,7 +13,7 @@ namespace rosarch {
 /// Something the analysis could not decide statically, kept on the element it concerns.
 struct Unresolved
 {
-    QString kind;       ///< "substitution", "condition", "include", "opaque-function", "argument", ...
+    QString kind; ///< "substitution", "condition", "include", "opaque-function", "argument", ...
     QString expression; ///< as written
     QString guess;      ///< the default or best guess used for the rest of the analysis
     Evidence evidence;
@@ -27,17 +27,17 @@ struct NodeInstance
     QString launchFileId; ///< the launch-file instance that declares it
     QString nodeKind;     ///< "python", "cpp" or "composable" ("" when the class is unknown)
     QString package;
-    QString execName;     ///< executable, or plugin for a composable node
-    QString className;    ///< the ARC it resolves to ("" when not found in the workspace)
-    QString classId;      ///< that ARC's id in the List of Atomic ROS Nodes
-    QString nodeName;     ///< runtime name: from the launch file, else the name in code
-    QString nameSpace;    ///< effective namespace ("/" at the root)
-    QString container;    ///< composable: the container instance id (or its name when not found)
+    QString execName;  ///< executable, or plugin for a composable node
+    QString className; ///< the ARC it resolves to ("" when not found in the workspace)
+    QString classId;   ///< that ARC's id in the List of Atomic ROS Nodes
+    QString nodeName;  ///< runtime name: from the launch file, else the name in code
+    QString nameSpace; ///< effective namespace ("/" at the root)
+    QString container; ///< composable: the container instance id (or its name when not found)
     bool lifecycle = false;
     QList<QPair<QString, QString>> remaps;     ///< evaluated from -> to (scope remaps first)
     QList<QPair<QString, QString>> parameters; ///< name -> value; parameter files as ("", path)
-    QString condition;     ///< as written ("" when none)
-    bool active = true;    ///< the condition's value (true when undecidable: best guess)
+    QString condition;                         ///< as written ("" when none)
+    bool active = true; ///< the condition's value (true when undecidable: best guess)
     QList<Unresolved> unresolved;
     Evidence evidence;
     bool operator==(const NodeInstance &) const = default;
@@ -46,15 +46,15 @@ struct NodeInstance
 /// A launch-file instance: a root, or one include of a file (a file included twice gives two).
 struct LaunchFileInstance
 {
-    QString id;       ///< "lf1", ...
-    QString type;     ///< the launch file name, e.g. "bringup.launch.py"
-    QString file;     ///< relative to the workspace root ("" when external)
-    QString package;  ///< the package that contains (or would contain) it
-    QString format;   ///< "python", "xml", "yaml"
-    QString parentId; ///< the including instance ("" for a root)
-    bool external = false; ///< an include of a package that is not in the workspace
-    QStringList nodes;                 ///< node instance ids it declares directly
-    QStringList includedLaunchFiles;   ///< launch-file instance ids it includes directly
+    QString id;                            ///< "lf1", ...
+    QString type;                          ///< the launch file name, e.g. "bringup.launch.py"
+    QString file;                          ///< relative to the workspace root ("" when external)
+    QString package;                       ///< the package that contains (or would contain) it
+    QString format;                        ///< "python", "xml", "yaml"
+    QString parentId;                      ///< the including instance ("" for a root)
+    bool external = false;                 ///< an include of a package that is not in the workspace
+    QStringList nodes;                     ///< node instance ids it declares directly
+    QStringList includedLaunchFiles;       ///< launch-file instance ids it includes directly
     QMap<QString, QStringList> namespaces; ///< namespace scope -> ids of instances inside it
     QList<QPair<QString, QString>> arguments; ///< effective launch arguments (declared or passed)
     QString condition;
@@ -80,7 +80,8 @@ struct LaunchArgument
 struct LaunchDependencies
 {
     QStringList launchFiles; ///< every launch file found (workspace-relative), sorted
-    QList<LaunchFileInstance> instances; ///< roots first, each followed by its includes (depth first)
+    QList<LaunchFileInstance>
+        instances; ///< roots first, each followed by its includes (depth first)
     QList<NodeInstance> nodes;
     QList<LaunchArgument> arguments; ///< declared by the analysed roots
     QList<Diagnostic> diagnostics;

@@ -38,12 +38,18 @@ bool portKindFromName(const QString &name, PortKind *kind)
 QString portIdPrefix(PortKind kind)
 {
     switch (kind) {
-    case PortKind::Publisher: return QStringLiteral("p");
-    case PortKind::Subscriber: return QStringLiteral("s");
-    case PortKind::ServiceServer: return QStringLiteral("ps");
-    case PortKind::ServiceClient: return QStringLiteral("rs");
-    case PortKind::ActionServer: return QStringLiteral("pa");
-    case PortKind::ActionClient: return QStringLiteral("ra");
+    case PortKind::Publisher:
+        return QStringLiteral("p");
+    case PortKind::Subscriber:
+        return QStringLiteral("s");
+    case PortKind::ServiceServer:
+        return QStringLiteral("ps");
+    case PortKind::ServiceClient:
+        return QStringLiteral("rs");
+    case PortKind::ActionServer:
+        return QStringLiteral("pa");
+    case PortKind::ActionClient:
+        return QStringLiteral("ra");
     }
     return {};
 }
@@ -51,11 +57,16 @@ QString portIdPrefix(PortKind kind)
 QString nameOriginName(NameOrigin origin)
 {
     switch (origin) {
-    case NameOrigin::Literal: return QStringLiteral("literal");
-    case NameOrigin::Member: return QStringLiteral("member");
-    case NameOrigin::Local: return QStringLiteral("local");
-    case NameOrigin::Parameter: return QStringLiteral("parameter");
-    case NameOrigin::Expression: return QStringLiteral("expression");
+    case NameOrigin::Literal:
+        return QStringLiteral("literal");
+    case NameOrigin::Member:
+        return QStringLiteral("member");
+    case NameOrigin::Local:
+        return QStringLiteral("local");
+    case NameOrigin::Parameter:
+        return QStringLiteral("parameter");
+    case NameOrigin::Expression:
+        return QStringLiteral("expression");
     }
     return {};
 }

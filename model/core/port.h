@@ -6,7 +6,15 @@
 
 namespace rosarch {
 
-enum class PortKind { Publisher, Subscriber, ServiceServer, ServiceClient, ActionServer, ActionClient };
+enum class PortKind
+{
+    Publisher,
+    Subscriber,
+    ServiceServer,
+    ServiceClient,
+    ActionServer,
+    ActionClient
+};
 
 /// "publisher", "subscriber", "service_server", ... as written in the JSON artifacts.
 QString portKindName(PortKind kind);
@@ -20,7 +28,8 @@ bool isInputPort(PortKind kind);
 bool isProvidingPort(PortKind kind);
 
 /// How the port's name was obtained from the code.
-enum class NameOrigin {
+enum class NameOrigin
+{
     Literal,    ///< a string literal at the call
     Member,     ///< a member variable (self.x / x_) holding a literal
     Local,      ///< a local variable holding a literal
@@ -32,10 +41,10 @@ QString nameOriginName(NameOrigin origin);
 /// One communication port of an atomic node: publisher, subscriber, service, action.
 struct Port
 {
-    QString id;   ///< per-node id in ACD style: p1, s1, ps1, rs1, pa1, ra1
+    QString id; ///< per-node id in ACD style: p1, s1, ps1, rs1, pa1, ra1
     PortKind kind = PortKind::Publisher;
-    QString name; ///< the name as written, resolved to a literal where possible ("~/x" kept)
-    QString type; ///< interface type, canonical "pkg/msg/T", "pkg/srv/T", "pkg/action/T"
+    QString name;     ///< the name as written, resolved to a literal where possible ("~/x" kept)
+    QString type;     ///< interface type, canonical "pkg/msg/T", "pkg/srv/T", "pkg/action/T"
     QString callback; ///< callback / handler function name; "lambda" for a lambda
     NameOrigin nameOrigin = NameOrigin::Literal;
     QString nameExpression; ///< the expression at the call when it is not a literal

@@ -36,8 +36,8 @@ QString expand(const QString &name, const QString &nameSpace, const QString &nod
 bool isNameRule(const QString &from)
 {
     const QString f = from.trimmed();
-    return !f.isEmpty() && f != QLatin1String("__node") && f != QLatin1String("__name")
-           && f != QLatin1String("__ns") && !f.contains(QLatin1Char(':'));
+    return !f.isEmpty() && f != QLatin1String("__node") && f != QLatin1String("__name") &&
+           f != QLatin1String("__ns") && !f.contains(QLatin1Char(':'));
 }
 
 QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,

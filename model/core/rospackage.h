@@ -11,12 +11,17 @@ namespace rosarch {
 /// How a launch file can start code: an executable or a component plugin.
 struct Executable
 {
-    enum class Kind { ConsoleScript, CMakeExecutable, ComponentPlugin };
+    enum class Kind
+    {
+        ConsoleScript,
+        CMakeExecutable,
+        ComponentPlugin
+    };
 
     Kind kind = Kind::CMakeExecutable;
-    QString name;     ///< executable name, or the plugin class for a plugin-only registration
-    QString target;   ///< python "module.path:function"; cmake target name; plugin class
-    QString plugin;   ///< plugin class ("ns::Class") for component registrations
+    QString name;        ///< executable name, or the plugin class for a plugin-only registration
+    QString target;      ///< python "module.path:function"; cmake target name; plugin class
+    QString plugin;      ///< plugin class ("ns::Class") for component registrations
     QStringList sources; ///< source files relative to the workspace root (CMake targets)
     Evidence evidence;
 

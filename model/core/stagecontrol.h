@@ -9,7 +9,7 @@ namespace rosarch {
 /// Lets a caller watch and cancel a stage without the stage knowing about threads or UI.
 struct StageControl
 {
-    std::function<bool()> canceled;                                  ///< polled between files
+    std::function<bool()> canceled; ///< polled between files
     std::function<void(int done, int total, const QString &what)> progressed;
 
     bool isCanceled() const { return canceled && canceled(); }

@@ -47,17 +47,28 @@ QString Substitution::describe() const
         return out.join(sep);
     };
     switch (kind) {
-    case Kind::Text: return text;
-    case Kind::LaunchConfiguration: return QStringLiteral("$(var %1)").arg(text);
-    case Kind::EnvironmentVariable: return QStringLiteral("$(env %1)").arg(text);
-    case Kind::FindPackageShare: return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
-    case Kind::FindPackagePrefix: return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
-    case Kind::PathJoin: return joined(QStringLiteral("/"));
-    case Kind::Concat: return joined(QString());
-    case Kind::Eval: return QStringLiteral("$(eval %1)").arg(joined(QString()));
-    case Kind::ThisLaunchFileDir: return QStringLiteral("$(dirname)");
-    case Kind::ThisLaunchFile: return QStringLiteral("$(filename)");
-    case Kind::Unknown: return text;
+    case Kind::Text:
+        return text;
+    case Kind::LaunchConfiguration:
+        return QStringLiteral("$(var %1)").arg(text);
+    case Kind::EnvironmentVariable:
+        return QStringLiteral("$(env %1)").arg(text);
+    case Kind::FindPackageShare:
+        return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
+    case Kind::FindPackagePrefix:
+        return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
+    case Kind::PathJoin:
+        return joined(QStringLiteral("/"));
+    case Kind::Concat:
+        return joined(QString());
+    case Kind::Eval:
+        return QStringLiteral("$(eval %1)").arg(joined(QString()));
+    case Kind::ThisLaunchFileDir:
+        return QStringLiteral("$(dirname)");
+    case Kind::ThisLaunchFile:
+        return QStringLiteral("$(filename)");
+    case Kind::Unknown:
+        return text;
     }
     return text;
 }

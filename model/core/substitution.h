@@ -9,18 +9,22 @@ namespace rosarch {
 /// it can be evaluated later against launch arguments (ROS 2 launch "substitutions").
 struct Substitution
 {
-    enum class Kind {
+    enum class Kind
+    {
         Text,                ///< literal text
-        LaunchConfiguration, ///< LaunchConfiguration('x') / $(var x); `text` = name, parts[0] = default if any
-        EnvironmentVariable, ///< EnvironmentVariable('X') / $(env X [default]); `text` = name, parts[0] = default
-        FindPackageShare,    ///< FindPackageShare('p') / get_package_share_directory / $(find-pkg-share p); parts[0] = package
+        LaunchConfiguration, ///< LaunchConfiguration('x') / $(var x); `text` = name, parts[0] =
+                             ///< default if any
+        EnvironmentVariable, ///< EnvironmentVariable('X') / $(env X [default]); `text` = name,
+                             ///< parts[0] = default
+        FindPackageShare,    ///< FindPackageShare('p') / get_package_share_directory /
+                             ///< $(find-pkg-share p); parts[0] = package
         FindPackagePrefix,   ///< FindPackagePrefix / $(find-pkg-prefix p); parts[0] = package
         PathJoin,            ///< PathJoinSubstitution / os.path.join: parts joined with '/'
         Concat,              ///< a list of substitutions, an f-string, '+' of strings
-        Eval,                ///< PythonExpression / $(eval ...): parts concatenated, then evaluated if simple
-        ThisLaunchFileDir,   ///< ThisLaunchFileDir() / $(dirname)
-        ThisLaunchFile,      ///< ThisLaunchFile() / $(filename)
-        Unknown,             ///< anything else (Command, OpaqueFunction results, ...): `text` = the expression
+        Eval, ///< PythonExpression / $(eval ...): parts concatenated, then evaluated if simple
+        ThisLaunchFileDir, ///< ThisLaunchFileDir() / $(dirname)
+        ThisLaunchFile,    ///< ThisLaunchFile() / $(filename)
+        Unknown, ///< anything else (Command, OpaqueFunction results, ...): `text` = the expression
     };
 
     Kind kind = Kind::Text;

@@ -5,9 +5,12 @@ namespace rosarch {
 QString Suggestion::kindName(Kind kind)
 {
     switch (kind) {
-    case Kind::NodeDescription: return QStringLiteral("node-description");
-    case Kind::SubsystemGrouping: return QStringLiteral("subsystem-grouping");
-    case Kind::NameResolution: return QStringLiteral("name-resolution");
+    case Kind::NodeDescription:
+        return QStringLiteral("node-description");
+    case Kind::SubsystemGrouping:
+        return QStringLiteral("subsystem-grouping");
+    case Kind::NameResolution:
+        return QStringLiteral("name-resolution");
     }
     return {};
 }
@@ -25,9 +28,12 @@ bool Suggestion::kindFromName(const QString &name, Kind *kind)
 QString Suggestion::statusName(Status status)
 {
     switch (status) {
-    case Status::Pending: return QStringLiteral("pending");
-    case Status::Accepted: return QStringLiteral("accepted");
-    case Status::Rejected: return QStringLiteral("rejected");
+    case Status::Pending:
+        return QStringLiteral("pending");
+    case Status::Accepted:
+        return QStringLiteral("accepted");
+    case Status::Rejected:
+        return QStringLiteral("rejected");
     }
     return {};
 }
@@ -44,7 +50,8 @@ bool Suggestion::statusFromName(const QString &name, Status *status)
 
 QString Suggestion::subjectKey() const
 {
-    return kindName(kind) + QLatin1Char('|') + targetId + QLatin1Char('|') + memberIds.join(QLatin1Char(','));
+    return kindName(kind) + QLatin1Char('|') + targetId + QLatin1Char('|') +
+           memberIds.join(QLatin1Char(','));
 }
 
 } // namespace rosarch

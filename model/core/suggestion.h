@@ -13,8 +13,18 @@ namespace rosarch {
 /// provider, that an engineer accepts or rejects. Only checked suggestions reach the user.
 struct Suggestion
 {
-    enum class Kind { NodeDescription, SubsystemGrouping, NameResolution };
-    enum class Status { Pending, Accepted, Rejected };
+    enum class Kind
+    {
+        NodeDescription,
+        SubsystemGrouping,
+        NameResolution
+    };
+    enum class Status
+    {
+        Pending,
+        Accepted,
+        Rejected
+    };
 
     /// A cited source range and the text it is cited for (it must appear on those lines).
     struct Citation
@@ -27,13 +37,13 @@ struct Suggestion
     /// Who proposed it and from which prompt, when.
     struct Origin
     {
-        QString provider; ///< "llm:<model>" or "deterministic"
-        QString prompt;   ///< prompt name ("" for deterministic rules)
+        QString provider;    ///< "llm:<model>" or "deterministic"
+        QString prompt;      ///< prompt name ("" for deterministic rules)
         QDateTime timestamp; ///< UTC
         bool operator==(const Origin &) const = default;
     };
 
-    QString id;     ///< "s1", ... in deterministic order
+    QString id; ///< "s1", ... in deterministic order
     Kind kind = Kind::NodeDescription;
     /// node-description: the ARC id; subsystem-grouping: the root launch-file instance id;
     /// name-resolution: the unresolved item id ("arc_2/p1" for a port, "n3#u1" for a launch item).

@@ -422,8 +422,9 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
             if (w.connection->targetId != ch.id)
                 continue;
             member = c.part(w.connection->partId);
-            homes.insert(w.portId.isEmpty() ? QString()
-                                            : member->nameSpace + QLatin1Char('\n') + member->subsystem);
+            homes.insert(w.portId.isEmpty()
+                             ? QString()
+                             : member->nameSpace + QLatin1Char('\n') + member->subsystem);
             const QStringList chain = namespaceChain(w.home);
             if (!common) {
                 common = chain;

@@ -14,8 +14,8 @@ QList<UmlDiagram> recoveredDiagrams(const AtomicNodeList &nodes, const Architect
                                     QStringLiteral("acd/%1.puml").arg(acdStems.value(n.id)));
     const QMap<QString, QString> ccdStems = CcdWriter::fileStems(architecture);
     for (const Composite *c : architecture.representatives())
-        out += PlantUmlReader::read(CcdWriter::write(*c),
-                                    QStringLiteral("ccd/%1.puml").arg(ccdStems.value(c->instanceId)));
+        out += PlantUmlReader::read(
+            CcdWriter::write(*c), QStringLiteral("ccd/%1.puml").arg(ccdStems.value(c->instanceId)));
     return out;
 }
 

@@ -19,7 +19,8 @@ namespace {
 class LaunchFileIndex
 {
 public:
-    LaunchFileIndex(const Workspace &ws, const StageControl &control, QList<Diagnostic> *diagnostics)
+    LaunchFileIndex(const Workspace &ws, const StageControl &control,
+                    QList<Diagnostic> *diagnostics)
     {
         const SourceReader reader(ws.root);
         int done = 0;
@@ -27,9 +28,9 @@ public:
             ++done;
             if (control.isCanceled())
                 return;
-            const bool candidate = f.language == SourceFile::Language::Python
-                                   || f.language == SourceFile::Language::Xml
-                                   || f.language == SourceFile::Language::Yaml;
+            const bool candidate = f.language == SourceFile::Language::Python ||
+                                   f.language == SourceFile::Language::Xml ||
+                                   f.language == SourceFile::Language::Yaml;
             if (!candidate)
                 continue;
             QByteArray content;
@@ -40,16 +41,20 @@ public:
                 continue;
             }
             LaunchFileDescription d;
-            if (f.language == SourceFile::Language::Python && PythonLaunchReader::isLaunchFile(content))
+            if (f.language == SourceFile::Language::Python &&
+                PythonLaunchReader::isLaunchFile(content))
                 d = PythonLaunchReader::read(content, f.path);
-            else if (f.language == SourceFile::Language::Xml && XmlLaunchReader::isLaunchFile(content))
+            else if (f.language == SourceFile::Language::Xml &&
+                     XmlLaunchReader::isLaunchFile(content))
                 d = XmlLaunchReader::read(content, f.path);
-            else if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
+            else if (f.language == SourceFile::Language::Yaml &&
+                     YamlLaunchReader::isLaunchFile(content))
                 d = YamlLaunchReader::read(content, f.path);
             else
                 continue;
             control.report(done, int(ws.files.size()), f.path);
-            if (f.language != SourceFile::Language::Python) // Python syntax errors come from stage 1
+            if (f.language !=
+                SourceFile::Language::Python) // Python syntax errors come from stage 1
                 diagnostics->append(d.diagnostics);
             else
                 for (const Diagnostic &diag : d.diagnostics)
@@ -88,7 +93,8 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         return out;
     }
     out.launchFiles = index.files();
-    LaunchExecutor executor(workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);
+    LaunchExecutor executor(
+        workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);
 
     QStringList roots;
     if (!options.rootFile.isEmpty()) {
@@ -98,8 +104,10 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             Diagnostic d;
             d.severity = Diagnostic::Severity::Error;
             d.code = QStringLiteral("no-such-launch-file");
-            d.message = QStringLiteral("The chosen root launch file %1 is not a launch file of this workspace.")
-                            .arg(options.rootFile);
+            d.message =
+                QStringLiteral(
+                    "The chosen root launch file %1 is not a launch file of this workspace.")
+                    .arg(options.rootFile);
             out.diagnostics.append(d);
         }
     } else {
@@ -144,8 +152,9 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             Diagnostic d;
             d.severity = Diagnostic::Severity::Info;
             d.code = QStringLiteral("external-include");
-            d.message = QStringLiteral("Include of %1 from package %2, which is not in the workspace.")
-                            .arg(i.type, i.package);
+            d.message =
+                QStringLiteral("Include of %1 from package %2, which is not in the workspace.")
+                    .arg(i.type, i.package);
             d.evidence = i.evidence;
             out.diagnostics.append(d);
         }

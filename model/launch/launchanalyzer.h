@@ -26,12 +26,14 @@ class LaunchAnalyzer
 {
 public:
     static LaunchDependencies run(const Workspace &workspace, const AtomicNodeList &nodes,
-                                  const LaunchOptions &options = {}, const StageControl &control = {});
+                                  const LaunchOptions &options = {},
+                                  const StageControl &control = {});
 };
 
 /// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer
 /// against stage 1's result.
 LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,
-                                      const LaunchOptions &options = {}, const StageControl &control = {});
+                                      const LaunchOptions &options = {},
+                                      const StageControl &control = {});
 
 } // namespace rosarch

@@ -19,9 +19,12 @@ QString dirOf(const QString &file)
 QString formatName(LaunchFileDescription::Format f)
 {
     switch (f) {
-    case LaunchFileDescription::Format::Python: return QStringLiteral("python");
-    case LaunchFileDescription::Format::Xml: return QStringLiteral("xml");
-    case LaunchFileDescription::Format::Yaml: return QStringLiteral("yaml");
+    case LaunchFileDescription::Format::Python:
+        return QStringLiteral("python");
+    case LaunchFileDescription::Format::Xml:
+        return QStringLiteral("xml");
+    case LaunchFileDescription::Format::Yaml:
+        return QStringLiteral("yaml");
     }
     return {};
 }
@@ -44,8 +47,8 @@ QString joinNamespace(const QString &outer, const QString &inner)
     return outer + QLatin1Char('/') + in;
 }
 
-LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes, Loader loader,
-                               LaunchDependencies *out)
+LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes,
+                               Loader loader, LaunchDependencies *out)
     : m_workspace(workspace), m_nodes(nodes), m_load(std::move(loader)), m_out(out)
 {
     for (const RosPackage &p : workspace.packages)
@@ -56,10 +59,13 @@ IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QStri
 {
     IncludeTarget t;
     QString path = rawPath.trimmed();
-    static const QRegularExpression share(QStringLiteral("^\\$\\(find-pkg-(?:share|prefix) ([^)\\s]+)\\)/*(.*)$"));
+    static const QRegularExpression share(
+        QStringLiteral("^\\$\\(find-pkg-(?:share|prefix) ([^)\\s]+)\\)/*(.*)$"));
     const auto m = share.match(path);
     auto existing = [&](const QString &rel) {
-        return m_workspace.absolutePath(rel).isEmpty() ? false : QFileInfo(m_workspace.absolutePath(rel)).isFile();
+        return m_workspace.absolutePath(rel).isEmpty()
+                   ? false
+                   : QFileInfo(m_workspace.absolutePath(rel)).isFile();
     };
     if (m.hasMatch()) {
         t.package = m.captured(1);
@@ -85,7 +91,8 @@ IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QStri
             int score = 0;
             const QStringList a = f.path.split(QLatin1Char('/'));
             const QStringList b = rest.split(QLatin1Char('/'));
-            while (score < a.size() && score < b.size() && a[a.size() - 1 - score] == b[b.size() - 1 - score])
+            while (score < a.size() && score < b.size() &&
+                   a[a.size() - 1 - score] == b[b.size() - 1 - score])
                 ++score;
             if (score > best) {
                 best = score;
@@ -201,7 +208,8 @@ void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QStri
         m_out->instances[instance].namespaces[nsKey(ns)].append(id);
 }
 
-void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame, int depth)
+void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame,
+                             int depth)
 {
     auto unresolvedSink = [&]() -> QList<Unresolved> * {
         return frame.instance >= 0 ? &m_out->instances[frame.instance].unresolved : nullptr;
@@ -214,7 +222,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                 LaunchArgument arg;
                 arg.name = name;
                 arg.hasDefault = a.hasValue;
-                arg.defaultValue = a.hasValue ? evaluate(a.value, scope, frame, nullptr, a.evidence) : QString();
+                arg.defaultValue =
+                    a.hasValue ? evaluate(a.value, scope, frame, nullptr, a.evidence) : QString();
                 arg.description = a.description;
                 arg.launchFile = frame.file;
                 arg.evidence = a.evidence;
@@ -223,21 +232,26 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             if (scope.configurations.contains(name))
                 break; // given by the person or by the including file
             if (a.hasValue) {
-                scope.configurations.insert(name, evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+                scope.configurations.insert(
+                    name, evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
             } else if (!frame.collectOnly && frame.instance >= 0) {
                 m_out->instances[frame.instance].unresolved.append(
-                    {QStringLiteral("argument"), QStringLiteral("launch argument '%1' has no default").arg(name),
-                     QString(), a.evidence});
+                    {QStringLiteral("argument"),
+                     QStringLiteral("launch argument '%1' has no default").arg(name), QString(),
+                     a.evidence});
             }
             break;
         }
         case LaunchAction::Kind::SetLaunchConfiguration:
-            scope.configurations.insert(evaluate(a.name, scope, frame, nullptr, a.evidence),
-                                        evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+            scope.configurations.insert(
+                evaluate(a.name, scope, frame, nullptr, a.evidence),
+                evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
             break;
         case LaunchAction::Kind::PushNamespace:
             if (conditionHolds(a, scope, frame, unresolvedSink()))
-                scope.nameSpace = joinNamespace(scope.nameSpace, evaluate(a.nameSpace, scope, frame, unresolvedSink(), a.evidence));
+                scope.nameSpace =
+                    joinNamespace(scope.nameSpace, evaluate(a.nameSpace, scope, frame,
+                                                            unresolvedSink(), a.evidence));
             break;
         case LaunchAction::Kind::SetRemap:
             for (const LaunchRemap &r : a.remaps)
@@ -246,8 +260,9 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             break;
         case LaunchAction::Kind::SetParameter:
             for (const LaunchParameter &p : a.parameters)
-                scope.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, nullptr, p.evidence),
-                                         evaluate(p.value, scope, frame, unresolvedSink(), p.evidence)});
+                scope.parameters.append(
+                    {p.isFile ? QString() : evaluate(p.name, scope, frame, nullptr, p.evidence),
+                     evaluate(p.value, scope, frame, unresolvedSink(), p.evidence)});
             break;
         case LaunchAction::Kind::Group: {
             Scope inner = scope;
@@ -256,7 +271,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                 break;
             execute(a.children, inner, frame, depth + 1);
             if (!a.scoped)
-                scope = Scope{inner.configurations, inner.nameSpace, inner.remaps, inner.parameters, scope.active};
+                scope = Scope{inner.configurations, inner.nameSpace, inner.remaps, inner.parameters,
+                              scope.active};
             break;
         }
         case LaunchAction::Kind::Node:
@@ -283,7 +299,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             QString containerId = target;
             for (const NodeInstance &n : std::as_const(m_out->nodes)) {
                 const QString fq = joinNamespace(n.nameSpace, n.nodeName);
-                if (!target.isEmpty() && (n.nodeName == target || fq == target || fq == joinNamespace(scope.nameSpace, target)))
+                if (!target.isEmpty() && (n.nodeName == target || fq == target ||
+                                          fq == joinNamespace(scope.nameSpace, target)))
                     containerId = n.id;
             }
             Scope inner = scope;
@@ -302,16 +319,17 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
         case LaunchAction::Kind::Unresolved:
             if (frame.instance >= 0)
                 m_out->instances[frame.instance].unresolved.append(
-                    {a.expression.startsWith(QLatin1String("OpaqueFunction")) ? QStringLiteral("opaque-function")
-                                                                               : QStringLiteral("action"),
+                    {a.expression.startsWith(QLatin1String("OpaqueFunction"))
+                         ? QStringLiteral("opaque-function")
+                         : QStringLiteral("action"),
                      a.expression, QString(), a.evidence});
             break;
         }
     }
 }
 
-QList<const AtomicNode *> LaunchExecutor::resolveClasses(const QString &package, const QString &executable,
-                                                         bool plugin) const
+QList<const AtomicNode *>
+LaunchExecutor::resolveClasses(const QString &package, const QString &executable, bool plugin) const
 {
     QString wanted = executable;
     if (plugin && wanted.startsWith(QLatin1String("::")))
@@ -328,7 +346,8 @@ QList<const AtomicNode *> LaunchExecutor::resolveClasses(const QString &package,
     return out;
 }
 
-void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame, const QString &container)
+void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
+                                 const QString &container)
 {
     NodeInstance n;
     n.id = QStringLiteral("n%1").arg(m_out->nodes.size() + 1);
@@ -361,12 +380,14 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         } else if (a.kind == LaunchAction::Kind::ComposableContainer) {
             n.nodeKind = QStringLiteral("cpp"); // component containers are C++ processes
         } else if (const RosPackage *p = m_workspace.package(n.package)) {
-            n.nodeKind = p->buildType == QLatin1String("ament_python") ? QStringLiteral("python") : QStringLiteral("cpp");
+            n.nodeKind = p->buildType == QLatin1String("ament_python") ? QStringLiteral("python")
+                                                                       : QStringLiteral("cpp");
         }
     }
     n.remaps = scope.remaps;
     for (const LaunchRemap &r : a.remaps)
-        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence), evaluate(r.to, scope, frame, &u, r.evidence)});
+        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence),
+                         evaluate(r.to, scope, frame, &u, r.evidence)});
     n.parameters = scope.parameters;
     for (const LaunchParameter &p : a.parameters)
         n.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, &u, p.evidence),
@@ -427,13 +448,16 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         inst.format = formatName(d->format);
     const bool cycle = !target.file.isEmpty() && frame.chain.contains(target.file);
     if (cycle) {
-        inst.unresolved.append({QStringLiteral("cycle"), (frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")),
-                                QString(), a.evidence});
+        inst.unresolved.append(
+            {QStringLiteral("cycle"),
+             (frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")), QString(),
+             a.evidence});
         Diagnostic diag;
         diag.severity = Diagnostic::Severity::Error;
         diag.code = QStringLiteral("include-cycle");
-        diag.message = QStringLiteral("Include cycle: %1; the repeated include is not followed.")
-                           .arg((frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")));
+        diag.message =
+            QStringLiteral("Include cycle: %1; the repeated include is not followed.")
+                .arg((frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")));
         diag.evidence = a.evidence;
         m_out->diagnostics.append(diag);
     }
@@ -445,7 +469,9 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     if (!d || cycle)
         return;
     if (depth >= kMaxIncludeDepth || frame.chain.size() >= kMaxIncludeDepth) {
-        m_out->instances[index].unresolved.append({QStringLiteral("include"), QStringLiteral("include depth limit"), QString(), a.evidence});
+        m_out->instances[index].unresolved.append({QStringLiteral("include"),
+                                                   QStringLiteral("include depth limit"), QString(),
+                                                   a.evidence});
         return;
     }
     Frame child;

@@ -17,8 +17,8 @@ namespace rosarch {
 /// Where an include points, once its path is evaluated.
 struct IncludeTarget
 {
-    QString file;    ///< workspace-relative launch file ("" when not found)
-    QString package; ///< the package named by the path, if any
+    QString file;          ///< workspace-relative launch file ("" when not found)
+    QString package;       ///< the package named by the path, if any
     bool external = false; ///< the package is not in the workspace
 };
 
@@ -63,14 +63,16 @@ private:
     };
 
     void execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame, int depth);
-    void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame, const QString &container);
+    void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
+                     const QString &container);
     void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence) const;
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
                         QList<Unresolved> *unresolved) const;
     /// The classes an executable starts (several when its main spins more than one node).
-    QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable, bool plugin) const;
+    QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable,
+                                             bool plugin) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
 
     const Workspace &m_workspace;

@@ -27,7 +27,13 @@ public:
 private:
     struct Value
     {
-        enum Kind { Str, Num, Bool, List } kind = Str;
+        enum Kind
+        {
+            Str,
+            Num,
+            Bool,
+            List
+        } kind = Str;
         QString s;
         double n = 0;
         bool b = false;
@@ -35,20 +41,28 @@ private:
         bool truthy() const
         {
             switch (kind) {
-            case Str: return !s.isEmpty();
-            case Num: return n != 0;
-            case Bool: return b;
-            case List: return !items.isEmpty();
+            case Str:
+                return !s.isEmpty();
+            case Num:
+                return n != 0;
+            case Bool:
+                return b;
+            case List:
+                return !items.isEmpty();
             }
             return false;
         }
         QString text() const
         {
             switch (kind) {
-            case Str: return s;
-            case Num: return QString::number(n);
-            case Bool: return b ? QStringLiteral("true") : QStringLiteral("false");
-            case List: return QStringLiteral("[...]");
+            case Str:
+                return s;
+            case Num:
+                return QString::number(n);
+            case Bool:
+                return b ? QStringLiteral("true") : QStringLiteral("false");
+            case List:
+                return QStringLiteral("[...]");
             }
             return {};
         }
@@ -267,7 +281,8 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
         } else if (!s.parts.isEmpty()) {
             r->value += sub(s.parts.first());
         } else {
-            r->unresolved.append({QStringLiteral("launch-configuration"), s.describe(), QString(), {}});
+            r->unresolved.append(
+                {QStringLiteral("launch-configuration"), s.describe(), QString(), {}});
         }
         return;
     }
@@ -285,8 +300,9 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
         for (const Substitution &p : s.parts)
             pkg += sub(p);
         r->value += QStringLiteral("$(%1 %2)")
-                        .arg(s.kind == Substitution::Kind::FindPackageShare ? QStringLiteral("find-pkg-share")
-                                                                           : QStringLiteral("find-pkg-prefix"),
+                        .arg(s.kind == Substitution::Kind::FindPackageShare
+                                 ? QStringLiteral("find-pkg-share")
+                                 : QStringLiteral("find-pkg-prefix"),
                              pkg);
         return;
     }

@@ -59,8 +59,12 @@ public:
     {
         QList<AtomicNode *> targets;
         switch (exe.kind) {
-        case Executable::Kind::ConsoleScript: targets = consoleScriptNodes(pkg, exe); break;
-        case Executable::Kind::CMakeExecutable: targets = sourceNodes(pkg, exe.sources); break;
+        case Executable::Kind::ConsoleScript:
+            targets = consoleScriptNodes(pkg, exe);
+            break;
+        case Executable::Kind::CMakeExecutable:
+            targets = sourceNodes(pkg, exe.sources);
+            break;
         case Executable::Kind::ComponentPlugin:
             targets = byQualifiedName(exe.plugin, pkg.name);
             for (AtomicNode *n : std::as_const(targets))
@@ -75,8 +79,10 @@ public:
             Diagnostic d;
             d.severity = Diagnostic::Severity::Info;
             d.code = QStringLiteral("executable-without-node");
-            d.message = QStringLiteral("Executable '%1' of package %2 starts no node class found in the workspace.")
-                            .arg(exe.name, pkg.name);
+            d.message =
+                QStringLiteral(
+                    "Executable '%1' of package %2 starts no node class found in the workspace.")
+                    .arg(exe.name, pkg.name);
             d.evidence = exe.evidence;
             m_diagnostics->append(d);
         }
@@ -111,7 +117,8 @@ private:
     {
         QList<AtomicNode *> out;
         for (const QString &file : files) {
-            for (auto it = m_entryPoints.constFind(file); it != m_entryPoints.cend() && it.key() == file; ++it) {
+            for (auto it = m_entryPoints.constFind(file);
+                 it != m_entryPoints.cend() && it.key() == file; ++it) {
                 if (!function.isEmpty() && it->function != function)
                     continue;
                 for (const QString &cls : it->instantiatedClasses)
@@ -124,7 +131,8 @@ private:
             return out;
         for (AtomicNode &n : *m_nodes) {
             for (const QString &file : files) {
-                if (n.sourceFiles.contains(file) && (!n.procedural || function.isEmpty()) && !out.contains(&n))
+                if (n.sourceFiles.contains(file) && (!n.procedural || function.isEmpty()) &&
+                    !out.contains(&n))
                     out.append(&n);
             }
         }
@@ -148,8 +156,9 @@ private:
             if (f.language != SourceFile::Language::Python || !f.path.startsWith(prefix))
                 continue;
             const QString rel = f.path.mid(prefix.size());
-            if (rel == modulePath + QStringLiteral(".py") || rel.endsWith(QLatin1Char('/') + modulePath + QStringLiteral(".py"))
-                || rel == modulePath + QStringLiteral("/__init__.py"))
+            if (rel == modulePath + QStringLiteral(".py") ||
+                rel.endsWith(QLatin1Char('/') + modulePath + QStringLiteral(".py")) ||
+                rel == modulePath + QStringLiteral("/__init__.py"))
                 files.append(f.path);
         }
         return nodesStartedFrom(pkg.name, files, function);
@@ -163,8 +172,8 @@ private:
 
 bool portLess(const Port &a, const Port &b)
 {
-    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column)
-           < std::tie(b.evidence.file, b.evidence.line, b.evidence.column);
+    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column) <
+           std::tie(b.evidence.file, b.evidence.line, b.evidence.column);
 }
 
 } // namespace
@@ -199,8 +208,8 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
             linker.link(pkg, exe);
 
     std::sort(list.nodes.begin(), list.nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
-        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file)
-               < std::tie(b.packageName, b.className, b.qualifiedName, b.evidence.file);
+        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file) <
+               std::tie(b.packageName, b.className, b.qualifiedName, b.evidence.file);
     });
     int nextId = 1;
     for (AtomicNode &n : list.nodes) {
@@ -214,8 +223,8 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
     }
     std::stable_sort(list.diagnostics.begin(), list.diagnostics.end(),
                      [](const Diagnostic &a, const Diagnostic &b) {
-                         return std::tie(a.evidence.file, a.evidence.line, a.code)
-                                < std::tie(b.evidence.file, b.evidence.line, b.code);
+                         return std::tie(a.evidence.file, a.evidence.line, a.code) <
+                                std::tie(b.evidence.file, b.evidence.line, b.code);
                      });
     return list;
 }

@@ -5,7 +5,8 @@
 
 namespace rosarch {
 
-Recovery recoverWorkspace(const QString &root, const LaunchOptions &options, const StageControl &control)
+Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
+                          const StageControl &control)
 {
     Recovery r;
     const Workspace ws = WorkspaceScanner::scan(root, control);

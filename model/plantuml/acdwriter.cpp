@@ -16,14 +16,17 @@ QString comment(const Port &p)
     if (p.nameOrigin == NameOrigin::Parameter)
         notes << QStringLiteral("name from parameter '%1'").arg(p.parameter);
     else if (p.nameOrigin == NameOrigin::Expression)
-        notes << QStringLiteral("name unresolved: %1").arg(label(p.nameExpression.isEmpty() ? p.name : p.nameExpression));
+        notes << QStringLiteral("name unresolved: %1")
+                     .arg(label(p.nameExpression.isEmpty() ? p.name : p.nameExpression));
     if (!p.guard.isEmpty())
         notes << QStringLiteral("guard: %1").arg(label(p.guard));
     if (!p.via.isEmpty())
         notes << QStringLiteral("via %1").arg(p.via);
     if (p.inherited)
         notes << QStringLiteral("inherited");
-    return notes.isEmpty() ? QString() : QStringLiteral("  ' ") + notes.join(QStringLiteral("; ")) + QLatin1Char('\n');
+    return notes.isEmpty()
+               ? QString()
+               : QStringLiteral("  ' ") + notes.join(QStringLiteral("; ")) + QLatin1Char('\n');
 }
 
 bool isTopic(PortKind k)
@@ -40,10 +43,12 @@ QString AcdWriter::write(const AtomicNode &node)
     out += QStringLiteral("' %1 (%2) in package %3\n")
                .arg(node.qualifiedName.isEmpty() ? node.className : node.qualifiedName,
                     compileTypeName(node.compileType), node.packageName);
-    out += QStringLiteral("component \"<<AtomicRosNodeClassifier>>\\n%1\" as node {\n").arg(label(node.className));
+    out += QStringLiteral("component \"<<AtomicRosNodeClassifier>>\\n%1\" as node {\n")
+               .arg(label(node.className));
     for (const Port &p : node.ports) {
         if (p.kind == PortKind::Subscriber)
-            out += QStringLiteral("  portin \"%1\" as %2\n").arg(p.callback.isEmpty() ? QStringLiteral(" ") : label(p.callback), p.id);
+            out += QStringLiteral("  portin \"%1\" as %2\n")
+                       .arg(p.callback.isEmpty() ? QStringLiteral(" ") : label(p.callback), p.id);
         else if (p.kind == PortKind::Publisher)
             out += QStringLiteral("  portout \" \" as %1\n").arg(p.id);
     }
@@ -53,7 +58,8 @@ QString AcdWriter::write(const AtomicNode &node)
         out += comment(p);
         if (isTopic(p.kind)) {
             out += QStringLiteral("frame \"%1\" as topic_%2 {\n").arg(caption, p.id);
-            out += QStringLiteral("  rectangle \"**%1**\" as t_%2\n").arg(PlantUmlText::type(p.type), p.id);
+            out += QStringLiteral("  rectangle \"**%1**\" as t_%2\n")
+                       .arg(PlantUmlText::type(p.type), p.id);
             out += QStringLiteral("}\n");
             continue;
         }
@@ -63,19 +69,33 @@ QString AcdWriter::write(const AtomicNode &node)
         const QString t = service ? QStringLiteral("st") : QStringLiteral("at");
         const QString f = service ? QStringLiteral("sf") : QStringLiteral("af");
         out += QStringLiteral("folder \"%1\" as %2_%3 {\n").arg(caption, prefix, p.id);
-        out += QStringLiteral("  rectangle \"**%1**\" as %2_%3\n").arg(PlantUmlText::type(p.type), t, p.id);
+        out += QStringLiteral("  rectangle \"**%1**\" as %2_%3\n")
+                   .arg(PlantUmlText::type(p.type), t, p.id);
         if (provided && !p.callback.isEmpty())
-            out += QStringLiteral("  rectangle \"%1(...)\" as %2_%3\n").arg(label(p.callback), f, p.id);
+            out += QStringLiteral("  rectangle \"%1(...)\" as %2_%3\n")
+                       .arg(label(p.callback), f, p.id);
         out += QStringLiteral("}\n");
     }
     for (const Port &p : node.ports) {
         switch (p.kind) {
-        case PortKind::Subscriber: out += QStringLiteral("topic_%1 -[#blue,bold]-> %1\n").arg(p.id); break;
-        case PortKind::Publisher: out += QStringLiteral("%1 -[#green,bold]-> topic_%1\n").arg(p.id); break;
-        case PortKind::ServiceServer: out += QStringLiteral("node --0 srv_%1\n").arg(p.id); break;
-        case PortKind::ServiceClient: out += QStringLiteral("node --( srv_%1\n").arg(p.id); break;
-        case PortKind::ActionServer: out += QStringLiteral("node --0 act_%1\n").arg(p.id); break;
-        case PortKind::ActionClient: out += QStringLiteral("node --( act_%1\n").arg(p.id); break;
+        case PortKind::Subscriber:
+            out += QStringLiteral("topic_%1 -[#blue,bold]-> %1\n").arg(p.id);
+            break;
+        case PortKind::Publisher:
+            out += QStringLiteral("%1 -[#green,bold]-> topic_%1\n").arg(p.id);
+            break;
+        case PortKind::ServiceServer:
+            out += QStringLiteral("node --0 srv_%1\n").arg(p.id);
+            break;
+        case PortKind::ServiceClient:
+            out += QStringLiteral("node --( srv_%1\n").arg(p.id);
+            break;
+        case PortKind::ActionServer:
+            out += QStringLiteral("node --0 act_%1\n").arg(p.id);
+            break;
+        case PortKind::ActionClient:
+            out += QStringLiteral("node --( act_%1\n").arg(p.id);
+            break;
         }
     }
     out += QStringLiteral("@enduml\n");

@@ -22,11 +22,15 @@ QString arrow(Connection::Kind kind)
 {
     switch (kind) {
     case Connection::Kind::Publish:
-    case Connection::Kind::DelegationOut: return QStringLiteral("--[#Green,bold]-->");
+    case Connection::Kind::DelegationOut:
+        return QStringLiteral("--[#Green,bold]-->");
     case Connection::Kind::Subscribe:
-    case Connection::Kind::DelegationIn: return QStringLiteral("--[#Blue,bold]-->");
-    case Connection::Kind::Client: return QStringLiteral("--[#Red,bold]-->");
-    case Connection::Kind::Server: return QStringLiteral("--[#Purple,bold]-->");
+    case Connection::Kind::DelegationIn:
+        return QStringLiteral("--[#Blue,bold]-->");
+    case Connection::Kind::Client:
+        return QStringLiteral("--[#Red,bold]-->");
+    case Connection::Kind::Server:
+        return QStringLiteral("--[#Purple,bold]-->");
     }
     return {};
 }
@@ -42,14 +46,19 @@ QString namespaceLabel(const QString &ns)
 QString partBlock(const RosNodePart &part, const QString &indent)
 {
     QString out;
-    const QString caption = part.kind == RosNodePart::Kind::Launch
-                                ? QStringLiteral(":%1").arg(label(part.typeName))
-                                : QStringLiteral("%1:\\n%2").arg(label(part.name), label(part.typeName));
+    const QString caption =
+        part.kind == RosNodePart::Kind::Launch
+            ? QStringLiteral(":%1").arg(label(part.typeName))
+            : QStringLiteral("%1:\\n%2").arg(label(part.name), label(part.typeName));
     QStringList ports;
     for (const PartPort &p : part.ports) {
         if (!p.active)
             continue;
-        QString line = QStringLiteral("%1  %2 \"%3\" as %4_%3").arg(indent, isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"), p.id, part.id);
+        QString line =
+            QStringLiteral("%1  %2 \"%3\" as %4_%3")
+                .arg(indent,
+                     isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),
+                     p.id, part.id);
         if (!p.resolved)
             line += QStringLiteral(" ' name unresolved: %1").arg(label(p.name));
         ports << line;
@@ -57,7 +66,8 @@ QString partBlock(const RosNodePart &part, const QString &indent)
     out += QStringLiteral("%1component \"%2\" as %3 <<RosNodePart>>").arg(indent, caption, part.id);
     if (ports.isEmpty())
         return out + QLatin1Char('\n');
-    out += QStringLiteral(" {\n") + ports.join(QLatin1Char('\n')) + QLatin1Char('\n') + indent + QStringLiteral("}\n");
+    out += QStringLiteral(" {\n") + ports.join(QLatin1Char('\n')) + QLatin1Char('\n') + indent +
+           QStringLiteral("}\n");
     return out;
 }
 
@@ -67,11 +77,14 @@ QString CcdWriter::write(const Composite &c)
 {
     const QString top = safe(c.stem);
     QString out = QStringLiteral("@startuml\n");
-    out += QStringLiteral("' launch file %1 (%2)\n").arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
-    out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n").arg(label(c.stem), top);
+    out += QStringLiteral("' launch file %1 (%2)\n")
+               .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
+    out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n")
+               .arg(label(c.stem), top);
     for (const BoundaryPort &b : c.boundary)
         out += QStringLiteral("  %1 \"%2 / %3\" as b_%2  ' %4\n")
-                   .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id, PlantUmlText::type(b.type), label(b.name));
+                   .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id,
+                        PlantUmlText::type(b.type), label(b.name));
 
     // Parts grouped by namespace, namespaces in order of first appearance; the root's parts
     // sit directly in the composite.
@@ -126,13 +139,16 @@ QString CcdWriter::write(const Composite &c)
     for (const Channel &ch : c.channels) {
         switch (ch.kind) {
         case Channel::Kind::Topic:
-            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n")
+                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         case Channel::Kind::Service:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n")
+                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         case Channel::Kind::Action:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n").arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n")
+                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
             break;
         }
     }

@@ -23,7 +23,8 @@ QString umlLevelName(UmlLevel level);
 /// unnamed); part_type "name:Type" (":stem" for an included launch file); namespace
 /// "(ns, part)" with the root "/"; boundary_port "(in, pkg/msg/T)"; connection
 /// "publish part -> topic", "subscribe topic -> part", "client part -> service",
-/// "server part -> service", "delegation boundary:in/T -> part", "delegation part -> boundary:out/T".
+/// "server part -> service", "delegation boundary:in/T -> part", "delegation part ->
+/// boundary:out/T".
 namespace UmlKind {
 // ACD, per AtomicRosNodeClassifier
 inline const QString ArcName = QStringLiteral("arc_name");

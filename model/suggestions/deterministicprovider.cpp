@@ -41,9 +41,11 @@ bool pythonDocstring(const QStringList &lines, int at, QStringList *text, int *l
     if (at < 0 || at >= lines.size())
         return false;
     QString t = lines[at].trimmed();
-    if (t.size() > 1 && QStringLiteral("rRuUbB").contains(t.at(0)) && (t.at(1) == QLatin1Char('"') || t.at(1) == QLatin1Char('\'')))
+    if (t.size() > 1 && QStringLiteral("rRuUbB").contains(t.at(0)) &&
+        (t.at(1) == QLatin1Char('"') || t.at(1) == QLatin1Char('\'')))
         t = t.mid(1);
-    for (const QString &delim : {QStringLiteral("\"\"\""), QStringLiteral("'''"), QStringLiteral("\""), QStringLiteral("'")}) {
+    for (const QString &delim : {QStringLiteral("\"\"\""), QStringLiteral("'''"),
+                                 QStringLiteral("\""), QStringLiteral("'")}) {
         if (!t.startsWith(delim))
             continue;
         QString rest = t.mid(delim.size());
@@ -71,7 +73,8 @@ bool pythonDocstring(const QStringList &lines, int at, QStringList *text, int *l
 }
 
 /// The comment block (C++ // /// /* */ or Python #) that ends right above line `above` (0-based).
-bool commentAbove(const QStringList &lines, int above, bool python, QStringList *text, int *first, int *last)
+bool commentAbove(const QStringList &lines, int above, bool python, QStringList *text, int *first,
+                  int *last)
 {
     int i = above - 1;
     while (i >= 0 && lines[i].trimmed().startsWith(QLatin1String("template")))
@@ -86,7 +89,8 @@ bool commentAbove(const QStringList &lines, int above, bool python, QStringList 
         --i;
     if (i == end)
         return false;
-    static const QRegularExpression markers(QStringLiteral("^(#+!?|///?<?|//!|/\\*\\*?!?|\\*+/?)\\s*"));
+    static const QRegularExpression markers(
+        QStringLiteral("^(#+!?|///?<?|//!|/\\*\\*?!?|\\*+/?)\\s*"));
     static const QRegularExpression brief(QStringLiteral("^[@\\\\]brief\\s+"));
     text->clear();
     for (int l = i + 1; l <= end; ++l) {
@@ -114,9 +118,7 @@ QString firstContentLine(const QStringList &text)
 
 DeterministicProvider::DeterministicProvider(const QString &workspaceRoot, const Recovery &recovery,
                                              const QDateTime &timestamp)
-    : m_recovery(recovery)
-    , m_source(workspaceRoot)
-    , m_timestamp(timestamp.toUTC())
+    : m_recovery(recovery), m_source(workspaceRoot), m_timestamp(timestamp.toUTC())
 {
 }
 
@@ -125,14 +127,15 @@ Suggestion DeterministicProvider::make(Suggestion::Kind kind) const
     Suggestion s;
     s.kind = kind;
     s.origin.provider = QStringLiteral("deterministic");
-    s.origin.prompt = kind == Suggestion::Kind::NodeDescription ? QStringLiteral("docstring")
-                                                                : QStringLiteral("communication-graph");
+    s.origin.prompt = kind == Suggestion::Kind::NodeDescription
+                          ? QStringLiteral("docstring")
+                          : QStringLiteral("communication-graph");
     s.origin.timestamp = m_timestamp;
     return s;
 }
 
-bool DeterministicProvider::documentation(const AtomicNode &node, QString *text, int *first, int *last,
-                                          QString *quote) const
+bool DeterministicProvider::documentation(const AtomicNode &node, QString *text, int *first,
+                                          int *last, QString *quote) const
 {
     const QStringList lines = m_source.lines(node.evidence.file);
     const int start = node.evidence.line - 1;
@@ -145,7 +148,8 @@ bool DeterministicProvider::documentation(const AtomicNode &node, QString *text,
     bool found = false;
     if (python && !node.procedural) {
         int header = start;
-        while (header < lines.size() && !lines[header].section(QLatin1Char('#'), 0, 0).trimmed().endsWith(QLatin1Char(':')))
+        while (header < lines.size() &&
+               !lines[header].section(QLatin1Char('#'), 0, 0).trimmed().endsWith(QLatin1Char(':')))
             ++header;
         int body = header + 1;
         while (body < lines.size() && lines[body].trimmed().isEmpty())
@@ -158,7 +162,8 @@ bool DeterministicProvider::documentation(const AtomicNode &node, QString *text,
     if (!found && python) {
         // A procedural node (or an undocumented class) is described by its module docstring.
         int top = 0;
-        while (top < lines.size() && (lines[top].trimmed().isEmpty() || lines[top].trimmed().startsWith(QLatin1Char('#'))))
+        while (top < lines.size() && (lines[top].trimmed().isEmpty() ||
+                                      lines[top].trimmed().startsWith(QLatin1Char('#'))))
             ++top;
         found = pythonDocstring(lines, top, &doc, &to);
         from = top;
@@ -186,7 +191,9 @@ QList<Suggestion> DeterministicProvider::describeNodes() const
         s.targetId = node.id;
         s.value = text;
         s.rationale = QStringLiteral("The documentation of %1 in %2, lines %3-%4.")
-                          .arg(node.className, node.evidence.file).arg(first).arg(last);
+                          .arg(node.className, node.evidence.file)
+                          .arg(first)
+                          .arg(last);
         s.evidence.append({{node.evidence.file, first, 1, last, 0}, quote});
         out << s;
     }
@@ -216,9 +223,10 @@ QList<Suggestion> DeterministicProvider::groupSubsystems() const
             QStringList names = g.sharedNames.mid(0, 8);
             if (g.sharedNames.size() > 8)
                 names << QStringLiteral("... (%1 in all)").arg(g.sharedNames.size());
-            s.rationale = QStringLiteral("The instances communicate through %1 (label propagation over the "
-                                         "communication graph of %2; hub topics ignored).")
-                              .arg(names.join(QStringLiteral(", ")), root.type);
+            s.rationale =
+                QStringLiteral("The instances communicate through %1 (label propagation over the "
+                               "communication graph of %2; hub topics ignored).")
+                    .arg(names.join(QStringLiteral(", ")), root.type);
             for (const QString &id : g.memberIds) {
                 const NodeInstance *n = m_recovery.launch.node(id);
                 const QStringList lines = m_source.lines(n->evidence.file);
@@ -229,7 +237,9 @@ QList<Suggestion> DeterministicProvider::groupSubsystems() const
                 const QString cited = lines.mid(first - 1, last - first + 1).join(QLatin1Char(' '));
                 for (const QString &quote : {n->nodeName, n->execName})
                     if (!quote.isEmpty() && cited.contains(quote)) {
-                        s.evidence.append({{n->evidence.file, first, n->evidence.column, last, n->evidence.endColumn}, quote});
+                        s.evidence.append({{n->evidence.file, first, n->evidence.column, last,
+                                            n->evidence.endColumn},
+                                           quote});
                         break;
                     }
             }

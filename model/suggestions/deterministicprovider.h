@@ -27,7 +27,8 @@ public:
 
 private:
     /// The documentation of a node: text, and the line range it occupies (0 when none).
-    bool documentation(const AtomicNode &node, QString *text, int *first, int *last, QString *quote) const;
+    bool documentation(const AtomicNode &node, QString *text, int *first, int *last,
+                       QString *quote) const;
     Suggestion make(Suggestion::Kind kind) const;
 
     const Recovery &m_recovery;

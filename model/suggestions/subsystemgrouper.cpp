@@ -26,7 +26,8 @@ QString plainResolve(const QString &name, const NodeInstance &n)
     if (name.startsWith(QLatin1Char('/')))
         return joinName(QStringLiteral("/"), name);
     if (name.startsWith(QLatin1Char('~')))
-        return joinName(joinName(ns, n.nodeName), name.mid(name.startsWith(QLatin1String("~/")) ? 2 : 1));
+        return joinName(joinName(ns, n.nodeName),
+                        name.mid(name.startsWith(QLatin1String("~/")) ? 2 : 1));
     return joinName(ns, name);
 }
 
@@ -58,16 +59,18 @@ QSet<QString> instanceWords(const NodeInstance &n)
 
 } // namespace
 
-SubsystemGrouper::SubsystemGrouper(const Recovery &recovery)
-    : m_recovery(recovery)
-{
-}
+SubsystemGrouper::SubsystemGrouper(const Recovery &recovery) : m_recovery(recovery) {}
 
 QStringList SubsystemGrouper::hubTopics()
 {
-    return {QStringLiteral("/tf"), QStringLiteral("/tf_static"), QStringLiteral("/rosout"),
-            QStringLiteral("/parameter_events"), QStringLiteral("/clock"), QStringLiteral("/diagnostics"),
-            QStringLiteral("/robot_description"), QStringLiteral("/robot_diagnostics")};
+    return {QStringLiteral("/tf"),
+            QStringLiteral("/tf_static"),
+            QStringLiteral("/rosout"),
+            QStringLiteral("/parameter_events"),
+            QStringLiteral("/clock"),
+            QStringLiteral("/diagnostics"),
+            QStringLiteral("/robot_description"),
+            QStringLiteral("/robot_diagnostics")};
 }
 
 QString SubsystemGrouper::resolveName(const QString &name, const NodeInstance &instance)
@@ -96,12 +99,24 @@ QStringList SubsystemGrouper::endpoints(const NodeInstance &instance) const
                     name = value;
         const char *role = "";
         switch (p.kind) {
-        case PortKind::Publisher: role = "topic-out"; break;
-        case PortKind::Subscriber: role = "topic-in"; break;
-        case PortKind::ServiceServer: role = "service-out"; break;
-        case PortKind::ServiceClient: role = "service-in"; break;
-        case PortKind::ActionServer: role = "action-out"; break;
-        case PortKind::ActionClient: role = "action-in"; break;
+        case PortKind::Publisher:
+            role = "topic-out";
+            break;
+        case PortKind::Subscriber:
+            role = "topic-in";
+            break;
+        case PortKind::ServiceServer:
+            role = "service-out";
+            break;
+        case PortKind::ServiceClient:
+            role = "service-in";
+            break;
+        case PortKind::ActionServer:
+            role = "action-out";
+            break;
+        case PortKind::ActionClient:
+            role = "action-in";
+            break;
         }
         out << QString::fromLatin1(role) + QLatin1Char(' ') + resolveName(name, instance);
     }
@@ -135,7 +150,8 @@ QList<SubsystemGrouper::Group> SubsystemGrouper::groups(const QStringList &insta
         const QString name = it.key().section(QLatin1Char(' '), 1);
         QSet<int> all(it->first.begin(), it->first.end());
         all.unite(QSet<int>(it->second.begin(), it->second.end()));
-        if ((it.key().startsWith(QLatin1String("topic ")) && hubs.contains(name)) || all.size() > hubDegree)
+        if ((it.key().startsWith(QLatin1String("topic ")) && hubs.contains(name)) ||
+            all.size() > hubDegree)
             continue;
         for (int p : it->first)
             for (int c : it->second)

@@ -31,7 +31,8 @@ public:
     /// written, then relative and private names resolved against the instance's namespace.
     static QString resolveName(const QString &name, const NodeInstance &instance);
     /// The resolved names of an instance's ports, as "topic-out /x", "topic-in /x",
-    /// "service-out /x", "service-in /x", "action-out /x", "action-in /x"; unresolved ports skipped.
+    /// "service-out /x", "service-in /x", "action-out /x", "action-in /x"; unresolved ports
+    /// skipped.
     QStringList endpoints(const NodeInstance &instance) const;
     /// The groups among `instanceIds` (inactive instances are left out).
     QList<Group> groups(const QStringList &instanceIds) const;

@@ -58,14 +58,14 @@ QList<QPair<const LaunchFileInstance *, QStringList>> roots(const LaunchDependen
 
 } // namespace
 
-SuggestionEngine::SuggestionEngine(const QString &workspaceRoot, const Recovery &recovery, const Options &options)
-    : m_root(workspaceRoot)
-    , m_recovery(recovery)
-    , m_options(options)
+SuggestionEngine::SuggestionEngine(const QString &workspaceRoot, const Recovery &recovery,
+                                   const Options &options)
+    : m_root(workspaceRoot), m_recovery(recovery), m_options(options)
 {
 }
 
-LlmRequest SuggestionEngine::prepare(const QString &prompt, const QMap<QString, QString> &values) const
+LlmRequest SuggestionEngine::prepare(const QString &prompt,
+                                     const QMap<QString, QString> &values) const
 {
     const PromptTemplate t = PromptTemplate::load(prompt, m_options.promptDir);
     if (!t.isValid() || !t.missingSections().isEmpty()) {
@@ -90,7 +90,8 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::describeJobs() const
         if (batch.isEmpty())
             return;
         jobs.append({ids.join(QLatin1Char(',')), QString(),
-                     prepare(QStringLiteral("describe_nodes"), {{QStringLiteral("nodes"), compact(batch)}})});
+                     prepare(QStringLiteral("describe_nodes"),
+                             {{QStringLiteral("nodes"), compact(batch)}})});
         batch = {};
         ids.clear();
         chars = 0;
@@ -102,17 +103,18 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::describeJobs() const
                                      {QLatin1String("name"), p.name},
                                      {QLatin1String("type"), p.type}});
         // The lines above the class hold its comment; the class body shows what it does.
-        const QJsonObject node{
-            {QLatin1String("id"), n.id},
-            {QLatin1String("class_name"), n.className},
-            {QLatin1String("node_name"), n.nodeName},
-            {QLatin1String("package"), n.packageName},
-            {QLatin1String("compile_type"), compileTypeName(n.compileType)},
-            {QLatin1String("ports"), ports},
-            {QLatin1String("excerpt"), source.excerpt(n.evidence.file, n.evidence.line - 6,
-                                                      qMax(n.evidence.line, n.evidence.endLine), 60)}};
+        const QJsonObject node{{QLatin1String("id"), n.id},
+                               {QLatin1String("class_name"), n.className},
+                               {QLatin1String("node_name"), n.nodeName},
+                               {QLatin1String("package"), n.packageName},
+                               {QLatin1String("compile_type"), compileTypeName(n.compileType)},
+                               {QLatin1String("ports"), ports},
+                               {QLatin1String("excerpt"),
+                                source.excerpt(n.evidence.file, n.evidence.line - 6,
+                                               qMax(n.evidence.line, n.evidence.endLine), 60)}};
         const qsizetype size = QJsonDocument(node).toJson(QJsonDocument::Compact).size();
-        if (!batch.isEmpty() && (batch.size() >= m_options.batchSize || chars + size > m_options.maxBatchChars))
+        if (!batch.isEmpty() &&
+            (batch.size() >= m_options.batchSize || chars + size > m_options.maxBatchChars))
             flush();
         batch.append(node);
         ids << n.id;
@@ -141,8 +143,9 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::groupJobs() const
                 {QLatin1String("package"), n->package},
                 {QLatin1String("executable"), n->execName},
                 {QLatin1String("communication"), QJsonArray::fromStringList(grouper.endpoints(*n))},
-                {QLatin1String("launch"), source.excerpt(n->evidence.file, n->evidence.line,
-                                                         qMax(n->evidence.line, n->evidence.endLine), 12)}});
+                {QLatin1String("launch"),
+                 source.excerpt(n->evidence.file, n->evidence.line,
+                                qMax(n->evidence.line, n->evidence.endLine), 12)}});
         }
         // Two instances form at most one obvious group; there is nothing to ask.
         if (instances.size() < 3)
@@ -150,7 +153,8 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::groupJobs() const
         const int maxGroups = qBound(1, int(instances.size() / 2), 8);
         jobs.append({root->id, root->id,
                      prepare(QStringLiteral("group_subsystems"),
-                             {{QStringLiteral("launch_file"), root->file.isEmpty() ? root->type : root->file},
+                             {{QStringLiteral("launch_file"),
+                               root->file.isEmpty() ? root->type : root->file},
                               {QStringLiteral("launch_id"), root->id},
                               {QStringLiteral("max_groups"), QString::number(maxGroups)},
                               {QStringLiteral("instances"), compact(instances)}})});
@@ -168,7 +172,8 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::resolveJobs() const
         if (batch.isEmpty())
             return;
         jobs.append({ids.join(QLatin1Char(',')), QString(),
-                     prepare(QStringLiteral("resolve_names"), {{QStringLiteral("items"), compact(batch)}})});
+                     prepare(QStringLiteral("resolve_names"),
+                             {{QStringLiteral("items"), compact(batch)}})});
         batch = {};
         ids.clear();
     };
@@ -177,7 +182,9 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::resolveJobs() const
     const QList<SuggestionItem> all = SuggestionItem::collect(m_recovery);
     QMap<QString, int> occurrences;
     auto placeKey = [](const SuggestionItem &i) {
-        return QStringLiteral("%1|%2|%3|%4").arg(i.kind, i.expression, i.evidence.file).arg(i.evidence.line);
+        return QStringLiteral("%1|%2|%3|%4")
+            .arg(i.kind, i.expression, i.evidence.file)
+            .arg(i.evidence.line);
     };
     for (const SuggestionItem &item : all)
         ++occurrences[placeKey(item)];
@@ -186,15 +193,16 @@ QList<SuggestionEngine::PromptJob> SuggestionEngine::resolveJobs() const
         if (asked.contains(placeKey(item)))
             continue;
         asked.insert(placeKey(item));
-        batch.append(QJsonObject{
-            {QLatin1String("occurrences"), occurrences.value(placeKey(item))},
-            {QLatin1String("item_id"), item.id},
-            {QLatin1String("kind"), item.kind},
-            {QLatin1String("element"), item.elementId},
-            {QLatin1String("expression"), item.expression},
-            {QLatin1String("current_guess"), item.guess},
-            {QLatin1String("excerpt"), source.excerpt(item.evidence.file, item.evidence.line - 6,
-                                                      qMax(item.evidence.line, item.evidence.endLine) + 2, 20)}});
+        batch.append(
+            QJsonObject{{QLatin1String("occurrences"), occurrences.value(placeKey(item))},
+                        {QLatin1String("item_id"), item.id},
+                        {QLatin1String("kind"), item.kind},
+                        {QLatin1String("element"), item.elementId},
+                        {QLatin1String("expression"), item.expression},
+                        {QLatin1String("current_guess"), item.guess},
+                        {QLatin1String("excerpt"),
+                         source.excerpt(item.evidence.file, item.evidence.line - 6,
+                                        qMax(item.evidence.line, item.evidence.endLine) + 2, 20)}});
         ids << item.id;
         if (batch.size() >= 10)
             flush();
@@ -217,12 +225,14 @@ SuggestionReport SuggestionEngine::run() const
         QString detail;
         const QString who = s.origin.provider;
         if (!checker.check(s, &reason, &detail)) {
-            report.discard(reason, QStringLiteral("%1 %2 for %3: %4").arg(who, Suggestion::kindName(s.kind), s.targetId, detail));
+            report.discard(reason, QStringLiteral("%1 %2 for %3: %4")
+                                       .arg(who, Suggestion::kindName(s.kind), s.targetId, detail));
             return;
         }
         const QString key = s.subjectKey() + QLatin1Char('|') + s.value + QLatin1Char('|') + who;
         if (seen.contains(key)) {
-            report.discard(QStringLiteral("duplicate"), QStringLiteral("%1 repeats %2").arg(who, s.subjectKey()));
+            report.discard(QStringLiteral("duplicate"),
+                           QStringLiteral("%1 repeats %2").arg(who, s.subjectKey()));
             return;
         }
         seen.insert(key);
@@ -256,7 +266,8 @@ SuggestionReport SuggestionEngine::run() const
             usage.estimatedTokens = estimateTokens(usage.chars);
             usage.outcome = stopped ? QStringLiteral("not-sent") : QString();
             if (job.request.messages.isEmpty()) {
-                report.errors << QStringLiteral("The prompt template %1 is missing or incomplete.").arg(job.request.name);
+                report.errors << QStringLiteral("The prompt template %1 is missing or incomplete.")
+                                     .arg(job.request.name);
                 usage.outcome = QStringLiteral("template-error");
                 report.prompts << usage;
                 continue;
@@ -265,12 +276,16 @@ SuggestionReport SuggestionEngine::run() const
                 report.prompts << usage;
                 continue;
             }
-            log(QStringLiteral("%1 [%2]: %3 characters, ~%4 tokens").arg(usage.prompt, usage.scope)
-                    .arg(usage.chars).arg(usage.estimatedTokens));
+            log(QStringLiteral("%1 [%2]: %3 characters, ~%4 tokens")
+                    .arg(usage.prompt, usage.scope)
+                    .arg(usage.chars)
+                    .arg(usage.estimatedTokens));
             job.request.cancel = m_options.cancel;
             if (m_options.progressed) {
                 const QString name = usage.prompt;
-                job.request.progressed = [this, name](qint64 chars, int) { m_options.progressed(name, chars); };
+                job.request.progressed = [this, name](qint64 chars, int) {
+                    m_options.progressed(name, chars);
+                };
             }
             const LlmResult result = client.complete(job.request);
             usage.sent = true;
@@ -279,9 +294,11 @@ SuggestionReport SuggestionEngine::run() const
             report.prompts << usage;
             if (!result.ok()) {
                 report.errors << result.message;
-                if (result.error == LlmResult::Error::NotJson || result.error == LlmResult::Error::SchemaMismatch) {
+                if (result.error == LlmResult::Error::NotJson ||
+                    result.error == LlmResult::Error::SchemaMismatch) {
                     report.discard(QStringLiteral("reply-") + LlmResult::errorName(result.error),
-                                   QStringLiteral("%1 [%2]: %3").arg(usage.prompt, usage.scope, result.message));
+                                   QStringLiteral("%1 [%2]: %3")
+                                       .arg(usage.prompt, usage.scope, result.message));
                 } else {
                     stopped = true; // the endpoint is unusable; do not send the remaining prompts
                 }
@@ -319,9 +336,10 @@ SuggestionReport SuggestionEngine::run() const
                 // A reply may only speak about what its prompt asked about.
                 if (task.kind != Suggestion::Kind::SubsystemGrouping &&
                     !job.scope.split(QLatin1Char(',')).contains(s.targetId)) {
-                    report.discard(QStringLiteral("unknown-target"),
-                                   QStringLiteral("%1 %2 names '%3', which the prompt did not ask about")
-                                       .arg(provider, Suggestion::kindName(s.kind), s.targetId));
+                    report.discard(
+                        QStringLiteral("unknown-target"),
+                        QStringLiteral("%1 %2 names '%3', which the prompt did not ask about")
+                            .arg(provider, Suggestion::kindName(s.kind), s.targetId));
                     continue;
                 }
                 offer(s);

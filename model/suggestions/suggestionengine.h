@@ -21,10 +21,10 @@ class SuggestionEngine
 public:
     struct Options
     {
-        LlmSettings llm;          ///< used when llm.isConfigured()
+        LlmSettings llm; ///< used when llm.isConfigured()
         bool deterministic = true;
-        QString promptDir;        ///< user folder overriding prompts/ ("" = $ROSARCH_PROMPT_DIR)
-        int batchSize = 6;        ///< nodes per describe_nodes prompt
+        QString promptDir;         ///< user folder overriding prompts/ ("" = $ROSARCH_PROMPT_DIR)
+        int batchSize = 6;         ///< nodes per describe_nodes prompt
         int maxBatchChars = 16000; ///< and at most this much node data per prompt
         /// One line per step ("describe_nodes arc_1..arc_6: 1234 tokens"); may be null.
         std::function<void(const QString &)> logged;
@@ -36,12 +36,13 @@ public:
     /// A prompt ready to send, with what it covers.
     struct PromptJob
     {
-        QString scope;        ///< node ids of the batch, the root launch id, or item ids
-        QString launchId;     ///< group_subsystems: the root it groups
+        QString scope;    ///< node ids of the batch, the root launch id, or item ids
+        QString launchId; ///< group_subsystems: the root it groups
         LlmRequest request;
     };
 
-    SuggestionEngine(const QString &workspaceRoot, const Recovery &recovery, const Options &options);
+    SuggestionEngine(const QString &workspaceRoot, const Recovery &recovery,
+                     const Options &options);
 
     /// Everything: checked suggestions, discarded counts, prompt sizes, LLM errors.
     SuggestionReport run() const;

@@ -20,17 +20,17 @@ struct SuggestionReport
         QString scope;  ///< what it covers: node ids of the batch, the root launch id, item ids
         qint64 chars = 0;
         qint64 estimatedTokens = 0;
-        bool sent = false;     ///< false when not sent (no endpoint, or an earlier failure)
-        int requests = 0;      ///< HTTP requests it took (retries included)
-        QString outcome;       ///< "ok" or the LlmResult error name
+        bool sent = false; ///< false when not sent (no endpoint, or an earlier failure)
+        int requests = 0;  ///< HTTP requests it took (retries included)
+        QString outcome;   ///< "ok" or the LlmResult error name
         bool operator==(const PromptUsage &) const = default;
     };
 
     QList<Suggestion> suggestions;
-    QMap<QString, int> discarded;   ///< reason -> count
-    QStringList discardedDetails;   ///< one line per discarded item, for review
+    QMap<QString, int> discarded; ///< reason -> count
+    QStringList discardedDetails; ///< one line per discarded item, for review
     QList<PromptUsage> prompts;
-    QStringList errors;             ///< LLM failures, user-facing
+    QStringList errors; ///< LLM failures, user-facing
     bool llmUsed = false;
     QString llmModel;
 

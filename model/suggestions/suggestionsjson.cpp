@@ -13,9 +13,12 @@ namespace {
 const char *targetElement(Suggestion::Kind kind)
 {
     switch (kind) {
-    case Suggestion::Kind::NodeDescription: return "atomic-node";
-    case Suggestion::Kind::SubsystemGrouping: return "launch-file";
-    case Suggestion::Kind::NameResolution: return "unresolved-item";
+    case Suggestion::Kind::NodeDescription:
+        return "atomic-node";
+    case Suggestion::Kind::SubsystemGrouping:
+        return "launch-file";
+    case Suggestion::Kind::NameResolution:
+        return "unresolved-item";
     }
     return "";
 }
@@ -119,16 +122,19 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
         Suggestion s;
         s.id = JsonSupport::string(j, "id");
         if (!Suggestion::kindFromName(JsonSupport::string(j, "kind"), &s.kind)) {
-            *error = QStringLiteral("suggestion %1 has an unknown kind '%2'").arg(s.id, JsonSupport::string(j, "kind"));
+            *error = QStringLiteral("suggestion %1 has an unknown kind '%2'")
+                         .arg(s.id, JsonSupport::string(j, "kind"));
             return false;
         }
         const Json target = j.value("target", Json::object());
         s.targetId = JsonSupport::string(target, "id");
         s.memberIds = JsonSupport::stringList(target, "node_instance_ids");
         const Json proposal = j.value("proposal", Json::object());
-        s.value = s.kind == Suggestion::Kind::NodeDescription ? JsonSupport::string(proposal, "description")
-                  : s.kind == Suggestion::Kind::SubsystemGrouping ? JsonSupport::string(proposal, "group_name")
-                                                                  : JsonSupport::string(proposal, "value");
+        s.value = s.kind == Suggestion::Kind::NodeDescription
+                      ? JsonSupport::string(proposal, "description")
+                  : s.kind == Suggestion::Kind::SubsystemGrouping
+                      ? JsonSupport::string(proposal, "group_name")
+                      : JsonSupport::string(proposal, "value");
         s.rationale = JsonSupport::string(j, "rationale");
         if (j.contains("evidence") && j["evidence"].is_array())
             for (const Json &e : j["evidence"])
@@ -136,7 +142,8 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
         const Json origin = j.value("origin", Json::object());
         s.origin.provider = JsonSupport::string(origin, "provider");
         s.origin.prompt = JsonSupport::string(origin, "prompt");
-        s.origin.timestamp = QDateTime::fromString(JsonSupport::string(origin, "timestamp"), Qt::ISODate);
+        s.origin.timestamp =
+            QDateTime::fromString(JsonSupport::string(origin, "timestamp"), Qt::ISODate);
         if (!Suggestion::statusFromName(JsonSupport::string(j, "status"), &s.status))
             s.status = Suggestion::Status::Pending;
         out.suggestions.append(s);

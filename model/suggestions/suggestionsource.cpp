@@ -6,10 +6,7 @@
 
 namespace rosarch {
 
-SuggestionSource::SuggestionSource(const QString &workspaceRoot)
-    : m_root(workspaceRoot)
-{
-}
+SuggestionSource::SuggestionSource(const QString &workspaceRoot) : m_root(workspaceRoot) {}
 
 QStringList SuggestionSource::lines(const QString &file) const
 {
@@ -40,7 +37,9 @@ QJsonObject SuggestionSource::excerpt(const QString &file, int first, int last, 
     QJsonArray numbered;
     for (int l = first; l <= last; ++l)
         numbered.append(QStringLiteral("%1| %2").arg(l).arg(all.at(l - 1)));
-    return {{QLatin1String("file"), file}, {QLatin1String("first_line"), first}, {QLatin1String("lines"), numbered}};
+    return {{QLatin1String("file"), file},
+            {QLatin1String("first_line"), first},
+            {QLatin1String("lines"), numbered}};
 }
 
 } // namespace rosarch

@@ -21,7 +21,8 @@ bool startsBlock(const QByteArray &line, bool afterDecorator)
     if (line.isEmpty() || afterDecorator)
         return false;
     const char c = line.at(0);
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '#' || c == ')' || c == ']' || c == '}')
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '#' || c == ')' || c == ']' ||
+        c == '}')
         return false;
     // clauses that continue the compound statement above them
     for (const char *clause : {"else", "elif", "except", "finally"}) {
@@ -61,7 +62,8 @@ std::vector<Block> topLevelBlocks(const QByteArray &source)
         ++line;
     }
     if (blocks.empty() || blocks.front().begin > 0)
-        blocks.insert(blocks.begin(), Block{0, blocks.empty() ? source.size() : blocks.front().begin, 1});
+        blocks.insert(blocks.begin(),
+                      Block{0, blocks.empty() ? source.size() : blocks.front().begin, 1});
     return blocks;
 }
 } // namespace
@@ -82,7 +84,8 @@ QByteArray PythonErrorRecovery::isolate(const QByteArray &source, const QString 
         for (Diagnostic d : tree.syntaxErrors()) {
             d.evidence.line += b.line - 1;
             d.evidence.endLine += b.line - 1;
-            d.message = QStringLiteral("Syntax error in %1 at line %2; lines %3-%4 were skipped, the rest of the file is still analysed.")
+            d.message = QStringLiteral("Syntax error in %1 at line %2; lines %3-%4 were skipped, "
+                                       "the rest of the file is still analysed.")
                             .arg(file)
                             .arg(d.evidence.line)
                             .arg(b.line)

@@ -19,7 +19,8 @@ template <typename F> void walk(TSNode root, F &&visit)
     TSTreeCursor cursor = ts_tree_cursor_new(root);
     int depth = 0;
     for (;;) {
-        if (visit(ts_tree_cursor_current_node(&cursor)) && ts_tree_cursor_goto_first_child(&cursor)) {
+        if (visit(ts_tree_cursor_current_node(&cursor)) &&
+            ts_tree_cursor_goto_first_child(&cursor)) {
             ++depth;
             continue;
         }

@@ -23,7 +23,8 @@ SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
     tree.m_source = std::move(source);
     tree.m_file = std::move(file);
     TSParser *parser = ts_parser_new();
-    ts_parser_set_language(parser, grammar == Grammar::Python ? tree_sitter_python() : tree_sitter_cpp());
+    ts_parser_set_language(parser,
+                           grammar == Grammar::Python ? tree_sitter_python() : tree_sitter_cpp());
     // A generous bound so that pathological input cannot stall a stage (microseconds).
     ts_parser_set_timeout_micros(parser, 20 * 1000 * 1000);
     tree.m_tree.reset(ts_parser_parse_string(parser, nullptr, tree.m_source.constData(),
@@ -98,11 +99,17 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
                                                       : Diagnostic::Severity::Warning;
             d.code = QStringLiteral("syntax-error");
             d.evidence = evidence(n);
-            d.message = ts_node_is_missing(n)
-                            ? QStringLiteral("Syntax error in %1 at line %2: missing %3; the rest of the file is still analysed.")
-                                  .arg(m_file).arg(d.evidence.line).arg(QString::fromUtf8(ts_node_type(n)))
-                            : QStringLiteral("Syntax error in %1 at line %2; the rest of the file is still analysed.")
-                                  .arg(m_file).arg(d.evidence.line);
+            d.message =
+                ts_node_is_missing(n)
+                    ? QStringLiteral("Syntax error in %1 at line %2: missing %3; the rest of the "
+                                     "file is still analysed.")
+                          .arg(m_file)
+                          .arg(d.evidence.line)
+                          .arg(QString::fromUtf8(ts_node_type(n)))
+                    : QStringLiteral(
+                          "Syntax error in %1 at line %2; the rest of the file is still analysed.")
+                          .arg(m_file)
+                          .arg(d.evidence.line);
             out.append(d);
             return false;
         }

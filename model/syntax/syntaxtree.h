@@ -20,7 +20,11 @@ namespace rosarch {
 class SyntaxTree
 {
 public:
-    enum class Grammar { Python, Cpp };
+    enum class Grammar
+    {
+        Python,
+        Cpp
+    };
 
     /// Parses `source`; never fails for text input (errors become ERROR nodes).
     static SyntaxTree parse(Grammar grammar, QByteArray source, QString file);
@@ -45,7 +49,10 @@ public:
 
 private:
     SyntaxTree() = default;
-    struct TreeDeleter { void operator()(TSTree *t) const; };
+    struct TreeDeleter
+    {
+        void operator()(TSTree *t) const;
+    };
     Grammar m_grammar = Grammar::Python;
     QByteArray m_source;
     QString m_file;
@@ -54,9 +61,18 @@ private:
 
 // Small helpers over the tree-sitter C API, so analyzers read like the grammar.
 namespace ts {
-inline bool isNull(TSNode n) { return ts_node_is_null(n); }
-inline std::string_view type(TSNode n) { return isNull(n) ? std::string_view() : ts_node_type(n); }
-inline bool is(TSNode n, std::string_view t) { return type(n) == t; }
+inline bool isNull(TSNode n)
+{
+    return ts_node_is_null(n);
+}
+inline std::string_view type(TSNode n)
+{
+    return isNull(n) ? std::string_view() : ts_node_type(n);
+}
+inline bool is(TSNode n, std::string_view t)
+{
+    return type(n) == t;
+}
 TSNode field(TSNode n, const char *name);
 std::vector<TSNode> namedChildren(TSNode n);
 std::vector<TSNode> children(TSNode n);

@@ -30,8 +30,8 @@ bool parseEntryPoint(const QString &spec, Executable *exe)
         return false;
     exe->kind = Executable::Kind::ConsoleScript;
     exe->name = m.captured(1);
-    exe->target = m.captured(2) + QLatin1Char(':')
-                  + (m.captured(3).isEmpty() ? QStringLiteral("main") : m.captured(3));
+    exe->target = m.captured(2) + QLatin1Char(':') +
+                  (m.captured(3).isEmpty() ? QStringLiteral("main") : m.captured(3));
     return true;
 }
 
@@ -88,7 +88,8 @@ public:
         }
         if (t == "binary_operator") {
             bool a = false, b = false;
-            const QString s = evaluate(ts::field(n, "left"), &a) + evaluate(ts::field(n, "right"), &b);
+            const QString s =
+                evaluate(ts::field(n, "left"), &a) + evaluate(ts::field(n, "right"), &b);
             *ok = a && b;
             return s;
         }
@@ -136,7 +137,9 @@ void BuildFileParser::readPackageXml(const QByteArray &content, const QString &f
         d.severity = Diagnostic::Severity::Error;
         d.code = QStringLiteral("malformed-xml");
         d.message = QStringLiteral("%1 is not well-formed XML (line %2: %3).")
-                        .arg(file).arg(xml.lineNumber()).arg(xml.errorString());
+                        .arg(file)
+                        .arg(xml.lineNumber())
+                        .arg(xml.errorString());
         d.evidence = lineEvidence(file, int(xml.lineNumber()));
         diagnostics->append(d);
     }
@@ -158,7 +161,8 @@ QList<Executable> BuildFileParser::readSetupPy(const QByteArray &content, const 
             return true;
         TSNode key = ts::is(n, "pair") ? ts::field(n, "key") : ts::field(n, "name");
         bool ok = false;
-        const QString keyText = ts::is(key, "identifier") ? tree.text(key) : eval.evaluate(key, &ok);
+        const QString keyText =
+            ts::is(key, "identifier") ? tree.text(key) : eval.evaluate(key, &ok);
         if (keyText != QLatin1String("console_scripts"))
             return true;
         TSNode value = ts::field(n, "value");
@@ -173,8 +177,9 @@ QList<Executable> BuildFileParser::readSetupPy(const QByteArray &content, const 
                 Diagnostic d;
                 d.severity = Diagnostic::Severity::Info;
                 d.code = QStringLiteral("unresolved-entry-point");
-                d.message = QStringLiteral("console_scripts entry %1 could not be evaluated statically.")
-                                .arg(tree.text(item));
+                d.message =
+                    QStringLiteral("console_scripts entry %1 could not be evaluated statically.")
+                        .arg(tree.text(item));
                 d.evidence = tree.evidence(item);
                 diagnostics->append(d);
             }
@@ -198,8 +203,8 @@ QList<Executable> BuildFileParser::readSetupCfg(const QByteArray &content, const
             inScripts = false;
             continue;
         }
-        if (section != QLatin1String("options.entry_points") || line.isEmpty()
-            || line.startsWith(QLatin1Char('#')) || line.startsWith(QLatin1Char(';')))
+        if (section != QLatin1String("options.entry_points") || line.isEmpty() ||
+            line.startsWith(QLatin1Char('#')) || line.startsWith(QLatin1Char(';')))
             continue;
         const bool indented = raw.startsWith(QLatin1Char(' ')) || raw.startsWith(QLatin1Char('\t'));
         if (!indented) {

@@ -186,7 +186,8 @@ void CMakeListsReader::readFile(const QString &file, int depth, QList<Diagnostic
     execute(tokenize(content), depth, diagnostics);
 }
 
-void CMakeListsReader::execute(const QList<Command> &commands, int depth, QList<Diagnostic> *diagnostics)
+void CMakeListsReader::execute(const QList<Command> &commands, int depth,
+                               QList<Diagnostic> *diagnostics)
 {
     const QString file = m_file;
     const QString dir = m_dir;
@@ -201,7 +202,8 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth, QList<
     };
     for (qsizetype index = 0; index < commands.size(); ++index) {
         const Command &c = commands[index];
-        if ((c.name == QLatin1String("function") || c.name == QLatin1String("macro")) && !c.args.isEmpty()) {
+        if ((c.name == QLatin1String("function") || c.name == QLatin1String("macro")) &&
+            !c.args.isEmpty()) {
             // Record the body; it runs when the function is called.
             const QString end = QStringLiteral("end") + c.name;
             Function f;
@@ -234,32 +236,34 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth, QList<
             parseArguments(c.args);
             continue;
         }
-        if (c.name == QLatin1String("project") && !args.isEmpty()) {            m_vars.insert(QStringLiteral("PROJECT_NAME"), args.first());
+        if (c.name == QLatin1String("project") && !args.isEmpty()) {
+            m_vars.insert(QStringLiteral("PROJECT_NAME"), args.first());
         } else if (c.name == QLatin1String("set") && !args.isEmpty()) {
             QStringList values = args.mid(1);
-            while (!values.isEmpty() && (values.last() == QLatin1String("PARENT_SCOPE")
-                                         || values.last() == QLatin1String("CACHE")))
+            while (!values.isEmpty() && (values.last() == QLatin1String("PARENT_SCOPE") ||
+                                         values.last() == QLatin1String("CACHE")))
                 values.removeLast();
             const qsizetype cache = values.indexOf(QStringLiteral("CACHE"));
             if (cache >= 0)
                 values = values.mid(0, cache);
             m_vars.insert(args.first(), values.join(QLatin1Char(';')));
-        } else if ((c.name == QLatin1String("add_executable")
-                    || c.name == QLatin1String("ament_auto_add_executable")
-                    || c.name == QLatin1String("add_library")
-                    || c.name == QLatin1String("ament_auto_add_library")
-                    || c.name == QLatin1String("target_sources"))
-                   && !args.isEmpty()) {
+        } else if ((c.name == QLatin1String("add_executable") ||
+                    c.name == QLatin1String("ament_auto_add_executable") ||
+                    c.name == QLatin1String("add_library") ||
+                    c.name == QLatin1String("ament_auto_add_library") ||
+                    c.name == QLatin1String("target_sources")) &&
+                   !args.isEmpty()) {
             QStringList sources;
             for (const QString &a : args.mid(1))
                 if (isSourceFile(a))
                     sources.append(joinPath(dir, a));
             const QString target = args.first();
-            if (args.size() > 1 && (args[1] == QLatin1String("ALIAS") || args[1] == QLatin1String("IMPORTED")))
+            if (args.size() > 1 &&
+                (args[1] == QLatin1String("ALIAS") || args[1] == QLatin1String("IMPORTED")))
                 continue;
             m_targetSources[target].append(sources);
-            if (c.name == QLatin1String("add_executable")
-                || c.name == QLatin1String("ament_auto_add_executable")) {
+            if (c.name == QLatin1String("add_executable") ||
+                c.name == QLatin1String("ament_auto_add_executable")) {
                 Executable e;
                 e.kind = Executable::Kind::CMakeExecutable;
                 e.name = target;
@@ -295,20 +299,23 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth, QList<
                 e.target = args.first();
                 e.plugin = plugin;
                 e.evidence = evidence(c);
-                    m_plugins.append(e);
+                m_plugins.append(e);
             }
         } else if (c.name == QLatin1String("add_subdirectory") && !args.isEmpty()) {
             if (depth >= kMaxSubdirectoryDepth) {
                 Diagnostic d;
                 d.code = QStringLiteral("cmake-depth");
-                d.message = QStringLiteral("add_subdirectory nested deeper than %1 levels in %2; not followed.")
-                                .arg(kMaxSubdirectoryDepth).arg(file);
+                d.message =
+                    QStringLiteral(
+                        "add_subdirectory nested deeper than %1 levels in %2; not followed.")
+                        .arg(kMaxSubdirectoryDepth)
+                        .arg(file);
                 d.evidence = evidence(c);
                 diagnostics->append(d);
                 continue;
             }
-            readFile(joinPath(joinPath(dir, args.first()), QStringLiteral("CMakeLists.txt")), depth + 1,
-                     diagnostics);
+            readFile(joinPath(joinPath(dir, args.first()), QStringLiteral("CMakeLists.txt")),
+                     depth + 1, diagnostics);
             m_file = file;
             m_dir = dir;
         }
@@ -321,7 +328,8 @@ namespace rosarch {
 
 void CMakeListsReader::parseArguments(const QStringList &rawArgs)
 {
-    // cmake_parse_arguments(<prefix> <options> <one_value_keywords> <multi_value_keywords> <args>...)
+    // cmake_parse_arguments(<prefix> <options> <one_value_keywords> <multi_value_keywords>
+    // <args>...)
     const QString prefix = expand(rawArgs[0]);
     const QStringList options = expand(rawArgs[1]).split(QLatin1Char(';'), Qt::SkipEmptyParts);
     const QStringList single = expand(rawArgs[2]).split(QLatin1Char(';'), Qt::SkipEmptyParts);

@@ -40,8 +40,9 @@ bool SourceReader::read(const QString &relativePath, QByteArray *content,
                         .arg(relativePath, file.errorString()));
     *content = file.read(m_maxBytes + 1);
     if (content->size() > m_maxBytes)
-        return fail(QStringLiteral("file-too-large"),
-                    QStringLiteral("Skipped: %1 is larger than the analysis limit.").arg(relativePath));
+        return fail(
+            QStringLiteral("file-too-large"),
+            QStringLiteral("Skipped: %1 is larger than the analysis limit.").arg(relativePath));
     if (content->contains('\0'))
         return fail(QStringLiteral("binary-file"),
                     QStringLiteral("Skipped: %1 looks like a binary file (it contains NUL bytes).")

@@ -18,7 +18,8 @@ public:
     explicit SourceReader(QString root, qint64 maxBytes = kDefaultMaxBytes);
 
     /// Returns false and appends a diagnostic when the file cannot be analysed.
-    bool read(const QString &relativePath, QByteArray *content, QList<Diagnostic> *diagnostics) const;
+    bool read(const QString &relativePath, QByteArray *content,
+              QList<Diagnostic> *diagnostics) const;
 
 private:
     QString m_root;

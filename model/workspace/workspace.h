@@ -11,7 +11,18 @@ namespace rosarch {
 /// A source file the analyzers may read.
 struct SourceFile
 {
-    enum class Language { Python, Cpp, CMake, SetupPy, SetupCfg, PackageXml, Xml, Yaml, Other };
+    enum class Language
+    {
+        Python,
+        Cpp,
+        CMake,
+        SetupPy,
+        SetupCfg,
+        PackageXml,
+        Xml,
+        Yaml,
+        Other
+    };
 
     QString path;    ///< relative to the workspace root, '/' separated
     QString package; ///< name of the package that contains it ("" outside any package)

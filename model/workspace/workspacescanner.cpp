@@ -38,9 +38,9 @@ SourceFile::Language languageOf(const QString &fileName)
         return SourceFile::Language::Xml; // launch files are told apart by content later
     if (suffix == QLatin1String("yaml") || suffix == QLatin1String("yml"))
         return SourceFile::Language::Yaml;
-    static const QSet<QString> cpp{QStringLiteral("cpp"), QStringLiteral("cc"), QStringLiteral("cxx"),
-                                   QStringLiteral("hpp"), QStringLiteral("h"), QStringLiteral("hh"),
-                                   QStringLiteral("hxx"), QStringLiteral("ipp")};
+    static const QSet<QString> cpp{
+        QStringLiteral("cpp"), QStringLiteral("cc"), QStringLiteral("cxx"), QStringLiteral("hpp"),
+        QStringLiteral("h"),   QStringLiteral("hh"), QStringLiteral("hxx"), QStringLiteral("ipp")};
     if (cpp.contains(suffix))
         return SourceFile::Language::Cpp;
     return SourceFile::Language::Other;
@@ -63,16 +63,21 @@ public:
         if (canonical.isEmpty() || m_visited.contains(canonical)) {
             Diagnostic d;
             d.code = QStringLiteral("symlink-loop");
-            d.message = canonical.isEmpty()
-                            ? QStringLiteral("Skipped %1: the folder cannot be resolved (broken link?).").arg(relDir)
-                            : QStringLiteral("Skipped %1: it links back to a folder already scanned (symlink loop or duplicate).").arg(relDir);
+            d.message =
+                canonical.isEmpty()
+                    ? QStringLiteral("Skipped %1: the folder cannot be resolved (broken link?).")
+                          .arg(relDir)
+                    : QStringLiteral("Skipped %1: it links back to a folder already scanned "
+                                     "(symlink loop or duplicate).")
+                          .arg(relDir);
             d.evidence.file = relDir;
             m_ws->diagnostics.append(d);
             return;
         }
         m_visited.insert(canonical);
         QDir dir(absDir);
-        if (dir.exists(QStringLiteral("COLCON_IGNORE")) || dir.exists(QStringLiteral("AMENT_IGNORE")))
+        if (dir.exists(QStringLiteral("COLCON_IGNORE")) ||
+            dir.exists(QStringLiteral("AMENT_IGNORE")))
             return;
         const QFileInfoList entries = dir.entryInfoList(
             QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System,
@@ -86,7 +91,8 @@ public:
             return;
         }
         for (const QFileInfo &e : entries) {
-            const QString rel = relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
+            const QString rel =
+                relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
             if (e.isDir()) {
                 if (!isSkippedFolder(e.fileName()))
                     walk(e.absoluteFilePath(), rel);
@@ -162,8 +168,9 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
             pkg.name = QFileInfo(pkg.path.isEmpty() ? ws.root : pkg.path).fileName();
         ws.packages.append(pkg);
     }
-    std::sort(ws.packages.begin(), ws.packages.end(),
-              [](const RosPackage &a, const RosPackage &b) { return a.name < b.name || (a.name == b.name && a.path < b.path); });
+    std::sort(ws.packages.begin(), ws.packages.end(), [](const RosPackage &a, const RosPackage &b) {
+        return a.name < b.name || (a.name == b.name && a.path < b.path);
+    });
 
     auto owner = [&](const QString &relPath) -> RosPackage * {
         RosPackage *best = nullptr;
@@ -183,12 +190,15 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
         const QString prefix = pkg.path.isEmpty() ? QString() : pkg.path + QLatin1Char('/');
         QByteArray content;
         if (load(prefix + QStringLiteral("setup.py"), &content))
-            pkg.executables.append(BuildFileParser::readSetupPy(content, prefix + QStringLiteral("setup.py"), &ws.diagnostics));
+            pkg.executables.append(BuildFileParser::readSetupPy(
+                content, prefix + QStringLiteral("setup.py"), &ws.diagnostics));
         if (load(prefix + QStringLiteral("setup.cfg"), &content))
-            pkg.executables.append(BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
+            pkg.executables.append(
+                BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
         if (QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt")))) {
             CMakeListsReader cmake(load);
-            pkg.executables.append(cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));
+            pkg.executables.append(
+                cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));
         }
     }
     return ws;

@@ -2,12 +2,12 @@
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
 #include "document.h"
+#include "guifixture.h"
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "mainwindow.h"
-#include "sourceview.h"
 #include "screenshot.h"
-#include "guifixture.h"
+#include "sourceview.h"
 #include "testsupport.h"
 
 #include <Qsci/qsciglobal.h>

@@ -11,10 +11,10 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "mainwindow.h"
-#include "sourceview.h"
-#include "suggestionpanel.h"
-#include "stagerunner.h"
 #include "screenshot.h"
+#include "sourceview.h"
+#include "stagerunner.h"
+#include "suggestionpanel.h"
 #include "testsupport.h"
 
 #include <QGraphicsItem>
@@ -120,7 +120,8 @@ private Q_SLOTS:
         const QModelIndex current = m_window->launchPanel()->currentSourceIndex();
         QCOMPARE(current.data(LaunchTreeModel::InstanceIdRole).toString(), planner);
         // The launch line of the instance shows in the source view.
-        QCOMPARE(m_window->sourceView()->currentFile(), QStringLiteral("src/planning/launch/system.launch.py"));
+        QCOMPARE(m_window->sourceView()->currentFile(),
+                 QStringLiteral("src/planning/launch/system.launch.py"));
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1")); // no jump elsewhere
     }
 
@@ -128,27 +129,34 @@ private Q_SLOTS:
     {
         const QString rectifier = instanceNamed(doc(), QStringLiteral("rectifier"));
         const NodeInstance *n = doc()->launchDependencies().node(rectifier);
-        Q_EMIT panel()->portActivated(rectifier, QStringLiteral("p1")); // what a click on the port emits
-        QCOMPARE(m_window->launchPanel()->currentSourceIndex().data(LaunchTreeModel::InstanceIdRole).toString(),
+        Q_EMIT panel()->portActivated(rectifier,
+                                      QStringLiteral("p1")); // what a click on the port emits
+        QCOMPARE(m_window->launchPanel()
+                     ->currentSourceIndex()
+                     .data(LaunchTreeModel::InstanceIdRole)
+                     .toString(),
                  rectifier);
         const QModelIndex port = m_window->nodePanel()->currentSourceIndex();
         QCOMPARE(port.data(AtomicNodeModel::NodeIdRole).toString(), n->classId);
         QCOMPARE(port.data(AtomicNodeModel::PortIdRole).toString(), QStringLiteral("p1"));
-        QCOMPARE(m_window->sourceView()->currentFile(), QStringLiteral("src/vision/src/rectifier.cpp"));
+        QCOMPARE(m_window->sourceView()->currentFile(),
+                 QStringLiteral("src/vision/src/rectifier.cpp"));
     }
 
     void pendingGroupingIsPreviewedWithoutChangingTheModel()
     {
         const QStringList members{instanceNamed(doc(), QStringLiteral("planner")),
                                   instanceNamed(doc(), QStringLiteral("backup_planner"))};
-        m_window->diagrams()->previewGrouping(QStringLiteral("planning"), members, QStringLiteral("lf1"));
+        m_window->diagrams()->previewGrouping(QStringLiteral("planning"), members,
+                                              QStringLiteral("lf1"));
         QVERIFY(waitForLayout());
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1"));
         QStringList grouped;
         for (const RosNodePart &p : panel()->architecture().composite(QStringLiteral("lf1"))->parts)
             if (p.subsystem == QLatin1String("planning"))
                 grouped << p.name;
-        QCOMPARE(grouped, (QStringList{QStringLiteral("planner"), QStringLiteral("backup_planner")}));
+        QCOMPARE(grouped,
+                 (QStringList{QStringLiteral("planner"), QStringLiteral("backup_planner")}));
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
         for (const RosNodePart &p : doc()->architecture().composite(QStringLiteral("lf1"))->parts)
             QVERIFY(p.subsystem.isEmpty()); // only a preview
@@ -159,8 +167,9 @@ private Q_SLOTS:
 
     void selectedSuggestionsArePreviewed()
     {
-        const AtomicNode &planner = *std::find_if(doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
-                                                  [](const AtomicNode &n) { return n.className == QLatin1String("Planner"); });
+        const AtomicNode &planner = *std::find_if(
+            doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
+            [](const AtomicNode &n) { return n.className == QLatin1String("Planner"); });
         Suggestion description;
         description.id = QStringLiteral("s1");
         description.kind = Suggestion::Kind::NodeDescription;
@@ -178,8 +187,10 @@ private Q_SLOTS:
         doc()->setSuggestions(report);
 
         m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s1"));
-        const QModelIndex cell = m_window->nodeModel()->nodeIndex(planner.id, AtomicNodeModel::DescriptionColumn);
-        QCOMPARE(cell.data().toString(), QStringLiteral("Plans velocity commands from detections. (suggested)"));
+        const QModelIndex cell =
+            m_window->nodeModel()->nodeIndex(planner.id, AtomicNodeModel::DescriptionColumn);
+        QCOMPARE(cell.data().toString(),
+                 QStringLiteral("Plans velocity commands from detections. (suggested)"));
         QVERIFY(cell.data(Qt::FontRole).value<QFont>().italic());
         QVERIFY(doc()->atomicNodes().node(planner.id)->description.isEmpty()); // only a preview
 
@@ -188,14 +199,17 @@ private Q_SLOTS:
         QCOMPARE(cell.data().toString(), QString()); // the description preview ended
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
 
-        doc()->acceptSuggestion(QStringLiteral("s2")); // accepted: drawn as the model, not a preview
+        doc()->acceptSuggestion(
+            QStringLiteral("s2")); // accepted: drawn as the model, not a preview
         QVERIFY(waitForLayout());
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
         test::saveScreenshot(*panel(), QStringLiteral("diagram-subsystem.png"));
         QTemporaryDir out;
         QVERIFY(m_window->exportArtifactsTo(out.path()));
-        QVERIFY(test::readFile(out.filePath(QStringLiteral("architecture.json"))).contains("\"subsystem\": \"planning\""));
-        QVERIFY(test::readFile(out.filePath(QStringLiteral("ccd/system.puml"))).contains("<<Subsystem>>"));
+        QVERIFY(test::readFile(out.filePath(QStringLiteral("architecture.json")))
+                    .contains("\"subsystem\": \"planning\""));
+        QVERIFY(test::readFile(out.filePath(QStringLiteral("ccd/system.puml")))
+                    .contains("<<Subsystem>>"));
         doc()->undoStack()->undo();
         QVERIFY(waitForLayout());
         doc()->setSuggestions({});
@@ -206,8 +220,9 @@ private Q_SLOTS:
 
     void acceptedPortNameIsComposedAgain()
     {
-        const AtomicNode &commander = *std::find_if(doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
-                                                    [](const AtomicNode &n) { return n.className == QLatin1String("Commander"); });
+        const AtomicNode &commander = *std::find_if(
+            doc()->atomicNodes().nodes.cbegin(), doc()->atomicNodes().nodes.cend(),
+            [](const AtomicNode &n) { return n.className == QLatin1String("Commander"); });
         Suggestion name;
         name.id = QStringLiteral("s3");
         name.kind = Suggestion::Kind::NameResolution;
@@ -218,7 +233,8 @@ private Q_SLOTS:
         doc()->setSuggestions(report);
         doc()->acceptSuggestion(QStringLiteral("s3"));
         const auto reportPort = [this]() -> const PartPort * {
-            for (const RosNodePart &p : panel()->architecture().composite(QStringLiteral("lf1"))->parts)
+            for (const RosNodePart &p :
+                 panel()->architecture().composite(QStringLiteral("lf1"))->parts)
                 if (p.name == QLatin1String("commander"))
                     for (const PartPort &port : p.ports)
                         if (port.id == QLatin1String("p2"))
@@ -229,7 +245,8 @@ private Q_SLOTS:
         QVERIFY(reportPort()->resolved);
         QCOMPARE(reportPort()->name, QStringLiteral("/commander/report"));
         bool promoted = false; // no one listens inside: it becomes a boundary port
-        for (const BoundaryPort &b : panel()->architecture().composite(QStringLiteral("lf1"))->boundary)
+        for (const BoundaryPort &b :
+             panel()->architecture().composite(QStringLiteral("lf1"))->boundary)
             promoted = promoted || b.name == QLatin1String("/commander/report");
         QVERIFY(promoted);
         doc()->undoStack()->undo();
@@ -242,8 +259,9 @@ private Q_SLOTS:
     {
         QTemporaryDir reference;
         // The reference lacks the detector that the recovery has: the detector is extra.
-        QVERIFY(QFile::copy(test::dataDir(QStringLiteral("compose_system/broken/vision_missing_detector.puml")),
-                            reference.filePath(QStringLiteral("vision.puml"))));
+        QVERIFY(QFile::copy(
+            test::dataDir(QStringLiteral("compose_system/broken/vision_missing_detector.puml")),
+            reference.filePath(QStringLiteral("vision.puml"))));
         QString error;
         const QString report = m_window->diagrams()->compareWithReference(reference.path(), &error);
         QVERIFY2(!report.isEmpty(), qPrintable(error));
@@ -261,9 +279,11 @@ private Q_SLOTS:
             if (p.name == QLatin1String("detector"))
                 detectorPart = p.id;
         const QStringList marked = markedKeys(panel());
-        QVERIFY2(marked.contains(QStringLiteral("part:") + detectorPart), qPrintable(marked.join(' ')));
+        QVERIFY2(marked.contains(QStringLiteral("part:") + detectorPart),
+                 qPrintable(marked.join(' ')));
         for (const QString &key : marked) // only the detector and its connections
-            QVERIFY2(key == QStringLiteral("part:") + detectorPart || key.startsWith(QLatin1String("connection:")),
+            QVERIFY2(key == QStringLiteral("part:") + detectorPart ||
+                         key.startsWith(QLatin1String("connection:")),
                      qPrintable(key));
         test::saveScreenshot(*m_window, QStringLiteral("diagram-comparison.png"));
 
@@ -276,7 +296,9 @@ private Q_SLOTS:
         QVERIFY(waitForLayout());
         QVERIFY(markedKeys(panel()).isEmpty());
 
-        QVERIFY(m_window->diagrams()->compareWithReference(QStringLiteral("/nonexistent/reference"), &error).isEmpty());
+        QVERIFY(m_window->diagrams()
+                    ->compareWithReference(QStringLiteral("/nonexistent/reference"), &error)
+                    .isEmpty());
         QVERIFY(!error.isEmpty());
     }
 

@@ -2,16 +2,16 @@
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
 #include "document.h"
+#include "guifixture.h"
 #include "launchargumentsdialog.h"
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
 #include "nodefilterproxymodel.h"
+#include "screenshot.h"
 #include "sourceview.h"
 #include "stagerunner.h"
-#include "screenshot.h"
-#include "guifixture.h"
 #include "testsupport.h"
 
 #include <Qsci/qscilexer.h>
@@ -189,8 +189,8 @@ private Q_SLOTS:
         // File → Export writes stage 2's artifact too
         QTemporaryDir out;
         QVERIFY(w.exportArtifactsTo(out.path()));
-        const QByteArray json = test::readFile(
-            QDir(out.path()).filePath(QStringLiteral("launch_dependencies.json")));
+        const QByteArray json =
+            test::readFile(QDir(out.path()).filePath(QStringLiteral("launch_dependencies.json")));
         QVERIFY2(json.contains("listener.launch.xml") && json.contains("second_listener"),
                  json.left(300).constData());
     }

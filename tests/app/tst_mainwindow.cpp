@@ -2,13 +2,13 @@
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
 #include "document.h"
+#include "guifixture.h"
 #include "logview.h"
 #include "mainwindow.h"
 #include "nodefilterproxymodel.h"
+#include "screenshot.h"
 #include "sourceview.h"
 #include "stagerunner.h"
-#include "screenshot.h"
-#include "guifixture.h"
 #include "testsupport.h"
 
 #include <Qsci/qscilexer.h>
@@ -445,17 +445,17 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        w.runner()->setStageFunction([](const QString &root, const LaunchOptions &,
-                                        const StageControl &control) {
-            Recovery result;
-            result.nodes.workspaceRoot = root;
-            for (int i = 0; i < 400 && !control.isCanceled(); ++i) {
-                control.report(i, 400, QStringLiteral("Reading file %1").arg(i));
-                QThread::msleep(5);
-            }
-            result.nodes.canceled = control.isCanceled();
-            return result;
-        });
+        w.runner()->setStageFunction(
+            [](const QString &root, const LaunchOptions &, const StageControl &control) {
+                Recovery result;
+                result.nodes.workspaceRoot = root;
+                for (int i = 0; i < 400 && !control.isCanceled(); ++i) {
+                    control.report(i, 400, QStringLiteral("Reading file %1").arg(i));
+                    QThread::msleep(5);
+                }
+                result.nodes.canceled = control.isCanceled();
+                return result;
+            });
         QSignalSpy progressed(w.runner(), &StageRunner::stageProgressed);
         QSignalSpy canceled(w.runner(), &StageRunner::stageCanceled);
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));

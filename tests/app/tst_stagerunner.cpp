@@ -19,21 +19,21 @@ private Q_SLOTS:
     {
         StageRunner runner;
         std::atomic<bool> sawCancel{false};
-        runner.setStageFunction([&sawCancel](const QString &root, const LaunchOptions &,
-                                             const StageControl &control) {
-            Recovery result;
-            result.nodes.workspaceRoot = root;
-            for (int i = 0; i < 2000; ++i) {
-                if (control.isCanceled()) {
-                    sawCancel = true;
-                    result.nodes.canceled = true;
-                    return result;
+        runner.setStageFunction(
+            [&sawCancel](const QString &root, const LaunchOptions &, const StageControl &control) {
+                Recovery result;
+                result.nodes.workspaceRoot = root;
+                for (int i = 0; i < 2000; ++i) {
+                    if (control.isCanceled()) {
+                        sawCancel = true;
+                        result.nodes.canceled = true;
+                        return result;
+                    }
+                    control.report(i, 2000, QStringLiteral("file %1").arg(i));
+                    QThread::msleep(5);
                 }
-                control.report(i, 2000, QStringLiteral("file %1").arg(i));
-                QThread::msleep(5);
-            }
-            return result;
-        });
+                return result;
+            });
         QSignalSpy progressed(&runner, &StageRunner::stageProgressed);
         QSignalSpy canceled(&runner, &StageRunner::stageCanceled);
         QSignalSpy finished(&runner, &StageRunner::stageFinished);
@@ -57,17 +57,17 @@ private Q_SLOTS:
         StageRunner runner;
         std::atomic<int> calls{0};
         std::atomic<bool> firstStarted{false};
-        runner.setStageFunction([&](const QString &root, const LaunchOptions &,
-                                    const StageControl &) {
-            ++calls;
-            if (root == QLatin1String("/first"))
-                firstStarted = true;
-            // The first run ignores cancellation and ends first; its result is stale.
-            QThread::msleep(root == QLatin1String("/first") ? 250 : 600);
-            Recovery result;
-            result.nodes.workspaceRoot = root;
-            return result;
-        });
+        runner.setStageFunction(
+            [&](const QString &root, const LaunchOptions &, const StageControl &) {
+                ++calls;
+                if (root == QLatin1String("/first"))
+                    firstStarted = true;
+                // The first run ignores cancellation and ends first; its result is stale.
+                QThread::msleep(root == QLatin1String("/first") ? 250 : 600);
+                Recovery result;
+                result.nodes.workspaceRoot = root;
+                return result;
+            });
         QSignalSpy finished(&runner, &StageRunner::stageFinished);
         QSignalSpy canceled(&runner, &StageRunner::stageCanceled);
         runner.run(QStringLiteral("/first"));
@@ -101,9 +101,9 @@ private Q_SLOTS:
         QVERIFY(list.diagnostics.first().message.contains(QStringLiteral("boom")));
 
         // stage 2 alone reports its own failure as a stage 2 diagnostic
-        runner.setLaunchFunction([](const QString &, const AtomicNodeList &,
-                                    const LaunchOptions &, const StageControl &)
-                                     -> LaunchDependencies { throw std::runtime_error("bang"); });
+        runner.setLaunchFunction(
+            [](const QString &, const AtomicNodeList &, const LaunchOptions &,
+               const StageControl &) -> LaunchDependencies { throw std::runtime_error("bang"); });
         QSignalSpy launchFinished(&runner, &StageRunner::launchStageFinished);
         runner.runLaunch(QStringLiteral("/broken"), list, {});
         QVERIFY(launchFinished.wait(5000));

@@ -114,7 +114,9 @@ private:
          QStringLiteral("lf1")},
         {QStringLiteral("planning"), {QStringLiteral("n9"), QStringLiteral("n10")}, QString()},
         // n4 is perception's already (first wins); n8 is free.
-        {QStringLiteral("detection"), {QStringLiteral("n4"), QStringLiteral("n8")}, QStringLiteral("lf1")},
+        {QStringLiteral("detection"),
+         {QStringLiteral("n4"), QStringLiteral("n8")},
+         QStringLiteral("lf1")},
         // Not a root: a grouping applies below the root it was accepted for, so nothing here.
         {QStringLiteral("wrong_root"), {QStringLiteral("n1")}, QStringLiteral("lf2")},
     };
@@ -170,7 +172,8 @@ private Q_SLOTS:
     {
         for (const QList<SubsystemGroup> &groups :
              {QList<SubsystemGroup>(),
-              QList<SubsystemGroup>{{QStringLiteral("ghost"), {QStringLiteral("n99")}, QString()}}}) {
+              QList<SubsystemGroup>{
+                  {QStringLiteral("ghost"), {QStringLiteral("n99")}, QString()}}}) {
             const Architecture g = SubsystemGrouping::apply(m_arch, groups);
             QCOMPARE(grouped(g), QStringList());
             const QMap<QString, QString> stems = CcdWriter::fileStems(g);
@@ -191,10 +194,11 @@ private Q_SLOTS:
         // Inside the namespace package, one level deeper than the parts around it.
         QVERIFY(vision.contains(QStringLiteral("  package \"front\" as ns_front <<namespace>> {\n"
                                                "    component \"front_camera:\\nCamera\"")));
-        QVERIFY(vision.contains(QStringLiteral("    component \"perception\" as sub_perception "
-                                               "<<Subsystem>> {\n"
-                                               "      component \"rectifier:\\nRectifier\" as part3 "
-                                               "<<RosNodePart>> {\n")));
+        QVERIFY(
+            vision.contains(QStringLiteral("    component \"perception\" as sub_perception "
+                                           "<<Subsystem>> {\n"
+                                           "      component \"rectifier:\\nRectifier\" as part3 "
+                                           "<<RosNodePart>> {\n")));
         QCOMPARE(partsInBlock(vision, QStringLiteral("perception")),
                  (QStringList{QStringLiteral("part3"), QStringLiteral("part4")}));
         QCOMPARE(partsInBlock(vision, QStringLiteral("detection")), QStringList());
@@ -202,8 +206,10 @@ private Q_SLOTS:
         // Read back: grouping adds structure but no element.
         for (const auto &[stem, text] : {std::pair{QStringLiteral("system"), system},
                                          std::pair{QStringLiteral("vision"), vision}}) {
-            const QList<UmlDiagram> rec = PlantUmlReader::read(text, stem + QStringLiteral(".puml"));
-            const QList<UmlDiagram> ref = PlantUmlReader::read(expectedCcd(stem), stem + QStringLiteral(".puml"));
+            const QList<UmlDiagram> rec =
+                PlantUmlReader::read(text, stem + QStringLiteral(".puml"));
+            const QList<UmlDiagram> ref =
+                PlantUmlReader::read(expectedCcd(stem), stem + QStringLiteral(".puml"));
             QCOMPARE(rec.size(), 1);
             QCOMPARE(rec.first().level, UmlLevel::Ccd);
             QCOMPARE(rec.first().warnings, QStringList());
@@ -224,8 +230,11 @@ private Q_SLOTS:
         c.parts[2].subsystem = QStringLiteral("planning");
         c.parts[3].subsystem = QStringLiteral("planning"); // backup_planner, at the root
         const QString ccd = CcdWriter::write(c);
-        QCOMPARE(ccd.count(QLatin1String("component \"planning\" as sub_planning <<Subsystem>> {")), 1);
-        QCOMPARE(ccd.count(QLatin1String("component \"planning\" as sub_planning_2 <<Subsystem>> {")), 1);
+        QCOMPARE(ccd.count(QLatin1String("component \"planning\" as sub_planning <<Subsystem>> {")),
+                 1);
+        QCOMPARE(
+            ccd.count(QLatin1String("component \"planning\" as sub_planning_2 <<Subsystem>> {")),
+            1);
         QCOMPARE(partsInBlock(ccd, QStringLiteral("planning")),
                  (QStringList{QStringLiteral("part3"), QStringLiteral("part4")}));
 
@@ -233,7 +242,8 @@ private Q_SLOTS:
         QStringList parents;
         for (const LayoutCluster &k : g.clusters)
             if (k.key == DiagramBuilder::subsystemKey(QStringLiteral("planning")))
-                parents << k.parent + QLatin1Char('>') + clusterOfNodes(g, k.id).join(QLatin1Char(','));
+                parents << k.parent + QLatin1Char('>') +
+                               clusterOfNodes(g, k.id).join(QLatin1Char(','));
         parents.sort();
         QCOMPARE(parents, (QStringList{QStringLiteral(">part:part4"),
                                        QStringLiteral("namespace:/left>part:part3")}));
@@ -253,9 +263,9 @@ private Q_SLOTS:
         QCOMPARE(sub->parent, DiagramBuilder::namespaceKey(QStringLiteral("/front")));
         QCOMPARE(DiagramKey::parse(key).kind, DiagramKey::Kind::Subsystem);
         // The members, and the topic only they use; the camera's topic stays in the namespace.
-        QCOMPARE(clusterOfNodes(g, key), (QStringList{QStringLiteral("channel:q_front_rectified"),
-                                                      QStringLiteral("part:part3"),
-                                                      QStringLiteral("part:part4")}));
+        QCOMPARE(clusterOfNodes(g, key),
+                 (QStringList{QStringLiteral("channel:q_front_rectified"),
+                              QStringLiteral("part:part3"), QStringLiteral("part:part4")}));
         QCOMPARE(g.node(QStringLiteral("channel:q_front_camera_image"))->cluster,
                  DiagramBuilder::namespaceKey(QStringLiteral("/front")));
         // Parents before children, as the layout needs them.

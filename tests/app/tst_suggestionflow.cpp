@@ -5,12 +5,12 @@
 #include "decisionstore.h"
 #include "document.h"
 #include "fakellmserver.h"
+#include "screenshot.h"
 #include "suggestioncontroller.h"
 #include "suggestionengine.h"
 #include "suggestionmodel.h"
 #include "suggestionpanel.h"
 #include "suggestionrunner.h"
-#include "screenshot.h"
 #include "testsupport.h"
 
 #include <QCryptographicHash>

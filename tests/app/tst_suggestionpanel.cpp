@@ -5,12 +5,12 @@
 #include "decisionstore.h"
 #include "document.h"
 #include "llmsettingsdialog.h"
+#include "screenshot.h"
 #include "suggestioncontroller.h"
 #include "suggestionengine.h"
 #include "suggestionfiltermodel.h"
 #include "suggestionmodel.h"
 #include "suggestionpanel.h"
-#include "screenshot.h"
 #include "testsupport.h"
 
 #include <QAbstractItemModelTester>

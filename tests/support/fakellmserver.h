@@ -24,9 +24,9 @@ struct FakeResponse
 {
     int status = 200;
     QByteArray body;
-    QList<QByteArray> headers;      ///< extra header lines, e.g. "Retry-After: 1"
-    QList<QByteArray> sseChunks;    ///< non-empty: answer as text/event-stream, one write each
-    bool hang = false;              ///< accept the request and never answer
+    QList<QByteArray> headers;   ///< extra header lines, e.g. "Retry-After: 1"
+    QList<QByteArray> sseChunks; ///< non-empty: answer as text/event-stream, one write each
+    bool hang = false;           ///< accept the request and never answer
 };
 
 /// One request as received.
@@ -40,16 +40,28 @@ struct FakeRequest
     QJsonObject json() const { return QJsonDocument::fromJson(body).object(); }
     QJsonArray messages() const { return json().value(QLatin1String("messages")).toArray(); }
     /// The last message's content.
-    QString lastMessage() const { return messages().last().toObject().value(QLatin1String("content")).toString(); }
+    QString lastMessage() const
+    {
+        return messages().last().toObject().value(QLatin1String("content")).toString();
+    }
     /// The prompt name the client put into response_format, else "" (json_object / none).
     QString schemaName() const
     {
-        return json().value(QLatin1String("response_format")).toObject().value(QLatin1String("json_schema"))
-            .toObject().value(QLatin1String("name")).toString();
+        return json()
+            .value(QLatin1String("response_format"))
+            .toObject()
+            .value(QLatin1String("json_schema"))
+            .toObject()
+            .value(QLatin1String("name"))
+            .toString();
     }
     QString responseFormat() const
     {
-        return json().value(QLatin1String("response_format")).toObject().value(QLatin1String("type")).toString();
+        return json()
+            .value(QLatin1String("response_format"))
+            .toObject()
+            .value(QLatin1String("type"))
+            .toString();
     }
 };
 
@@ -85,7 +97,10 @@ public:
     QString endpoint() const { return QStringLiteral("http://127.0.0.1:%1").arg(port()); }
     /// Answers in order; when the queue is empty the handler (else the last answer) is used.
     void enqueue(const FakeResponse &r) { m_queue.append(r); }
-    void setHandler(std::function<FakeResponse(const FakeRequest &)> handler) { m_handler = std::move(handler); }
+    void setHandler(std::function<FakeResponse(const FakeRequest &)> handler)
+    {
+        m_handler = std::move(handler);
+    }
     const QList<FakeRequest> &requests() const { return m_requests; }
 
     /// A non-streamed chat completion whose message content is `content`.
@@ -93,11 +108,13 @@ public:
     {
         const QJsonObject message{{QLatin1String("role"), QStringLiteral("assistant")},
                                   {QLatin1String("content"), QString::fromUtf8(content)}};
-        const QJsonObject body{{QLatin1String("id"), QStringLiteral("chatcmpl-1")},
-                               {QLatin1String("object"), QStringLiteral("chat.completion")},
-                               {QLatin1String("choices"), QJsonArray{QJsonObject{{QLatin1String("index"), 0},
-                                                                                  {QLatin1String("message"), message},
-                                                                                  {QLatin1String("finish_reason"), QStringLiteral("stop")}}}}};
+        const QJsonObject body{
+            {QLatin1String("id"), QStringLiteral("chatcmpl-1")},
+            {QLatin1String("object"), QStringLiteral("chat.completion")},
+            {QLatin1String("choices"),
+             QJsonArray{QJsonObject{{QLatin1String("index"), 0},
+                                    {QLatin1String("message"), message},
+                                    {QLatin1String("finish_reason"), QStringLiteral("stop")}}}}};
         FakeResponse r;
         r.body = QJsonDocument(body).toJson(QJsonDocument::Compact);
         return r;
@@ -109,15 +126,18 @@ public:
         const QString text = QString::fromUtf8(content);
         for (qsizetype i = 0; i < text.size(); i += pieceSize) {
             const QJsonObject delta{{QLatin1String("content"), text.mid(i, pieceSize)}};
-            const QJsonObject chunk{{QLatin1String("object"), QStringLiteral("chat.completion.chunk")},
-                                    {QLatin1String("choices"), QJsonArray{QJsonObject{{QLatin1String("index"), 0},
-                                                                                       {QLatin1String("delta"), delta}}}}};
+            const QJsonObject chunk{
+                {QLatin1String("object"), QStringLiteral("chat.completion.chunk")},
+                {QLatin1String("choices"),
+                 QJsonArray{
+                     QJsonObject{{QLatin1String("index"), 0}, {QLatin1String("delta"), delta}}}}};
             r.sseChunks << "data: " + QJsonDocument(chunk).toJson(QJsonDocument::Compact) + "\n\n";
         }
         r.sseChunks << QByteArray("data: [DONE]\n\n");
         return r;
     }
-    static FakeResponse status(int code, const QByteArray &body, const QList<QByteArray> &headers = {})
+    static FakeResponse status(int code, const QByteArray &body,
+                               const QList<QByteArray> &headers = {})
     {
         FakeResponse r;
         r.status = code;
@@ -167,9 +187,12 @@ private:
     {
         if (r.hang)
             return;
-        QByteArray head = "HTTP/1.1 " + QByteArray::number(r.status) + (r.status < 400 ? " OK" : " Error") + "\r\n";
-        head += r.sseChunks.isEmpty() ? "Content-Type: application/json\r\nContent-Length: " + QByteArray::number(r.body.size()) + "\r\n"
-                                      : QByteArray("Content-Type: text/event-stream\r\nCache-Control: no-cache\r\n");
+        QByteArray head = "HTTP/1.1 " + QByteArray::number(r.status) +
+                          (r.status < 400 ? " OK" : " Error") + "\r\n";
+        head += r.sseChunks.isEmpty()
+                    ? "Content-Type: application/json\r\nContent-Length: " +
+                          QByteArray::number(r.body.size()) + "\r\n"
+                    : QByteArray("Content-Type: text/event-stream\r\nCache-Control: no-cache\r\n");
         head += "Connection: close\r\n";
         for (const QByteArray &h : r.headers)
             head += h + "\r\n";

@@ -27,7 +27,8 @@ inline QStringList sorted(QStringList list)
 
 inline UmlDiagram readOne(const QString &text)
 {
-    const QList<UmlDiagram> all = PlantUmlReader::read(text, QStringLiteral("/refs/some_file.puml"));
+    const QList<UmlDiagram> all =
+        PlantUmlReader::read(text, QStringLiteral("/refs/some_file.puml"));
     return all.size() == 1 ? all.first() : UmlDiagram{};
 }
 
@@ -52,11 +53,13 @@ node --0 srv_ps1
 @enduml
 )uml";
 
-inline const QStringList kAcdElements = {
-    QStringLiteral("arc_name=Talker"), QStringLiteral("arc_stereotype=AtomicRosNodeClassifier"),
-    QStringLiteral("callback=on_cmd"), QStringLiteral("message_type=geometry_msgs/msg/Twist"),
-    QStringLiteral("message_type=std_msgs/msg/String"), QStringLiteral("service_function=on_reset"),
-    QStringLiteral("service_type=std_srvs/srv/Trigger")};
+inline const QStringList kAcdElements = {QStringLiteral("arc_name=Talker"),
+                                         QStringLiteral("arc_stereotype=AtomicRosNodeClassifier"),
+                                         QStringLiteral("callback=on_cmd"),
+                                         QStringLiteral("message_type=geometry_msgs/msg/Twist"),
+                                         QStringLiteral("message_type=std_msgs/msg/String"),
+                                         QStringLiteral("service_function=on_reset"),
+                                         QStringLiteral("service_type=std_srvs/srv/Trigger")};
 
 inline const char *const kCcd = R"uml(@startuml
 component "demo" as demo <<ComposedRosNodeClassifier>> {
@@ -95,16 +98,24 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
 )uml";
 
 inline const QStringList kCcdElements = {
-    QStringLiteral("part=talker"), QStringLiteral("part=listener"), QStringLiteral("part=sensors"),
-    QStringLiteral("part_type=talker:Talker"), QStringLiteral("part_type=listener:Listener"),
-    QStringLiteral("part_type=:sensors"), QStringLiteral("namespace=(robot1, talker)"),
-    QStringLiteral("namespace=(abs, listener)"), QStringLiteral("namespace=(robot1/inner, sensors)"),
-    QStringLiteral("topic=chatter"), QStringLiteral("service=reset"), QStringLiteral("action=navigate"),
+    QStringLiteral("part=talker"),
+    QStringLiteral("part=listener"),
+    QStringLiteral("part=sensors"),
+    QStringLiteral("part_type=talker:Talker"),
+    QStringLiteral("part_type=listener:Listener"),
+    QStringLiteral("part_type=:sensors"),
+    QStringLiteral("namespace=(robot1, talker)"),
+    QStringLiteral("namespace=(abs, listener)"),
+    QStringLiteral("namespace=(robot1/inner, sensors)"),
+    QStringLiteral("topic=chatter"),
+    QStringLiteral("service=reset"),
+    QStringLiteral("action=navigate"),
     QStringLiteral("boundary_port=(in, sensor_msgs/msg/LaserScan)"),
     QStringLiteral("boundary_port=(out, std_msgs/msg/String)"),
     QStringLiteral("connection=publish talker -> chatter"),
     QStringLiteral("connection=subscribe chatter -> listener"),
-    QStringLiteral("connection=client talker -> reset"), QStringLiteral("connection=server listener -> reset"),
+    QStringLiteral("connection=client talker -> reset"),
+    QStringLiteral("connection=server listener -> reset"),
     QStringLiteral("connection=delegation boundary:in/sensor_msgs/msg/LaserScan -> talker"),
     QStringLiteral("connection=delegation listener -> boundary:out/std_msgs/msg/String")};
 

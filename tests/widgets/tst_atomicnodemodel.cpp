@@ -1,8 +1,8 @@
 #include "atomicnodemodel.h"
 #include "diagnosticmodel.h"
 #include "document.h"
-#include "nodefilterproxymodel.h"
 #include "guifixture.h"
+#include "nodefilterproxymodel.h"
 #include "testsupport.h"
 
 #include <QAbstractItemModelTester>
@@ -49,11 +49,12 @@ AtomicNodeList sampleList()
     talker.baseClasses = {QStringLiteral("Node")};
     talker.executables = {QStringLiteral("talker")};
     talker.evidence = at(talkerFile, 6, 21);
-    Port pub = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("chatter"),
+    Port pub =
+        test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("chatter"),
                         QStringLiteral("std_msgs/msg/String"), {}, at(talkerFile, 11, 11, 26, 70));
     Port sub = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("echo"),
-                        QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_echo"),
-                        at(talkerFile, 12, 12, 29, 88));
+                               QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_echo"),
+                               at(talkerFile, 12, 12, 29, 88));
     sub.nameOrigin = NameOrigin::Parameter;
     sub.parameter = QStringLiteral("echo_topic");
     sub.guard = QStringLiteral("self.use_echo");
@@ -71,13 +72,14 @@ AtomicNodeList sampleList()
     listener.plugins = {QStringLiteral("beta_cpp::Listener")};
     listener.evidence = at(listenerFile, 11, 41);
     listener.description = QStringLiteral("Counts messages.");
-    Port csub = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("chatter"),
-                         QStringLiteral("std_msgs/msg/String"), QStringLiteral("on_message"),
-                         at(listenerFile, 17, 18, 21, 90));
-    Port srv = test::gui::port(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("reset"),
-                        QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"),
-                        at(listenerFile, 19, 20, 16, 99));
-    Port dyn = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("topic_name_"),
+    Port csub = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber,
+                                QStringLiteral("chatter"), QStringLiteral("std_msgs/msg/String"),
+                                QStringLiteral("on_message"), at(listenerFile, 17, 18, 21, 90));
+    Port srv = test::gui::port(QStringLiteral("ps1"), PortKind::ServiceServer,
+                               QStringLiteral("reset"), QStringLiteral("std_srvs/srv/Trigger"),
+                               QStringLiteral("on_reset"), at(listenerFile, 19, 20, 16, 99));
+    Port dyn =
+        test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("topic_name_"),
                         QStringLiteral("std_msgs/msg/Int32"), {}, at(listenerFile, 22, 22));
     dyn.nameOrigin = NameOrigin::Expression;
     dyn.nameExpression = QStringLiteral("topic_name_");

@@ -1,9 +1,9 @@
 #include "document.h"
+#include "guifixture.h"
 #include "icons.h"
 #include "launchtreemodel.h"
 #include "launchtreetext.h"
 #include "nodefilterproxymodel.h"
-#include "guifixture.h"
 #include "testsupport.h"
 
 #include <QAbstractItemModelTester>

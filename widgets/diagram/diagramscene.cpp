@@ -60,8 +60,8 @@ void DiagramScene::setDiagram(const LayoutGraph &graph, const LayoutGeometry &ge
         const bool subsystem = DiagramKey::parse(c.key).kind == DiagramKey::Kind::Subsystem;
         auto *item = new DiagramClusterItem(
             subsystem ? DiagramClusterItem::Kind::Subsystem : DiagramClusterItem::Kind::Namespace,
-            c.key, geometry.clusters.value(c.id),
-            geometry.clusterLabels.value(c.id), c.label, {}, &m_style);
+            c.key, geometry.clusters.value(c.id), geometry.clusterLabels.value(c.id), c.label, {},
+            &m_style);
         item->setZValue(-1 + depth * 0.01);
         addItem(item);
         m_items.insert(c.key, item);

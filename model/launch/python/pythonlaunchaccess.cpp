@@ -48,7 +48,8 @@ Value PythonLaunchEvaluator::evalSubscript(TSNode n)
                 return unknownAt(n);
             (colonSeen ? hi : lo) = v.number;
         }
-        const qsizetype size = object.type == T::String ? object.text.size() : object.items().size();
+        const qsizetype size =
+            object.type == T::String ? object.text.size() : object.items().size();
         auto clamp = [&](std::optional<double> b, qsizetype dflt) {
             if (!b)
                 return dflt;
@@ -63,7 +64,8 @@ Value PythonLaunchEvaluator::evalSubscript(TSNode n)
         return newList(object.items().mid(from, qMax<qsizetype>(0, to - from)), object.list->tuple);
     }
     const Value key = eval(keyNode);
-    if (object.type == T::Module && object.text == QLatin1String("os.environ") && key.type == T::String) {
+    if (object.type == T::Module && object.text == QLatin1String("os.environ") &&
+        key.type == T::String) {
         Substitution env;
         env.kind = Substitution::Kind::EnvironmentVariable;
         env.text = key.text;
@@ -78,13 +80,15 @@ Value PythonLaunchEvaluator::evalSubscript(TSNode n)
         return unknownAt(n);
     }
     if ((object.type == T::List || object.type == T::String) && key.type == T::Number) {
-        const qsizetype size = object.type == T::String ? object.text.size() : object.items().size();
+        const qsizetype size =
+            object.type == T::String ? object.text.size() : object.items().size();
         qsizetype i = qsizetype(key.number);
         if (i < 0)
             i += size;
         if (i < 0 || i >= size)
             return unknownAt(n);
-        return object.type == T::String ? Value::string(QString(object.text.at(i))) : object.items().at(i);
+        return object.type == T::String ? Value::string(QString(object.text.at(i)))
+                                        : object.items().at(i);
     }
     return unknownAt(n);
 }
@@ -99,7 +103,8 @@ Value PythonLaunchEvaluator::evalAttribute(TSNode n)
         m.evidence = m_tree.evidence(n);
         return m;
     }
-    if (object.type == T::Context && object.text.isEmpty() && attribute == QLatin1String("launch_configurations")) {
+    if (object.type == T::Context && object.text.isEmpty() &&
+        attribute == QLatin1String("launch_configurations")) {
         Value c = object;
         c.text = attribute;
         return c;
@@ -113,7 +118,8 @@ Value PythonLaunchEvaluator::evalAttribute(TSNode n)
         if (object.type == T::String && object.text.contains(QLatin1Char('/')))
             return Value::string(object.text.section(QLatin1Char('/'), 0, -2));
     }
-    if (object.type == T::List && object.list->launchDescription && attribute == QLatin1String("entities"))
+    if (object.type == T::List && object.list->launchDescription &&
+        attribute == QLatin1String("entities"))
         return object;
     return unknownAt(n);
 }
@@ -240,7 +246,8 @@ Value PythonLaunchEvaluator::evalCall(TSNode n)
     return *v;
 }
 
-const Value *PythonLaunchEvaluator::CallArgs::get(int index, std::initializer_list<const char *> names) const
+const Value *PythonLaunchEvaluator::CallArgs::get(int index,
+                                                  std::initializer_list<const char *> names) const
 {
     for (const char *name : names)
         for (const auto &k : keywords)
@@ -251,7 +258,8 @@ const Value *PythonLaunchEvaluator::CallArgs::get(int index, std::initializer_li
     return nullptr;
 }
 
-TSNode PythonLaunchEvaluator::CallArgs::node(int index, std::initializer_list<const char *> names) const
+TSNode PythonLaunchEvaluator::CallArgs::node(int index,
+                                             std::initializer_list<const char *> names) const
 {
     for (const char *name : names)
         for (qsizetype k = 0; k < keywords.size(); ++k)

@@ -22,7 +22,8 @@ bool given(const Value *v)
     return v && v->type != Value::Type::None;
 }
 
-Substitution withKind(Substitution::Kind kind, const QString &text = {}, QList<Substitution> parts = {})
+Substitution withKind(Substitution::Kind kind, const QString &text = {},
+                      QList<Substitution> parts = {})
 {
     Substitution s;
     s.kind = kind;
@@ -36,7 +37,8 @@ Substitution evaluation(const QList<Substitution> &parts)
 {
     const Substitution joined = concatenate(parts);
     return withKind(Substitution::Kind::Eval, {},
-                    joined.kind == Substitution::Kind::Concat ? joined.parts : QList<Substitution>{joined});
+                    joined.kind == Substitution::Kind::Concat ? joined.parts
+                                                              : QList<Substitution>{joined});
 }
 
 QList<Substitution> partsOf(const Value &v)
@@ -63,7 +65,8 @@ QString PythonLaunchEvaluator::textOfCall(TSNode call) const
     return oneLine(m_tree.text(call));
 }
 
-std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &name, const CallArgs &args, TSNode call)
+std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &name,
+                                                                const CallArgs &args, TSNode call)
 {
     using K = Substitution::Kind;
     const Value *a0 = args.get(0);
@@ -85,19 +88,23 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
             s.parts << d->toSubstitution();
         return Value::substitution(s);
     }
-    if (oneOf(name, {"FindPackageShare", "get_package_share_directory", "get_package_share_path"})) {
+    if (oneOf(name,
+              {"FindPackageShare", "get_package_share_directory", "get_package_share_path"})) {
         const Value *p = args.get(0, {"package", "package_name"});
-        return p ? std::optional(Value::substitution(withKind(K::FindPackageShare, {}, {p->toSubstitution()})))
+        return p ? std::optional(Value::substitution(
+                       withKind(K::FindPackageShare, {}, {p->toSubstitution()})))
                  : std::nullopt;
     }
     if (oneOf(name, {"FindPackagePrefix", "get_package_prefix", "FindPackage"})) {
         const Value *p = args.get(0, {"package", "package_name"});
-        return p ? std::optional(Value::substitution(withKind(K::FindPackagePrefix, {}, {p->toSubstitution()})))
+        return p ? std::optional(Value::substitution(
+                       withKind(K::FindPackagePrefix, {}, {p->toSubstitution()})))
                  : std::nullopt;
     }
     if (name == QLatin1String("PathJoinSubstitution")) {
         const Value *list = args.get(0, {"substitutions"});
-        return list ? std::optional(Value::substitution(withKind(K::PathJoin, {}, partsOf(*list)))) : std::nullopt;
+        return list ? std::optional(Value::substitution(withKind(K::PathJoin, {}, partsOf(*list))))
+                    : std::nullopt;
     }
     if (oneOf(name, {"ThisLaunchFileDir", "ThisDir"}))
         return Value::substitution(withKind(K::ThisLaunchFileDir));
@@ -115,7 +122,8 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
         const Value *l = args.get(0, {"left"}), *r = args.get(1, {"right"});
         if (!l || !r)
             return std::nullopt;
-        const QString op = name.startsWith(QLatin1String("Not")) ? QStringLiteral("' != '") : QStringLiteral("' == '");
+        const QString op = name.startsWith(QLatin1String("Not")) ? QStringLiteral("' != '")
+                                                                 : QStringLiteral("' == '");
         return Value::substitution(evaluation({Substitution::literal(kQuote), l->toSubstitution(),
                                                Substitution::literal(op), r->toSubstitution(),
                                                Substitution::literal(kQuote)}));
@@ -124,11 +132,14 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
         const Value *l = args.get(0, {"left"}), *r = args.get(1, {"right"});
         if (!l || !r)
             return std::nullopt;
-        const QString op = name.startsWith(QLatin1String("And")) ? QStringLiteral(" and ") : QStringLiteral(" or ");
-        return Value::substitution(evaluation({l->toSubstitution(), Substitution::literal(op), r->toSubstitution()}));
+        const QString op = name.startsWith(QLatin1String("And")) ? QStringLiteral(" and ")
+                                                                 : QStringLiteral(" or ");
+        return Value::substitution(
+            evaluation({l->toSubstitution(), Substitution::literal(op), r->toSubstitution()}));
     }
     if (name == QLatin1String("NotSubstitution") && a0)
-        return Value::substitution(evaluation({Substitution::literal(QStringLiteral("not ")), a0->toSubstitution()}));
+        return Value::substitution(
+            evaluation({Substitution::literal(QStringLiteral("not ")), a0->toSubstitution()}));
     if (oneOf(name, {"ParameterFile", "ParameterValue"})) {
         const Value *v = args.get(0, {"param_file", "value"});
         return v ? *v : Value::unknown(textOfCall(call), m_tree.evidence(call));
@@ -147,18 +158,21 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
         const Value *expected = args.get(1, {"expected_value"});
         if (!var)
             return std::nullopt;
-        const QString op = name.contains(QLatin1String("Not")) ? QStringLiteral("' != '") : QStringLiteral("' == '");
+        const QString op = name.contains(QLatin1String("Not")) ? QStringLiteral("' != '")
+                                                               : QStringLiteral("' == '");
         Value c;
         c.type = Value::Type::Condition;
-        c.condition.expression = evaluation({Substitution::literal(kQuote), Substitution::configuration(nameText(*var)),
-                                             Substitution::literal(op),
-                                             expected ? expected->toSubstitution() : Substitution::literal(QString()),
-                                             Substitution::literal(kQuote)});
+        c.condition.expression =
+            evaluation({Substitution::literal(kQuote), Substitution::configuration(nameText(*var)),
+                        Substitution::literal(op),
+                        expected ? expected->toSubstitution() : Substitution::literal(QString()),
+                        Substitution::literal(kQuote)});
         c.condition.text = textOfCall(call);
         return c;
     }
-    if (oneOf(name, {"PythonLaunchDescriptionSource", "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
-                     "AnyLaunchDescriptionSource", "FrontendLaunchDescriptionSource"})) {
+    if (oneOf(name, {"PythonLaunchDescriptionSource", "XMLLaunchDescriptionSource",
+                     "YAMLLaunchDescriptionSource", "AnyLaunchDescriptionSource",
+                     "FrontendLaunchDescriptionSource"})) {
         const Value *path = args.get(0, {"launch_file_path"});
         if (!path)
             return std::nullopt;
@@ -194,21 +208,24 @@ QList<LaunchRemap> PythonLaunchEvaluator::remaps(const Value &value, const Evide
     return out;
 }
 
-QList<LaunchParameter> PythonLaunchEvaluator::parameters(const Value &value, const Evidence &evidence) const
+QList<LaunchParameter> PythonLaunchEvaluator::parameters(const Value &value,
+                                                         const Evidence &evidence) const
 {
     QList<LaunchParameter> out;
-    std::function<void(const Value &, const Substitution &)> addDict = [&](const Value &dict, const Substitution &prefix) {
-        for (const auto &e : dict.dict->entries) {
-            Substitution name = e.first.toSubstitution();
-            if (!prefix.isEmpty())
-                name = concatenate({prefix, Substitution::literal(QStringLiteral(".")), name});
-            if (e.second.type == Value::Type::Dict)
-                addDict(e.second, name); // nested dictionaries are dotted names (launch_ros)
-            else
-                out << LaunchParameter{name, e.second.toParameterValue(), false, evidence};
-        }
-    };
-    for (const Value &item : value.type == Value::Type::List ? value.items() : QList<Value>{value}) {
+    std::function<void(const Value &, const Substitution &)> addDict =
+        [&](const Value &dict, const Substitution &prefix) {
+            for (const auto &e : dict.dict->entries) {
+                Substitution name = e.first.toSubstitution();
+                if (!prefix.isEmpty())
+                    name = concatenate({prefix, Substitution::literal(QStringLiteral(".")), name});
+                if (e.second.type == Value::Type::Dict)
+                    addDict(e.second, name); // nested dictionaries are dotted names (launch_ros)
+                else
+                    out << LaunchParameter{name, e.second.toParameterValue(), false, evidence};
+            }
+        };
+    for (const Value &item :
+         value.type == Value::Type::List ? value.items() : QList<Value>{value}) {
         if (item.type == Value::Type::Dict)
             addDict(item, Substitution());
         else if (item.type != Value::Type::None && item.type != Value::Type::Skip)
@@ -217,7 +234,8 @@ QList<LaunchParameter> PythonLaunchEvaluator::parameters(const Value &value, con
     return out;
 }
 
-void PythonLaunchEvaluator::readNodeFields(LaunchAction &a, const CallArgs &args, const Evidence &evidence) const
+void PythonLaunchEvaluator::readNodeFields(LaunchAction &a, const CallArgs &args,
+                                           const Evidence &evidence) const
 {
     auto read = [&](Substitution &field, std::initializer_list<const char *> names) {
         if (const Value *v = args.get(-1, names); given(v))
@@ -240,13 +258,14 @@ void PythonLaunchEvaluator::readNodeFields(LaunchAction &a, const CallArgs &args
         const QList<Value> items = list->items();
         for (qsizetype i = 0; i + 1 < items.size(); ++i) {
             const Value &flag = items.at(i), &rule = items.at(i + 1);
-            if (flag.type != Value::Type::String
-                || !(flag.text == QLatin1String("-r") || flag.text == QLatin1String("--remap")))
+            if (flag.type != Value::Type::String ||
+                !(flag.text == QLatin1String("-r") || flag.text == QLatin1String("--remap")))
                 continue;
-            if (rule.type == Value::Type::String && rule.text.contains(QLatin1String(":="))
-                && !rule.text.startsWith(QLatin1String("__"))) {
-                a.remaps << LaunchRemap{Substitution::literal(rule.text.section(QLatin1String(":="), 0, 0)),
-                                        Substitution::literal(rule.text.section(QLatin1String(":="), 1)), evidence};
+            if (rule.type == Value::Type::String && rule.text.contains(QLatin1String(":=")) &&
+                !rule.text.startsWith(QLatin1String("__"))) {
+                a.remaps << LaunchRemap{
+                    Substitution::literal(rule.text.section(QLatin1String(":="), 0, 0)),
+                    Substitution::literal(rule.text.section(QLatin1String(":="), 1)), evidence};
             }
         }
     }
@@ -315,7 +334,8 @@ Value PythonLaunchEvaluator::makeOpaque(const QString &name, const CallArgs &arg
         callArgs.positional << context;
         if (const Value *extra = args.get(-1, {"args"}); given(extra))
             callArgs.positional += extra->items();
-        if (const Value *kwargs = args.get(-1, {"kwargs"}); given(kwargs) && kwargs->type == Value::Type::Dict)
+        if (const Value *kwargs = args.get(-1, {"kwargs"});
+            given(kwargs) && kwargs->type == Value::Type::Dict)
             for (const auto &e : kwargs->dict->entries)
                 callArgs.keywords.append({e.first.text, e.second});
     } else if (!ts::is(function->node, "lambda")) {
@@ -336,7 +356,8 @@ Value PythonLaunchEvaluator::makeOpaque(const QString &name, const CallArgs &arg
     return Value::action(out);
 }
 
-std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, const CallArgs &args, TSNode call)
+std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, const CallArgs &args,
+                                                          TSNode call)
 {
     using K = LaunchAction::Kind;
     if (std::optional<Value> s = callSubstitutionApi(name, args, call))
@@ -372,8 +393,9 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
     if (name == QLatin1String("LoadComposableNodes")) {
         LaunchAction a = make(K::LoadComposableNodes);
         if (const Value *target = args.get(-1, {"target_container"}); given(target)) {
-            const bool container = target->type == Value::Type::Action && !target->actions->isEmpty()
-                                   && target->actions->first().kind == K::ComposableContainer;
+            const bool container = target->type == Value::Type::Action &&
+                                   !target->actions->isEmpty() &&
+                                   target->actions->first().kind == K::ComposableContainer;
             a.target = container ? target->actions->first().name : target->toSubstitution();
         }
         if (const Value *nodes = args.get(-1, {"composable_node_descriptions"}); given(nodes))
@@ -385,10 +407,12 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
         const Value *actions = args.get(name == QLatin1String("GroupAction") ? 0 : -1, {"actions"});
         if (name == QLatin1String("TimerAction")) {
             a.scoped = false;
-        } else if (const Value *scoped = args.get(-1, {"scoped"}); scoped && scoped->truth().has_value()) {
+        } else if (const Value *scoped = args.get(-1, {"scoped"});
+                   scoped && scoped->truth().has_value()) {
             a.scoped = *scoped->truth();
         }
-        if (const Value *configs = args.get(-1, {"launch_configurations"}); given(configs) && configs->type == Value::Type::Dict) {
+        if (const Value *configs = args.get(-1, {"launch_configurations"});
+            given(configs) && configs->type == Value::Type::Dict) {
             for (const auto &e : configs->dict->entries) {
                 LaunchAction set = make(K::SetLaunchConfiguration);
                 set.condition = {};
@@ -411,8 +435,8 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
     if (name == QLatin1String("SetRemap")) {
         LaunchAction a = make(K::SetRemap);
         const Value *src = args.get(0, {"src"}), *dst = args.get(1, {"dst"});
-        a.remaps << LaunchRemap{src ? src->toSubstitution() : Substitution(), dst ? dst->toSubstitution() : Substitution(),
-                                evidence};
+        a.remaps << LaunchRemap{src ? src->toSubstitution() : Substitution(),
+                                dst ? dst->toSubstitution() : Substitution(), evidence};
         return Value::action({a});
     }
     if (oneOf(name, {"SetParameter", "SetUseSimTime"})) {
@@ -420,15 +444,17 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
         const bool simTime = name == QLatin1String("SetUseSimTime");
         const Value *n = simTime ? nullptr : args.get(0, {"name"});
         const Value *v = args.get(simTime ? 0 : 1, {"value"});
-        a.parameters << LaunchParameter{simTime ? Substitution::literal(QStringLiteral("use_sim_time"))
-                                                : (n ? n->toSubstitution() : Substitution()),
-                                        v ? v->toParameterValue() : Substitution(), false, evidence};
+        a.parameters << LaunchParameter{
+            simTime ? Substitution::literal(QStringLiteral("use_sim_time"))
+                    : (n ? n->toSubstitution() : Substitution()),
+            v ? v->toParameterValue() : Substitution(), false, evidence};
         return Value::action({a});
     }
     if (name == QLatin1String("SetParametersFromFile")) {
         LaunchAction a = make(K::SetParameter);
         const Value *f = args.get(0, {"filename"});
-        a.parameters << LaunchParameter{Substitution(), f ? f->toSubstitution() : Substitution(), true, evidence};
+        a.parameters << LaunchParameter{Substitution(), f ? f->toSubstitution() : Substitution(),
+                                        true, evidence};
         return Value::action({a});
     }
     if (name == QLatin1String("DeclareLaunchArgument")) {
@@ -440,7 +466,8 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
             a.hasValue = true;
         }
         if (const Value *d = args.get(2, {"description"}); given(d))
-            a.description = d->type == Value::Type::String ? d->text : d->toSubstitution().describe();
+            a.description =
+                d->type == Value::Type::String ? d->text : d->toSubstitution().describe();
         return Value::action({a});
     }
     if (name == QLatin1String("SetLaunchConfiguration")) {
@@ -467,7 +494,8 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
         }
         return Value::action(out);
     }
-    if (oneOf(name, {"OnProcessExit", "OnProcessStart", "OnExecutionComplete", "OnStateTransition"})) {
+    if (oneOf(name,
+              {"OnProcessExit", "OnProcessStart", "OnExecutionComplete", "OnStateTransition"})) {
         Value handler = Value::unknown(textOfCall(call), evidence);
         QList<LaunchAction> started;
         for (const char *key : {"on_exit", "on_start", "on_completion", "entities"})
@@ -477,8 +505,9 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
         return handler;
     }
     // Harmless for the architecture: recorded as nothing.
-    if (oneOf(name, {"LogInfo", "SetEnvironmentVariable", "AppendEnvironmentVariable", "PrependEnvironmentVariable",
-                     "UnsetEnvironmentVariable", "SetROSLogDir", "EmitEvent", "Shutdown"}))
+    if (oneOf(name, {"LogInfo", "SetEnvironmentVariable", "AppendEnvironmentVariable",
+                     "PrependEnvironmentVariable", "UnsetEnvironmentVariable", "SetROSLogDir",
+                     "EmitEvent", "Shutdown"}))
         return Value::skip();
     return std::nullopt;
 }

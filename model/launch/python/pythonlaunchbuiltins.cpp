@@ -68,15 +68,18 @@ Value joinPaths(const QList<Value> &parts)
 Value dirname(const Value &v, const QString &text)
 {
     if (v.type == Value::Type::String)
-        return Value::string(v.text.contains(QLatin1Char('/')) ? v.text.section(QLatin1Char('/'), 0, -2) : QString());
+        return Value::string(v.text.contains(QLatin1Char('/'))
+                                 ? v.text.section(QLatin1Char('/'), 0, -2)
+                                 : QString());
     if (v.type == Value::Type::Subst) {
         if (v.subst.kind == Substitution::Kind::ThisLaunchFile) {
             Substitution dir;
             dir.kind = Substitution::Kind::ThisLaunchFileDir;
             return Value::substitution(dir);
         }
-        if (v.subst.kind == Substitution::Kind::PathJoin && v.subst.parts.size() > 1
-            && v.subst.parts.last().isLiteral() && !v.subst.parts.last().text.contains(QLatin1Char('/'))) {
+        if (v.subst.kind == Substitution::Kind::PathJoin && v.subst.parts.size() > 1 &&
+            v.subst.parts.last().isLiteral() &&
+            !v.subst.parts.last().text.contains(QLatin1Char('/'))) {
             Substitution s = v.subst;
             s.parts.removeLast();
             return Value::substitution(s.parts.size() == 1 ? s.parts.first() : s);
@@ -86,7 +89,8 @@ Value dirname(const Value &v, const QString &text)
 }
 } // namespace
 
-std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, const CallArgs &args, TSNode call)
+std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, const CallArgs &args,
+                                                        TSNode call)
 {
     using T = Value::Type;
     const Value *a0 = args.get(0);
@@ -101,8 +105,9 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
             return Value::string(a0->text.section(QLatin1Char('/'), -1));
         return Value::unknown(text, evidence);
     }
-    if (oneOf(dotted, {"os.path.abspath", "os.path.realpath", "os.path.normpath", "os.path.expanduser",
-                       "os.fspath", "path.abspath", "path.realpath", "path.normpath"}))
+    if (oneOf(dotted,
+              {"os.path.abspath", "os.path.realpath", "os.path.normpath", "os.path.expanduser",
+               "os.fspath", "path.abspath", "path.realpath", "path.normpath"}))
         return a0 ? *a0 : Value::unknown(text, evidence);
     if (oneOf(dotted, {"os.environ.get", "os.getenv"}))
         return environmentVariable(a0, args.get(1, {"default"}), text);
@@ -124,7 +129,8 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
             double d = a0->type == T::String ? a0->text.trimmed().toDouble(&ok)
                                              : (a0->type == T::Bool ? a0->boolean : a0->number);
             if (ok)
-                return dotted == QLatin1String("int") ? Value::number_(std::trunc(d)) : Value::number_(d);
+                return dotted == QLatin1String("int") ? Value::number_(std::trunc(d))
+                                                      : Value::number_(d);
         }
         return Value::unknown(text, evidence);
     }
@@ -154,7 +160,8 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
             for (const Value &v : items)
                 if (v.type != T::String)
                     return newList(items);
-            std::stable_sort(items.begin(), items.end(), [](const Value &x, const Value &y) { return x.text < y.text; });
+            std::stable_sort(items.begin(), items.end(),
+                             [](const Value &x, const Value &y) { return x.text < y.text; });
         }
         return newList(items, dotted == QLatin1String("tuple"));
     }
@@ -229,7 +236,8 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
     return std::nullopt;
 }
 
-Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &method, const CallArgs &args, TSNode call)
+Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &method,
+                                        const CallArgs &args, TSNode call)
 {
     using T = Value::Type;
     const Value *a0 = args.get(0);
@@ -256,9 +264,10 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
             return Value::none();
         }
         if (is({"insert"}) && a0 && a1 && a0->type == T::Number) {
-            const qsizetype at = qBound<qsizetype>(0, a0->number < 0 ? list.items.size() + qsizetype(a0->number)
-                                                                     : qsizetype(a0->number),
-                                                   list.items.size());
+            const qsizetype at = qBound<qsizetype>(
+                0,
+                a0->number < 0 ? list.items.size() + qsizetype(a0->number) : qsizetype(a0->number),
+                list.items.size());
             list.items.insert(at, *a1);
             list.guards.insert(at, relativeGuards(list.createdUnder, m_guards));
             return Value::none();
@@ -268,7 +277,8 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
         if (is({"pop"}) && !list.items.isEmpty()) {
             qsizetype at = list.items.size() - 1;
             if (a0 && a0->type == T::Number)
-                at = a0->number < 0 ? list.items.size() + qsizetype(a0->number) : qsizetype(a0->number);
+                at = a0->number < 0 ? list.items.size() + qsizetype(a0->number)
+                                    : qsizetype(a0->number);
             if (at >= 0 && at < list.items.size()) {
                 const Value v = list.items.takeAt(at);
                 list.guards.removeAt(at);
@@ -357,11 +367,13 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
         if (is({"replace"}) && a0 && a1 && a0->type == T::String && a1->type == T::String)
             return Value::string(QString(s).replace(a0->text, a1->text));
         if (is({"startswith", "endswith"}) && a0 && a0->type == T::String)
-            return Value::boolean_(method == QLatin1String("startswith") ? s.startsWith(a0->text) : s.endsWith(a0->text));
+            return Value::boolean_(method == QLatin1String("startswith") ? s.startsWith(a0->text)
+                                                                         : s.endsWith(a0->text));
         if (is({"split"})) {
-            const QStringList pieces = a0 && a0->type == T::String
-                                           ? s.split(a0->text)
-                                           : s.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+            const QStringList pieces =
+                a0 && a0->type == T::String
+                    ? s.split(a0->text)
+                    : s.simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts);
             QList<Value> items;
             for (const QString &p : pieces)
                 items << Value::string(p);
@@ -394,7 +406,8 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
 }
 
 Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Value> &positional,
-                                          const QList<QPair<QString, Value>> &keywords, bool percent, TSNode node)
+                                          const QList<QPair<QString, Value>> &keywords,
+                                          bool percent, TSNode node)
 {
     QList<Substitution> parts;
     QString literal;
@@ -420,8 +433,9 @@ Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Val
                 const Value &v = positional.at(next++);
                 flush();
                 if (type == QLatin1Char('d') || type == QLatin1Char('i'))
-                    parts << (v.type == Value::Type::Number ? Substitution::literal(QString::number(qint64(v.number)))
-                                                            : textOfValue(v));
+                    parts << (v.type == Value::Type::Number
+                                  ? Substitution::literal(QString::number(qint64(v.number)))
+                                  : textOfValue(v));
                 else if (type == QLatin1Char('r') && v.type == Value::Type::String)
                     parts << Substitution::literal(QLatin1Char('\'') + v.text + QLatin1Char('\''));
                 else
@@ -441,7 +455,9 @@ Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Val
             const qsizetype close = format.indexOf(QLatin1Char('}'), i);
             if (close < 0)
                 return unknownAt(node);
-            QString field = format.mid(i + 1, close - i - 1).section(QLatin1Char(':'), 0, 0).section(QLatin1Char('!'), 0, 0);
+            QString field = format.mid(i + 1, close - i - 1)
+                                .section(QLatin1Char(':'), 0, 0)
+                                .section(QLatin1Char('!'), 0, 0);
             const Value *v = nullptr;
             bool isIndex = false;
             const int index = field.toInt(&isIndex);

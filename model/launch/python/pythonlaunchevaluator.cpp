@@ -31,8 +31,7 @@ GuardPtr negated(const GuardPtr &g)
 
 } // namespace
 
-PythonLaunchEvaluator::PythonLaunchEvaluator(const SyntaxTree &tree)
-    : m_tree(tree)
+PythonLaunchEvaluator::PythonLaunchEvaluator(const SyntaxTree &tree) : m_tree(tree)
 {
     m_module = newScope(nullptr);
 }
@@ -56,8 +55,8 @@ TSNode PythonLaunchEvaluator::launchFunction(const SyntaxTree &tree)
 {
     for (TSNode n : ts::namedChildren(tree.root())) {
         TSNode def = py::undecorated(n);
-        if (ts::is(def, "function_definition")
-            && tree.view(ts::field(def, "name")) == "generate_launch_description")
+        if (ts::is(def, "function_definition") &&
+            tree.view(ts::field(def, "name")) == "generate_launch_description")
             return def;
     }
     return TSNode{};
@@ -73,8 +72,8 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
         if (stopped())
             break;
         // Module-level calls (main(), launch_testing runners) are not part of the description.
-        if (ts::is(statement, "expression_statement")
-            && ts::is(ts_node_named_child(statement, 0), "call"))
+        if (ts::is(statement, "expression_statement") &&
+            ts::is(ts_node_named_child(statement, 0), "call"))
             continue;
         execStatement(statement);
     }
@@ -85,20 +84,23 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
     if (!function || function->type != Value::Type::Function) {
         Diagnostic d;
         d.code = QStringLiteral("no-launch-description");
-        d.message = QStringLiteral("%1 defines no generate_launch_description().").arg(m_tree.file());
+        d.message =
+            QStringLiteral("%1 defines no generate_launch_description().").arg(m_tree.file());
         d.evidence.file = m_tree.file();
         m_diagnostics << d;
         return actions;
     }
     const Value result = callFunction(*function, CallArgs{}, TSNode{});
-    if (result.type == Value::Type::List || result.type == Value::Type::Action
-        || result.type == Value::Type::Unknown) {
+    if (result.type == Value::Type::List || result.type == Value::Type::Action ||
+        result.type == Value::Type::Unknown) {
         actions = toActions(result);
     } else if (!m_exhausted) {
         Diagnostic d;
         d.code = QStringLiteral("launch-description-unknown");
-        d.message = QStringLiteral("generate_launch_description() in %1 returns no launch description "
-                                   "that can be read statically.").arg(m_tree.file());
+        d.message =
+            QStringLiteral("generate_launch_description() in %1 returns no launch description "
+                           "that can be read statically.")
+                .arg(m_tree.file());
         d.evidence = m_tree.evidence(ts::field(function->node, "name"));
         m_diagnostics << d;
     }
@@ -106,7 +108,8 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
         Diagnostic d;
         d.code = QStringLiteral("launch-evaluation-limit");
         d.message = QStringLiteral("%1 needs more evaluation steps than allowed; the launch "
-                                   "description may be incomplete.").arg(m_tree.file());
+                                   "description may be incomplete.")
+                        .arg(m_tree.file());
         d.evidence.file = m_tree.file();
         m_diagnostics << d;
     }
@@ -168,8 +171,10 @@ void PythonLaunchEvaluator::execStatement(TSNode n)
                 else
                     append(current, right);
             } else if (op == "+=" && current.isStringLike() && right.isStringLike()) {
-                assign(left, Value::substitution(concatenate({current.toSubstitution(), right.toSubstitution()})));
-            } else if (op == "+=" && current.type == Value::Type::Number && right.type == Value::Type::Number) {
+                assign(left, Value::substitution(
+                                 concatenate({current.toSubstitution(), right.toSubstitution()})));
+            } else if (op == "+=" && current.type == Value::Type::Number &&
+                       right.type == Value::Type::Number) {
                 assign(left, Value::number_(current.number + right.number));
             } else {
                 assign(left, unknownAt(e));
@@ -239,7 +244,8 @@ void PythonLaunchEvaluator::execImport(TSNode n)
                 const QString first = m_tree.text(name).section(QLatin1Char('.'), 0, 0);
                 bind(first, Value::module(first));
             } else if (ts::is(name, "aliased_import")) {
-                bind(m_tree.text(ts::field(name, "alias")), Value::module(m_tree.text(ts::field(name, "name"))));
+                bind(m_tree.text(ts::field(name, "alias")),
+                     Value::module(m_tree.text(ts::field(name, "name"))));
             }
         }
         return;
@@ -251,7 +257,8 @@ void PythonLaunchEvaluator::execImport(TSNode n)
             const QString text = m_tree.text(name);
             bind(text, Value::module(prefix + text));
         } else if (ts::is(name, "aliased_import")) {
-            bind(m_tree.text(ts::field(name, "alias")), Value::module(prefix + m_tree.text(ts::field(name, "name"))));
+            bind(m_tree.text(ts::field(name, "alias")),
+                 Value::module(prefix + m_tree.text(ts::field(name, "name"))));
         }
     }
 }
@@ -269,8 +276,8 @@ void PythonLaunchEvaluator::assign(TSNode target, const Value &value)
     const std::string_view t = ts::type(target);
     if (t == "identifier") {
         bind(m_tree.text(target), value);
-    } else if (t == "pattern_list" || t == "tuple_pattern" || t == "list_pattern" || t == "tuple"
-               || t == "list" || t == "expression_list") {
+    } else if (t == "pattern_list" || t == "tuple_pattern" || t == "list_pattern" || t == "tuple" ||
+               t == "list" || t == "expression_list") {
         bool known = false;
         const QList<Value> items = iterate(value, &known);
         const std::vector<TSNode> targets = ts::namedChildren(target);
@@ -387,7 +394,8 @@ void PythonLaunchEvaluator::execIfChain(const QList<TSNode> &clauses, qsizetype 
     frame.continuing = useElse ? elseContinuing : thenContinuing;
 }
 
-Value PythonLaunchEvaluator::combineReturns(const GuardPtr &guard, const Value &taken, const Value &other)
+Value PythonLaunchEvaluator::combineReturns(const GuardPtr &guard, const Value &taken,
+                                            const Value &other)
 {
     if (!holdsActions(taken) && !holdsActions(other))
         return taken;
@@ -412,7 +420,8 @@ void PythonLaunchEvaluator::execFor(TSNode n)
     if (!known) {
         // Loop over something unknown: its body once, under an undecided guard.
         auto guard = std::make_shared<Guard>();
-        guard->text = oneLine(QStringLiteral("for %1 in %2").arg(textOf(left), textOf(ts::field(n, "right"))));
+        guard->text = oneLine(
+            QStringLiteral("for %1 in %2").arg(textOf(left), textOf(ts::field(n, "right"))));
         guard->evidence = m_tree.evidence(n);
         assign(left, unknownAt(left));
         m_guards.append(guard);
@@ -429,8 +438,10 @@ void PythonLaunchEvaluator::execFor(TSNode n)
         if (++count > kMaxIterations) {
             Diagnostic d;
             d.code = QStringLiteral("launch-loop-limit");
-            d.message = QStringLiteral("A loop in %1 runs more than %2 times; only the first %2 are read.")
-                            .arg(m_tree.file()).arg(kMaxIterations);
+            d.message =
+                QStringLiteral("A loop in %1 runs more than %2 times; only the first %2 are read.")
+                    .arg(m_tree.file())
+                    .arg(kMaxIterations);
             d.evidence = m_tree.evidence(n);
             if (!m_diagnostics.contains(d))
                 m_diagnostics << d;
@@ -473,7 +484,8 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
         } else if (t == "default_parameter" || t == "typed_default_parameter") {
             nameNode = ts::field(p, "name");
             defaultNode = ts::field(p, "value");
-        } else if (t == "typed_parameter" || t == "list_splat_pattern" || t == "dictionary_splat_pattern") {
+        } else if (t == "typed_parameter" || t == "list_splat_pattern" ||
+                   t == "dictionary_splat_pattern") {
             TSNode inner = t == "typed_parameter" ? ts_node_named_child(p, 0) : p;
             if (ts::is(inner, "identifier")) {
                 nameNode = inner;
@@ -510,7 +522,8 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
         Value kwargs = newDict();
         for (qsizetype k = 0; k < args.keywords.size(); ++k)
             if (!usedKeyword.at(k))
-                kwargs.dict->set(Value::string(args.keywords.at(k).first), args.keywords.at(k).second);
+                kwargs.dict->set(Value::string(args.keywords.at(k).first),
+                                 args.keywords.at(k).second);
         frame.scope->vars.insert(starStarName, kwargs);
     }
 
@@ -521,7 +534,8 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
         execBlock(ts::field(function.node, "body"));
         result = frame.returned ? frame.returnValue : Value::none();
         for (qsizetype i = frame.pendingReturns.size() - 1; i >= 0; --i)
-            result = combineReturns(frame.pendingReturns.at(i).first, frame.pendingReturns.at(i).second, result);
+            result = combineReturns(frame.pendingReturns.at(i).first,
+                                    frame.pendingReturns.at(i).second, result);
     }
     --m_callDepth;
     m_frame = caller;

@@ -96,7 +96,8 @@ private:
 
     // Launch API (pythonlaunchapi.cpp)
     std::optional<Value> callLaunchApi(const QString &name, const CallArgs &args, TSNode call);
-    std::optional<Value> callSubstitutionApi(const QString &name, const CallArgs &args, TSNode call);
+    std::optional<Value> callSubstitutionApi(const QString &name, const CallArgs &args,
+                                             TSNode call);
     Value makeNode(const QString &name, const CallArgs &args, TSNode call);
     Value makeInclude(const CallArgs &args, TSNode call);
     Value makeOpaque(const QString &name, const CallArgs &args, TSNode call);

@@ -26,13 +26,26 @@ QString decodeEscapes(const QString &s)
         }
         const QChar n = s.at(++i);
         switch (n.unicode()) {
-        case 'n': out += QLatin1Char('\n'); break;
-        case 't': out += QLatin1Char('\t'); break;
-        case 'r': out += QLatin1Char('\r'); break;
-        case '\\': out += QLatin1Char('\\'); break;
-        case '\'': out += QLatin1Char('\''); break;
-        case '"': out += QLatin1Char('"'); break;
-        case '\n': break; // line continuation
+        case 'n':
+            out += QLatin1Char('\n');
+            break;
+        case 't':
+            out += QLatin1Char('\t');
+            break;
+        case 'r':
+            out += QLatin1Char('\r');
+            break;
+        case '\\':
+            out += QLatin1Char('\\');
+            break;
+        case '\'':
+            out += QLatin1Char('\'');
+            break;
+        case '"':
+            out += QLatin1Char('"');
+            break;
+        case '\n':
+            break; // line continuation
         default:
             out += QLatin1Char('\\');
             out += n;
@@ -41,7 +54,8 @@ QString decodeEscapes(const QString &s)
     return out;
 }
 
-/// The text a value contributes to a string (f-string, str(), format): literals as Python prints them.
+/// The text a value contributes to a string (f-string, str(), format): literals as Python prints
+/// them.
 Substitution asText(const Value &v)
 {
     if (const auto literal = v.literalText())
@@ -58,9 +72,9 @@ std::optional<bool> compare(std::string_view op, const Value &a, const Value &b)
             eq = a.sameLiteral(b);
         else if (a.type == T::Subst && b.type == T::Subst && a.subst == b.subst)
             eq = true;
-        else if ((a.type == T::None) != (b.type == T::None)
-                 && (a.type == T::List || b.type == T::List || a.type == T::Dict || b.type == T::Dict
-                     || a.type == T::Action || b.type == T::Action))
+        else if ((a.type == T::None) != (b.type == T::None) &&
+                 (a.type == T::List || b.type == T::List || a.type == T::Dict ||
+                  b.type == T::Dict || a.type == T::Action || b.type == T::Action))
             eq = false;
         if (!eq)
             return std::nullopt;
@@ -72,7 +86,8 @@ std::optional<bool> compare(std::string_view op, const Value &a, const Value &b)
             const Value &other = a.type == T::None ? b : a;
             if (other.type == T::None)
                 same = true;
-            else if (other.type != T::Unknown && other.type != T::Module && other.type != T::Context)
+            else if (other.type != T::Unknown && other.type != T::Module &&
+                     other.type != T::Context)
                 same = false;
         } else if (a.type == T::Bool && b.type == T::Bool) {
             same = a.boolean == b.boolean;
@@ -108,17 +123,25 @@ std::optional<bool> compare(std::string_view op, const Value &a, const Value &b)
     if ((a.type == T::Number || a.type == T::Bool) && (b.type == T::Number || b.type == T::Bool)) {
         const double x = a.type == T::Bool ? a.boolean : a.number;
         const double y = b.type == T::Bool ? b.boolean : b.number;
-        if (op == "<") return x < y;
-        if (op == "<=") return x <= y;
-        if (op == ">") return x > y;
-        if (op == ">=") return x >= y;
+        if (op == "<")
+            return x < y;
+        if (op == "<=")
+            return x <= y;
+        if (op == ">")
+            return x > y;
+        if (op == ">=")
+            return x >= y;
     }
     if (a.type == T::String && b.type == T::String) {
         const int c = a.text.compare(b.text);
-        if (op == "<") return c < 0;
-        if (op == "<=") return c <= 0;
-        if (op == ">") return c > 0;
-        if (op == ">=") return c >= 0;
+        if (op == "<")
+            return c < 0;
+        if (op == "<=")
+            return c <= 0;
+        if (op == ">")
+            return c > 0;
+        if (op == ">=")
+            return c >= 0;
     }
     return std::nullopt;
 }
@@ -165,7 +188,8 @@ QList<Value> PythonLaunchEvaluator::iterate(const Value &value, bool *known) con
 {
     *known = true;
     switch (value.type) {
-    case Value::Type::List: return value.items();
+    case Value::Type::List:
+        return value.items();
     case Value::Type::Dict: {
         QList<Value> keys;
         for (const auto &e : value.dict->entries)
@@ -178,7 +202,9 @@ QList<Value> PythonLaunchEvaluator::iterate(const Value &value, bool *known) con
             chars << Value::string(QString(c));
         return chars;
     }
-    default: *known = false; return {};
+    default:
+        *known = false;
+        return {};
     }
 }
 
@@ -254,8 +280,8 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
         }
         return d;
     }
-    if (t == "list_comprehension" || t == "generator_expression" || t == "set_comprehension"
-        || t == "dictionary_comprehension")
+    if (t == "list_comprehension" || t == "generator_expression" || t == "set_comprehension" ||
+        t == "dictionary_comprehension")
         return evalComprehension(n);
     if (t == "binary_operator")
         return evalBinary(n);
@@ -263,8 +289,9 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
         const Value v = eval(ts::field(n, "argument"));
         const std::string_view op = m_tree.view(ts::field(n, "operator"));
         if (v.type == Value::Type::Number && op == "-")
-            return Value::number_(-v.number, v.text.startsWith(QLatin1Char('-')) ? v.text.mid(1)
-                                                                                   : QLatin1Char('-') + v.text);
+            return Value::number_(-v.number, v.text.startsWith(QLatin1Char('-'))
+                                                 ? v.text.mid(1)
+                                                 : QLatin1Char('-') + v.text);
         if (v.type == Value::Type::Number && op == "+")
             return v;
         return unknownAt(n);
@@ -324,7 +351,8 @@ Value PythonLaunchEvaluator::evalString(TSNode n)
             if (!raw)
                 text = decodeEscapes(text);
             if (formatted)
-                text.replace(QStringLiteral("{{"), QStringLiteral("{")).replace(QStringLiteral("}}"), QStringLiteral("}"));
+                text.replace(QStringLiteral("{{"), QStringLiteral("{"))
+                    .replace(QStringLiteral("}}"), QStringLiteral("}"));
             parts << Substitution::literal(text);
         } else if (t == "interpolation") {
             parts << asText(eval(ts::field(c, "expression")));
@@ -358,7 +386,8 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
     const Value a = eval(ts::field(n, "left"));
     const Value b = eval(ts::field(n, "right"));
     const std::string_view op = m_tree.view(ts::field(n, "operator"));
-    const bool numbers = (a.type == T::Number || a.type == T::Bool) && (b.type == T::Number || b.type == T::Bool);
+    const bool numbers =
+        (a.type == T::Number || a.type == T::Bool) && (b.type == T::Number || b.type == T::Bool);
     const double x = a.type == T::Bool ? a.boolean : a.number;
     const double y = b.type == T::Bool ? b.boolean : b.number;
     if (op == "+") {
@@ -380,7 +409,8 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
         };
         if ((a.isStringLike() || b.isStringLike()) && stringish(a) && stringish(b)) {
             const Substitution x = a.toSubstitution(), y = b.toSubstitution();
-            if (x.text.size() + y.text.size() > kMaxStringSize || x.parts.size() + y.parts.size() > kMaxParts)
+            if (x.text.size() + y.text.size() > kMaxStringSize ||
+                x.parts.size() + y.parts.size() > kMaxParts)
                 return unknownAt(n);
             return Value::substitution(concatenate({x, y}));
         }
@@ -391,10 +421,12 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
         QList<Value> args = b.type == T::List ? iterate(b, &known) : QList<Value>{b};
         return formatString(a.text, args, {}, true, n);
     }
-    if (op == "/" && (a.isStringLike() || a.type == T::Source) && (b.isStringLike() || b.type == T::Unknown)) {
+    if (op == "/" && (a.isStringLike() || a.type == T::Source) &&
+        (b.isStringLike() || b.type == T::Unknown)) {
         // pathlib / launch substitutions: '/' joins paths
         if (a.type == T::String && b.type == T::String)
-            return Value::string(b.text.startsWith(QLatin1Char('/')) ? b.text : a.text + QLatin1Char('/') + b.text);
+            return Value::string(
+                b.text.startsWith(QLatin1Char('/')) ? b.text : a.text + QLatin1Char('/') + b.text);
         Substitution join;
         join.kind = Substitution::Kind::PathJoin;
         const Substitution left = a.toSubstitution();
@@ -407,8 +439,8 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
     }
     if (op == "*" && (a.type == T::List || a.type == T::String) && b.type == T::Number) {
         const int times = qBound(0, int(y), 64);
-        if ((a.type == T::String ? a.text.size() : a.list->items.size()) * times
-            > (a.type == T::String ? kMaxStringSize : kMaxListSize))
+        if ((a.type == T::String ? a.text.size() : a.list->items.size()) * times >
+            (a.type == T::String ? kMaxStringSize : kMaxListSize))
             return unknownAt(n);
         if (a.type == T::String)
             return Value::string(a.text.repeated(times));
@@ -418,11 +450,16 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
         return newList(items, a.list->tuple);
     }
     if (numbers) {
-        if (op == "-") return Value::number_(x - y);
-        if (op == "*") return Value::number_(x * y);
-        if (op == "/" && y != 0) return Value::number_(x / y, QString::number(x / y, 'g', 15));
-        if (op == "//" && y != 0) return Value::number_(std::floor(x / y));
-        if (op == "%" && y != 0) return Value::number_(x - y * std::floor(x / y));
+        if (op == "-")
+            return Value::number_(x - y);
+        if (op == "*")
+            return Value::number_(x * y);
+        if (op == "/" && y != 0)
+            return Value::number_(x / y, QString::number(x / y, 'g', 15));
+        if (op == "//" && y != 0)
+            return Value::number_(std::floor(x / y));
+        if (op == "%" && y != 0)
+            return Value::number_(x - y * std::floor(x / y));
     }
     return unknownAt(n);
 }
@@ -452,7 +489,8 @@ Value PythonLaunchEvaluator::evalComparison(TSNode n)
     if (operands.size() != qsizetype(ops.size()) + 1)
         return unknownAt(n);
     for (size_t i = 0; i < ops.size(); ++i) {
-        const std::optional<bool> r = compare(ts::type(ops[i]), operands.at(qsizetype(i)), operands.at(qsizetype(i) + 1));
+        const std::optional<bool> r =
+            compare(ts::type(ops[i]), operands.at(qsizetype(i)), operands.at(qsizetype(i) + 1));
         if (!r)
             return unknownAt(n);
         if (!*r)

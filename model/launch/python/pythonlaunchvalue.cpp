@@ -101,10 +101,14 @@ Value Value::action(QList<LaunchAction> actions)
 std::optional<bool> Value::truth() const
 {
     switch (type) {
-    case Type::None: return false;
-    case Type::Bool: return boolean;
-    case Type::Number: return number != 0;
-    case Type::String: return !text.isEmpty();
+    case Type::None:
+        return false;
+    case Type::Bool:
+        return boolean;
+    case Type::Number:
+        return number != 0;
+    case Type::String:
+        return !text.isEmpty();
     case Type::List: {
         bool guarded = false;
         for (qsizetype i = 0; i < list->items.size(); ++i) {
@@ -116,16 +120,19 @@ std::optional<bool> Value::truth() const
             return std::nullopt;
         return false;
     }
-    case Type::Dict: return !dict->entries.isEmpty();
+    case Type::Dict:
+        return !dict->entries.isEmpty();
     case Type::Action:
     case Type::Condition:
     case Type::Source:
     case Type::Function:
-    case Type::Skip: return true;
+    case Type::Skip:
+        return true;
     case Type::Unknown:
     case Type::Subst:
     case Type::Module:
-    case Type::Context: return std::nullopt;
+    case Type::Context:
+        return std::nullopt;
     }
     return std::nullopt;
 }
@@ -134,10 +141,14 @@ std::optional<QString> Value::literalText() const
 {
     switch (type) {
     case Type::String:
-    case Type::Number: return text;
-    case Type::Bool: return boolean ? QStringLiteral("True") : QStringLiteral("False");
-    case Type::None: return QStringLiteral("None");
-    default: return std::nullopt;
+    case Type::Number:
+        return text;
+    case Type::Bool:
+        return boolean ? QStringLiteral("True") : QStringLiteral("False");
+    case Type::None:
+        return QStringLiteral("None");
+    default:
+        return std::nullopt;
     }
 }
 
@@ -171,11 +182,15 @@ Substitution substitutionOf(const Value &v, Walk &walk, int depth, bool paramete
         return Substitution::unknown(QStringLiteral("..."));
     switch (v.type) {
     case T::String:
-    case T::Number: return Substitution::literal(v.text);
-    case T::Bool: return Substitution::literal(v.boolean ? QStringLiteral("true") : QStringLiteral("false"));
-    case T::None: return Substitution::literal(QString());
+    case T::Number:
+        return Substitution::literal(v.text);
+    case T::Bool:
+        return Substitution::literal(v.boolean ? QStringLiteral("true") : QStringLiteral("false"));
+    case T::None:
+        return Substitution::literal(QString());
     case T::Subst:
-    case T::Source: return v.subst;
+    case T::Source:
+        return v.subst;
     case T::List: {
         QList<Substitution> parts;
         if (parameter)
@@ -191,17 +206,21 @@ Substitution substitutionOf(const Value &v, Walk &walk, int depth, bool paramete
             parts << Substitution::literal(QStringLiteral("]"));
         return concatenate(parts);
     }
-    case T::Condition: return v.condition.expression;
+    case T::Condition:
+        return v.condition.expression;
     case T::Action:
         if (v.actions && !v.actions->isEmpty() && !v.actions->first().expression.isEmpty())
             return Substitution::unknown(oneLine(v.actions->first().expression));
         return Substitution::unknown(QStringLiteral("<action>"));
-    case T::Dict: return Substitution::unknown(v.text.isEmpty() ? QStringLiteral("<dict>") : oneLine(v.text));
-    case T::Context: return Substitution::unknown(QStringLiteral("context"));
+    case T::Dict:
+        return Substitution::unknown(v.text.isEmpty() ? QStringLiteral("<dict>") : oneLine(v.text));
+    case T::Context:
+        return Substitution::unknown(QStringLiteral("context"));
     case T::Unknown:
     case T::Module:
     case T::Function:
-    case T::Skip: break;
+    case T::Skip:
+        break;
     }
     return Substitution::unknown(oneLine(v.text));
 }
@@ -267,8 +286,8 @@ const Value *Scope::lookup(const QString &name) const
 GuardPath relativeGuards(const GuardPath &createdUnder, const GuardPath &current)
 {
     qsizetype common = 0;
-    while (common < createdUnder.size() && common < current.size()
-           && createdUnder.at(common) == current.at(common))
+    while (common < createdUnder.size() && common < current.size() &&
+           createdUnder.at(common) == current.at(common))
         ++common;
     return current.mid(common);
 }
@@ -321,7 +340,8 @@ LaunchAction guardGroup(const Guard &g)
     return group;
 }
 
-void insertGuarded(QList<LaunchAction> &out, const GuardPath &path, const QList<LaunchAction> &actions)
+void insertGuarded(QList<LaunchAction> &out, const GuardPath &path,
+                   const QList<LaunchAction> &actions)
 {
     if (actions.isEmpty())
         return;
@@ -333,8 +353,8 @@ void insertGuarded(QList<LaunchAction> &out, const GuardPath &path, const QList<
     if (!out.isEmpty()) {
         LaunchAction &last = out.last();
         // Consecutive additions under the same `if` share one group.
-        if (last.kind == group.kind && !last.scoped && last.expression.isEmpty()
-            && last.condition == group.condition && last.evidence == group.evidence) {
+        if (last.kind == group.kind && !last.scoped && last.expression.isEmpty() &&
+            last.condition == group.condition && last.evidence == group.evidence) {
             insertGuarded(last.children, path.mid(1), actions);
             return;
         }
@@ -351,11 +371,13 @@ QList<LaunchAction> actionsOf(const Value &value, Walk &walk, int depth)
     if (!walk.enter(depth))
         return {};
     switch (value.type) {
-    case T::Action: return value.actions ? *value.actions : QList<LaunchAction>();
+    case T::Action:
+        return value.actions ? *value.actions : QList<LaunchAction>();
     case T::List: {
         QList<LaunchAction> out;
         for (qsizetype i = 0; i < value.list->items.size(); ++i)
-            insertGuarded(out, value.list->guards.value(i), actionsOf(value.list->items.at(i), walk, depth + 1));
+            insertGuarded(out, value.list->guards.value(i),
+                          actionsOf(value.list->items.at(i), walk, depth + 1));
         return out;
     }
     case T::Unknown:
@@ -366,7 +388,8 @@ QList<LaunchAction> actionsOf(const Value &value, Walk &walk, int depth)
         a.evidence = value.evidence;
         return {a};
     }
-    default: return {};
+    default:
+        return {};
     }
 }
 

@@ -19,7 +19,7 @@ namespace rosarch::pylaunch {
 /// added under it are wrapped into an unscoped Group with an unknown condition.
 struct Guard
 {
-    QString text;     ///< the condition as written
+    QString text; ///< the condition as written
     bool unless = false;
     Evidence evidence;
 };
@@ -33,13 +33,14 @@ struct DictData;
 /// One Python value, as far as the reader can tell.
 struct Value
 {
-    enum class Type {
-        Unknown,   ///< `text` = the expression as written
+    enum class Type
+    {
+        Unknown, ///< `text` = the expression as written
         None,
         Bool,
-        Number,    ///< `text` = as written or computed
+        Number, ///< `text` = as written or computed
         String,
-        List,      ///< list, tuple, LaunchDescription (see ListData)
+        List, ///< list, tuple, LaunchDescription (see ListData)
         Dict,
         Subst,     ///< a launch substitution (string-like)
         Action,    ///< one or more LaunchActions made by one call
@@ -47,8 +48,8 @@ struct Value
         Source,    ///< a launch description source; `subst` = its path
         Function,  ///< a def or lambda of this file
         Module,    ///< an imported or unbound dotted name; `text` = the dotted name
-        Context,   ///< the LaunchContext of an OpaqueFunction; `text` = "" or "launch_configurations"
-        Skip,      ///< a harmless action that is recorded as nothing (LogInfo, SetEnvironmentVariable)
+        Context, ///< the LaunchContext of an OpaqueFunction; `text` = "" or "launch_configurations"
+        Skip, ///< a harmless action that is recorded as nothing (LogInfo, SetEnvironmentVariable)
     };
 
     Type type = Type::Unknown;
@@ -60,9 +61,10 @@ struct Value
     Evidence evidence; ///< where an Unknown value or an action comes from
     std::shared_ptr<ListData> list;
     std::shared_ptr<DictData> dict;
-    std::shared_ptr<const QList<LaunchAction>> actions; ///< Action; also an event handler's actions (Unknown)
-    TSNode node{};                                      ///< Function: function_definition or lambda
-    std::shared_ptr<Scope> closure;                     ///< Function: where it was defined
+    std::shared_ptr<const QList<LaunchAction>>
+        actions;                    ///< Action; also an event handler's actions (Unknown)
+    TSNode node{};                  ///< Function: function_definition or lambda
+    std::shared_ptr<Scope> closure; ///< Function: where it was defined
 
     static Value unknown(const QString &text, const Evidence &evidence = {});
     static Value none();
@@ -74,13 +76,19 @@ struct Value
     static Value makeList(QList<Value> items, bool tuple = false, bool launchDescription = false);
     static Value makeDict();
     static Value action(QList<LaunchAction> actions);
-    static Value skip() { Value v; v.type = Type::Skip; return v; }
+    static Value skip()
+    {
+        Value v;
+        v.type = Type::Skip;
+        return v;
+    }
 
     bool is(Type t) const { return type == t; }
     bool isStringLike() const { return type == Type::String || type == Type::Subst; }
     bool isLiteral() const
     {
-        return type == Type::String || type == Type::Number || type == Type::Bool || type == Type::None;
+        return type == Type::String || type == Type::Number || type == Type::Bool ||
+               type == Type::None;
     }
     /// Python truthiness when it can be decided.
     std::optional<bool> truth() const;
@@ -100,8 +108,8 @@ struct Value
 struct ListData
 {
     QList<Value> items;
-    QList<GuardPath> guards;   ///< per item, the undecided ifs it was added under
-    GuardPath createdUnder;    ///< the guards active when the list was created
+    QList<GuardPath> guards; ///< per item, the undecided ifs it was added under
+    GuardPath createdUnder;  ///< the guards active when the list was created
     bool tuple = false;
     bool launchDescription = false;
 };

@@ -41,7 +41,8 @@ int findIn(const QString &target, const QHash<QString, int> &exact,
 }
 } // namespace
 
-PythonDefinitionIndex::PythonDefinitionIndex(const QList<PythonModuleFacts> &modules) : m_modules(modules)
+PythonDefinitionIndex::PythonDefinitionIndex(const QList<PythonModuleFacts> &modules)
+    : m_modules(modules)
 {
     for (int m = 0; m < m_modules.size(); ++m) {
         const PythonModuleFacts &module = m_modules.at(m);

@@ -39,7 +39,7 @@ private:
     std::vector<std::pair<int, int>> m_functionRefs; ///< (module, function) per function id
     QHash<QString, int> m_classes;                   ///< by qualified name
     QHash<QString, int> m_functions;
-    QHash<QString, QList<int>> m_classesByName;      ///< by simple name
+    QHash<QString, QList<int>> m_classesByName; ///< by simple name
     QHash<QString, QList<int>> m_functionsByName;
 };
 

@@ -16,7 +16,12 @@ namespace rosarch {
 /// The node handle a port creation or a hand-off uses inside a class or function.
 struct PythonHandle
 {
-    enum class Kind { Self, Parameter, Procedural };
+    enum class Kind
+    {
+        Self,
+        Parameter,
+        Procedural
+    };
 
     Kind kind = Kind::Self;
     int index = -1; ///< Parameter: position among the explicit parameters; Procedural: index
@@ -29,10 +34,10 @@ struct PythonHandle
 /// One argument at a call site, with what is statically known about it.
 struct PythonArgument
 {
-    QString keyword;         ///< "" for a positional argument
-    QString text;            ///< as written
-    bool isString = false;   ///< resolves to a string (literal, local, member, parameter default)
-    QString value;           ///< that string when isString
+    QString keyword;       ///< "" for a positional argument
+    QString text;          ///< as written
+    bool isString = false; ///< resolves to a string (literal, local, member, parameter default)
+    QString value;         ///< that string when isString
     NameOrigin origin = NameOrigin::Expression; ///< how it resolves
     QString parameter;       ///< the declared ROS parameter it comes from, when known
     int parameterIndex = -1; ///< names an explicit parameter of the enclosing function
@@ -63,11 +68,11 @@ struct PythonPortFact
 /// A call that passes a node handle on to a helper class or function.
 struct PythonHandoff
 {
-    QString target;      ///< callee, qualified through the imports
-    int argument = -1;   ///< positional index of the handle, or -1
-    QString keyword;     ///< keyword of the handle when passed by name
-    PythonHandle handle; ///< which handle is passed
-    QString method;      ///< enclosing method ("" in functions)
+    QString target;                  ///< callee, qualified through the imports
+    int argument = -1;               ///< positional index of the handle, or -1
+    QString keyword;                 ///< keyword of the handle when passed by name
+    PythonHandle handle;             ///< which handle is passed
+    QString method;                  ///< enclosing method ("" in functions)
     QList<PythonArgument> arguments; ///< all arguments of the call
 };
 
@@ -82,7 +87,7 @@ struct PythonCall
 struct PythonProcedural
 {
     QString nodeName;
-    QString function;  ///< enclosing function or method ("" at module level)
+    QString function; ///< enclosing function or method ("" at module level)
     bool lifecycle = false;
     Evidence evidence; ///< the enclosing function (the create call at module level)
 };
@@ -113,7 +118,7 @@ struct PythonClassFacts : PythonScopeFacts
     Evidence evidence;
     QStringList methods;
     QList<QList<PythonParameter>> methodParameters; ///< explicit parameters, parallel to methods
-    QStringList superCalledMethods; ///< overrides that call the base's version
+    QStringList superCalledMethods;                 ///< overrides that call the base's version
     bool hasInit = false;
     QList<PythonParameter> initParameters; ///< explicit parameters of __init__ (self excluded)
     bool hasBaseInitCall = false;

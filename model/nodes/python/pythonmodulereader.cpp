@@ -25,8 +25,8 @@ bool skipInScope(TSNode n, TSNode body, bool moduleLevel)
 /// "std_msgs.msg.String", "pkg.srv.T.Request": a message, service or action type.
 bool isInterfaceName(const QString &dotted)
 {
-    return dotted.contains(QLatin1String(".msg.")) || dotted.contains(QLatin1String(".srv."))
-           || dotted.contains(QLatin1String(".action."));
+    return dotted.contains(QLatin1String(".msg.")) || dotted.contains(QLatin1String(".srv.")) ||
+           dotted.contains(QLatin1String(".action."));
 }
 
 PythonHandle parameterHandle(int index, const QString &name, const QString &method = {})
@@ -59,8 +59,7 @@ PythonModuleFacts PythonModuleReader::read(const QString &package) const
     py::walk(m_tree.root(), [&](TSNode n) {
         if (ts::is(n, "class_definition"))
             facts.classes.append(readClass(n));
-        else if (ts::is(n, "function_definition")
-                 && m_resolver.scopes().isTopLevel(n))
+        else if (ts::is(n, "function_definition") && m_resolver.scopes().isTopLevel(n))
             facts.functions.append(readFunction(n));
         return true;
     });
@@ -84,7 +83,8 @@ QList<PythonParameter> PythonModuleReader::parameters(TSNode function, bool skip
         p.name = params[i].name;
         p.hasDefault = !ts::isNull(params[i].defaultValue);
         if (p.hasDefault) {
-            p.defaultIsString = PythonResolver::stringLiteral(m_tree, params[i].defaultValue, &p.defaultValue);
+            p.defaultIsString =
+                PythonResolver::stringLiteral(m_tree, params[i].defaultValue, &p.defaultValue);
             if (!p.defaultIsString)
                 p.defaultValue = m_tree.text(params[i].defaultValue);
         }
@@ -163,8 +163,9 @@ void PythonModuleReader::findAliases(TSNode body, Receivers *receivers, bool mem
             return true;
         TSNode left = ts::field(n, "left");
         TSNode right = ts::field(n, "right");
-        if (members ? !(ts::is(left, "attribute") && m_tree.view(ts::field(left, "object")) == "self")
-                    : !ts::is(left, "identifier"))
+        if (members
+                ? !(ts::is(left, "attribute") && m_tree.view(ts::field(left, "object")) == "self")
+                : !ts::is(left, "identifier"))
             return true;
         PythonProcedural procedural;
         if (proceduralNode(right, &procedural)) {
@@ -233,7 +234,8 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
             if (t == "list_splat")
                 break;
             const bool named = t == "keyword_argument";
-            const auto it = external ? receivers.constEnd() : receivers.constFind(key(named ? ts::field(a, "value") : a));
+            const auto it = external ? receivers.constEnd()
+                                     : receivers.constFind(key(named ? ts::field(a, "value") : a));
             if (it != receivers.constEnd()) {
                 PythonHandoff h;
                 h.target = target;
@@ -269,7 +271,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
     facts.evidence = m_tree.evidence(cls);
     for (TSNode b : ts::namedChildren(ts::field(cls, "superclasses"))) {
         const std::string_view t = ts::type(b);
-        if (t == "keyword_argument" || t == "comment" || t == "list_splat" || t == "dictionary_splat")
+        if (t == "keyword_argument" || t == "comment" || t == "list_splat" ||
+            t == "dictionary_splat")
             continue;
         facts.bases.append(m_tree.text(b));
         const QString q = m_resolver.qualifiedName(b);
@@ -303,7 +306,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
             if (!ts::is(n, "call"))
                 return true;
             TSNode function = ts::field(n, "function");
-            if (!ts::is(function, "attribute") || m_tree.text(ts::field(function, "attribute")) != name)
+            if (!ts::is(function, "attribute") ||
+                m_tree.text(ts::field(function, "attribute")) != name)
                 return true;
             TSNode object = ts::field(function, "object");
             const bool viaSuper = isSuperCall(m_tree, object);
@@ -345,8 +349,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         const bool isInit = name == QLatin1String("__init__");
         for (size_t p = 1; p < params.size(); ++p) {
             parameterNames.append(params[p].name);
-            receivers.insert(params[p].name,
-                             parameterHandle(int(p - 1), params[p].name, isInit ? QString() : name));
+            receivers.insert(params[p].name, parameterHandle(int(p - 1), params[p].name,
+                                                             isInit ? QString() : name));
         }
         TSNode body = ts::field(methods[i], "body");
         findAliases(body, &receivers, false, name, methods[i], &facts, {});

@@ -14,7 +14,8 @@ namespace {
 /// The dotted module path of a file: its stem, prefixed by the enclosing folders that are
 /// Python packages (hold an __init__.py). A loose script is named by its path inside its ROS
 /// package, so that same-named scripts in different folders stay apart.
-QString modulePath(const QString &file, const QString &packagePath, const QSet<QString> &pythonFiles)
+QString modulePath(const QString &file, const QString &packagePath,
+                   const QSet<QString> &pythonFiles)
 {
     QStringList parts;
     QString dir = file.section(QLatin1Char('/'), 0, -2);
@@ -75,7 +76,8 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         if (ts::isNull(tree.root()))
             continue;
         const RosPackage *package = m_workspace.package(file.package);
-        const QString module = modulePath(file.path, package ? package->path : QString(), pythonFiles);
+        const QString module =
+            modulePath(file.path, package ? package->path : QString(), pythonFiles);
         modules.append(PythonModuleReader(tree, module).read(file.package));
     }
     control.report(int(files.size()), int(files.size()), QString());

@@ -29,11 +29,12 @@ int rosNodeBase(const QString &target)
 
 bool sameHandle(const PythonHandle &a, const PythonHandle &b)
 {
-    return a.kind == b.kind
-           && (a.kind == PythonHandle::Kind::Self || (a.index == b.index && a.method == b.method));
+    return a.kind == b.kind &&
+           (a.kind == PythonHandle::Kind::Self || (a.index == b.index && a.method == b.method));
 }
 
-const PythonArgument *argumentAt(const QList<PythonArgument> &args, int index, const QString &keyword)
+const PythonArgument *argumentAt(const QList<PythonArgument> &args, int index,
+                                 const QString &keyword)
 {
     if (!keyword.isEmpty())
         for (const PythonArgument &a : args)
@@ -59,8 +60,8 @@ void substituteName(Port *port, const PythonArgument &a)
 
 bool portLess(const Port &a, const Port &b)
 {
-    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column, a.via)
-           < std::tie(b.evidence.file, b.evidence.line, b.evidence.column, b.via);
+    return std::tie(a.evidence.file, a.evidence.line, a.evidence.column, a.via) <
+           std::tie(b.evidence.file, b.evidence.line, b.evidence.column, b.via);
 }
 
 QList<Port> sortedUnique(QList<Port> ports)
@@ -148,15 +149,16 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
     for (int base : m_index.projectBases(id)) {
         for (ScopedPort sp : classPorts(base, depth + 1)) {
             // an override that does not call the base's version replaces its ports
-            if (!sp.method.isEmpty() && c.methods.contains(sp.method)
-                && !c.superCalledMethods.contains(sp.method))
+            if (!sp.method.isEmpty() && c.methods.contains(sp.method) &&
+                !c.superCalledMethods.contains(sp.method))
                 continue;
             sp.port.inherited = true;
             // a name taken from the base constructor's parameter: see what this class passes
             if (sp.parameter >= 0 && c.hasInit) {
-                const PythonArgument *a = c.hasBaseInitCall
-                                              ? argumentAt(c.baseInitArguments, sp.parameter, sp.parameterName)
-                                              : nullptr;
+                const PythonArgument *a =
+                    c.hasBaseInitCall
+                        ? argumentAt(c.baseInitArguments, sp.parameter, sp.parameterName)
+                        : nullptr;
                 sp.parameter = -1;
                 if (a && a->parameterIndex >= 0) {
                     sp.parameter = a->parameterIndex;
@@ -327,8 +329,8 @@ PythonNodeLinker::NameInfo PythonNodeLinker::nameInfo(int id, int depth) const
     return info;
 }
 
-bool PythonNodeLinker::agreedArgument(int id, int index, const QString &name, const QString &fallback,
-                                      PythonArgument *agreed) const
+bool PythonNodeLinker::agreedArgument(int id, int index, const QString &name,
+                                      const QString &fallback, PythonArgument *agreed) const
 {
     // an instantiation that leaves the parameter out gets the fallback (the default)
     bool unknown = false;
@@ -463,8 +465,9 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         for (ScopedPort sp : classPorts(id, 0)) {
             PythonArgument agreed;
             const QString fallback = sp.port.isResolved() ? sp.port.name : QString();
-            if (sp.parameter >= 0 && agreedArgument(id, sp.parameter, sp.parameterName, fallback, &agreed)
-                && agreed.value != sp.port.name)
+            if (sp.parameter >= 0 &&
+                agreedArgument(id, sp.parameter, sp.parameterName, fallback, &agreed) &&
+                agreed.value != sp.port.name)
                 substituteName(&sp.port, agreed);
             ports.append(sp.port);
         }
@@ -490,8 +493,9 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         nodes.append(n);
     }
     std::sort(nodes.begin(), nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
-        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file, a.evidence.line)
-               < std::tie(b.packageName, b.className, b.qualifiedName, b.evidence.file, b.evidence.line);
+        return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file,
+                        a.evidence.line) < std::tie(b.packageName, b.className, b.qualifiedName,
+                                                    b.evidence.file, b.evidence.line);
     });
     out->nodes.append(nodes);
 

@@ -8,7 +8,6 @@
 #include <QList>
 #include <QString>
 
-
 namespace rosarch {
 
 /// Resolves the facts of all Python files together: which classes are nodes (directly or
@@ -23,17 +22,28 @@ public:
     void link(LanguageAnalysis *out) const;
 
 private:
-    enum NodeKind { NotANode = 0, PlainNode = 1, LifecycleNode = 2 };
+    enum NodeKind
+    {
+        NotANode = 0,
+        PlainNode = 1,
+        LifecycleNode = 2
+    };
     struct ScopedPort
     {
         Port port;
         QString method;
-        int parameter = -1;    ///< the name is still this constructor parameter of the class
+        int parameter = -1; ///< the name is still this constructor parameter of the class
         QString parameterName;
     };
     struct NameInfo
     {
-        enum class Kind { None, Literal, Parameter, Expression };
+        enum class Kind
+        {
+            None,
+            Literal,
+            Parameter,
+            Expression
+        };
         Kind kind = Kind::None;
         QString text;
         int index = -1; ///< Parameter: position among the owner's constructor parameters

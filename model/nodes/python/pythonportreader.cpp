@@ -5,7 +5,11 @@
 namespace rosarch {
 
 namespace {
-enum class Form { Method, Constructor };
+enum class Form
+{
+    Method,
+    Constructor
+};
 
 struct Signature
 {
@@ -68,13 +72,15 @@ bool PythonPortReader::recognize(TSNode call, PortKind *kind, TSNode *receiver) 
     }
     if (name == "ActionServer" || name == "ActionClient") {
         const QString q = m_resolver.qualifiedName(function);
-        if (!q.startsWith(QLatin1String("rclpy.")) && q != QLatin1String(name.data(), qsizetype(name.size())))
+        if (!q.startsWith(QLatin1String("rclpy.")) &&
+            q != QLatin1String(name.data(), qsizetype(name.size())))
             return false;
         *kind = name == "ActionServer" ? PortKind::ActionServer : PortKind::ActionClient;
         *receiver = py::argument(tree, call, 0, "node");
         return !ts::isNull(*receiver);
     }
-    if (name == "Subscriber" && m_resolver.qualifiedName(function) == QLatin1String("message_filters.Subscriber")) {
+    if (name == "Subscriber" &&
+        m_resolver.qualifiedName(function) == QLatin1String("message_filters.Subscriber")) {
         *kind = PortKind::Subscriber;
         *receiver = py::argument(tree, call, 0, "node");
         return !ts::isNull(*receiver);

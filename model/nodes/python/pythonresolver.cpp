@@ -89,8 +89,8 @@ void PythonResolver::collectImports()
         }
         if (t == "import_from_statement") {
             TSNode module = ts::field(n, "module_name");
-            const QString from = ts::is(module, "relative_import") ? resolveRelative(module)
-                                                                  : m_tree.text(module);
+            const QString from =
+                ts::is(module, "relative_import") ? resolveRelative(module) : m_tree.text(module);
             const QString prefix = from.isEmpty() ? QString() : from + QLatin1Char('.');
             for (TSNode name : ts::fieldChildren(n, "name")) {
                 if (ts::is(name, "dotted_name")) {
@@ -175,7 +175,8 @@ QString PythonResolver::interfaceTypeAt(TSNode expr, int depth) const
     if (depth < kMaxDepth && ts::is(expr, "identifier")) {
         // `msg_type = String` earlier in the function
         const QString name = written;
-        for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f); f = m_scopes.enclosingFunction(f)) {
+        for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f);
+             f = m_scopes.enclosingFunction(f)) {
             const auto &index = locals(f);
             const auto it = index.constFind(name);
             if (it != index.constEnd() && !it->isEmpty() && !ts::isNull(it->last().right))
@@ -215,7 +216,8 @@ PythonValue PythonResolver::valueAt(TSNode expr, int depth) const
             return parameterValue(call, expr, depth);
         if (t == "attribute")
             return memberValue(expr, depth);
-        if (py::calleeName(m_tree, expr) == "str" && ts::is(ts::field(expr, "function"), "identifier"))
+        if (py::calleeName(m_tree, expr) == "str" &&
+            ts::is(ts::field(expr, "function"), "identifier"))
             return valueAt(py::positional(expr, 0), depth + 1);
     }
     return v;
@@ -238,7 +240,8 @@ PythonValue PythonResolver::identifierValue(TSNode expr, int depth) const
             v.origin = NameOrigin::Local;
         return v;
     };
-    for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f); f = m_scopes.enclosingFunction(f)) {
+    for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f);
+         f = m_scopes.enclosingFunction(f)) {
         const auto &index = locals(f);
         const auto it = index.constFind(name);
         if (it != index.constEnd() && !it->isEmpty())
@@ -445,7 +448,8 @@ const PythonResolver::AssignmentIndex &PythonResolver::members(TSNode classNode)
             if (classBody && ts::is(left, "identifier"))
                 index[m_tree.text(left)].append({ts_node_start_byte(n), right});
             else if (ts::is(left, "attribute") && m_tree.view(ts::field(left, "object")) == "self")
-                index[m_tree.text(ts::field(left, "attribute"))].append({ts_node_start_byte(n), right});
+                index[m_tree.text(ts::field(left, "attribute"))].append(
+                    {ts_node_start_byte(n), right});
         }
         return true;
     });

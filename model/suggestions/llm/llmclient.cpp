@@ -51,7 +51,8 @@ void consumeSseLine(Exchange *x, const QByteArray &rawLine)
         return;
     const QJsonObject chunk = QJsonDocument::fromJson(payload).object();
     const QJsonObject choice = chunk.value(QLatin1String("choices")).toArray().at(0).toObject();
-    const QJsonValue delta = choice.value(QLatin1String("delta")).toObject().value(QLatin1String("content"));
+    const QJsonValue delta =
+        choice.value(QLatin1String("delta")).toObject().value(QLatin1String("content"));
     if (delta.isString())
         x->content += delta.toString();
     ++x->chunks;
@@ -146,7 +147,8 @@ QByteArray requestBody(const LlmSettings &settings, const LlmRequest &request,
     body.insert(QLatin1String("model"), settings.model);
     QJsonArray list;
     for (const LlmRequest::Message &m : messages)
-        list.append(QJsonObject{{QLatin1String("role"), m.role}, {QLatin1String("content"), m.content}});
+        list.append(
+            QJsonObject{{QLatin1String("role"), m.role}, {QLatin1String("content"), m.content}});
     body.insert(QLatin1String("messages"), list);
     body.insert(QLatin1String("temperature"), settings.temperature);
     body.insert(QLatin1String("stream"), settings.stream);
@@ -183,7 +185,8 @@ int backoffMs(const LlmSettings &settings, const QByteArray &retryAfter, int att
     if (isNumber && seconds >= 0) {
         ms = qint64(seconds * 1000);
     } else if (!retryAfter.isEmpty()) {
-        const QDateTime when = QDateTime::fromString(QString::fromLatin1(retryAfter), Qt::RFC2822Date);
+        const QDateTime when =
+            QDateTime::fromString(QString::fromLatin1(retryAfter), Qt::RFC2822Date);
         if (when.isValid())
             ms = qMax<qint64>(0, QDateTime::currentDateTimeUtc().msecsTo(when));
     }
@@ -207,7 +210,8 @@ bool waitCancelable(int ms, const std::atomic_bool *cancel)
 QJsonDocument parseContent(const QString &content, QString *error)
 {
     QString text = content.trimmed();
-    static const QRegularExpression fence(QStringLiteral("^```[A-Za-z]*\\s*\\n([\\s\\S]*?)\\n?```$"));
+    static const QRegularExpression fence(
+        QStringLiteral("^```[A-Za-z]*\\s*\\n([\\s\\S]*?)\\n?```$"));
     const QRegularExpressionMatch m = fence.match(text);
     if (m.hasMatch())
         text = m.captured(1);
@@ -231,24 +235,31 @@ qint64 LlmRequest::chars() const
 QString LlmResult::errorName(Error error)
 {
     switch (error) {
-    case Error::None: return QStringLiteral("none");
-    case Error::NoEndpoint: return QStringLiteral("no-endpoint");
-    case Error::ConnectionRefused: return QStringLiteral("connection-refused");
-    case Error::Timeout: return QStringLiteral("timeout");
-    case Error::Http: return QStringLiteral("http-error");
-    case Error::RateLimited: return QStringLiteral("rate-limited");
-    case Error::NotJson: return QStringLiteral("not-json");
-    case Error::SchemaMismatch: return QStringLiteral("schema-mismatch");
-    case Error::Canceled: return QStringLiteral("canceled");
-    case Error::Network: return QStringLiteral("network-error");
+    case Error::None:
+        return QStringLiteral("none");
+    case Error::NoEndpoint:
+        return QStringLiteral("no-endpoint");
+    case Error::ConnectionRefused:
+        return QStringLiteral("connection-refused");
+    case Error::Timeout:
+        return QStringLiteral("timeout");
+    case Error::Http:
+        return QStringLiteral("http-error");
+    case Error::RateLimited:
+        return QStringLiteral("rate-limited");
+    case Error::NotJson:
+        return QStringLiteral("not-json");
+    case Error::SchemaMismatch:
+        return QStringLiteral("schema-mismatch");
+    case Error::Canceled:
+        return QStringLiteral("canceled");
+    case Error::Network:
+        return QStringLiteral("network-error");
     }
     return QStringLiteral("unknown");
 }
 
-LlmClient::LlmClient(const LlmSettings &settings)
-    : m_settings(settings)
-{
-}
+LlmClient::LlmClient(const LlmSettings &settings) : m_settings(settings) {}
 
 LlmResult LlmClient::complete(const LlmRequest &request) const
 {
@@ -259,7 +270,8 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
         return result;
     };
     if (!m_settings.isConfigured())
-        return finish(LlmResult::Error::NoEndpoint, QStringLiteral("No LLM endpoint is configured."));
+        return finish(LlmResult::Error::NoEndpoint,
+                      QStringLiteral("No LLM endpoint is configured."));
     const QString url = m_settings.completionsUrl();
     QList<LlmRequest::Message> conversation = request.messages;
 
@@ -273,34 +285,42 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
             result.httpStatus = int(x.status);
             result.responseFormat = QString::fromLatin1(kFormatNames[level]);
             if (x.code == CURLE_ABORTED_BY_CALLBACK)
-                return finish(LlmResult::Error::Canceled, QStringLiteral("The LLM request was canceled."));
+                return finish(LlmResult::Error::Canceled,
+                              QStringLiteral("The LLM request was canceled."));
             if (x.code == CURLE_COULDNT_CONNECT || x.code == CURLE_COULDNT_RESOLVE_HOST)
                 return finish(LlmResult::Error::ConnectionRefused,
-                              QStringLiteral("Cannot connect to the LLM endpoint %1: %2").arg(url, x.curlError));
+                              QStringLiteral("Cannot connect to the LLM endpoint %1: %2")
+                                  .arg(url, x.curlError));
             if (x.code == CURLE_OPERATION_TIMEDOUT)
-                return finish(LlmResult::Error::Timeout,
-                              QStringLiteral("The LLM endpoint %1 did not answer in time (%2): %3")
-                                  .arg(url)
-                                  .arg(x.status == 0 ? QStringLiteral("connect timeout %1 s, request timeout %2 s")
-                                                           .arg(m_settings.connectTimeoutMs / 1000.0)
-                                                           .arg(m_settings.requestTimeoutMs / 1000.0)
-                                                     : QStringLiteral("request timeout %1 s")
-                                                           .arg(m_settings.requestTimeoutMs / 1000.0))
-                                  .arg(x.curlError));
+                return finish(
+                    LlmResult::Error::Timeout,
+                    QStringLiteral("The LLM endpoint %1 did not answer in time (%2): %3")
+                        .arg(url)
+                        .arg(x.status == 0
+                                 ? QStringLiteral("connect timeout %1 s, request timeout %2 s")
+                                       .arg(m_settings.connectTimeoutMs / 1000.0)
+                                       .arg(m_settings.requestTimeoutMs / 1000.0)
+                                 : QStringLiteral("request timeout %1 s")
+                                       .arg(m_settings.requestTimeoutMs / 1000.0))
+                        .arg(x.curlError));
             if (x.code != CURLE_OK)
                 return finish(LlmResult::Error::Network,
-                              QStringLiteral("The request to the LLM endpoint %1 failed: %2").arg(url, x.curlError));
-            const bool formatRejected = x.status == 400 && level < 2 &&
+                              QStringLiteral("The request to the LLM endpoint %1 failed: %2")
+                                  .arg(url, x.curlError));
+            const bool formatRejected =
+                x.status == 400 && level < 2 &&
                 (x.body.contains("response_format") || x.body.contains("json_schema"));
             if (formatRejected) {
-                // Older servers (and some Ollama/llama.cpp builds) know only json_object, or nothing.
+                // Older servers (and some Ollama/llama.cpp builds) know only json_object, or
+                // nothing.
                 int expected = level;
                 m_formatLevel.compare_exchange_strong(expected, level + 1);
                 continue;
             }
             if ((x.status == 429 || x.status >= 500) && retries < m_settings.maxRetries) {
                 if (!waitCancelable(backoffMs(m_settings, x.retryAfter, retries), request.cancel))
-                    return finish(LlmResult::Error::Canceled, QStringLiteral("The LLM request was canceled."));
+                    return finish(LlmResult::Error::Canceled,
+                                  QStringLiteral("The LLM request was canceled."));
                 ++retries;
                 continue;
             }
@@ -308,22 +328,33 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
         }
         if (x.status == 429)
             return finish(LlmResult::Error::RateLimited,
-                          QStringLiteral("The LLM endpoint %1 is rate limiting (HTTP 429) and still was after %2 retries: %3")
-                              .arg(url).arg(retries).arg(excerpt(x.body)));
+                          QStringLiteral("The LLM endpoint %1 is rate limiting (HTTP 429) and "
+                                         "still was after %2 retries: %3")
+                              .arg(url)
+                              .arg(retries)
+                              .arg(excerpt(x.body)));
         if (x.status >= 400 || x.status < 200)
             return finish(LlmResult::Error::Http,
-                          QStringLiteral("The LLM endpoint %1 answered HTTP %2: %3").arg(url).arg(x.status).arg(excerpt(x.body)));
+                          QStringLiteral("The LLM endpoint %1 answered HTTP %2: %3")
+                              .arg(url)
+                              .arg(x.status)
+                              .arg(excerpt(x.body)));
 
         QString content;
         if (x.streamed) {
             content = x.content;
         } else {
             const QJsonDocument doc = QJsonDocument::fromJson(x.body);
-            const QJsonValue message = doc.object().value(QLatin1String("choices")).toArray().at(0)
-                                           .toObject().value(QLatin1String("message"));
+            const QJsonValue message = doc.object()
+                                           .value(QLatin1String("choices"))
+                                           .toArray()
+                                           .at(0)
+                                           .toObject()
+                                           .value(QLatin1String("message"));
             if (!doc.isObject() || !message.isObject())
                 return finish(LlmResult::Error::NotJson,
-                              QStringLiteral("The reply of the LLM endpoint %1 is not a chat-completions JSON object: %2")
+                              QStringLiteral("The reply of the LLM endpoint %1 is not a "
+                                             "chat-completions JSON object: %2")
                                   .arg(url, excerpt(x.body)));
             content = message.toObject().value(QLatin1String("content")).toString();
         }
@@ -334,9 +365,11 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
         const QJsonDocument reply = parseContent(content, &error);
         if (reply.isNull()) {
             kind = LlmResult::Error::NotJson;
-            error = QStringLiteral("the reply is not JSON (%1): %2").arg(error, excerpt(content.toUtf8()));
+            error = QStringLiteral("the reply is not JSON (%1): %2")
+                        .arg(error, excerpt(content.toUtf8()));
         } else {
-            const QJsonValue value = reply.isObject() ? QJsonValue(reply.object()) : QJsonValue(reply.array());
+            const QJsonValue value =
+                reply.isObject() ? QJsonValue(reply.object()) : QJsonValue(reply.array());
             if (LlmSchemaValidator(request.schema).validate(value, &error)) {
                 result.json = value;
                 return result;
@@ -345,11 +378,13 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
             error = QStringLiteral("the reply does not fit the schema: %1").arg(error);
         }
         if (round == 1)
-            return finish(kind, QStringLiteral("%1: %2 (also after one retry)").arg(request.name, error));
+            return finish(kind,
+                          QStringLiteral("%1: %2 (also after one retry)").arg(request.name, error));
         // One repair round: show the model its reply and what was wrong with it.
         ++result.repairs;
         conversation.append({QStringLiteral("assistant"), content});
-        QString repair = request.repairInstruction.isEmpty() ? QStringLiteral("{{error}}") : request.repairInstruction;
+        QString repair = request.repairInstruction.isEmpty() ? QStringLiteral("{{error}}")
+                                                             : request.repairInstruction;
         repair.replace(QLatin1String("{{error}}"), error);
         conversation.append({QStringLiteral("user"), repair});
     }

@@ -18,9 +18,9 @@ struct LlmRequest
         QString content;
     };
 
-    QString name;            ///< the prompt's name, for messages and reports
+    QString name; ///< the prompt's name, for messages and reports
     QList<Message> messages;
-    QJsonObject schema;      ///< JSON Schema of the reply (empty = any JSON value)
+    QJsonObject schema; ///< JSON Schema of the reply (empty = any JSON value)
     /// Appended as a user message when a reply does not fit; "{{error}}" is replaced by the
     /// validation error. Comes from a prompt file (prompts/repair_reply.md).
     QString repairInstruction;

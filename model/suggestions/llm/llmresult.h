@@ -8,7 +8,8 @@ namespace rosarch {
 /// The outcome of one LlmClient::complete call: the validated JSON, or why there is none.
 struct LlmResult
 {
-    enum class Error {
+    enum class Error
+    {
         None,
         NoEndpoint,        ///< nothing configured
         ConnectionRefused, ///< nobody listens there / host not found
@@ -18,16 +19,16 @@ struct LlmResult
         NotJson,           ///< the reply (or its content) is not JSON
         SchemaMismatch,    ///< valid JSON that does not fit the schema, also after the repair retry
         Canceled,
-        Network,           ///< any other transfer failure
+        Network, ///< any other transfer failure
     };
 
     Error error = Error::None;
-    QString message;     ///< clear, user-facing; never contains the API key
-    int httpStatus = 0;  ///< of the last response
-    QJsonValue json;     ///< the validated reply
-    QString content;     ///< the raw content of the last reply
-    int requests = 0;    ///< HTTP requests made (retries and fallbacks included)
-    int repairs = 0;     ///< conversations retried with a validation error
+    QString message;        ///< clear, user-facing; never contains the API key
+    int httpStatus = 0;     ///< of the last response
+    QJsonValue json;        ///< the validated reply
+    QString content;        ///< the raw content of the last reply
+    int requests = 0;       ///< HTTP requests made (retries and fallbacks included)
+    int repairs = 0;        ///< conversations retried with a validation error
     QString responseFormat; ///< "json_schema", "json_object" or "none": what the server accepted
 
     bool ok() const { return error == Error::None; }

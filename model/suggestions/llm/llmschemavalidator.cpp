@@ -27,10 +27,7 @@ bool hasType(const QJsonValue &value, const QString &type)
 
 } // namespace
 
-LlmSchemaValidator::LlmSchemaValidator(const QJsonObject &schema)
-    : m_schema(schema)
-{
-}
+LlmSchemaValidator::LlmSchemaValidator(const QJsonObject &schema) : m_schema(schema) {}
 
 bool LlmSchemaValidator::validate(const QJsonValue &value, QString *error) const
 {
@@ -63,24 +60,36 @@ bool LlmSchemaValidator::check(const QJsonObject &schema, const QJsonValue &valu
         return fail(QStringLiteral("not one of the allowed values"));
     if (value.isString()) {
         const qsizetype n = value.toString().size();
-        if (schema.contains(QLatin1String("minLength")) && n < schema.value(QLatin1String("minLength")).toInt())
-            return fail(QStringLiteral("string shorter than %1").arg(schema.value(QLatin1String("minLength")).toInt()));
-        if (schema.contains(QLatin1String("maxLength")) && n > schema.value(QLatin1String("maxLength")).toInt())
-            return fail(QStringLiteral("string longer than %1").arg(schema.value(QLatin1String("maxLength")).toInt()));
+        if (schema.contains(QLatin1String("minLength")) &&
+            n < schema.value(QLatin1String("minLength")).toInt())
+            return fail(QStringLiteral("string shorter than %1")
+                            .arg(schema.value(QLatin1String("minLength")).toInt()));
+        if (schema.contains(QLatin1String("maxLength")) &&
+            n > schema.value(QLatin1String("maxLength")).toInt())
+            return fail(QStringLiteral("string longer than %1")
+                            .arg(schema.value(QLatin1String("maxLength")).toInt()));
     }
     if (value.isDouble()) {
         const double d = value.toDouble();
-        if (schema.contains(QLatin1String("minimum")) && d < schema.value(QLatin1String("minimum")).toDouble())
-            return fail(QStringLiteral("below the minimum %1").arg(schema.value(QLatin1String("minimum")).toDouble()));
-        if (schema.contains(QLatin1String("maximum")) && d > schema.value(QLatin1String("maximum")).toDouble())
-            return fail(QStringLiteral("above the maximum %1").arg(schema.value(QLatin1String("maximum")).toDouble()));
+        if (schema.contains(QLatin1String("minimum")) &&
+            d < schema.value(QLatin1String("minimum")).toDouble())
+            return fail(QStringLiteral("below the minimum %1")
+                            .arg(schema.value(QLatin1String("minimum")).toDouble()));
+        if (schema.contains(QLatin1String("maximum")) &&
+            d > schema.value(QLatin1String("maximum")).toDouble())
+            return fail(QStringLiteral("above the maximum %1")
+                            .arg(schema.value(QLatin1String("maximum")).toDouble()));
     }
     if (value.isArray()) {
         const QJsonArray a = value.toArray();
-        if (schema.contains(QLatin1String("minItems")) && a.size() < schema.value(QLatin1String("minItems")).toInt())
-            return fail(QStringLiteral("fewer than %1 items").arg(schema.value(QLatin1String("minItems")).toInt()));
-        if (schema.contains(QLatin1String("maxItems")) && a.size() > schema.value(QLatin1String("maxItems")).toInt())
-            return fail(QStringLiteral("more than %1 items").arg(schema.value(QLatin1String("maxItems")).toInt()));
+        if (schema.contains(QLatin1String("minItems")) &&
+            a.size() < schema.value(QLatin1String("minItems")).toInt())
+            return fail(QStringLiteral("fewer than %1 items")
+                            .arg(schema.value(QLatin1String("minItems")).toInt()));
+        if (schema.contains(QLatin1String("maxItems")) &&
+            a.size() > schema.value(QLatin1String("maxItems")).toInt())
+            return fail(QStringLiteral("more than %1 items")
+                            .arg(schema.value(QLatin1String("maxItems")).toInt()));
         const QJsonObject items = schema.value(QLatin1String("items")).toObject();
         for (qsizetype i = 0; i < a.size(); ++i)
             if (!check(items, a.at(i), QStringLiteral("%1[%2]").arg(path).arg(i), error))

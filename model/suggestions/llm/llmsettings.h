@@ -8,15 +8,15 @@ namespace rosarch {
 /// key is read from the environment at request time and is never stored or written.
 struct LlmSettings
 {
-    QString endpoint;          ///< e.g. "http://localhost:11434" or ".../v1" ("" = no LLM)
+    QString endpoint; ///< e.g. "http://localhost:11434" or ".../v1" ("" = no LLM)
     QString model = QStringLiteral("gpt-4o-mini");
-    double temperature = 0.0;  ///< 0 keeps replies as repeatable as the server allows
+    double temperature = 0.0; ///< 0 keeps replies as repeatable as the server allows
     int connectTimeoutMs = 10000;
     int requestTimeoutMs = 120000;
-    int maxRetries = 3;        ///< for 429 and 5xx replies
-    int backoffBaseMs = 1000;  ///< first back-off; doubles per retry
-    int maxBackoffMs = 30000;  ///< cap for Retry-After and the exponential back-off
-    bool stream = true;        ///< ask for SSE so progress can be shown
+    int maxRetries = 3;       ///< for 429 and 5xx replies
+    int backoffBaseMs = 1000; ///< first back-off; doubles per retry
+    int maxBackoffMs = 30000; ///< cap for Retry-After and the exponential back-off
+    bool stream = true;       ///< ask for SSE so progress can be shown
 
     bool isConfigured() const { return !endpoint.trimmed().isEmpty(); }
     /// The full chat-completions URL, accepting an endpoint given with or without "/v1".

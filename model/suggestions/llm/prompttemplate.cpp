@@ -33,8 +33,8 @@ QString titleCase(const QString &title)
 
 QStringList PromptTemplate::requiredSections()
 {
-    return {QStringLiteral("role"), QStringLiteral("goal"), QStringLiteral("backstory"),
-            QStringLiteral("examples"), QStringLiteral("input"), QStringLiteral("task"),
+    return {QStringLiteral("role"),           QStringLiteral("goal"),  QStringLiteral("backstory"),
+            QStringLiteral("examples"),       QStringLiteral("input"), QStringLiteral("task"),
             QStringLiteral("expected output")};
 }
 
@@ -80,8 +80,10 @@ PromptTemplate PromptTemplate::load(const QString &name, const QString &override
             QJsonParseError error;
             const QJsonDocument doc = QJsonDocument::fromJson(m.captured(1).toUtf8(), &error);
             if (!doc.isObject())
-                t.m_error = QStringLiteral("%1: the schema under \"Expected output\" is not a JSON object (%2)")
-                                .arg(path, error.errorString());
+                t.m_error =
+                    QStringLiteral(
+                        "%1: the schema under \"Expected output\" is not a JSON object (%2)")
+                        .arg(path, error.errorString());
             t.m_schema = doc.object();
         }
         return t;
@@ -145,17 +147,20 @@ LlmRequest PromptTemplate::request(const QMap<QString, QString> &values, QString
         QStringList blocks;
         for (const QString &title : titles)
             if (m_sections.contains(title))
-                blocks << QStringLiteral("## %1\n%2").arg(titleCase(title), fill(m_sections.value(title), values, missing));
+                blocks << QStringLiteral("## %1\n%2")
+                              .arg(titleCase(title),
+                                   fill(m_sections.value(title), values, missing));
         return blocks.join(QStringLiteral("\n\n"));
     };
     LlmRequest r;
     r.name = m_name;
     r.schema = m_schema;
-    r.messages.append({QStringLiteral("system"),
-                       part({QStringLiteral("role"), QStringLiteral("goal"), QStringLiteral("backstory")})});
+    r.messages.append(
+        {QStringLiteral("system"),
+         part({QStringLiteral("role"), QStringLiteral("goal"), QStringLiteral("backstory")})});
     r.messages.append({QStringLiteral("user"),
-                       part({QStringLiteral("examples"), QStringLiteral("input"), QStringLiteral("task"),
-                             QStringLiteral("expected output")})});
+                       part({QStringLiteral("examples"), QStringLiteral("input"),
+                             QStringLiteral("task"), QStringLiteral("expected output")})});
     return r;
 }
 

@@ -14,7 +14,8 @@ using rosarch::test::runRosarch;
 
 QString exampleWorkspace()
 {
-    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+        .filePath(QStringLiteral("resources/example_ws"));
 }
 } // namespace
 
@@ -25,18 +26,21 @@ private Q_SLOTS:
     void recoverWritesArtifacts()
     {
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path()});
+        const Run r = runRosarch(
+            {QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path()});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(r.out.contains(QStringLiteral("Recovered")));
 
-        const QByteArray json = rosarch::test::readFile(out.filePath(QStringLiteral("atomic_nodes.json")));
+        const QByteArray json =
+            rosarch::test::readFile(out.filePath(QStringLiteral("atomic_nodes.json")));
         const QJsonObject root = QJsonDocument::fromJson(json).object();
         const QJsonArray packages = root.value(QStringLiteral("list_packages")).toArray();
         QCOMPARE(packages.size(), 5);
         int nodes = 0;
         QStringList classes;
         for (const auto &p : packages)
-            for (const auto &n : p.toObject().value(QStringLiteral("list_atomic_ros_node_classifiers")).toArray()) {
+            for (const auto &n :
+                 p.toObject().value(QStringLiteral("list_atomic_ros_node_classifiers")).toArray()) {
                 ++nodes;
                 classes << n.toObject().value(QStringLiteral("class_name")).toString();
             }
@@ -60,35 +64,51 @@ private Q_SLOTS:
                               QStringLiteral("robot.puml"), QStringLiteral("sensing.puml")}));
         QVERIFY(rosarch::test::readFile(ccd.filePath(QStringLiteral("robot.puml")))
                     .contains("component \":sensing\" as part1 <<RosNodePart>>"));
-        const QJsonObject arch = QJsonDocument::fromJson(
-            rosarch::test::readFile(out.filePath(QStringLiteral("architecture.json")))).object();
-        QVERIFY(!arch.value(QStringLiteral("list_composed_ros_node_classifiers")).toArray().isEmpty());
+        const QJsonObject arch =
+            QJsonDocument::fromJson(
+                rosarch::test::readFile(out.filePath(QStringLiteral("architecture.json"))))
+                .object();
+        QVERIFY(
+            !arch.value(QStringLiteral("list_composed_ros_node_classifiers")).toArray().isEmpty());
     }
 
     void launchArgumentsChangeTheInstances()
     {
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
-                                  QStringLiteral("--launch-arg"), QStringLiteral("robot_ns:=r2"),
-                                  QStringLiteral("--launch-arg"), QStringLiteral("use_camera:=false")});
+        const Run r =
+            runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"),
+                        out.path(), QStringLiteral("--launch-arg"), QStringLiteral("robot_ns:=r2"),
+                        QStringLiteral("--launch-arg"), QStringLiteral("use_camera:=false")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonObject root = QJsonDocument::fromJson(
-            rosarch::test::readFile(out.filePath(QStringLiteral("launch_dependencies.json")))).object();
+        const QJsonObject root =
+            QJsonDocument::fromJson(
+                rosarch::test::readFile(out.filePath(QStringLiteral("launch_dependencies.json"))))
+                .object();
         QCOMPARE(root.value(QStringLiteral("launch_files")).toArray().size(), 4);
         QStringList instances;
         for (const auto &n : root.value(QStringLiteral("list_atom_node_instances")).toArray()) {
             const QJsonObject o = n.toObject();
-            instances << QStringLiteral("%1%2%3 %4").arg(o.value(QStringLiteral("namespace")).toString(),
-                                                        o.value(QStringLiteral("namespace")).toString() == QLatin1String("/") ? QString() : QStringLiteral("/"),
-                                                        o.value(QStringLiteral("node_name")).toString(),
-                                                        o.value(QStringLiteral("active")).toBool() ? QStringLiteral("on") : QStringLiteral("off"));
+            instances << QStringLiteral("%1%2%3 %4")
+                             .arg(o.value(QStringLiteral("namespace")).toString(),
+                                  o.value(QStringLiteral("namespace")).toString() ==
+                                          QLatin1String("/")
+                                      ? QString()
+                                      : QStringLiteral("/"),
+                                  o.value(QStringLiteral("node_name")).toString(),
+                                  o.value(QStringLiteral("active")).toBool()
+                                      ? QStringLiteral("on")
+                                      : QStringLiteral("off"));
         }
-        QVERIFY2(instances.contains(QStringLiteral("/r2/navigator on")), qPrintable(instances.join(',')));
-        QVERIFY2(instances.contains(QStringLiteral("/r2/front_camera off")), qPrintable(instances.join(',')));
-        QVERIFY2(instances.contains(QStringLiteral("/r2/monitoring/battery_monitor on")), qPrintable(instances.join(',')));
+        QVERIFY2(instances.contains(QStringLiteral("/r2/navigator on")),
+                 qPrintable(instances.join(',')));
+        QVERIFY2(instances.contains(QStringLiteral("/r2/front_camera off")),
+                 qPrintable(instances.join(',')));
+        QVERIFY2(instances.contains(QStringLiteral("/r2/monitoring/battery_monitor on")),
+                 qPrintable(instances.join(',')));
 
-        const Run bad = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
-                                    QStringLiteral("--launch-arg"), QStringLiteral("robot_ns")});
+        const Run bad =
+            runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"),
+                        out.path(), QStringLiteral("--launch-arg"), QStringLiteral("robot_ns")});
         QCOMPARE(bad.exitCode, 2);
         QVERIFY(bad.err.contains(QStringLiteral("name:=value")));
     }
@@ -99,14 +119,17 @@ private Q_SLOTS:
         QDir(ws.path()).mkpath(QStringLiteral("pkg/pkg"));
         QFile xml(ws.filePath(QStringLiteral("pkg/package.xml")));
         QVERIFY(xml.open(QIODevice::WriteOnly));
-        xml.write("<package><name>pkg</name><export><build_type>ament_python</build_type></export></package>");
+        xml.write("<package><name>pkg</name><export><build_type>ament_python</build_type></"
+                  "export></package>");
         xml.close();
         QFile broken(ws.filePath(QStringLiteral("pkg/pkg/broken.py")));
         QVERIFY(broken.open(QIODevice::WriteOnly));
-        broken.write("from rclpy.node import Node\n\nclass Broken(Node:\n    def __init__(self):\n");
+        broken.write(
+            "from rclpy.node import Node\n\nclass Broken(Node:\n    def __init__(self):\n");
         broken.close();
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("recover"), ws.path(), QStringLiteral("--out"), out.path()});
+        const Run r =
+            runRosarch({QStringLiteral("recover"), ws.path(), QStringLiteral("--out"), out.path()});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("pkg/pkg/broken.py:3")), qPrintable(r.err));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("atomic_nodes.json"))));
@@ -116,10 +139,12 @@ private Q_SLOTS:
     {
         QCOMPARE(runRosarch({QStringLiteral("recover")}).exitCode, 2);
         QCOMPARE(runRosarch({QStringLiteral("recover"), exampleWorkspace()}).exitCode, 2);
-        const Run missing = runRosarch({QStringLiteral("recover"), QStringLiteral("/no/such/ws"), QStringLiteral("--out"), QStringLiteral("/tmp/x")});
+        const Run missing = runRosarch({QStringLiteral("recover"), QStringLiteral("/no/such/ws"),
+                                        QStringLiteral("--out"), QStringLiteral("/tmp/x")});
         QCOMPARE(missing.exitCode, 2);
         QVERIFY(missing.err.contains(QStringLiteral("Not a folder")));
-        const Run unknown = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--bogus")});
+        const Run unknown =
+            runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--bogus")});
         QCOMPARE(unknown.exitCode, 2);
         QVERIFY(unknown.err.contains(QStringLiteral("bogus")));
     }
@@ -140,8 +165,9 @@ private Q_SLOTS:
         QFile blocker(dir.filePath(QStringLiteral("file")));
         QVERIFY(blocker.open(QIODevice::WriteOnly));
         blocker.close();
-        const Run r = runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"),
-                                  dir.filePath(QStringLiteral("file/out"))});
+        const Run r =
+            runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"),
+                        dir.filePath(QStringLiteral("file/out"))});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains(QStringLiteral("Cannot create")));
     }

@@ -24,7 +24,8 @@ using rosarch::test::runRosarch;
 
 QString exampleWorkspace()
 {
-    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+        .filePath(QStringLiteral("resources/example_ws"));
 }
 
 QJsonObject readJson(const QString &path)
@@ -48,13 +49,17 @@ QJsonObject cite(const QJsonObject &excerpt, const QString &quote)
         const QString line = v.toString();
         if (line.contains(quote)) {
             const int n = line.section(QLatin1Char('|'), 0, 0).toInt();
-            return {{"file", excerpt.value(QLatin1String("file"))}, {"line", n}, {"end_line", n}, {"quote", quote}};
+            return {{"file", excerpt.value(QLatin1String("file"))},
+                    {"line", n},
+                    {"end_line", n},
+                    {"quote", quote}};
         }
     }
     return {};
 }
 
-/// A well-behaved model: describes each node citing its class line, groups the first three instances.
+/// A well-behaved model: describes each node citing its class line, groups the first three
+/// instances.
 rosarch::test::FakeResponse goodModel(const FakeRequest &r)
 {
     QJsonObject reply;
@@ -62,11 +67,14 @@ rosarch::test::FakeResponse goodModel(const FakeRequest &r)
         QJsonArray list;
         for (const QJsonValue &v : dataBlock(r, QStringLiteral("nodes"))) {
             const QJsonObject n = v.toObject();
-            const QJsonObject c = cite(n.value("excerpt").toObject(), n.value("class_name").toString());
+            const QJsonObject c =
+                cite(n.value("excerpt").toObject(), n.value("class_name").toString());
             if (!c.isEmpty())
                 list.append(QJsonObject{{"node_id", n.value("id")},
-                                        {"description", QStringLiteral("Fake description of %1.").arg(n.value("class_name").toString())},
-                                        {"rationale", "the class"}, {"evidence", QJsonArray{c}}});
+                                        {"description", QStringLiteral("Fake description of %1.")
+                                                            .arg(n.value("class_name").toString())},
+                                        {"rationale", "the class"},
+                                        {"evidence", QJsonArray{c}}});
         }
         reply.insert("descriptions", list);
     } else if (r.schemaName() == QLatin1String("group_subsystems")) {
@@ -76,12 +84,15 @@ rosarch::test::FakeResponse goodModel(const FakeRequest &r)
         for (int i = 1; i < 4; ++i) { // n2..n4: skip the component container
             const QJsonObject n = instances.at(i).toObject();
             members.append(n.value("id"));
-            const QJsonObject c = cite(n.value("launch").toObject(), n.value("executable").toString());
+            const QJsonObject c =
+                cite(n.value("launch").toObject(), n.value("executable").toString());
             if (!c.isEmpty())
                 evidence.append(c);
         }
-        reply.insert("groups", QJsonArray{QJsonObject{{"name", "fake_group"}, {"member_ids", members},
-                                                      {"rationale", "shared topics"}, {"evidence", evidence}}});
+        reply.insert("groups", QJsonArray{QJsonObject{{"name", "fake_group"},
+                                                      {"member_ids", members},
+                                                      {"rationale", "shared topics"},
+                                                      {"evidence", evidence}}});
     } else {
         reply.insert("candidates", QJsonArray{});
     }
@@ -108,15 +119,21 @@ private Q_SLOTS:
     void deterministicWithoutEndpoint()
     {
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path()});
+        const Run r = runRosarch(
+            {QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path()});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("9 suggestions (8 node-description, 1 subsystem-grouping)")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(
+                     QStringLiteral("9 suggestions (8 node-description, 1 subsystem-grouping)")),
+                 qPrintable(r.out));
         const QJsonObject root = readJson(out.filePath(QStringLiteral("suggestions.json")));
-        QCOMPARE(kinds(root, QStringLiteral("deterministic")).count(QStringLiteral("node-description")), 8);
+        QCOMPARE(
+            kinds(root, QStringLiteral("deterministic")).count(QStringLiteral("node-description")),
+            8);
         const QJsonObject group = root.value("suggestions").toArray().at(8).toObject();
         QCOMPARE(group.value("kind").toString(), QStringLiteral("subsystem-grouping"));
         QCOMPARE(group.value("target").toObject().value("id").toString(), QStringLiteral("lf1"));
-        QCOMPARE(group.value("proposal").toObject().value("member_ids").toArray(), (QJsonArray{"n2", "n4", "n6", "n7"}));
+        QCOMPARE(group.value("proposal").toObject().value("member_ids").toArray(),
+                 (QJsonArray{"n2", "n4", "n6", "n7"}));
         QCOMPARE(group.value("status").toString(), QStringLiteral("pending"));
         QCOMPARE(root.value("llm").toObject().value("used").toBool(), false);
         QCOMPARE(root.value("errors").toArray().size(), 0);
@@ -132,10 +149,12 @@ private Q_SLOTS:
         FakeLlmServer server;
         server.setHandler(goodModel);
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
-                                  QStringLiteral("--llm-endpoint"), server.endpoint() + QStringLiteral("/v1"),
-                                  QStringLiteral("--llm-model"), QStringLiteral("fake-7b"), QStringLiteral("--llm-timeout"), QStringLiteral("20")},
-                                 {{QStringLiteral("ROSARCH_LLM_API_KEY"), QString::fromLatin1(kKey)}});
+        const Run r = runRosarch(
+            {QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path(),
+             QStringLiteral("--llm-endpoint"), server.endpoint() + QStringLiteral("/v1"),
+             QStringLiteral("--llm-model"), QStringLiteral("fake-7b"),
+             QStringLiteral("--llm-timeout"), QStringLiteral("20")},
+            {{QStringLiteral("ROSARCH_LLM_API_KEY"), QString::fromLatin1(kKey)}});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
         QCOMPARE(server.requests().size(), 3);
         for (const FakeRequest &req : server.requests()) {
@@ -156,7 +175,8 @@ private Q_SLOTS:
             QVERIFY(p.toObject().value("estimated_tokens").toInt() > 300);
         }
         // The key goes in the Authorization header and nowhere else.
-        QVERIFY(!r.out.contains(QString::fromLatin1(kKey)) && !r.err.contains(QString::fromLatin1(kKey)));
+        QVERIFY(!r.out.contains(QString::fromLatin1(kKey)) &&
+                !r.err.contains(QString::fromLatin1(kKey)));
         QVERIFY(r.out.contains(QStringLiteral("key=set (hidden)")));
         QDirIterator files(out.path(), QDir::Files, QDirIterator::Subdirectories);
         int checked = 0;
@@ -174,10 +194,14 @@ private Q_SLOTS:
         const quint16 port = probe.serverPort();
         probe.close();
         QTemporaryDir out;
-        const Run r = runRosarch({QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path()},
-                                 {{QStringLiteral("ROSARCH_LLM_ENDPOINT"), QStringLiteral("http://127.0.0.1:%1").arg(port)}});
+        const Run r = runRosarch(
+            {QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), out.path()},
+            {{QStringLiteral("ROSARCH_LLM_ENDPOINT"),
+              QStringLiteral("http://127.0.0.1:%1").arg(port)}});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("LLM error: Cannot connect to the LLM endpoint http://127.0.0.1:%1/v1/chat/completions").arg(port)),
+        QVERIFY2(r.err.contains(QStringLiteral("LLM error: Cannot connect to the LLM endpoint "
+                                               "http://127.0.0.1:%1/v1/chat/completions")
+                                    .arg(port)),
                  qPrintable(r.err));
         const QJsonObject root = readJson(out.filePath(QStringLiteral("suggestions.json")));
         QCOMPARE(kinds(root, QStringLiteral("deterministic")).size(), 9);
@@ -189,11 +213,13 @@ private Q_SLOTS:
     {
         QCOMPARE(runRosarch({QStringLiteral("suggest")}).exitCode, 2);
         QCOMPARE(runRosarch({QStringLiteral("suggest"), exampleWorkspace()}).exitCode, 2);
-        const Run timeout = runRosarch({QStringLiteral("suggest"), exampleWorkspace(), QStringLiteral("--out"), QStringLiteral("/tmp/x"),
+        const Run timeout = runRosarch({QStringLiteral("suggest"), exampleWorkspace(),
+                                        QStringLiteral("--out"), QStringLiteral("/tmp/x"),
                                         QStringLiteral("--llm-timeout"), QStringLiteral("soon")});
         QCOMPARE(timeout.exitCode, 2);
         QVERIFY(timeout.err.contains(QStringLiteral("--llm-timeout")));
-        QVERIFY(runRosarch({QStringLiteral("--help")}).out.contains(QStringLiteral("rosarch suggest <workspace> --out <dir>")));
+        QVERIFY(runRosarch({QStringLiteral("--help")})
+                    .out.contains(QStringLiteral("rosarch suggest <workspace> --out <dir>")));
     }
 };
 

@@ -91,10 +91,11 @@ private Q_SLOTS:
     {
         const AtomicNodeList list = sampleList();
         const QByteArray json = AtomicNodesJson::write(list);
-        for (const char *field : {"\"list_packages\"", "\"package_name\"", "\"list_atomic_ros_node_classifiers\"",
-                                  "\"id\": \"arc_1\"", "\"class_name\": \"Talker\"", "\"node_name\": \"talker\"",
-                                  "\"header_file_paths\"", "\"source_file_paths\"", "\"description\"",
-                                  "\"compile_type\": \"cpp\"", "\"execution\": \"talker\"", "\"end_column\": 40"})
+        for (const char *field :
+             {"\"list_packages\"", "\"package_name\"", "\"list_atomic_ros_node_classifiers\"",
+              "\"id\": \"arc_1\"", "\"class_name\": \"Talker\"", "\"node_name\": \"talker\"",
+              "\"header_file_paths\"", "\"source_file_paths\"", "\"description\"",
+              "\"compile_type\": \"cpp\"", "\"execution\": \"talker\"", "\"end_column\": 40"})
             QVERIFY2(json.contains(field), field);
 
         AtomicNodeList back;
@@ -116,42 +117,43 @@ private Q_SLOTS:
         QVERIFY(!error.isEmpty());
         QVERIFY(!AtomicNodesJson::read("{\"x\": 1}", &list, &error));
         QCOMPARE(error, QStringLiteral("missing list_packages"));
-        QVERIFY(!AtomicNodesJson::read(R"({"list_packages":[{"package_name":"p","list_atomic_ros_node_classifiers":[{"ports":[{"kind":"timer"}]}]}]})",
-                                       &list, &error));
+        QVERIFY(!AtomicNodesJson::read(
+            R"({"list_packages":[{"package_name":"p","list_atomic_ros_node_classifiers":[{"ports":[{"kind":"timer"}]}]}]})",
+            &list, &error));
         QVERIFY(error.contains(QStringLiteral("timer")));
     }
 
     void acdFollowsBlueprintNotation()
     {
         const QString acd = AcdWriter::write(sampleList().nodes[0]);
-        const QString expected = QStringLiteral(
-            "@startuml\n"
-            "' demo::Talker (cpp) in package demo\n"
-            "component \"<<AtomicRosNodeClassifier>>\\nTalker\" as node {\n"
-            "  portout \" \" as p1\n"
-            "  portin \"on_in\" as s1\n"
-            "}\n"
-            "  ' name from parameter 'topic'\n"
-            "frame \"p1\\nchatter\" as topic_p1 {\n"
-            "  rectangle \"**std_msgs::msg::String**\" as t_p1\n"
-            "}\n"
-            "frame \"s1\\n~/in\" as topic_s1 {\n"
-            "  rectangle \"**std_msgs::msg::String**\" as t_s1\n"
-            "}\n"
-            "  ' guard: use_reset\n"
-            "folder \"ps1\\nreset\" as srv_ps1 {\n"
-            "  rectangle \"**std_srvs::srv::Empty**\" as st_ps1\n"
-            "  rectangle \"handle_reset(...)\" as sf_ps1\n"
-            "}\n"
-            "  ' via Helper; inherited\n"
-            "folder \"ra1\\nfibonacci\" as act_ra1 {\n"
-            "  rectangle \"**demo::action::Fibonacci**\" as at_ra1\n"
-            "}\n"
-            "p1 -[#green,bold]-> topic_p1\n"
-            "topic_s1 -[#blue,bold]-> s1\n"
-            "node --0 srv_ps1\n"
-            "node --( act_ra1\n"
-            "@enduml\n");
+        const QString expected =
+            QStringLiteral("@startuml\n"
+                           "' demo::Talker (cpp) in package demo\n"
+                           "component \"<<AtomicRosNodeClassifier>>\\nTalker\" as node {\n"
+                           "  portout \" \" as p1\n"
+                           "  portin \"on_in\" as s1\n"
+                           "}\n"
+                           "  ' name from parameter 'topic'\n"
+                           "frame \"p1\\nchatter\" as topic_p1 {\n"
+                           "  rectangle \"**std_msgs::msg::String**\" as t_p1\n"
+                           "}\n"
+                           "frame \"s1\\n~/in\" as topic_s1 {\n"
+                           "  rectangle \"**std_msgs::msg::String**\" as t_s1\n"
+                           "}\n"
+                           "  ' guard: use_reset\n"
+                           "folder \"ps1\\nreset\" as srv_ps1 {\n"
+                           "  rectangle \"**std_srvs::srv::Empty**\" as st_ps1\n"
+                           "  rectangle \"handle_reset(...)\" as sf_ps1\n"
+                           "}\n"
+                           "  ' via Helper; inherited\n"
+                           "folder \"ra1\\nfibonacci\" as act_ra1 {\n"
+                           "  rectangle \"**demo::action::Fibonacci**\" as at_ra1\n"
+                           "}\n"
+                           "p1 -[#green,bold]-> topic_p1\n"
+                           "topic_s1 -[#blue,bold]-> s1\n"
+                           "node --0 srv_ps1\n"
+                           "node --( act_ra1\n"
+                           "@enduml\n");
         QCOMPARE(acd, expected);
     }
 
@@ -196,7 +198,8 @@ private Q_SLOTS:
         blocker.close();
         QStringList written;
         QString error;
-        QVERIFY(!ArtifactWriter::writeAll(sampleList(), dir.filePath(QStringLiteral("file/sub")), &written, &error));
+        QVERIFY(!ArtifactWriter::writeAll(sampleList(), dir.filePath(QStringLiteral("file/sub")),
+                                          &written, &error));
         QVERIFY(error.contains(QStringLiteral("Cannot create")));
     }
 };

@@ -4,8 +4,8 @@
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
 #include "acdwriter.h"
 #include "architecturejson.h"
-#include "ccdwriter.h"
 #include "atomicnodesjson.h"
+#include "ccdwriter.h"
 #include "launchdependenciesjson.h"
 #include "nodeanalyzer.h"
 #include "recovery.h"
@@ -22,7 +22,8 @@ class TestFixtures : public QObject
 private:
     static QString workspaceOf(const QString &caseDir)
     {
-        const QByteArray pointer = test::readFile(QDir(caseDir).filePath(QStringLiteral("workspace"))).trimmed();
+        const QByteArray pointer =
+            test::readFile(QDir(caseDir).filePath(QStringLiteral("workspace"))).trimmed();
         if (!pointer.isEmpty())
             return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QString::fromUtf8(pointer));
         return QDir(caseDir).filePath(QStringLiteral("ws"));
@@ -39,7 +40,8 @@ private:
         }
         const QByteArray expected = test::readFile(expectedPath);
         if (actual != expected) {
-            const QString actualPath = QDir::temp().filePath(QFileInfo(expectedPath).fileName() + QStringLiteral(".actual"));
+            const QString actualPath = QDir::temp().filePath(QFileInfo(expectedPath).fileName() +
+                                                             QStringLiteral(".actual"));
             QFile f(actualPath);
             if (f.open(QIODevice::WriteOnly))
                 f.write(actual);
@@ -49,7 +51,8 @@ private:
     }
 
 private Q_SLOTS:
-    static void compareDiagrams(const QMap<QString, QByteArray> &produced, const QString &expectedDir)
+    static void compareDiagrams(const QMap<QString, QByteArray> &produced,
+                                const QString &expectedDir)
     {
         const QDir dir(expectedDir);
         if (!dir.exists())
@@ -57,7 +60,8 @@ private Q_SLOTS:
         for (auto it = produced.cbegin(); it != produced.cend(); ++it)
             compareOrUpdate(it.value(), dir.filePath(it.key()));
         if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED"))
-            QCOMPARE(produced.keys(), dir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name));
+            QCOMPARE(produced.keys(),
+                     dir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name));
     }
 
     void recovery_data()
@@ -67,7 +71,8 @@ private Q_SLOTS:
         const QStringList cases = data.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
         int rows = 0;
         for (const QString &c : cases) {
-            if (!QFileInfo::exists(data.filePath(c + QStringLiteral("/expected/atomic_nodes.json"))))
+            if (!QFileInfo::exists(
+                    data.filePath(c + QStringLiteral("/expected/atomic_nodes.json"))))
                 continue;
             QTest::newRow(qPrintable(c)) << data.filePath(c);
             ++rows;
@@ -83,12 +88,15 @@ private Q_SLOTS:
         const Recovery recovery = recoverWorkspace(ws);
         const AtomicNodeList &list = recovery.nodes;
         QVERIFY(!list.canceled);
-        compareOrUpdate(AtomicNodesJson::write(list), QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
-        const QString launchExpected = QDir(caseDir).filePath(QStringLiteral("expected/launch_dependencies.json"));
+        compareOrUpdate(AtomicNodesJson::write(list),
+                        QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
+        const QString launchExpected =
+            QDir(caseDir).filePath(QStringLiteral("expected/launch_dependencies.json"));
         if (QFileInfo::exists(launchExpected))
             compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
 
-        const QString archExpected = QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
+        const QString archExpected =
+            QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
         const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
         if (QFileInfo::exists(archExpected))
             compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems), archExpected);
@@ -101,13 +109,15 @@ private Q_SLOTS:
         compareDiagrams(acds, QDir(caseDir).filePath(QStringLiteral("expected/acd")));
         QMap<QString, QByteArray> ccds;
         for (const Composite *c : recovery.architecture.representatives())
-            ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"), CcdWriter::write(*c).toUtf8());
+            ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"),
+                        CcdWriter::write(*c).toUtf8());
         compareDiagrams(ccds, QDir(caseDir).filePath(QStringLiteral("expected/ccd")));
     }
 
     void outputIsDeterministic()
     {
-        const QString ws = QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+        const QString ws = QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                               .filePath(QStringLiteral("resources/example_ws"));
         const QByteArray first = AtomicNodesJson::write(recoverAtomicNodes(ws));
         const QByteArray second = AtomicNodesJson::write(recoverAtomicNodes(ws));
         QCOMPARE(first, second);

@@ -4,9 +4,9 @@
 // service, a parameter-derived topic, SetRemap, an inactive node and an unresolved name).
 #include "ccdwriter.h"
 #include "composer.h"
+#include "guifixture.h"
 #include "recovery.h"
 #include "rosnames.h"
-#include "guifixture.h"
 #include "testsupport.h"
 
 #include <QtTest>
@@ -38,8 +38,11 @@ QStringList connectionsOf(const Composite &c, const QString &targetId)
     QStringList out;
     for (const Connection &k : c.connections)
         if (k.targetId == targetId)
-            out << QStringLiteral("%1 %2.%3").arg(connectionKindName(k.kind), c.part(k.partId)->name.isEmpty()
-                                                  ? c.part(k.partId)->typeName : c.part(k.partId)->name, k.portId);
+            out << QStringLiteral("%1 %2.%3")
+                       .arg(connectionKindName(k.kind),
+                            c.part(k.partId)->name.isEmpty() ? c.part(k.partId)->typeName
+                                                             : c.part(k.partId)->name,
+                            k.portId);
     return out;
 }
 
@@ -82,13 +85,27 @@ private Q_SLOTS:
         QTest::addColumn<QString>("name");
         QTest::addColumn<QString>("ns");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("absolute") << "/scan" << "/robot" << "/scan";
-        QTest::newRow("relative") << "scan" << "/robot" << "/robot/scan";
-        QTest::newRow("relative at root") << "scan" << "/" << "/scan";
-        QTest::newRow("nested relative") << "camera/image" << "/a/b" << "/a/b/camera/image";
-        QTest::newRow("private") << "~/status" << "/robot" << "/robot/driver/status";
-        QTest::newRow("private at root") << "~/status" << "/" << "/driver/status";
-        QTest::newRow("tilde alone") << "~" << "/robot" << "/robot/driver";
+        QTest::newRow("absolute") << "/scan"
+                                  << "/robot"
+                                  << "/scan";
+        QTest::newRow("relative") << "scan"
+                                  << "/robot"
+                                  << "/robot/scan";
+        QTest::newRow("relative at root") << "scan"
+                                          << "/"
+                                          << "/scan";
+        QTest::newRow("nested relative") << "camera/image"
+                                         << "/a/b"
+                                         << "/a/b/camera/image";
+        QTest::newRow("private") << "~/status"
+                                 << "/robot"
+                                 << "/robot/driver/status";
+        QTest::newRow("private at root") << "~/status"
+                                         << "/"
+                                         << "/driver/status";
+        QTest::newRow("tilde alone") << "~"
+                                     << "/robot"
+                                     << "/robot/driver";
     }
 
     void expandsNames()
@@ -101,19 +118,23 @@ private Q_SLOTS:
 
     void remapsTheNameAsWritten()
     {
-        const QList<QPair<QString, QString>> rules{{QStringLiteral("__ns"), QStringLiteral("/x")},
-                                                   {QStringLiteral("/robot/scan"), QStringLiteral("scan_raw")},
-                                                   {QStringLiteral("~/out"), QStringLiteral("/result")},
-                                                   {QStringLiteral("scan"), QStringLiteral("never_used")}};
+        const QList<QPair<QString, QString>> rules{
+            {QStringLiteral("__ns"), QStringLiteral("/x")},
+            {QStringLiteral("/robot/scan"), QStringLiteral("scan_raw")},
+            {QStringLiteral("~/out"), QStringLiteral("/result")},
+            {QStringLiteral("scan"), QStringLiteral("never_used")}};
         int used = -1;
         // "scan" expands to /robot/scan, which the absolute rule names: the first match wins.
-        QCOMPARE(RosNames::remap(QStringLiteral("scan"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+        QCOMPARE(RosNames::remap(QStringLiteral("scan"), rules, QStringLiteral("/robot"),
+                                 QStringLiteral("n"), &used),
                  QStringLiteral("/robot/scan_raw"));
         QCOMPARE(used, 1);
-        QCOMPARE(RosNames::remap(QStringLiteral("~/out"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+        QCOMPARE(RosNames::remap(QStringLiteral("~/out"), rules, QStringLiteral("/robot"),
+                                 QStringLiteral("n"), &used),
                  QStringLiteral("/result"));
         QCOMPARE(used, 2);
-        QCOMPARE(RosNames::remap(QStringLiteral("other"), rules, QStringLiteral("/robot"), QStringLiteral("n"), &used),
+        QCOMPARE(RosNames::remap(QStringLiteral("other"), rules, QStringLiteral("/robot"),
+                                 QStringLiteral("n"), &used),
                  QStringLiteral("/robot/other"));
         QCOMPARE(used, -1);
     }
@@ -124,14 +145,22 @@ private Q_SLOTS:
         QTest::addColumn<QString>("value");
         QTest::addColumn<bool>("known");
         QTest::addColumn<bool>("holds");
-        QTest::newRow("true") << "use_x" << "true" << true << true;
-        QTest::newRow("False") << "use_x" << "False" << true << false;
-        QTest::newRow("negated") << "!use_x" << "false" << true << true;
-        QTest::newRow("python not") << "not self.use_x" << "True" << true << false;
-        QTest::newRow("member") << "this->use_x_" << "1" << true << true;
-        QTest::newRow("compared") << "use_x == false" << "false" << true << true;
-        QTest::newRow("compound") << "use_x && ready" << "true" << false << true;
-        QTest::newRow("not a bool") << "use_x" << "maybe" << false << true;
+        QTest::newRow("true") << "use_x"
+                              << "true" << true << true;
+        QTest::newRow("False") << "use_x"
+                               << "False" << true << false;
+        QTest::newRow("negated") << "!use_x"
+                                 << "false" << true << true;
+        QTest::newRow("python not") << "not self.use_x"
+                                    << "True" << true << false;
+        QTest::newRow("member") << "this->use_x_"
+                                << "1" << true << true;
+        QTest::newRow("compared") << "use_x == false"
+                                  << "false" << true << true;
+        QTest::newRow("compound") << "use_x && ready"
+                                  << "true" << false << true;
+        QTest::newRow("not a bool") << "use_x"
+                                    << "maybe" << false << true;
     }
 
     void evaluatesGuards()
@@ -149,12 +178,14 @@ private Q_SLOTS:
     {
         AtomicNode node;
         node.nodeName = QStringLiteral("rectifier");
-        Port out = test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("image_rect"),
-                                   QStringLiteral("sensor_msgs/msg/Image"), QString(), {});
+        Port out =
+            test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("image_rect"),
+                            QStringLiteral("sensor_msgs/msg/Image"), QString(), {});
         out.nameOrigin = NameOrigin::Parameter;
         out.parameter = QStringLiteral("output_topic");
-        Port guarded = test::gui::port(QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("~/reset"),
-                                       QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"), {});
+        Port guarded = test::gui::port(
+            QStringLiteral("ps1"), PortKind::ServiceServer, QStringLiteral("~/reset"),
+            QStringLiteral("std_srvs/srv/Trigger"), QStringLiteral("on_reset"), {});
         guarded.guard = QStringLiteral("enable_reset");
         guarded.guardParameter = QStringLiteral("enable_reset");
         guarded.guardDefault = QStringLiteral("false");
@@ -186,7 +217,8 @@ private Q_SLOTS:
         QCOMPARE(camera->nameSpace, QStringLiteral("/front"));
         QCOMPARE(portOf(camera, QStringLiteral("p1"))->name, QStringLiteral("/front/camera/image"));
         QVERIFY(portOf(camera, QStringLiteral("p1"))->remapped);
-        QCOMPARE(portOf(camera, QStringLiteral("ps1"))->name, QStringLiteral("/front/front_camera/set_exposure"));
+        QCOMPARE(portOf(camera, QStringLiteral("ps1"))->name,
+                 QStringLiteral("/front/front_camera/set_exposure"));
         QVERIFY(portOf(camera, QStringLiteral("ps1"))->active);
 
         // The rear include passes exposure:=false: the guarded service is kept but inactive.
@@ -195,20 +227,24 @@ private Q_SLOTS:
         QVERIFY(!portOf(rearCamera, QStringLiteral("ps1"))->active);
 
         // Container-level remap (image_rect -> rectified) reaches the parameter-derived output.
-        const PartPort *rectified = portOf(partNamed(*m_front, QStringLiteral("rectifier")), QStringLiteral("p1"));
+        const PartPort *rectified =
+            portOf(partNamed(*m_front, QStringLiteral("rectifier")), QStringLiteral("p1"));
         QCOMPARE(rectified->name, QStringLiteral("/front/rectified"));
         QVERIFY(rectified->parameterDerived);
-        QCOMPARE(portOf(partNamed(*m_front, QStringLiteral("detector")), QStringLiteral("s1"))->name,
-                 QStringLiteral("/front/rectified"));
+        QCOMPARE(
+            portOf(partNamed(*m_front, QStringLiteral("detector")), QStringLiteral("s1"))->name,
+            QStringLiteral("/front/rectified"));
         // SetRemap in the rear group renames an absolute name inside the included file.
         QCOMPARE(portOf(partNamed(*m_rear, QStringLiteral("detector")), QStringLiteral("p1"))->name,
                  QStringLiteral("/rear/detections"));
         // An expression stays unresolved, with its text as the guess, and is not wired.
-        const PartPort *report = portOf(partNamed(*m_system, QStringLiteral("commander")), QStringLiteral("p2"));
+        const PartPort *report =
+            portOf(partNamed(*m_system, QStringLiteral("commander")), QStringLiteral("p2"));
         QVERIFY(!report->resolved);
         QCOMPARE(report->name, QStringLiteral("self.get_name() + '/report'"));
         for (const Connection &k : m_system->connections)
-            QVERIFY(!(k.portId == QLatin1String("p2") && m_system->part(k.partId)->name == QLatin1String("commander")));
+            QVERIFY(!(k.portId == QLatin1String("p2") &&
+                      m_system->part(k.partId)->name == QLatin1String("commander")));
     }
 
     void wiresInsideAndPromotesTheRest()
@@ -216,10 +252,13 @@ private Q_SLOTS:
         QStringList channels;
         for (const Channel &ch : m_front->channels)
             channels << ch.name;
-        QCOMPARE(channels, (QStringList{QStringLiteral("/front/camera/image"), QStringLiteral("/front/rectified")}));
+        QCOMPARE(channels, (QStringList{QStringLiteral("/front/camera/image"),
+                                        QStringLiteral("/front/rectified")}));
         QStringList boundary;
         for (const BoundaryPort &b : m_front->boundary)
-            boundary << QStringLiteral("%1 %2 %3").arg(b.id, b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.name);
+            boundary << QStringLiteral("%1 %2 %3")
+                            .arg(b.id, b.isInput() ? QStringLiteral("in") : QStringLiteral("out"),
+                                 b.name);
         QCOMPARE(boundary, (QStringList{QStringLiteral("s1 in /front/trigger"),
                                         QStringLiteral("ps1 in /front/front_camera/set_exposure"),
                                         QStringLiteral("p1 out /detections"),
@@ -244,16 +283,20 @@ private Q_SLOTS:
                 detections = &ch;
         QVERIFY(detections);
         QCOMPARE(connectionsOf(*m_system, detections->id),
-                 (QStringList{QStringLiteral("publish vision.p1"), QStringLiteral("subscribe planner.s1"),
+                 (QStringList{QStringLiteral("publish vision.p1"),
+                              QStringLiteral("subscribe planner.s1"),
                               QStringLiteral("subscribe backup_planner.s1")}));
         // The planners' relative front/trigger reaches the front camera's promoted subscription.
         QCOMPARE(connectionsOf(*m_system, QStringLiteral("q_front_trigger")),
-                 (QStringList{QStringLiteral("publish planner.p2"), QStringLiteral("publish backup_planner.p2"),
+                 (QStringList{QStringLiteral("publish planner.p2"),
+                              QStringLiteral("publish backup_planner.p2"),
                               QStringLiteral("subscribe vision.s1")}));
         QCOMPARE(connectionsOf(*m_system, QStringLiteral("a_navigate")),
-                 (QStringList{QStringLiteral("server planner.pa1"), QStringLiteral("server backup_planner.pa1"),
+                 (QStringList{QStringLiteral("server planner.pa1"),
+                              QStringLiteral("server backup_planner.pa1"),
                               QStringLiteral("client commander.ra1")}));
-        // Three publishers of /robot/cmd_vel and no subscriber: one boundary port, three delegations.
+        // Three publishers of /robot/cmd_vel and no subscriber: one boundary port, three
+        // delegations.
         const BoundaryPort *cmd = nullptr;
         for (const BoundaryPort &b : m_system->boundary)
             if (b.name == QLatin1String("/robot/cmd_vel"))
@@ -275,12 +318,14 @@ private Q_SLOTS:
     void reportsArchitectureChecks()
     {
         const QList<Diagnostic> &d = m_recovery.architecture.diagnostics;
-        QCOMPARE(codes(d), (QStringList{QStringLiteral("duplicate-server"), QStringLiteral("duplicate-server"),
-                                        QStringLiteral("remap-unmatched"), QStringLiteral("topic-unheard"),
-                                        QStringLiteral("topic-unheard"), QStringLiteral("topic-unheard"),
-                                        QStringLiteral("topic-unheard"), QStringLiteral("topic-unpublished"),
-                                        QStringLiteral("topic-unpublished"), QStringLiteral("type-mismatch"),
-                                        QStringLiteral("unserved-client"), QStringLiteral("unserved-client")}));
+        QCOMPARE(
+            codes(d),
+            (QStringList{QStringLiteral("duplicate-server"), QStringLiteral("duplicate-server"),
+                         QStringLiteral("remap-unmatched"), QStringLiteral("topic-unheard"),
+                         QStringLiteral("topic-unheard"), QStringLiteral("topic-unheard"),
+                         QStringLiteral("topic-unheard"), QStringLiteral("topic-unpublished"),
+                         QStringLiteral("topic-unpublished"), QStringLiteral("type-mismatch"),
+                         QStringLiteral("unserved-client"), QStringLiteral("unserved-client")}));
         for (const Diagnostic &x : d) {
             QVERIFY2(x.evidence.isValid(), qPrintable(x.message));
             if (x.code == QLatin1String("remap-unmatched")) {
@@ -288,7 +333,8 @@ private Q_SLOTS:
                 QVERIFY(x.message.contains(QLatin1String("camera_info:=camera/info")));
             }
             if (x.code == QLatin1String("type-mismatch"))
-                QVERIFY(x.message.contains(QLatin1String("geometry_msgs/msg/Twist, geometry_msgs/msg/TwistStamped")));
+                QVERIFY(x.message.contains(
+                    QLatin1String("geometry_msgs/msg/Twist, geometry_msgs/msg/TwistStamped")));
         }
     }
 

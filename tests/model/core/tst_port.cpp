@@ -10,8 +10,9 @@ class TestPort : public QObject
 private Q_SLOTS:
     void kindNamesRoundTrip()
     {
-        for (PortKind k : {PortKind::Publisher, PortKind::Subscriber, PortKind::ServiceServer,
-                           PortKind::ServiceClient, PortKind::ActionServer, PortKind::ActionClient}) {
+        for (PortKind k :
+             {PortKind::Publisher, PortKind::Subscriber, PortKind::ServiceServer,
+              PortKind::ServiceClient, PortKind::ActionServer, PortKind::ActionClient}) {
             PortKind back = PortKind::Publisher;
             QVERIFY(portKindFromName(portKindName(k), &back));
             QCOMPARE(back, k);

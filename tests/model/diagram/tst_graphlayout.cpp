@@ -222,7 +222,8 @@ void TestGraphLayout::failuresAreMessages()
     QCOMPARE(r.error,
              QStringLiteral("Graphviz could not lay out this diagram (exit code 3). boom"));
 
-    options.helperPath = test::script(dir, QStringLiteral("junk.sh"), "cat >/dev/null; echo '{junk'");
+    options.helperPath =
+        test::script(dir, QStringLiteral("junk.sh"), "cat >/dev/null; echo '{junk'");
     r = GraphLayout::layout(smallGraph(), options);
     QVERIFY(!r.ok);
     QVERIFY(

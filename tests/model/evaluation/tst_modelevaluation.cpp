@@ -39,9 +39,11 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("caseName");
         QTest::addColumn<QString>("workspace");
-        QTest::newRow("compose_system") << "compose_system" << test::dataDir(QStringLiteral("compose_system/ws"));
+        QTest::newRow("compose_system")
+            << "compose_system" << test::dataDir(QStringLiteral("compose_system/ws"));
         QTest::newRow("example_ws") << "example_ws"
-                                    << QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+                                    << QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                                           .filePath(QStringLiteral("resources/example_ws"));
     }
 
     void recoveredModelScoresOne()
@@ -74,27 +76,38 @@ private Q_SLOTS:
         QTest::addColumn<QString>("reference");
         QTest::addColumn<QStringList>("expected");
         QTest::newRow("wrong boundary type")
-            << "system_wrong_boundary_type" << "system"
-            << QStringList{QStringLiteral("FN boundary_port: (out, vision_msgs/msg/Detection2DArray)"),
-                           QStringLiteral("FP boundary_port: (out, vision_msgs/msg/Detection3DArray)"),
-                           // the delegation's end is reduced to the boundary port's type
-                           QStringLiteral("FN connection: delegation vision -> boundary:out/vision_msgs/msg/Detection2DArray"),
-                           QStringLiteral("FP connection: delegation vision -> boundary:out/vision_msgs/msg/Detection3DArray")};
-        QTest::newRow("extra topic") << "system_extra_topic" << "system"
-                                     << QStringList{QStringLiteral("FP topic: odom")};
+            << "system_wrong_boundary_type"
+            << "system"
+            << QStringList{
+                   QStringLiteral("FN boundary_port: (out, vision_msgs/msg/Detection2DArray)"),
+                   QStringLiteral("FP boundary_port: (out, vision_msgs/msg/Detection3DArray)"),
+                   // the delegation's end is reduced to the boundary port's type
+                   QStringLiteral("FN connection: delegation vision -> "
+                                  "boundary:out/vision_msgs/msg/Detection2DArray"),
+                   QStringLiteral("FP connection: delegation vision -> "
+                                  "boundary:out/vision_msgs/msg/Detection3DArray")};
+        QTest::newRow("extra topic") << "system_extra_topic"
+                                     << "system" << QStringList{QStringLiteral("FP topic: odom")};
         QTest::newRow("client drawn as server")
-            << "system_client_as_server" << "system"
+            << "system_client_as_server"
+            << "system"
             << QStringList{QStringLiteral("FN connection: client commander -> navigate"),
                            QStringLiteral("FP connection: server commander -> navigate")};
         QTest::newRow("missing part")
-            << "vision_missing_detector" << "vision"
-            << QStringList{QStringLiteral("FN part: detector"), QStringLiteral("FN part_type: detector:Detector"),
-                           QStringLiteral("FN namespace: (front, detector)"),
-                           QStringLiteral("FN connection: subscribe front/rectified -> detector"),
-                           QStringLiteral("FN connection: delegation detector -> boundary:out/vision_msgs/msg/Detection2DArray"),
-                           QStringLiteral("FN connection: delegation detector -> boundary:out/std_srvs/srv/Trigger")};
+            << "vision_missing_detector"
+            << "vision"
+            << QStringList{
+                   QStringLiteral("FN part: detector"),
+                   QStringLiteral("FN part_type: detector:Detector"),
+                   QStringLiteral("FN namespace: (front, detector)"),
+                   QStringLiteral("FN connection: subscribe front/rectified -> detector"),
+                   QStringLiteral("FN connection: delegation detector -> "
+                                  "boundary:out/vision_msgs/msg/Detection2DArray"),
+                   QStringLiteral(
+                       "FN connection: delegation detector -> boundary:out/std_srvs/srv/Trigger")};
         QTest::newRow("wrong namespace")
-            << "vision_wrong_namespace" << "vision"
+            << "vision_wrong_namespace"
+            << "vision"
             << QStringList{QStringLiteral("FN namespace: (front, front_camera)"),
                            QStringLiteral("FP namespace: (front/cam, front_camera)")};
     }
@@ -104,13 +117,18 @@ private Q_SLOTS:
         QFETCH(QString, broken);
         QFETCH(QString, reference);
         QFETCH(QStringList, expected);
-        const QString refPath = test::dataDir(QStringLiteral("compose_system/expected/ccd/%1.puml").arg(reference));
-        const QString brokenPath = test::dataDir(QStringLiteral("compose_system/broken/%1.puml").arg(broken));
-        const QList<UmlDiagram> ref = PlantUmlReader::read(QString::fromUtf8(test::readFile(refPath)), refPath);
-        const QList<UmlDiagram> rec = PlantUmlReader::read(QString::fromUtf8(test::readFile(brokenPath)), brokenPath);
+        const QString refPath =
+            test::dataDir(QStringLiteral("compose_system/expected/ccd/%1.puml").arg(reference));
+        const QString brokenPath =
+            test::dataDir(QStringLiteral("compose_system/broken/%1.puml").arg(broken));
+        const QList<UmlDiagram> ref =
+            PlantUmlReader::read(QString::fromUtf8(test::readFile(refPath)), refPath);
+        const QList<UmlDiagram> rec =
+            PlantUmlReader::read(QString::fromUtf8(test::readFile(brokenPath)), brokenPath);
         QCOMPARE(ref.size(), 1);
         QCOMPARE(rec.size(), 1);
-        QCOMPARE(rec.first().name, reference); // matched by the launch stem inside, not the file name
+        QCOMPARE(rec.first().name,
+                 reference); // matched by the launch stem inside, not the file name
         const LevelEvaluation e = Evaluator::evaluateLevel(ref, rec, UmlLevel::Ccd);
         QCOMPARE(e.diagrams.size(), 1);
         QVERIFY(!e.diagrams.first().missing);

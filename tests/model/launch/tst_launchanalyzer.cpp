@@ -1,9 +1,9 @@
 // Stage 2 semantics on hand-built launch descriptions (readers are tested separately), the
 // substitution evaluator, and the same system in three formats read from fixture files.
 #include "launchexecutor.h"
+#include "launchsupport.h"
 #include "recovery.h"
 #include "substitutionevaluator.h"
-#include "launchsupport.h"
 #include "testsupport.h"
 
 #include <QTemporaryDir>
@@ -119,10 +119,13 @@ struct Fixture
     LaunchDependencies run(const QString &root, const QMap<QString, QString> &args = {})
     {
         LaunchDependencies out;
-        LaunchExecutor exec(ws, nodes, [this](const QString &f) -> const LaunchFileDescription * {
-            const auto it = files.constFind(f);
-            return it == files.constEnd() ? nullptr : &*it;
-        }, &out);
+        LaunchExecutor exec(
+            ws, nodes,
+            [this](const QString &f) -> const LaunchFileDescription * {
+                const auto it = files.constFind(f);
+                return it == files.constEnd() ? nullptr : &*it;
+            },
+            &out);
         exec.runRoot(root, args);
         return out;
     }
@@ -160,18 +163,24 @@ private Q_SLOTS:
         push.nameSpace = var(QStringLiteral("ns"));
         LaunchAction group;
         group.kind = LaunchAction::Kind::Group;
-        group.children << push << node(QStringLiteral("demo"), QStringLiteral("talker"), QString(), 3);
-        LaunchAction absolute = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("abs"), 4);
+        group.children << push
+                       << node(QStringLiteral("demo"), QStringLiteral("talker"), QString(), 3);
+        LaunchAction absolute =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("abs"), 4);
         absolute.nameSpace = lit(QStringLiteral("/fixed"));
         group.children << absolute;
         const QString ns = QStringLiteral("robot");
-        fx.add(QStringLiteral("bringup/launch/a.launch.py"),
-               {declare(QStringLiteral("ns"), &ns), group, node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("after"), 5)});
+        fx.add(
+            QStringLiteral("bringup/launch/a.launch.py"),
+            {declare(QStringLiteral("ns"), &ns), group,
+             node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("after"), 5)});
         const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/a.launch.py"));
-        QCOMPARE(summary(d), (QStringList{
-            "/robot talker_in_code talker class=Talker kind=python active=1 remaps=[] params=[]",
-            "/fixed abs talker class=Talker kind=python active=1 remaps=[] params=[]",
-            "/ after talker class=Talker kind=python active=1 remaps=[] params=[]"}));
+        QCOMPARE(
+            summary(d),
+            (QStringList{"/robot talker_in_code talker class=Talker kind=python active=1 remaps=[] "
+                         "params=[]",
+                         "/fixed abs talker class=Talker kind=python active=1 remaps=[] params=[]",
+                         "/ after talker class=Talker kind=python active=1 remaps=[] params=[]"}));
         QCOMPARE(d.instances.size(), 1);
         QCOMPARE(d.instances[0].namespaces.value(QStringLiteral("/robot")), QStringList{"n1"});
         QCOMPARE(d.instances[0].namespaces.value(QStringLiteral("/")), QStringList{"n3"});
@@ -179,7 +188,8 @@ private Q_SLOTS:
         QCOMPARE(d.arguments[0].defaultValue, QStringLiteral("robot"));
 
         // The person's value wins over the default.
-        const LaunchDependencies d2 = fx.run(QStringLiteral("bringup/launch/a.launch.py"), {{"ns", "other"}});
+        const LaunchDependencies d2 =
+            fx.run(QStringLiteral("bringup/launch/a.launch.py"), {{"ns", "other"}});
         QCOMPARE(d2.nodes[0].nameSpace, QStringLiteral("/other"));
     }
 
@@ -189,11 +199,14 @@ private Q_SLOTS:
         LaunchAction remap;
         remap.kind = LaunchAction::Kind::SetRemap;
         remap.remaps << LaunchRemap{lit(QStringLiteral("a")), lit(QStringLiteral("b")), {}};
-        LaunchAction child = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("t"), 2);
+        LaunchAction child =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("t"), 2);
         LaunchParameter p{lit(QStringLiteral("rate")), var(QStringLiteral("rate")), false, {}};
         child.parameters << p;
-        fx.add(QStringLiteral("bringup/launch/child.launch.py"), {declare(QStringLiteral("rate"), nullptr), child});
-        LaunchAction ext = include(share(QStringLiteral("not_here"), QStringLiteral("launch/x.launch.py")));
+        fx.add(QStringLiteral("bringup/launch/child.launch.py"),
+               {declare(QStringLiteral("rate"), nullptr), child});
+        LaunchAction ext =
+            include(share(QStringLiteral("not_here"), QStringLiteral("launch/x.launch.py")));
         fx.add(QStringLiteral("bringup/launch/root.launch.py"),
                {remap,
                 include(share(QStringLiteral("bringup"), QStringLiteral("launch/child.launch.py")),
@@ -208,9 +221,10 @@ private Q_SLOTS:
         QCOMPARE(d.instances[2].file, QStringLiteral("bringup/launch/child.launch.py"));
         QVERIFY(d.instances[3].external);
         QCOMPARE(d.instances[3].package, QStringLiteral("not_here"));
-        QCOMPARE(summary(d), (QStringList{
-            "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=10]",
-            "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=]"}));
+        QCOMPARE(summary(d),
+                 (QStringList{
+                     "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=10]",
+                     "/ t talker class=Talker kind=python active=1 remaps=[a->b] params=[rate=]"}));
         // The second include passes no value: recorded, not dropped.
         QCOMPARE(d.instances[2].unresolved.size(), 1);
         QCOMPARE(d.instances[2].unresolved[0].kind, QStringLiteral("argument"));
@@ -229,28 +243,34 @@ private Q_SLOTS:
         QCOMPARE(d.instances.size(), 3);
         QCOMPARE(d.diagnostics.size(), 1);
         QCOMPARE(d.diagnostics[0].code, QStringLiteral("include-cycle"));
-        QVERIFY(d.diagnostics[0].message.contains(QStringLiteral("a.launch.py → bringup/launch/b.launch.py → bringup/launch/a.launch.py")));
+        QVERIFY(d.diagnostics[0].message.contains(QStringLiteral(
+            "a.launch.py → bringup/launch/b.launch.py → bringup/launch/a.launch.py")));
         QCOMPARE(d.instances[2].unresolved.last().kind, QStringLiteral("cycle"));
     }
 
     void conditionsDecideOrAreMarked()
     {
         Fixture fx;
-        LaunchAction off = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("off"), 2);
+        LaunchAction off =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("off"), 2);
         off.condition.expression = var(QStringLiteral("flag"));
         off.condition.text = QStringLiteral("IfCondition(flag)");
         LaunchAction on = off;
         on.name = lit(QStringLiteral("on"));
         on.condition.unless = true;
-        LaunchAction unknown = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("unknown"), 4);
+        LaunchAction unknown =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("unknown"), 4);
         unknown.condition.expression = Substitution::unknown(QStringLiteral("context.perform()"));
         unknown.condition.text = QStringLiteral("context.perform()");
-        LaunchAction eval = node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("eval"), 5);
+        LaunchAction eval =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("eval"), 5);
         eval.condition.expression.kind = Substitution::Kind::Eval;
-        eval.condition.expression.parts << lit(QStringLiteral("'")) << var(QStringLiteral("flag")) << lit(QStringLiteral("' == 'false'"));
+        eval.condition.expression.parts << lit(QStringLiteral("'")) << var(QStringLiteral("flag"))
+                                        << lit(QStringLiteral("' == 'false'"));
         eval.condition.text = QStringLiteral("PythonExpression");
         const QString flag = QStringLiteral("false");
-        fx.add(QStringLiteral("bringup/launch/c.launch.py"), {declare(QStringLiteral("flag"), &flag), off, on, unknown, eval});
+        fx.add(QStringLiteral("bringup/launch/c.launch.py"),
+               {declare(QStringLiteral("flag"), &flag), off, on, unknown, eval});
         const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/c.launch.py"));
         QCOMPARE(d.nodes.size(), 4);
         QCOMPARE(d.nodes[0].active, false);
@@ -284,10 +304,12 @@ private Q_SLOTS:
         load.children << later;
         fx.add(QStringLiteral("bringup/launch/k.launch.py"), {container, load});
         const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/k.launch.py"));
-        QCOMPARE(summary(d), (QStringList{
-            "/ box component_container class= kind=cpp active=1 remaps=[] params=[]",
-            "/ filter demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]",
-            "/ later demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]"}));
+        QCOMPARE(
+            summary(d),
+            (QStringList{
+                "/ box component_container class= kind=cpp active=1 remaps=[] params=[]",
+                "/ filter demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]",
+                "/ later demo::Filter class=Filter kind=composable active=1 remaps=[] params=[]"}));
         QCOMPARE(d.nodes[1].container, QStringLiteral("n1"));
         QCOMPARE(d.nodes[2].container, QStringLiteral("n1"));
     }
@@ -306,11 +328,13 @@ private Q_SLOTS:
         b.className = QStringLiteral("Odometry");
         b.nodeName = QStringLiteral("odometry");
         fx.nodes.nodes << a << b;
-        fx.add(QStringLiteral("bringup/launch/d.launch.py"), {node(QStringLiteral("demo"), QStringLiteral("duo"), QString(), 2)});
+        fx.add(QStringLiteral("bringup/launch/d.launch.py"),
+               {node(QStringLiteral("demo"), QStringLiteral("duo"), QString(), 2)});
         const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/d.launch.py"));
-        QCOMPARE(summary(d), (QStringList{
-            "/ driver duo class=Driver kind=cpp active=1 remaps=[] params=[]",
-            "/ odometry duo class=Odometry kind=cpp active=1 remaps=[] params=[]"}));
+        QCOMPARE(
+            summary(d),
+            (QStringList{"/ driver duo class=Driver kind=cpp active=1 remaps=[] params=[]",
+                         "/ odometry duo class=Odometry kind=cpp active=1 remaps=[] params=[]"}));
         QCOMPARE(d.instances[0].nodes, (QStringList{"n1", "n2"}));
         QCOMPARE(d.nodes[1].evidence, d.nodes[0].evidence);
     }
@@ -319,13 +343,20 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("expression");
         QTest::addColumn<QString>("value");
-        QTest::newRow("eq") << "'a' == 'a'" << "true";
-        QTest::newRow("neq") << "'a' != 'a'" << "false";
-        QTest::newRow("not") << "not true" << "false";
-        QTest::newRow("and-or") << "('x' == 'y') or (True and not False)" << "true";
-        QTest::newRow("in") << "'b' in ['a', 'b']" << "true";
-        QTest::newRow("not in") << "'c' not in ['a', 'b']" << "true";
-        QTest::newRow("number") << "2 == 2.0" << "true";
+        QTest::newRow("eq") << "'a' == 'a'"
+                            << "true";
+        QTest::newRow("neq") << "'a' != 'a'"
+                             << "false";
+        QTest::newRow("not") << "not true"
+                             << "false";
+        QTest::newRow("and-or") << "('x' == 'y') or (True and not False)"
+                                << "true";
+        QTest::newRow("in") << "'b' in ['a', 'b']"
+                            << "true";
+        QTest::newRow("not in") << "'c' not in ['a', 'b']"
+                                << "true";
+        QTest::newRow("number") << "2 == 2.0"
+                                << "true";
     }
 
     void pythonExpressions()
@@ -359,9 +390,11 @@ private Q_SLOTS:
         QCOMPARE(byFormat.size(), 3);
         QCOMPARE(byFormat.value(QStringLiteral("xml")), byFormat.value(QStringLiteral("python")));
         QCOMPARE(byFormat.value(QStringLiteral("yaml")), byFormat.value(QStringLiteral("python")));
-        QCOMPARE(byFormat.value(QStringLiteral("python")), (QStringList{
-            "/chat talker talker class=Talker kind=python active=1 remaps=[chatter->conversation] params=[]",
-            "/chat listener listener class=Listener kind=python active=1 remaps=[chatter->conversation] params=[rate=5]"}));
+        QCOMPARE(byFormat.value(QStringLiteral("python")),
+                 (QStringList{"/chat talker talker class=Talker kind=python active=1 "
+                              "remaps=[chatter->conversation] params=[]",
+                              "/chat listener listener class=Listener kind=python active=1 "
+                              "remaps=[chatter->conversation] params=[rate=5]"}));
     }
 };
 

@@ -33,13 +33,19 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString root = dir.path();
-        writeFile(root + "/pkg/package.xml", "<package><name>pkg</name><export><build_type>ament_python</build_type></export></package>");
+        writeFile(root + "/pkg/package.xml",
+                  "<package><name>pkg</name><export><build_type>ament_python</build_type></"
+                  "export></package>");
         writeFile(root + "/pkg/pkg/good.py", kGoodNode);
-        writeFile(root + "/pkg/pkg/broken.py", "from rclpy.node import Node\nclass Broken(Node:\n  def (:\n");
-        writeFile(root + "/pkg/pkg/binary.py", QByteArray("\x7f" "ELF\0\0\0\x01garbage", 16));
+        writeFile(root + "/pkg/pkg/broken.py",
+                  "from rclpy.node import Node\nclass Broken(Node:\n  def (:\n");
+        writeFile(root + "/pkg/pkg/binary.py", QByteArray("\x7f"
+                                                          "ELF\0\0\0\x01garbage",
+                                                          16));
         writeFile(root + "/pkg/pkg/huge.py", QByteArray(5 * 1024 * 1024, 'x'));
         writeFile(root + "/cpp_pkg/package.xml", "<package><name>cpp_pkg</name>");
-        writeFile(root + "/cpp_pkg/src/broken.cpp", "class X : public rclcpp::Node { void f() { if ( }\n");
+        writeFile(root + "/cpp_pkg/src/broken.cpp",
+                  "class X : public rclcpp::Node { void f() { if ( }\n");
         writeFile(root + "/cpp_pkg/CMakeLists.txt", "add_executable(x src/broken.cpp\n");
         QVERIFY(QFile::link(root + "/pkg", root + "/pkg/pkg/loop"));
 
@@ -48,12 +54,22 @@ private Q_SLOTS:
         for (const AtomicNode &n : list.nodes)
             classes << n.className;
         QVERIFY2(classes.contains(QStringLiteral("Good")), qPrintable(classes.join(',')));
-        QCOMPARE(count(list.diagnostics, QStringLiteral("binary-file"), QStringLiteral("pkg/pkg/binary.py")), 1);
-        QCOMPARE(count(list.diagnostics, QStringLiteral("file-too-large"), QStringLiteral("pkg/pkg/huge.py")), 1);
-        QCOMPARE(count(list.diagnostics, QStringLiteral("symlink-loop"), QStringLiteral("pkg/pkg/loop")), 1);
-        QVERIFY(count(list.diagnostics, QStringLiteral("syntax-error"), QStringLiteral("pkg/pkg/broken.py")) >= 1);
-        QVERIFY(count(list.diagnostics, QStringLiteral("syntax-error"), QStringLiteral("cpp_pkg/src/broken.cpp")) >= 1);
-        QCOMPARE(count(list.diagnostics, QStringLiteral("malformed-xml"), QStringLiteral("cpp_pkg/package.xml")), 1);
+        QCOMPARE(count(list.diagnostics, QStringLiteral("binary-file"),
+                       QStringLiteral("pkg/pkg/binary.py")),
+                 1);
+        QCOMPARE(count(list.diagnostics, QStringLiteral("file-too-large"),
+                       QStringLiteral("pkg/pkg/huge.py")),
+                 1);
+        QCOMPARE(
+            count(list.diagnostics, QStringLiteral("symlink-loop"), QStringLiteral("pkg/pkg/loop")),
+            1);
+        QVERIFY(count(list.diagnostics, QStringLiteral("syntax-error"),
+                      QStringLiteral("pkg/pkg/broken.py")) >= 1);
+        QVERIFY(count(list.diagnostics, QStringLiteral("syntax-error"),
+                      QStringLiteral("cpp_pkg/src/broken.cpp")) >= 1);
+        QCOMPARE(count(list.diagnostics, QStringLiteral("malformed-xml"),
+                       QStringLiteral("cpp_pkg/package.xml")),
+                 1);
         for (const Diagnostic &d : list.diagnostics)
             QVERIFY2(!d.message.isEmpty(), qPrintable(d.code));
     }
@@ -83,8 +99,10 @@ private Q_SLOTS:
     {
         StageControl control;
         control.canceled = [] { return true; };
-        const AtomicNodeList list = recoverAtomicNodes(
-            QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws")), control);
+        const AtomicNodeList list =
+            recoverAtomicNodes(QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                                   .filePath(QStringLiteral("resources/example_ws")),
+                               control);
         QVERIFY(list.canceled);
         QVERIFY(list.nodes.isEmpty());
     }

@@ -19,7 +19,8 @@ private Q_SLOTS:
         QCOMPARE(d.level, UmlLevel::Ccd);
         QCOMPARE(d.name, QStringLiteral("demo"));
         QCOMPARE(describe(d), sorted(kCcdElements));
-        QCOMPARE(d.notes, QStringList{QStringLiteral("line 19: launch stem 'sensors.launch.py' read as sensors")});
+        QCOMPARE(d.notes, QStringList{QStringLiteral(
+                              "line 19: launch stem 'sensors.launch.py' read as sensors")});
         QCOMPARE(d.warnings, QStringList());
     }
 
@@ -56,18 +57,21 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
 )uml"));
         QCOMPARE(d.level, UmlLevel::Ccd);
         QCOMPARE(d.name, QStringLiteral("demo"));
-        QCOMPARE(describe(d),
-                 sorted({QStringLiteral("part=talker"), QStringLiteral("part=listener"),
-                         QStringLiteral("part_type=talker:Talker"),
-                         QStringLiteral("part_type=listener:Listener"),
-                         QStringLiteral("namespace=(robot1, talker)"),
-                         QStringLiteral("namespace=(/, listener)"), QStringLiteral("topic=chatter"),
-                         QStringLiteral("boundary_port=(in, sensor_msgs/msg/LaserScan)"),
-                         QStringLiteral("boundary_port=(out, std_msgs/msg/String)"),
-                         QStringLiteral("connection=publish talker -> chatter"),
-                         QStringLiteral("connection=subscribe chatter -> listener"),
-                         QStringLiteral("connection=delegation boundary:in/sensor_msgs/msg/LaserScan -> talker"),
-                         QStringLiteral("connection=delegation listener -> boundary:out/std_msgs/msg/String")}));
+        QCOMPARE(
+            describe(d),
+            sorted({QStringLiteral("part=talker"), QStringLiteral("part=listener"),
+                    QStringLiteral("part_type=talker:Talker"),
+                    QStringLiteral("part_type=listener:Listener"),
+                    QStringLiteral("namespace=(robot1, talker)"),
+                    QStringLiteral("namespace=(/, listener)"), QStringLiteral("topic=chatter"),
+                    QStringLiteral("boundary_port=(in, sensor_msgs/msg/LaserScan)"),
+                    QStringLiteral("boundary_port=(out, std_msgs/msg/String)"),
+                    QStringLiteral("connection=publish talker -> chatter"),
+                    QStringLiteral("connection=subscribe chatter -> listener"),
+                    QStringLiteral(
+                        "connection=delegation boundary:in/sensor_msgs/msg/LaserScan -> talker"),
+                    QStringLiteral(
+                        "connection=delegation listener -> boundary:out/std_msgs/msg/String")}));
         QCOMPARE(d.notes, QStringList());
         QCOMPARE(d.warnings, QStringList());
     }
@@ -78,11 +82,14 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
         QTest::addColumn<QStringList>("elements");
         QTest::addColumn<QStringList>("notes");
         QTest::addColumn<QStringList>("warnings");
-        const QStringList parts = {QStringLiteral("part=talker"), QStringLiteral("part=listener"),
+        const QStringList parts = {QStringLiteral("part=talker"),
+                                   QStringLiteral("part=listener"),
                                    QStringLiteral("part_type=talker:Talker"),
-                                   QStringLiteral("part_type=listener:Listener"), QStringLiteral("topic=chatter"),
+                                   QStringLiteral("part_type=listener:Listener"),
+                                   QStringLiteral("topic=chatter"),
                                    QStringLiteral("service=reset")};
-        const QStringList root = {QStringLiteral("namespace=(/, talker)"), QStringLiteral("namespace=(/, listener)")};
+        const QStringList root = {QStringLiteral("namespace=(/, talker)"),
+                                  QStringLiteral("namespace=(/, listener)")};
         const QString declarations = QStringLiteral(R"uml(@startuml
 component "<<ComposedRosNodeClassifier>>\ndemo.launch.py" as demo {
   component "<<rosnodepart>>\ntalker:\nTalker" as part1 {
@@ -108,14 +115,20 @@ component "<<ComposedRosNodeClassifier>>\ndemo.launch.py" as demo {
   part2_ps1 -- c_reset
 }
 @enduml
-)uml") << parts + root + QStringList{QStringLiteral("connection=publish talker -> chatter"),
-                                  QStringLiteral("connection=subscribe chatter -> listener"),
-                                  QStringLiteral("connection=client talker -> reset"),
-                                  QStringLiteral("connection=server listener -> reset")}
-            << declarationNotes + QStringList{
-                   QStringLiteral("line 13: connection kind 'publish' inferred from the arrow ends"),
-                   QStringLiteral("line 15: connection kind 'client' inferred from the arrow ends"),
-                   QStringLiteral("line 16: connection kind 'server' inferred from the arrow ends")}
+)uml")
+            << parts + root +
+                   QStringList{QStringLiteral("connection=publish talker -> chatter"),
+                               QStringLiteral("connection=subscribe chatter -> listener"),
+                               QStringLiteral("connection=client talker -> reset"),
+                               QStringLiteral("connection=server listener -> reset")}
+            << declarationNotes +
+                   QStringList{
+                       QStringLiteral(
+                           "line 13: connection kind 'publish' inferred from the arrow ends"),
+                       QStringLiteral(
+                           "line 15: connection kind 'client' inferred from the arrow ends"),
+                       QStringLiteral(
+                           "line 16: connection kind 'server' inferred from the arrow ends")}
             << QStringList();
         QTest::newRow("colour decides over the arrow ends, any case, any dashes")
             << declarations + QStringLiteral(R"uml(  part1_p1 -[#BLUE,bold]----> q_chatter
@@ -123,13 +136,18 @@ component "<<ComposedRosNodeClassifier>>\ndemo.launch.py" as demo {
   part1_rs1 -[bold,#purple]-> c_reset
 }
 @enduml
-)uml") << parts + root + QStringList{QStringLiteral("connection=subscribe chatter -> talker"),
-                                  QStringLiteral("connection=publish listener -> chatter"),
-                                  QStringLiteral("connection=server talker -> reset")}
-            << declarationNotes + QStringList{
-                   QStringLiteral("line 13: colour says 'subscribe' but the arrow ends say 'publish'; the colour is read"),
-                   QStringLiteral("line 14: colour says 'publish' but the arrow ends say 'subscribe'; the colour is read"),
-                   QStringLiteral("line 15: colour says 'server' but the arrow ends say 'client'; the colour is read")}
+)uml")
+            << parts + root +
+                   QStringList{QStringLiteral("connection=subscribe chatter -> talker"),
+                               QStringLiteral("connection=publish listener -> chatter"),
+                               QStringLiteral("connection=server talker -> reset")}
+            << declarationNotes +
+                   QStringList{QStringLiteral("line 13: colour says 'subscribe' but the arrow ends "
+                                              "say 'publish'; the colour is read"),
+                               QStringLiteral("line 14: colour says 'publish' but the arrow ends "
+                                              "say 'subscribe'; the colour is read"),
+                               QStringLiteral("line 15: colour says 'server' but the arrow ends "
+                                              "say 'client'; the colour is read")}
             << QStringList();
         QTest::newRow("undeclared arrow ends and parts joined to parts")
             << declarations + QStringLiteral(R"uml(  part1_p1 --> q_missing
@@ -138,8 +156,10 @@ component "<<ComposedRosNodeClassifier>>\ndemo.launch.py" as demo {
 @enduml
 )uml") << parts + root + QStringList{QStringLiteral("connection=link talker -> listener")}
             << declarationNotes
-            << QStringList{QStringLiteral("line 13: arrow end 'q_missing' is not declared; arrow ignored")};
-        QTest::newRow("packages without <<namespace>>, qualified and unnamed parts, no top component")
+            << QStringList{
+                   QStringLiteral("line 13: arrow end 'q_missing' is not declared; arrow ignored")};
+        QTest::newRow(
+            "packages without <<namespace>>, qualified and unnamed parts, no top component")
             << QStringLiteral(R"uml(@startuml
 title bringup
 package "/robot" {
@@ -152,16 +172,26 @@ component "/other/listener:Listener" as l <<RosNodePart>> {
 }
 component "/n2:Listener" as l2 <<RosNodePart>>
 @enduml
-)uml") << QStringList{QStringLiteral("part=Talker"), QStringLiteral("part=listener"), QStringLiteral("part=n2"),
-                   QStringLiteral("part_type=:Talker"), QStringLiteral("part_type=listener:Listener"),
-                   QStringLiteral("part_type=n2:Listener"), QStringLiteral("namespace=(robot/left, Talker)"),
-                   QStringLiteral("namespace=(other, listener)"), QStringLiteral("namespace=(/, n2)")}
+)uml")
+            << QStringList{QStringLiteral("part=Talker"),
+                           QStringLiteral("part=listener"),
+                           QStringLiteral("part=n2"),
+                           QStringLiteral("part_type=:Talker"),
+                           QStringLiteral("part_type=listener:Listener"),
+                           QStringLiteral("part_type=n2:Listener"),
+                           QStringLiteral("namespace=(robot/left, Talker)"),
+                           QStringLiteral("namespace=(other, listener)"),
+                           QStringLiteral("namespace=(/, n2)")}
             << QStringList{QStringLiteral("line 1: diagram named 'bringup' after its title"),
-                           QStringLiteral("line 3: package '/robot' without <<namespace>> read as a namespace"),
-                           QStringLiteral("line 4: package 'left' without <<namespace>> read as a namespace"),
-                           QStringLiteral("line 5: no <<ComposedRosNodeClassifier>>; read as a CCD because of its "
+                           QStringLiteral("line 3: package '/robot' without <<namespace>> read as "
+                                          "a namespace"),
+                           QStringLiteral(
+                               "line 4: package 'left' without <<namespace>> read as a namespace"),
+                           QStringLiteral("line 5: no <<ComposedRosNodeClassifier>>; read as a CCD "
+                                          "because of its "
                                           "<<RosNodePart>>s"),
-                           QStringLiteral("line 8: part name 'other/listener' read as listener in namespace other")}
+                           QStringLiteral("line 8: part name 'other/listener' read as listener in "
+                                          "namespace other")}
             << QStringList();
     }
 
@@ -196,11 +226,14 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
         QCOMPARE(d.values(UmlKind::BoundaryPort),
                  (QStringList{QStringLiteral("(in, std_srvs/srv/Trigger)"),
                               QStringLiteral("(out, nav2_msgs/action/NavigateToPose)"),
-                              QStringLiteral("(in, sensor_msgs/msg/Imu)"), QStringLiteral("(in, std_msgs/msg/String)")}));
-        QCOMPARE(d.notes, (QStringList{QStringLiteral("line 3: type 'std_srvs/Trigger' read as std_srvs/srv/Trigger"),
-                                       QStringLiteral("line 4: type 'nav2_msgs::NavigateToPose' read as "
-                                                      "nav2_msgs/action/NavigateToPose"),
-                                       QStringLiteral("line 5: port s2 read as direction in")}));
+                              QStringLiteral("(in, sensor_msgs/msg/Imu)"),
+                              QStringLiteral("(in, std_msgs/msg/String)")}));
+        QCOMPARE(d.notes,
+                 (QStringList{
+                     QStringLiteral("line 3: type 'std_srvs/Trigger' read as std_srvs/srv/Trigger"),
+                     QStringLiteral("line 4: type 'nav2_msgs::NavigateToPose' read as "
+                                    "nav2_msgs/action/NavigateToPose"),
+                     QStringLiteral("line 5: port s2 read as direction in")}));
         QCOMPARE(d.warnings, QStringList());
     }
 
@@ -221,10 +254,9 @@ component "launch" as launch <<ComposedRosNodeClassifier>> {
 }
 @enduml
 )uml"));
-        QCOMPARE(d.values(UmlKind::Connection),
-                 (QStringList{QStringLiteral("publish a -> t"), QStringLiteral("subscribe t -> b")}));
+        QCOMPARE(d.values(UmlKind::Connection), (QStringList{QStringLiteral("publish a -> t"),
+                                                             QStringLiteral("subscribe t -> b")}));
     }
-
 };
 
 QTEST_GUILESS_MAIN(TestPlantUmlCcdReader)

@@ -1,7 +1,7 @@
 #include "buildfileparser.h"
 #include "cmakelistsreader.h"
-#include "workspacescanner.h"
 #include "testsupport.h"
+#include "workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -28,12 +28,13 @@ class TestBuildFiles : public QObject
 private Q_SLOTS:
     void cmakeTokenizer()
     {
-        const auto commands = CMakeListsReader::tokenize(
-            "# comment (with parens)\n"
-            "project(demo)\n"
-            "add_executable(talker\n  src/talker.cpp # trailing comment\n  \"src/with space.cpp\")\n"
-            "#[[ bracket\ncomment ]]\n"
-            "if(FOO AND (BAR OR BAZ))\nendif()\n");
+        const auto commands =
+            CMakeListsReader::tokenize("# comment (with parens)\n"
+                                       "project(demo)\n"
+                                       "add_executable(talker\n  src/talker.cpp # trailing "
+                                       "comment\n  \"src/with space.cpp\")\n"
+                                       "#[[ bracket\ncomment ]]\n"
+                                       "if(FOO AND (BAR OR BAZ))\nendif()\n");
         QCOMPARE(commands.size(), 4);
         QCOMPARE(commands[0].name, QStringLiteral("project"));
         QCOMPARE(commands[0].line, 2);
@@ -79,42 +80,45 @@ private Q_SLOTS:
     void cmakeFunctionsWithParsedArguments()
     {
         QList<Diagnostic> diagnostics;
-        const auto exes = readCMake(
-            {{"pkg/CMakeLists.txt",
-              "function(custom_executable subfolder target)\n"
-              "  add_executable(${target} src/${subfolder}/${target}.cpp)\n"
-              "endfunction()\n"
-              "function(create_library plugin executable)\n"
-              "  cmake_parse_arguments(ARG \"\" \"\" \"FILES;DEPENDENCIES\" ${ARGN})\n"
-              "  set(library ${executable}_library)\n"
-              "  add_library(${library} SHARED ${ARG_FILES})\n"
-              "  rclcpp_components_register_node(${library} PLUGIN ${plugin} EXECUTABLE ${executable} EXECUTOR Single)\n"
-              "endfunction()\n"
-              "custom_executable(topics talker)\n"
-              "create_library(\"ns::Timer\" one_off_timer FILES src/timers/one_off.cpp src/timers/util.cpp DEPENDENCIES rclcpp)\n"}},
-            &diagnostics);
+        const auto exes =
+            readCMake({{"pkg/CMakeLists.txt",
+                        "function(custom_executable subfolder target)\n"
+                        "  add_executable(${target} src/${subfolder}/${target}.cpp)\n"
+                        "endfunction()\n"
+                        "function(create_library plugin executable)\n"
+                        "  cmake_parse_arguments(ARG \"\" \"\" \"FILES;DEPENDENCIES\" ${ARGN})\n"
+                        "  set(library ${executable}_library)\n"
+                        "  add_library(${library} SHARED ${ARG_FILES})\n"
+                        "  rclcpp_components_register_node(${library} PLUGIN ${plugin} EXECUTABLE "
+                        "${executable} EXECUTOR Single)\n"
+                        "endfunction()\n"
+                        "custom_executable(topics talker)\n"
+                        "create_library(\"ns::Timer\" one_off_timer FILES src/timers/one_off.cpp "
+                        "src/timers/util.cpp DEPENDENCIES rclcpp)\n"}},
+                      &diagnostics);
         QCOMPARE(exes.size(), 2);
         QCOMPARE(exes[0].name, QStringLiteral("talker"));
         QCOMPARE(exes[0].sources, QStringList{"pkg/src/topics/talker.cpp"});
         QCOMPARE(exes[1].plugin, QStringLiteral("ns::Timer"));
         QCOMPARE(exes[1].name, QStringLiteral("one_off_timer"));
-        QCOMPARE(exes[1].sources, (QStringList{"pkg/src/timers/one_off.cpp", "pkg/src/timers/util.cpp"}));
+        QCOMPARE(exes[1].sources,
+                 (QStringList{"pkg/src/timers/one_off.cpp", "pkg/src/timers/util.cpp"}));
     }
 
     void setupPyEntryPoints()
     {
         QList<Diagnostic> diagnostics;
-        const auto exes = BuildFileParser::readSetupPy(
-            "from setuptools import setup\n"
-            "package_name = 'demo_py'\n"
-            "setup(name=package_name,\n"
-            "  entry_points={'console_scripts': [\n"
-            "    'talker = demo_py.talker:main',\n"
-            "    f'listener = {package_name}.listener:main',\n"
-            "    'server = ' + package_name + '.server:run',\n"
-            "    'broken = ' + some_call(),\n"
-            "  ]})\n",
-            QStringLiteral("demo_py/setup.py"), &diagnostics);
+        const auto exes =
+            BuildFileParser::readSetupPy("from setuptools import setup\n"
+                                         "package_name = 'demo_py'\n"
+                                         "setup(name=package_name,\n"
+                                         "  entry_points={'console_scripts': [\n"
+                                         "    'talker = demo_py.talker:main',\n"
+                                         "    f'listener = {package_name}.listener:main',\n"
+                                         "    'server = ' + package_name + '.server:run',\n"
+                                         "    'broken = ' + some_call(),\n"
+                                         "  ]})\n",
+                                         QStringLiteral("demo_py/setup.py"), &diagnostics);
         QCOMPARE(exes.size(), 3);
         QCOMPARE(exes[0].name, QStringLiteral("talker"));
         QCOMPARE(exes[0].target, QStringLiteral("demo_py.talker:main"));
@@ -143,8 +147,9 @@ private Q_SLOTS:
     {
         RosPackage pkg;
         QList<Diagnostic> diagnostics;
-        BuildFileParser::readPackageXml("<package><name>good_name</name><export><build_type>ament_python</build_type></export>",
-                                        QStringLiteral("p/package.xml"), &pkg, &diagnostics);
+        BuildFileParser::readPackageXml(
+            "<package><name>good_name</name><export><build_type>ament_python</build_type></export>",
+            QStringLiteral("p/package.xml"), &pkg, &diagnostics);
         QCOMPARE(pkg.name, QStringLiteral("good_name"));
         QCOMPARE(pkg.buildType, QStringLiteral("ament_python"));
         QCOMPARE(diagnostics.size(), 1);
@@ -178,9 +183,10 @@ private Q_SLOTS:
         QStringList paths;
         for (const SourceFile &f : ws.files)
             paths << f.path + QLatin1Char('@') + f.package;
-        QCOMPARE(paths, (QStringList{"loose.py@", "src/a/CMakeLists.txt@pkg_a", "src/a/nested/n.py@pkg_nested",
-                                     "src/a/nested/package.xml@pkg_nested", "src/a/package.xml@pkg_a",
-                                     "src/a/src/a.cpp@pkg_a"}));
+        QCOMPARE(paths,
+                 (QStringList{"loose.py@", "src/a/CMakeLists.txt@pkg_a",
+                              "src/a/nested/n.py@pkg_nested", "src/a/nested/package.xml@pkg_nested",
+                              "src/a/package.xml@pkg_a", "src/a/src/a.cpp@pkg_a"}));
     }
 
     void scannerReportsSymlinkLoops()
@@ -195,7 +201,8 @@ private Q_SLOTS:
         QCOMPARE(ws.packages.size(), 1);
         int loops = 0;
         for (const Diagnostic &d : ws.diagnostics)
-            if (d.code == QLatin1String("symlink-loop") && d.evidence.file == QLatin1String("pkg/loop"))
+            if (d.code == QLatin1String("symlink-loop") &&
+                d.evidence.file == QLatin1String("pkg/loop"))
                 ++loops;
         QCOMPARE(loops, 1);
         QCOMPARE(ws.files.size(), 2);

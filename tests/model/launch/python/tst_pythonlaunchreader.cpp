@@ -23,21 +23,32 @@ QString d(const Substitution &s)
     };
     using SK = Substitution::Kind;
     switch (s.kind) {
-    case SK::Text: return s.text;
+    case SK::Text:
+        return s.text;
     case SK::LaunchConfiguration:
-        return s.parts.isEmpty() ? QStringLiteral("$(var %1)").arg(s.text)
-                                 : QStringLiteral("$(var %1|%2)").arg(s.text, joined(QStringLiteral(",")));
+        return s.parts.isEmpty()
+                   ? QStringLiteral("$(var %1)").arg(s.text)
+                   : QStringLiteral("$(var %1|%2)").arg(s.text, joined(QStringLiteral(",")));
     case SK::EnvironmentVariable:
-        return s.parts.isEmpty() ? QStringLiteral("$(env %1)").arg(s.text)
-                                 : QStringLiteral("$(env %1|%2)").arg(s.text, joined(QStringLiteral(",")));
-    case SK::FindPackageShare: return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
-    case SK::FindPackagePrefix: return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
-    case SK::PathJoin: return QStringLiteral("join[%1]").arg(joined(QStringLiteral(", ")));
-    case SK::Concat: return QStringLiteral("cat[%1]").arg(joined(QStringLiteral(", ")));
-    case SK::Eval: return QStringLiteral("$(eval %1)").arg(joined(QStringLiteral(" ~ ")));
-    case SK::ThisLaunchFileDir: return QStringLiteral("$(dirname)");
-    case SK::ThisLaunchFile: return QStringLiteral("$(filename)");
-    case SK::Unknown: return QStringLiteral("?{%1}").arg(s.text);
+        return s.parts.isEmpty()
+                   ? QStringLiteral("$(env %1)").arg(s.text)
+                   : QStringLiteral("$(env %1|%2)").arg(s.text, joined(QStringLiteral(",")));
+    case SK::FindPackageShare:
+        return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
+    case SK::FindPackagePrefix:
+        return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
+    case SK::PathJoin:
+        return QStringLiteral("join[%1]").arg(joined(QStringLiteral(", ")));
+    case SK::Concat:
+        return QStringLiteral("cat[%1]").arg(joined(QStringLiteral(", ")));
+    case SK::Eval:
+        return QStringLiteral("$(eval %1)").arg(joined(QStringLiteral(" ~ ")));
+    case SK::ThisLaunchFileDir:
+        return QStringLiteral("$(dirname)");
+    case SK::ThisLaunchFile:
+        return QStringLiteral("$(filename)");
+    case SK::Unknown:
+        return QStringLiteral("?{%1}").arg(s.text);
     }
     return {};
 }
@@ -45,18 +56,30 @@ QString d(const Substitution &s)
 QString kindName(K k)
 {
     switch (k) {
-    case K::Node: return QStringLiteral("Node");
-    case K::ComposableContainer: return QStringLiteral("Container");
-    case K::ComposableNode: return QStringLiteral("Composable");
-    case K::LoadComposableNodes: return QStringLiteral("Load");
-    case K::Include: return QStringLiteral("Include");
-    case K::Group: return QStringLiteral("Group");
-    case K::PushNamespace: return QStringLiteral("PushNs");
-    case K::SetRemap: return QStringLiteral("SetRemap");
-    case K::DeclareArgument: return QStringLiteral("Arg");
-    case K::SetLaunchConfiguration: return QStringLiteral("Let");
-    case K::SetParameter: return QStringLiteral("SetParam");
-    case K::Unresolved: return QStringLiteral("Unresolved");
+    case K::Node:
+        return QStringLiteral("Node");
+    case K::ComposableContainer:
+        return QStringLiteral("Container");
+    case K::ComposableNode:
+        return QStringLiteral("Composable");
+    case K::LoadComposableNodes:
+        return QStringLiteral("Load");
+    case K::Include:
+        return QStringLiteral("Include");
+    case K::Group:
+        return QStringLiteral("Group");
+    case K::PushNamespace:
+        return QStringLiteral("PushNs");
+    case K::SetRemap:
+        return QStringLiteral("SetRemap");
+    case K::DeclareArgument:
+        return QStringLiteral("Arg");
+    case K::SetLaunchConfiguration:
+        return QStringLiteral("Let");
+    case K::SetParameter:
+        return QStringLiteral("SetParam");
+    case K::Unresolved:
+        return QStringLiteral("Unresolved");
     }
     return {};
 }
@@ -93,7 +116,8 @@ void dump(const LaunchAction &a, int depth, QStringList &out)
     if (!a.expression.isEmpty())
         f << QStringLiteral("expr=%1").arg(a.expression);
     if (a.condition.isSet())
-        f << QStringLiteral("%1(%2)").arg(a.condition.unless ? QStringLiteral("unless") : QStringLiteral("if"),
+        f << QStringLiteral("%1(%2)").arg(a.condition.unless ? QStringLiteral("unless")
+                                                             : QStringLiteral("if"),
                                           d(a.condition.expression));
     f << QStringLiteral("@%1").arg(a.evidence.line);
     // Every action, remap and parameter carries evidence: the call expression.
@@ -119,7 +143,8 @@ QStringList dump(const QList<LaunchAction> &actions)
 
 LaunchFileDescription readSource(const char *source)
 {
-    return PythonLaunchReader::read(QByteArray(source), QStringLiteral("pkg/launch/test_launch.py"));
+    return PythonLaunchReader::read(QByteArray(source),
+                                    QStringLiteral("pkg/launch/test_launch.py"));
 }
 
 QStringList read(const char *source)
@@ -178,15 +203,20 @@ private Q_SLOTS:
 
 void TestPythonLaunchReader::detectsLaunchFilesByContent()
 {
-    QVERIFY(PythonLaunchReader::isLaunchFile("from launch import LaunchDescription\n\n"
-                                             "def generate_launch_description():\n    return LaunchDescription([])\n"));
-    QVERIFY(PythonLaunchReader::isLaunchFile("import launch\n@decorator\n"
-                                             "def generate_launch_description():\n    return launch.LaunchDescription()\n"));
+    QVERIFY(PythonLaunchReader::isLaunchFile(
+        "from launch import LaunchDescription\n\n"
+        "def generate_launch_description():\n    return LaunchDescription([])\n"));
+    QVERIFY(PythonLaunchReader::isLaunchFile(
+        "import launch\n@decorator\n"
+        "def generate_launch_description():\n    return launch.LaunchDescription()\n"));
     // a helper module under launch/ that only mentions the function is not a launch file
-    QVERIFY(!PythonLaunchReader::isLaunchFile("# call generate_launch_description() from the bringup\n"
-                                              "def make_nodes():\n    return []\n"));
-    QVERIFY(!PythonLaunchReader::isLaunchFile("class Helper:\n    def generate_launch_description(self):\n        pass\n"));
-    QVERIFY(!PythonLaunchReader::isLaunchFile("def outer():\n    def generate_launch_description():\n        pass\n"));
+    QVERIFY(
+        !PythonLaunchReader::isLaunchFile("# call generate_launch_description() from the bringup\n"
+                                          "def make_nodes():\n    return []\n"));
+    QVERIFY(!PythonLaunchReader::isLaunchFile(
+        "class Helper:\n    def generate_launch_description(self):\n        pass\n"));
+    QVERIFY(!PythonLaunchReader::isLaunchFile(
+        "def outer():\n    def generate_launch_description():\n        pass\n"));
     QVERIFY(!PythonLaunchReader::isLaunchFile(QByteArray()));
     static const char binary[] = "\x00\x01\x02generate_launch_description\xff";
     QVERIFY(!PythonLaunchReader::isLaunchFile(QByteArray(binary, sizeof(binary) - 1)));
@@ -198,12 +228,15 @@ void TestPythonLaunchReader::nodesParametersRemappings()
     QCOMPARE(desc.file, QStringLiteral("pylaunch_reader/nodes_launch.py"));
     QCOMPARE(desc.format, LaunchFileDescription::Format::Python);
     QVERIFY(desc.diagnostics.isEmpty());
-    QCOMPARE(dump(desc.actions), (QStringList{
-        QStringLiteral("Arg name=use_sim_time value=false desc=Use sim time @10"),
-        QStringLiteral("Node pkg=demo_nodes_cpp exe=talker name=talker ns=$(var ns|robot) remap:chatter->/chat remap:/tf->tf "
-                       "param:use_sim_time=$(var use_sim_time) param:rate=10 param:gains=[1.0, 2.5] param:debug=true "
-                       "param:pid.p=0.5 paramfile:/etc/params.yaml @11"),
-        QStringLiteral("Node pkg=demo_nodes_py exe=listener remap:chatter->/chat @14")}));
+    QCOMPARE(dump(desc.actions),
+             (QStringList{
+                 QStringLiteral("Arg name=use_sim_time value=false desc=Use sim time @10"),
+                 QStringLiteral("Node pkg=demo_nodes_cpp exe=talker name=talker ns=$(var ns|robot) "
+                                "remap:chatter->/chat remap:/tf->tf "
+                                "param:use_sim_time=$(var use_sim_time) param:rate=10 "
+                                "param:gains=[1.0, 2.5] param:debug=true "
+                                "param:pid.p=0.5 paramfile:/etc/params.yaml @11"),
+                 QStringLiteral("Node pkg=demo_nodes_py exe=listener remap:chatter->/chat @14")}));
     // Evidence of the node, its remaps and parameters: the call expression.
     const LaunchAction &talker = desc.actions.at(1);
     const Evidence call{QStringLiteral("pylaunch_reader/nodes_launch.py"), 11, 9, 13, 63};
@@ -211,7 +244,8 @@ void TestPythonLaunchReader::nodesParametersRemappings()
     QCOMPARE(talker.remaps.first().evidence, call);
     QCOMPARE(talker.parameters.last().evidence, call);
     QCOMPARE(talker.parameters.first().value.kind, Substitution::Kind::LaunchConfiguration);
-    QCOMPARE(talker.nameSpace.parts, QList<Substitution>{Substitution::literal(QStringLiteral("robot"))});
+    QCOMPARE(talker.nameSpace.parts,
+             QList<Substitution>{Substitution::literal(QStringLiteral("robot"))});
     QCOMPARE(talker.nameSpace.describe(), QStringLiteral("$(var ns)"));
     QVERIFY(!talker.lifecycle);
     QVERIFY(!talker.condition.isSet());
@@ -219,13 +253,17 @@ void TestPythonLaunchReader::nodesParametersRemappings()
 
 void TestPythonLaunchReader::actionsThroughVariablesAndLists()
 {
-    QCOMPARE(readFixtureDump("variables_launch.py"),
-             (QStringList{QStringLiteral("Arg name=a @11"), QStringLiteral("Arg name=b value=1 @11"),
-                          QStringLiteral("Node pkg=demo exe=talker @6"), QStringLiteral("Node pkg=demo exe=listener @8"),
-                          QStringLiteral("Node pkg=demo exe=relay @9"), QStringLiteral("Node pkg=demo exe=echo @10")}));
+    QCOMPARE(
+        readFixtureDump("variables_launch.py"),
+        (QStringList{QStringLiteral("Arg name=a @11"), QStringLiteral("Arg name=b value=1 @11"),
+                     QStringLiteral("Node pkg=demo exe=talker @6"),
+                     QStringLiteral("Node pkg=demo exe=listener @8"),
+                     QStringLiteral("Node pkg=demo exe=relay @9"),
+                     QStringLiteral("Node pkg=demo exe=echo @10")}));
 
-    QCOMPARE(readFixtureDump("splat_launch.py"),
-             (QStringList{QStringLiteral("Arg name=x @8"), QStringLiteral("Node pkg=demo exe=e @9")}));
+    QCOMPARE(
+        readFixtureDump("splat_launch.py"),
+        (QStringList{QStringLiteral("Arg name=x @8"), QStringLiteral("Node pkg=demo exe=e @9")}));
 }
 
 void TestPythonLaunchReader::legacyAndLifecycleNodes()
@@ -233,44 +271,59 @@ void TestPythonLaunchReader::legacyAndLifecycleNodes()
     QCOMPARE(readFixtureDump("legacy_launch.py"),
              (QStringList{QStringLiteral("Node pkg=old exe=talker name=old_talker ns=legacy @7"),
                           QStringLiteral("Node pkg=lc exe=lc_talker name=lc_talker lifecycle @8"),
-                          QStringLiteral("Node pkg=lc exe=lc_listener name=lc_listener ns=ns lifecycle @9")}));
+                          QStringLiteral(
+                              "Node pkg=lc exe=lc_listener name=lc_listener ns=ns lifecycle @9")}));
 }
 
 void TestPythonLaunchReader::composableNodes()
 {
-    QCOMPARE(readFixtureDump("composable_launch.py"),
-             (QStringList{
-                 QStringLiteral("Container pkg=rclcpp_components exe=component_container name=my_container ns=$(var namespace) @9"),
-                 QStringLiteral("  Composable pkg=composition plugin=composition::Talker name=talker remap:chatter->talk param:rate=2 @12"),
-                 QStringLiteral("Load target=cat[$(var namespace), /my_container] @16"),
-                 QStringLiteral("  Composable pkg=composition plugin=composition::Listener name=listener @18"),
-                 QStringLiteral("Load target=my_container @19"),
-                 QStringLiteral("  Composable pkg=composition plugin=composition::Server ns=srv @20")}));
+    QCOMPARE(
+        readFixtureDump("composable_launch.py"),
+        (QStringList{
+            QStringLiteral("Container pkg=rclcpp_components exe=component_container "
+                           "name=my_container ns=$(var namespace) @9"),
+            QStringLiteral("  Composable pkg=composition plugin=composition::Talker name=talker "
+                           "remap:chatter->talk param:rate=2 @12"),
+            QStringLiteral("Load target=cat[$(var namespace), /my_container] @16"),
+            QStringLiteral(
+                "  Composable pkg=composition plugin=composition::Listener name=listener @18"),
+            QStringLiteral("Load target=my_container @19"),
+            QStringLiteral("  Composable pkg=composition plugin=composition::Server ns=srv @20")}));
 }
 
 void TestPythonLaunchReader::includes()
 {
     const LaunchFileDescription desc = readFixture("includes_launch.py");
-    QCOMPARE(dump(desc.actions), (QStringList{
-        QStringLiteral("Include path=join[$(find-pkg-share nav2_bringup), launch, rviz_launch.py] arg:namespace=robot1 "
-                       "arg:use_sim_time=true if($(var use_rviz)) @18"),
-        QStringLiteral("Include path=cat[$(dirname), /state_publisher.launch.py] arg:model=burger @21"),
-        QStringLiteral("Include path=join[$(find-pkg-share demo), launch, x.launch.xml] arg:a=1 arg:b=$(var use_rviz) @23"),
-        QStringLiteral("Include path=/opt/ros/y.launch.yaml @25"),
-        QStringLiteral("Include path=/plain/path_launch.py @26")}));
+    QCOMPARE(
+        dump(desc.actions),
+        (QStringList{
+            QStringLiteral("Include path=join[$(find-pkg-share nav2_bringup), launch, "
+                           "rviz_launch.py] arg:namespace=robot1 "
+                           "arg:use_sim_time=true if($(var use_rviz)) @18"),
+            QStringLiteral(
+                "Include path=cat[$(dirname), /state_publisher.launch.py] arg:model=burger @21"),
+            QStringLiteral("Include path=join[$(find-pkg-share demo), launch, x.launch.xml] "
+                           "arg:a=1 arg:b=$(var use_rviz) @23"),
+            QStringLiteral("Include path=/opt/ros/y.launch.yaml @25"),
+            QStringLiteral("Include path=/plain/path_launch.py @26")}));
     QCOMPARE(desc.actions.first().condition.text, QStringLiteral("IfCondition(use_rviz)"));
-    QCOMPARE(desc.actions.first().path.describe(), QStringLiteral("$(find-pkg-share nav2_bringup)/launch/rviz_launch.py"));
+    QCOMPARE(desc.actions.first().path.describe(),
+             QStringLiteral("$(find-pkg-share nav2_bringup)/launch/rviz_launch.py"));
 }
 
 void TestPythonLaunchReader::scopes()
 {
-    QCOMPARE(readFixtureDump("scopes_launch.py"),
-             (QStringList{QStringLiteral("Group scoped @8"), QStringLiteral("  PushNs ns=robot @9"),
-                          QStringLiteral("  PushNs ns=arm @10"), QStringLiteral("  SetRemap remap:/tf->tf @11"),
-                          QStringLiteral("  SetParam param:use_sim_time=true @12"), QStringLiteral("  Node pkg=p exe=e @13"),
-                          QStringLiteral("Group unscoped @15"), QStringLiteral("  Let name=mode value=fast @15"),
-                          QStringLiteral("SetRemap remap:a->b @16"), QStringLiteral("Group scoped @17"),
-                          QStringLiteral("  Let name=level value=debug @17"), QStringLiteral("  Node pkg=p exe=f @17")}));
+    QCOMPARE(
+        readFixtureDump("scopes_launch.py"),
+        (QStringList{QStringLiteral("Group scoped @8"), QStringLiteral("  PushNs ns=robot @9"),
+                     QStringLiteral("  PushNs ns=arm @10"),
+                     QStringLiteral("  SetRemap remap:/tf->tf @11"),
+                     QStringLiteral("  SetParam param:use_sim_time=true @12"),
+                     QStringLiteral("  Node pkg=p exe=e @13"), QStringLiteral("Group unscoped @15"),
+                     QStringLiteral("  Let name=mode value=fast @15"),
+                     QStringLiteral("SetRemap remap:a->b @16"), QStringLiteral("Group scoped @17"),
+                     QStringLiteral("  Let name=level value=debug @17"),
+                     QStringLiteral("  Node pkg=p exe=f @17")}));
 }
 
 void TestPythonLaunchReader::substitutions()
@@ -282,44 +335,56 @@ void TestPythonLaunchReader::substitutions()
         QCOMPARE(a.evidence.line, 12); // the call inside the helper
         got << a.name.text + QLatin1Char('=') + d(a.value);
     }
-    QCOMPARE(got, (QStringList{
-        QStringLiteral("env=$(env HOME|/root)"), QStringLiteral("prefix=$(find-pkg-prefix demo)"),
-        QStringLiteral("joined=join[$(find-pkg-share demo), config, waffle.yaml]"),
-        QStringLiteral("eval=$(eval not  ~ $(var ns) ~  == \"x\")"), QStringLiteral("text=plain"),
-        QStringLiteral("fstring=cat[waffle_, $(var ns)]"), QStringLiteral("concat=cat[$(var ns), /cmd_vel]"),
-        QStringLiteral("plus=robot_waffle"), QStringLiteral("percent=model_waffle_3"), QStringLiteral("format=waffle/base"),
-        QStringLiteral("str=waffle2\t"), QStringLiteral("dir=join[$(dirname), params.yaml]"),
-        QStringLiteral("env2=$(env MODEL|burger)"), QStringLiteral("env3=$(env LDS)"), QStringLiteral("this=$(dirname)"),
-        QStringLiteral("unknown=?{some_module.compute(ns)}"), QStringLiteral("join=/waffle/base")}));
+    QCOMPARE(
+        got,
+        (QStringList{
+            QStringLiteral("env=$(env HOME|/root)"),
+            QStringLiteral("prefix=$(find-pkg-prefix demo)"),
+            QStringLiteral("joined=join[$(find-pkg-share demo), config, waffle.yaml]"),
+            QStringLiteral("eval=$(eval not  ~ $(var ns) ~  == \"x\")"),
+            QStringLiteral("text=plain"), QStringLiteral("fstring=cat[waffle_, $(var ns)]"),
+            QStringLiteral("concat=cat[$(var ns), /cmd_vel]"), QStringLiteral("plus=robot_waffle"),
+            QStringLiteral("percent=model_waffle_3"), QStringLiteral("format=waffle/base"),
+            QStringLiteral("str=waffle2\t"), QStringLiteral("dir=join[$(dirname), params.yaml]"),
+            QStringLiteral("env2=$(env MODEL|burger)"), QStringLiteral("env3=$(env LDS)"),
+            QStringLiteral("this=$(dirname)"), QStringLiteral("unknown=?{some_module.compute(ns)}"),
+            QStringLiteral("join=/waffle/base")}));
     QCOMPARE(desc.actions.at(3).value.describe(), QStringLiteral("$(eval not $(var ns) == \"x\")"));
 }
 
 void TestPythonLaunchReader::conditions()
 {
     const LaunchFileDescription desc = readFixture("conditions_launch.py");
-    QCOMPARE(dump(desc.actions), (QStringList{
-        QStringLiteral("Node pkg=p exe=a if($(var use_a)) @9"),
-        QStringLiteral("Node pkg=p exe=b unless($(eval ' ~ $(var mode) ~ ' == 'sim')) @10"),
-        QStringLiteral("Node pkg=p exe=c if($(eval ' ~ $(var mode) ~ ' == 'real')) @11"),
-        QStringLiteral("Node pkg=p exe=d if($(eval ' ~ $(var mode) ~ ' != 'real')) @12"),
-        QStringLiteral("Node pkg=p exe=e if(?{custom_condition}) @13")}));
-    QCOMPARE(desc.actions.at(0).condition.text, QStringLiteral("IfCondition(LaunchConfiguration('use_a'))"));
-    QCOMPARE(desc.actions.at(2).condition.text, QStringLiteral("LaunchConfigurationEquals('mode', 'real')"));
-    QCOMPARE(desc.actions.at(2).condition.expression.describe(), QStringLiteral("$(eval '$(var mode)' == 'real')"));
+    QCOMPARE(
+        dump(desc.actions),
+        (QStringList{
+            QStringLiteral("Node pkg=p exe=a if($(var use_a)) @9"),
+            QStringLiteral("Node pkg=p exe=b unless($(eval ' ~ $(var mode) ~ ' == 'sim')) @10"),
+            QStringLiteral("Node pkg=p exe=c if($(eval ' ~ $(var mode) ~ ' == 'real')) @11"),
+            QStringLiteral("Node pkg=p exe=d if($(eval ' ~ $(var mode) ~ ' != 'real')) @12"),
+            QStringLiteral("Node pkg=p exe=e if(?{custom_condition}) @13")}));
+    QCOMPARE(desc.actions.at(0).condition.text,
+             QStringLiteral("IfCondition(LaunchConfiguration('use_a'))"));
+    QCOMPARE(desc.actions.at(2).condition.text,
+             QStringLiteral("LaunchConfigurationEquals('mode', 'real')"));
+    QCOMPARE(desc.actions.at(2).condition.expression.describe(),
+             QStringLiteral("$(eval '$(var mode)' == 'real')"));
 }
 
 void TestPythonLaunchReader::decidedAndUndecidedIfs()
 {
     const LaunchFileDescription desc = readFixture("ifs_launch.py");
-    QCOMPARE(dump(desc.actions), (QStringList{
-        QStringLiteral("Node pkg=sim exe=decided @12"),
-        QStringLiteral("Group unscoped if(?{os.environ.get('ROBOT') == 'real'}) @15"),
-        QStringLiteral("  Node pkg=hw exe=driver @16"), QStringLiteral("  Node pkg=hw exe=imu @17"),
-        QStringLiteral("Group unscoped unless(?{os.environ.get('ROBOT') == 'real'}) @18"),
-        QStringLiteral("  Node pkg=sim exe=fake @19")}));
+    QCOMPARE(dump(desc.actions),
+             (QStringList{
+                 QStringLiteral("Node pkg=sim exe=decided @12"),
+                 QStringLiteral("Group unscoped if(?{os.environ.get('ROBOT') == 'real'}) @15"),
+                 QStringLiteral("  Node pkg=hw exe=driver @16"),
+                 QStringLiteral("  Node pkg=hw exe=imu @17"),
+                 QStringLiteral("Group unscoped unless(?{os.environ.get('ROBOT') == 'real'}) @18"),
+                 QStringLiteral("  Node pkg=sim exe=fake @19")}));
     const LaunchAction &group = desc.actions.at(1);
     QCOMPARE(group.condition.text, QStringLiteral("os.environ.get('ROBOT') == 'real'"));
-    QCOMPARE(group.evidence.endLine, 17); // the `if` branch
+    QCOMPARE(group.evidence.endLine, 17);              // the `if` branch
     QCOMPARE(desc.actions.at(2).evidence.endLine, 21); // the elif/else chain
 }
 
@@ -336,35 +401,43 @@ void TestPythonLaunchReader::undecidedNamesAndReturns()
 void TestPythonLaunchReader::loopsComprehensionsAndHelpers()
 {
     QCOMPARE(readFixtureDump("loops_launch.py"),
-             (QStringList{QStringLiteral("Node pkg=sim exe=spawn name=r1_spawner param:x=0.0 @8"),
-                          QStringLiteral("Node pkg=sim exe=spawn name=r2_spawner param:x=1.5 @8"),
-                          QStringLiteral("Node pkg=e exe=x @24"),
-                          QStringLiteral("Group unscoped if(?{for unknown in robots_from_yaml()}) @25"),
-                          QStringLiteral("  Node pkg=u exe=per_robot name=?{unknown} @26"),
-                          QStringLiteral("Node pkg=drv exe=driver ns=a remap:cmd_vel->/a/cmd_vel @20")}));
+             (QStringList{
+                 QStringLiteral("Node pkg=sim exe=spawn name=r1_spawner param:x=0.0 @8"),
+                 QStringLiteral("Node pkg=sim exe=spawn name=r2_spawner param:x=1.5 @8"),
+                 QStringLiteral("Node pkg=e exe=x @24"),
+                 QStringLiteral("Group unscoped if(?{for unknown in robots_from_yaml()}) @25"),
+                 QStringLiteral("  Node pkg=u exe=per_robot name=?{unknown} @26"),
+                 QStringLiteral("Node pkg=drv exe=driver ns=a remap:cmd_vel->/a/cmd_vel @20")}));
 }
 
 void TestPythonLaunchReader::opaqueFunctions()
 {
-    QCOMPARE(readFixtureDump("opaque_launch.py"),
-             (QStringList{QStringLiteral("Arg name=model value=burger @19"),
-                          QStringLiteral("Unresolved expr=OpaqueFunction(launch_setup) @20"),
-                          QStringLiteral("Group unscoped @20"),
-                          QStringLiteral("  Node pkg=p exe=a ns=$(var namespace) param:model=$(var model) param:rate=$(var rate|10) @11"),
-                          QStringLiteral("  Group unscoped if(?{model == 'burger'}) @12"),
-                          QStringLiteral("    Node pkg=p exe=burger_only @13"),
-                          QStringLiteral("Unresolved expr=OpaqueFunction(undefined_elsewhere) @21")}));
+    QCOMPARE(
+        readFixtureDump("opaque_launch.py"),
+        (QStringList{QStringLiteral("Arg name=model value=burger @19"),
+                     QStringLiteral("Unresolved expr=OpaqueFunction(launch_setup) @20"),
+                     QStringLiteral("Group unscoped @20"),
+                     QStringLiteral("  Node pkg=p exe=a ns=$(var namespace) param:model=$(var "
+                                    "model) param:rate=$(var rate|10) @11"),
+                     QStringLiteral("  Group unscoped if(?{model == 'burger'}) @12"),
+                     QStringLiteral("    Node pkg=p exe=burger_only @13"),
+                     QStringLiteral("Unresolved expr=OpaqueFunction(undefined_elsewhere) @21")}));
 }
 
 void TestPythonLaunchReader::unknownAndHarmlessActions()
 {
-    QCOMPARE(readFixtureDump("unknown_actions_launch.py"),
-             (QStringList{QStringLiteral("Unresolved expr=ExecuteProcess(cmd=['ros2', 'bag', 'record', '-a']) @14"),
-                          QStringLiteral("Node pkg=controller_manager exe=spawner @9"),
-                          QStringLiteral("Unresolved expr=RegisterEventHandler(OnProcessExit(target_action=spawner, on_exit=[rviz])) @16"),
-                          QStringLiteral("Group unscoped @16"), QStringLiteral("  Node pkg=rviz2 exe=rviz2 @10"),
-                          QStringLiteral("Group unscoped @17"), QStringLiteral("  Node pkg=late exe=starter @17"),
-                          QStringLiteral("Unresolved expr=make_custom_action() @18")}));
+    QCOMPARE(
+        readFixtureDump("unknown_actions_launch.py"),
+        (QStringList{
+            QStringLiteral(
+                "Unresolved expr=ExecuteProcess(cmd=['ros2', 'bag', 'record', '-a']) @14"),
+            QStringLiteral("Node pkg=controller_manager exe=spawner @9"),
+            QStringLiteral(
+                "Unresolved expr=RegisterEventHandler(OnProcessExit(target_action=spawner, "
+                "on_exit=[rviz])) @16"),
+            QStringLiteral("Group unscoped @16"), QStringLiteral("  Node pkg=rviz2 exe=rviz2 @10"),
+            QStringLiteral("Group unscoped @17"), QStringLiteral("  Node pkg=late exe=starter @17"),
+            QStringLiteral("Unresolved expr=make_custom_action() @18")}));
 }
 
 void TestPythonLaunchReader::syntaxErrorsStillRead()
@@ -392,9 +465,11 @@ void TestPythonLaunchReader::boundedOnPathologicalInput()
     QVERIFY(desc.actions.size() > 1000); // 2^30 nodes are cut by the walk budget
     QVERIFY(desc.actions.size() < 30000);
 
-    QByteArray deep = "from launch import LaunchDescription\n\ndef generate_launch_description():\n    return LaunchDescription(";
+    QByteArray deep = "from launch import LaunchDescription\n\ndef "
+                      "generate_launch_description():\n    return LaunchDescription(";
     deep += QByteArray(3000, '[') + QByteArray(3000, ']') + ")\n";
-    const LaunchFileDescription nested = PythonLaunchReader::read(deep, QStringLiteral("deep_launch.py"));
+    const LaunchFileDescription nested =
+        PythonLaunchReader::read(deep, QStringLiteral("deep_launch.py"));
     QVERIFY(nested.actions.size() <= 1);
 
     // the evaluation budget: nested loops multiply, the reader stops and says so
@@ -403,7 +478,8 @@ void TestPythonLaunchReader::boundedOnPathologicalInput()
     QStringList codes;
     for (const Diagnostic &diag : busy.diagnostics)
         codes << QStringLiteral("%1@%2").arg(diag.code).arg(diag.evidence.line);
-    QCOMPARE(codes, (QStringList{QStringLiteral("launch-loop-limit@8"), QStringLiteral("launch-loop-limit@7"),
+    QCOMPARE(codes, (QStringList{QStringLiteral("launch-loop-limit@8"),
+                                 QStringLiteral("launch-loop-limit@7"),
                                  QStringLiteral("launch-evaluation-limit@0")}));
     QVERIFY(timer.elapsed() < 10000);
 }
@@ -415,7 +491,8 @@ void TestPythonLaunchReader::notALaunchDescription()
     QCOMPARE(none.diagnostics.size(), 1);
     QCOMPARE(none.diagnostics.first().code, QStringLiteral("no-launch-description"));
 
-    const LaunchFileDescription nothing = readSource("def generate_launch_description():\n    x = 1\n");
+    const LaunchFileDescription nothing =
+        readSource("def generate_launch_description():\n    x = 1\n");
     QVERIFY(nothing.actions.isEmpty());
     QCOMPARE(nothing.diagnostics.size(), 1);
     QCOMPARE(nothing.diagnostics.first().code, QStringLiteral("launch-description-unknown"));
@@ -448,7 +525,8 @@ void TestPythonLaunchReader::corpus()
         if (!PythonLaunchReader::isLaunchFile(content))
             continue;
         ++launchFiles;
-        const LaunchFileDescription desc = PythonLaunchReader::read(content, QDir(root).relativeFilePath(path));
+        const LaunchFileDescription desc =
+            PythonLaunchReader::read(content, QDir(root).relativeFilePath(path));
         if (!desc.diagnostics.isEmpty())
             ++withDiagnostics;
         for (const Diagnostic &diag : desc.diagnostics)
@@ -461,7 +539,8 @@ void TestPythonLaunchReader::corpus()
                 qInfo().noquote() << "  " + line;
         }
     }
-    qInfo().noquote() << "files" << launchFiles << "with diagnostics" << withDiagnostics << "ms" << timer.elapsed();
+    qInfo().noquote() << "files" << launchFiles << "with diagnostics" << withDiagnostics << "ms"
+                      << timer.elapsed();
     for (auto k = kinds.constBegin(); k != kinds.constEnd(); ++k)
         qInfo().noquote() << "kind" << k.key() << k.value();
     for (auto u = unresolved.constBegin(); u != unresolved.constEnd(); ++u)

@@ -1,8 +1,8 @@
 // How the C++ analyzer resolves names: port names from literals, locals, members, parameters
 // and expressions, names handed through helper classes and methods, and interface types.
+#include "cppanalysis.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
-#include "cppanalysis.h"
 #include "testsupport.h"
 
 #include <QTemporaryDir>

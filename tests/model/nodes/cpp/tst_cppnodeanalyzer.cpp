@@ -1,8 +1,8 @@
 // The C++ analyzer on small fixture workspaces (tests/data/cpp_*/ws), field by field.
 // Set ROSARCH_CPP_CORPUS=<folder> to print what it finds in a real workspace, with timing.
+#include "cppanalysis.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
-#include "cppanalysis.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
 
