@@ -30,7 +30,7 @@ void Document::setRecovery(Recovery recovery)
 
 void Document::setAtomicNodes(AtomicNodeList nodes)
 {
-    setRecovery({std::move(nodes), {}});
+    setRecovery({std::move(nodes), {}, {}});
 }
 
 void Document::setLaunchDependencies(LaunchDependencies launch, Architecture architecture)

@@ -204,7 +204,7 @@ inline LaunchDependencies handBuiltLaunch()
 
 inline Recovery handBuiltRecovery()
 {
-    return {handBuiltNodes(), handBuiltLaunch()};
+    return {handBuiltNodes(), handBuiltLaunch(), {}};
 }
 
 } // namespace gui

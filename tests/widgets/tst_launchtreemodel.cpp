@@ -192,7 +192,7 @@ private Q_SLOTS:
         document.setLaunchDependencies(sample());
         QCOMPARE(model.rowCount(), 1);
         // a full reset (stage 1 + 2) and an empty one keep the model consistent
-        document.setRecovery({AtomicNodeList(), sample()});
+        document.setRecovery({AtomicNodeList(), sample(), {}});
         QCOMPARE(model.rowCount(), 1);
         document.setAtomicNodes(AtomicNodeList());
         QCOMPARE(model.rowCount(), 0);
@@ -252,7 +252,7 @@ private Q_SLOTS:
         workspace.packages = {sensing};
         LaunchDependencies launch = sample();
         launch.nodes[6].package = sensing.name; // debayer: a workspace package without the class
-        document.setRecovery({workspace, launch});
+        document.setRecovery({workspace, launch, {}});
         LaunchTreeModel model(&document);
         const auto cell = [&](const QString &nodeId, int column) {
             return model.nodeIndex(nodeId, column).data().toString();
@@ -349,7 +349,7 @@ private Q_SLOTS:
         cls.className = QStringLiteral("LidarFilter");
         cls.evidence = at(QStringLiteral("src/robot_sensing/src/lidar_filter.cpp"), 12, 80);
         nodes.nodes = {cls};
-        document.setRecovery({nodes, sample()});
+        document.setRecovery({nodes, sample(), {}});
         LaunchTreeModel model(&document);
 
         const QString lidar =
@@ -491,7 +491,7 @@ private Q_SLOTS:
                  QStringLiteral("Drives a camera."));
         QCOMPARE(document.launchDependencies().nodes.size(), 7);
         // a full result replaces both and starts a fresh history
-        document.setRecovery({nodes, {}});
+        document.setRecovery({nodes, {}, {}});
         QCOMPARE(fullReset.count(), 1);
         QCOMPARE(document.undoStack()->count(), 0);
         QVERIFY(document.launchDependencies().nodes.isEmpty());
@@ -510,7 +510,7 @@ private Q_SLOTS:
         document.setLaunchOptions(options); // no change, no signal
         QCOMPARE(changed.count(), 1);
         // stage results do not touch them
-        document.setRecovery({AtomicNodeList(), sample()});
+        document.setRecovery({AtomicNodeList(), sample(), {}});
         document.setLaunchDependencies({});
         QCOMPARE(document.launchOptions(), options);
     }
