@@ -3,7 +3,8 @@
 # builds, and then either opens the GUI on the bundled example workspace or runs the tests.
 #
 #   ./setup.sh gui     build and open the GUI on resources/example_ws
-#   ./setup.sh test    build and run the whole test suite (what CI runs)
+#   ./setup.sh test    format check, warnings-as-errors build and the whole test suite, then the
+#                      suite again under AddressSanitizer + UBSan in build-asan (what CI runs)
 #   ./setup.sh build   only build
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -30,20 +31,38 @@ fi
 scripts/fetch-grammars.sh "$build_dir/_grammars"
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DROSARCH_GRAMMAR_DIR="$PWD/$build_dir/_grammars"
-cmake --build "$build_dir" -j "$jobs"
+grammars="$PWD/$build_dir/_grammars"
+
+# configure_and_build <dir> <cmake options...>
+configure_and_build() {
+  local dir=$1; shift
+  cmake -S . -B "$dir" -G Ninja -DROSARCH_GRAMMAR_DIR="$grammars" "$@"
+  cmake --build "$dir" -j "$jobs"
+}
 
 case "$mode" in
   gui)
+    configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
       echo "setup: no display found; starting the GUI under Xvfb (export DISPLAY to use your own)"
       exec xvfb-run -a -s "-screen 0 1600x1000x24" "$build_dir/bin/rosarch" resources/example_ws
     fi
     exec "$build_dir/bin/rosarch" resources/example_ws ;;
   test)
+    # What CI runs: the format check, a warnings-as-errors build and the whole suite, then the
+    # same suite built with AddressSanitizer and UBSan (ROSARCH_SKIP_SANITIZERS=1 skips that).
     export QT_QPA_PLATFORM=offscreen
-    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" ;;
-  build) ;;
+    scripts/check-format.sh
+    configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROSARCH_WERROR=ON
+    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+    if [ "${ROSARCH_SKIP_SANITIZERS:-0}" != 1 ]; then
+      asan_dir=${ROSARCH_ASAN_BUILD_DIR:-build-asan}
+      configure_and_build "$asan_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+        -DROSARCH_WERROR=ON -DROSARCH_SANITIZE=address,undefined
+      ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+        ctest --test-dir "$asan_dir" --output-on-failure -j "$jobs"
+    fi ;;
+  build)
+    configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo ;;
   *) echo "usage: $0 [gui|test|build]" >&2; exit 2 ;;
 esac
