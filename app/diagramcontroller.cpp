@@ -1,6 +1,5 @@
 #include "diagramcontroller.h"
 #include "appsettings.h"
-#include "composearchitecture.h"
 #include "diagrampanel.h"
 #include "document.h"
 #include "evaluationreport.h"
@@ -25,87 +24,6 @@
 #include <QVBoxLayout>
 
 namespace rosarch {
-
-namespace {
-
-QString plain(QString name)
-{
-    while (name.startsWith(QLatin1Char('/')))
-        name.remove(0, 1);
-    return name;
-}
-
-QString partName(const RosNodePart &p)
-{
-    return p.name.isEmpty() ? p.typeName : p.name;
-}
-
-/// The canonical value (blueprint §4, as the reader writes it) of each drawn element, so an
-/// evaluation's false positives can be found in the diagram by key.
-QHash<QString, QStringList> keysByElement(const Composite &c)
-{
-    QHash<QString, QStringList> keys;
-    const auto add = [&](const QString &kind, const QString &value, const QString &key) {
-        keys[kind + QLatin1Char('\n') + value].append(key);
-    };
-    for (const RosNodePart &p : c.parts) {
-        const QString key = QStringLiteral("part:") + p.id;
-        const QString ns =
-            p.nameSpace == QLatin1String("/") ? QStringLiteral("/") : plain(p.nameSpace);
-        add(QStringLiteral("part"), partName(p), key);
-        add(QStringLiteral("part_type"),
-            p.kind == RosNodePart::Kind::Launch ? QLatin1Char(':') + p.typeName
-                                                : p.name + QLatin1Char(':') + p.typeName,
-            key);
-        add(QStringLiteral("namespace"), QStringLiteral("(%1, %2)").arg(ns, partName(p)), key);
-    }
-    for (const Channel &ch : c.channels)
-        add(channelKindName(ch.kind), plain(ch.name), QStringLiteral("channel:") + ch.id);
-    for (const BoundaryPort &b : c.boundary)
-        add(QStringLiteral("boundary_port"),
-            QStringLiteral("(%1, %2)")
-                .arg(b.isInput() ? QStringLiteral("in") : QStringLiteral("out"), b.type),
-            QStringLiteral("boundary:") + b.id);
-    for (qsizetype i = 0; i < c.connections.size(); ++i) {
-        const Connection &k = c.connections.at(i);
-        const RosNodePart *part = c.part(k.partId);
-        const Channel *ch = c.channel(k.targetId);
-        const BoundaryPort *b = c.boundaryPort(k.targetId);
-        if (!part)
-            continue;
-        const QString p = partName(*part);
-        const QString target =
-            ch  ? plain(ch->name)
-            : b ? QStringLiteral("boundary:%1/%2")
-                      .arg(b->isInput() ? QStringLiteral("in") : QStringLiteral("out"), b->type)
-                : QString();
-        QString value;
-        switch (k.kind) {
-        case Connection::Kind::Publish:
-            value = QStringLiteral("publish %1 -> %2").arg(p, target);
-            break;
-        case Connection::Kind::Subscribe:
-            value = QStringLiteral("subscribe %1 -> %2").arg(target, p);
-            break;
-        case Connection::Kind::Client:
-            value = QStringLiteral("client %1 -> %2").arg(p, target);
-            break;
-        case Connection::Kind::Server:
-            value = QStringLiteral("server %1 -> %2").arg(p, target);
-            break;
-        case Connection::Kind::DelegationIn:
-            value = QStringLiteral("delegation %1 -> %2").arg(target, p);
-            break;
-        case Connection::Kind::DelegationOut:
-            value = QStringLiteral("delegation %1 -> %2").arg(p, target);
-            break;
-        }
-        add(QStringLiteral("connection"), value, QStringLiteral("connection:%1").arg(i));
-    }
-    return keys;
-}
-
-} // namespace
 
 DiagramController::DiagramController(Document *document, DiagramPanel *panel,
                                      LaunchTreePanel *launchPanel, Traceability *traceability,
@@ -158,12 +76,13 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
 
 void DiagramController::showArchitecture()
 {
+    const Architecture &accepted = m_document->accepted().architecture;
     if (m_preview.isEmpty()) {
-        m_panel->setArchitecture(groupedArchitecture(*m_document));
+        m_panel->setArchitecture(accepted);
         return;
     }
     // The accepted model with the previewed grouping on top.
-    m_panel->setArchitecture(SubsystemGrouping::apply(groupedArchitecture(*m_document), m_preview));
+    m_panel->setArchitecture(SubsystemGrouping::apply(accepted, m_preview));
 }
 
 void DiagramController::previewGrouping(const QString &name, const QStringList &memberIds,
@@ -188,36 +107,6 @@ void DiagramController::onModelReset()
         compareWithReference(m_referencePath, &error);
     }
     updateActions();
-}
-
-Architecture DiagramController::groupedArchitecture(const Document &document)
-{
-    // Accepted names for ports the code names by an expression ("arc_2/p1" -> value) are
-    // composed again, so they resolve, wire and promote like any literal name.
-    const QMap<QString, QString> names = document.acceptedNames();
-    AtomicNodeList nodes;
-    bool renamed = false;
-    for (auto it = names.cbegin(); it != names.cend(); ++it) {
-        const QString nodeId = it.key().section(QLatin1Char('/'), 0, 0);
-        const QString portId = it.key().section(QLatin1Char('/'), 1);
-        if (portId.isEmpty() || it.key().contains(QLatin1Char('#')))
-            continue; // launch items need a stage 2 run with the value
-        if (!renamed)
-            nodes = document.atomicNodes();
-        for (AtomicNode &n : nodes.nodes)
-            for (Port &p : n.ports)
-                if (n.id == nodeId && p.id == portId && !p.isResolved()) {
-                    p.name = it.value();
-                    p.nameOrigin = NameOrigin::Literal;
-                    renamed = true;
-                }
-    }
-    const Architecture base = renamed ? composeArchitecture(nodes, document.launchDependencies())
-                                      : document.architecture();
-    QList<SubsystemGroup> groups;
-    for (const AcceptedGrouping &g : document.acceptedGroupings())
-        groups.append({g.name, g.memberIds, g.rootId});
-    return SubsystemGrouping::apply(base, groups);
 }
 
 void DiagramController::onLaunchItemSelected(const QString &instanceId)
@@ -260,7 +149,7 @@ void DiagramController::onPortActivated(const QString &instanceId, const QString
 
 void DiagramController::applyMarks()
 {
-    const Composite *c = m_document->architecture().composite(m_panel->currentComposite());
+    const Composite *c = m_document->accepted().architecture.composite(m_panel->currentComposite());
     const LevelEvaluation *ccd = m_evaluation.level(UmlLevel::Ccd);
     if (!c || !ccd) {
         m_panel->setMarks({});
@@ -271,13 +160,13 @@ void DiagramController::applyMarks()
         m_panel->setMarks({}, {tr("the reference has no diagram for %1").arg(c->stem)});
         return;
     }
-    const QHash<QString, QStringList> keys = keysByElement(*c);
+    // Recovered elements carry the key of what the diagram draws for them (recoveredDiagrams).
     QHash<QString, DiagramMark> marks;
     QStringList missing;
     for (const KindEvaluation &k : d->kinds) {
         for (const UmlElement &e : k.falsePositives)
-            for (const QString &key : keys.value(e.kind + QLatin1Char('\n') + e.value))
-                marks.insert(key, DiagramMark::Extra);
+            if (!e.key.isEmpty())
+                marks.insert(e.key, DiagramMark::Extra);
         for (const UmlElement &e : k.falseNegatives)
             missing << QStringLiteral("%1 %2").arg(umlKindLabel(e.kind), e.value);
     }
@@ -289,8 +178,8 @@ QString DiagramController::compareWithReference(const QString &path, QString *er
     UmlModel reference;
     if (!UmlModel::load(path, &reference, error))
         return {};
-    const QList<UmlDiagram> recovered =
-        recoveredDiagrams(m_document->atomicNodes(), m_document->architecture());
+    const Recovery &accepted = m_document->accepted();
+    const QList<UmlDiagram> recovered = recoveredDiagrams(accepted.nodes, accepted.architecture);
     QList<UmlLevel> levels;
     for (UmlLevel l : {UmlLevel::Acd, UmlLevel::Ccd})
         if (reference.hasLevel(l))

@@ -44,9 +44,6 @@ public:
     void previewGrouping(const QString &name, const QStringList &memberIds, const QString &rootId);
     /// Writes the shown diagram; false with a message in the log on failure.
     bool exportDiagram(const QString &path);
-    /// The architecture as accepted: the document's composites with the accepted subsystem
-    /// groupings, and re-composed with accepted names for ports named by an expression.
-    static Architecture groupedArchitecture(const Document &document);
 
 Q_SIGNALS:
     void statusMessage(const QString &text, int timeout);

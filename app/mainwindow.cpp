@@ -375,10 +375,9 @@ bool MainWindow::exportArtifactsTo(const QString &folder)
 {
     QStringList written;
     QString error;
-    // Accepted subsystem groupings are exported as nested composites in the CCDs.
-    const Recovery recovery{m_document->atomicNodes(), m_document->launchDependencies(),
-                            DiagramController::groupedArchitecture(*m_document)};
-    if (!ArtifactWriter::writeAll(recovery, folder, &written, &error)) {
+    // The model as accepted: accepted groupings are nested composites in the CCDs, accepted
+    // names resolve ports, exactly as `rosarch recover` writes it for the same decisions.
+    if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\n"
                      "Choose a folder you can write to, or free some space, and export again.")
@@ -404,31 +403,21 @@ void MainWindow::showError(const QString &title, const QString &text)
 void MainWindow::updateCounts()
 {
     const AtomicNodeList &list = m_document->atomicNodes();
-    const LaunchDependencies &launch = m_document->launchDependencies();
-    int ports = 0;
-    for (const AtomicNode &n : list.nodes)
-        ports += int(n.ports.size());
-    qsizetype unresolved = 0;
-    for (const NodeInstance &n : launch.nodes)
-        unresolved += n.unresolved.size();
-    for (const LaunchFileInstance &i : launch.instances)
-        unresolved += i.unresolved.size();
-    const Architecture &arch = m_document->architecture();
-    const qsizetype diagnostics =
-        list.diagnostics.size() + launch.diagnostics.size() + arch.diagnostics.size();
+    const RecoveryCounts counts =
+        RecoveryCounts::of({list, m_document->launchDependencies(), m_document->architecture()});
+    const qsizetype diagnostics = counts.diagnostics;
     // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
     const auto count = [](qsizetype n, const QString &one, const QString &many) {
         return n == 1 ? one : many.arg(n);
     };
-    const QStringList parts{
-        count(list.packages.size(), tr("1 package"), tr("%1 packages")),
-        count(list.nodes.size(), tr("1 node"), tr("%1 nodes")),
-        count(ports, tr("1 port"), tr("%1 ports")),
-        count(launch.launchFiles.size(), tr("1 launch file"), tr("%1 launch files")),
-        count(launch.nodes.size(), tr("1 instance"), tr("%1 instances")),
-        count(unresolved, tr("1 unresolved"), tr("%1 unresolved")),
-        count(arch.composites.size(), tr("1 composite"), tr("%1 composites")),
-        count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
+    const QStringList parts{count(counts.packages, tr("1 package"), tr("%1 packages")),
+                            count(counts.nodes, tr("1 node"), tr("%1 nodes")),
+                            count(counts.ports, tr("1 port"), tr("%1 ports")),
+                            count(counts.launchFiles, tr("1 launch file"), tr("%1 launch files")),
+                            count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
+                            count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
+                            count(counts.composites, tr("1 composite"), tr("%1 composites")),
+                            count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
     m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
     m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
                                  "Stage 2: launch files found, node instances they start and "

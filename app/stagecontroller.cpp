@@ -111,21 +111,17 @@ void StageController::onStageFinished(const Recovery &result)
     if (recovery.nodes.workspaceRoot.isEmpty())
         recovery.nodes.workspaceRoot = m_workspace;
     m_document->setRecovery(recovery);
-    const AtomicNodeList &list = m_document->atomicNodes();
-    const LaunchDependencies &launch = m_document->launchDependencies();
-    int ports = 0;
-    for (const AtomicNode &n : list.nodes)
-        ports += int(n.ports.size());
-    const Architecture &arch = m_document->architecture();
+    const RecoveryCounts counts = RecoveryCounts::of(
+        {m_document->atomicNodes(), m_document->launchDependencies(), m_document->architecture()});
     report(tr("Stages 1–3 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node "
               "instances, %6 composites, %7 diagnostics")
                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))
-               .arg(list.nodes.size())
-               .arg(ports)
-               .arg(launch.launchFiles.size())
-               .arg(launch.nodes.size())
-               .arg(arch.composites.size())
-               .arg(list.diagnostics.size() + launch.diagnostics.size() + arch.diagnostics.size()));
+               .arg(counts.nodes)
+               .arg(counts.ports)
+               .arg(counts.launchFiles)
+               .arg(counts.nodeInstances)
+               .arg(counts.composites)
+               .arg(counts.diagnostics));
     restoreSelection();
 }
 

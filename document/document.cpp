@@ -2,7 +2,6 @@
 #include "decidesuggestioncommand.h"
 #include "decisionstore.h"
 #include "setnodedescriptioncommand.h"
-#include "suggestionitem.h"
 
 #include <QCoreApplication>
 #include <QSet>
@@ -14,6 +13,7 @@ Document::Document(QObject *parent) : QObject(parent) {}
 void Document::setRecovery(Recovery recovery)
 {
     Q_EMIT modelAboutToBeReset();
+    m_accepted.reset();
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
     m_launch = std::move(recovery.launch);
@@ -36,6 +36,7 @@ void Document::setAtomicNodes(AtomicNodeList nodes)
 void Document::setLaunchDependencies(LaunchDependencies launch, Architecture architecture)
 {
     Q_EMIT launchDependenciesAboutToBeReset();
+    m_accepted.reset();
     m_launch = std::move(launch);
     m_architecture = std::move(architecture);
     Q_EMIT launchDependenciesReset();
@@ -64,6 +65,7 @@ void Document::applyNodeDescription(const QString &nodeId, const QString &descri
     for (AtomicNode &n : m_nodes.nodes) {
         if (n.id == nodeId) {
             n.description = description;
+            m_accepted.reset();
             Q_EMIT nodeChanged(nodeId);
             return;
         }
@@ -99,6 +101,8 @@ int Document::setSuggestions(SuggestionReport report)
         }
     }
     m_suggestionReport = std::move(report);
+    if (!changedNodes.isEmpty())
+        m_accepted.reset();
     Q_EMIT suggestionsReset();
     for (const QString &id : std::as_const(changedNodes))
         Q_EMIT nodeChanged(id);
@@ -156,36 +160,27 @@ int Document::acceptAllSuggestions(Suggestion::Kind kind)
     return int(pending.size());
 }
 
-QList<AcceptedGrouping> Document::acceptedGroupings() const
+QList<SubsystemGroup> Document::acceptedGroupings() const
 {
-    QList<AcceptedGrouping> out;
-    for (const SuggestionDecision &d : m_decisions) {
-        if (d.kind != Suggestion::Kind::SubsystemGrouping ||
-            d.status != Suggestion::Status::Accepted)
-            continue;
-        const LaunchFileInstance *root = m_launch.instance(d.targetId);
-        if (!root || !root->parentId.isEmpty())
-            continue;
-        bool membersExist = !d.memberIds.isEmpty();
-        for (const QString &m : d.memberIds)
-            membersExist = membersExist && m_launch.node(m);
-        if (membersExist)
-            out.append({d.proposal, d.memberIds, d.targetId});
-    }
-    return out;
+    return AcceptedModel::select(m_decisions, {m_nodes, m_launch, m_architecture}).groupings;
 }
 
 QMap<QString, QString> Document::acceptedNames() const
 {
-    QMap<QString, QString> out;
-    QSet<QString> items;
-    for (const SuggestionItem &item : SuggestionItem::collect({m_nodes, m_launch, m_architecture}))
-        items.insert(item.id);
-    for (const SuggestionDecision &d : m_decisions)
-        if (d.kind == Suggestion::Kind::NameResolution &&
-            d.status == Suggestion::Status::Accepted && items.contains(d.targetId))
-            out.insert(d.targetId, d.proposal);
-    return out;
+    return AcceptedModel::select(m_decisions, {m_nodes, m_launch, m_architecture}).names;
+}
+
+const Recovery &Document::accepted() const
+{
+    if (!m_accepted) {
+        const Recovery recovery{m_nodes, m_launch, m_architecture};
+        AcceptedDecisions decisions = AcceptedModel::select(m_decisions, recovery);
+        // The nodes here already hold every description a person set, by accepting or by
+        // editing after accepting; the stored decision must not undo a later edit.
+        decisions.descriptions.clear();
+        m_accepted = AcceptedModel::apply(recovery, decisions);
+    }
+    return *m_accepted;
 }
 
 QString Document::decisionsPath() const
@@ -225,6 +220,7 @@ Document::DecisionSnapshot Document::decided(const Suggestion &suggestion,
 
 void Document::restore(const DecisionSnapshot &snapshot)
 {
+    m_accepted.reset();
     if (snapshot.decision)
         m_decisions.insert(snapshot.key, *snapshot.decision);
     else

@@ -1,10 +1,11 @@
 #pragma once
 
-#include "acceptedgrouping.h"
+#include "acceptedmodel.h"
 #include "atomicnodelist.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
 #include "recovery.h"
+#include "subsystemgroup.h"
 #include "suggestiondecision.h"
 #include "suggestionreport.h"
 
@@ -69,9 +70,12 @@ public:
     /// Every decision of this workspace, by SuggestionDecision::key.
     const QMap<QString, SuggestionDecision> &decisions() const { return m_decisions; }
     /// Accepted subsystem groupings whose root and members exist in the current model.
-    QList<AcceptedGrouping> acceptedGroupings() const;
+    QList<SubsystemGroup> acceptedGroupings() const;
     /// Accepted values of unresolved items that exist in the current model: item id → value.
     QMap<QString, QString> acceptedNames() const;
+    /// The model as accepted (AcceptedModel::apply of the recovery and the decisions): what the
+    /// diagram draws and the exports write. Computed once per change of either.
+    const Recovery &accepted() const;
     /// The decisions file of the workspace ("" without a workspace).
     QString decisionsPath() const;
 
@@ -130,6 +134,7 @@ private:
     SuggestionReport m_suggestionReport;
     QMap<QString, SuggestionDecision> m_decisions;
     QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
+    mutable std::optional<Recovery> m_accepted;     ///< accepted(), until the next change
     QUndoStack m_undoStack;
 };
 

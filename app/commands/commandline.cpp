@@ -1,5 +1,7 @@
 #include "commandline.h"
+#include "acceptedmodel.h"
 #include "artifactwriter.h"
+#include "decisionstore.h"
 #include "evalcommand.h"
 #include "recovery.h"
 #include "suggestcommand.h"
@@ -28,8 +30,10 @@ QString usageText()
         "default)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
         "<file>]\n"
+        "                  [--no-decisions]\n"
         "                                            run the stages headless and write the "
-        "artifacts\n"
+        "artifacts,\n"
+        "                                            with the decisions made in the GUI applied\n"
         "  rosarch eval --reference <dir|file> --recovered <dir|file> [--level acd|ccd] [--json]\n"
         "                                            score recovered PlantUML diagrams against a "
         "reference\n"
@@ -44,16 +48,6 @@ QString usageText()
         "architecture.json,\n"
         "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
-}
-
-int unresolvedCount(const LaunchDependencies &launch)
-{
-    qsizetype n = 0;
-    for (const LaunchFileInstance &i : launch.instances)
-        n += i.unresolved.size();
-    for (const NodeInstance &i : launch.nodes)
-        n += i.unresolved.size();
-    return int(n);
 }
 
 int recover(const QStringList &arguments)
@@ -86,10 +80,16 @@ int recover(const QStringList &arguments)
             "rosarch::CommandLine",
             "Analyse only this launch file (relative to the workspace) as the root."),
         QStringLiteral("file"));
+    const QCommandLineOption noDecisionsOption(
+        QStringLiteral("no-decisions"),
+        QCoreApplication::translate("rosarch::CommandLine",
+                                    "Write the model as recovered, without the decisions a person "
+                                    "made on this workspace in the GUI."));
     parser.addOption(outOption);
     parser.addOption(quietOption);
     parser.addOption(argOption);
     parser.addOption(rootOption);
+    parser.addOption(noDecisionsOption);
     if (const int done = CommandLine::parseOrFinish(parser, arguments, usageText()); done >= 0)
         return done;
     const QStringList positional = parser.positionalArguments();
@@ -121,17 +121,19 @@ int recover(const QStringList &arguments)
 
     QElapsedTimer timer;
     timer.start();
-    const Recovery recovery = recoverWorkspace(workspace, options);
-    const AtomicNodeList &nodes = recovery.nodes;
+    const Recovery recovered = recoverWorkspace(workspace, options);
+    // The model as accepted, exactly as the GUI exports it for the same decisions.
+    const AcceptedDecisions accepted =
+        parser.isSet(noDecisionsOption)
+            ? AcceptedDecisions{}
+            : AcceptedModel::select(DecisionStore::load(DecisionStore::path(workspace)), recovered);
+    const Recovery recovery = AcceptedModel::apply(recovered, accepted);
     const qint64 elapsed = timer.elapsed();
 
-    QList<Diagnostic> diagnostics = nodes.diagnostics;
+    QList<Diagnostic> diagnostics = recovery.nodes.diagnostics;
     diagnostics.append(recovery.launch.diagnostics);
     diagnostics.append(recovery.architecture.diagnostics);
-    int errors = 0;
     for (const Diagnostic &d : std::as_const(diagnostics)) {
-        if (d.severity == Diagnostic::Severity::Error)
-            ++errors;
         if (quiet && d.severity != Diagnostic::Severity::Error)
             continue;
         const QString where =
@@ -147,32 +149,37 @@ int recover(const QStringList &arguments)
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }
+    const RecoveryCounts counts = RecoveryCounts::of(recovery);
     if (!quiet) {
-        int ports = 0;
-        for (const AtomicNode &n : nodes.nodes)
-            ports += int(n.ports.size());
+        const int decisions =
+            int(accepted.groupings.size() + accepted.names.size() + accepted.descriptions.size());
+        if (decisions > 0)
+            out << QCoreApplication::translate("rosarch::CommandLine",
+                                               "Applied %1 accepted decisions (--no-decisions "
+                                               "writes the model as recovered).\n")
+                       .arg(decisions);
         out << QCoreApplication::translate("rosarch::CommandLine",
                                            "Recovered %1 node classes with %2 ports in %3 "
                                            "packages; %4 launch files, %5 launch-file "
                                            "instances, %6 node instances, %7 unresolved items, %8 "
                                            "composites; in %9 ms; %10 diagnostics "
                                            "(%11 errors).\nWrote %12 files to %13\n")
-                   .arg(nodes.nodes.size())
-                   .arg(ports)
-                   .arg(nodes.packages.size())
-                   .arg(recovery.launch.launchFiles.size())
-                   .arg(recovery.launch.instances.size())
-                   .arg(recovery.launch.nodes.size())
-                   .arg(unresolvedCount(recovery.launch))
-                   .arg(recovery.architecture.composites.size())
+                   .arg(counts.nodes)
+                   .arg(counts.ports)
+                   .arg(counts.packages)
+                   .arg(counts.launchFiles)
+                   .arg(counts.launchInstances)
+                   .arg(counts.nodeInstances)
+                   .arg(counts.unresolved)
+                   .arg(counts.composites)
                    .arg(elapsed)
-                   .arg(diagnostics.size())
-                   .arg(errors)
+                   .arg(counts.diagnostics)
+                   .arg(counts.errors)
                    .arg(written.size())
                    .arg(QDir(parser.value(outOption)).absolutePath());
     }
     out.flush();
-    return errors > 0 ? CommandLine::AnalysisErrors : CommandLine::Ok;
+    return counts.errors > 0 ? CommandLine::AnalysisErrors : CommandLine::Ok;
 }
 
 } // namespace

@@ -5,6 +5,30 @@
 
 namespace rosarch {
 
+RecoveryCounts RecoveryCounts::of(const Recovery &r)
+{
+    RecoveryCounts c;
+    c.packages = r.nodes.packages.size();
+    c.nodes = r.nodes.nodes.size();
+    for (const AtomicNode &n : r.nodes.nodes)
+        c.ports += n.ports.size();
+    c.launchFiles = r.launch.launchFiles.size();
+    c.launchInstances = r.launch.instances.size();
+    c.nodeInstances = r.launch.nodes.size();
+    for (const LaunchFileInstance &i : r.launch.instances)
+        c.unresolved += i.unresolved.size();
+    for (const NodeInstance &i : r.launch.nodes)
+        c.unresolved += i.unresolved.size();
+    c.composites = r.architecture.composites.size();
+    for (const QList<Diagnostic> *list :
+         {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics}) {
+        c.diagnostics += list->size();
+        for (const Diagnostic &d : *list)
+            c.errors += d.severity == Diagnostic::Severity::Error ? 1 : 0;
+    }
+    return c;
+}
+
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
                           const StageControl &control)
 {

@@ -18,6 +18,23 @@ struct Recovery
     Architecture architecture; ///< stage 3
 };
 
+/// The figures of a recovery that the command line, the log and the status bar report.
+struct RecoveryCounts
+{
+    qsizetype packages = 0;
+    qsizetype nodes = 0; ///< atomic node classes
+    qsizetype ports = 0;
+    qsizetype launchFiles = 0;
+    qsizetype launchInstances = 0; ///< launch-file instances
+    qsizetype nodeInstances = 0;
+    qsizetype unresolved = 0; ///< items of launch-file and node instances stage 2 could not resolve
+    qsizetype composites = 0;
+    qsizetype diagnostics = 0; ///< of all three stages
+    qsizetype errors = 0;      ///< diagnostics of severity Error
+
+    static RecoveryCounts of(const Recovery &recovery);
+};
+
 /// Runs stages 1, 2 and 3 on `root` (one scan, shared).
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
                           const StageControl &control = {});

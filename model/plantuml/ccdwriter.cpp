@@ -73,18 +73,25 @@ QString partBlock(const RosNodePart &part, const QString &indent)
 
 } // namespace
 
-QString CcdWriter::write(const Composite &c)
+QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
 {
     const QString top = safe(c.stem);
     QString out = QStringLiteral("@startuml\n");
+    // Records that the next line written declares the element (kind, id).
+    const auto declare = [&](WrittenElement::Kind kind, const QString &id) {
+        if (elements)
+            elements->append({int(out.count(QLatin1Char('\n'))) + 1, kind, id});
+    };
     out += QStringLiteral("' launch file %1 (%2)\n")
                .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
     out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n")
                .arg(label(c.stem), top);
-    for (const BoundaryPort &b : c.boundary)
+    for (const BoundaryPort &b : c.boundary) {
+        declare(WrittenElement::Kind::Boundary, b.id);
         out += QStringLiteral("  %1 \"%2 / %3\" as b_%2  ' %4\n")
                    .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id,
                         PlantUmlText::type(b.type), label(b.name));
+    }
 
     // Parts grouped by namespace, namespaces in order of first appearance; the root's parts
     // sit directly in the composite.
@@ -116,6 +123,7 @@ QString CcdWriter::write(const Composite &c)
         QSet<QString> written;
         for (const RosNodePart *part : parts) {
             if (part->subsystem.isEmpty()) {
+                declare(WrittenElement::Kind::Part, part->id);
                 out += partBlock(*part, indent);
                 continue;
             }
@@ -129,14 +137,17 @@ QString CcdWriter::write(const Composite &c)
             out += QStringLiteral("%1component \"%2\" as %3 <<Subsystem>> {\n")
                        .arg(indent, label(part->subsystem), alias);
             for (const RosNodePart *member : parts)
-                if (member->subsystem == part->subsystem)
+                if (member->subsystem == part->subsystem) {
+                    declare(WrittenElement::Kind::Part, member->id);
                     out += partBlock(*member, indent + QStringLiteral("  "));
+                }
             out += indent + QStringLiteral("}\n");
         }
         if (scoped)
             out += QStringLiteral("  }\n");
     }
     for (const Channel &ch : c.channels) {
+        declare(WrittenElement::Kind::Channel, ch.id);
         switch (ch.kind) {
         case Channel::Kind::Topic:
             out += QStringLiteral("  queue \"%1\" as %2  ' %3\n")
@@ -152,7 +163,9 @@ QString CcdWriter::write(const Composite &c)
             break;
         }
     }
-    for (const Connection &k : c.connections) {
+    for (qsizetype i = 0; i < c.connections.size(); ++i) {
+        const Connection &k = c.connections.at(i);
+        declare(WrittenElement::Kind::Connection, QString::number(i));
         const QString port = QStringLiteral("%1_%2").arg(k.partId, k.portId);
         switch (k.kind) {
         case Connection::Kind::Subscribe:

@@ -14,7 +14,23 @@ namespace rosarch {
 class CcdWriter
 {
 public:
-    static QString write(const Composite &composite);
+    /// An element of the composite and the line declaring it in the written text.
+    struct WrittenElement
+    {
+        enum class Kind
+        {
+            Part,
+            Channel,
+            Boundary,
+            Connection
+        };
+        int line = 0; ///< 1-based
+        Kind kind = Kind::Part;
+        QString id; ///< part, channel or boundary port id; a connection's index
+    };
+
+    /// The CCD of `composite`; with `elements`, also where each element was written.
+    static QString write(const Composite &composite, QList<WrittenElement> *elements = nullptr);
     /// File stem per representative composite (instance id -> stem): the launch stem,
     /// prefixed with the package where two launch files share it.
     static QMap<QString, QString> fileStems(const Architecture &arch);

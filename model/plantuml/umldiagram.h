@@ -57,6 +57,9 @@ struct UmlElement
     QString kind;  ///< one of UmlKind
     QString value; ///< canonical text, e.g. "std_msgs/msg/String" or "publish talker -> chatter"
     int line = 0;  ///< 1-based line in the source file (0 when built by hand)
+    /// The recovered element it was written from (a DiagramBuilder key such as "part:p1"), so
+    /// a difference can be shown where it is drawn; "" for elements read from a reference.
+    QString key;
 
     bool sameAs(const UmlElement &o) const { return kind == o.kind && value == o.value; }
 };

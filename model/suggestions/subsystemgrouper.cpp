@@ -10,27 +10,6 @@ namespace rosarch {
 
 namespace {
 
-QString joinName(const QString &scope, const QString &name)
-{
-    QString s = scope.endsWith(QLatin1Char('/')) ? scope + name : scope + QLatin1Char('/') + name;
-    static const QRegularExpression slashes(QStringLiteral("/{2,}"));
-    s.replace(slashes, QStringLiteral("/"));
-    if (s.size() > 1 && s.endsWith(QLatin1Char('/')))
-        s.chop(1);
-    return s;
-}
-
-QString plainResolve(const QString &name, const NodeInstance &n)
-{
-    const QString ns = n.nameSpace.isEmpty() ? QStringLiteral("/") : n.nameSpace;
-    if (name.startsWith(QLatin1Char('/')))
-        return joinName(QStringLiteral("/"), name);
-    if (name.startsWith(QLatin1Char('~')))
-        return joinName(joinName(ns, n.nodeName),
-                        name.mid(name.startsWith(QLatin1String("~/")) ? 2 : 1));
-    return joinName(ns, name);
-}
-
 /// Lower-case words of an identifier: snake_case, kebab-case, CamelCase and paths split.
 QSet<QString> words(const QString &text)
 {
@@ -59,7 +38,13 @@ QSet<QString> instanceWords(const NodeInstance &n)
 
 } // namespace
 
-SubsystemGrouper::SubsystemGrouper(const Recovery &recovery) : m_recovery(recovery) {}
+SubsystemGrouper::SubsystemGrouper(const Recovery &recovery) : m_recovery(recovery)
+{
+    for (const Composite &c : recovery.architecture.composites)
+        for (const RosNodePart &p : c.parts)
+            if (p.kind == RosNodePart::Kind::Node && !m_parts.contains(p.instanceId))
+                m_parts.insert(p.instanceId, &p);
+}
 
 QStringList SubsystemGrouper::hubTopics()
 {
@@ -73,30 +58,15 @@ QStringList SubsystemGrouper::hubTopics()
             QStringLiteral("/robot_diagnostics")};
 }
 
-QString SubsystemGrouper::resolveName(const QString &name, const NodeInstance &instance)
-{
-    const QString resolved = plainResolve(name, instance);
-    for (const auto &[from, to] : instance.remaps)
-        if (from == name || plainResolve(from, instance) == resolved)
-            return plainResolve(to, instance);
-    return resolved;
-}
-
 QStringList SubsystemGrouper::endpoints(const NodeInstance &instance) const
 {
     QStringList out;
-    const AtomicNode *node = m_recovery.nodes.node(instance.classId);
-    if (!node)
+    const RosNodePart *part = m_parts.value(instance.id);
+    if (!part)
         return out;
-    for (const Port &p : node->ports) {
-        if (!p.isResolved())
+    for (const PartPort &p : part->ports) {
+        if (!p.resolved || !p.active)
             continue;
-        QString name = p.name;
-        // A parameter-named port takes the instance's launch value when there is one.
-        if (p.nameOrigin == NameOrigin::Parameter && !p.parameter.isEmpty())
-            for (const auto &[key, value] : instance.parameters)
-                if (key == p.parameter && !value.isEmpty())
-                    name = value;
         const char *role = "";
         switch (p.kind) {
         case PortKind::Publisher:
@@ -118,7 +88,7 @@ QStringList SubsystemGrouper::endpoints(const NodeInstance &instance) const
             role = "action-in";
             break;
         }
-        out << QString::fromLatin1(role) + QLatin1Char(' ') + resolveName(name, instance);
+        out << QString::fromLatin1(role) + QLatin1Char(' ') + p.name;
     }
     out.removeDuplicates();
     return out;

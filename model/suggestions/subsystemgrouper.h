@@ -2,6 +2,7 @@
 
 #include "recovery.h"
 
+#include <QHash>
 #include <QList>
 #include <QMap>
 #include <QString>
@@ -10,8 +11,8 @@
 namespace rosarch {
 
 /// Deterministic subsystem detection: the communication graph of the node instances a root
-/// launch file starts (producer-consumer edges over resolved topic, service and action names,
-/// hub topics left out), split by label propagation with sorted tie-breaking.
+/// launch file starts (producer-consumer edges over the topic, service and action names stage 3
+/// resolved, hub topics left out), split by label propagation with sorted tie-breaking.
 class SubsystemGrouper
 {
 public:
@@ -27,18 +28,16 @@ public:
 
     /// Topics that connect almost everything and say nothing about structure.
     static QStringList hubTopics();
-    /// The runtime name of `name` (as written) for `instance`: remaps applied to the name as
-    /// written, then relative and private names resolved against the instance's namespace.
-    static QString resolveName(const QString &name, const NodeInstance &instance);
-    /// The resolved names of an instance's ports, as "topic-out /x", "topic-in /x",
-    /// "service-out /x", "service-in /x", "action-out /x", "action-in /x"; unresolved ports
-    /// skipped.
+    /// The names stage 3 resolved for an instance's ports (namespaces, remaps, parameter
+    /// values), as "topic-out /x", "topic-in /x", "service-out /x", "service-in /x",
+    /// "action-out /x", "action-in /x"; unresolved and inactive ports skipped.
     QStringList endpoints(const NodeInstance &instance) const;
     /// The groups among `instanceIds` (inactive instances are left out).
     QList<Group> groups(const QStringList &instanceIds) const;
 
 private:
     const Recovery &m_recovery;
+    QHash<QString, const RosNodePart *> m_parts; ///< node instance id -> its part in stage 3
 };
 
 } // namespace rosarch

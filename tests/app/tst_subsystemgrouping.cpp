@@ -134,6 +134,9 @@ private Q_SLOTS:
         // Decisions are stored per workspace under the data location: keep them in m_home.
         qputenv("XDG_DATA_HOME", m_home.filePath(QStringLiteral("data")).toUtf8());
         qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral("config")).toUtf8());
+        // The application's names, so that the decisions file is the one `rosarch` reads.
+        QCoreApplication::setOrganizationName(QStringLiteral("rosarch"));
+        QCoreApplication::setApplicationName(QStringLiteral("rosarch"));
         m_arch = recoverWorkspace(test::dataDir(QStringLiteral("compose_system/ws"))).architecture;
         QVERIFY(m_arch.composite(QStringLiteral("lf1")));
         QVERIFY(m_arch.composite(QStringLiteral("lf3")));
@@ -304,7 +307,7 @@ private Q_SLOTS:
         QCOMPARE(doc->acceptedGroupings().size(), 1);
         const QString name = doc->acceptedGroupings().first().name;
         QVERIFY(!name.isEmpty());
-        QStringList members = doc->acceptedGroupings().first().memberIds;
+        QStringList members = doc->acceptedGroupings().first().memberInstanceIds;
         members.sort();
         QCOMPARE(membersOf(w.diagramPanel()->architecture(), name), members);
         QCOMPARE(grouped(doc->architecture()), QStringList()); // the model itself is unchanged
@@ -319,6 +322,35 @@ private Q_SLOTS:
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
         doc->undoStack()->redo();
         QCOMPARE(membersOf(w.diagramPanel()->architecture(), name), members);
+
+        // The headless command applies the same decisions through the same function: every
+        // artifact is byte-identical to the GUI's export.
+        exportedCcds(w, out);
+        QVERIFY(QFileInfo::exists(DecisionStore::path(exampleWorkspace())));
+        const QString headless = m_home.filePath(QStringLiteral("headless"));
+        const test::Run run = test::runRosarch(
+            {QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), headless});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QLatin1String("Applied 1 accepted decisions")),
+                 qPrintable(run.out));
+        QStringList files;
+        QDirIterator it(out, QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext())
+            files << QDir(out).relativeFilePath(it.next());
+        QVERIFY(files.contains(QStringLiteral("architecture.json")));
+        for (const QString &f : std::as_const(files))
+            QVERIFY2(test::readFile(QDir(out).filePath(f)) ==
+                         test::readFile(QDir(headless).filePath(f)),
+                     qPrintable(f));
+        QVERIFY(test::readFile(QDir(headless).filePath(QStringLiteral("architecture.json")))
+                    .contains(name.toUtf8()));
+        const test::Run raw =
+            test::runRosarch({QStringLiteral("recover"), exampleWorkspace(),
+                              QStringLiteral("--out"), headless, QStringLiteral("--no-decisions")});
+        QCOMPARE(raw.exitCode, 0);
+        for (const QString &f : std::as_const(files))
+            if (f.startsWith(QLatin1String("ccd/")))
+                QVERIFY(!test::readFile(QDir(headless).filePath(f)).contains("<<Subsystem>>"));
         QFile::remove(DecisionStore::path(exampleWorkspace()));
     }
 };

@@ -44,7 +44,7 @@ struct Snapshot
     QStringList descriptions;
     QStringList statuses;
     QStringList decisions;
-    QList<AcceptedGrouping> groupings;
+    QList<SubsystemGroup> groupings;
     QMap<QString, QString> names;
     bool operator==(const Snapshot &) const = default;
 };
@@ -246,10 +246,10 @@ private Q_SLOTS:
         QSignalSpy decisionsChanged(&doc, &Document::decisionsChanged);
         QVERIFY(doc.acceptSuggestion(g.id));
         QCOMPARE(decisionsChanged.size(), 1);
-        const QList<AcceptedGrouping> expected{{QStringLiteral("mission"),
-                                                {QStringLiteral("n2"), QStringLiteral("n4"),
-                                                 QStringLiteral("n6"), QStringLiteral("n7")},
-                                                g.targetId}};
+        const QList<SubsystemGroup> expected{{QStringLiteral("mission"),
+                                              {QStringLiteral("n2"), QStringLiteral("n4"),
+                                               QStringLiteral("n6"), QStringLiteral("n7")},
+                                              g.targetId}};
         QCOMPARE(doc.acceptedGroupings(), expected);
         QVERIFY(!g.targetId.isEmpty());
         QVERIFY(doc.launchDependencies().instance(g.targetId)->parentId.isEmpty()); // a root

@@ -137,6 +137,77 @@ private Q_SLOTS:
         QVERIFY(e.micro.f1 < 1.0);
         QVERIFY(e.micro.f1 > 0.5); // everything else still matches
     }
+
+    void recoveredElementsCarryTheKeyOfWhatIsDrawn()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
+        const QList<UmlDiagram> recovered = recoveredDiagrams(r.nodes, r.architecture);
+        int ccdElements = 0;
+        for (const UmlDiagram &d : recovered) {
+            if (d.level != UmlLevel::Ccd)
+                continue;
+            const Composite *c = nullptr;
+            for (const Composite *rep : r.architecture.representatives())
+                if (rep->stem == d.name)
+                    c = rep;
+            QVERIFY2(c, qPrintable(d.name));
+            for (const UmlElement &e : d.elements) {
+                ++ccdElements;
+                const QString kind = e.key.section(QLatin1Char(':'), 0, 0);
+                const QString id = e.key.section(QLatin1Char(':'), 1);
+                if (e.kind == QLatin1String("part") || e.kind == QLatin1String("part_type") ||
+                    e.kind == QLatin1String("namespace")) {
+                    QCOMPARE(kind, QStringLiteral("part"));
+                    QVERIFY(c->part(id));
+                    if (e.kind == QLatin1String("part"))
+                        QVERIFY2(e.value == c->part(id)->name ||
+                                     c->part(id)->kind == RosNodePart::Kind::Launch,
+                                 qPrintable(e.value + QLatin1Char(' ') + e.key));
+                } else if (e.kind == QLatin1String("boundary_port")) {
+                    QCOMPARE(kind, QStringLiteral("boundary"));
+                    QVERIFY(c->boundaryPort(id));
+                } else if (e.kind == QLatin1String("connection")) {
+                    QCOMPARE(kind, QStringLiteral("connection"));
+                    QVERIFY(id.toInt() >= 0 && id.toInt() < c->connections.size());
+                } else {
+                    QCOMPARE(kind, QStringLiteral("channel"));
+                    QVERIFY(c->channel(id));
+                    QVERIFY2(c->channel(id)->name.endsWith(e.value), qPrintable(e.value));
+                }
+            }
+        }
+        QVERIFY(ccdElements > 20);
+
+        // A reference without the detector: what the recovered model has in excess points at
+        // the detector's part and its connections, so the GUI can mark them where drawn.
+        const QString brokenPath =
+            test::dataDir(QStringLiteral("compose_system/broken/vision_missing_detector.puml"));
+        const LevelEvaluation e = Evaluator::evaluateLevel(
+            PlantUmlReader::read(QString::fromUtf8(test::readFile(brokenPath)), brokenPath),
+            recovered, UmlLevel::Ccd);
+        QCOMPARE(e.diagrams.size(), 1);
+        const Composite *vision = nullptr;
+        for (const Composite *rep : r.architecture.representatives())
+            if (rep->stem == QLatin1String("vision"))
+                vision = rep;
+        QVERIFY(vision);
+        QString detectorKey;
+        for (const RosNodePart &p : vision->parts)
+            if (p.name == QLatin1String("detector"))
+                detectorKey = QStringLiteral("part:") + p.id;
+        QStringList extraParts;
+        int extraConnections = 0;
+        for (const KindEvaluation &k : e.diagrams.first().kinds)
+            for (const UmlElement &fp : k.falsePositives) {
+                QVERIFY2(!fp.key.isEmpty(), qPrintable(fp.value));
+                if (fp.kind == QLatin1String("part"))
+                    extraParts << fp.key;
+                if (fp.kind == QLatin1String("connection"))
+                    ++extraConnections;
+            }
+        QCOMPARE(extraParts, QStringList{detectorKey});
+        QCOMPARE(extraConnections, 3);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestModelEvaluation)

@@ -241,20 +241,40 @@ private Q_SLOTS:
         QVERIFY(exampleGroups[0].rationale.contains(QStringLiteral("topic /robot1/scan_filtered")));
     }
 
-    void nameResolutionAppliesRemapsAndNamespaces()
+    void endpointsAreTheNamesStageThreeResolved()
     {
-        NodeInstance n;
-        n.nodeName = QStringLiteral("cam");
-        n.nameSpace = QStringLiteral("/r1");
-        n.remaps = {{QStringLiteral("scan"), QStringLiteral("lidar/scan")},
-                    {QStringLiteral("/diagnostics"), QStringLiteral("/robot_diagnostics")}};
-        QCOMPARE(SubsystemGrouper::resolveName(QStringLiteral("scan"), n),
-                 QStringLiteral("/r1/lidar/scan"));
-        QCOMPARE(SubsystemGrouper::resolveName(QStringLiteral("/diagnostics"), n),
-                 QStringLiteral("/robot_diagnostics"));
-        QCOMPARE(SubsystemGrouper::resolveName(QStringLiteral("~/mode"), n),
-                 QStringLiteral("/r1/cam/mode"));
-        QCOMPARE(SubsystemGrouper::resolveName(QStringLiteral("/abs"), n), QStringLiteral("/abs"));
+        // The container's remap (image_rect -> rectified) reaches the components it hosts; the
+        // grouper sees the names stage 3 resolved, not a second resolution of its own.
+        const Recovery recovery =
+            recoverWorkspace(QStringLiteral(ROSARCH_TEST_DATA "/compose_system/ws"));
+        const SubsystemGrouper grouper(recovery);
+        QStringList rectifier;
+        for (const NodeInstance &n : recovery.launch.nodes)
+            if (n.nodeName == QLatin1String("rectifier"))
+                rectifier = grouper.endpoints(n);
+        QVERIFY2(!rectifier.isEmpty(), "the rectifier instance has endpoints");
+        QVERIFY2(rectifier.filter(QStringLiteral("/rectified")).size() == 1,
+                 qPrintable(rectifier.join(QLatin1String(", "))));
+        QVERIFY2(rectifier.filter(QStringLiteral("image_rect")).isEmpty(),
+                 qPrintable(rectifier.join(QLatin1String(", "))));
+        for (const NodeInstance &n : recovery.launch.nodes) {
+            const Composite *c = recovery.architecture.composite(n.launchFileId);
+            QVERIFY(c);
+            QStringList expected;
+            for (const RosNodePart &p : c->parts)
+                if (p.instanceId == n.id)
+                    for (const PartPort &port : p.ports)
+                        if (port.resolved && port.active)
+                            expected << port.name;
+            QStringList names;
+            for (const QString &e : grouper.endpoints(n))
+                names << e.section(QLatin1Char(' '), 1);
+            expected.removeDuplicates();
+            names.removeDuplicates();
+            expected.sort();
+            names.sort();
+            QCOMPARE(names, expected);
+        }
     }
 
     void checkerDiscardsWhatEvidenceDoesNotSay_data()
