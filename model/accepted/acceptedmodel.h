@@ -20,7 +20,10 @@ struct AcceptedDecisions
     /// Accepted node descriptions of node classes that exist: node id → text.
     QMap<QString, QString> descriptions;
 
-    bool isEmpty() const { return groupings.isEmpty() && names.isEmpty() && descriptions.isEmpty(); }
+    bool isEmpty() const
+    {
+        return groupings.isEmpty() && names.isEmpty() && descriptions.isEmpty();
+    }
 };
 
 /// The model as a person accepted it: one pure function from a recovery and the decisions on

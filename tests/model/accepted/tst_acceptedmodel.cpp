@@ -132,7 +132,8 @@ private Q_SLOTS:
                 }
         QVERIFY(grouped >= 2);
         // the recovery itself is a value: unchanged
-        QVERIFY(m_recovery.nodes.node(node)->description != QStringLiteral("Accepted description."));
+        QVERIFY(m_recovery.nodes.node(node)->description !=
+                QStringLiteral("Accepted description."));
     }
 
     void anAcceptedPortNameResolvesAndWires()
@@ -144,10 +145,10 @@ private Q_SLOTS:
             if (i.kind == QLatin1String("port-name"))
                 port = &i;
         QVERIFY2(port, "the fixture has a port named by an expression");
-        const AcceptedDecisions a = AcceptedModel::select(
-            keyed({decision(Suggestion::Kind::NameResolution, port->id,
-                            QStringLiteral("/accepted_name"))}),
-            m_recovery);
+        const AcceptedDecisions a =
+            AcceptedModel::select(keyed({decision(Suggestion::Kind::NameResolution, port->id,
+                                                  QStringLiteral("/accepted_name"))}),
+                                  m_recovery);
         QCOMPARE(a.names.value(port->id), QStringLiteral("/accepted_name"));
         const Recovery r = AcceptedModel::apply(m_recovery, a);
         const QString nodeId = port->id.section(QLatin1Char('/'), 0, 0);
@@ -166,7 +167,8 @@ private Q_SLOTS:
         for (const Composite &c : r.architecture.composites)
             for (const RosNodePart &part : c.parts)
                 for (const PartPort &pp : part.ports)
-                    composed = composed || (pp.name == QLatin1String("/accepted_name") && pp.resolved);
+                    composed =
+                        composed || (pp.name == QLatin1String("/accepted_name") && pp.resolved);
         QVERIFY2(composed, "stage 3 composed the accepted name");
     }
 
@@ -174,8 +176,8 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("decisions.json"));
-        const QMap<QString, SuggestionDecision> decisions = keyed(
-            {decision(Suggestion::Kind::NodeDescription, QStringLiteral("arc_1"), QStringLiteral("x"))});
+        const QMap<QString, SuggestionDecision> decisions = keyed({decision(
+            Suggestion::Kind::NodeDescription, QStringLiteral("arc_1"), QStringLiteral("x"))});
         QString error;
         QVERIFY2(DecisionStore::save(file, dir.path(), decisions, &error), qPrintable(error));
         QCOMPARE(DecisionStore::load(file), decisions);
