@@ -1,6 +1,7 @@
 #pragma once
 
 // The C++ analyzer on the fixture workspaces, and ports as comparable text.
+#include "analysistext.h"
 #include "cppnodeanalyzer.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
@@ -36,12 +37,7 @@ inline QStringList classNames(const LanguageAnalysis &a)
 // @file:line"
 inline QString describe(const Port &p)
 {
-    return QStringLiteral(
-               "%1 %2 %3 cb=%4 origin=%5 expr=%6 param=%7 guard=%8 gp=%9 via=%10%11 @%12:%13")
-        .arg(portKindName(p.kind), p.name, p.type, p.callback, nameOriginName(p.nameOrigin),
-             p.nameExpression, p.parameter, p.guard, p.guardParameter)
-        .arg(p.via, p.inherited ? QStringLiteral(" inherited") : QString(), p.evidence.file)
-        .arg(p.evidence.line);
+    return AnalysisText::port(p);
 }
 
 inline QStringList describePorts(const AtomicNode &n)

@@ -1,145 +1,14 @@
+#include "analysistext.h"
 #include "pythonlaunchreader.h"
 #include "testsupport.h"
 
-#include <QDirIterator>
 #include <QElapsedTimer>
-#include <QMap>
 #include <QtTest>
 
 using namespace rosarch;
 using K = LaunchAction::Kind;
 
 namespace {
-
-/// Like Substitution::describe(), but every kind is visible: join[..] for PathJoin, cat[..]
-/// for Concat, ?{..} for Unknown, |default for configurations and environment variables.
-QString d(const Substitution &s)
-{
-    auto joined = [&](const QString &sep) {
-        QStringList out;
-        for (const Substitution &p : s.parts)
-            out << d(p);
-        return out.join(sep);
-    };
-    using SK = Substitution::Kind;
-    switch (s.kind) {
-    case SK::Text:
-        return s.text;
-    case SK::LaunchConfiguration:
-        return s.parts.isEmpty()
-                   ? QStringLiteral("$(var %1)").arg(s.text)
-                   : QStringLiteral("$(var %1|%2)").arg(s.text, joined(QStringLiteral(",")));
-    case SK::EnvironmentVariable:
-        return s.parts.isEmpty()
-                   ? QStringLiteral("$(env %1)").arg(s.text)
-                   : QStringLiteral("$(env %1|%2)").arg(s.text, joined(QStringLiteral(",")));
-    case SK::FindPackageShare:
-        return QStringLiteral("$(find-pkg-share %1)").arg(joined(QString()));
-    case SK::FindPackagePrefix:
-        return QStringLiteral("$(find-pkg-prefix %1)").arg(joined(QString()));
-    case SK::PathJoin:
-        return QStringLiteral("join[%1]").arg(joined(QStringLiteral(", ")));
-    case SK::Concat:
-        return QStringLiteral("cat[%1]").arg(joined(QStringLiteral(", ")));
-    case SK::Eval:
-        return QStringLiteral("$(eval %1)").arg(joined(QStringLiteral(" ~ ")));
-    case SK::ThisLaunchFileDir:
-        return QStringLiteral("$(dirname)");
-    case SK::ThisLaunchFile:
-        return QStringLiteral("$(filename)");
-    case SK::Unknown:
-        return QStringLiteral("?{%1}").arg(s.text);
-    }
-    return {};
-}
-
-QString kindName(K k)
-{
-    switch (k) {
-    case K::Node:
-        return QStringLiteral("Node");
-    case K::ComposableContainer:
-        return QStringLiteral("Container");
-    case K::ComposableNode:
-        return QStringLiteral("Composable");
-    case K::LoadComposableNodes:
-        return QStringLiteral("Load");
-    case K::Include:
-        return QStringLiteral("Include");
-    case K::Group:
-        return QStringLiteral("Group");
-    case K::PushNamespace:
-        return QStringLiteral("PushNs");
-    case K::SetRemap:
-        return QStringLiteral("SetRemap");
-    case K::DeclareArgument:
-        return QStringLiteral("Arg");
-    case K::SetLaunchConfiguration:
-        return QStringLiteral("Let");
-    case K::SetParameter:
-        return QStringLiteral("SetParam");
-    case K::Unresolved:
-        return QStringLiteral("Unresolved");
-    }
-    return {};
-}
-
-void dump(const LaunchAction &a, int depth, QStringList &out)
-{
-    QStringList f{kindName(a.kind)};
-    auto add = [&](const char *key, const Substitution &s) {
-        if (!s.isEmpty())
-            f << QStringLiteral("%1=%2").arg(QLatin1String(key), d(s));
-    };
-    add("pkg", a.package);
-    add("exe", a.executable);
-    add("plugin", a.plugin);
-    add("name", a.name);
-    add("ns", a.nameSpace);
-    if (a.lifecycle)
-        f << QStringLiteral("lifecycle");
-    if (a.kind == K::Group)
-        f << (a.scoped ? QStringLiteral("scoped") : QStringLiteral("unscoped"));
-    add("target", a.target);
-    add("path", a.path);
-    for (const auto &arg : a.arguments)
-        f << QStringLiteral("arg:%1=%2").arg(d(arg.first), d(arg.second));
-    for (const LaunchRemap &r : a.remaps)
-        f << QStringLiteral("remap:%1->%2").arg(d(r.from), d(r.to));
-    for (const LaunchParameter &p : a.parameters)
-        f << (p.isFile ? QStringLiteral("paramfile:%1").arg(d(p.value))
-                       : QStringLiteral("param:%1=%2").arg(d(p.name), d(p.value)));
-    if (a.hasValue)
-        f << QStringLiteral("value=%1").arg(d(a.value));
-    if (!a.description.isEmpty())
-        f << QStringLiteral("desc=%1").arg(a.description);
-    if (!a.expression.isEmpty())
-        f << QStringLiteral("expr=%1").arg(a.expression);
-    if (a.condition.isSet())
-        f << QStringLiteral("%1(%2)").arg(a.condition.unless ? QStringLiteral("unless")
-                                                             : QStringLiteral("if"),
-                                          d(a.condition.expression));
-    f << QStringLiteral("@%1").arg(a.evidence.line);
-    // Every action, remap and parameter carries evidence: the call expression.
-    bool evidenceOk = a.evidence.isValid();
-    for (const LaunchRemap &r : a.remaps)
-        evidenceOk = evidenceOk && r.evidence == a.evidence;
-    for (const LaunchParameter &p : a.parameters)
-        evidenceOk = evidenceOk && p.evidence == a.evidence;
-    if (!evidenceOk)
-        f << QStringLiteral("BAD-EVIDENCE");
-    out << QString(depth * 2, QLatin1Char(' ')) + f.join(QLatin1Char(' '));
-    for (const LaunchAction &c : a.children)
-        dump(c, depth + 1, out);
-}
-
-QStringList dump(const QList<LaunchAction> &actions)
-{
-    QStringList out;
-    for (const LaunchAction &a : actions)
-        dump(a, 0, out);
-    return out;
-}
 
 LaunchFileDescription readSource(const char *source)
 {
@@ -149,7 +18,7 @@ LaunchFileDescription readSource(const char *source)
 
 QStringList read(const char *source)
 {
-    return dump(readSource(source).actions);
+    return AnalysisText::actions(readSource(source).actions);
 }
 
 /// A fixture of tests/data/pylaunch_reader, read as the file "pylaunch_reader/<name>".
@@ -161,18 +30,7 @@ LaunchFileDescription readFixture(const char *name)
 
 QStringList readFixtureDump(const char *name)
 {
-    return dump(readFixture(name).actions);
-}
-
-void count(const LaunchAction &a, QMap<QString, int> &kinds, QMap<QString, int> &unresolved)
-{
-    ++kinds[kindName(a.kind)];
-    if (a.kind == K::Unresolved)
-        ++unresolved[a.expression.section(QLatin1Char('('), 0, 0).section(QLatin1Char('.'), -1)];
-    if (a.kind == K::Group && a.condition.expression.kind == Substitution::Kind::Unknown)
-        ++unresolved[QStringLiteral("<undecided if/for>")];
-    for (const LaunchAction &c : a.children)
-        count(c, kinds, unresolved);
+    return AnalysisText::actions(readFixture(name).actions);
 }
 
 } // namespace
@@ -198,7 +56,6 @@ private Q_SLOTS:
     void syntaxErrorsStillRead();
     void boundedOnPathologicalInput();
     void notALaunchDescription();
-    void corpus();
 };
 
 void TestPythonLaunchReader::detectsLaunchFilesByContent()
@@ -228,7 +85,7 @@ void TestPythonLaunchReader::nodesParametersRemappings()
     QCOMPARE(desc.file, QStringLiteral("pylaunch_reader/nodes_launch.py"));
     QCOMPARE(desc.format, LaunchFileDescription::Format::Python);
     QVERIFY(desc.diagnostics.isEmpty());
-    QCOMPARE(dump(desc.actions),
+    QCOMPARE(AnalysisText::actions(desc.actions),
              (QStringList{
                  QStringLiteral("Arg name=use_sim_time value=false desc=Use sim time @10"),
                  QStringLiteral("Node pkg=demo_nodes_cpp exe=talker name=talker ns=$(var ns|robot) "
@@ -295,7 +152,7 @@ void TestPythonLaunchReader::includes()
 {
     const LaunchFileDescription desc = readFixture("includes_launch.py");
     QCOMPARE(
-        dump(desc.actions),
+        AnalysisText::actions(desc.actions),
         (QStringList{
             QStringLiteral("Include path=join[$(find-pkg-share nav2_bringup), launch, "
                            "rviz_launch.py] arg:namespace=robot1 "
@@ -333,7 +190,7 @@ void TestPythonLaunchReader::substitutions()
     for (const LaunchAction &a : desc.actions) {
         QCOMPARE(a.kind, K::DeclareArgument);
         QCOMPARE(a.evidence.line, 12); // the call inside the helper
-        got << a.name.text + QLatin1Char('=') + d(a.value);
+        got << a.name.text + QLatin1Char('=') + AnalysisText::substitution(a.value);
     }
     QCOMPARE(
         got,
@@ -356,7 +213,7 @@ void TestPythonLaunchReader::conditions()
 {
     const LaunchFileDescription desc = readFixture("conditions_launch.py");
     QCOMPARE(
-        dump(desc.actions),
+        AnalysisText::actions(desc.actions),
         (QStringList{
             QStringLiteral("Node pkg=p exe=a if($(var use_a)) @9"),
             QStringLiteral("Node pkg=p exe=b unless($(eval ' ~ $(var mode) ~ ' == 'sim')) @10"),
@@ -374,7 +231,7 @@ void TestPythonLaunchReader::conditions()
 void TestPythonLaunchReader::decidedAndUndecidedIfs()
 {
     const LaunchFileDescription desc = readFixture("ifs_launch.py");
-    QCOMPARE(dump(desc.actions),
+    QCOMPARE(AnalysisText::actions(desc.actions),
              (QStringList{
                  QStringLiteral("Node pkg=sim exe=decided @12"),
                  QStringLiteral("Group unscoped if(?{os.environ.get('ROBOT') == 'real'}) @15"),
@@ -447,8 +304,9 @@ void TestPythonLaunchReader::syntaxErrorsStillRead()
     QCOMPARE(desc.diagnostics.first().code, QStringLiteral("syntax-error"));
     QCOMPARE(desc.diagnostics.first().severity, Diagnostic::Severity::Error);
     QCOMPARE(desc.diagnostics.first().evidence.line, 7);
-    QCOMPARE(dump(desc.actions), (QStringList{QStringLiteral("Node pkg=p exe=talker @6"),
-                                              QStringLiteral("Node pkg=p exe=listener @8")}));
+    QCOMPARE(AnalysisText::actions(desc.actions),
+             (QStringList{QStringLiteral("Node pkg=p exe=talker @6"),
+                          QStringLiteral("Node pkg=p exe=listener @8")}));
 }
 
 void TestPythonLaunchReader::boundedOnPathologicalInput()
@@ -503,48 +361,6 @@ void TestPythonLaunchReader::notALaunchDescription()
                   "    node = launch_ros.actions.Node(package='p', executable='e')\n"
                   "    return launch.LaunchDescription([node]), {'node': node}\n"),
              QStringList{QStringLiteral("Node pkg=p exe=e @5")});
-}
-
-void TestPythonLaunchReader::corpus()
-{
-    // A survey over real repositories, not an assertion: ROSARCH_LAUNCH_CORPUS=/tmp/corpus
-    const QString root = qEnvironmentVariable("ROSARCH_LAUNCH_CORPUS");
-    if (root.isEmpty())
-        QSKIP("set ROSARCH_LAUNCH_CORPUS to a directory of checked-out repositories");
-    QStringList files;
-    QDirIterator it(root, {QStringLiteral("*.py")}, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext())
-        files << it.next();
-    files.sort();
-    QMap<QString, int> kinds, unresolved;
-    int launchFiles = 0, withDiagnostics = 0;
-    QElapsedTimer timer;
-    timer.start();
-    for (const QString &path : files) {
-        const QByteArray content = test::readFile(path);
-        if (!PythonLaunchReader::isLaunchFile(content))
-            continue;
-        ++launchFiles;
-        const LaunchFileDescription desc =
-            PythonLaunchReader::read(content, QDir(root).relativeFilePath(path));
-        if (!desc.diagnostics.isEmpty())
-            ++withDiagnostics;
-        for (const Diagnostic &diag : desc.diagnostics)
-            qInfo().noquote() << "diagnostic" << diag.code << diag.message;
-        for (const LaunchAction &a : desc.actions)
-            count(a, kinds, unresolved);
-        if (qEnvironmentVariableIsSet("ROSARCH_LAUNCH_CORPUS_DUMP")) {
-            qInfo().noquote() << "==" << desc.file;
-            for (const QString &line : dump(desc.actions))
-                qInfo().noquote() << "  " + line;
-        }
-    }
-    qInfo().noquote() << "files" << launchFiles << "with diagnostics" << withDiagnostics << "ms"
-                      << timer.elapsed();
-    for (auto k = kinds.constBegin(); k != kinds.constEnd(); ++k)
-        qInfo().noquote() << "kind" << k.key() << k.value();
-    for (auto u = unresolved.constBegin(); u != unresolved.constEnd(); ++u)
-        qInfo().noquote() << "unresolved" << u.key() << u.value();
 }
 
 QTEST_GUILESS_MAIN(TestPythonLaunchReader)

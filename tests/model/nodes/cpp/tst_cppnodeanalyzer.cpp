@@ -1,12 +1,12 @@
 // The C++ analyzer on small fixture workspaces (tests/data/cpp_*/ws), field by field.
-// Set ROSARCH_CPP_CORPUS=<folder> to print what it finds in a real workspace, with timing.
+// tools/survey (rosarch-survey nodes <workspace>) prints what it finds in a real workspace.
+#include "analysistext.h"
 #include "cppanalysis.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
 
-#include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -16,31 +16,6 @@ using namespace rosarch;
 using namespace rosarch::test::cpp;
 
 namespace {
-
-QString describeAll(const LanguageAnalysis &a)
-{
-    QString s;
-    for (const AtomicNode &n : a.nodes) {
-        s += QStringLiteral("%1 [%2] %3 name='%4' bases=(%5)%6%7 @%8:%9-%10 hdr=%11 src=%12\n")
-                 .arg(n.className, n.packageName, n.qualifiedName, n.nodeName,
-                      n.baseClasses.join(QLatin1Char(',')),
-                      n.lifecycle ? QStringLiteral(" lifecycle") : QString(),
-                      n.procedural ? QStringLiteral(" procedural") : QString(), n.evidence.file)
-                 .arg(n.evidence.line)
-                 .arg(n.evidence.endLine)
-                 .arg(n.headerFiles.join(QLatin1Char(',')), n.sourceFiles.join(QLatin1Char(',')));
-        for (const Port &p : n.ports)
-            s += QStringLiteral("    ") + describe(p) + QLatin1Char('\n');
-    }
-    for (const EntryPoint &e : a.entryPoints)
-        s += QStringLiteral("entry %1:%2 -> %3\n")
-                 .arg(e.file, e.function, e.instantiatedClasses.join(QLatin1Char(' ')));
-    for (const ComponentRegistration &r : a.registrations)
-        s += QStringLiteral("register %1 @%2:%3\n").arg(r.pluginClass, r.file).arg(r.evidence.line);
-    for (const Diagnostic &d : a.diagnostics)
-        s += QStringLiteral("diag %1 %2\n").arg(d.code, d.message);
-    return s;
-}
 
 } // namespace
 
@@ -54,7 +29,7 @@ private Q_SLOTS:
         QCOMPARE(classNames(a), (QStringList{QStringLiteral("demo_cpp/Listener"),
                                              QStringLiteral("demo_cpp/Talker"),
                                              QStringLiteral("demo_cpp/old_school")}));
-        QVERIFY2(a.diagnostics.isEmpty(), qPrintable(describeAll(a)));
+        QVERIFY2(a.diagnostics.isEmpty(), qPrintable(AnalysisText::analysis(a)));
 
         // Declared in a header, defined out of line, export macro before the constructor.
         const AtomicNode *talker = findNode(a, QStringLiteral("Talker"));
@@ -309,7 +284,7 @@ private Q_SLOTS:
         ws.files.append({QStringLiteral("noisy.cpp"), QStringLiteral("noisy_pkg"),
                          SourceFile::Language::Cpp, f.size()});
         const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
-        QVERIFY2(a.diagnostics.isEmpty(), qPrintable(describeAll(a)));
+        QVERIFY2(a.diagnostics.isEmpty(), qPrintable(AnalysisText::analysis(a)));
         QCOMPARE(a.nodes.size(), 1);
         QCOMPARE(a.nodes[0].nodeName, QStringLiteral("noisy"));
         QCOMPARE(a.nodes[0].packageName, QStringLiteral("noisy_pkg"));
@@ -412,7 +387,7 @@ private Q_SLOTS:
         QCOMPARE(reports.load(), cppFiles);
         QCOMPARE(lastTotal.load(), cppFiles);
         const LanguageAnalysis second = CppNodeAnalyzer(ws).analyze();
-        QCOMPARE(describeAll(first), describeAll(second));
+        QCOMPARE(AnalysisText::analysis(first), AnalysisText::analysis(second));
         QVERIFY(first.nodes == second.nodes);
 
         StageControl cancel;
@@ -433,29 +408,6 @@ private Q_SLOTS:
         QVERIFY(src.startsWith("#define FOO_PUBLIC")); // preprocessor lines stay
         QVERIFY(src.contains(
             "class            Foo {            void f(const char *s = \"BAR_PUBLIC\"); };"));
-    }
-
-    void corpus()
-    {
-        const QString root = qEnvironmentVariable("ROSARCH_CPP_CORPUS");
-        if (root.isEmpty())
-            QSKIP("set ROSARCH_CPP_CORPUS to a workspace to print what the analyzer finds");
-        const Workspace ws = WorkspaceScanner::scan(root);
-        QElapsedTimer timer;
-        timer.start();
-        const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
-        const qint64 ms = timer.elapsed();
-        int ports = 0;
-        int files = 0;
-        for (const AtomicNode &n : a.nodes)
-            ports += int(n.ports.size());
-        for (const SourceFile &f : ws.files)
-            files += f.language == SourceFile::Language::Cpp ? 1 : 0;
-        fprintf(
-            stdout,
-            "%s%d C++ files, %d nodes, %d ports, %d entry points, %d registrations in %lld ms\n",
-            qPrintable(describeAll(a)), files, int(a.nodes.size()), ports,
-            int(a.entryPoints.size()), int(a.registrations.size()), ms);
     }
 };
 

@@ -3,7 +3,6 @@
 #include "testsupport.h"
 #include "workspacescanner.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 
 using namespace rosarch;
@@ -70,19 +69,6 @@ QStringList qualifiedNames(const LanguageAnalysis &a)
     for (const AtomicNode &n : a.nodes)
         out << n.qualifiedName;
     return out;
-}
-
-QString describe(const AtomicNode &n)
-{
-    QString s =
-        QStringLiteral("%1 [%2] node_name='%3' pkg=%4 bases=(%5)%6%7 @%8\n")
-            .arg(n.className, n.qualifiedName, n.nodeName, n.packageName,
-                 n.baseClasses.join(QLatin1Char(',')),
-                 n.lifecycle ? QStringLiteral(" lifecycle") : QString(),
-                 n.procedural ? QStringLiteral(" procedural") : QString(), range(n.evidence));
-    for (const Port &p : n.ports)
-        s += QStringLiteral("    ") + portLine(p) + QLatin1Char('\n');
-    return s;
 }
 
 } // namespace
@@ -605,48 +591,6 @@ private Q_SLOTS:
             QCOMPARE(first.nodes, second.nodes);
             QCOMPARE(first.entryPoints, second.entryPoints);
         }
-    }
-
-    void dump_data()
-    {
-        QTest::addColumn<QString>("root");
-        const QString env = qEnvironmentVariable("ROSARCH_PY_CORPUS");
-        for (const QString &root : env.split(QLatin1Char(':'), Qt::SkipEmptyParts))
-            QTest::newRow(qPrintable(root)) << root;
-        if (env.isEmpty())
-            QTest::newRow("none") << QString();
-    }
-
-    /// Not a check: prints what the analyzer finds in the workspaces named by
-    /// ROSARCH_PY_CORPUS (':'-separated), to compare with a reading of real code.
-    void dump()
-    {
-        QFETCH(QString, root);
-        if (root.isEmpty())
-            QSKIP(
-                "set ROSARCH_PY_CORPUS to workspaces (':'-separated) to print what is found there");
-        const Workspace ws = WorkspaceScanner::scan(root);
-        QElapsedTimer timer;
-        timer.start();
-        const LanguageAnalysis a = PythonNodeAnalyzer(ws).analyze();
-        const qint64 ms = timer.elapsed();
-        QString out;
-        int ports = 0;
-        for (const AtomicNode &n : a.nodes) {
-            out += describe(n);
-            ports += int(n.ports.size());
-        }
-        for (const EntryPoint &e : a.entryPoints)
-            out += QStringLiteral("entry %1:%2 -> %3\n")
-                       .arg(e.file, e.function, e.instantiatedClasses.join(QLatin1Char(' ')));
-        for (const Diagnostic &d : a.diagnostics)
-            out += QStringLiteral("diag %1 %2\n").arg(d.code, d.message);
-        out += QStringLiteral("%1 nodes, %2 ports, %3 entry points in %4 ms\n")
-                   .arg(a.nodes.size())
-                   .arg(ports)
-                   .arg(a.entryPoints.size())
-                   .arg(ms);
-        fprintf(stdout, "%s", qPrintable(out));
     }
 };
 
