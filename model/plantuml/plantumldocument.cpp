@@ -87,7 +87,7 @@ void PlantUmlDocument::warn(int line, const QString &text) const
 
 void PlantUmlDocument::add(const QString &kind, const QString &value, int line) const
 {
-    m_diagram->elements << UmlElement{kind, value, line};
+    m_diagram->elements << UmlElement{kind, value, line, {}};
 }
 
 } // namespace rosarch

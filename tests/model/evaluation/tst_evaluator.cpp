@@ -29,7 +29,7 @@ QStringList values(const QList<UmlElement> &elements)
 
 UmlElement element(const QString &kind, const QString &value)
 {
-    return UmlElement{kind, value, 0};
+    return UmlElement{kind, value, 0, {}};
 }
 
 UmlDiagram diagram(UmlLevel level, const QString &name, const QString &file,
