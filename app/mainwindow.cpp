@@ -344,7 +344,7 @@ void MainWindow::updateRecentMenu()
         return;
     }
     for (int i = 0; i < recent.size(); ++i) {
-        const QString path = recent[i];
+        const QString &path = recent[i];
         const QString label = tr("&%1 %2 — %3")
                                   .arg(i + 1 < 10 ? QString::number(i + 1) : QStringLiteral("1&0"))
                                   .arg(QFileInfo(path).fileName(), QDir::toNativeSeparators(path));

@@ -327,8 +327,7 @@ void SourceView::applyPalette()
     const QColor indicator = paper.lightnessF() < 0.5 ? highlight.lighter(130) : highlight;
     m_editor->SendScintilla(QsciScintilla::SCI_INDICSETFORE, kEvidenceIndicator, indicator);
 
-    QPalette headerPalette = pal;
-    m_pathLabel->setPalette(headerPalette);
+    m_pathLabel->setPalette(pal);
     m_lineLabel->setForegroundRole(QPalette::PlaceholderText);
 }
 

@@ -99,7 +99,7 @@ int recover(const QStringList &arguments)
             << usageText();
         return CommandLine::UsageError;
     }
-    const QString workspace = positional.at(1);
+    const QString &workspace = positional.at(1);
     if (!QFileInfo(workspace).isDir()) {
         err << QCoreApplication::translate("rosarch::CommandLine", "Not a folder: %1\n")
                    .arg(workspace);

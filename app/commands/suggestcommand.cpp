@@ -67,7 +67,7 @@ int runSuggest(const QStringList &arguments)
                                            "suggest needs a workspace folder and --out <dir>.\n");
         return CommandLine::UsageError;
     }
-    const QString workspace = positional.at(1);
+    const QString &workspace = positional.at(1);
     if (!QFileInfo(workspace).isDir()) {
         err << QCoreApplication::translate("rosarch::SuggestCommand", "Not a folder: %1\n")
                    .arg(workspace);

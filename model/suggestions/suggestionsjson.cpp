@@ -149,7 +149,7 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
         out.suggestions.append(s);
     }
     if (root.contains("discarded")) {
-        const Json d = root["discarded"];
+        const Json &d = root["discarded"];
         if (d.contains("reasons") && d["reasons"].is_object())
             for (auto it = d["reasons"].begin(); it != d["reasons"].end(); ++it)
                 if (it.value().is_number_integer())

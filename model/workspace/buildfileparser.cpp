@@ -196,7 +196,7 @@ QList<Executable> BuildFileParser::readSetupCfg(const QByteArray &content, const
     QString section;
     bool inScripts = false;
     for (int i = 0; i < lines.size(); ++i) {
-        const QString raw = lines[i];
+        const QString &raw = lines[i];
         const QString line = raw.trimmed();
         if (line.startsWith(QLatin1Char('[')) && line.endsWith(QLatin1Char(']'))) {
             section = line.mid(1, line.size() - 2).trimmed();

@@ -257,7 +257,7 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
             for (const QString &a : args.mid(1))
                 if (isSourceFile(a))
                     sources.append(joinPath(dir, a));
-            const QString target = args.first();
+            const QString &target = args.first();
             if (args.size() > 1 &&
                 (args[1] == QLatin1String("ALIAS") || args[1] == QLatin1String("IMPORTED")))
                 continue;

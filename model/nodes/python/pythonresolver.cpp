@@ -174,7 +174,7 @@ QString PythonResolver::interfaceTypeAt(TSNode expr, int depth) const
         return canonical;
     if (depth < kMaxDepth && ts::is(expr, "identifier")) {
         // `msg_type = String` earlier in the function
-        const QString name = written;
+        const QString &name = written;
         for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f);
              f = m_scopes.enclosingFunction(f)) {
             const auto &index = locals(f);
