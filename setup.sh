@@ -3,8 +3,9 @@
 # builds, and then either opens the GUI on the bundled example workspace or runs the tests.
 #
 #   ./setup.sh gui     build and open the GUI on resources/example_ws
-#   ./setup.sh test    format check, warnings-as-errors build and the whole test suite, then the
-#                      suite again under AddressSanitizer + UBSan in build-asan (what CI runs)
+#   ./setup.sh test    format check, warnings-as-errors build, the whole test suite and
+#                      clang-tidy, then the suite again under AddressSanitizer + UBSan in
+#                      build-asan (what CI runs)
 #   ./setup.sh build   only build
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -15,7 +16,7 @@ packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
   nlohmann-json3-dev libcurl4-openssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth fonts-dejavu-core
-  ccache clang-format)
+  ccache clang-format clang-tidy)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -49,12 +50,14 @@ case "$mode" in
     fi
     exec "$build_dir/bin/rosarch" resources/example_ws ;;
   test)
-    # What CI runs: the format check, a warnings-as-errors build and the whole suite, then the
-    # same suite built with AddressSanitizer and UBSan (ROSARCH_SKIP_SANITIZERS=1 skips that).
+    # What CI runs: the format check, a warnings-as-errors build, the whole suite and the
+    # clang-tidy checks, then the same suite built with AddressSanitizer and UBSan
+    # (ROSARCH_SKIP_SANITIZERS=1 skips that).
     export QT_QPA_PLATFORM=offscreen
     scripts/check-format.sh
     configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROSARCH_WERROR=ON
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+    scripts/check-tidy.sh "$build_dir"
     if [ "${ROSARCH_SKIP_SANITIZERS:-0}" != 1 ]; then
       asan_dir=${ROSARCH_ASAN_BUILD_DIR:-build-asan}
       configure_and_build "$asan_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
