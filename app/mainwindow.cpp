@@ -6,6 +6,7 @@
 #include "atomicnodepanel.h"
 #include "diagnosticmodel.h"
 #include "diagramcontroller.h"
+#include "diagramlayouter.h"
 #include "diagrampanel.h"
 #include "document.h"
 #include "icons.h"
@@ -95,7 +96,8 @@ void MainWindow::createPanels()
     m_nodePanel->setModel(m_nodeModel);
     m_launchPanel = new LaunchTreePanel(this);
     m_launchPanel->setModel(m_launchModel);
-    m_diagramPanel = new DiagramPanel(this);
+    m_diagramLayouter = new DiagramLayouter(this);
+    m_diagramPanel = new DiagramPanel(m_diagramLayouter, this);
     m_sourceView = new SourceView(this);
     m_logView = new LogView(this);
     m_logView->setModel(m_diagnosticModel);

@@ -16,6 +16,7 @@ namespace rosarch {
 class AtomicNodeModel;
 class AtomicNodePanel;
 class DiagramController;
+class DiagramLayouter;
 class DiagramPanel;
 class DiagnosticModel;
 class Document;
@@ -110,6 +111,7 @@ private:
     AtomicNodePanel *m_nodePanel = nullptr;
     LaunchTreePanel *m_launchPanel = nullptr;
     SourceView *m_sourceView = nullptr;
+    DiagramLayouter *m_diagramLayouter = nullptr; ///< the panel's layouts, off the UI thread
     DiagramPanel *m_diagramPanel = nullptr;
     DiagramController *m_diagrams = nullptr;
     SuggestionModel *m_suggestionModel = nullptr;

@@ -1,10 +1,6 @@
 #include "stagerunner.h"
 #include "composearchitecture.h"
 
-#include <QMutex>
-#include <QPromise>
-#include <QtConcurrent>
-
 #include <exception>
 
 namespace rosarch {
@@ -25,17 +21,6 @@ Diagnostic internalError(int stage, const std::exception &e)
 
 } // namespace
 
-/// The latest progress report of one run. QFuture progress values must grow, but a stage
-/// may restart its count per phase, so the future only carries a tick and this the numbers.
-struct StageRunner::Progress
-{
-    QMutex mutex;
-    int done = 0;
-    int total = 0;
-    QString what;
-    int tick = 0;
-};
-
 StageRunner::StageRunner(QObject *parent)
     : QObject(parent),
       m_stage([](const QString &root, const LaunchOptions &options, const StageControl &control) {
@@ -46,16 +31,12 @@ StageRunner::StageRunner(QObject *parent)
           return analyzeLaunchFiles(root, nodes, options, control);
       })
 {
-}
-
-StageRunner::~StageRunner()
-{
-    for (Watcher *w : std::as_const(m_watchers)) {
-        w->disconnect(this);
-        QFuture<Recovery> future = w->future();
-        future.cancel();
-        future.waitForFinished();
-    }
+    connect(&m_jobs, &JobRunner::progressed, this,
+            [this](qint64 done, qint64 total, const QString &what) {
+                Q_EMIT stageProgressed(int(done), int(total), what);
+            });
+    // The stage functions turn exceptions into diagnostics; anything else ends the run.
+    connect(&m_jobs, &JobRunner::failed, this, [this] { Q_EMIT stageCanceled(m_currentJob); });
 }
 
 void StageRunner::setStageFunction(RecoveryFunction stage)
@@ -103,89 +84,29 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
     });
 }
 
-void StageRunner::start(const QString &root, Job job, Work work)
+void StageRunner::start(const QString &root, Job job,
+                        std::function<Recovery(const StageControl &)> work)
 {
-    if (m_current)
-        m_current->future().cancel();
-    const int generation = ++m_generation;
-    auto progress = std::make_shared<Progress>();
-    auto *watcher = new Watcher(this);
-    m_current = watcher;
     m_currentJob = job;
-    m_watchers.append(watcher);
-    connect(watcher, &Watcher::finished, this,
-            [this, watcher, generation, job] { onFinished(watcher, generation, job); });
-    connect(watcher, &Watcher::progressValueChanged, this,
-            [this, progress, generation] { onProgress(progress, generation); });
-
-    watcher->setFuture(QtConcurrent::run([work, progress](QPromise<Recovery> &promise) {
-        StageControl control;
-        control.canceled = [&promise] { return promise.isCanceled(); };
-        control.progressed = [&promise, progress](int done, int total, const QString &what) {
-            int tick = 0;
-            {
-                QMutexLocker lock(&progress->mutex);
-                progress->done = done;
-                progress->total = total;
-                progress->what = what;
-                tick = ++progress->tick;
-            }
-            promise.setProgressValueAndText(tick, what);
-        };
-        Recovery result = work(control);
-        if (!promise.isCanceled())
-            promise.addResult(std::move(result));
-    }));
+    m_jobs.start<Recovery>([work = std::move(work)](
+                               const JobControl &control) { return work(control.stageControl()); },
+                           [this, job](Recovery result, bool canceled) {
+                               canceled = canceled ||
+                                          (job == Job::Recovery ? result.nodes.canceled : false) ||
+                                          result.launch.canceled;
+                               if (canceled)
+                                   Q_EMIT stageCanceled(job);
+                               else if (job == Job::Recovery)
+                                   Q_EMIT stageFinished(result);
+                               else
+                                   Q_EMIT launchStageFinished(result.launch, result.architecture);
+                           });
     Q_EMIT stageStarted(root, job);
 }
 
 void StageRunner::cancel()
 {
-    if (m_current)
-        m_current->future().cancel();
-}
-
-void StageRunner::onProgress(const std::shared_ptr<Progress> &progress, int generation)
-{
-    if (generation != m_generation)
-        return;
-    int done = 0;
-    int total = 0;
-    QString what;
-    {
-        QMutexLocker lock(&progress->mutex);
-        if (progress->tick == 0)
-            return; // the watcher replays the initial state before the stage reports anything
-        done = progress->done;
-        total = progress->total;
-        what = progress->what;
-    }
-    Q_EMIT stageProgressed(done, total, what);
-}
-
-void StageRunner::onFinished(Watcher *watcher, int generation, Job job)
-{
-    m_watchers.removeOne(watcher);
-    watcher->deleteLater();
-    if (generation != m_generation)
-        return; // superseded by a later run
-    m_current = nullptr;
-    const QFuture<Recovery> future = watcher->future();
-    if (future.isCanceled() || future.resultCount() == 0) {
-        Q_EMIT stageCanceled(job);
-        return;
-    }
-    const Recovery result = future.result();
-    const bool canceled = job == Job::Recovery ? result.nodes.canceled || result.launch.canceled
-                                               : result.launch.canceled;
-    if (canceled) {
-        Q_EMIT stageCanceled(job);
-        return;
-    }
-    if (job == Job::Recovery)
-        Q_EMIT stageFinished(result);
-    else
-        Q_EMIT launchStageFinished(result.launch, result.architecture);
+    m_jobs.cancel();
 }
 
 } // namespace rosarch

@@ -1,12 +1,12 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "jobrunner.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
 #include "recovery.h"
 #include "stagecontrol.h"
 
-#include <QFutureWatcher>
 #include <QObject>
 
 #include <functional>
@@ -14,10 +14,10 @@
 
 namespace rosarch {
 
-/// Runs the stages off the UI thread (QtConcurrent + QPromise) and reports back on the UI
-/// thread: stages 1 to 3 together, or stages 2 and 3 against a stage 1 result. Starting a
-/// new run cancels the previous one; its late result is dropped by comparing generation
-/// numbers, so only the latest run ever reports.
+/// Runs the stages off the UI thread on a JobRunner and reports back on the UI thread: stages 1
+/// to 3 together, or stages 2 and 3 against a stage 1 result. Starting a new run cancels the
+/// previous one; its late result is dropped by the runner's generation number, so only the
+/// latest run ever reports.
 class StageRunner : public QObject
 {
     Q_OBJECT
@@ -36,8 +36,6 @@ public:
         const QString &root, const AtomicNodeList &, const LaunchOptions &, const StageControl &)>;
 
     explicit StageRunner(QObject *parent = nullptr);
-    /// Cancels what still runs and waits for it; no worker outlives the runner.
-    ~StageRunner() override;
 
     /// Replaces stages 1+2 (default: recoverWorkspace); tests use slow or counting stages.
     void setStageFunction(RecoveryFunction stage);
@@ -50,11 +48,11 @@ public:
     void runLaunch(const QString &root, const AtomicNodeList &nodes, const LaunchOptions &options);
     /// Asks the current run to stop; stageCanceled follows once it has.
     void cancel();
-    bool isRunning() const { return m_current != nullptr; }
+    bool isRunning() const { return m_jobs.isRunning(); }
     /// The job of the run in progress (meaningless when none is).
     Job currentJob() const { return m_currentJob; }
     /// Incremented by every run; results of older generations are dropped.
-    int generation() const { return m_generation; }
+    int generation() const { return m_jobs.generation(); }
 
 Q_SIGNALS:
     void stageStarted(const QString &root, rosarch::StageRunner::Job job);
@@ -67,20 +65,12 @@ Q_SIGNALS:
     void stageCanceled(rosarch::StageRunner::Job job);
 
 private:
-    struct Progress;
-    using Watcher = QFutureWatcher<Recovery>;
-    using Work = std::function<Recovery(const StageControl &)>;
-
-    void start(const QString &root, Job job, Work work);
-    void onFinished(Watcher *watcher, int generation, Job job);
-    void onProgress(const std::shared_ptr<Progress> &progress, int generation);
+    void start(const QString &root, Job job, std::function<Recovery(const StageControl &)> work);
 
     RecoveryFunction m_stage;
     LaunchFunction m_launchStage;
-    Watcher *m_current = nullptr;
     Job m_currentJob = Job::Recovery;
-    QList<Watcher *> m_watchers; ///< every run whose worker has not finished yet
-    int m_generation = 0;
+    JobRunner m_jobs; ///< last member: its destructor cancels and waits for the workers
 };
 
 } // namespace rosarch

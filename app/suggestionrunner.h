@@ -1,20 +1,17 @@
 #pragma once
 
+#include "jobrunner.h"
 #include "llmsettings.h"
 #include "recovery.h"
 #include "suggestionreport.h"
 
-#include <QFutureWatcher>
 #include <QObject>
-
-#include <atomic>
-#include <memory>
 
 namespace rosarch {
 
-/// Runs SuggestionEngine off the UI thread (QtConcurrent + QPromise) and reports back on the
-/// UI thread. A new run cancels the previous one, whose late result is dropped by generation
-/// number. LLM failures come back in the report's errors, with the deterministic suggestions.
+/// Runs SuggestionEngine off the UI thread on a JobRunner and reports back on the UI thread.
+/// A new run cancels the previous one, whose late result is dropped by generation number. LLM
+/// failures come back in the report's errors, with the deterministic suggestions.
 class SuggestionRunner : public QObject
 {
     Q_OBJECT
@@ -29,16 +26,14 @@ public:
     };
 
     explicit SuggestionRunner(QObject *parent = nullptr);
-    /// Cancels what still runs and waits for it; no worker outlives the runner.
-    ~SuggestionRunner() override;
 
     /// Starts the suggestion tasks on `recovery` (copied), superseding any run in progress.
     void run(const QString &workspaceRoot, const Recovery &recovery, const Options &options);
     /// Asks the current run to stop after the prompt in flight; suggestionsCanceled follows.
     void cancel();
-    bool isRunning() const { return m_current != nullptr; }
+    bool isRunning() const { return m_jobs.isRunning(); }
     /// Incremented by every run; results of older generations are dropped.
-    int generation() const { return m_generation; }
+    int generation() const { return m_jobs.generation(); }
 
 Q_SIGNALS:
     /// A run started; `llm` says whether prompts will be sent.
@@ -53,16 +48,7 @@ Q_SIGNALS:
     void suggestionsCanceled(const rosarch::SuggestionReport &partial);
 
 private:
-    struct Shared;
-    using Watcher = QFutureWatcher<SuggestionReport>;
-
-    void onFinished(Watcher *watcher, const std::shared_ptr<Shared> &shared, int generation);
-    void onProgress(const std::shared_ptr<Shared> &shared, int generation);
-
-    Watcher *m_current = nullptr;
-    std::shared_ptr<Shared> m_currentShared;
-    QList<QPair<Watcher *, std::shared_ptr<Shared>>> m_running; ///< workers not finished yet
-    int m_generation = 0;
+    JobRunner m_jobs; ///< its destructor cancels and waits for the worker
 };
 
 } // namespace rosarch

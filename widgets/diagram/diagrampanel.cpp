@@ -1,5 +1,6 @@
 #include "diagrampanel.h"
 #include "diagrambreadcrumbbar.h"
+#include "diagramlayouter.h"
 #include "diagramscene.h"
 #include "diagramtext.h"
 #include "diagramview.h"
@@ -8,18 +9,14 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFontMetricsF>
-#include <QFutureWatcher>
 #include <QLineEdit>
 #include <QMenu>
 #include <QToolBar>
 #include <QVBoxLayout>
-#include <QtConcurrent>
 
 namespace rosarch {
 
 namespace {
-constexpr int kCacheSize = 24;
-
 QAction *toggle(QToolBar *bar, const QString &text, const QString &toolTip)
 {
     QAction *a = bar->addAction(text);
@@ -30,9 +27,10 @@ QAction *toggle(QToolBar *bar, const QString &text, const QString &toolTip)
 }
 } // namespace
 
-DiagramPanel::DiagramPanel(QWidget *parent)
-    : QWidget(parent), m_breadcrumbs(new DiagramBreadcrumbBar(this)), m_toolBar(new QToolBar(this)),
-      m_search(new QLineEdit(this)), m_scene(new DiagramScene(this)), m_view(new DiagramView(this))
+DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
+    : QWidget(parent), m_layouter(layouter), m_breadcrumbs(new DiagramBreadcrumbBar(this)),
+      m_toolBar(new QToolBar(this)), m_search(new QLineEdit(this)), m_scene(new DiagramScene(this)),
+      m_view(new DiagramView(this))
 {
     m_search->setPlaceholderText(tr("Find in diagram"));
     m_search->setToolTip(tr("Highlights the parts, topics, services and namespaces whose name "
@@ -91,8 +89,8 @@ DiagramPanel::DiagramPanel(QWidget *parent)
 
 DiagramPanel::~DiagramPanel()
 {
-    if (m_cancel)
-        m_cancel->store(true); // a running helper is killed; its result is dropped
+    if (m_pending)
+        m_layouter->cancel(); // a running helper is killed; its result is dropped
 }
 
 void DiagramPanel::setArchitecture(const Architecture &architecture)
@@ -232,12 +230,10 @@ DiagramMetrics DiagramPanel::metrics() const
 
 void DiagramPanel::relayout()
 {
-    if (m_cancel)
-        m_cancel->store(true); // the previous helper is no longer wanted
-    m_cancel.reset();
+    if (m_pending)
+        m_layouter->cancel(); // the previous layout is no longer wanted
     m_pending = false;
     m_view->setBusyText({});
-    const quint64 generation = ++m_generation;
     const Composite *c = composite();
     if (!c) {
         m_scene->clearDiagram();
@@ -257,39 +253,20 @@ void DiagramPanel::relayout()
         Q_EMIT layoutFinished(true);
         return;
     }
-    const QString dot = GraphLayout::toDot(graph);
-    if (m_cache.contains(dot)) {
-        LayoutResult cached;
-        cached.ok = true;
-        cached.geometry = m_cache.value(dot);
-        applyLayout(graph, cached, m_fitPending);
+    if (const std::optional<LayoutGeometry> cached = m_layouter->cached(graph)) {
+        LayoutResult result;
+        result.ok = true;
+        result.geometry = *cached;
+        applyLayout(graph, result, m_fitPending);
         return;
     }
-    auto cancel = std::make_shared<std::atomic_bool>(false);
-    m_cancel = cancel;
-    LayoutOptions layoutOptions;
-    layoutOptions.timeoutMs = m_timeoutMs;
-    layoutOptions.canceled = [cancel] { return cancel->load(); };
     m_pending = true;
     m_view->setBusyText(tr("Laying out…"));
-    auto *watcher = new QFutureWatcher<LayoutResult>(this);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, graph, dot, generation] {
-        watcher->deleteLater();
-        const LayoutResult result = watcher->result();
-        if (result.ok) {
-            m_cache.insert(dot, result.geometry);
-            m_cacheOrder << dot;
-            if (m_cacheOrder.size() > kCacheSize)
-                m_cache.remove(m_cacheOrder.takeFirst());
-        }
-        if (generation != m_generation) // a newer request supersedes this result
-            return;
+    m_layouter->layout(graph, [this, graph](const LayoutResult &result) {
         m_pending = false;
         m_view->setBusyText({});
         applyLayout(graph, result, m_fitPending);
     });
-    watcher->setFuture(QtConcurrent::run(
-        [graph, layoutOptions] { return GraphLayout::layout(graph, layoutOptions); }));
 }
 
 void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit)

@@ -8,9 +8,6 @@
 #include <QHash>
 #include <QWidget>
 
-#include <atomic>
-#include <memory>
-
 class QAction;
 class QLineEdit;
 class QToolBar;
@@ -18,18 +15,21 @@ class QToolBar;
 namespace rosarch {
 
 class DiagramBreadcrumbBar;
+class DiagramLayouter;
 class DiagramScene;
 class DiagramView;
 
-/// The "Composed diagram" panel: one composite of the architecture laid out by Graphviz (off
-/// the UI thread), with breadcrumbs down the include tree, search, filters, zoom and export.
+/// The "Composed diagram" panel: one composite of the architecture, laid out by the
+/// DiagramLayouter it is given (off the UI thread, cached there), with breadcrumbs down the
+/// include tree, search, filters, zoom and export.
 /// Element keys are DiagramBuilder's: "part:part1", "port:part1/s1", "channel:q_x",
 /// "boundary:s1", "connection:3", "namespace:/robot1".
 class DiagramPanel : public QWidget
 {
     Q_OBJECT
 public:
-    explicit DiagramPanel(QWidget *parent = nullptr);
+    /// `layouter` lays out what the panel shows; it must outlive the panel.
+    explicit DiagramPanel(DiagramLayouter *layouter, QWidget *parent = nullptr);
     ~DiagramPanel() override;
 
     /// The architecture to draw (a copy). Keeps the composite shown if it still exists,
@@ -47,8 +47,6 @@ public:
     /// Draws a namespace of the current composite as one box, or as its parts again.
     void setNamespaceCollapsed(const QString &nameSpace, bool collapsed);
     bool isNamespaceCollapsed(const QString &nameSpace) const;
-    /// Graphviz gets this long per layout before the panel gives up (default 20 s).
-    void setLayoutTimeout(int milliseconds) { m_timeoutMs = milliseconds; }
 
     /// Marks for a reference comparison of the current composite (cleared when another is
     /// shown), and the reference elements missing from it, listed in a banner.
@@ -119,14 +117,10 @@ private:
     QStringList m_missing;
     QStringList m_matches;
     int m_matchIndex = -1;
-    int m_timeoutMs = 20000;
-    quint64 m_generation = 0;
+    DiagramLayouter *m_layouter;
     bool m_pending = false;
     bool m_fitPending = true;
     qint64 m_lastLayoutMs = 0;
-    std::shared_ptr<std::atomic_bool> m_cancel;
-    QHash<QString, LayoutGeometry> m_cache; // by DOT text
-    QStringList m_cacheOrder;
 
     DiagramBreadcrumbBar *m_breadcrumbs;
     QToolBar *m_toolBar;

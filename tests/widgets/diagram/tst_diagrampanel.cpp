@@ -2,6 +2,7 @@
 #include "diagrambreadcrumbbar.h"
 #include "diagramclusteritem.h"
 #include "diagramedgeitem.h"
+#include "diagramlayouter.h"
 #include "diagramnodeitem.h"
 #include "diagrampanel.h"
 #include "diagramscene.h"
@@ -58,7 +59,8 @@ QPoint scenePoint(DiagramPanel &panel, const QPointF &p)
 /// A panel on screen showing the hand-made architecture's root.
 struct ShownPanel
 {
-    DiagramPanel panel;
+    DiagramLayouter layouter;
+    DiagramPanel panel{&layouter};
     bool ok = false;
     ShownPanel()
     {
@@ -378,7 +380,8 @@ void TestDiagramPanel::exportsSvgAndPng()
     if (!shots.isEmpty())
         panel.exportPng(QDir(shots).filePath(QStringLiteral("diagram_export.png")));
 
-    DiagramPanel empty;
+    DiagramLayouter layouter;
+    DiagramPanel empty(&layouter);
     QVERIFY(!empty.exportSvg(dir.filePath(QStringLiteral("none.svg"))));
     QVERIFY(!empty.message().isEmpty());
 }
@@ -389,7 +392,8 @@ void TestDiagramPanel::layoutFailuresAreShownInTheView()
     qputenv("ROSARCH_LAYOUT",
             test::script(dir, QStringLiteral("abort.sh"), "kill -ABRT $$").toLocal8Bit());
     {
-        DiagramPanel panel;
+        DiagramLayouter layouter;
+        DiagramPanel panel(&layouter);
         panel.resize(800, 500);
         panel.show();
         QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
@@ -404,8 +408,9 @@ void TestDiagramPanel::layoutFailuresAreShownInTheView()
     qputenv("ROSARCH_LAYOUT",
             test::script(dir, QStringLiteral("slow.sh"), "exec sleep 30").toLocal8Bit());
     {
-        DiagramPanel panel;
-        panel.setLayoutTimeout(300);
+        DiagramLayouter layouter;
+        layouter.setTimeout(300);
+        DiagramPanel panel(&layouter);
         QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
         panel.setArchitecture(test::diagram::architecture());
         QVERIFY(panel.isLayingOut());
@@ -419,7 +424,8 @@ void TestDiagramPanel::layoutFailuresAreShownInTheView()
 
 void TestDiagramPanel::staleLayoutsAreDropped()
 {
-    DiagramPanel panel;
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
     QSignalSpy finished(&panel, &DiagramPanel::layoutFinished);
     QSignalSpy shown(&panel, &DiagramPanel::compositeShown);
     panel.setArchitecture(test::diagram::architecture()); // lf1, in the background
@@ -455,7 +461,8 @@ void TestDiagramPanel::biggerDiagram()
 {
     Architecture arch;
     arch.composites << test::diagram::fleet(3);
-    DiagramPanel panel;
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
     panel.resize(1280, 800);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
