@@ -51,10 +51,12 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
         updateActions();
     });
 
-    connect(m_document, &Document::modelReset, this, &DiagramController::onModelReset);
-    connect(m_document, &Document::launchDependenciesReset, this, &DiagramController::onModelReset);
-    // Accepting or undoing a grouping changes only how the model is drawn, not the model.
-    connect(m_document, &Document::decisionsChanged, this, [this] { showArchitecture(); });
+    connect(m_document, &Document::changed, this, [this](const DocumentChange &change) {
+        if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
+            onModelReset();
+        else if (change.has(DocumentChange::Decisions))
+            showArchitecture(); // accepted groupings and names change what is drawn
+    });
     connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) {
                 onLaunchItemSelected(index.data(LaunchTreeModel::InstanceIdRole).toString());

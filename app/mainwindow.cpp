@@ -75,8 +75,10 @@ MainWindow::MainWindow(QWidget *parent)
         m_sourceView->clear();
         updateCounts();
     };
-    connect(m_document, &Document::modelReset, this, filesMayHaveChanged);
-    connect(m_document, &Document::launchDependenciesReset, this, filesMayHaveChanged);
+    connect(m_document, &Document::changed, this, [filesMayHaveChanged](const DocumentChange &c) {
+        if (c.parts & (DocumentChange::Model | DocumentChange::Launch))
+            filesMayHaveChanged();
+    });
 
     restoreSession();
     updateCounts();
@@ -164,9 +166,10 @@ void MainWindow::createPanels()
             m_nodeModel->setDescriptionPreview({}, {});
     };
     connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this, preview);
-    connect(m_document, &Document::suggestionChanged, this, [this, preview](const QString &id) {
-        if (id == m_suggestionPanel->currentSuggestionId()) // accepted or rejected: no preview
-            preview(id);
+    connect(m_document, &Document::changed, this, [this, preview](const DocumentChange &c) {
+        // accepted or rejected: no preview
+        if (c.has(DocumentChange::Suggestion) && c.id == m_suggestionPanel->currentSuggestionId())
+            preview(c.id);
     });
     connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
@@ -249,6 +252,7 @@ void MainWindow::saveSession()
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSession();
+    m_document->saveDecisions(); // the autosave may still be pending
     m_runner->cancel();
     QMainWindow::closeEvent(event);
 }

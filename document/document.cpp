@@ -8,11 +8,33 @@
 
 namespace rosarch {
 
-Document::Document(QObject *parent) : QObject(parent) {}
+Document::Document(QObject *parent) : QObject(parent)
+{
+    m_autosave.setSingleShot(true);
+    m_autosave.setInterval(2000);
+    connect(&m_autosave, &QTimer::timeout, this, [this] { saveDecisions(); });
+}
+
+Document::~Document()
+{
+    saveDecisions();
+}
+
+void Document::emitChange(DocumentChange::Parts parts, const QString &id)
+{
+    Q_EMIT changed(DocumentChange{parts, id});
+}
 
 void Document::setRecovery(Recovery recovery)
 {
-    Q_EMIT modelAboutToBeReset();
+    // The decisions belong to the workspace shown so far: on disk before it is replaced. If
+    // they cannot be written and the same workspace comes back, they are kept in memory.
+    const bool sameWorkspace = recovery.nodes.workspaceRoot == workspaceRoot();
+    const bool saved = saveDecisions();
+    DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
+    if (hasSuggestionReport())
+        change.parts |= DocumentChange::Suggestions;
+    Q_EMIT aboutToChange(change);
     m_accepted.reset();
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
@@ -21,11 +43,13 @@ void Document::setRecovery(Recovery recovery)
     m_analysisDescriptions.clear();
     for (const AtomicNode &n : m_nodes.nodes)
         m_analysisDescriptions.insert(n.id, n.description);
-    loadDecisions();
-    Q_EMIT modelReset();
+    if (sameWorkspace && !saved)
+        applyStoredDescriptions();
+    else
+        loadDecisions();
     // The old suggestions were checked against the old model; their ids may mean other things.
     clearSuggestions();
-    Q_EMIT decisionsChanged();
+    Q_EMIT changed(change);
 }
 
 void Document::setAtomicNodes(AtomicNodeList nodes)
@@ -35,13 +59,15 @@ void Document::setAtomicNodes(AtomicNodeList nodes)
 
 void Document::setLaunchDependencies(LaunchDependencies launch, Architecture architecture)
 {
-    Q_EMIT launchDependenciesAboutToBeReset();
+    DocumentChange change{DocumentChange::Launch | DocumentChange::Decisions, {}};
+    if (hasSuggestionReport())
+        change.parts |= DocumentChange::Suggestions;
+    Q_EMIT aboutToChange(change);
     m_accepted.reset();
     m_launch = std::move(launch);
     m_architecture = std::move(architecture);
-    Q_EMIT launchDependenciesReset();
     clearSuggestions(); // groupings and names refer to launch ids that may have changed
-    Q_EMIT decisionsChanged();
+    Q_EMIT changed(change);
 }
 
 void Document::setLaunchOptions(const LaunchOptions &options)
@@ -49,7 +75,7 @@ void Document::setLaunchOptions(const LaunchOptions &options)
     if (options == m_launchOptions)
         return;
     m_launchOptions = options;
-    Q_EMIT launchOptionsChanged(m_launchOptions);
+    emitChange(DocumentChange::LaunchOptions);
 }
 
 void Document::setNodeDescription(const QString &nodeId, const QString &description)
@@ -66,7 +92,7 @@ void Document::applyNodeDescription(const QString &nodeId, const QString &descri
         if (n.id == nodeId) {
             n.description = description;
             m_accepted.reset();
-            Q_EMIT nodeChanged(nodeId);
+            emitChange(DocumentChange::Node, nodeId);
             return;
         }
     }
@@ -82,7 +108,7 @@ const Suggestion *Document::suggestion(const QString &id) const
 
 int Document::setSuggestions(SuggestionReport report)
 {
-    Q_EMIT suggestionsAboutToBeReset();
+    Q_EMIT aboutToChange({DocumentChange::Suggestions, {}});
     int decidedBefore = 0;
     QStringList changedNodes;
     for (Suggestion &s : report.suggestions) {
@@ -103,21 +129,25 @@ int Document::setSuggestions(SuggestionReport report)
     m_suggestionReport = std::move(report);
     if (!changedNodes.isEmpty())
         m_accepted.reset();
-    Q_EMIT suggestionsReset();
+    emitChange(DocumentChange::Suggestions);
     for (const QString &id : std::as_const(changedNodes))
-        Q_EMIT nodeChanged(id);
+        emitChange(DocumentChange::Node, id);
     return decidedBefore;
 }
 
-void Document::clearSuggestions()
+bool Document::hasSuggestionReport() const
 {
     const SuggestionReport &r = m_suggestionReport;
-    if (r.suggestions.isEmpty() && r.prompts.isEmpty() && r.errors.isEmpty() &&
-        r.discarded.isEmpty())
-        return;
-    Q_EMIT suggestionsAboutToBeReset();
+    return !r.suggestions.isEmpty() || !r.prompts.isEmpty() || !r.errors.isEmpty() ||
+           !r.discarded.isEmpty();
+}
+
+bool Document::clearSuggestions()
+{
+    if (!hasSuggestionReport())
+        return false;
     m_suggestionReport = {};
-    Q_EMIT suggestionsReset();
+    return true;
 }
 
 bool Document::acceptSuggestion(const QString &id)
@@ -239,14 +269,20 @@ void Document::restore(const DecisionSnapshot &snapshot)
             applyNodeDescription(snapshot.nodeId, snapshot.description);
     }
     for (const QString &id : std::as_const(changed))
-        Q_EMIT suggestionChanged(id);
-    saveDecisions();
-    Q_EMIT decisionsChanged();
+        emitChange(DocumentChange::Suggestion, id);
+    markDecisionsChanged();
+    emitChange(DocumentChange::Decisions);
 }
 
 void Document::loadDecisions()
 {
     m_decisions = DecisionStore::load(decisionsPath());
+    m_unsaved = false;
+    applyStoredDescriptions();
+}
+
+void Document::applyStoredDescriptions()
+{
     for (const SuggestionDecision &d : std::as_const(m_decisions)) {
         if (d.kind != Suggestion::Kind::NodeDescription || d.status != Suggestion::Status::Accepted)
             continue;
@@ -256,11 +292,29 @@ void Document::loadDecisions()
     }
 }
 
-void Document::saveDecisions()
+void Document::markDecisionsChanged()
 {
+    m_unsaved = true;
+    m_autosave.start(); // restarts: a burst of decisions, undos and redos is written once
+}
+
+bool Document::saveDecisions()
+{
+    m_autosave.stop();
+    if (!m_unsaved)
+        return true;
+    const QString path = decisionsPath();
+    if (path.isEmpty()) { // no workspace: nothing to keep them with
+        m_unsaved = false;
+        return true;
+    }
     QString error;
-    if (!DecisionStore::save(decisionsPath(), workspaceRoot(), m_decisions, &error))
-        Q_EMIT decisionsSaveFailed(error);
+    if (!DecisionStore::save(path, workspaceRoot(), m_decisions, &error)) {
+        Q_EMIT decisionsSaveFailed(error); // kept in memory; the next change or save tries again
+        return false;
+    }
+    m_unsaved = false;
+    return true;
 }
 
 } // namespace rosarch

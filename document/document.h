@@ -2,6 +2,7 @@
 
 #include "acceptedmodel.h"
 #include "atomicnodelist.h"
+#include "documentchange.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
 #include "recovery.h"
@@ -12,6 +13,7 @@
 #include <QHash>
 #include <QMap>
 #include <QObject>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <optional>
@@ -19,12 +21,17 @@
 namespace rosarch {
 
 /// The open project: the workspace, the recovered model and the undo stack for every
-/// change a person makes to it. Views read from here; edits go through commands.
+/// change a person makes to it. Views read from here; edits go through commands. Every change
+/// is announced by one signal, `changed`, saying what changed. A person's decisions are saved
+/// atomically, at most a few seconds after they change (autosave), before another workspace
+/// replaces them, and when the document is destroyed; undo and redo do not write to disk.
 class Document : public QObject
 {
     Q_OBJECT
 public:
     explicit Document(QObject *parent = nullptr);
+    /// Saves decisions that are not on disk yet.
+    ~Document() override;
 
     QString workspaceRoot() const { return m_nodes.workspaceRoot; }
     const AtomicNodeList &atomicNodes() const { return m_nodes; }
@@ -78,6 +85,13 @@ public:
     const Recovery &accepted() const;
     /// The decisions file of the workspace ("" without a workspace).
     QString decisionsPath() const;
+    /// True while a decision is not on disk yet (the autosave is pending).
+    bool hasUnsavedDecisions() const { return m_unsaved; }
+    /// Writes the decisions now if any are not on disk; false when writing failed (then
+    /// decisionsSaveFailed says why, and the autosave tries again later).
+    bool saveDecisions();
+    /// How long after a decision the autosave writes it (default 2 s).
+    void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
 
     /// What a decision touches, captured for undo: the stored decision of one subject and
     /// proposal and, for a node description, the node's description.
@@ -91,26 +105,11 @@ public:
     };
 
 Q_SIGNALS:
-    /// The whole model is about to be replaced; item models begin their reset here.
-    void modelAboutToBeReset();
-    /// The whole model was replaced (a stage finished).
-    void modelReset();
-    /// Only the launch dependencies are about to be replaced (stage 2 re-run).
-    void launchDependenciesAboutToBeReset();
-    /// Only the launch dependencies were replaced (stage 2 re-run).
-    void launchDependenciesReset();
-    /// The launch options changed.
-    void launchOptionsChanged(const rosarch::LaunchOptions &options);
-    /// One node changed (an edit, its undo or redo).
-    void nodeChanged(const QString &nodeId);
-    /// The suggestion list is about to be replaced (a suggestion run, or the model changed).
-    void suggestionsAboutToBeReset();
-    /// The suggestion list was replaced.
-    void suggestionsReset();
-    /// One suggestion's status changed (a decision, its undo or redo).
-    void suggestionChanged(const QString &id);
-    /// The accepted decisions changed (groupings, names, descriptions).
-    void decisionsChanged();
+    /// Lists the views show from scratch are about to be replaced (change.isReset()): item
+    /// models begin their reset here.
+    void aboutToChange(const rosarch::DocumentChange &change);
+    /// Something changed; `change` says what.
+    void changed(const rosarch::DocumentChange &change);
     /// The decisions could not be written; `message` says where and why.
     void decisionsSaveFailed(const QString &message);
 
@@ -124,8 +123,13 @@ private:
     void restore(const DecisionSnapshot &snapshot);
     /// Reads the workspace's decisions and applies the accepted descriptions (no signals).
     void loadDecisions();
-    void saveDecisions();
-    void clearSuggestions();
+    /// Applies the accepted descriptions among the decisions to the nodes (no signals).
+    void applyStoredDescriptions();
+    void markDecisionsChanged();
+    bool hasSuggestionReport() const;
+    /// Clears the suggestions (no signals); true when there were any.
+    bool clearSuggestions();
+    void emitChange(DocumentChange::Parts parts, const QString &id = {});
 
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
@@ -136,6 +140,8 @@ private:
     QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
     mutable std::optional<Recovery> m_accepted;     ///< accepted(), until the next change
     QUndoStack m_undoStack;
+    QTimer m_autosave;
+    bool m_unsaved = false;
 };
 
 } // namespace rosarch

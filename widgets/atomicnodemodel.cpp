@@ -49,13 +49,19 @@ bool covers(const Evidence &e, const QString &file, int line, int *span)
 AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
     : QAbstractItemModel(parent), m_document(document)
 {
-    connect(document, &Document::modelAboutToBeReset, this, [this] { beginResetModel(); });
-    connect(document, &Document::modelReset, this, [this] {
-        m_previewNodeId.clear();
-        rebuild();
-        endResetModel();
+    connect(document, &Document::aboutToChange, this, [this](const DocumentChange &change) {
+        if (change.has(DocumentChange::Model))
+            beginResetModel();
     });
-    connect(document, &Document::nodeChanged, this, &AtomicNodeModel::onNodeChanged);
+    connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        if (change.has(DocumentChange::Model)) {
+            m_previewNodeId.clear();
+            rebuild();
+            endResetModel();
+        } else if (change.has(DocumentChange::Node)) {
+            onNodeChanged(change.id);
+        }
+    });
     rebuild();
 }
 
@@ -303,7 +309,7 @@ bool AtomicNodeModel::setData(const QModelIndex &index, const QVariant &value, i
     const AtomicNode *n = node(index);
     if (!n)
         return false;
-    // The Document pushes an undoable command and tells us through nodeChanged.
+    // The Document pushes an undoable command and tells us through changed (DocumentChange::Node).
     m_document->setNodeDescription(n->id, value.toString());
     return true;
 }

@@ -7,11 +7,15 @@ namespace rosarch {
 DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
     : QAbstractTableModel(parent), m_document(document)
 {
-    connect(document, &Document::modelAboutToBeReset, this, [this] { beginResetModel(); });
-    connect(document, &Document::modelReset, this, [this] { endResetModel(); });
-    connect(document, &Document::launchDependenciesAboutToBeReset, this,
-            [this] { beginResetModel(); });
-    connect(document, &Document::launchDependenciesReset, this, [this] { endResetModel(); });
+    // Diagnostics come with stage results: only a new model or a stage 2 run changes them.
+    connect(document, &Document::aboutToChange, this, [this](const DocumentChange &change) {
+        if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
+            beginResetModel();
+    });
+    connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
+            endResetModel();
+    });
 }
 
 int DiagnosticModel::rowCount(const QModelIndex &parent) const

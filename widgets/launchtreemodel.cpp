@@ -20,10 +20,14 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
         rebuild();
         endResetModel();
     };
-    connect(document, &Document::modelAboutToBeReset, this, begin);
-    connect(document, &Document::modelReset, this, end);
-    connect(document, &Document::launchDependenciesAboutToBeReset, this, begin);
-    connect(document, &Document::launchDependenciesReset, this, end);
+    connect(document, &Document::aboutToChange, this, [begin](const DocumentChange &change) {
+        if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
+            begin();
+    });
+    connect(document, &Document::changed, this, [end](const DocumentChange &change) {
+        if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
+            end();
+    });
     // Class names in tooltips come from the atomic nodes; a description edit changes nothing here.
     rebuild();
 }

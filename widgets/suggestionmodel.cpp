@@ -15,20 +15,22 @@ namespace rosarch {
 SuggestionModel::SuggestionModel(Document *document, QObject *parent)
     : QAbstractTableModel(parent), m_document(document)
 {
-    connect(document, &Document::suggestionsAboutToBeReset, this, [this] { beginResetModel(); });
-    connect(document, &Document::suggestionsReset, this, [this] {
-        rebuildItems();
-        endResetModel();
+    connect(document, &Document::aboutToChange, this, [this](const DocumentChange &change) {
+        if (change.has(DocumentChange::Suggestions))
+            beginResetModel();
     });
-    connect(document, &Document::suggestionChanged, this, [this](const QString &id) {
-        const QModelIndex first = indexOf(id);
-        if (first.isValid())
-            Q_EMIT dataChanged(first, index(first.row(), ColumnCount - 1));
-    });
-    // Targets show node names; a description edit can change what the target column says.
-    connect(document, &Document::nodeChanged, this, [this] {
-        if (rowCount() > 0)
+    connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        if (change.has(DocumentChange::Suggestions)) {
+            rebuildItems();
+            endResetModel();
+        } else if (change.has(DocumentChange::Suggestion)) {
+            const QModelIndex first = indexOf(change.id);
+            if (first.isValid())
+                Q_EMIT dataChanged(first, index(first.row(), ColumnCount - 1));
+        } else if (change.has(DocumentChange::Node) && rowCount() > 0) {
+            // Targets show node names; a description edit can change the target column.
             Q_EMIT dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+        }
     });
     rebuildItems();
 }

@@ -326,6 +326,7 @@ private Q_SLOTS:
         // The headless command applies the same decisions through the same function: every
         // artifact is byte-identical to the GUI's export.
         exportedCcds(w, out);
+        QVERIFY(doc->saveDecisions());
         QVERIFY(QFileInfo::exists(DecisionStore::path(exampleWorkspace())));
         const QString headless = m_home.filePath(QStringLiteral("headless"));
         const test::Run run = test::runRosarch(

@@ -4,6 +4,7 @@
 #include "appsettings.h"
 #include "decisionstore.h"
 #include "document.h"
+#include "documentchanges.h"
 #include "fakellmserver.h"
 #include "screenshot.h"
 #include "suggestioncontroller.h"
@@ -184,15 +185,15 @@ private Q_SLOTS:
         QCOMPARE(s.targetId, QStringLiteral("arc_1"));
         QVERIFY(doc.atomicNodes().node(QStringLiteral("arc_1"))->description.isEmpty());
         const Snapshot before = snapshot(doc);
-        QSignalSpy nodeChanged(&doc, &Document::nodeChanged);
-        QSignalSpy suggestionChanged(&doc, &Document::suggestionChanged);
+        QSignalSpy changed(&doc, &Document::changed);
 
         QVERIFY(doc.acceptSuggestion(s.id));
         QCOMPARE(doc.atomicNodes().node(QStringLiteral("arc_1"))->description, s.value);
         QCOMPARE(doc.suggestion(s.id)->status, Suggestion::Status::Accepted);
-        QCOMPARE(nodeChanged.size(), 1);
-        QCOMPARE(nodeChanged.at(0).at(0).toString(), QStringLiteral("arc_1"));
-        QCOMPARE(suggestionChanged.size(), 1);
+        QCOMPARE(test::changedIds(changed, DocumentChange::Node),
+                 QStringList{QStringLiteral("arc_1")});
+        QCOMPARE(test::changedIds(changed, DocumentChange::Suggestion), QStringList{s.id});
+        QCOMPARE(test::changesOf(changed, DocumentChange::Decisions).size(), 1);
         QCOMPARE(doc.undoStack()->count(), 1);
         QVERIFY(!doc.acceptSuggestion(s.id)); // already accepted: nothing pushed
         QCOMPARE(doc.undoStack()->count(), 1);
@@ -212,12 +213,12 @@ private Q_SLOTS:
         load(doc);
         const Suggestion s = first(doc, Suggestion::Kind::NodeDescription);
         const Snapshot before = snapshot(doc);
-        QSignalSpy nodeChanged(&doc, &Document::nodeChanged);
+        QSignalSpy changed(&doc, &Document::changed);
         QVERIFY(doc.rejectSuggestion(s.id));
         const Snapshot after = snapshot(doc);
         QCOMPARE(after.descriptions, before.descriptions);
         QCOMPARE(after.groupings, before.groupings);
-        QCOMPARE(nodeChanged.size(), 0);
+        QCOMPARE(test::changesOf(changed, DocumentChange::Node).size(), 0);
         QCOMPARE(doc.suggestion(s.id)->status, Suggestion::Status::Rejected);
         QCOMPARE(after.decisions,
                  QStringList{QStringLiteral("node-description arc_1 %1 rejected").arg(s.value)});
@@ -243,9 +244,9 @@ private Q_SLOTS:
         const Suggestion g = first(doc, Suggestion::Kind::SubsystemGrouping);
         QVERIFY(doc.acceptedGroupings().isEmpty());
         const Snapshot before = snapshot(doc);
-        QSignalSpy decisionsChanged(&doc, &Document::decisionsChanged);
+        QSignalSpy changed(&doc, &Document::changed);
         QVERIFY(doc.acceptSuggestion(g.id));
-        QCOMPARE(decisionsChanged.size(), 1);
+        QCOMPARE(test::changesOf(changed, DocumentChange::Decisions).size(), 1);
         const QList<SubsystemGroup> expected{{QStringLiteral("mission"),
                                               {QStringLiteral("n2"), QStringLiteral("n4"),
                                                QStringLiteral("n6"), QStringLiteral("n7")},
@@ -341,8 +342,77 @@ private Q_SLOTS:
         load(third);
         QVERIFY(third.acceptSuggestion(first(third, Suggestion::Kind::SubsystemGrouping).id));
         third.undoStack()->undo();
+        QVERIFY(third.saveDecisions());
         QVERIFY(test::readFile(path).contains("\"rejected\""));
         QCOMPARE(DecisionStore::load(path).size(), 2);
+    }
+
+    void undoAndRedoDoNotWriteTheAutosaveDoes()
+    {
+        const QString path = DecisionStore::path(exampleWorkspace());
+        Document doc;
+        load(doc);
+        const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
+        QVERIFY(doc.acceptSuggestion(d.id));
+        QVERIFY(doc.hasUnsavedDecisions());
+        for (int i = 0; i < 5; ++i) {
+            doc.undoStack()->undo();
+            doc.undoStack()->redo();
+        }
+        QVERIFY(!QFileInfo::exists(path)); // nothing written yet
+        QVERIFY(doc.saveDecisions());
+        QVERIFY(!doc.hasUnsavedDecisions());
+        QCOMPARE(DecisionStore::load(path).size(), 1);
+
+        // The autosave writes a burst of changes once, shortly after the last one.
+        doc.setAutosaveInterval(100);
+        doc.undoStack()->undo();
+        QCOMPARE(DecisionStore::load(path).size(), 1);
+        QTRY_COMPARE(DecisionStore::load(path).size(), 0);
+        QVERIFY(!doc.hasUnsavedDecisions());
+
+        // Replacing the workspace writes what is pending first; so does closing the document.
+        doc.setAutosaveInterval(60000);
+        doc.undoStack()->redo();
+        QVERIFY(doc.hasUnsavedDecisions());
+        doc.setRecovery({});
+        QCOMPARE(DecisionStore::load(path).size(), 1);
+        {
+            Document other;
+            load(other);
+            other.setAutosaveInterval(60000);
+            QVERIFY(other.rejectSuggestion(first(other, Suggestion::Kind::SubsystemGrouping).id));
+            QCOMPARE(DecisionStore::load(path).size(), 1);
+        }
+        QCOMPARE(DecisionStore::load(path).size(), 2);
+    }
+
+    void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
+    {
+        // The project folder cannot be created (a file stands where it would go).
+        const QString path = DecisionStore::path(exampleWorkspace());
+        const QString folder = QFileInfo(path).path();
+        QDir(folder).removeRecursively();
+        QDir().mkpath(QFileInfo(folder).path());
+        {
+            QFile blocker(folder);
+            QVERIFY(blocker.open(QIODevice::WriteOnly));
+        }
+        Document doc;
+        QSignalSpy failed(&doc, &Document::decisionsSaveFailed);
+        load(doc);
+        const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
+        QVERIFY(doc.acceptSuggestion(d.id));
+        QVERIFY(!doc.saveDecisions());
+        QCOMPARE(failed.size(), 1);
+        // Running the stages again on the same workspace keeps the decision in memory.
+        doc.setRecovery(m_recovery);
+        QCOMPARE(doc.decisions().size(), 1);
+        QCOMPARE(doc.atomicNodes().node(d.targetId)->description, d.value);
+        QVERIFY(doc.hasUnsavedDecisions());
+        QFile::remove(folder);
+        QVERIFY(doc.saveDecisions());
+        QCOMPARE(DecisionStore::load(path).size(), 1);
     }
 
     void runnerDeliversDeterministicSuggestions()

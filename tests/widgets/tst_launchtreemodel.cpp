@@ -1,4 +1,5 @@
 #include "document.h"
+#include "documentchanges.h"
 #include "guifixture.h"
 #include "icons.h"
 #include "launchtreemodel.h"
@@ -481,18 +482,17 @@ private Q_SLOTS:
         document.setAtomicNodes(nodes);
         document.setNodeDescription(QStringLiteral("arc_1"), QStringLiteral("Drives a camera."));
         QCOMPARE(document.undoStack()->count(), 1);
-        QSignalSpy fullReset(&document, &Document::modelReset);
-        QSignalSpy launchReset(&document, &Document::launchDependenciesReset);
+        QSignalSpy changed(&document, &Document::changed);
         document.setLaunchDependencies(sample());
-        QCOMPARE(launchReset.count(), 1);
-        QCOMPARE(fullReset.count(), 0);
+        QCOMPARE(test::changesOf(changed, DocumentChange::Launch).size(), 1);
+        QCOMPARE(test::changesOf(changed, DocumentChange::Model).size(), 0);
         QCOMPARE(document.undoStack()->count(), 1);
         QCOMPARE(document.atomicNodes().nodes.first().description,
                  QStringLiteral("Drives a camera."));
         QCOMPARE(document.launchDependencies().nodes.size(), 7);
         // a full result replaces both and starts a fresh history
         document.setRecovery({nodes, {}, {}});
-        QCOMPARE(fullReset.count(), 1);
+        QCOMPARE(test::changesOf(changed, DocumentChange::Model).size(), 1);
         QCOMPARE(document.undoStack()->count(), 0);
         QVERIFY(document.launchDependencies().nodes.isEmpty());
     }
@@ -500,13 +500,14 @@ private Q_SLOTS:
     void documentKeepsLaunchOptions()
     {
         Document document;
-        QSignalSpy changed(&document, &Document::launchOptionsChanged);
+        QSignalSpy changed(&document, &Document::changed);
         LaunchOptions options;
         options.rootFile = kRobot;
         options.arguments = {{QStringLiteral("second"), QStringLiteral("true")}};
         document.setLaunchOptions(options);
         QCOMPARE(changed.count(), 1);
-        QCOMPARE(changed.first().at(0).value<LaunchOptions>(), options);
+        QVERIFY(changed.first().at(0).value<DocumentChange>().has(DocumentChange::LaunchOptions));
+        QCOMPARE(document.launchOptions(), options);
         document.setLaunchOptions(options); // no change, no signal
         QCOMPARE(changed.count(), 1);
         // stage results do not touch them

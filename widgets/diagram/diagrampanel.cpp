@@ -89,7 +89,7 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
 
 DiagramPanel::~DiagramPanel()
 {
-    if (m_pending)
+    if (m_pending && m_layouter)
         m_layouter->cancel(); // a running helper is killed; its result is dropped
 }
 
@@ -230,7 +230,7 @@ DiagramMetrics DiagramPanel::metrics() const
 
 void DiagramPanel::relayout()
 {
-    if (m_pending)
+    if (m_pending && m_layouter)
         m_layouter->cancel(); // the previous layout is no longer wanted
     m_pending = false;
     m_view->setBusyText({});
@@ -253,6 +253,8 @@ void DiagramPanel::relayout()
         Q_EMIT layoutFinished(true);
         return;
     }
+    if (!m_layouter)
+        return; // the window is closing
     if (const std::optional<LayoutGeometry> cached = m_layouter->cached(graph)) {
         LayoutResult result;
         result.ok = true;

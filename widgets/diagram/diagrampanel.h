@@ -6,6 +6,7 @@
 #include "graphlayout.h"
 
 #include <QHash>
+#include <QPointer>
 #include <QWidget>
 
 class QAction;
@@ -28,7 +29,7 @@ class DiagramPanel : public QWidget
 {
     Q_OBJECT
 public:
-    /// `layouter` lays out what the panel shows; it must outlive the panel.
+    /// `layouter` lays out what the panel shows.
     explicit DiagramPanel(DiagramLayouter *layouter, QWidget *parent = nullptr);
     ~DiagramPanel() override;
 
@@ -117,7 +118,7 @@ private:
     QStringList m_missing;
     QStringList m_matches;
     int m_matchIndex = -1;
-    DiagramLayouter *m_layouter;
+    QPointer<DiagramLayouter> m_layouter; ///< may go first when both belong to one window
     bool m_pending = false;
     bool m_fitPending = true;
     qint64 m_lastLayoutMs = 0;
