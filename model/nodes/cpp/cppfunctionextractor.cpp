@@ -124,7 +124,7 @@ void CppFunctionExtractor::readInitializers(TSNode definition)
             CppBaseInitializer base;
             base.name = simplified(m_tree, nameNode);
             if (!args.empty())
-                base.firstArgument = evaluate(args.front());
+                base.firstArgument = m_values.evaluate(args.front());
             m_function.baseInitializers.append(base);
             if (ts::is(nameNode, "field_identifier")) {
                 if (args.size() == 1)
@@ -189,7 +189,7 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
         if (ts::is(d, "init_declarator")) {
             const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
             const TSNode value = ts::field(d, "value");
-            Local local;
+            CppLocal local;
             local.type = type;
             if (ts::is(value, "argument_list") || ts::is(value, "initializer_list")) {
                 const auto args = arguments(value);
@@ -200,7 +200,7 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
                         node.variable = name;
                         node.lifecycle = lifecycle;
                         if (!args.empty())
-                            node.nodeName = evaluate(args.front());
+                            node.nodeName = m_values.evaluate(args.front());
                         node.evidence = m_tree.evidence(declaration);
                         m_function.proceduralNodes.append(node);
                     }
@@ -220,7 +220,7 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
             const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
             if (name.isEmpty())
                 continue;
-            Local local;
+            CppLocal local;
             local.type = type;
             m_locals.insert(name, local);
             std::vector<TSNode> args;
@@ -230,7 +230,7 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
         } else {
             const QString name = m_tree.text(declaredName(d));
             if (!name.isEmpty()) {
-                Local local;
+                CppLocal local;
                 local.type = type;
                 m_locals.insert(name, local);
             }
@@ -255,9 +255,10 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
         if (m_function.parameterNames.contains(name))
             return;
         if (m_member)
-            m_function.memberBindings.append({name, evaluate(value)});
+            m_function.memberBindings.append({name, m_values.evaluate(value)});
     } else if (ts::is(left, "field_expression") && ts::is(ts::field(left, "argument"), "this")) {
-        m_function.memberBindings.append({m_tree.text(ts::field(left, "field")), evaluate(value)});
+        m_function.memberBindings.append(
+            {m_tree.text(ts::field(left, "field")), m_values.evaluate(value)});
     }
 }
 
@@ -280,7 +281,7 @@ void CppFunctionExtractor::onCall(TSNode call)
         return;
     const auto args = arguments(ts::field(call, "arguments"));
     onParameterCall(shape.name, args);
-    if (onPortCall(call, shape, args))
+    if (m_portCalls.read(call, shape, args))
         return;
 
     const bool makeShared =
@@ -316,7 +317,7 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
     if (!declares && !gets)
         return;
     QString parameter;
-    const int at = literalParameterIndex(args, &parameter);
+    const int at = m_values.literalParameterIndex(args, &parameter);
     if (at < 0)
         return;
     const int next = at + 1;
@@ -324,7 +325,7 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
         CppParameterDeclaration decl;
         decl.parameter = parameter;
         if (next < int(args.size()))
-            decl.defaultValue = evaluate(args[size_t(next)]);
+            decl.defaultValue = m_values.evaluate(args[size_t(next)]);
         m_function.parameterDeclarations.append(decl);
         return;
     }
@@ -333,7 +334,8 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
     // get_parameter("p", variable) / get_parameter_or("p", variable, default)
     const TSNode target = args[size_t(next)];
     if (name != QLatin1String("get_parameter") && next + 1 < int(args.size()))
-        m_function.parameterDeclarations.append({parameter, evaluate(args[size_t(next + 1)])});
+        m_function.parameterDeclarations.append(
+            {parameter, m_values.evaluate(args[size_t(next + 1)])});
     CppValue bound;
     bound.kind = CppValue::Kind::Parameter;
     bound.parameter = parameter;
@@ -370,7 +372,7 @@ void CppFunctionExtractor::addInstantiation(const QString &className,
             // Most vexing parse: `T x(node)`; the "parameter" is the argument's text.
             const QString text = simplified(m_tree, a);
             if (!text.contains(u'('))
-                v = evaluateIdentifier(text, 0);
+                v = m_values.evaluateIdentifier(text, 0);
             else if (text == QLatin1String("shared_from_this()") ||
                      text == QLatin1String("weak_from_this()"))
                 v.kind = CppValue::Kind::SelfNode;
@@ -378,7 +380,7 @@ void CppFunctionExtractor::addInstantiation(const QString &className,
                 v.kind = CppValue::Kind::Expression;
             v.text = text;
         } else {
-            v = evaluate(a);
+            v = m_values.evaluate(a);
         }
         if (v.kind == CppValue::Kind::SelfNode)
             interesting = true;
@@ -407,7 +409,7 @@ void CppFunctionExtractor::addFreeCall(const CallShape &shape, const std::vector
         shape.scope.isEmpty() ? shape.name : shape.scope + QStringLiteral("::") + shape.name;
     bool handsSomething = false;
     for (TSNode a : args) {
-        const CppValue v = evaluate(a);
+        const CppValue v = m_values.evaluate(a);
         const bool plain = v.kind == CppValue::Kind::Expression && !v.text.isEmpty() &&
                            (v.text.at(0).isLetter() || v.text.at(0) == u'_') &&
                            !v.text.contains(u'(') && !v.text.contains(u' ');
@@ -429,7 +431,7 @@ void CppFunctionExtractor::addProceduralNode(TSNode creation, const std::vector<
         node.variable = node.variable.mid(6);
     node.lifecycle = lifecycle;
     if (!args.empty())
-        node.nodeName = evaluate(args.front());
+        node.nodeName = m_values.evaluate(args.front());
     node.evidence = m_tree.evidence(creation);
     TSNode up = ts_node_parent(creation);
     while (ts::is(up, "parenthesized_expression"))

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "cppfacts.h"
+#include "cppportcallreader.h"
 #include "cppsyntax.h"
+#include "cppvalueevaluator.h"
 #include "syntaxtree.h"
 
 #include <QHash>
@@ -11,6 +13,8 @@ namespace rosarch {
 /// Extracts the facts of one C++ function definition: its ports, parameter declarations,
 /// member assignments, instantiations and procedurally created nodes. Locals are resolved on
 /// the spot (in document order); members and parameter defaults are left for the linker.
+/// What an expression refers to is CppValueEvaluator's job, which calls create ports
+/// CppPortCallReader's.
 class CppFunctionExtractor
 {
 public:
@@ -25,17 +29,13 @@ public:
     };
 
     CppFunctionExtractor(const SyntaxTree &tree, Context context);
+    // The evaluator and the port call reader refer to this object's members.
+    CppFunctionExtractor(const CppFunctionExtractor &) = delete;
+    CppFunctionExtractor &operator=(const CppFunctionExtractor &) = delete;
 
     CppFunction extract(TSNode functionDefinition, const QStringList &functionTemplateParameters);
 
 private:
-    struct Local
-    {
-        QString type;
-        TSNode value{};    ///< latest value (initializer or assignment)
-        QString parameter; ///< bound through get_parameter("p", local)
-    };
-
     void readSignature(TSNode functionDefinition);
     void readInitializers(TSNode functionDefinition);
     void visit(TSNode body);
@@ -44,8 +44,6 @@ private:
     void onCall(TSNode call);
     void onNew(TSNode expression);
     void onParameterCall(const QString &name, const std::vector<TSNode> &args);
-    bool onPortCall(TSNode call, const cppsyntax::CallShape &shape,
-                    const std::vector<TSNode> &args);
     void addInstantiation(const QString &className, const std::vector<TSNode> &args, TSNode where,
                           const QString &member = {});
     void addProceduralNode(TSNode creation, const std::vector<TSNode> &args, bool lifecycle);
@@ -53,20 +51,17 @@ private:
     void addFreeCall(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
     QString assignedVariable(TSNode expression) const;
 
-    CppValue evaluate(TSNode expression, int depth = 0) const;
-    CppValue evaluateIdentifier(const QString &name, int depth) const;
-    int literalParameterIndex(const std::vector<TSNode> &args, QString *parameter) const;
-    QString callbackName(const std::vector<TSNode> &args, int first) const;
-    void guardOf(TSNode call, QString *guard, CppValue *guardValue) const;
-
     const SyntaxTree &m_tree;
     Context m_context;
     CppFunction m_function;
     TSNode m_definition{};
     bool m_member = false;
     QStringList m_templateParameters;
-    QHash<QString, Local> m_locals;
+    QHash<QString, CppLocal> m_locals;
     QStringList m_returned; ///< locals the function returns (node factories are no nodes)
+    CppValueEvaluator m_values{m_tree, m_locals, m_function};
+    CppPortCallReader m_portCalls{m_tree,       m_values,  m_locals, m_templateParameters,
+                                  m_definition, m_function};
 };
 
 } // namespace rosarch

@@ -1,10 +1,12 @@
-#include "cppnodelinker.h"
+#include "cpphelperports.h"
 
 #include "cppsyntax.h"
 
 // Ports created through helpers: classes and free functions that receive the node (`this`,
 // shared_from_this(), a procedural node) and create ports on it.
 namespace rosarch {
+
+using namespace cppsyntax;
 
 using namespace cppsyntax;
 
@@ -67,14 +69,27 @@ bool looksLikeQos(const QString &text)
 
 } // namespace
 
-void CppNodeLinker::addHelperPorts(const CppInstantiation &inst, const Context &ctx, int depth,
-                                   QList<Port> *ports) const
+CppHelperPorts::CppHelperPorts(
+    const CppClassIndex &index, const CppNameResolver &names,
+    const QHash<QString, QList<CppClassIndex::FunctionRef>> &freeFunctions,
+    const std::vector<const CppProceduralNode *> &ownedNodes)
+    : m_index(index), m_names(names), m_freeFunctionsByName(freeFunctions), m_ownedNodes(ownedNodes)
+{
+}
+
+bool CppHelperPorts::isOwner(int cls) const
+{
+    return cls >= 0 && cls < int(m_ownedNodes.size()) && m_ownedNodes[size_t(cls)];
+}
+
+void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkContext &ctx,
+                                    int depth, QList<Port> *ports) const
 {
     if (depth > 3)
         return;
     bool handsNode = false;
     for (const CppValue &arg : inst.arguments)
-        handsNode = handsNode || isNodeHandle(arg, ctx);
+        handsNode = handsNode || m_names.isNodeHandle(arg, ctx);
     if (!handsNode)
         return;
     QStringList templateArguments;
@@ -85,14 +100,14 @@ void CppNodeLinker::addHelperPorts(const CppInstantiation &inst, const Context &
 }
 
 // `setup_publishers(node)`: the ports a free function creates on the node it is handed.
-void CppNodeLinker::addFreeCallPorts(const CppFreeCall &call, const Context &ctx, int depth,
-                                     QList<Port> *ports) const
+void CppHelperPorts::addFreeCallPorts(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
+                                      QList<Port> *ports) const
 {
     if (depth > 3)
         return;
     bool handsNode = false;
     for (const CppValue &arg : call.arguments)
-        handsNode = handsNode || isNodeHandle(arg, ctx);
+        handsNode = handsNode || m_names.isNodeHandle(arg, ctx);
     if (!handsNode)
         return;
     const int n = int(call.arguments.size());
@@ -118,8 +133,8 @@ void CppNodeLinker::addFreeCallPorts(const CppFreeCall &call, const Context &ctx
                     fn->name != written.value(written.size() - 1) || n < fn->requiredParameters ||
                     (!fn->variadic && n > fn->parameterNames.size()))
                     continue;
-                const Substitution subst{call.arguments, ctx, ctx.subst->templateArguments, fn};
-                const Context inner{ctx.cls, fn, ref.file, &subst};
+                const CppSubstitution subst{call.arguments, ctx, ctx.subst->templateArguments, fn};
+                const CppLinkContext inner{ctx.cls, fn, ref.file, &subst};
                 for (const CppInstantiation &inst : fn->instantiations)
                     addHelperPorts(inst, inner, depth + 1, ports);
                 for (const CppFreeCall &next : fn->freeCalls)
@@ -134,12 +149,12 @@ void CppNodeLinker::addFreeCallPorts(const CppFreeCall &call, const Context &ctx
         candidates.removeIf([&](const auto &ref) { return ref.file->package != package; });
     for (const auto &ref : std::as_const(candidates)) {
         const CppFunction *fn = ref.function;
-        const Substitution subst{call.arguments, ctx, {}, fn};
-        const Context inner{-1, fn, ref.file, &subst};
+        const CppSubstitution subst{call.arguments, ctx, {}, fn};
+        const CppLinkContext inner{-1, fn, ref.file, &subst};
         for (const CppPortCall &port : fn->ports) {
             if (port.typeIsTemplateParameter)
                 continue;
-            Port p = makePort(port, inner);
+            Port p = m_names.port(port, inner);
             p.via = fn->name;
             ports->append(p);
         }
@@ -150,8 +165,8 @@ void CppNodeLinker::addFreeCallPorts(const CppFreeCall &call, const Context &ctx
     }
 }
 
-int CppNodeLinker::helperClass(const CppInstantiation &inst, const Context &ctx,
-                               QStringList *templateArguments) const
+int CppHelperPorts::helperClass(const CppInstantiation &inst, const CppLinkContext &ctx,
+                                QStringList *templateArguments) const
 {
     QString type = inst.className;
     if (type.isEmpty() && !inst.member.isEmpty() && ctx.cls >= 0) {
@@ -164,26 +179,26 @@ int CppNodeLinker::helperClass(const CppInstantiation &inst, const Context &ctx,
     if (type.isEmpty())
         return -1;
     // `using ActionServer = SimpleActionServer<Action>; make_unique<ActionServer>(...)`
-    const QString written = classFromType(expandAliases(classFromType(type), ctx));
-    const int h = m_index.lookup(withoutTemplateArguments(written), scopeOf(ctx), ctx.file);
-    if (h < 0 || m_index.at(h).node || ownedNode(h))
+    const QString written = classFromType(m_names.expandAliases(classFromType(type), ctx));
+    const int h = m_index.lookup(withoutTemplateArguments(written), m_names.scopeOf(ctx), ctx.file);
+    if (h < 0 || m_index.at(h).node || isOwner(h))
         return -1;
     *templateArguments = templateArgumentsOf(written);
     return h;
 }
 
-QList<Port> CppNodeLinker::helperPorts(int helper, const QList<CppValue> &arguments,
-                                       const QStringList &templateArguments, const Context &outer,
-                                       int depth) const
+QList<Port> CppHelperPorts::helperPorts(int helper, const QList<CppValue> &arguments,
+                                        const QStringList &templateArguments,
+                                        const CppLinkContext &outer, int depth) const
 {
     QList<Port> ports;
-    Substitution subst{arguments, outer, {}};
+    CppSubstitution subst{arguments, outer, {}};
     // A helper template (SimpleActionServer<ActionT>) gets its interface type from the
     // instantiation.
     const QStringList &parameters = m_index.at(helper).cls->templateParameters;
     for (qsizetype i = 0; i < parameters.size() && i < templateArguments.size(); ++i)
         subst.templateArguments.insert(parameters.at(i),
-                                       expandAliases(templateArguments.at(i), outer));
+                                       m_names.expandAliases(templateArguments.at(i), outer));
     const QString via = m_index.at(helper).cls->name;
     QList<const CppFunction *> constructors;
     for (const auto &ref : m_index.at(helper).functions)
@@ -194,12 +209,12 @@ QList<Port> CppNodeLinker::helperPorts(int helper, const QList<CppValue> &argume
             if (c == helper && ref.function->isConstructor &&
                 !constructorApplies(*ref.function, arguments, constructors))
                 continue;
-            const Context ctx{helper, ref.function, ref.file, &subst};
+            const CppLinkContext ctx{helper, ref.function, ref.file, &subst};
             for (const CppPortCall &call : ref.function->ports) {
                 if (call.typeIsTemplateParameter &&
                     !subst.templateArguments.contains(splitScope(call.typeWritten).value(0)))
                     continue;
-                Port p = makePort(call, ctx);
+                Port p = m_names.port(call, ctx);
                 p.via = via;
                 ports.append(p);
             }
@@ -214,8 +229,8 @@ QList<Port> CppNodeLinker::helperPorts(int helper, const QList<CppValue> &argume
 
 // Of overloaded constructors, only those the instantiation can call create ports: the
 // argument count must fit, and a QoS argument should meet a QoS parameter.
-bool CppNodeLinker::constructorApplies(const CppFunction &fn, const QList<CppValue> &arguments,
-                                       const QList<const CppFunction *> &constructors) const
+bool CppHelperPorts::constructorApplies(const CppFunction &fn, const QList<CppValue> &arguments,
+                                        const QList<const CppFunction *> &constructors) const
 {
     const int n = int(arguments.size());
     auto fits = [n](const CppFunction *c) {

@@ -28,20 +28,6 @@ QString fileStem(const QString &path)
     return QFileInfo(path).completeBaseName();
 }
 
-// `std::bind(&C::f, this, _1)` / `[this](...) {...}` / `&C::f` / `cb` as text -> callback name.
-QString callbackFromText(const QString &text)
-{
-    const QString t = text.trimmed();
-    if (t.startsWith(u'['))
-        return QStringLiteral("lambda");
-    static const QRegularExpression member(QStringLiteral("&\\s*([A-Za-z_][\\w:]*)"));
-    const auto m = member.match(t);
-    if (m.hasMatch())
-        return lastSegment(m.captured(1));
-    static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_][\\w:]*$"));
-    return identifier.match(t).hasMatch() ? lastSegment(t) : QString();
-}
-
 // gtest bodies (TEST, TEST_F) parse as functions named by the macro; their nodes are fixtures.
 bool isMacroFunction(const QString &name)
 {
@@ -50,7 +36,9 @@ bool isMacroFunction(const QString &name)
 
 } // namespace
 
-CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files) : m_files(files), m_index(files)
+CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
+    : m_files(files), m_index(files), m_names(m_index, m_facts, m_interfaceAliases),
+      m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes)
 {
     for (const CppFileFacts &file : files) {
         for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
@@ -66,7 +54,7 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files) : m_files(files),
     // What each class's members hold and which parameters it declares, in source order.
     m_facts.resize(size_t(m_index.size()));
     for (int i = 0; i < m_index.size(); ++i) {
-        MemberFacts &f = m_facts[size_t(i)];
+        CppMemberFacts &f = m_facts[size_t(i)];
         const CppClassIndex::ClassInfo &info = m_index.at(i);
         for (const CppMemberBinding &b : info.cls->memberInitializers)
             f.bindings[b.member].append({b.value, nullptr, info.file});
@@ -108,15 +96,6 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files) : m_files(files),
         if (owned && (ports || registered.contains(info.cls->qualifiedName)))
             m_ownedNodes[size_t(i)] = owned;
     }
-}
-
-// Parameters of the function in `ctx` stand for the arguments of the helper's instantiation
-// (its constructors) or of the call (a free helper function).
-bool CppNodeLinker::substitutes(const Context &ctx)
-{
-    if (!ctx.subst || !ctx.fn)
-        return false;
-    return ctx.subst->function ? ctx.fn == ctx.subst->function : ctx.fn->isConstructor;
 }
 
 const CppProceduralNode *CppNodeLinker::ownedNode(int cls) const
@@ -221,7 +200,7 @@ QString CppNodeLinker::nodeNameOf(int index, int depth) const
             break;
         }
     }
-    if (!fallback.isEmpty() || depth > kMaxDepth)
+    if (!fallback.isEmpty() || depth > kMaxLinkDepth)
         return fallback;
     for (int b : info.projectBases)
         if (m_index.at(b).node)
@@ -233,52 +212,25 @@ QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
 {
     QList<Port> ports;
     for (const auto &ref : m_index.at(cls).functions) {
-        const Context ctx{cls, ref.function, ref.file, nullptr};
+        const CppLinkContext ctx{cls, ref.function, ref.file, nullptr};
         for (const CppPortCall &call : ref.function->ports)
             if (!call.typeIsTemplateParameter)
-                ports.append(makePort(call, ctx));
+                ports.append(m_names.port(call, ctx));
         for (const CppInstantiation &inst : ref.function->instantiations)
-            addHelperPorts(inst, ctx, 0, &ports);
+            m_helpers.addHelperPorts(inst, ctx, 0, &ports);
         for (const CppFreeCall &call : ref.function->freeCalls)
-            addFreeCallPorts(call, ctx, 0, &ports);
+            m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
     }
     for (Port &p : ports)
         p.inherited = inherited;
     return ports;
 }
 
-Port CppNodeLinker::makePort(const CppPortCall &call, const Context &ctx) const
-{
-    Port port;
-    port.kind = call.kind;
-    const Resolved r = resolve(call.name, ctx);
-    port.name = r.name;
-    port.nameOrigin = r.origin;
-    port.nameExpression = r.expression;
-    port.parameter = r.parameter;
-    port.type = call.imageTransport ? QStringLiteral("sensor_msgs/msg/Image")
-                                    : resolveType(call.typeWritten, ctx);
-    port.callback = call.callback;
-    if (call.callbackParameter >= 0 && substitutes(ctx) &&
-        call.callbackParameter < ctx.subst->arguments.size()) {
-        const QString handed =
-            callbackFromText(ctx.subst->arguments.at(call.callbackParameter).text);
-        if (!handed.isEmpty())
-            port.callback = handed;
-    }
-    port.guard = call.guard;
-    port.guardParameter = guardParameter(call.guardValue, ctx);
-    if (!port.guardParameter.isEmpty())
-        port.guardDefault = parameterDefault(port.guardParameter, ctx, 0);
-    port.evidence = call.evidence;
-    return port;
-}
-
 void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
                                        QList<AtomicNode> *nodes, QHash<QString, int> *stems) const
 {
     const CppFunction &fn = *ref.function;
-    const Context ctx{-1, &fn, ref.file, nullptr};
+    const CppLinkContext ctx{-1, &fn, ref.file, nullptr};
     QStringList variables;
     for (const CppProceduralNode &pn : fn.proceduralNodes) {
         // `node = make_shared<rclcpp::Node>(...)` in both branches of an if: one node.
@@ -299,7 +251,7 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
         if (pn.nodeName.kind == CppValue::Kind::Literal)
             node.nodeName = pn.nodeName.literal;
         else if (!pn.nodeName.isNone())
-            node.nodeName = resolve(pn.nodeName, ctx).name;
+            node.nodeName = m_names.resolve(pn.nodeName, ctx).name;
         if (pn.variable.isEmpty()) {
             nodes->append(node);
             continue;
@@ -314,7 +266,7 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
         };
         for (const CppPortCall &call : fn.ports)
             if (!call.typeIsTemplateParameter && onVariable(call.receiver))
-                node.ports.append(makePort(call, ctx));
+                node.ports.append(m_names.port(call, ctx));
         // Helpers handed this node see it as `this` would be seen in a node class.
         auto handOver = [&](QList<CppValue> *arguments) {
             bool uses = false;
@@ -328,10 +280,10 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
         };
         for (CppInstantiation inst : fn.instantiations)
             if (handOver(&inst.arguments))
-                addHelperPorts(inst, ctx, 0, &node.ports);
+                m_helpers.addHelperPorts(inst, ctx, 0, &node.ports);
         for (CppFreeCall call : fn.freeCalls)
             if (handOver(&call.arguments))
-                addFreeCallPorts(call, ctx, 0, &node.ports);
+                m_helpers.addFreeCallPorts(call, ctx, 0, &node.ports);
         std::stable_sort(node.ports.begin(), node.ports.end(), [](const Port &a, const Port &b) {
             return evidenceLess(a.evidence, b.evidence);
         });
@@ -360,20 +312,6 @@ void CppNodeLinker::addEntryPoint(const CppClassIndex::FunctionRef &ref,
             entry.instantiatedClasses.append(node.className);
     if (!entry.instantiatedClasses.isEmpty())
         entryPoints->append(entry);
-}
-
-QStringList CppNodeLinker::scopeOf(const Context &ctx) const
-{
-    if (ctx.cls >= 0) {
-        const CppClass &c = *m_index.at(ctx.cls).cls;
-        return c.scope + QStringList{c.name};
-    }
-    return ctx.fn ? ctx.fn->namespaces : QStringList();
-}
-
-const CppNodeLinker::MemberFacts &CppNodeLinker::facts(int cls) const
-{
-    return m_facts[size_t(cls)];
 }
 
 } // namespace rosarch

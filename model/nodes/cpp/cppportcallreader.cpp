@@ -1,7 +1,5 @@
-#include "cppfunctionextractor.h"
+#include "cppportcallreader.h"
 
-// The port-creating calls of a function: which calls create ports, their name and type
-// arguments, callbacks and the `if` conditions around them.
 namespace rosarch {
 
 using namespace cppsyntax;
@@ -124,8 +122,16 @@ bool looksLikeNonCallback(const QString &text)
 
 } // namespace
 
-bool CppFunctionExtractor::onPortCall(TSNode call, const CallShape &shape,
-                                      const std::vector<TSNode> &args)
+CppPortCallReader::CppPortCallReader(const SyntaxTree &tree, const CppValueEvaluator &values,
+                                     const QHash<QString, CppLocal> &locals,
+                                     const QStringList &templateParameters,
+                                     const TSNode &definition, CppFunction &function)
+    : m_tree(tree), m_values(values), m_locals(locals), m_templateParameters(templateParameters),
+      m_definition(definition), m_function(function)
+{
+}
+
+bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vector<TSNode> &args)
 {
     QString receiverText;
     QString receiverType;
@@ -152,12 +158,12 @@ bool CppFunctionExtractor::onPortCall(TSNode call, const CallShape &shape,
     port.kind = k.kind;
     port.imageTransport = k.image;
     port.evidence = m_tree.evidence(call);
-    port.name = evaluate(args[size_t(nameIndex)]);
+    port.name = m_values.evaluate(args[size_t(nameIndex)]);
     if (!ts::isNull(shape.templateArguments))
         port.typeWritten = firstTemplateArgument(m_tree, shape.templateArguments);
     int callbackFrom = nameIndex + 1;
     if (k.generic && nameIndex + 1 < int(args.size())) {
-        const CppValue type = evaluate(args[size_t(nameIndex + 1)]);
+        const CppValue type = m_values.evaluate(args[size_t(nameIndex + 1)]);
         port.typeWritten =
             type.kind == CppValue::Kind::Literal || type.kind == CppValue::Kind::Local
                 ? type.literal
@@ -185,7 +191,7 @@ bool CppFunctionExtractor::onPortCall(TSNode call, const CallShape &shape,
     return true;
 }
 
-QString CppFunctionExtractor::callbackName(const std::vector<TSNode> &args, int first) const
+QString CppPortCallReader::callbackName(const std::vector<TSNode> &args, int first) const
 {
     for (int i = first; i < int(args.size()); ++i) {
         const TSNode a = unwrap(m_tree, args[size_t(i)]);
@@ -236,7 +242,7 @@ QString CppFunctionExtractor::callbackName(const std::vector<TSNode> &args, int 
     return {};
 }
 
-void CppFunctionExtractor::guardOf(TSNode call, QString *guard, CppValue *guardValue) const
+void CppPortCallReader::guardOf(TSNode call, QString *guard, CppValue *guardValue) const
 {
     QStringList conditions;
     TSNode child = call;
@@ -266,7 +272,7 @@ void CppFunctionExtractor::guardOf(TSNode call, QString *guard, CppValue *guardV
                     return false;
                 const auto t = ts::type(n);
                 if (t == "identifier" || t == "field_expression" || t == "call_expression") {
-                    const CppValue v = evaluate(n);
+                    const CppValue v = m_values.evaluate(n);
                     if (v.kind == CppValue::Kind::Parameter ||
                         (found.isNone() &&
                          (v.kind == CppValue::Kind::Member || v.kind == CppValue::Kind::Local)))

@@ -1,13 +1,17 @@
-#include "cppfunctionextractor.h"
+#include "cppvalueevaluator.h"
 
-// What an expression refers to, seen from inside its function: a literal, a local holding
-// one, a declared parameter, a member, a function parameter, the node itself.
 namespace rosarch {
 
 using namespace cppsyntax;
 
-int CppFunctionExtractor::literalParameterIndex(const std::vector<TSNode> &args,
-                                                QString *parameter) const
+CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
+                                     const CppFunction &function)
+    : m_tree(tree), m_locals(locals), m_function(function)
+{
+}
+
+int CppValueEvaluator::literalParameterIndex(const std::vector<TSNode> &args,
+                                             QString *parameter) const
 {
     for (size_t i = 0; i < args.size() && i < 3; ++i) {
         const CppValue v = evaluate(args[i]);
@@ -24,7 +28,7 @@ int CppFunctionExtractor::literalParameterIndex(const std::vector<TSNode> &args,
     return -1;
 }
 
-CppValue CppFunctionExtractor::evaluate(TSNode expression, int depth) const
+CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
 {
     CppValue v;
     if (ts::isNull(expression))
@@ -99,7 +103,7 @@ CppValue CppFunctionExtractor::evaluate(TSNode expression, int depth) const
     return v;
 }
 
-CppValue CppFunctionExtractor::evaluateIdentifier(const QString &name, int depth) const
+CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) const
 {
     CppValue v;
     v.text = name;

@@ -1,6 +1,8 @@
-#include "cppnodelinker.h"
+#include "cppnameresolver.h"
 
 #include "cppsyntax.h"
+
+#include <QRegularExpression>
 
 // Name and type resolution for the linker: port names through members, locals and declared
 // parameters, helper constructor arguments, guards, and interface types through aliases.
@@ -8,10 +10,35 @@ namespace rosarch {
 
 using namespace cppsyntax;
 
-CppNodeLinker::Resolved CppNodeLinker::resolve(const CppValue &value, const Context &ctx,
-                                               int depth) const
+namespace {
+
+// `std::bind(&C::f, this, _1)` / `[this](...) {...}` / `&C::f` / `cb` as text -> callback name.
+QString callbackFromText(const QString &text)
 {
-    Resolved r;
+    const QString t = text.trimmed();
+    if (t.startsWith(u'['))
+        return QStringLiteral("lambda");
+    static const QRegularExpression member(QStringLiteral("&\\s*([A-Za-z_][\\w:]*)"));
+    const auto m = member.match(t);
+    if (m.hasMatch())
+        return lastSegment(m.captured(1));
+    static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_][\\w:]*$"));
+    return identifier.match(t).hasMatch() ? lastSegment(t) : QString();
+}
+
+} // namespace
+
+CppNameResolver::CppNameResolver(const CppClassIndex &index,
+                                 const std::vector<CppMemberFacts> &facts,
+                                 const QHash<QString, QHash<QString, QString>> &interfaceAliases)
+    : m_index(index), m_facts(facts), m_interfaceAliases(interfaceAliases)
+{
+}
+
+CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkContext &ctx,
+                                         int depth) const
+{
+    CppResolvedName r;
     r.name = value.text;
     r.expression = value.text;
     switch (value.kind) {
@@ -27,7 +54,7 @@ CppNodeLinker::Resolved CppNodeLinker::resolve(const CppValue &value, const Cont
     case CppValue::Kind::Member:
         return resolveMember(value.variable, value.text, ctx, depth + 1);
     case CppValue::Kind::FunctionParameter:
-        if (substitutes(ctx) && depth < kMaxDepth) {
+        if (substitutes(ctx) && depth < kMaxLinkDepth) {
             if (value.index >= 0 && value.index < ctx.subst->arguments.size())
                 return resolve(ctx.subst->arguments.at(value.index), ctx.subst->outer, depth + 1);
             const QString def = ctx.fn->parameterDefaults.value(value.index);
@@ -40,34 +67,35 @@ CppNodeLinker::Resolved CppNodeLinker::resolve(const CppValue &value, const Cont
     }
 }
 
-CppNodeLinker::Resolved CppNodeLinker::resolveMember(const QString &member, const QString &text,
-                                                     const Context &ctx, int depth) const
+CppResolvedName CppNameResolver::resolveMember(const QString &member, const QString &text,
+                                               const CppLinkContext &ctx, int depth) const
 {
-    Resolved expression{NameOrigin::Expression, text, text, QString()};
-    if (depth > kMaxDepth)
+    CppResolvedName expression{NameOrigin::Expression, text, text, QString()};
+    if (depth > kMaxLinkDepth)
         return expression;
     if (ctx.cls >= 0) {
         for (int c : m_index.lineage(ctx.cls)) {
-            const QList<Binding> bindings = facts(c).bindings.value(member);
+            const QList<CppBinding> bindings = facts(c).bindings.value(member);
             if (bindings.isEmpty())
                 continue;
-            for (const Binding &b : bindings) {
+            for (const CppBinding &b : bindings) {
                 if (b.value.kind == CppValue::Kind::Parameter) {
                     const QString def = parameterDefault(b.value.parameter, ctx, depth + 1);
                     return {NameOrigin::Parameter, def.isNull() ? text : def, text,
                             b.value.parameter};
                 }
             }
-            for (const Binding &b : bindings) {
+            for (const CppBinding &b : bindings) {
                 if ((b.value.kind == CppValue::Kind::Literal ||
                      b.value.kind == CppValue::Kind::Local) &&
                     !b.value.literal.isEmpty())
                     return {NameOrigin::Member, b.value.literal, text, QString()};
             }
-            for (const Binding &b : bindings) {
-                Resolved r;
+            for (const CppBinding &b : bindings) {
+                CppResolvedName r;
                 if (b.value.kind == CppValue::Kind::FunctionParameter && ctx.subst && b.fn) {
-                    r = resolve(b.value, Context{ctx.cls, b.fn, b.file, ctx.subst}, depth + 1);
+                    r = resolve(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst},
+                                depth + 1);
                 } else if (b.value.kind == CppValue::Kind::Member && b.value.variable != member) {
                     r = resolveMember(b.value.variable, text, ctx, depth + 1);
                 } else {
@@ -86,18 +114,18 @@ CppNodeLinker::Resolved CppNodeLinker::resolveMember(const QString &member, cons
     return expression;
 }
 
-QString CppNodeLinker::parameterDefault(const QString &parameter, const Context &ctx,
-                                        int depth) const
+QString CppNameResolver::parameterDefault(const QString &parameter, const CppLinkContext &ctx,
+                                          int depth) const
 {
     const CppParameterDeclaration *decl = nullptr;
-    Context declared = ctx;
+    CppLinkContext declared = ctx;
     if (ctx.fn)
         for (const CppParameterDeclaration &d : ctx.fn->parameterDeclarations)
             if (!decl && d.parameter == parameter)
                 decl = &d;
     if (!decl && ctx.cls >= 0) {
         for (int c : m_index.lineage(ctx.cls)) {
-            const MemberFacts &f = facts(c);
+            const CppMemberFacts &f = facts(c);
             const auto it = f.parameters.constFind(parameter);
             if (it != f.parameters.constEnd()) {
                 decl = &*it;
@@ -116,9 +144,9 @@ QString CppNodeLinker::parameterDefault(const QString &parameter, const Context 
         return v.literal;
     case CppValue::Kind::Member:
     case CppValue::Kind::FunctionParameter: {
-        if (depth > kMaxDepth)
+        if (depth > kMaxLinkDepth)
             return v.text;
-        const Resolved r = resolve(v, declared, depth + 1);
+        const CppResolvedName r = resolve(v, declared, depth + 1);
         return r.origin == NameOrigin::Expression ? v.text : r.name;
     }
     default:
@@ -126,21 +154,22 @@ QString CppNodeLinker::parameterDefault(const QString &parameter, const Context 
     }
 }
 
-QString CppNodeLinker::guardParameter(const CppValue &value, const Context &ctx) const
+QString CppNameResolver::guardParameter(const CppValue &value, const CppLinkContext &ctx) const
 {
     if (value.kind == CppValue::Kind::Parameter)
         return value.parameter;
     if (value.kind == CppValue::Kind::Member) {
-        const Resolved r = resolveMember(value.variable, value.text, ctx, 0);
+        const CppResolvedName r = resolveMember(value.variable, value.text, ctx, 0);
         if (r.origin == NameOrigin::Parameter)
             return r.parameter;
     }
     return {};
 }
 
-bool CppNodeLinker::isNodeHandle(const CppValue &value, const Context &ctx, int depth) const
+bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &ctx,
+                                   int depth) const
 {
-    if (depth > kMaxDepth)
+    if (depth > kMaxLinkDepth)
         return false;
     switch (value.kind) {
     case CppValue::Kind::SelfNode:
@@ -153,11 +182,12 @@ bool CppNodeLinker::isNodeHandle(const CppValue &value, const Context &ctx, int 
         if (ctx.cls < 0)
             return false;
         for (int c : m_index.lineage(ctx.cls)) {
-            for (const Binding &b : facts(c).bindings.value(value.variable)) {
+            for (const CppBinding &b : facts(c).bindings.value(value.variable)) {
                 if (b.value.kind == CppValue::Kind::SelfNode)
                     return true;
                 if (b.value.kind == CppValue::Kind::FunctionParameter && b.fn &&
-                    isNodeHandle(b.value, Context{ctx.cls, b.fn, b.file, ctx.subst}, depth + 1))
+                    isNodeHandle(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst},
+                                 depth + 1))
                     return true;
             }
         }
@@ -167,14 +197,14 @@ bool CppNodeLinker::isNodeHandle(const CppValue &value, const Context &ctx, int 
     }
 }
 
-QString CppNodeLinker::resolveType(const QString &written, const Context &ctx) const
+QString CppNameResolver::resolveType(const QString &written, const CppLinkContext &ctx) const
 {
     return written.isEmpty() ? written : canonicalInterfaceType(expandAliases(written, ctx));
 }
 
 // Replaces the first segment through the aliases visible from `ctx` (function, class and its
 // bases, file, helper template arguments, then interface typedefs of the package).
-QString CppNodeLinker::expandAliases(const QString &written, const Context &ctx) const
+QString CppNameResolver::expandAliases(const QString &written, const CppLinkContext &ctx) const
 {
     QList<const QHash<QString, QString> *> scopes;
     if (ctx.subst && !ctx.subst->templateArguments.isEmpty())
@@ -197,7 +227,7 @@ QString CppNodeLinker::expandAliases(const QString &written, const Context &ctx)
     QString type = written.trimmed();
     if (type.startsWith(QLatin1String("typename ")))
         type = type.mid(9);
-    for (int step = 0; step < kMaxDepth; ++step) {
+    for (int step = 0; step < kMaxLinkDepth; ++step) {
         QStringList parts = splitScope(type);
         if (parts.isEmpty())
             break;
@@ -214,6 +244,47 @@ QString CppNodeLinker::expandAliases(const QString &written, const Context &ctx)
         type = parts.join(QStringLiteral("::"));
     }
     return type;
+}
+
+QStringList CppNameResolver::scopeOf(const CppLinkContext &ctx) const
+{
+    if (ctx.cls >= 0) {
+        const CppClass &c = *m_index.at(ctx.cls).cls;
+        return c.scope + QStringList{c.name};
+    }
+    return ctx.fn ? ctx.fn->namespaces : QStringList();
+}
+
+const CppMemberFacts &CppNameResolver::facts(int cls) const
+{
+    return m_facts[size_t(cls)];
+}
+
+Port CppNameResolver::port(const CppPortCall &call, const CppLinkContext &ctx) const
+{
+    Port port;
+    port.kind = call.kind;
+    const CppResolvedName r = resolve(call.name, ctx);
+    port.name = r.name;
+    port.nameOrigin = r.origin;
+    port.nameExpression = r.expression;
+    port.parameter = r.parameter;
+    port.type = call.imageTransport ? QStringLiteral("sensor_msgs/msg/Image")
+                                    : resolveType(call.typeWritten, ctx);
+    port.callback = call.callback;
+    if (call.callbackParameter >= 0 && substitutes(ctx) &&
+        call.callbackParameter < ctx.subst->arguments.size()) {
+        const QString handed =
+            callbackFromText(ctx.subst->arguments.at(call.callbackParameter).text);
+        if (!handed.isEmpty())
+            port.callback = handed;
+    }
+    port.guard = call.guard;
+    port.guardParameter = guardParameter(call.guardValue, ctx);
+    if (!port.guardParameter.isEmpty())
+        port.guardDefault = parameterDefault(port.guardParameter, ctx, 0);
+    port.evidence = call.evidence;
+    return port;
 }
 
 } // namespace rosarch

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "cppclassindex.h"
+#include "cpplinkcontext.h"
+#include "cppnameresolver.h"
+#include "port.h"
+
+#include <QHash>
+#include <QList>
+
+#include <vector>
+
+namespace rosarch {
+
+/// Finds the ports a node creates through helpers: classes it instantiates with the node
+/// (`this`, `shared_from_this()`, a procedural node) and free functions it hands the node to,
+/// followed to a bounded depth, with the helper's parameters standing for the arguments.
+class CppHelperPorts
+{
+public:
+    /// Keeps references: `freeFunctions` and `ownedNodes` may be filled after construction.
+    CppHelperPorts(const CppClassIndex &index, const CppNameResolver &names,
+                   const QHash<QString, QList<CppClassIndex::FunctionRef>> &freeFunctions,
+                   const std::vector<const CppProceduralNode *> &ownedNodes);
+
+    /// Ports of the helper class `inst` creates, when it is handed the node.
+    void addHelperPorts(const CppInstantiation &inst, const CppLinkContext &ctx, int depth,
+                        QList<Port> *ports) const;
+    /// `setup_publishers(node)`: the ports a free function creates on the node it is handed.
+    void addFreeCallPorts(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
+                          QList<Port> *ports) const;
+
+private:
+    int helperClass(const CppInstantiation &inst, const CppLinkContext &ctx,
+                    QStringList *templateArguments) const;
+    QList<Port> helperPorts(int helper, const QList<CppValue> &arguments,
+                            const QStringList &templateArguments, const CppLinkContext &outer,
+                            int depth) const;
+    bool constructorApplies(const CppFunction &fn, const QList<CppValue> &arguments,
+                            const QList<const CppFunction *> &constructors) const;
+    /// A class that owns a node of its own (a member node): its ports are its node's.
+    bool isOwner(int cls) const;
+
+    const CppClassIndex &m_index;
+    const CppNameResolver &m_names;
+    const QHash<QString, QList<CppClassIndex::FunctionRef>> &m_freeFunctionsByName;
+    const std::vector<const CppProceduralNode *> &m_ownedNodes;
+};
+
+} // namespace rosarch

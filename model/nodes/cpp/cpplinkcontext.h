@@ -1,0 +1,69 @@
+#pragma once
+
+#include "cppfacts.h"
+
+#include <QHash>
+#include <QList>
+#include <QString>
+
+namespace rosarch {
+
+/// Bound for alias, member and helper chains while linking C++ facts.
+constexpr int kMaxLinkDepth = 6;
+
+struct CppSubstitution;
+
+/// Where the linker resolves a name or a port: the class (or -1 outside one), the function and
+/// file the code is in, and, inside a helper, what its parameters stand for.
+struct CppLinkContext
+{
+    int cls = -1;
+    const CppFunction *fn = nullptr;
+    const CppFileFacts *file = nullptr;
+    const CppSubstitution *subst = nullptr; ///< arguments of the helper's instantiation
+};
+
+/// The arguments a helper was handed, and where they were written.
+struct CppSubstitution
+{
+    QList<CppValue> arguments;
+    CppLinkContext outer;
+    QHash<QString, QString> templateArguments; ///< helper template parameter -> type
+    const CppFunction *function = nullptr;     ///< free helper function; null: the constructors
+};
+
+/// A port name as resolved: where it comes from, the name (or the expression as written),
+/// and the parameter it is declared by.
+struct CppResolvedName
+{
+    NameOrigin origin = NameOrigin::Expression;
+    QString name;
+    QString expression;
+    QString parameter;
+};
+
+/// One assignment to a member, and where it is.
+struct CppBinding
+{
+    CppValue value;
+    const CppFunction *fn = nullptr;
+    const CppFileFacts *file = nullptr;
+};
+
+/// What a class's members hold and which parameters it declares, in source order.
+struct CppMemberFacts
+{
+    QHash<QString, QList<CppBinding>> bindings;
+    QHash<QString, CppParameterDeclaration> parameters;
+};
+
+/// Parameters of the function in `ctx` stand for the arguments of the helper's instantiation
+/// (its constructors) or of the call (a free helper function).
+inline bool substitutes(const CppLinkContext &ctx)
+{
+    if (!ctx.subst || !ctx.fn)
+        return false;
+    return ctx.subst->function ? ctx.fn == ctx.subst->function : ctx.fn->isConstructor;
+}
+
+} // namespace rosarch

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "cppfacts.h"
+#include "cppsyntax.h"
+#include "cppvalueevaluator.h"
+#include "syntaxtree.h"
+
+#include <QHash>
+#include <QStringList>
+
+#include <vector>
+
+namespace rosarch {
+
+/// The port-creating calls of a function: which calls create ports, their name and type
+/// arguments, callbacks and the `if` conditions around them.
+class CppPortCallReader
+{
+public:
+    /// Reads the extractor's state as it is when asked; ports go to `function`.
+    CppPortCallReader(const SyntaxTree &tree, const CppValueEvaluator &values,
+                      const QHash<QString, CppLocal> &locals, const QStringList &templateParameters,
+                      const TSNode &definition, CppFunction &function);
+
+    /// Adds the port `call` creates to the function; false when it creates none.
+    bool read(TSNode call, const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
+    /// The callback among the arguments from `first` on ("" when none).
+    QString callbackName(const std::vector<TSNode> &args, int first) const;
+    /// The `if` condition around `call` within the function, and the value it tests.
+    void guardOf(TSNode call, QString *guard, CppValue *guardValue) const;
+
+private:
+    const SyntaxTree &m_tree;
+    const CppValueEvaluator &m_values;
+    const QHash<QString, CppLocal> &m_locals;
+    const QStringList &m_templateParameters;
+    const TSNode &m_definition;
+    CppFunction &m_function;
+};
+
+} // namespace rosarch

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "cppfacts.h"
+#include "cppsyntax.h"
+#include "syntaxtree.h"
+
+#include <QHash>
+#include <QString>
+
+#include <vector>
+
+namespace rosarch {
+
+/// A local variable of the function being read, as far as it has been seen.
+struct CppLocal
+{
+    QString type;
+    TSNode value{};    ///< latest value (initializer or assignment)
+    QString parameter; ///< bound through get_parameter("p", local)
+};
+
+/// What an expression refers to, seen from inside its function: a literal, a local holding
+/// one, a declared parameter, a member, a function parameter, the node itself.
+class CppValueEvaluator
+{
+public:
+    /// Reads `locals` and `function` as they are when asked (the extractor fills them).
+    CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
+                      const CppFunction &function);
+
+    CppValue evaluate(TSNode expression, int depth = 0) const;
+    /// What the identifier `name` holds at this point of the function.
+    CppValue evaluateIdentifier(const QString &name, int depth) const;
+    /// The first of the leading arguments that is a literal parameter name (`parameter`), or -1.
+    int literalParameterIndex(const std::vector<TSNode> &args, QString *parameter) const;
+
+private:
+    const SyntaxTree &m_tree;
+    const QHash<QString, CppLocal> &m_locals;
+    const CppFunction &m_function;
+};
+
+} // namespace rosarch
