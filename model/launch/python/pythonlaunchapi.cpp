@@ -1,5 +1,6 @@
-// The ROS 2 launch API (launch, launch_ros) mapped onto LaunchActions, Substitutions and
-// LaunchConditions.
+// The launch API for the launch-file evaluator: launch and launch_ros calls become
+// LaunchActions, substitution calls become Substitutions.
+#include "pythonlaunchapi.h"
 #include "pythonlaunchevaluator.h"
 
 #include "pythonsyntax.h"
@@ -60,13 +61,18 @@ QString nameText(const Value &v)
 const QLatin1String kQuote("'");
 } // namespace
 
-QString PythonLaunchEvaluator::textOfCall(TSNode call) const
+PythonLaunchApi::PythonLaunchApi(PythonLaunchContext &ctx, PythonLaunchEvaluator &interpreter)
+    : m_ctx(ctx), m_interpreter(interpreter)
 {
-    return oneLine(m_tree.text(call));
 }
 
-std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &name,
-                                                                const CallArgs &args, TSNode call)
+QString PythonLaunchApi::textOfCall(TSNode call) const
+{
+    return oneLine(m_ctx.tree.text(call));
+}
+
+std::optional<Value> PythonLaunchApi::callSubstitutionApi(const QString &name, const CallArgs &args,
+                                                          TSNode call)
 {
     using K = Substitution::Kind;
     const Value *a0 = args.get(0);
@@ -142,7 +148,7 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
             evaluation({Substitution::literal(QStringLiteral("not ")), a0->toSubstitution()}));
     if (oneOf(name, {"ParameterFile", "ParameterValue"})) {
         const Value *v = args.get(0, {"param_file", "value"});
-        return v ? *v : Value::unknown(textOfCall(call), m_tree.evidence(call));
+        return v ? *v : Value::unknown(textOfCall(call), m_ctx.tree.evidence(call));
     }
     if (oneOf(name, {"IfCondition", "UnlessCondition"})) {
         const Value *e = args.get(0, {"predicate_expression"});
@@ -184,7 +190,7 @@ std::optional<Value> PythonLaunchEvaluator::callSubstitutionApi(const QString &n
     return std::nullopt;
 }
 
-LaunchCondition PythonLaunchEvaluator::condition(const CallArgs &args) const
+LaunchCondition PythonLaunchApi::condition(const CallArgs &args) const
 {
     const Value *c = args.get(-1, {"condition"});
     if (!given(c))
@@ -192,12 +198,12 @@ LaunchCondition PythonLaunchEvaluator::condition(const CallArgs &args) const
     if (c->type == Value::Type::Condition)
         return c->condition;
     LaunchCondition unknown;
-    unknown.text = oneLine(m_tree.text(args.node(-1, {"condition"})));
+    unknown.text = oneLine(m_ctx.tree.text(args.node(-1, {"condition"})));
     unknown.expression = Substitution::unknown(unknown.text);
     return unknown;
 }
 
-QList<LaunchRemap> PythonLaunchEvaluator::remaps(const Value &value, const Evidence &evidence) const
+QList<LaunchRemap> PythonLaunchApi::remaps(const Value &value, const Evidence &evidence) const
 {
     QList<LaunchRemap> out;
     for (const Value &item : value.items()) {
@@ -208,8 +214,8 @@ QList<LaunchRemap> PythonLaunchEvaluator::remaps(const Value &value, const Evide
     return out;
 }
 
-QList<LaunchParameter> PythonLaunchEvaluator::parameters(const Value &value,
-                                                         const Evidence &evidence) const
+QList<LaunchParameter> PythonLaunchApi::parameters(const Value &value,
+                                                   const Evidence &evidence) const
 {
     QList<LaunchParameter> out;
     std::function<void(const Value &, const Substitution &)> addDict =
@@ -234,8 +240,8 @@ QList<LaunchParameter> PythonLaunchEvaluator::parameters(const Value &value,
     return out;
 }
 
-void PythonLaunchEvaluator::readNodeFields(LaunchAction &a, const CallArgs &args,
-                                           const Evidence &evidence) const
+void PythonLaunchApi::readNodeFields(LaunchAction &a, const CallArgs &args,
+                                     const Evidence &evidence) const
 {
     auto read = [&](Substitution &field, std::initializer_list<const char *> names) {
         if (const Value *v = args.get(-1, names); given(v))
@@ -271,10 +277,10 @@ void PythonLaunchEvaluator::readNodeFields(LaunchAction &a, const CallArgs &args
     }
 }
 
-Value PythonLaunchEvaluator::makeNode(const QString &name, const CallArgs &args, TSNode call)
+Value PythonLaunchApi::makeNode(const QString &name, const CallArgs &args, TSNode call)
 {
     LaunchAction a;
-    a.evidence = m_tree.evidence(call);
+    a.evidence = m_ctx.tree.evidence(call);
     if (name == QLatin1String("ComposableNodeContainer"))
         a.kind = LaunchAction::Kind::ComposableContainer;
     else if (name == QLatin1String("ComposableNode"))
@@ -289,11 +295,11 @@ Value PythonLaunchEvaluator::makeNode(const QString &name, const CallArgs &args,
     return Value::action({a});
 }
 
-Value PythonLaunchEvaluator::makeInclude(const CallArgs &args, TSNode call)
+Value PythonLaunchApi::makeInclude(const CallArgs &args, TSNode call)
 {
     LaunchAction a;
     a.kind = LaunchAction::Kind::Include;
-    a.evidence = m_tree.evidence(call);
+    a.evidence = m_ctx.tree.evidence(call);
     if (const Value *source = args.get(0, {"launch_description_source"}))
         a.path = source->toSubstitution();
     if (const Value *arguments = args.get(1, {"launch_arguments"}); given(arguments)) {
@@ -312,15 +318,16 @@ Value PythonLaunchEvaluator::makeInclude(const CallArgs &args, TSNode call)
     return Value::action({a});
 }
 
-Value PythonLaunchEvaluator::makeOpaque(const QString &name, const CallArgs &args, TSNode call)
+Value PythonLaunchApi::makeOpaque(const QString &name, const CallArgs &args, TSNode call)
 {
-    const Evidence evidence = m_tree.evidence(call);
+    const Evidence evidence = m_ctx.tree.evidence(call);
     const Value *function = args.get(name == QLatin1String("ForEach") ? 1 : 0, {"function"});
     TSNode functionNode = args.node(name == QLatin1String("ForEach") ? 1 : 0, {"function"});
     LaunchAction unresolved;
     unresolved.kind = LaunchAction::Kind::Unresolved;
     unresolved.evidence = evidence;
-    unresolved.expression = QStringLiteral("%1(%2)").arg(name, oneLine(m_tree.text(functionNode)));
+    unresolved.expression =
+        QStringLiteral("%1(%2)").arg(name, oneLine(m_ctx.tree.text(functionNode)));
     unresolved.condition = condition(args);
     QList<LaunchAction> out{unresolved};
     if (!function || function->type != Value::Type::Function)
@@ -339,10 +346,10 @@ Value PythonLaunchEvaluator::makeOpaque(const QString &name, const CallArgs &arg
             for (const auto &e : kwargs->dict->entries)
                 callArgs.keywords.append({e.first.text, e.second});
     } else if (!ts::is(function->node, "lambda")) {
-        for (const py::Parameter &p : py::parameters(m_tree, function->node))
+        for (const py::Parameter &p : py::parameters(m_ctx.tree, function->node))
             callArgs.keywords.append({p.name, Value::unknown(p.name)});
     }
-    const Value result = callFunction(*function, callArgs, call);
+    const Value result = m_interpreter.callFunction(*function, callArgs, call);
     if (result.type != Value::Type::List && result.type != Value::Type::Action)
         return Value::action(out);
     LaunchAction group;
@@ -356,13 +363,13 @@ Value PythonLaunchEvaluator::makeOpaque(const QString &name, const CallArgs &arg
     return Value::action(out);
 }
 
-std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, const CallArgs &args,
-                                                          TSNode call)
+std::optional<Value> PythonLaunchApi::callLaunchApi(const QString &name, const CallArgs &args,
+                                                    TSNode call)
 {
     using K = LaunchAction::Kind;
     if (std::optional<Value> s = callSubstitutionApi(name, args, call))
         return s;
-    const Evidence evidence = m_tree.evidence(call);
+    const Evidence evidence = m_ctx.tree.evidence(call);
     auto make = [&](K kind) {
         LaunchAction a;
         a.kind = kind;
@@ -372,14 +379,14 @@ std::optional<Value> PythonLaunchEvaluator::callLaunchApi(const QString &name, c
     };
 
     if (name == QLatin1String("LaunchDescription")) {
-        Value ld = newList({});
+        Value ld = m_ctx.newList({});
         ld.list->launchDescription = true;
         if (const Value *entities = args.get(0, {"initial_entities"}); given(entities)) {
             if (entities->type == Value::Type::List) {
                 ld.list->items = entities->list->items;
                 ld.list->guards = entities->list->guards;
             } else {
-                append(ld, *entities);
+                m_ctx.append(ld, *entities);
             }
         }
         return ld;

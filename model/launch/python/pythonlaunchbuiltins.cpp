@@ -1,6 +1,6 @@
-// Python builtins, os / os.path / pathlib, and the methods of lists, dicts and strings, as far
-// as launch files use them.
-#include "pythonlaunchevaluator.h"
+// Builtins and methods of plain Python values for the launch-file evaluator: str, list, dict,
+// os.path, os.environ, range, format strings.
+#include "pythonlaunchbuiltins.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,13 +89,15 @@ Value dirname(const Value &v, const QString &text)
 }
 } // namespace
 
-std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, const CallArgs &args,
-                                                        TSNode call)
+PythonLaunchBuiltins::PythonLaunchBuiltins(PythonLaunchContext &ctx) : m_ctx(ctx) {}
+
+std::optional<Value> PythonLaunchBuiltins::callBuiltin(const QString &dotted, const CallArgs &args,
+                                                       TSNode call)
 {
     using T = Value::Type;
     const Value *a0 = args.get(0);
-    const QString text = m_tree.text(call);
-    const Evidence evidence = m_tree.evidence(call);
+    const QString text = m_ctx.tree.text(call);
+    const Evidence evidence = m_ctx.tree.evidence(call);
     if (oneOf(dotted, {"os.path.join", "path.join", "posixpath.join"}))
         return joinPaths(args.positional);
     if (oneOf(dotted, {"os.path.dirname", "path.dirname"}))
@@ -149,9 +151,9 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
     }
     if (oneOf(dotted, {"list", "tuple", "sorted", "set", "reversed"})) {
         if (!a0)
-            return newList({}, dotted == QLatin1String("tuple"));
+            return m_ctx.newList({}, dotted == QLatin1String("tuple"));
         bool known = false;
-        QList<Value> items = iterate(*a0, &known);
+        QList<Value> items = m_ctx.iterate(*a0, &known);
         if (!known)
             return Value::unknown(text, evidence);
         if (dotted == QLatin1String("reversed"))
@@ -159,19 +161,19 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
         if (dotted == QLatin1String("sorted")) {
             for (const Value &v : items)
                 if (v.type != T::String)
-                    return newList(items);
+                    return m_ctx.newList(items);
             std::stable_sort(items.begin(), items.end(),
                              [](const Value &x, const Value &y) { return x.text < y.text; });
         }
-        return newList(items, dotted == QLatin1String("tuple"));
+        return m_ctx.newList(items, dotted == QLatin1String("tuple"));
     }
     if (dotted == QLatin1String("dict")) {
-        Value d = newDict();
+        Value d = m_ctx.newDict();
         if (a0 && a0->type == T::Dict) {
             d.dict->entries = a0->dict->entries;
         } else if (a0) {
             bool known = false;
-            for (const Value &pair : iterate(*a0, &known)) {
+            for (const Value &pair : m_ctx.iterate(*a0, &known)) {
                 const QList<Value> kv = pair.items();
                 if (kv.size() == 2)
                     d.dict->set(kv.at(0), kv.at(1));
@@ -198,13 +200,13 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
         QList<Value> items;
         for (double i = from; (by > 0 ? i < to : i > to) && items.size() < kMaxRange; i += by)
             items << Value::number_(i);
-        return newList(items);
+        return m_ctx.newList(items);
     }
     if (dotted == QLatin1String("enumerate") || dotted == QLatin1String("zip")) {
         QList<QList<Value>> columns;
         if (dotted == QLatin1String("enumerate") && a0) {
             bool known = false;
-            const QList<Value> items = iterate(*a0, &known);
+            const QList<Value> items = m_ctx.iterate(*a0, &known);
             if (!known)
                 return Value::unknown(text, evidence);
             QList<Value> index;
@@ -214,7 +216,7 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
         } else {
             for (const Value &v : args.positional) {
                 bool known = false;
-                columns << iterate(v, &known);
+                columns << m_ctx.iterate(v, &known);
                 if (!known)
                     return Value::unknown(text, evidence);
             }
@@ -227,17 +229,17 @@ std::optional<Value> PythonLaunchEvaluator::callBuiltin(const QString &dotted, c
             QList<Value> row;
             for (const auto &c : columns)
                 row << c.at(r);
-            out << newList(row, true);
+            out << m_ctx.newList(row, true);
         }
-        return newList(out);
+        return m_ctx.newList(out);
     }
     if (oneOf(dotted, {"print", "logging.info", "logging.warning", "logging.debug"}))
         return Value::none();
     return std::nullopt;
 }
 
-Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &method,
-                                        const CallArgs &args, TSNode call)
+Value PythonLaunchBuiltins::callMethod(const Value &object, const QString &method,
+                                       const CallArgs &args, TSNode call)
 {
     using T = Value::Type;
     const Value *a0 = args.get(0);
@@ -247,19 +249,19 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
     if (object.type == T::List) {
         ListData &list = *object.list;
         if (is({"append", "add_action", "add_entity"}) && a0) {
-            append(object, *a0);
+            m_ctx.append(object, *a0);
             return Value::none();
         }
         if (is({"extend", "add_actions", "add_entities"}) && a0) {
             if (a0->type == T::List) {
                 // keep the guards the items were added under
-                const GuardPath here = relativeGuards(list.createdUnder, m_guards);
+                const GuardPath here = relativeGuards(list.createdUnder, m_ctx.guards);
                 for (qsizetype i = 0; i < a0->list->items.size(); ++i) {
                     list.items << a0->list->items.at(i);
                     list.guards << here + a0->list->guards.value(i);
                 }
             } else {
-                append(object, *a0);
+                m_ctx.append(object, *a0);
             }
             return Value::none();
         }
@@ -269,11 +271,11 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
                 a0->number < 0 ? list.items.size() + qsizetype(a0->number) : qsizetype(a0->number),
                 list.items.size());
             list.items.insert(at, *a1);
-            list.guards.insert(at, relativeGuards(list.createdUnder, m_guards));
+            list.guards.insert(at, relativeGuards(list.createdUnder, m_ctx.guards));
             return Value::none();
         }
         if (is({"copy"}))
-            return newList(object.items(), list.tuple);
+            return m_ctx.newList(object.items(), list.tuple);
         if (is({"pop"}) && !list.items.isEmpty()) {
             qsizetype at = list.items.size() - 1;
             if (a0 && a0->type == T::Number)
@@ -285,7 +287,7 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
                 return v;
             }
         }
-        return unknownAt(call);
+        return m_ctx.unknownAt(call);
     }
     if (object.type == T::Dict) {
         DictData &dict = *object.dict;
@@ -293,11 +295,11 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
             QList<Value> out;
             for (const auto &e : dict.entries) {
                 if (method == QLatin1String("items"))
-                    out << newList({e.first, e.second}, true);
+                    out << m_ctx.newList({e.first, e.second}, true);
                 else
                     out << (method == QLatin1String("keys") ? e.first : e.second);
             }
-            return newList(out);
+            return m_ctx.newList(out);
         }
         if (is({"get", "pop", "setdefault"}) && a0) {
             if (const Value *v = dict.find(*a0))
@@ -316,11 +318,11 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
             return Value::none();
         }
         if (is({"copy"})) {
-            Value d = newDict();
+            Value d = m_ctx.newDict();
             d.dict->entries = dict.entries;
             return d;
         }
-        return unknownAt(call);
+        return m_ctx.unknownAt(call);
     }
     if (object.type == T::String) {
         const QString &s = object.text;
@@ -328,9 +330,9 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
             return formatString(s, args.positional, args.keywords, false, call);
         if (is({"join"}) && a0) {
             bool known = false;
-            const QList<Value> items = iterate(*a0, &known);
+            const QList<Value> items = m_ctx.iterate(*a0, &known);
             if (!known)
-                return unknownAt(call);
+                return m_ctx.unknownAt(call);
             QList<Substitution> parts;
             for (qsizetype i = 0; i < items.size(); ++i) {
                 if (i > 0)
@@ -377,37 +379,37 @@ Value PythonLaunchEvaluator::callMethod(const Value &object, const QString &meth
             QList<Value> items;
             for (const QString &p : pieces)
                 items << Value::string(p);
-            return newList(items);
+            return m_ctx.newList(items);
         }
         if (is({"encode", "decode"}))
             return object;
-        return unknownAt(call);
+        return m_ctx.unknownAt(call);
     }
     if (object.type == T::Subst || object.type == T::Source) {
         // LaunchConfiguration('x').perform(context), FindPackageShare('p').find('p'), '...'.strip()
         if (is({"perform", "find", "strip", "resolve", "absolute", "as_posix", "expanduser"}))
             return object;
-        return unknownAt(call);
+        return m_ctx.unknownAt(call);
     }
     if (object.type == T::Context) {
         if (is({"perform_substitution"}) && a0)
             return *a0;
         if (object.text == QLatin1String("launch_configurations") && is({"get"}) && a0) {
             if (a0->type != T::String)
-                return unknownAt(call);
+                return m_ctx.unknownAt(call);
             Substitution config = Substitution::configuration(a0->text);
             if (a1 && a1->type != T::None)
                 config.parts << a1->toSubstitution();
             return Value::substitution(config);
         }
-        return unknownAt(call);
+        return m_ctx.unknownAt(call);
     }
-    return unknownAt(call);
+    return m_ctx.unknownAt(call);
 }
 
-Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Value> &positional,
-                                          const QList<QPair<QString, Value>> &keywords,
-                                          bool percent, TSNode node)
+Value PythonLaunchBuiltins::formatString(const QString &format, const QList<Value> &positional,
+                                         const QList<QPair<QString, Value>> &keywords, bool percent,
+                                         TSNode node)
 {
     QList<Substitution> parts;
     QString literal;
@@ -423,13 +425,13 @@ Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Val
             while (j < format.size() && QStringLiteral("#0- +.123456789").contains(format.at(j)))
                 ++j;
             if (j >= format.size())
-                return unknownAt(node);
+                return m_ctx.unknownAt(node);
             const QChar type = format.at(j);
             if (type == QLatin1Char('%')) {
                 literal += QLatin1Char('%');
             } else {
                 if (next >= positional.size() || !QStringLiteral("sdifrg").contains(type))
-                    return unknownAt(node);
+                    return m_ctx.unknownAt(node);
                 const Value &v = positional.at(next++);
                 flush();
                 if (type == QLatin1Char('d') || type == QLatin1Char('i'))
@@ -451,10 +453,10 @@ Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Val
                 continue;
             }
             if (c == QLatin1Char('}'))
-                return unknownAt(node);
+                return m_ctx.unknownAt(node);
             const qsizetype close = format.indexOf(QLatin1Char('}'), i);
             if (close < 0)
-                return unknownAt(node);
+                return m_ctx.unknownAt(node);
             QString field = format.mid(i + 1, close - i - 1)
                                 .section(QLatin1Char(':'), 0, 0)
                                 .section(QLatin1Char('!'), 0, 0);
@@ -470,7 +472,7 @@ Value PythonLaunchEvaluator::formatString(const QString &format, const QList<Val
                     if (k.first == field)
                         v = &k.second;
             if (!v)
-                return unknownAt(node);
+                return m_ctx.unknownAt(node);
             flush();
             parts << textOfValue(*v);
             i = close;

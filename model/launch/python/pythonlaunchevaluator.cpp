@@ -8,7 +8,6 @@ namespace rosarch::pylaunch {
 
 namespace {
 constexpr int kMaxCallDepth = 12;
-constexpr int kMaxSteps = 200000;
 constexpr int kMaxIterations = 64;
 
 Evidence spanEvidence(const SyntaxTree &tree, TSNode from, TSNode to)
@@ -31,24 +30,9 @@ GuardPtr negated(const GuardPtr &g)
 
 } // namespace
 
-PythonLaunchEvaluator::PythonLaunchEvaluator(const SyntaxTree &tree) : m_tree(tree)
+PythonLaunchEvaluator::PythonLaunchEvaluator(const SyntaxTree &tree)
+    : m_ctx(tree), m_builtins(m_ctx), m_api(m_ctx, *this), m_expressions(m_ctx, *this, m_builtins)
 {
-    m_module = newScope(nullptr);
-}
-
-PythonLaunchEvaluator::~PythonLaunchEvaluator()
-{
-    for (const auto &l : m_lists)
-        if (auto list = l.lock())
-            list->items.clear();
-    for (const auto &d : m_dicts)
-        if (auto dict = d.lock())
-            dict->entries.clear();
-    for (const auto &s : m_scopes)
-        if (auto scope = s.lock()) {
-            scope->vars.clear();
-            scope->parent.reset();
-        }
 }
 
 TSNode PythonLaunchEvaluator::launchFunction(const SyntaxTree &tree)
@@ -65,11 +49,12 @@ TSNode PythonLaunchEvaluator::launchFunction(const SyntaxTree &tree)
 QList<LaunchAction> PythonLaunchEvaluator::run()
 {
     Frame module;
-    module.scope = m_module;
-    m_frame = &module;
-    m_module->vars.insert(QStringLiteral("__name__"), Value::string(QStringLiteral("__rosarch__")));
-    for (TSNode statement : ts::namedChildren(m_tree.root())) {
-        if (stopped())
+    module.scope = m_ctx.module;
+    m_ctx.frame = &module;
+    m_ctx.module->vars.insert(QStringLiteral("__name__"),
+                              Value::string(QStringLiteral("__rosarch__")));
+    for (TSNode statement : ts::namedChildren(m_ctx.tree.root())) {
+        if (m_ctx.stopped())
             break;
         // Module-level calls (main(), launch_testing runners) are not part of the description.
         if (ts::is(statement, "expression_statement") &&
@@ -80,58 +65,46 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
     module.returned = false;
 
     QList<LaunchAction> actions;
-    const Value *function = m_module->lookup(QStringLiteral("generate_launch_description"));
+    const Value *function = m_ctx.module->lookup(QStringLiteral("generate_launch_description"));
     if (!function || function->type != Value::Type::Function) {
         Diagnostic d;
         d.code = QStringLiteral("no-launch-description");
         d.message =
-            QStringLiteral("%1 defines no generate_launch_description().").arg(m_tree.file());
-        d.evidence.file = m_tree.file();
-        m_diagnostics << d;
+            QStringLiteral("%1 defines no generate_launch_description().").arg(m_ctx.tree.file());
+        d.evidence.file = m_ctx.tree.file();
+        m_ctx.diagnostics << d;
         return actions;
     }
     const Value result = callFunction(*function, CallArgs{}, TSNode{});
     if (result.type == Value::Type::List || result.type == Value::Type::Action ||
         result.type == Value::Type::Unknown) {
         actions = toActions(result);
-    } else if (!m_exhausted) {
+    } else if (!m_ctx.exhausted) {
         Diagnostic d;
         d.code = QStringLiteral("launch-description-unknown");
         d.message =
             QStringLiteral("generate_launch_description() in %1 returns no launch description "
                            "that can be read statically.")
-                .arg(m_tree.file());
-        d.evidence = m_tree.evidence(ts::field(function->node, "name"));
-        m_diagnostics << d;
+                .arg(m_ctx.tree.file());
+        d.evidence = m_ctx.tree.evidence(ts::field(function->node, "name"));
+        m_ctx.diagnostics << d;
     }
-    if (m_exhausted) {
+    if (m_ctx.exhausted) {
         Diagnostic d;
         d.code = QStringLiteral("launch-evaluation-limit");
         d.message = QStringLiteral("%1 needs more evaluation steps than allowed; the launch "
                                    "description may be incomplete.")
-                        .arg(m_tree.file());
-        d.evidence.file = m_tree.file();
-        m_diagnostics << d;
+                        .arg(m_ctx.tree.file());
+        d.evidence.file = m_ctx.tree.file();
+        m_ctx.diagnostics << d;
     }
     return actions;
-}
-
-bool PythonLaunchEvaluator::step()
-{
-    if (++m_steps > kMaxSteps)
-        m_exhausted = true;
-    return !m_exhausted;
-}
-
-bool PythonLaunchEvaluator::stopped() const
-{
-    return m_exhausted || m_frame->returned || m_frame->breaking || m_frame->continuing;
 }
 
 void PythonLaunchEvaluator::execBlock(TSNode block)
 {
     for (TSNode statement : ts::namedChildren(block)) {
-        if (stopped())
+        if (m_ctx.stopped())
             return;
         execStatement(statement);
     }
@@ -139,7 +112,7 @@ void PythonLaunchEvaluator::execBlock(TSNode block)
 
 void PythonLaunchEvaluator::execStatement(TSNode n)
 {
-    if (!step())
+    if (!m_ctx.step())
         return;
     const std::string_view t = ts::type(n);
     if (t == "expression_statement") {
@@ -154,22 +127,22 @@ void PythonLaunchEvaluator::execStatement(TSNode n)
             }
             if (ts::isNull(right))
                 return; // a bare annotation
-            const Value v = eval(right);
+            const Value v = m_expressions.eval(right);
             for (TSNode target : targets)
                 assign(target, v);
         } else if (ts::is(e, "augmented_assignment")) {
             TSNode left = ts::field(e, "left");
-            const Value current = eval(left);
-            const Value right = eval(ts::field(e, "right"));
-            const std::string_view op = m_tree.view(ts::field(e, "operator"));
+            const Value current = m_expressions.eval(left);
+            const Value right = m_expressions.eval(ts::field(e, "right"));
+            const std::string_view op = m_ctx.tree.view(ts::field(e, "operator"));
             if (op == "+=" && current.type == Value::Type::List && !current.list->tuple) {
                 bool known = false;
-                const QList<Value> items = iterate(right, &known);
+                const QList<Value> items = m_ctx.iterate(right, &known);
                 if (known)
                     for (const Value &item : items)
-                        append(current, item);
+                        m_ctx.append(current, item);
                 else
-                    append(current, right);
+                    m_ctx.append(current, right);
             } else if (op == "+=" && current.isStringLike() && right.isStringLike()) {
                 assign(left, Value::substitution(
                                  concatenate({current.toSubstitution(), right.toSubstitution()})));
@@ -177,15 +150,15 @@ void PythonLaunchEvaluator::execStatement(TSNode n)
                        right.type == Value::Type::Number) {
                 assign(left, Value::number_(current.number + right.number));
             } else {
-                assign(left, unknownAt(e));
+                assign(left, m_ctx.unknownAt(e));
             }
         } else {
-            eval(e);
+            m_expressions.eval(e);
         }
     } else if (t == "return_statement") {
         TSNode e = ts_node_named_child(n, 0);
-        m_frame->returnValue = ts::isNull(e) ? Value::none() : eval(e);
-        m_frame->returned = true;
+        m_ctx.frame->returnValue = ts::isNull(e) ? Value::none() : m_expressions.eval(e);
+        m_ctx.frame->returned = true;
     } else if (t == "if_statement") {
         execIf(n);
     } else if (t == "for_statement") {
@@ -204,7 +177,7 @@ void PythonLaunchEvaluator::execStatement(TSNode n)
             if (ts::is(c, "as_pattern"))
                 for (TSNode target : ts::namedChildren(c))
                     if (ts::is(target, "as_pattern_target"))
-                        assign(ts_node_named_child(target, 0), unknownAt(c));
+                        assign(ts_node_named_child(target, 0), m_ctx.unknownAt(c));
             return true;
         });
         execBlock(ts::field(n, "body"));
@@ -213,25 +186,25 @@ void PythonLaunchEvaluator::execStatement(TSNode n)
         Value f;
         f.type = Value::Type::Function;
         f.node = def;
-        f.closure = m_frame->scope;
-        f.text = m_tree.text(ts::field(def, "name"));
+        f.closure = m_ctx.frame->scope;
+        f.text = m_ctx.tree.text(ts::field(def, "name"));
         if (ts::is(def, "function_definition"))
             bind(f.text, f);
         else if (ts::is(def, "class_definition"))
             bind(f.text, Value::module(f.text));
     } else if (t == "class_definition") {
-        const QString name = m_tree.text(ts::field(n, "name"));
+        const QString name = m_ctx.tree.text(ts::field(n, "name"));
         bind(name, Value::module(name));
     } else if (t == "import_statement" || t == "import_from_statement") {
         execImport(n);
     } else if (t == "global_statement" || t == "nonlocal_statement") {
         for (TSNode id : ts::namedChildren(n))
             if (ts::is(id, "identifier"))
-                m_frame->globals.insert(m_tree.text(id));
+                m_ctx.frame->globals.insert(m_ctx.tree.text(id));
     } else if (t == "break_statement") {
-        m_frame->breaking = true;
+        m_ctx.frame->breaking = true;
     } else if (t == "continue_statement") {
-        m_frame->continuing = true;
+        m_ctx.frame->continuing = true;
     }
     // while loops, match, raise, assert, del, pass: nothing a launch description needs
 }
@@ -241,66 +214,67 @@ void PythonLaunchEvaluator::execImport(TSNode n)
     if (ts::is(n, "import_statement")) {
         for (TSNode name : ts::fieldChildren(n, "name")) {
             if (ts::is(name, "dotted_name")) {
-                const QString first = m_tree.text(name).section(QLatin1Char('.'), 0, 0);
+                const QString first = m_ctx.tree.text(name).section(QLatin1Char('.'), 0, 0);
                 bind(first, Value::module(first));
             } else if (ts::is(name, "aliased_import")) {
-                bind(m_tree.text(ts::field(name, "alias")),
-                     Value::module(m_tree.text(ts::field(name, "name"))));
+                bind(m_ctx.tree.text(ts::field(name, "alias")),
+                     Value::module(m_ctx.tree.text(ts::field(name, "name"))));
             }
         }
         return;
     }
-    const QString from = m_tree.text(ts::field(n, "module_name"));
+    const QString from = m_ctx.tree.text(ts::field(n, "module_name"));
     const QString prefix = from.isEmpty() ? QString() : from + QLatin1Char('.');
     for (TSNode name : ts::fieldChildren(n, "name")) {
         if (ts::is(name, "dotted_name")) {
-            const QString text = m_tree.text(name);
+            const QString text = m_ctx.tree.text(name);
             bind(text, Value::module(prefix + text));
         } else if (ts::is(name, "aliased_import")) {
-            bind(m_tree.text(ts::field(name, "alias")),
-                 Value::module(prefix + m_tree.text(ts::field(name, "name"))));
+            bind(m_ctx.tree.text(ts::field(name, "alias")),
+                 Value::module(prefix + m_ctx.tree.text(ts::field(name, "name"))));
         }
     }
 }
 
 void PythonLaunchEvaluator::bind(const QString &name, const Value &value)
 {
-    if (m_frame->globals.contains(name))
-        m_module->vars.insert(name, value);
+    if (m_ctx.frame->globals.contains(name))
+        m_ctx.module->vars.insert(name, value);
     else
-        m_frame->scope->vars.insert(name, value);
+        m_ctx.frame->scope->vars.insert(name, value);
 }
 
 void PythonLaunchEvaluator::assign(TSNode target, const Value &value)
 {
     const std::string_view t = ts::type(target);
     if (t == "identifier") {
-        bind(m_tree.text(target), value);
+        bind(m_ctx.tree.text(target), value);
     } else if (t == "pattern_list" || t == "tuple_pattern" || t == "list_pattern" || t == "tuple" ||
                t == "list" || t == "expression_list") {
         bool known = false;
-        const QList<Value> items = iterate(value, &known);
+        const QList<Value> items = m_ctx.iterate(value, &known);
         const std::vector<TSNode> targets = ts::namedChildren(target);
         qsizetype i = 0;
         for (TSNode sub : targets) {
             if (ts::is(sub, "list_splat_pattern") || ts::is(sub, "list_splat")) {
                 const qsizetype rest = items.size() - qsizetype(targets.size()) + 1;
                 assign(ts_node_named_child(sub, 0),
-                       known ? newList(items.mid(i, qMax<qsizetype>(0, rest))) : unknownAt(sub));
+                       known ? m_ctx.newList(items.mid(i, qMax<qsizetype>(0, rest)))
+                             : m_ctx.unknownAt(sub));
                 i += qMax<qsizetype>(0, rest);
                 continue;
             }
-            assign(sub, known && i < items.size() ? items.at(i) : unknownAt(sub));
+            assign(sub, known && i < items.size() ? items.at(i) : m_ctx.unknownAt(sub));
             ++i;
         }
     } else if (t == "parenthesized_expression") {
         assign(ts_node_named_child(target, 0), value);
     } else if (t == "subscript") {
-        const Value object = eval(ts::field(target, "value"));
-        const Value key = eval(ts::field(target, "subscript"));
+        const Value object = m_expressions.eval(ts::field(target, "value"));
+        const Value key = m_expressions.eval(ts::field(target, "subscript"));
         if (object.type == Value::Type::Dict) {
             // A write in an `else` branch does not overwrite the best guess.
-            const GuardPath rel = relativeGuards(object.dict->createdUnder, m_guards);
+            const GuardPath rel = relativeGuards(object.dict->createdUnder, m_ctx.guards);
             if (inBestGuess(rel) || !object.dict->find(key))
                 object.dict->set(key, value);
         } else if (object.type == Value::Type::List && key.type == Value::Type::Number) {
@@ -324,7 +298,7 @@ void PythonLaunchEvaluator::execIf(TSNode n)
 
 void PythonLaunchEvaluator::execIfChain(const QList<TSNode> &clauses, qsizetype from)
 {
-    if (from >= clauses.size() || stopped())
+    if (from >= clauses.size() || m_ctx.stopped())
         return;
     TSNode clause = clauses.at(from);
     if (ts::is(clause, "else_clause")) {
@@ -333,7 +307,7 @@ void PythonLaunchEvaluator::execIfChain(const QList<TSNode> &clauses, qsizetype 
     }
     TSNode condition = ts::field(clause, "condition");
     TSNode body = ts::field(clause, "consequence");
-    const std::optional<bool> truth = eval(condition).truth();
+    const std::optional<bool> truth = m_expressions.eval(condition).truth();
     if (truth.has_value()) {
         if (*truth)
             execBlock(body);
@@ -345,14 +319,14 @@ void PythonLaunchEvaluator::execIfChain(const QList<TSNode> &clauses, qsizetype 
     // Undecidable: run both branches, each under a guard. Names keep the first branch's values
     // (the best guess); list additions keep both, wrapped into conditional groups.
     auto guard = std::make_shared<Guard>();
-    guard->text = oneLine(textOf(condition));
-    guard->evidence = spanEvidence(m_tree, clause, body);
-    Frame &frame = *m_frame;
+    guard->text = oneLine(m_ctx.textOf(condition));
+    guard->evidence = spanEvidence(m_ctx.tree, clause, body);
+    Frame &frame = *m_ctx.frame;
     const QHash<QString, Value> before = frame.scope->vars;
 
-    m_guards.append(guard);
+    m_ctx.guards.append(guard);
     execBlock(body);
-    m_guards.removeLast();
+    m_ctx.guards.removeLast();
     const bool thenReturned = frame.returned;
     const Value thenValue = frame.returnValue;
     const bool thenBreaking = frame.breaking, thenContinuing = frame.continuing;
@@ -364,11 +338,11 @@ void PythonLaunchEvaluator::execIfChain(const QList<TSNode> &clauses, qsizetype 
     if (from + 1 < clauses.size()) {
         auto g = std::make_shared<Guard>(*guard);
         g->unless = true;
-        g->evidence = spanEvidence(m_tree, clauses.at(from + 1), clauses.last());
+        g->evidence = spanEvidence(m_ctx.tree, clauses.at(from + 1), clauses.last());
         elseGuard = g;
-        m_guards.append(elseGuard);
+        m_ctx.guards.append(elseGuard);
         execIfChain(clauses, from + 1);
-        m_guards.removeLast();
+        m_ctx.guards.removeLast();
     } else {
         elseGuard = negated(guard);
     }
@@ -399,7 +373,7 @@ Value PythonLaunchEvaluator::combineReturns(const GuardPtr &guard, const Value &
 {
     if (!holdsActions(taken) && !holdsActions(other))
         return taken;
-    Value out = newList({});
+    Value out = m_ctx.newList({});
     out.list->launchDescription = true;
     out.list->items << taken;
     out.list->guards << GuardPath{guard};
@@ -415,36 +389,36 @@ void PythonLaunchEvaluator::execFor(TSNode n)
     TSNode left = ts::field(n, "left");
     TSNode body = ts::field(n, "body");
     bool known = false;
-    const QList<Value> items = iterate(eval(ts::field(n, "right")), &known);
-    Frame &frame = *m_frame;
+    const QList<Value> items = m_ctx.iterate(m_expressions.eval(ts::field(n, "right")), &known);
+    Frame &frame = *m_ctx.frame;
     if (!known) {
         // Loop over something unknown: its body once, under an undecided guard.
         auto guard = std::make_shared<Guard>();
-        guard->text = oneLine(
-            QStringLiteral("for %1 in %2").arg(textOf(left), textOf(ts::field(n, "right"))));
-        guard->evidence = m_tree.evidence(n);
-        assign(left, unknownAt(left));
-        m_guards.append(guard);
+        guard->text = oneLine(QStringLiteral("for %1 in %2")
+                                  .arg(m_ctx.textOf(left), m_ctx.textOf(ts::field(n, "right"))));
+        guard->evidence = m_ctx.tree.evidence(n);
+        assign(left, m_ctx.unknownAt(left));
+        m_ctx.guards.append(guard);
         execBlock(body);
-        m_guards.removeLast();
+        m_ctx.guards.removeLast();
         frame.breaking = frame.continuing = false;
         return;
     }
     bool broke = false;
     int count = 0;
     for (const Value &item : items) {
-        if (stopped())
+        if (m_ctx.stopped())
             break;
         if (++count > kMaxIterations) {
             Diagnostic d;
             d.code = QStringLiteral("launch-loop-limit");
             d.message =
                 QStringLiteral("A loop in %1 runs more than %2 times; only the first %2 are read.")
-                    .arg(m_tree.file())
+                    .arg(m_ctx.tree.file())
                     .arg(kMaxIterations);
-            d.evidence = m_tree.evidence(n);
-            if (!m_diagnostics.contains(d))
-                m_diagnostics << d;
+            d.evidence = m_ctx.tree.evidence(n);
+            if (!m_ctx.diagnostics.contains(d))
+                m_ctx.diagnostics << d;
             break;
         }
         assign(left, item);
@@ -463,14 +437,14 @@ void PythonLaunchEvaluator::execFor(TSNode n)
 
 Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs &args, TSNode call)
 {
-    if (m_callDepth >= kMaxCallDepth || m_exhausted)
-        return ts::isNull(call) ? Value::unknown(function.text) : unknownAt(call);
+    if (m_ctx.callDepth >= kMaxCallDepth || m_ctx.exhausted)
+        return ts::isNull(call) ? Value::unknown(function.text) : m_ctx.unknownAt(call);
     const bool lambda = ts::is(function.node, "lambda");
     Frame frame;
-    frame.scope = newScope(function.closure);
-    Frame *caller = m_frame;
-    m_frame = &frame;
-    ++m_callDepth;
+    frame.scope = m_ctx.newScope(function.closure);
+    Frame *caller = m_ctx.frame;
+    m_ctx.frame = &frame;
+    ++m_ctx.callDepth;
 
     // Bind parameters: positional, keyword, *args, **kwargs, defaults.
     qsizetype nextPositional = 0;
@@ -490,16 +464,16 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
             if (ts::is(inner, "identifier")) {
                 nameNode = inner;
             } else if (ts::is(inner, "list_splat_pattern")) {
-                starName = m_tree.text(ts_node_named_child(inner, 0));
+                starName = m_ctx.tree.text(ts_node_named_child(inner, 0));
                 continue;
             } else if (ts::is(inner, "dictionary_splat_pattern")) {
-                starStarName = m_tree.text(ts_node_named_child(inner, 0));
+                starStarName = m_ctx.tree.text(ts_node_named_child(inner, 0));
                 continue;
             }
         }
         if (!ts::is(nameNode, "identifier"))
             continue;
-        const QString name = m_tree.text(nameNode);
+        const QString name = m_ctx.tree.text(nameNode);
         Value v;
         bool found = false;
         if (nextPositional < args.positional.size()) {
@@ -513,13 +487,15 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
             }
         }
         if (!found)
-            v = ts::isNull(defaultNode) ? unknownAt(nameNode) : eval(defaultNode);
+            v = ts::isNull(defaultNode) ? m_ctx.unknownAt(nameNode)
+                                        : m_expressions.eval(defaultNode);
         frame.scope->vars.insert(name, v);
     }
     if (!starName.isEmpty())
-        frame.scope->vars.insert(starName, newList(args.positional.mid(nextPositional), true));
+        frame.scope->vars.insert(starName,
+                                 m_ctx.newList(args.positional.mid(nextPositional), true));
     if (!starStarName.isEmpty()) {
-        Value kwargs = newDict();
+        Value kwargs = m_ctx.newDict();
         for (qsizetype k = 0; k < args.keywords.size(); ++k)
             if (!usedKeyword.at(k))
                 kwargs.dict->set(Value::string(args.keywords.at(k).first),
@@ -529,7 +505,7 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
 
     Value result;
     if (lambda) {
-        result = eval(ts::field(function.node, "body"));
+        result = m_expressions.eval(ts::field(function.node, "body"));
     } else {
         execBlock(ts::field(function.node, "body"));
         result = frame.returned ? frame.returnValue : Value::none();
@@ -537,14 +513,38 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
             result = combineReturns(frame.pendingReturns.at(i).first,
                                     frame.pendingReturns.at(i).second, result);
     }
-    --m_callDepth;
-    m_frame = caller;
+    --m_ctx.callDepth;
+    m_ctx.frame = caller;
     return result;
 }
 
-QString PythonLaunchEvaluator::textOf(TSNode node) const
+Value PythonLaunchEvaluator::evalCall(TSNode n)
 {
-    return m_tree.text(node);
+    TSNode function = ts::field(n, "function");
+    Value callee;
+    if (ts::is(function, "attribute")) {
+        const Value object = m_expressions.eval(ts::field(function, "object"));
+        const QString method = m_ctx.tree.text(ts::field(function, "attribute"));
+        if (object.type != Value::Type::Module)
+            return m_builtins.callMethod(object, method, m_expressions.evalArguments(n), n);
+        callee = Value::module(object.text + QLatin1Char('.') + method);
+    } else {
+        callee = m_expressions.eval(function);
+    }
+    if (callee.type == Value::Type::Function)
+        return callFunction(callee, m_expressions.evalArguments(n), n);
+    if (callee.type != Value::Type::Module)
+        return m_ctx.unknownAt(n);
+    const CallArgs args = m_expressions.evalArguments(n);
+    std::optional<Value> v = m_builtins.callBuiltin(callee.text, args, n);
+    if (!v)
+        v = m_api.callLaunchApi(callee.text.section(QLatin1Char('.'), -1), args, n);
+    if (!v)
+        return m_ctx.unknownAt(n);
+    if (v->type == Value::Type::Unknown && !v->evidence.isValid())
+        v->evidence =
+            m_ctx.tree.evidence(n); // an Unresolved action made from it points at the call
+    return *v;
 }
 
 } // namespace rosarch::pylaunch

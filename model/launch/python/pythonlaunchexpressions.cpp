@@ -1,226 +1,83 @@
-// Expression evaluation of the launch-file evaluator: literals, strings, containers and operators.
+// Expression evaluation of the launch-file evaluator: names, literals, strings, containers,
+// operators, attributes, subscripts and comprehensions. Calls go to the interpreter.
+#include "pythonlaunchexpressions.h"
+#include "pythonlaunchbuiltins.h"
 #include "pythonlaunchevaluator.h"
+#include "pythonlaunchoperators.h"
 
 #include <cmath>
+#include <functional>
 
 namespace rosarch::pylaunch {
 
 namespace {
 constexpr int kMaxExpressionDepth = 200;
-constexpr int kMaxIteratedChars = 256;
-constexpr qsizetype kMaxListSize = 10000;
 constexpr qsizetype kMaxStringSize = 1 << 20;
 constexpr qsizetype kMaxParts = 10000;
-
-QString decodeEscapes(const QString &s)
-{
-    if (!s.contains(QLatin1Char('\\')))
-        return s;
-    QString out;
-    out.reserve(s.size());
-    for (qsizetype i = 0; i < s.size(); ++i) {
-        const QChar c = s.at(i);
-        if (c != QLatin1Char('\\') || i + 1 >= s.size()) {
-            out += c;
-            continue;
-        }
-        const QChar n = s.at(++i);
-        switch (n.unicode()) {
-        case 'n':
-            out += QLatin1Char('\n');
-            break;
-        case 't':
-            out += QLatin1Char('\t');
-            break;
-        case 'r':
-            out += QLatin1Char('\r');
-            break;
-        case '\\':
-            out += QLatin1Char('\\');
-            break;
-        case '\'':
-            out += QLatin1Char('\'');
-            break;
-        case '"':
-            out += QLatin1Char('"');
-            break;
-        case '\n':
-            break; // line continuation
-        default:
-            out += QLatin1Char('\\');
-            out += n;
-        }
-    }
-    return out;
-}
-
-/// The text a value contributes to a string (f-string, str(), format): literals as Python prints
-/// them.
-Substitution asText(const Value &v)
-{
-    if (const auto literal = v.literalText())
-        return Substitution::literal(*literal);
-    return v.toSubstitution();
-}
-
-std::optional<bool> compare(std::string_view op, const Value &a, const Value &b)
-{
-    using T = Value::Type;
-    if (op == "==" || op == "!=") {
-        std::optional<bool> eq;
-        if (a.isLiteral() && b.isLiteral())
-            eq = a.sameLiteral(b);
-        else if (a.type == T::Subst && b.type == T::Subst && a.subst == b.subst)
-            eq = true;
-        else if ((a.type == T::None) != (b.type == T::None) &&
-                 (a.type == T::List || b.type == T::List || a.type == T::Dict ||
-                  b.type == T::Dict || a.type == T::Action || b.type == T::Action))
-            eq = false;
-        if (!eq)
-            return std::nullopt;
-        return op == "==" ? *eq : !*eq;
-    }
-    if (op == "is" || op == "is not") {
-        std::optional<bool> same;
-        if (a.type == T::None || b.type == T::None) {
-            const Value &other = a.type == T::None ? b : a;
-            if (other.type == T::None)
-                same = true;
-            else if (other.type != T::Unknown && other.type != T::Module &&
-                     other.type != T::Context)
-                same = false;
-        } else if (a.type == T::Bool && b.type == T::Bool) {
-            same = a.boolean == b.boolean;
-        }
-        if (!same)
-            return std::nullopt;
-        return op == "is" ? *same : !*same;
-    }
-    if (op == "in" || op == "not in") {
-        std::optional<bool> found;
-        if (b.type == T::List && (a.isLiteral() || a.type == T::Subst)) {
-            bool decided = true;
-            found = false;
-            for (const Value &item : b.items()) {
-                if (a.sameLiteral(item)) {
-                    found = true;
-                    break;
-                }
-                if (!item.isLiteral())
-                    decided = false;
-            }
-            if (!*found && !decided)
-                found.reset();
-        } else if (b.type == T::Dict && a.isLiteral()) {
-            found = b.dict->find(a) != nullptr;
-        } else if (b.type == T::String && a.type == T::String) {
-            found = b.text.contains(a.text);
-        }
-        if (!found)
-            return std::nullopt;
-        return op == "in" ? *found : !*found;
-    }
-    if ((a.type == T::Number || a.type == T::Bool) && (b.type == T::Number || b.type == T::Bool)) {
-        const double x = a.type == T::Bool ? a.boolean : a.number;
-        const double y = b.type == T::Bool ? b.boolean : b.number;
-        if (op == "<")
-            return x < y;
-        if (op == "<=")
-            return x <= y;
-        if (op == ">")
-            return x > y;
-        if (op == ">=")
-            return x >= y;
-    }
-    if (a.type == T::String && b.type == T::String) {
-        const int c = a.text.compare(b.text);
-        if (op == "<")
-            return c < 0;
-        if (op == "<=")
-            return c <= 0;
-        if (op == ">")
-            return c > 0;
-        if (op == ">=")
-            return c >= 0;
-    }
-    return std::nullopt;
-}
+constexpr int kMaxComprehensionItems = 256;
 } // namespace
 
-Value PythonLaunchEvaluator::unknownAt(TSNode node) const
+PythonLaunchExpressions::PythonLaunchExpressions(PythonLaunchContext &ctx,
+                                                 PythonLaunchEvaluator &interpreter,
+                                                 PythonLaunchBuiltins &builtins)
+    : m_ctx(ctx), m_interpreter(interpreter), m_builtins(builtins)
 {
-    return Value::unknown(m_tree.text(node), m_tree.evidence(node));
 }
 
-Value PythonLaunchEvaluator::newList(QList<Value> items, bool tuple)
+CallArgs PythonLaunchExpressions::evalArguments(TSNode call)
 {
-    Value v = Value::makeList(std::move(items), tuple);
-    v.list->createdUnder = m_guards;
-    m_lists.push_back(v.list);
-    return v;
-}
-
-Value PythonLaunchEvaluator::newDict()
-{
-    Value v = Value::makeDict();
-    v.dict->createdUnder = m_guards;
-    m_dicts.push_back(v.dict);
-    return v;
-}
-
-std::shared_ptr<Scope> PythonLaunchEvaluator::newScope(std::shared_ptr<Scope> parent)
-{
-    auto scope = std::make_shared<Scope>();
-    scope->parent = std::move(parent);
-    m_scopes.push_back(scope);
-    return scope;
-}
-
-void PythonLaunchEvaluator::append(const Value &list, const Value &item)
-{
-    if (list.type != Value::Type::List || list.list->items.size() >= kMaxListSize)
-        return;
-    list.list->items << item;
-    list.list->guards << relativeGuards(list.list->createdUnder, m_guards);
-}
-
-QList<Value> PythonLaunchEvaluator::iterate(const Value &value, bool *known) const
-{
-    *known = true;
-    switch (value.type) {
-    case Value::Type::List:
-        return value.items();
-    case Value::Type::Dict: {
-        QList<Value> keys;
-        for (const auto &e : value.dict->entries)
-            keys << e.first;
-        return keys;
+    CallArgs args;
+    TSNode list = ts::field(call, "arguments");
+    if (ts::is(list, "generator_expression")) {
+        args.positional << eval(list);
+        args.positionalNodes << list;
+        return args;
     }
-    case Value::Type::String: {
-        QList<Value> chars;
-        for (QChar c : value.text.left(kMaxIteratedChars))
-            chars << Value::string(QString(c));
-        return chars;
+    for (TSNode c : ts::namedChildren(list)) {
+        const std::string_view t = ts::type(c);
+        if (t == "comment")
+            continue;
+        if (t == "keyword_argument") {
+            TSNode value = ts::field(c, "value");
+            args.keywords.append({m_ctx.tree.text(ts::field(c, "name")), eval(value)});
+            args.keywordNodes << value;
+        } else if (t == "list_splat") {
+            const Value v = eval(ts_node_named_child(c, 0));
+            bool known = false;
+            const QList<Value> items = m_ctx.iterate(v, &known);
+            for (const Value &item : known ? items : QList<Value>{v}) {
+                args.positional << item;
+                args.positionalNodes << c;
+            }
+        } else if (t == "dictionary_splat") {
+            const Value v = eval(ts_node_named_child(c, 0));
+            if (v.type == Value::Type::Dict)
+                for (const auto &e : v.dict->entries)
+                    if (e.first.type == Value::Type::String) {
+                        args.keywords.append({e.first.text, e.second});
+                        args.keywordNodes << c;
+                    }
+        } else {
+            args.positional << eval(c);
+            args.positionalNodes << c;
+        }
     }
-    default:
-        *known = false;
-        return {};
-    }
+    return args;
 }
 
-Value PythonLaunchEvaluator::eval(TSNode node)
+Value PythonLaunchExpressions::eval(TSNode node)
 {
     if (ts::isNull(node))
         return Value::unknown(QString());
-    if (m_exprDepth >= kMaxExpressionDepth || !step())
-        return unknownAt(node);
-    ++m_exprDepth;
+    if (m_ctx.exprDepth >= kMaxExpressionDepth || !m_ctx.step())
+        return m_ctx.unknownAt(node);
+    ++m_ctx.exprDepth;
     Value v = evalNode(node);
-    --m_exprDepth;
+    --m_ctx.exprDepth;
     return v;
 }
 
-Value PythonLaunchEvaluator::evalNode(TSNode n)
+Value PythonLaunchExpressions::evalNode(TSNode n)
 {
     const std::string_view t = ts::type(n);
     if (t == "identifier")
@@ -248,7 +105,7 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
             if (ts::is(c, "list_splat")) {
                 const Value splat = eval(ts_node_named_child(c, 0));
                 bool known = false;
-                const QList<Value> inner = iterate(splat, &known);
+                const QList<Value> inner = m_ctx.iterate(splat, &known);
                 if (known)
                     items += inner;
                 else
@@ -257,17 +114,17 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
             }
             items << eval(c);
         }
-        return newList(items, t == "tuple" || t == "expression_list");
+        return m_ctx.newList(items, t == "tuple" || t == "expression_list");
     }
     if (t == "parenthesized_expression") {
         for (TSNode c : ts::namedChildren(n))
             if (!ts::is(c, "comment"))
                 return eval(c);
-        return unknownAt(n);
+        return m_ctx.unknownAt(n);
     }
     if (t == "dictionary") {
-        Value d = newDict();
-        d.text = m_tree.text(n);
+        Value d = m_ctx.newDict();
+        d.text = m_ctx.tree.text(n);
         for (TSNode c : ts::namedChildren(n)) {
             if (ts::is(c, "pair")) {
                 d.dict->set(eval(ts::field(c, "key")), eval(ts::field(c, "value")));
@@ -287,33 +144,33 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
         return evalBinary(n);
     if (t == "unary_operator") {
         const Value v = eval(ts::field(n, "argument"));
-        const std::string_view op = m_tree.view(ts::field(n, "operator"));
+        const std::string_view op = m_ctx.tree.view(ts::field(n, "operator"));
         if (v.type == Value::Type::Number && op == "-")
             return Value::number_(-v.number, v.text.startsWith(QLatin1Char('-'))
                                                  ? v.text.mid(1)
                                                  : QLatin1Char('-') + v.text);
         if (v.type == Value::Type::Number && op == "+")
             return v;
-        return unknownAt(n);
+        return m_ctx.unknownAt(n);
     }
     if (t == "boolean_operator")
         return evalBoolean(n);
     if (t == "not_operator") {
         const std::optional<bool> truth = eval(ts::field(n, "argument")).truth();
-        return truth ? Value::boolean_(!*truth) : unknownAt(n);
+        return truth ? Value::boolean_(!*truth) : m_ctx.unknownAt(n);
     }
     if (t == "comparison_operator")
         return evalComparison(n);
     if (t == "conditional_expression") {
         const std::vector<TSNode> c = ts::namedChildren(n);
         if (c.size() < 3)
-            return unknownAt(n);
+            return m_ctx.unknownAt(n);
         const std::optional<bool> truth = eval(c[1]).truth();
         // Undecidable: the first alternative is the best guess.
         return (!truth || *truth) ? eval(c[0]) : eval(c[2]);
     }
     if (t == "call")
-        return evalCall(n);
+        return m_interpreter.evalCall(n);
     if (t == "attribute")
         return evalAttribute(n);
     if (t == "subscript")
@@ -322,32 +179,32 @@ Value PythonLaunchEvaluator::evalNode(TSNode n)
         Value f;
         f.type = Value::Type::Function;
         f.node = n;
-        f.closure = m_frame->scope;
+        f.closure = m_ctx.frame->scope;
         f.text = QStringLiteral("lambda");
         return f;
     }
     if (t == "named_expression") {
         const Value v = eval(ts::field(n, "value"));
-        assign(ts::field(n, "name"), v);
+        m_interpreter.assign(ts::field(n, "name"), v);
         return v;
     }
     if (t == "await")
         return eval(ts_node_named_child(n, 0));
-    return unknownAt(n);
+    return m_ctx.unknownAt(n);
 }
 
-Value PythonLaunchEvaluator::evalString(TSNode n)
+Value PythonLaunchExpressions::evalString(TSNode n)
 {
     bool raw = false, formatted = false;
     QList<Substitution> parts;
     for (TSNode c : ts::namedChildren(n)) {
         const std::string_view t = ts::type(c);
         if (t == "string_start") {
-            const std::string_view prefix = m_tree.view(c);
+            const std::string_view prefix = m_ctx.tree.view(c);
             raw = prefix.find_first_of("rR") != std::string_view::npos;
             formatted = prefix.find_first_of("fF") != std::string_view::npos;
         } else if (t == "string_content") {
-            QString text = m_tree.text(c);
+            QString text = m_ctx.tree.text(c);
             if (!raw)
                 text = decodeEscapes(text);
             if (formatted)
@@ -361,9 +218,9 @@ Value PythonLaunchEvaluator::evalString(TSNode n)
     return Value::substitution(concatenate(parts));
 }
 
-Value PythonLaunchEvaluator::evalNumber(TSNode n)
+Value PythonLaunchExpressions::evalNumber(TSNode n)
 {
-    QString text = m_tree.text(n);
+    QString text = m_ctx.tree.text(n);
     text.remove(QLatin1Char('_'));
     bool ok = false;
     double value = 0;
@@ -377,15 +234,15 @@ Value PythonLaunchEvaluator::evalNumber(TSNode n)
     } else {
         value = text.toDouble(&ok);
     }
-    return ok ? Value::number_(value, text) : unknownAt(n);
+    return ok ? Value::number_(value, text) : m_ctx.unknownAt(n);
 }
 
-Value PythonLaunchEvaluator::evalBinary(TSNode n)
+Value PythonLaunchExpressions::evalBinary(TSNode n)
 {
     using T = Value::Type;
     const Value a = eval(ts::field(n, "left"));
     const Value b = eval(ts::field(n, "right"));
-    const std::string_view op = m_tree.view(ts::field(n, "operator"));
+    const std::string_view op = m_ctx.tree.view(ts::field(n, "operator"));
     const bool numbers =
         (a.type == T::Number || a.type == T::Bool) && (b.type == T::Number || b.type == T::Bool);
     const double x = a.type == T::Bool ? a.boolean : a.number;
@@ -395,8 +252,8 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
             return Value::number_(x + y);
         if (a.type == T::List && b.type == T::List) {
             if (a.list->items.size() + b.list->items.size() > kMaxListSize)
-                return unknownAt(n);
-            Value out = newList({}, a.list->tuple);
+                return m_ctx.unknownAt(n);
+            Value out = m_ctx.newList({}, a.list->tuple);
             for (const Value *src : {&a, &b})
                 for (qsizetype i = 0; i < src->list->items.size(); ++i) {
                     out.list->items << src->list->items.at(i);
@@ -411,15 +268,15 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
             const Substitution x = a.toSubstitution(), y = b.toSubstitution();
             if (x.text.size() + y.text.size() > kMaxStringSize ||
                 x.parts.size() + y.parts.size() > kMaxParts)
-                return unknownAt(n);
+                return m_ctx.unknownAt(n);
             return Value::substitution(concatenate({x, y}));
         }
-        return unknownAt(n);
+        return m_ctx.unknownAt(n);
     }
     if (op == "%" && a.type == T::String) {
         bool known = false;
-        QList<Value> args = b.type == T::List ? iterate(b, &known) : QList<Value>{b};
-        return formatString(a.text, args, {}, true, n);
+        QList<Value> args = b.type == T::List ? m_ctx.iterate(b, &known) : QList<Value>{b};
+        return m_builtins.formatString(a.text, args, {}, true, n);
     }
     if (op == "/" && (a.isStringLike() || a.type == T::Source) &&
         (b.isStringLike() || b.type == T::Unknown)) {
@@ -441,13 +298,13 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
         const int times = qBound(0, int(y), 64);
         if ((a.type == T::String ? a.text.size() : a.list->items.size()) * times >
             (a.type == T::String ? kMaxStringSize : kMaxListSize))
-            return unknownAt(n);
+            return m_ctx.unknownAt(n);
         if (a.type == T::String)
             return Value::string(a.text.repeated(times));
         QList<Value> items;
         for (int i = 0; i < times; ++i)
             items += a.items();
-        return newList(items, a.list->tuple);
+        return m_ctx.newList(items, a.list->tuple);
     }
     if (numbers) {
         if (op == "-")
@@ -461,13 +318,13 @@ Value PythonLaunchEvaluator::evalBinary(TSNode n)
         if (op == "%" && y != 0)
             return Value::number_(x - y * std::floor(x / y));
     }
-    return unknownAt(n);
+    return m_ctx.unknownAt(n);
 }
 
-Value PythonLaunchEvaluator::evalBoolean(TSNode n)
+Value PythonLaunchExpressions::evalBoolean(TSNode n)
 {
     const Value a = eval(ts::field(n, "left"));
-    const bool isAnd = m_tree.view(ts::field(n, "operator")) == "and";
+    const bool isAnd = m_ctx.tree.view(ts::field(n, "operator")) == "and";
     const std::optional<bool> ta = a.truth();
     if (ta.has_value())
         return (*ta == isAnd) ? eval(ts::field(n, "right")) : a;
@@ -476,10 +333,10 @@ Value PythonLaunchEvaluator::evalBoolean(TSNode n)
     // `x or True` is true and `x and False` is false, whatever x is.
     if (tb.has_value() && *tb != isAnd)
         return b;
-    return unknownAt(n);
+    return m_ctx.unknownAt(n);
 }
 
-Value PythonLaunchEvaluator::evalComparison(TSNode n)
+Value PythonLaunchExpressions::evalComparison(TSNode n)
 {
     QList<Value> operands;
     for (TSNode c : ts::namedChildren(n))
@@ -487,16 +344,187 @@ Value PythonLaunchEvaluator::evalComparison(TSNode n)
             operands << eval(c);
     const std::vector<TSNode> ops = ts::fieldChildren(n, "operators");
     if (operands.size() != qsizetype(ops.size()) + 1)
-        return unknownAt(n);
+        return m_ctx.unknownAt(n);
     for (size_t i = 0; i < ops.size(); ++i) {
         const std::optional<bool> r =
             compare(ts::type(ops[i]), operands.at(qsizetype(i)), operands.at(qsizetype(i) + 1));
         if (!r)
-            return unknownAt(n);
+            return m_ctx.unknownAt(n);
         if (!*r)
             return Value::boolean_(false);
     }
     return Value::boolean_(true);
+}
+
+Value PythonLaunchExpressions::lookup(TSNode identifier)
+{
+    const QString name = m_ctx.tree.text(identifier);
+    if (const Value *v = m_ctx.frame->scope->lookup(name))
+        return *v;
+    if (name == QLatin1String("__file__")) {
+        Substitution s;
+        s.kind = Substitution::Kind::ThisLaunchFile;
+        return Value::substitution(s);
+    }
+    Value m = Value::module(name); // a builtin, or a name the reader does not know
+    m.evidence = m_ctx.tree.evidence(identifier);
+    return m;
+}
+
+Value PythonLaunchExpressions::evalSubscript(TSNode n)
+{
+    using T = Value::Type;
+    const Value object = eval(ts::field(n, "value"));
+    TSNode keyNode = ts::field(n, "subscript");
+    if (ts::is(keyNode, "slice")) {
+        if (object.type != T::List && object.type != T::String)
+            return m_ctx.unknownAt(n);
+        bool colonSeen = false;
+        std::optional<double> lo, hi;
+        for (TSNode c : ts::children(keyNode)) {
+            if (ts::is(c, ":")) {
+                if (colonSeen)
+                    return m_ctx.unknownAt(n); // a step
+                colonSeen = true;
+                continue;
+            }
+            if (!ts_node_is_named(c))
+                continue;
+            const Value v = eval(c);
+            if (v.type != T::Number)
+                return m_ctx.unknownAt(n);
+            (colonSeen ? hi : lo) = v.number;
+        }
+        const qsizetype size =
+            object.type == T::String ? object.text.size() : object.items().size();
+        auto clamp = [&](std::optional<double> b, qsizetype dflt) {
+            if (!b)
+                return dflt;
+            qsizetype i = qsizetype(*b);
+            if (i < 0)
+                i += size;
+            return qBound<qsizetype>(0, i, size);
+        };
+        const qsizetype from = clamp(lo, 0), to = clamp(hi, size);
+        if (object.type == T::String)
+            return Value::string(object.text.mid(from, qMax<qsizetype>(0, to - from)));
+        return m_ctx.newList(object.items().mid(from, qMax<qsizetype>(0, to - from)),
+                             object.list->tuple);
+    }
+    const Value key = eval(keyNode);
+    if (object.type == T::Module && object.text == QLatin1String("os.environ") &&
+        key.type == T::String) {
+        Substitution env;
+        env.kind = Substitution::Kind::EnvironmentVariable;
+        env.text = key.text;
+        return Value::substitution(env);
+    }
+    if (object.type == T::Context && object.text == QLatin1String("launch_configurations"))
+        return Value::substitution(key.type == T::String
+                                       ? Substitution::configuration(key.text)
+                                       : Substitution::unknown(m_ctx.tree.text(n)));
+    if (object.type == T::Dict) {
+        if (const Value *v = object.dict->find(key))
+            return *v;
+        return m_ctx.unknownAt(n);
+    }
+    if ((object.type == T::List || object.type == T::String) && key.type == T::Number) {
+        const qsizetype size =
+            object.type == T::String ? object.text.size() : object.items().size();
+        qsizetype i = qsizetype(key.number);
+        if (i < 0)
+            i += size;
+        if (i < 0 || i >= size)
+            return m_ctx.unknownAt(n);
+        return object.type == T::String ? Value::string(QString(object.text.at(i)))
+                                        : object.items().at(i);
+    }
+    return m_ctx.unknownAt(n);
+}
+
+Value PythonLaunchExpressions::evalAttribute(TSNode n)
+{
+    using T = Value::Type;
+    const Value object = eval(ts::field(n, "object"));
+    const QString attribute = m_ctx.tree.text(ts::field(n, "attribute"));
+    if (object.type == T::Module) {
+        Value m = Value::module(object.text + QLatin1Char('.') + attribute);
+        m.evidence = m_ctx.tree.evidence(n);
+        return m;
+    }
+    if (object.type == T::Context && object.text.isEmpty() &&
+        attribute == QLatin1String("launch_configurations")) {
+        Value c = object;
+        c.text = attribute;
+        return c;
+    }
+    if (attribute == QLatin1String("parent")) {
+        if (object.type == T::Subst && object.subst.kind == Substitution::Kind::ThisLaunchFile) {
+            Substitution dir;
+            dir.kind = Substitution::Kind::ThisLaunchFileDir;
+            return Value::substitution(dir);
+        }
+        if (object.type == T::String && object.text.contains(QLatin1Char('/')))
+            return Value::string(object.text.section(QLatin1Char('/'), 0, -2));
+    }
+    if (object.type == T::List && object.list->launchDescription &&
+        attribute == QLatin1String("entities"))
+        return object;
+    return m_ctx.unknownAt(n);
+}
+
+Value PythonLaunchExpressions::evalComprehension(TSNode n)
+{
+    TSNode body = ts::field(n, "body");
+    QList<TSNode> clauses;
+    for (TSNode c : ts::namedChildren(n))
+        if (ts::is(c, "for_in_clause") || ts::is(c, "if_clause"))
+            clauses << c;
+    const bool isDict = ts::is(n, "dictionary_comprehension");
+    Value out = isDict ? m_ctx.newDict() : m_ctx.newList({});
+    const std::shared_ptr<Scope> saved = m_ctx.frame->scope;
+    m_ctx.frame->scope = m_ctx.newScope(saved);
+    bool failed = false;
+    int produced = 0;
+    std::function<void(qsizetype)> generate = [&](qsizetype i) {
+        if (failed || m_ctx.exhausted || produced > kMaxComprehensionItems)
+            return;
+        if (i == clauses.size()) {
+            if (++produced > kMaxComprehensionItems)
+                return;
+            if (isDict)
+                out.dict->set(eval(ts::field(body, "key")), eval(ts::field(body, "value")));
+            else
+                m_ctx.append(out, eval(body));
+            return;
+        }
+        TSNode clause = clauses.at(i);
+        if (ts::is(clause, "if_clause")) {
+            const std::optional<bool> truth = eval(ts_node_named_child(clause, 0)).truth();
+            if (!truth || *truth) // undecidable filters keep the item (best guess)
+                generate(i + 1);
+            return;
+        }
+        bool known = false;
+        const QList<Value> items =
+            m_ctx.iterate(eval(ts::fieldChildren(clause, "right").empty()
+                                   ? TSNode{}
+                                   : ts::fieldChildren(clause, "right").front()),
+                          &known);
+        if (!known) {
+            failed = true;
+            return;
+        }
+        for (const Value &item : items) {
+            if (produced > kMaxComprehensionItems)
+                break;
+            m_interpreter.assign(ts::field(clause, "left"), item);
+            generate(i + 1);
+        }
+    };
+    generate(0);
+    m_ctx.frame->scope = saved;
+    return failed ? m_ctx.unknownAt(n) : out;
 }
 
 } // namespace rosarch::pylaunch
