@@ -40,18 +40,10 @@ public:
                     diagnostics->append(readProblems);
                 continue;
             }
-            LaunchFileDescription d;
-            if (f.language == SourceFile::Language::Python &&
-                PythonLaunchReader::isLaunchFile(content))
-                d = PythonLaunchReader::read(content, f.path);
-            else if (f.language == SourceFile::Language::Xml &&
-                     XmlLaunchReader::isLaunchFile(content))
-                d = XmlLaunchReader::read(content, f.path);
-            else if (f.language == SourceFile::Language::Yaml &&
-                     YamlLaunchReader::isLaunchFile(content))
-                d = YamlLaunchReader::read(content, f.path);
-            else
+            std::optional<LaunchFileDescription> read = LaunchAnalyzer::read(f, content);
+            if (!read)
                 continue;
+            LaunchFileDescription &d = *read;
             control.report(done, int(ws.files.size()), f.path);
             if (f.language !=
                 SourceFile::Language::Python) // Python syntax errors come from stage 1
@@ -159,6 +151,18 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             out.diagnostics.append(d);
         }
     return out;
+}
+
+std::optional<LaunchFileDescription> LaunchAnalyzer::read(const SourceFile &f,
+                                                          const QByteArray &content)
+{
+    if (f.language == SourceFile::Language::Python && PythonLaunchReader::isLaunchFile(content))
+        return PythonLaunchReader::read(content, f.path);
+    if (f.language == SourceFile::Language::Xml && XmlLaunchReader::isLaunchFile(content))
+        return XmlLaunchReader::read(content, f.path);
+    if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
+        return YamlLaunchReader::read(content, f.path);
+    return std::nullopt;
 }
 
 LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,

@@ -1,12 +1,15 @@
 #pragma once
 
 #include "atomicnodelist.h"
+#include "launchaction.h"
 #include "launchdependencies.h"
 #include "stagecontrol.h"
 #include "workspace.h"
 
 #include <QMap>
 #include <QString>
+
+#include <optional>
 
 namespace rosarch {
 
@@ -28,6 +31,10 @@ public:
     static LaunchDependencies run(const Workspace &workspace, const AtomicNodeList &nodes,
                                   const LaunchOptions &options = {},
                                   const StageControl &control = {});
+    /// `content` read by the reader of the file's format (Python, XML, YAML) when it is a
+    /// launch file of that format; none otherwise.
+    static std::optional<LaunchFileDescription> read(const SourceFile &file,
+                                                     const QByteArray &content);
 };
 
 /// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer

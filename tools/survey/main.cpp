@@ -7,12 +7,10 @@
 //                                                what stayed unresolved, diagnostics
 #include "analysistext.h"
 #include "cppnodeanalyzer.h"
-#include "pythonlaunchreader.h"
+#include "launchanalyzer.h"
 #include "pythonnodeanalyzer.h"
 #include "sourcereader.h"
 #include "workspacescanner.h"
-#include "xmllaunchreader.h"
-#include "yamllaunchreader.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -70,16 +68,10 @@ int surveyLaunch(const Workspace &ws, bool dump, QTextStream &out)
         QList<Diagnostic> skipped;
         if (!reader.read(f.path, &content, &skipped))
             continue;
-        LaunchFileDescription d;
-        if (f.language == SourceFile::Language::Python && PythonLaunchReader::isLaunchFile(content))
-            d = PythonLaunchReader::read(content, f.path);
-        else if (f.language == SourceFile::Language::Xml && XmlLaunchReader::isLaunchFile(content))
-            d = XmlLaunchReader::read(content, f.path);
-        else if (f.language == SourceFile::Language::Yaml &&
-                 YamlLaunchReader::isLaunchFile(content))
-            d = YamlLaunchReader::read(content, f.path);
-        else
+        const std::optional<LaunchFileDescription> read = LaunchAnalyzer::read(f, content);
+        if (!read)
             continue;
+        const LaunchFileDescription &d = *read;
         ++files[QString::fromLatin1(format)];
         AnalysisText::tally(d.actions, &kinds, &unresolved);
         for (const Diagnostic &diag : std::as_const(d.diagnostics))
