@@ -54,13 +54,14 @@ QString partBlock(const RosNodePart &part, const QString &indent)
     for (const PartPort &p : part.ports) {
         if (!p.active)
             continue;
+        // PlantUML rejects a comment after an element's alias: it stands on its own line, above.
         QString line =
-            QStringLiteral("%1  %2 \"%3\" as %4_%3")
-                .arg(indent,
-                     isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),
-                     p.id, part.id);
-        if (!p.resolved)
-            line += QStringLiteral(" ' name unresolved: %1").arg(label(p.name));
+            p.resolved ? QString()
+                       : QStringLiteral("%1  ' name unresolved: %2\n").arg(indent, label(p.name));
+        line += QStringLiteral("%1  %2 \"%3\" as %4_%3")
+                    .arg(indent,
+                         isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),
+                         p.id, part.id);
         ports << line;
     }
     out += QStringLiteral("%1component \"%2\" as %3 <<RosNodePart>>").arg(indent, caption, part.id);
@@ -86,11 +87,14 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
                .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
     out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n")
                .arg(label(c.stem), top);
+    // Comments stand on a line of their own above the element (PlantUML rejects them after an
+    // alias).
     for (const BoundaryPort &b : c.boundary) {
+        out += QStringLiteral("  ' %1\n").arg(label(b.name));
         declare(WrittenElement::Kind::Boundary, b.id);
-        out += QStringLiteral("  %1 \"%2 / %3\" as b_%2  ' %4\n")
+        out += QStringLiteral("  %1 \"%2 / %3\" as b_%2\n")
                    .arg(b.isInput() ? QStringLiteral("portin") : QStringLiteral("portout"), b.id,
-                        PlantUmlText::type(b.type), label(b.name));
+                        PlantUmlText::type(b.type));
     }
 
     // Parts grouped by namespace, namespaces in order of first appearance; the root's parts
@@ -147,19 +151,17 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
             out += QStringLiteral("  }\n");
     }
     for (const Channel &ch : c.channels) {
+        out += QStringLiteral("  ' %1\n").arg(PlantUmlText::type(ch.type));
         declare(WrittenElement::Kind::Channel, ch.id);
         switch (ch.kind) {
         case Channel::Kind::Topic:
-            out += QStringLiteral("  queue \"%1\" as %2  ' %3\n")
-                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  queue \"%1\" as %2\n").arg(label(ch.name), ch.id);
             break;
         case Channel::Kind::Service:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>  ' %3\n")
-                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>\n").arg(label(ch.name), ch.id);
             break;
         case Channel::Kind::Action:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>  ' %3\n")
-                       .arg(label(ch.name), ch.id, PlantUmlText::type(ch.type));
+            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>\n").arg(label(ch.name), ch.id);
             break;
         }
     }
