@@ -13,6 +13,7 @@
 #include <QFileInfo>
 #include <QTextStream>
 
+#include <algorithm>
 #include <cstring>
 
 namespace rosarch {
@@ -211,7 +212,44 @@ bool CommandLine::isHeadless(int argc, char **argv)
     for (const char *opt : {"--help", "-h", "--version", "-v", "--help-all"})
         if (std::strcmp(first, opt) == 0)
             return true;
-    return false;
+    // The GUI takes a workspace folder (and Qt's own -options). Anything else is a mistyped
+    // command or a wrong path: answered on the terminal, never by opening a window (which,
+    // without a display, would abort in Qt's platform plugin).
+    return first[0] != '-' && !QFileInfo(QString::fromLocal8Bit(first)).isDir();
+}
+
+QString CommandLine::nearestCommand(const QString &written)
+{
+    // Edit distance; a command within two edits, or one the text starts, is what was meant.
+    const auto distance = [](const QString &a, const QString &b) {
+        QList<int> row(b.size() + 1);
+        for (qsizetype j = 0; j <= b.size(); ++j)
+            row[j] = int(j);
+        for (qsizetype i = 1; i <= a.size(); ++i) {
+            int diagonal = row[0];
+            row[0] = int(i);
+            for (qsizetype j = 1; j <= b.size(); ++j) {
+                const int up = row[j];
+                row[j] = std::min(
+                    {row[j] + 1, row[j - 1] + 1, diagonal + (a.at(i - 1) == b.at(j - 1) ? 0 : 1)});
+                diagonal = up;
+            }
+        }
+        return row[b.size()];
+    };
+    QString best;
+    int bestDistance = 3;
+    for (const char *cmd : kCommands) {
+        const QString command = QString::fromLatin1(cmd);
+        const int d = written.startsWith(command) || command.startsWith(written)
+                          ? 1
+                          : distance(written.toLower(), command);
+        if (d < bestDistance) {
+            best = command;
+            bestDistance = d;
+        }
+    }
+    return best;
 }
 
 int CommandLine::run(const QStringList &arguments)
@@ -235,8 +273,20 @@ int CommandLine::run(const QStringList &arguments)
         return runEval(arguments);
     if (first == QLatin1String("suggest"))
         return runSuggest(arguments);
-    err << QCoreApplication::translate("rosarch::CommandLine", "Unknown command: %1\n\n").arg(first)
-        << usageText();
+    const bool pathLike = first.contains(QLatin1Char('/')) || first.startsWith(QLatin1Char('.')) ||
+                          QFileInfo::exists(first);
+    if (pathLike) {
+        err << QCoreApplication::translate("rosarch::CommandLine",
+                                           "Not a folder: %1\nrosarch opens a workspace folder; "
+                                           "see rosarch --help.\n")
+                   .arg(first);
+        return UsageError;
+    }
+    err << QCoreApplication::translate("rosarch::CommandLine", "Unknown command: %1\n").arg(first);
+    if (const QString hint = nearestCommand(first); !hint.isEmpty())
+        err << QCoreApplication::translate("rosarch::CommandLine", "Did you mean: rosarch %1?\n")
+                   .arg(hint);
+    err << '\n' << usageText();
     return UsageError;
 }
 

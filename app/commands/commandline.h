@@ -19,8 +19,12 @@ public:
         UsageError = 2
     };
 
-    /// True when the arguments ask for a headless command rather than the GUI.
+    /// True when the arguments ask for a headless command rather than the GUI: a command, an
+    /// option of ours, or anything that is neither a folder nor a Qt option (a mistyped
+    /// command, a wrong path), which gets a message instead of a window.
     static bool isHeadless(int argc, char **argv);
+    /// The command `written` probably means ("" when none is close).
+    static QString nearestCommand(const QString &written);
     /// Runs the headless command; `arguments` includes the program name.
     static int run(const QStringList &arguments);
     /// Parses a command's arguments. Returns the exit code when the command ends here (a

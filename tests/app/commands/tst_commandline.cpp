@@ -1,4 +1,5 @@
 // End-to-end: the real `rosarch` executable, headless, on fixture workspaces.
+#include "commandline.h"
 #include "testsupport.h"
 
 #include <QJsonArray>
@@ -147,6 +148,31 @@ private Q_SLOTS:
             runRosarch({QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--bogus")});
         QCOMPARE(unknown.exitCode, 2);
         QVERIFY(unknown.err.contains(QStringLiteral("bogus")));
+    }
+
+    void aMistypedCommandNeverOpensTheGui()
+    {
+        // No display here (runRosarch removes DISPLAY and QT_QPA_PLATFORM): a window would abort
+        // in Qt's platform plugin. A mistyped command gets a hint, a wrong path a message.
+        const Run typo = runRosarch({QStringLiteral("recovr"), exampleWorkspace()});
+        QCOMPARE(typo.exitCode, 2);
+        QVERIFY2(typo.err.contains(QStringLiteral("Unknown command: recovr")),
+                 qPrintable(typo.err));
+        QVERIFY2(typo.err.contains(QStringLiteral("Did you mean: rosarch recover?")),
+                 qPrintable(typo.err));
+        const Run far = runRosarch({QStringLiteral("checkx")});
+        QCOMPARE(far.exitCode, 2);
+        QVERIFY2(far.err.contains(QStringLiteral("Unknown command: checkx")), qPrintable(far.err));
+        QVERIFY(!far.err.contains(QStringLiteral("platform plugin")));
+        const Run path = runRosarch({QStringLiteral("/no/such/workspace")});
+        QCOMPARE(path.exitCode, 2);
+        QVERIFY2(path.err.contains(QStringLiteral("Not a folder: /no/such/workspace")),
+                 qPrintable(path.err));
+        QCOMPARE(rosarch::CommandLine::nearestCommand(QStringLiteral("sugest")),
+                 QStringLiteral("suggest"));
+        QCOMPARE(rosarch::CommandLine::nearestCommand(QStringLiteral("ev")),
+                 QStringLiteral("eval"));
+        QCOMPARE(rosarch::CommandLine::nearestCommand(QStringLiteral("xyzzy")), QString());
     }
 
     void helpAndVersion()
