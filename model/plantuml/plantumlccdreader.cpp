@@ -182,9 +182,12 @@ private:
         const PlantUmlDeclaration &d = m_doc.at(i);
         QString id, type;
         const QString text = d.label.simplified();
-        if (d.label.contains(QLatin1String(" / "))) {
-            id = d.label.section(QLatin1String(" / "), 0, 0).simplified();
-            type = d.label.section(QLatin1String(" / "), 1).simplified();
+        // "s1 / pkg::msg::T", also with the space on one side only ("s1 /pkg::msg::T").
+        static const QRegularExpression idSlashType(
+            QStringLiteral(R"(^(\w+)(?: /\s*|\s*/ )(.+)$)"));
+        if (const auto m = idSlashType.match(text); m.hasMatch()) {
+            id = m.captured(1);
+            type = m.captured(2).simplified();
         } else if (d.label.contains(QLatin1Char('\n')) || text.contains(QLatin1Char(' '))) {
             id = text.section(QLatin1Char(' '), 0, 0);
             type = text.section(QLatin1Char(' '), 1);

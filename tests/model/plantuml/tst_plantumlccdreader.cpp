@@ -219,6 +219,8 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
   portout "ra1\nnav2_msgs::NavigateToPose" as b_ra1
   port "s2 / sensor_msgs/msg/Imu" as b_s2
   portin "std_msgs::msg::String" as b_s3
+  portout "p4 /geometry_msgs::msg::Twist" as b_p4
+  portout "p5/ geometry_msgs::msg::Twist" as b_p5
 }
 @enduml
 )uml"));
@@ -227,7 +229,9 @@ component "demo" as demo <<ComposedRosNodeClassifier>> {
                  (QStringList{QStringLiteral("(in, std_srvs/srv/Trigger)"),
                               QStringLiteral("(out, nav2_msgs/action/NavigateToPose)"),
                               QStringLiteral("(in, sensor_msgs/msg/Imu)"),
-                              QStringLiteral("(in, std_msgs/msg/String)")}));
+                              QStringLiteral("(in, std_msgs/msg/String)"),
+                              QStringLiteral("(out, geometry_msgs/msg/Twist)"),
+                              QStringLiteral("(out, geometry_msgs/msg/Twist)")}));
         QCOMPARE(d.notes,
                  (QStringList{
                      QStringLiteral("line 3: type 'std_srvs/Trigger' read as std_srvs/srv/Trigger"),
