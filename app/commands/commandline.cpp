@@ -2,6 +2,7 @@
 #include "acceptedmodel.h"
 #include "artifactwriter.h"
 #include "decisionstore.h"
+#include "editdistance.h"
 #include "evalcommand.h"
 #include "recovery.h"
 #include "suggestcommand.h"
@@ -220,30 +221,14 @@ bool CommandLine::isHeadless(int argc, char **argv)
 
 QString CommandLine::nearestCommand(const QString &written)
 {
-    // Edit distance; a command within two edits, or one the text starts, is what was meant.
-    const auto distance = [](const QString &a, const QString &b) {
-        QList<int> row(b.size() + 1);
-        for (qsizetype j = 0; j <= b.size(); ++j)
-            row[j] = int(j);
-        for (qsizetype i = 1; i <= a.size(); ++i) {
-            int diagonal = row[0];
-            row[0] = int(i);
-            for (qsizetype j = 1; j <= b.size(); ++j) {
-                const int up = row[j];
-                row[j] = std::min(
-                    {row[j] + 1, row[j - 1] + 1, diagonal + (a.at(i - 1) == b.at(j - 1) ? 0 : 1)});
-                diagonal = up;
-            }
-        }
-        return row[b.size()];
-    };
+    // A command within two edits, or one the text starts or is the start of, was meant.
     QString best;
     int bestDistance = 3;
     for (const char *cmd : kCommands) {
         const QString command = QString::fromLatin1(cmd);
         const int d = written.startsWith(command) || command.startsWith(written)
                           ? 1
-                          : distance(written.toLower(), command);
+                          : editDistance(written.toLower(), command);
         if (d < bestDistance) {
             best = command;
             bestDistance = d;

@@ -13,8 +13,6 @@ inline const QString NamespaceStereotype = QStringLiteral("namespace");
 inline const QString ServiceStereotype = QStringLiteral("Service");
 inline const QString ActionStereotype = QStringLiteral("Action");
 
-/// Levenshtein distance between two strings.
-int editDistance(const QString &a, const QString &b);
 /// The known stereotype `written` stands for: equal ignoring case, else the one unique closest
 /// within edit distance 2 (ignoring case). "" when none. `note` says what changed, if anything.
 QString stereotype(const QString &written, QString *note);
