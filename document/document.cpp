@@ -295,7 +295,11 @@ void Document::applyStoredDescriptions()
 void Document::markDecisionsChanged()
 {
     m_unsaved = true;
-    m_autosave.start(); // restarts: a burst of decisions, undos and redos is written once
+    // Started by the first unsaved change, not restarted by later ones: a burst of decisions,
+    // undos and redos is written once, and a person who keeps deciding faster than the
+    // interval still has every decision on disk within one interval (what a crash can lose).
+    if (!m_autosave.isActive())
+        m_autosave.start();
 }
 
 bool Document::saveDecisions()

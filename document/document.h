@@ -88,9 +88,11 @@ public:
     /// True while a decision is not on disk yet (the autosave is pending).
     bool hasUnsavedDecisions() const { return m_unsaved; }
     /// Writes the decisions now if any are not on disk; false when writing failed (then
-    /// decisionsSaveFailed says why, and the autosave tries again later).
+    /// decisionsSaveFailed says why; they stay in memory and the next decision, workspace
+    /// switch or close tries again).
     bool saveDecisions();
-    /// How long after a decision the autosave writes it (default 2 s).
+    /// How long after the first unsaved decision the autosave writes (default 2 s): later
+    /// decisions do not postpone it, so a crash loses at most this much.
     void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
 
     /// What a decision touches, captured for undo: the stored decision of one subject and

@@ -15,6 +15,7 @@
 #include "testsupport.h"
 
 #include <QCryptographicHash>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QSettings>
 #include <QSignalSpy>
@@ -364,7 +365,7 @@ private Q_SLOTS:
         QVERIFY(!doc.hasUnsavedDecisions());
         QCOMPARE(DecisionStore::load(path).size(), 1);
 
-        // The autosave writes a burst of changes once, shortly after the last one.
+        // The autosave writes a burst of changes once, an interval after the first one.
         doc.setAutosaveInterval(100);
         doc.undoStack()->undo();
         QCOMPARE(DecisionStore::load(path).size(), 1);
@@ -385,6 +386,26 @@ private Q_SLOTS:
             QCOMPARE(DecisionStore::load(path).size(), 1);
         }
         QCOMPARE(DecisionStore::load(path).size(), 2);
+    }
+
+    void aBurstOfChangesDoesNotPostponeTheAutosave()
+    {
+        // A crash loses at most one interval of decisions, even while a person keeps deciding,
+        // undoing and redoing faster than the interval: later changes do not restart it.
+        const QString path = DecisionStore::path(exampleWorkspace());
+        Document doc;
+        load(doc);
+        doc.setAutosaveInterval(300);
+        QVERIFY(doc.acceptSuggestion(first(doc, Suggestion::Kind::NodeDescription).id));
+        QElapsedTimer burst;
+        burst.start();
+        while (!QFileInfo::exists(path) && burst.elapsed() < 3000) {
+            QTest::qWait(50);
+            doc.undoStack()->undo();
+            doc.undoStack()->redo();
+        }
+        QVERIFY2(QFileInfo::exists(path), "nothing written during three seconds of changes");
+        QCOMPARE(DecisionStore::load(path).size(), 1); // written between a redo and an undo
     }
 
     void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
