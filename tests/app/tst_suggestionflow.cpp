@@ -9,13 +9,12 @@
 #include "screenshot.h"
 #include "suggestioncontroller.h"
 #include "suggestionengine.h"
+#include "suggestionfixture.h"
 #include "suggestionmodel.h"
 #include "suggestionpanel.h"
 #include "suggestionrunner.h"
 #include "testsupport.h"
 
-#include <QCryptographicHash>
-#include <QElapsedTimer>
 #include <QLabel>
 #include <QSettings>
 #include <QSignalSpy>
@@ -24,21 +23,15 @@
 #include <QtTest>
 
 using namespace rosarch;
+using rosarch::test::exampleWorkspace;
 using rosarch::test::FakeLlmServer;
 using rosarch::test::FakeRequest;
 using rosarch::test::FakeResponse;
+using rosarch::test::kSecret;
 
 namespace {
 
-const QString kSecret = QStringLiteral("sk-flow-secret-0123456789");
 const QString kBattery = QStringLiteral("src/robot_mission/robot_mission/battery_monitor.py");
-
-QString exampleWorkspace()
-{
-    return QFileInfo(QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
-                         .filePath(QStringLiteral("resources/example_ws")))
-        .canonicalFilePath();
-}
 
 /// Everything a decision can touch, to compare before / after / undo / redo.
 struct Snapshot
@@ -124,22 +117,14 @@ class TestSuggestionFlow : public QObject
 {
     Q_OBJECT
 private:
-    QTemporaryDir m_home;
-    Recovery m_recovery;
-    SuggestionReport m_deterministic;
+    test::SuggestionFixture m_fixture;
+    const Recovery &m_recovery = m_fixture.recovery;
+    const SuggestionReport &m_deterministic = m_fixture.deterministic;
 
-    /// A Document on example_ws with the deterministic suggestions, all pending.
-    void load(Document &doc)
-    {
-        doc.setRecovery(m_recovery);
-        doc.setSuggestions(m_deterministic);
-    }
+    void load(Document &doc) { m_fixture.load(doc); }
     const Suggestion &first(const Document &doc, Suggestion::Kind kind)
     {
-        for (const Suggestion &s : doc.suggestions())
-            if (s.kind == kind)
-                return s;
-        qFatal("no suggestion of that kind");
+        return test::firstOf(doc, kind);
     }
     void clearDecisions() { QFile::remove(DecisionStore::path(exampleWorkspace())); }
     void configureLlm(const QString &endpoint, bool use)
@@ -154,23 +139,7 @@ private:
     }
 
 private Q_SLOTS:
-    void initTestCase()
-    {
-        QVERIFY(m_home.isValid());
-        // Before the first QSettings / QStandardPaths use: nothing of this test leaves m_home.
-        qputenv("XDG_DATA_HOME", m_home.filePath(QStringLiteral("data")).toUtf8());
-        qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral("config")).toUtf8());
-        qputenv("ROSARCH_LLM_API_KEY", kSecret.toUtf8());
-        qunsetenv("ROSARCH_LLM_ENDPOINT");
-        qunsetenv("ROSARCH_PROMPT_DIR");
-        QVERIFY(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
-                    .startsWith(m_home.path()));
-        m_recovery = recoverWorkspace(exampleWorkspace());
-        m_recovery.nodes.workspaceRoot = exampleWorkspace();
-        SuggestionEngine::Options options;
-        m_deterministic = SuggestionEngine(exampleWorkspace(), m_recovery, options).run();
-        QCOMPARE(m_deterministic.suggestions.size(), 9); // 8 descriptions + 1 grouping
-    }
+    void initTestCase() { QVERIFY(m_fixture.setUp()); }
 
     void init()
     {
@@ -293,147 +262,6 @@ private Q_SLOTS:
         doc.undoStack()->undo();
         doc.undoStack()->undo();
         QCOMPARE(doc.decisions().size(), 0);
-    }
-
-    void decisionsAreKeptWithTheProject()
-    {
-        const QString path = DecisionStore::path(exampleWorkspace());
-        const QByteArray sha1 =
-            QCryptographicHash::hash(exampleWorkspace().toUtf8(), QCryptographicHash::Sha1).toHex();
-        QCOMPARE(
-            path,
-            QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                .filePath(
-                    QStringLiteral("projects/%1/decisions.json").arg(QString::fromLatin1(sha1))));
-        QVERIFY(path.startsWith(m_home.path()));
-        QString acceptedValue;
-        {
-            Document doc;
-            load(doc);
-            QCOMPARE(doc.decisionsPath(), path);
-            const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
-            acceptedValue = d.value;
-            QVERIFY(doc.acceptSuggestion(d.id));
-            QVERIFY(doc.rejectSuggestion(first(doc, Suggestion::Kind::SubsystemGrouping).id));
-        }
-        const QByteArray stored = test::readFile(path);
-        QVERIFY(stored.contains("\"accepted\""));
-        QVERIFY(stored.contains("\"rejected\""));
-        QVERIFY(stored.contains(acceptedValue.toUtf8()));
-        QVERIFY(!stored.contains(kSecret.toUtf8())); // never the API key
-
-        // Running the stages again re-applies the accepted description at once; running the
-        // suggestions again does not ask about what was decided.
-        Document again;
-        again.setRecovery(m_recovery);
-        QCOMPARE(again.atomicNodes().node(QStringLiteral("arc_1"))->description, acceptedValue);
-        QCOMPARE(again.undoStack()->count(), 0);
-        QCOMPARE(again.setSuggestions(m_deterministic), 2);
-        int pending = 0;
-        for (const Suggestion &s : again.suggestions())
-            pending += s.status == Suggestion::Status::Pending ? 1 : 0;
-        QCOMPARE(pending, 7);
-        QCOMPARE(first(again, Suggestion::Kind::NodeDescription).status,
-                 Suggestion::Status::Accepted);
-        QCOMPARE(first(again, Suggestion::Kind::SubsystemGrouping).status,
-                 Suggestion::Status::Rejected);
-
-        // Undoing a decision forgets it on disk as well.
-        Document third;
-        load(third);
-        QVERIFY(third.acceptSuggestion(first(third, Suggestion::Kind::SubsystemGrouping).id));
-        third.undoStack()->undo();
-        QVERIFY(third.saveDecisions());
-        QVERIFY(test::readFile(path).contains("\"rejected\""));
-        QCOMPARE(DecisionStore::load(path).size(), 2);
-    }
-
-    void undoAndRedoDoNotWriteTheAutosaveDoes()
-    {
-        const QString path = DecisionStore::path(exampleWorkspace());
-        Document doc;
-        load(doc);
-        const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
-        QVERIFY(doc.acceptSuggestion(d.id));
-        QVERIFY(doc.hasUnsavedDecisions());
-        for (int i = 0; i < 5; ++i) {
-            doc.undoStack()->undo();
-            doc.undoStack()->redo();
-        }
-        QVERIFY(!QFileInfo::exists(path)); // nothing written yet
-        QVERIFY(doc.saveDecisions());
-        QVERIFY(!doc.hasUnsavedDecisions());
-        QCOMPARE(DecisionStore::load(path).size(), 1);
-
-        // The autosave writes a burst of changes once, an interval after the first one.
-        doc.setAutosaveInterval(100);
-        doc.undoStack()->undo();
-        QCOMPARE(DecisionStore::load(path).size(), 1);
-        QTRY_COMPARE(DecisionStore::load(path).size(), 0);
-        QVERIFY(!doc.hasUnsavedDecisions());
-
-        // Replacing the workspace writes what is pending first; so does closing the document.
-        doc.setAutosaveInterval(60000);
-        doc.undoStack()->redo();
-        QVERIFY(doc.hasUnsavedDecisions());
-        doc.setRecovery({});
-        QCOMPARE(DecisionStore::load(path).size(), 1);
-        {
-            Document other;
-            load(other);
-            other.setAutosaveInterval(60000);
-            QVERIFY(other.rejectSuggestion(first(other, Suggestion::Kind::SubsystemGrouping).id));
-            QCOMPARE(DecisionStore::load(path).size(), 1);
-        }
-        QCOMPARE(DecisionStore::load(path).size(), 2);
-    }
-
-    void aBurstOfChangesDoesNotPostponeTheAutosave()
-    {
-        // A crash loses at most one interval of decisions, even while a person keeps deciding,
-        // undoing and redoing faster than the interval: later changes do not restart it.
-        const QString path = DecisionStore::path(exampleWorkspace());
-        Document doc;
-        load(doc);
-        doc.setAutosaveInterval(300);
-        QVERIFY(doc.acceptSuggestion(first(doc, Suggestion::Kind::NodeDescription).id));
-        QElapsedTimer burst;
-        burst.start();
-        while (!QFileInfo::exists(path) && burst.elapsed() < 3000) {
-            QTest::qWait(50);
-            doc.undoStack()->undo();
-            doc.undoStack()->redo();
-        }
-        QVERIFY2(QFileInfo::exists(path), "nothing written during three seconds of changes");
-        QCOMPARE(DecisionStore::load(path).size(), 1); // written between a redo and an undo
-    }
-
-    void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
-    {
-        // The project folder cannot be created (a file stands where it would go).
-        const QString path = DecisionStore::path(exampleWorkspace());
-        const QString folder = QFileInfo(path).path();
-        QDir(folder).removeRecursively();
-        QDir().mkpath(QFileInfo(folder).path());
-        {
-            QFile blocker(folder);
-            QVERIFY(blocker.open(QIODevice::WriteOnly));
-        }
-        Document doc;
-        QSignalSpy failed(&doc, &Document::decisionsSaveFailed);
-        load(doc);
-        const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
-        QVERIFY(doc.acceptSuggestion(d.id));
-        QVERIFY(!doc.saveDecisions());
-        QCOMPARE(failed.size(), 1);
-        // Running the stages again on the same workspace keeps the decision in memory.
-        doc.setRecovery(m_recovery);
-        QCOMPARE(doc.decisions().size(), 1);
-        QCOMPARE(doc.atomicNodes().node(d.targetId)->description, d.value);
-        QVERIFY(doc.hasUnsavedDecisions());
-        QFile::remove(folder);
-        QVERIFY(doc.saveDecisions());
-        QCOMPARE(DecisionStore::load(path).size(), 1);
     }
 
     void runnerDeliversDeterministicSuggestions()
