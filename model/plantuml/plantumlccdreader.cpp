@@ -121,8 +121,7 @@ private:
         const qsizetype colon = labelColon(label);
         if (colon < 0) {
             p.name = label.trimmed();
-            m_doc.note(d.line,
-                       QStringLiteral("part label '%1' has no ':'; read as the name").arg(p.name));
+            m_doc.diagram()->bareParts.append({UmlNames::name(p.name), d.line});
         } else {
             p.name = label.left(colon).trimmed();
             p.type = label.mid(colon + 1).trimmed();

@@ -73,6 +73,14 @@ struct UmlDiagram
     QList<UmlElement> elements;
     QStringList notes;    ///< "line 4: stereotype 'X' read as Y": what the reader normalized
     QStringList warnings; ///< "line 9: cannot read '...'": lines the reader skipped
+    /// Parts whose label has no ':' (read as a name): a model that has a classifier of that
+    /// name reads the part as typed by it instead (UmlModel::typeByClassifiers).
+    struct BareLabel
+    {
+        QString text;
+        int line = 0;
+    };
+    QList<BareLabel> bareParts;
 
     /// The values of the elements of one kind, in reading order.
     QStringList values(const QString &kind) const;

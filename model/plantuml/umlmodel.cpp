@@ -5,6 +5,7 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
+#include <QSet>
 
 namespace rosarch {
 
@@ -36,7 +37,34 @@ bool UmlModel::load(const QString &path, UmlModel *model, QString *error)
         }
         model->diagrams.append(PlantUmlReader::read(QString::fromUtf8(f.readAll()), file));
     }
+    typeByClassifiers(&model->diagrams);
     return true;
+}
+
+void UmlModel::typeByClassifiers(QList<UmlDiagram> *diagrams)
+{
+    QSet<QString> classifiers;
+    for (const UmlDiagram &d : std::as_const(*diagrams))
+        if (d.level != UmlLevel::Unknown && !d.name.isEmpty())
+            classifiers.insert(d.name);
+    for (UmlDiagram &d : *diagrams) {
+        for (const UmlDiagram::BareLabel &bare : std::as_const(d.bareParts)) {
+            // The part's key is the label's text either way (a name, or the type of an
+            // unnamed part); only the type is new.
+            if (classifiers.contains(bare.text) && bare.text != d.name) {
+                d.elements.append({UmlKind::PartType, QLatin1Char(':') + bare.text, bare.line, {}});
+                d.notes << QStringLiteral("line %1: part label '%2' has no ':' and names a "
+                                          "classifier of the model; read as the part's type")
+                               .arg(bare.line)
+                               .arg(bare.text);
+            } else {
+                d.notes << QStringLiteral("line %1: part label '%2' has no ':'; read as the name")
+                               .arg(bare.line)
+                               .arg(bare.text);
+            }
+        }
+        d.bareParts.clear();
+    }
 }
 
 QList<UmlDiagram> UmlModel::ofLevel(UmlLevel level) const

@@ -2,6 +2,7 @@
 // blueprint §3 tolerates (stereotypes, arrows, colours, boundary port types, aliases).
 #include "plantumlreader.h"
 #include "testsupport.h"
+#include "umlmodel.h"
 #include "umltestsupport.h"
 
 #include <QtTest>
@@ -260,6 +261,40 @@ component "launch" as launch <<ComposedRosNodeClassifier>> {
 )uml"));
         QCOMPARE(d.values(UmlKind::Connection), (QStringList{QStringLiteral("publish a -> t"),
                                                              QStringLiteral("subscribe t -> b")}));
+    }
+
+    void bareLabelNamingAClassifierIsTheType()
+    {
+        // Blueprint §3: "Talker" names the model's ACD, so it is the part's type; "lidar"
+        // names nothing and stays a name. A model's own name does not type its parts.
+        QList<UmlDiagram> model = PlantUmlReader::read(QStringLiteral(R"uml(@startuml
+component "<<AtomicRosNodeClassifier>>\nTalker" as node {
+  portout " " as p1
+}
+@enduml
+@startuml
+component "demo" as demo <<ComposedRosNodeClassifier>> {
+  component "Talker" as part1 <<RosNodePart>>
+  component "lidar" as part2 <<RosNodePart>>
+  component "demo" as part3 <<RosNodePart>>
+}
+@enduml
+)uml"));
+        QCOMPARE(model.size(), 2);
+        UmlModel::typeByClassifiers(&model);
+        const UmlDiagram &d = model.at(1);
+        QCOMPARE(d.values(UmlKind::Part),
+                 (QStringList{QStringLiteral("Talker"), QStringLiteral("lidar"),
+                              QStringLiteral("demo")}));
+        QCOMPARE(d.values(UmlKind::PartType), QStringList{QStringLiteral(":Talker")});
+        QCOMPARE(d.notes,
+                 (QStringList{QStringLiteral("line 8: part label 'Talker' has no ':' and names a "
+                                             "classifier of the model; read as the part's type"),
+                              QStringLiteral("line 9: part label 'lidar' has no ':'; read as the "
+                                             "name"),
+                              QStringLiteral("line 10: part label 'demo' has no ':'; read as the "
+                                             "name")}));
+        QVERIFY(d.bareParts.isEmpty());
     }
 };
 
