@@ -33,6 +33,8 @@ Json portJson(const Port &p)
         j["guard_default"] = utf8(p.guardDefault);
     if (!p.via.isEmpty())
         j["via"] = utf8(p.via);
+    if (!p.qos.isEmpty())
+        j["qos"] = utf8(p.qos);
     if (p.inherited)
         j["inherited"] = true;
     j["evidence"] = EvidenceJson::toJson(p.evidence);
@@ -90,6 +92,7 @@ bool readPort(const Json &j, Port *p, QString *error)
     p->guardParameter = JsonSupport::string(j, "guard_parameter");
     p->guardDefault = JsonSupport::string(j, "guard_default");
     p->via = JsonSupport::string(j, "via");
+    p->qos = JsonSupport::string(j, "qos");
     p->inherited = j.value("inherited", false);
     if (j.contains("evidence"))
         p->evidence = EvidenceJson::fromJson(j["evidence"]);
@@ -192,6 +195,13 @@ QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
         j["code"] = utf8(d.code);
         j["message"] = utf8(d.message);
         j["evidence"] = EvidenceJson::toJson(d.evidence);
+        if (!d.related.isEmpty()) {
+            Json related = Json::array();
+            for (const Diagnostic::Related &r : d.related)
+                related.push_back(
+                    {{"message", utf8(r.message)}, {"evidence", EvidenceJson::toJson(r.evidence)}});
+            j["related"] = related;
+        }
         a.push_back(j);
     }
     Json root;

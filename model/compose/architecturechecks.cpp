@@ -1,5 +1,7 @@
 #include "architecturechecks.h"
 #include "composer.h"
+#include "editdistance.h"
+#include "qos.h"
 #include "rosnames.h"
 
 #include <QHash>
@@ -49,9 +51,12 @@ public:
     {
         m_system.clear();
         m_order.clear();
+        m_nodes.clear();
+        m_nodeOrder.clear();
         collect(root, 0);
         for (const QString &key : std::as_const(m_order))
             checkName(key, root);
+        checkNodeNames(root);
     }
 
 private:
@@ -67,6 +72,12 @@ private:
                     collect(*child, depth + 1);
                 continue;
             }
+            if (!part.name.isEmpty()) {
+                const QString fq = who(part);
+                if (!m_nodes.contains(fq))
+                    m_nodeOrder.append(fq);
+                m_nodes[fq].append(&part);
+            }
             for (const PartPort &port : part.ports) {
                 if (!port.active || !port.resolved)
                     continue;
@@ -80,9 +91,9 @@ private:
     }
 
     void add(Diagnostic::Severity severity, const QString &code, const QString &message,
-             const Evidence &evidence)
+             const Evidence &evidence, const QList<Diagnostic::Related> &related = {})
     {
-        Diagnostic d{severity, code, message, evidence};
+        Diagnostic d{severity, code, message, evidence, related};
         const QString key = code + message + evidence.file + QString::number(evidence.line);
         if (m_seen.contains(key))
             return;
@@ -90,12 +101,68 @@ private:
         m_out->append(d);
     }
 
+    static QString systemName(const Composite &root)
+    {
+        return root.file.isEmpty() ? root.stem : root.file;
+    }
+
+    static Diagnostic::Related related(const Use &u, const QString &role)
+    {
+        return {QStringLiteral("%1 %2 %3%4")
+                    .arg(who(*u.part), role, u.port->name,
+                         u.port->type.isEmpty() ? QString()
+                                                : QStringLiteral(" (%1)").arg(u.port->type)),
+                u.port->evidence};
+    }
+
+    /// The existing name of the same family most like `name` (edit distance), among those
+    /// with a provider when `wantProviders`, else among those with users; "" when none is
+    /// close enough to be a likely misspelling.
+    const Use *nearest(const QString &family, const QString &name, bool wantProviders,
+                       QString *found) const
+    {
+        const QString bare = name.section(QLatin1Char('/'), -1);
+        int best = std::max(2, int(bare.size()) / 3) + 1;
+        const Use *use = nullptr;
+        for (const QString &key : m_order) {
+            if (key.section(QLatin1Char(' '), 0, 0) != family)
+                continue;
+            const QString other = key.section(QLatin1Char(' '), 1);
+            const Family &f = m_system[key];
+            const QList<Use> &side = wantProviders ? f.providers : f.users;
+            if (other == name || side.isEmpty())
+                continue;
+            const int d = editDistance(name, other);
+            if (d < best) {
+                best = d;
+                use = &side.first();
+                *found = other;
+            }
+        }
+        return use;
+    }
+
+    /// " Did you mean /x?" and its place, when a name like `name` exists on the other side.
+    QString hint(const QString &family, const QString &name, bool wantProviders,
+                 QList<Diagnostic::Related> *related) const
+    {
+        QString found;
+        const Use *u = nearest(family, name, wantProviders, &found);
+        if (!u)
+            return {};
+        related->append(Checker::related(*u, wantProviders ? (family == QLatin1String("topic")
+                                                                  ? QStringLiteral("publishes")
+                                                                  : QStringLiteral("serves"))
+                                                           : QStringLiteral("subscribes to")));
+        return QStringLiteral(" Did you mean %1?").arg(found);
+    }
+
     void checkName(const QString &key, const Composite &root)
     {
         const Family &f = m_system.value(key);
         const QString kind = key.section(QLatin1Char(' '), 0, 0);
         const QString name = key.section(QLatin1Char(' '), 1);
-        const QString system = root.file.isEmpty() ? root.stem : root.file;
+        const QString system = systemName(root);
         QStringList types;
         for (const QList<Use> *list : {&f.providers, &f.users})
             for (const Use &u : *list)
@@ -103,51 +170,149 @@ private:
                     types.append(u.port->type);
         if (types.size() > 1) {
             const Use &u = f.providers.isEmpty() ? f.users.first() : f.providers.first();
+            QList<Diagnostic::Related> others;
+            for (const QList<Use> *list : {&f.providers, &f.users})
+                for (const Use &o : *list)
+                    if (o.port != u.port && !o.port->type.isEmpty() && o.port->type != u.port->type)
+                        others << related(o, isProvidingPort(o.port->kind)
+                                                 ? QStringLiteral("provides")
+                                                 : QStringLiteral("uses"));
             add(Diagnostic::Severity::Warning, QStringLiteral("type-mismatch"),
                 QStringLiteral("The %1 %2 is used with different types in %3: %4.")
                     .arg(kind, name, system, types.join(QStringLiteral(", "))),
-                u.port->evidence);
+                u.port->evidence, others);
         }
         if (kind == QLatin1String("topic")) {
+            checkQos(name, f, system);
             if (f.providers.isEmpty())
-                for (const Use &u : f.users)
+                for (const Use &u : f.users) {
+                    if (u.port->remapped) {
+                        remapTargetUnused(u, name, system, QStringLiteral("publishes"));
+                        continue;
+                    }
+                    QList<Diagnostic::Related> rel;
+                    const QString h = hint(kind, name, true, &rel);
                     add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
                         QStringLiteral(
-                            "%1 subscribes to %2, which no node started by %3 publishes.")
-                            .arg(who(*u.part), name, system),
-                        u.port->evidence);
+                            "%1 subscribes to %2, which no node started by %3 publishes.%4")
+                            .arg(who(*u.part), name, system, h),
+                        u.port->evidence, rel);
+                }
             if (f.users.isEmpty())
-                for (const Use &u : f.providers)
+                for (const Use &u : f.providers) {
+                    if (u.port->remapped) {
+                        remapTargetUnused(u, name, system, QStringLiteral("subscribes to"));
+                        continue;
+                    }
+                    QList<Diagnostic::Related> rel;
+                    const QString h = hint(kind, name, false, &rel);
                     add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
                         QStringLiteral(
-                            "%1 publishes %2, which no node started by %3 subscribes to.")
-                            .arg(who(*u.part), name, system),
-                        u.port->evidence);
+                            "%1 publishes %2, which no node started by %3 subscribes to.%4")
+                            .arg(who(*u.part), name, system, h),
+                        u.port->evidence, rel);
+                }
             return;
         }
         if (f.providers.size() > 1) {
             QStringList servers;
-            for (const Use &u : f.providers)
+            QList<Diagnostic::Related> rel;
+            for (const Use &u : f.providers) {
                 servers << who(*u.part);
+                if (u.port != f.providers.at(1).port)
+                    rel << related(u, QStringLiteral("serves"));
+            }
             add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-server"),
                 QStringLiteral("The %1 %2 has %3 servers in %4: %5.")
                     .arg(kind, name)
                     .arg(f.providers.size())
                     .arg(system, servers.join(QStringLiteral(", "))),
-                f.providers.at(1).port->evidence);
+                f.providers.at(1).port->evidence, rel);
         }
         if (f.providers.isEmpty())
-            for (const Use &u : f.users)
+            for (const Use &u : f.users) {
+                if (u.port->remapped) {
+                    remapTargetUnused(u, name, system, QStringLiteral("serves"));
+                    continue;
+                }
+                QList<Diagnostic::Related> rel;
+                const QString h = hint(kind, name, true, &rel);
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
-                    QStringLiteral("%1 calls the %2 %3, which no node started by %4 serves.")
-                        .arg(who(*u.part), kind, name, system),
-                    u.port->evidence);
+                    QStringLiteral("%1 calls the %2 %3, which no node started by %4 serves.%5")
+                        .arg(who(*u.part), kind, name, system, h),
+                    u.port->evidence, rel);
+            }
+    }
+
+    /// A port a remap rule renamed, to a name nobody on the other side uses: the finding is
+    /// the rule (at the launch line), with the port's creation as the related place.
+    void remapTargetUnused(const Use &u, const QString &name, const QString &system,
+                           const QString &counterpart)
+    {
+        QList<Diagnostic::Related> rel{{QStringLiteral("%1 %2 as written in the code")
+                                            .arg(portKindName(u.port->kind), u.port->nameAsWritten),
+                                        u.port->evidence}};
+        const QString family = familyName(u.port->kind);
+        const QString h = hint(family, name, !isProvidingPort(u.port->kind), &rel);
+        // Like the unremapped findings: an input nobody feeds is a warning, an output
+        // nobody hears (often meant for something outside the system) is a note.
+        add(isProvidingPort(u.port->kind) ? Diagnostic::Severity::Info
+                                          : Diagnostic::Severity::Warning,
+            QStringLiteral("remap-target-unused"),
+            QStringLiteral("%1 remaps its %2 %3 to %4, which no node started by %5 %6.%7")
+                .arg(who(*u.part), portKindName(u.port->kind), u.port->nameAsWritten, name, system,
+                     counterpart, h),
+            u.part->evidence, rel);
+    }
+
+    /// Publisher and subscription pairs whose literal QoS cannot match (ROS 2's request/offer
+    /// rules for reliability and durability); a side whose QoS is not written out is skipped.
+    void checkQos(const QString &name, const Family &f, const QString &system)
+    {
+        for (const Use &sub : f.users) {
+            const QosProfile requested = QosProfile::fromWritten(sub.port->qos);
+            for (const Use &pub : f.providers) {
+                const QString why =
+                    QosProfile::incompatibility(QosProfile::fromWritten(pub.port->qos), requested);
+                if (why.isEmpty())
+                    continue;
+                add(Diagnostic::Severity::Warning, QStringLiteral("qos-incompatible"),
+                    QStringLiteral("%1 will not receive %2 from %3 in %4: %5 (QoS %6 against "
+                                   "%7).")
+                        .arg(who(*sub.part), name, who(*pub.part), system, why, sub.port->qos,
+                             pub.port->qos),
+                    sub.port->evidence,
+                    {related(pub, QStringLiteral("publishes with QoS %1 on").arg(pub.port->qos))});
+            }
+        }
+    }
+
+    /// Two nodes with one fully qualified name in a system: ROS 2 lets both start, and then
+    /// parameters, services and tools reach either one.
+    void checkNodeNames(const Composite &root)
+    {
+        for (const QString &fq : std::as_const(m_nodeOrder)) {
+            const QList<const RosNodePart *> &parts = m_nodes[fq];
+            if (parts.size() < 2)
+                continue;
+            QList<Diagnostic::Related> rel;
+            for (const RosNodePart *p : parts.mid(1))
+                rel << Diagnostic::Related{
+                    QStringLiteral("another %1 named %2").arg(p->typeName, fq), p->evidence};
+            add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-node-name"),
+                QStringLiteral("%1 nodes are named %2 in %3.")
+                    .arg(parts.size())
+                    .arg(fq, systemName(root)),
+                parts.first()->evidence, rel);
+        }
     }
 
     const Architecture &m_arch;
     QList<Diagnostic> *m_out;
     QHash<QString, Family> m_system;
     QStringList m_order;
+    QHash<QString, QList<const RosNodePart *>> m_nodes; ///< fully qualified name -> parts
+    QStringList m_nodeOrder;
     QSet<QString> m_seen;
 };
 
@@ -191,10 +356,12 @@ void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
     }
     for (const Rule &r : std::as_const(rules))
         if (!r.used && r.decidable)
-            out->append({Diagnostic::Severity::Warning, QStringLiteral("remap-unmatched"),
+            out->append({Diagnostic::Severity::Warning,
+                         QStringLiteral("remap-unmatched"),
                          QStringLiteral("The remap %1 matches no port of the nodes it applies to.")
                              .arg(r.text),
-                         r.evidence});
+                         r.evidence,
+                         {}});
 }
 
 } // namespace

@@ -10,8 +10,11 @@ namespace rosarch {
 
 /// Checks each root system (a root launch file with everything it includes, active parts
 /// only) for what usually is a mistake: a subscription no one publishes, a publisher no one
-/// hears, one topic with two types, two servers for one service or action, a client no one
-/// serves, and remaps that match no port. Each diagnostic cites the port (or launch line).
+/// hears (each with the most similar existing name as a hint), one topic with two types, two
+/// servers for one service or action, a client no one serves, two nodes with one name, a
+/// remap that sends a port to a name nobody uses, publisher and subscription QoS that cannot
+/// match, and remaps that match no port. Each diagnostic cites the port (or launch line) and,
+/// as related locations, the other places that take part.
 class ArchitectureChecks
 {
 public:

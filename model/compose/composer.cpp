@@ -194,6 +194,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         pp.nameAsWritten = p.name;
         pp.type = p.type;
         pp.guard = p.guard;
+        pp.qos = p.qos;
         pp.evidence = p.evidence;
         pp.resolved = p.isResolved();
         QString base = p.name;

@@ -24,6 +24,7 @@ struct PartPort
     bool remapped = false;
     bool active = true; ///< the guard holds for this instance (or is undecidable)
     QString guard;      ///< as written ("" = always)
+    QString qos;        ///< the QoS argument at the creating call, as written ("" = none)
     Evidence evidence;  ///< the port's creation in code (or the inner port for a boundary)
     bool operator==(const PartPort &) const = default;
 };

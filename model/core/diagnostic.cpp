@@ -1,5 +1,7 @@
 #include "diagnostic.h"
 
+#include <QCryptographicHash>
+
 namespace rosarch {
 
 QString Diagnostic::severityName(Severity s)
@@ -13,6 +15,15 @@ QString Diagnostic::severityName(Severity s)
         return QStringLiteral("error");
     }
     return {};
+}
+
+QString Diagnostic::key() const
+{
+    const QByteArray text =
+        (code + QLatin1Char('\n') + evidence.file + QLatin1Char('\n') + message).toUtf8();
+    return code + QLatin1Char(':') +
+           QString::fromLatin1(
+               QCryptographicHash::hash(text, QCryptographicHash::Sha1).toHex().left(16));
 }
 
 } // namespace rosarch

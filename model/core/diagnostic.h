@@ -2,6 +2,7 @@
 
 #include "evidence.h"
 
+#include <QList>
 #include <QString>
 
 namespace rosarch {
@@ -16,12 +17,26 @@ struct Diagnostic
         Error
     };
 
+    /// Another place that takes part in the finding: the publisher of a type mismatch seen
+    /// from its subscriber, the other node of a duplicate name, the nearest existing name.
+    struct Related
+    {
+        QString message; ///< what this place is, for a person ("the publisher, with type T")
+        Evidence evidence;
+        bool operator==(const Related &) const = default;
+    };
+
     Severity severity = Severity::Warning;
     QString code;    ///< stable machine-readable kind, e.g. "syntax-error", "binary-file"
     QString message; ///< one sentence for a person
     Evidence evidence;
+    QList<Related> related;
 
     static QString severityName(Severity s);
+    /// The finding's stable key (blueprint §5): its code, file and message, with no line or
+    /// column, so that it survives edits elsewhere in the file. Baselines remember findings by
+    /// it: "topic-unpublished:3f2a9c0e51b7d4a8".
+    QString key() const;
     bool operator==(const Diagnostic &) const = default;
 };
 

@@ -53,6 +53,7 @@ struct Port
     QString guardParameter; ///< the parameter the guard depends on, when known
     QString guardDefault;   ///< that parameter's declared default, when known
     QString via;            ///< helper class through which the port is created ("" = the node)
+    QString qos;            ///< the QoS argument as written at the call ("" = none given)
     bool inherited = false; ///< declared in a project base class
     Evidence evidence;
 

@@ -69,6 +69,7 @@ struct CppPortCall
     CppValue guardValue;         ///< the variable (or parameter read) the guard tests
     QString receiver;            ///< "" for an implicit `this`, else the object expression
     bool imageTransport = false; ///< image_transport call: the type is sensor_msgs/msg/Image
+    QString qos;                 ///< the QoS argument of a publisher or subscription, as written
     Evidence evidence;
 };
 

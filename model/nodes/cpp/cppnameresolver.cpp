@@ -279,6 +279,7 @@ Port CppNameResolver::port(const CppPortCall &call, const CppLinkContext &ctx) c
         if (!handed.isEmpty())
             port.callback = handed;
     }
+    port.qos = call.qos;
     port.guard = call.guard;
     port.guardParameter = guardParameter(call.guardValue, ctx);
     if (!port.guardParameter.isEmpty())

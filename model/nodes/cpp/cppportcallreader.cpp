@@ -175,6 +175,9 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
         port.typeIsTemplateParameter =
             m_templateParameters.contains(head) || m_templateParameters.contains(port.typeWritten);
     }
+    if ((port.kind == PortKind::Publisher || port.kind == PortKind::Subscriber) &&
+        callbackFrom < int(args.size()))
+        port.qos = simplified(m_tree, args[size_t(callbackFrom)]);
     if (k.freeForm)
         port.receiver = simplified(m_tree, args.front());
     else if (!ts::isNull(shape.receiver))

@@ -133,6 +133,13 @@ Port PythonPortReader::read(TSNode call, PortKind kind) const
         if (!ts::isNull(callback))
             port.callback = m_resolver.callbackName(callback);
     }
+    // create_publisher(T, name, qos_profile), create_subscription(T, name, callback, qos_profile)
+    if (kind == PortKind::Publisher || kind == PortKind::Subscriber) {
+        const int at = first + (kind == PortKind::Publisher ? 2 : 3);
+        TSNode qos = py::argument(tree, call, at, "qos_profile");
+        if (!ts::isNull(qos))
+            port.qos = QString(tree.text(qos)).simplified();
+    }
     m_resolver.guard(call, &port.guard, &port.guardParameter);
     return port;
 }

@@ -1,0 +1,162 @@
+#include "diagnostickind.h"
+
+namespace rosarch {
+
+namespace {
+
+DiagnosticKind kind(const char *code, const char *title, const char *help, const char *level)
+{
+    return {QString::fromLatin1(code), QString::fromUtf8(title), QString::fromUtf8(help),
+            QString::fromLatin1(level)};
+}
+
+} // namespace
+
+const QList<DiagnosticKind> &DiagnosticKind::all()
+{
+    static const QList<DiagnosticKind> kinds = {
+        // Architecture checks (stage 3), per root system
+        kind("topic-unpublished", "Subscription that nobody publishes",
+             "A node subscribes to a topic that no node started by the same root launch file "
+             "publishes, so its callback never runs in that system. Usually a misspelt or "
+             "unremapped name (the message names the most similar published topic), or a "
+             "publisher outside the workspace (a driver, a simulator). Fix the name, add the "
+             "remap, or accept the finding when the publisher is external.",
+             "warning"),
+        kind("topic-unheard", "Publisher that nobody subscribes to",
+             "A node publishes a topic that no node of the same system subscribes to. Often "
+             "fine (a topic for tools, rosbag or RViz); worth a look when the name is close to "
+             "a subscribed one.",
+             "note"),
+        kind("type-mismatch", "One name, several interface types",
+             "The publishers, subscriptions, servers or clients of one name use different "
+             "message, service or action types; ROS 2 will not connect them. Make the types "
+             "agree, or give one side another name.",
+             "warning"),
+        kind("duplicate-server", "Several servers for one service or action",
+             "More than one node of a system serves the same service or action; which one "
+             "answers a request is undefined. Rename or remap one of them, or start only one.",
+             "warning"),
+        kind("unserved-client", "Client that no node serves",
+             "A node calls a service or action that no node of the same system serves; the "
+             "call waits forever. Check the name and the remaps, or accept the finding when the "
+             "server is outside the workspace.",
+             "note"),
+        kind("duplicate-node-name", "Two nodes with one name",
+             "Two nodes of a system have the same fully qualified name. ROS 2 starts both, but "
+             "parameters, services and tools then reach either one. Give one of them another "
+             "name or namespace.",
+             "warning"),
+        kind("remap-target-unused", "Remap to a name nobody uses",
+             "A launch file remaps a port to a name that no other node of the system uses on "
+             "the other side, so the remap connects nothing. The target is often misspelt (the "
+             "message names the most similar existing one) or the counterpart is not started.",
+             "warning"),
+        kind("remap-unmatched", "Remap that matches no port",
+             "A remap rule given to a node renames none of its ports: after ROS 2 expands both "
+             "sides, no port of the node has the rule's source name. The rule has no effect; "
+             "check its spelling and namespace.",
+             "warning"),
+        kind("qos-incompatible", "Incompatible QoS",
+             "A publisher and a subscription on one topic have QoS policies that ROS 2 will not "
+             "match: a best-effort publisher cannot serve a reliable subscription, and a "
+             "volatile publisher cannot serve a transient-local one. No message arrives and "
+             "ROS 2 only logs an incompatible-QoS event. Reported only when both sides write "
+             "their QoS at the call. Make the subscription ask for no more than is offered "
+             "(e.g. SensorDataQoS on both sides).",
+             "warning"),
+        // Reading the workspace
+        kind("syntax-error", "Syntax error",
+             "Part of a source or launch file could not be parsed. Analysis continues with what "
+             "could be read, so ports or nodes in the broken region may be missing.",
+             "warning"),
+        kind("parse-failed", "File could not be parsed",
+             "The parser gave up on a file (a timeout or an internal limit); nothing in it was "
+             "analysed.",
+             "error"),
+        kind("file-too-large", "File too large",
+             "A file above the size limit was skipped; nothing in it was analysed.", "warning"),
+        kind("binary-file", "Binary file", "A file that looks binary was skipped.", "note"),
+        kind("unreadable-file", "Unreadable file",
+             "A file could not be read (permissions, a broken link); it was skipped.", "warning"),
+        kind("unreadable-folder", "Unreadable folder",
+             "A folder could not be listed; what it holds was not analysed.", "warning"),
+        kind("symlink-loop", "Symbolic link loop or escape",
+             "A symbolic link points back into a folder already visited, or out of the "
+             "workspace; it was not followed.",
+             "note"),
+        kind("cmake-depth", "CMake nesting too deep",
+             "add_subdirectory nesting went beyond the limit; deeper CMakeLists.txt files were "
+             "not read, so their executables and plugins are unknown.",
+             "warning"),
+        kind("no-workspace", "Not a workspace",
+             "The folder has no ROS 2 package (no package.xml); nothing was analysed.", "error"),
+        kind("unresolved-entry-point", "Entry point without a node",
+             "A setup.py console script names a function whose node class could not be found.",
+             "note"),
+        kind("executable-without-node", "Executable without a node",
+             "A CMake executable's sources contain no node class that analysis could find.",
+             "note"),
+        // Launch files (stage 2)
+        kind("malformed-xml", "Malformed XML launch file",
+             "An XML launch file is not well-formed; the actions after the error were not read.",
+             "error"),
+        kind("malformed-yaml", "Malformed YAML launch file",
+             "A YAML launch file could not be parsed; its actions were not read.", "error"),
+        kind("missing-attribute", "Launch action without a required attribute",
+             "A launch action lacks an attribute ROS 2 requires (a node without pkg or exec, an "
+             "include without file); it was skipped.",
+             "warning"),
+        kind("malformed-substitution", "Malformed substitution",
+             "A $(...) substitution could not be read; its value is unknown.", "warning"),
+        kind("conflicting-conditions", "Both if and unless",
+             "An action has both an if and an unless condition; ROS 2 rejects that.", "warning"),
+        kind("invalid-entity", "Unknown launch entity",
+             "A YAML launch entry is not a launch action ROS 2 knows; it was skipped.", "warning"),
+        kind("nesting-too-deep", "Launch file nesting too deep",
+             "A launch file nests deeper than the limit; the deeper part was not read.", "warning"),
+        kind("not-a-launch-file", "Not a launch file",
+             "A file named like a launch file has no launch description.", "note"),
+        kind("no-launch-description", "No generate_launch_description",
+             "A Python launch file defines no generate_launch_description function.", "warning"),
+        kind("launch-description-unknown", "Launch description not evaluated",
+             "The launch description is built in a way the evaluator could not follow; nodes it "
+             "starts may be missing.",
+             "warning"),
+        kind("opaque-function", "OpaqueFunction",
+             "An OpaqueFunction runs arbitrary Python at launch time; what it returns was "
+             "evaluated only where it could be followed.",
+             "note"),
+        kind("launch-loop-limit", "Loop limit in a launch file",
+             "A loop in a Python launch file ran into the iteration limit; later iterations "
+             "were not evaluated.",
+             "warning"),
+        kind("launch-evaluation-limit", "Evaluation budget exhausted",
+             "Evaluating a Python launch file ran out of its step budget; what comes after "
+             "that point was not evaluated.",
+             "warning"),
+        kind("include-cycle", "Include cycle",
+             "A launch file includes itself, directly or through others; the cycle was cut.",
+             "error"),
+        kind("no-such-launch-file", "Included launch file not found",
+             "An include names a file that is not in the workspace; its nodes are missing.",
+             "warning"),
+        kind("external-include", "Include from outside the workspace",
+             "An include names a launch file of a package outside the workspace; it shows as an "
+             "opaque part.",
+             "note"),
+    };
+    return kinds;
+}
+
+DiagnosticKind DiagnosticKind::of(const QString &code)
+{
+    for (const DiagnosticKind &k : all())
+        if (k.code == code)
+            return k;
+    return {code, code,
+            QStringLiteral("A finding of kind '%1'; the message says what was seen.").arg(code),
+            QStringLiteral("warning")};
+}
+
+} // namespace rosarch

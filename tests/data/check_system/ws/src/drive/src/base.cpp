@@ -1,0 +1,34 @@
+#include <memory>
+
+#include "geometry_msgs/msg/twist.hpp"
+#include "rclcpp/rclcpp.hpp"
+
+namespace drive
+{
+
+// Drives the wheels; insists on reliable velocity commands.
+class Base : public rclcpp::Node
+{
+public:
+  Base()
+  : Node("base")
+  {
+    cmd_sub_ = create_subscription<geometry_msgs::msg::Twist>(
+      "cmd_vel", rclcpp::QoS(rclcpp::KeepLast(1)).reliable(),
+      std::bind(&Base::on_cmd, this, std::placeholders::_1));
+  }
+
+private:
+  void on_cmd(const geometry_msgs::msg::Twist &) {}
+
+  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr cmd_sub_;
+};
+
+}  // namespace drive
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<drive::Base>());
+  rclcpp::shutdown();
+}

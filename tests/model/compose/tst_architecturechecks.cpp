@@ -1,0 +1,197 @@
+// The architecture checks ROSDiscover's users rely on, on tests/data/check_system: a misspelt
+// topic gets the nearest existing name as a hint, two nodes share a name, a remap sends a
+// subscription to a topic nobody publishes, and literal QoS that cannot match (Python against
+// Python, Python against C++); plus the QoS reading itself and the findings' stable keys.
+#include "qos.h"
+#include "recovery.h"
+#include "testsupport.h"
+
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+QList<Diagnostic> ofCode(const QList<Diagnostic> &all, const QString &code)
+{
+    QList<Diagnostic> out;
+    for (const Diagnostic &d : all)
+        if (d.code == code)
+            out << d;
+    return out;
+}
+
+QString at(const Evidence &e)
+{
+    return QStringLiteral("%1:%2").arg(e.file).arg(e.line);
+}
+
+} // namespace
+
+class TestArchitectureChecks : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_diagnostics = recoverWorkspace(test::dataDir(QStringLiteral("check_system/ws")))
+                            .architecture.diagnostics;
+    }
+
+    void findsExactlyWhatTheFixtureHolds()
+    {
+        QStringList codes;
+        for (const Diagnostic &d : std::as_const(m_diagnostics))
+            codes << d.code;
+        codes.sort();
+        QCOMPARE(
+            codes,
+            (QStringList{QStringLiteral("duplicate-node-name"), QStringLiteral("qos-incompatible"),
+                         QStringLiteral("qos-incompatible"), QStringLiteral("remap-target-unused"),
+                         QStringLiteral("topic-unheard"), QStringLiteral("topic-unpublished")}));
+    }
+
+    void danglingTopicNamesTheNearestOne()
+    {
+        const QList<Diagnostic> d = ofCode(m_diagnostics, QStringLiteral("topic-unpublished"));
+        QCOMPARE(d.size(), 1);
+        QVERIFY2(d[0].message.endsWith(QLatin1String("Did you mean /wheel_odom?")),
+                 qPrintable(d[0].message));
+        QCOMPARE(at(d[0].evidence), QStringLiteral("src/patrol/patrol/mapper.py:20"));
+        QCOMPARE(d[0].related.size(), 1);
+        QCOMPARE(at(d[0].related[0].evidence), QStringLiteral("src/patrol/patrol/lidar.py:15"));
+        // And the other way round: the unheard publisher names the misspelt subscription.
+        const QList<Diagnostic> u = ofCode(m_diagnostics, QStringLiteral("topic-unheard"));
+        QCOMPARE(u.size(), 1);
+        QVERIFY(u[0].message.endsWith(QLatin1String("Did you mean /whel_odom?")));
+    }
+
+    void noHintWhenNothingIsClose()
+    {
+        // /initial_pose is far from every published name: the finding has no hint.
+        const QList<Diagnostic> d = ofCode(m_diagnostics, QStringLiteral("remap-target-unused"));
+        QCOMPARE(d.size(), 1);
+        QVERIFY(!d[0].message.contains(QLatin1String("Did you mean")));
+    }
+
+    void duplicateNodeNames()
+    {
+        const QList<Diagnostic> d = ofCode(m_diagnostics, QStringLiteral("duplicate-node-name"));
+        QCOMPARE(d.size(), 1);
+        QVERIFY(d[0].message.startsWith(QLatin1String("2 nodes are named /viewer")));
+        QCOMPARE(at(d[0].evidence), QStringLiteral("src/patrol/launch/patrol.launch.py:10"));
+        QCOMPARE(d[0].related.size(), 1);
+        QCOMPARE(at(d[0].related[0].evidence),
+                 QStringLiteral("src/patrol/launch/patrol.launch.py:11"));
+    }
+
+    void remapWhoseTargetNobodyPublishes()
+    {
+        const Diagnostic d = ofCode(m_diagnostics, QStringLiteral("remap-target-unused")).value(0);
+        QCOMPARE(d.severity, Diagnostic::Severity::Warning); // an input nobody feeds
+        QVERIFY2(d.message.contains(QLatin1String("initialpose to /initial_pose")),
+                 qPrintable(d.message));
+        // The rule is written in the launch file; the port's creation is the related place.
+        QCOMPARE(at(d.evidence), QStringLiteral("src/patrol/launch/patrol.launch.py:8"));
+        QCOMPARE(at(d.related.value(0).evidence), QStringLiteral("src/patrol/patrol/mapper.py:21"));
+    }
+
+    void incompatibleLiteralQos()
+    {
+        const QList<Diagnostic> d = ofCode(m_diagnostics, QStringLiteral("qos-incompatible"));
+        QStringList pairs;
+        for (const Diagnostic &x : d) {
+            QVERIFY(x.message.contains(QLatin1String("best-effort publisher and a reliable")));
+            pairs << at(x.evidence) + QStringLiteral(" <- ") + at(x.related.value(0).evidence);
+        }
+        pairs.sort();
+        // Python subscription against a Python publisher, and C++ against Python. The viewer's
+        // sensor-data scan and its volatile map subscription are compatible: not reported.
+        QCOMPARE(pairs, (QStringList{QStringLiteral("src/drive/src/base.cpp:16 <- "
+                                                    "src/patrol/patrol/teleop.py:13"),
+                                     QStringLiteral("src/patrol/patrol/mapper.py:16 <- "
+                                                    "src/patrol/patrol/lidar.py:14")}));
+    }
+
+    void qosAsWritten_data()
+    {
+        QTest::addColumn<QString>("written");
+        QTest::addColumn<QString>("reliability");
+        QTest::addColumn<QString>("durability");
+        const QString R = QStringLiteral("reliable"), B = QStringLiteral("best_effort"),
+                      V = QStringLiteral("volatile"), T = QStringLiteral("transient_local"), U;
+        QTest::newRow("depth") << QStringLiteral("10") << R << V;
+        QTest::newRow("cpp QoS") << QStringLiteral("rclcpp::QoS(10)") << R << V;
+        QTest::newRow("cpp best effort")
+            << QStringLiteral("rclcpp::QoS(rclcpp::KeepLast(5)).best_effort()") << B << V;
+        QTest::newRow("cpp sensor data") << QStringLiteral("rclcpp::SensorDataQoS()") << B << V;
+        QTest::newRow("cpp latched")
+            << QStringLiteral("rclcpp::QoS(1).transient_local().reliable()") << R << T;
+        QTest::newRow("cpp rmw enum")
+            << QStringLiteral("rclcpp::QoS(1).reliability(RMW_QOS_POLICY_RELIABILITY_BEST_EFFORT)")
+            << B << V;
+        QTest::newRow("cpp system default")
+            << QStringLiteral("rclcpp::SystemDefaultsQoS()") << U << U;
+        QTest::newRow("py sensor data") << QStringLiteral("qos_profile_sensor_data") << B << V;
+        QTest::newRow("py profile")
+            << QStringLiteral("QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)")
+            << R << T;
+        QTest::newRow("py old enum")
+            << QStringLiteral("QoSProfile(depth=1, "
+                              "reliability=QoSReliabilityPolicy.BEST_EFFORT)")
+            << B << V;
+        // Variables decide nothing: the check needs both sides literal.
+        QTest::newRow("variable") << QStringLiteral("qos") << U << U;
+        QTest::newRow("member") << QStringLiteral("qos_profile_") << U << U;
+        QTest::newRow("parameter depth") << QStringLiteral("rclcpp::QoS(depth_)") << U << U;
+        QTest::newRow("none") << QString() << U << U;
+    }
+
+    void qosAsWritten()
+    {
+        QFETCH(QString, written);
+        QFETCH(QString, reliability);
+        QFETCH(QString, durability);
+        const QosProfile q = QosProfile::fromWritten(written);
+        QCOMPARE(QosProfile::reliabilityName(q.reliability), reliability);
+        QCOMPARE(QosProfile::durabilityName(q.durability), durability);
+    }
+
+    void qosRules()
+    {
+        const QosProfile be = QosProfile::fromWritten(QStringLiteral("qos_profile_sensor_data"));
+        const QosProfile rel = QosProfile::fromWritten(QStringLiteral("10"));
+        const QosProfile latched =
+            QosProfile::fromWritten(QStringLiteral("rclcpp::QoS(1).transient_local()"));
+        const QosProfile unknown = QosProfile::fromWritten(QStringLiteral("qos"));
+        QVERIFY(!QosProfile::incompatibility(be, rel).isEmpty());
+        QVERIFY(QosProfile::incompatibility(rel, be).isEmpty()); // more is offered: fine
+        QVERIFY(!QosProfile::incompatibility(rel, latched).isEmpty());
+        QVERIFY(QosProfile::incompatibility(latched, rel).isEmpty());
+        QVERIFY(QosProfile::incompatibility(unknown, rel).isEmpty());
+        QVERIFY(QosProfile::incompatibility(be, unknown).isEmpty());
+    }
+
+    void keysIgnoreLinesButNotWhat()
+    {
+        const Diagnostic d = m_diagnostics.value(0);
+        Diagnostic moved = d;
+        moved.evidence.line += 7;
+        moved.evidence.column = 1;
+        QCOMPARE(moved.key(), d.key());
+        QVERIFY(d.key().startsWith(d.code + QLatin1Char(':')));
+        Diagnostic other = d;
+        other.message += QLatin1Char('!');
+        QVERIFY(other.key() != d.key());
+        QSet<QString> keys;
+        for (const Diagnostic &x : std::as_const(m_diagnostics))
+            keys.insert(x.key());
+        QCOMPARE(keys.size(), m_diagnostics.size());
+    }
+
+private:
+    QList<Diagnostic> m_diagnostics;
+};
+
+QTEST_GUILESS_MAIN(TestArchitectureChecks)
+#include "tst_architecturechecks.moc"
