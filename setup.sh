@@ -16,7 +16,7 @@ packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
   nlohmann-json3-dev libcurl4-openssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth fonts-dejavu-core
-  ccache clang-format clang-tidy default-jre-headless)
+  ccache clang-format clang-tidy default-jre-headless nodejs git)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -31,6 +31,7 @@ fi
 
 scripts/fetch-grammars.sh "$build_dir/_grammars"
 scripts/fetch-plantuml.sh "$build_dir/_plantuml" # the real consumer of our PlantUML, for the tests
+scripts/fetch-sarif-schema.sh "$build_dir/_sarif" # SARIF 2.1.0 schema + validator, for the tests
 
 jobs=$(nproc 2>/dev/null || echo 2)
 grammars="$PWD/$build_dir/_grammars"
@@ -39,7 +40,8 @@ grammars="$PWD/$build_dir/_grammars"
 configure_and_build() {
   local dir=$1; shift
   cmake -S . -B "$dir" -G Ninja -DROSARCH_GRAMMAR_DIR="$grammars" \
-    -DROSARCH_PLANTUML_JAR="$PWD/$build_dir/_plantuml/plantuml.jar" "$@"
+    -DROSARCH_PLANTUML_JAR="$PWD/$build_dir/_plantuml/plantuml.jar" \
+    -DROSARCH_SARIF_DIR="$PWD/$build_dir/_sarif" "$@"
   cmake --build "$dir" -j "$jobs"
 }
 

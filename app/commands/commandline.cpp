@@ -1,11 +1,12 @@
 #include "commandline.h"
-#include "acceptedmodel.h"
 #include "artifactwriter.h"
-#include "decisionstore.h"
+#include "checkcommand.h"
+#include "diffcommand.h"
 #include "editdistance.h"
 #include "evalcommand.h"
 #include "recovery.h"
 #include "suggestcommand.h"
+#include "workspacerun.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -21,7 +22,7 @@ namespace rosarch {
 
 namespace {
 
-const char *const kCommands[] = {"recover", "eval", "suggest"};
+const char *const kCommands[] = {"recover", "check", "diff", "eval", "suggest"};
 
 QString usageText()
 {
@@ -32,10 +33,21 @@ QString usageText()
         "default)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
         "<file>]\n"
-        "                  [--no-decisions]\n"
+        "                  [--no-decisions | --project <decisions.json>]\n"
         "                                            run the stages headless and write the "
         "artifacts,\n"
         "                                            with the decisions made in the GUI applied\n"
+        "  rosarch check <workspace> [--format text|json|sarif|junit] [--output <file>]\n"
+        "                [--baseline <file>] [--write-baseline <file>] [--fail-on "
+        "error|warning|info|never]\n"
+        "                                            report diagnostics and architecture checks "
+        "for CI\n"
+        "                                            (exit 0 pass, 1 new findings, 2 usage, 3 "
+        "file error)\n"
+        "  rosarch diff <before> <after> | <workspace> --rev A --rev B [--format text|json]\n"
+        "                                            what changed between two recoveries "
+        "(artifact\n"
+        "                                            folders, workspaces or git revisions)\n"
         "  rosarch eval --reference <dir|file> --recovered <dir|file> [--level acd|ccd] [--json]\n"
         "                                            score recovered PlantUML diagrams against a "
         "reference\n"
@@ -72,64 +84,25 @@ int recover(const QStringList &arguments)
     const QCommandLineOption quietOption(
         QStringList{QStringLiteral("q"), QStringLiteral("quiet")},
         QCoreApplication::translate("rosarch::CommandLine", "Print only errors."));
-    const QCommandLineOption argOption(
-        QStringLiteral("launch-arg"),
-        QCoreApplication::translate("rosarch::CommandLine", "Set a launch argument (repeatable)."),
-        QStringLiteral("name:=value"));
-    const QCommandLineOption rootOption(
-        QStringLiteral("launch-root"),
-        QCoreApplication::translate(
-            "rosarch::CommandLine",
-            "Analyse only this launch file (relative to the workspace) as the root."),
-        QStringLiteral("file"));
-    const QCommandLineOption noDecisionsOption(
-        QStringLiteral("no-decisions"),
-        QCoreApplication::translate("rosarch::CommandLine",
-                                    "Write the model as recovered, without the decisions a person "
-                                    "made on this workspace in the GUI."));
     parser.addOption(outOption);
     parser.addOption(quietOption);
-    parser.addOption(argOption);
-    parser.addOption(rootOption);
-    parser.addOption(noDecisionsOption);
+    WorkspaceRun run;
+    run.addOptions(parser);
     if (const int done = CommandLine::parseOrFinish(parser, arguments, usageText()); done >= 0)
         return done;
-    const QStringList positional = parser.positionalArguments();
-    if (positional.size() != 2 || !parser.isSet(outOption)) {
-        err << QCoreApplication::translate("rosarch::CommandLine",
-                                           "recover needs a workspace folder and --out <dir>.\n\n")
-            << usageText();
-        return CommandLine::UsageError;
-    }
-    const QString &workspace = positional.at(1);
-    if (!QFileInfo(workspace).isDir()) {
-        err << QCoreApplication::translate("rosarch::CommandLine", "Not a folder: %1\n")
-                   .arg(workspace);
+    QString problem;
+    if (!parser.isSet(outOption))
+        problem = QCoreApplication::translate("rosarch::CommandLine", "recover needs --out <dir>.");
+    if (!problem.isEmpty() || !run.read(parser, QStringLiteral("recover"), &problem)) {
+        err << problem << "\n\n" << usageText();
         return CommandLine::UsageError;
     }
     const bool quiet = parser.isSet(quietOption);
-    LaunchOptions options;
-    options.rootFile = parser.value(rootOption);
-    for (const QString &arg : parser.values(argOption)) {
-        const qsizetype sep = arg.indexOf(QLatin1String(":="));
-        if (sep <= 0) {
-            err << QCoreApplication::translate("rosarch::CommandLine",
-                                               "--launch-arg expects name:=value, got '%1'.\n")
-                       .arg(arg);
-            return CommandLine::UsageError;
-        }
-        options.arguments.insert(arg.left(sep), arg.mid(sep + 2));
-    }
 
     QElapsedTimer timer;
     timer.start();
-    const Recovery recovered = recoverWorkspace(workspace, options);
-    // The model as accepted, exactly as the GUI exports it for the same decisions.
-    const AcceptedDecisions accepted =
-        parser.isSet(noDecisionsOption)
-            ? AcceptedDecisions{}
-            : AcceptedModel::select(DecisionStore::load(DecisionStore::path(workspace)), recovered);
-    const Recovery recovery = AcceptedModel::apply(recovered, accepted);
+    int decisions = 0;
+    const Recovery recovery = run.recover(&decisions);
     const qint64 elapsed = timer.elapsed();
 
     QList<Diagnostic> diagnostics = recovery.nodes.diagnostics;
@@ -153,8 +126,6 @@ int recover(const QStringList &arguments)
     }
     const RecoveryCounts counts = RecoveryCounts::of(recovery);
     if (!quiet) {
-        const int decisions =
-            int(accepted.groupings.size() + accepted.names.size() + accepted.descriptions.size());
         if (decisions > 0)
             out << QCoreApplication::translate("rosarch::CommandLine",
                                                "Applied %1 accepted decisions (--no-decisions "
@@ -254,6 +225,10 @@ int CommandLine::run(const QStringList &arguments)
     }
     if (first == QLatin1String("recover"))
         return recover(arguments);
+    if (first == QLatin1String("check"))
+        return runCheck(arguments);
+    if (first == QLatin1String("diff"))
+        return runDiff(arguments);
     if (first == QLatin1String("eval"))
         return runEval(arguments);
     if (first == QLatin1String("suggest"))
