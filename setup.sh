@@ -29,9 +29,16 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+# npm comes with nodesource's nodejs; Debian packages it apart.
+if ! command -v npm >/dev/null 2>&1; then
+  sudo_cmd=""; [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends npm
+fi
+
 scripts/fetch-grammars.sh "$build_dir/_grammars"
 scripts/fetch-plantuml.sh "$build_dir/_plantuml" # the real consumer of our PlantUML, for the tests
 scripts/fetch-sarif-schema.sh "$build_dir/_sarif" # SARIF 2.1.0 schema + validator, for the tests
+scripts/fetch-mermaid.sh "$build_dir/_mermaid" # Mermaid's parser, for the tests
 
 jobs=$(nproc 2>/dev/null || echo 2)
 grammars="$PWD/$build_dir/_grammars"
@@ -41,7 +48,7 @@ configure_and_build() {
   local dir=$1; shift
   cmake -S . -B "$dir" -G Ninja -DROSARCH_GRAMMAR_DIR="$grammars" \
     -DROSARCH_PLANTUML_JAR="$PWD/$build_dir/_plantuml/plantuml.jar" \
-    -DROSARCH_SARIF_DIR="$PWD/$build_dir/_sarif" "$@"
+    -DROSARCH_SARIF_DIR="$PWD/$build_dir/_sarif" -DROSARCH_MERMAID_DIR="$PWD/$build_dir/_mermaid" "$@"
   cmake --build "$dir" -j "$jobs"
 }
 

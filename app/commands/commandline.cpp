@@ -4,6 +4,7 @@
 #include "diffcommand.h"
 #include "editdistance.h"
 #include "evalcommand.h"
+#include "plantumlrenderer.h"
 #include "recovery.h"
 #include "suggestcommand.h"
 #include "workspacerun.h"
@@ -33,7 +34,8 @@ QString usageText()
         "default)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
         "<file>]\n"
-        "                  [--no-decisions | --project <decisions.json>]\n"
+        "                  [--no-decisions | --project <decisions.json>] [--render svg|png "
+        "[--plantuml-jar <file>]]\n"
         "                                            run the stages headless and write the "
         "artifacts,\n"
         "                                            with the decisions made in the GUI applied\n"
@@ -60,7 +62,9 @@ QString usageText()
         "\n"
         "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, "
         "architecture.json,\n"
-        "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml\n"
+        "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml,\n"
+        "mermaid/<launch file stem>.md, graph/<root launch file stem>.dot (and .svg/.png next "
+        "to each .puml with --render)\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
 }
 
@@ -84,8 +88,22 @@ int recover(const QStringList &arguments)
     const QCommandLineOption quietOption(
         QStringList{QStringLiteral("q"), QStringLiteral("quiet")},
         QCoreApplication::translate("rosarch::CommandLine", "Print only errors."));
+    const QCommandLineOption renderOption(
+        QStringLiteral("render"),
+        QCoreApplication::translate("rosarch::CommandLine",
+                                    "Also render every ACD and CCD with PlantUML, as svg or png "
+                                    "(needs Java and a PlantUML jar)."),
+        QStringLiteral("svg|png"));
+    const QCommandLineOption jarOption(
+        QStringLiteral("plantuml-jar"),
+        QCoreApplication::translate("rosarch::CommandLine",
+                                    "The PlantUML jar for --render (default "
+                                    "$ROSARCH_PLANTUML_JAR, or one installed with rosarch)."),
+        QStringLiteral("file"));
     parser.addOption(outOption);
     parser.addOption(quietOption);
+    parser.addOption(renderOption);
+    parser.addOption(jarOption);
     WorkspaceRun run;
     run.addOptions(parser);
     if (const int done = CommandLine::parseOrFinish(parser, arguments, usageText()); done >= 0)
@@ -93,6 +111,23 @@ int recover(const QStringList &arguments)
     QString problem;
     if (!parser.isSet(outOption))
         problem = QCoreApplication::translate("rosarch::CommandLine", "recover needs --out <dir>.");
+    const QString render = parser.value(renderOption).toLower();
+    if (problem.isEmpty() && parser.isSet(renderOption) && render != QLatin1String("svg") &&
+        render != QLatin1String("png"))
+        problem = QCoreApplication::translate("rosarch::CommandLine",
+                                              "--render takes svg or png, not '%1'.")
+                      .arg(render);
+    QString jar, java;
+    if (problem.isEmpty() && parser.isSet(renderOption)) {
+        // Known before the analysis runs: a missing renderer is a usage error, not a late one.
+        jar = PlantUmlRenderer::findJar(parser.value(jarOption));
+        if (parser.isSet(jarOption) && !QFileInfo(parser.value(jarOption)).isFile())
+            jar.clear(); // the jar asked for, or none: never another one silently
+        java = PlantUmlRenderer::findJava();
+        QString why;
+        if (!PlantUmlRenderer::render({}, render, jar, java, &why))
+            problem = why;
+    }
     if (!problem.isEmpty() || !run.read(parser, QStringLiteral("recover"), &problem)) {
         err << problem << "\n\n" << usageText();
         return CommandLine::UsageError;
@@ -124,8 +159,27 @@ int recover(const QStringList &arguments)
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }
+    int rendered = 0;
+    if (parser.isSet(renderOption)) {
+        QStringList diagrams;
+        for (const QString &file : std::as_const(written))
+            if (file.endsWith(QLatin1String(".puml")))
+                diagrams << file;
+        if (!PlantUmlRenderer::render(diagrams, render, jar, java, &error)) {
+            err << QCoreApplication::translate("rosarch::CommandLine",
+                                               "Rendering with PlantUML failed:\n%1\n")
+                       .arg(error);
+            return CommandLine::AnalysisErrors;
+        }
+        rendered = int(diagrams.size());
+    }
     const RecoveryCounts counts = RecoveryCounts::of(recovery);
     if (!quiet) {
+        if (rendered > 0)
+            out << QCoreApplication::translate("rosarch::CommandLine",
+                                               "Rendered %1 diagrams as %2 with PlantUML.\n")
+                       .arg(rendered)
+                       .arg(render);
         if (decisions > 0)
             out << QCoreApplication::translate("rosarch::CommandLine",
                                                "Applied %1 accepted decisions (--no-decisions "

@@ -3,7 +3,9 @@
 #include "architecturejson.h"
 #include "atomicnodesjson.h"
 #include "ccdwriter.h"
+#include "communicationgraph.h"
 #include "launchdependenciesjson.h"
+#include "mermaidwriter.h"
 
 #include <QDir>
 #include <QSaveFile>
@@ -48,16 +50,22 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
             QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("acd")));
         return false;
     }
-    if (withLaunch && !out.mkpath(QStringLiteral("ccd"))) {
-        *error =
-            QStringLiteral("Cannot create the folder %1.").arg(out.filePath(QStringLiteral("ccd")));
-        return false;
-    }
+    for (const QString &sub :
+         {QStringLiteral("ccd"), QStringLiteral("mermaid"), QStringLiteral("graph")})
+        if (withLaunch && !out.mkpath(sub)) {
+            *error = QStringLiteral("Cannot create the folder %1.").arg(out.filePath(sub));
+            return false;
+        }
     // Diagrams of an earlier run would otherwise linger beside the new ones.
     QDir acd(out.filePath(QStringLiteral("acd")));
     QDir ccd(out.filePath(QStringLiteral("ccd")));
-    for (QDir *d : {&acd, &ccd})
-        for (const QString &old : d->entryList({QStringLiteral("*.puml")}, QDir::Files))
+    QDir mermaid(out.filePath(QStringLiteral("mermaid")));
+    QDir graph(out.filePath(QStringLiteral("graph")));
+    for (QDir *d : {&acd, &ccd, &mermaid, &graph})
+        for (const QString &old : d->entryList({QStringLiteral("*.puml"), QStringLiteral("*.md"),
+                                                QStringLiteral("*.dot"), QStringLiteral("*.svg"),
+                                                QStringLiteral("*.png")},
+                                               QDir::Files))
             d->remove(old);
     if (!writeFile(out.filePath(QStringLiteral("atomic_nodes.json")), AtomicNodesJson::write(nodes),
                    written, error))
@@ -88,6 +96,15 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
     for (const Composite *c : recovery.architecture.representatives()) {
         const QString path = ccd.filePath(ccdStems.value(c->instanceId) + QStringLiteral(".puml"));
         if (!writeFile(path, CcdWriter::write(*c).toUtf8(), written, error))
+            return false;
+        const QString md = mermaid.filePath(ccdStems.value(c->instanceId) + QStringLiteral(".md"));
+        if (!writeFile(md, MermaidWriter::write(*c).toUtf8(), written, error))
+            return false;
+        if (!c->parentId.isEmpty())
+            continue;
+        const QString dot = graph.filePath(ccdStems.value(c->instanceId) + QStringLiteral(".dot"));
+        if (!writeFile(dot, CommunicationGraph::dot(recovery.architecture, *c).toUtf8(), written,
+                       error))
             return false;
     }
     return true;

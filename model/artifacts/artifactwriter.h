@@ -10,7 +10,9 @@ namespace rosarch {
 
 /// Writes a run's artifacts into one folder with the fixed layout:
 /// atomic_nodes.json, launch_dependencies.json, architecture.json, diagnostics.json,
-/// acd/<ClassName>.puml, ccd/<launch stem>.puml.
+/// acd/<ClassName>.puml, ccd/<launch stem>.puml, mermaid/<launch stem>.md (the CCD as a
+/// Mermaid flowchart) and graph/<root launch stem>.dot (a root system's communication graph).
+/// Earlier diagrams (and their rendered pictures) in those folders are removed first.
 class ArtifactWriter
 {
 public:

@@ -185,6 +185,48 @@ private Q_SLOTS:
         QCOMPARE(version.out.trimmed(), QStringLiteral("rosarch " ROSARCH_VERSION));
     }
 
+    void renderWithPlantUml()
+    {
+        // The same pictures the published pipeline gets: every ACD and CCD rendered by the real
+        // PlantUML, next to its .puml; plus the Mermaid and DOT exports.
+        QTemporaryDir out;
+        const QString ws = rosarch::test::dataDir(QStringLiteral("compose_system/ws"));
+        const QString jar = QStringLiteral(ROSARCH_PLANTUML_JAR);
+        Run r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
+                            QStringLiteral("--render"), QStringLiteral("svg"),
+                            QStringLiteral("--plantuml-jar"), jar});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QLatin1String("Rendered 7 diagrams as svg with PlantUML.")));
+        QStringList pumls;
+        for (const QString &sub : {QStringLiteral("acd"), QStringLiteral("ccd")})
+            for (const QString &f :
+                 QDir(out.filePath(sub)).entryList({QStringLiteral("*.puml")}, QDir::Files))
+                pumls << out.filePath(sub + QLatin1Char('/') + f);
+        QCOMPARE(pumls.size(), 7);
+        for (const QString &puml : std::as_const(pumls)) {
+            const QString svg = puml.left(puml.size() - 4) + QStringLiteral("svg");
+            QVERIFY2(rosarch::test::readFile(svg).contains("<svg"), qPrintable(svg));
+        }
+        QVERIFY(rosarch::test::readFile(out.filePath(QStringLiteral("ccd/system.svg")))
+                    .contains("backup_planner"));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("mermaid/system.md"))));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("mermaid/vision.md"))));
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("graph/system.dot"))));
+        // A later run without --render leaves no stale picture behind.
+        r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path()});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!QFile::exists(out.filePath(QStringLiteral("ccd/system.svg"))));
+        // A jar that is not there is said before anything runs, and no other jar is used.
+        r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
+                        QStringLiteral("--render"), QStringLiteral("png"),
+                        QStringLiteral("--plantuml-jar"), QStringLiteral("/no/plantuml.jar")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains(QLatin1String("No PlantUML jar found")));
+        r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
+                        QStringLiteral("--render"), QStringLiteral("pdf")});
+        QCOMPARE(r.exitCode, 2);
+    }
+
     void unwritableOutputIsReported()
     {
         QTemporaryDir dir;
