@@ -209,4 +209,14 @@ void AppSettings::setUseLlm(bool use)
     m_settings->setValue(kLlmUse, use);
 }
 
+QString AppSettings::plantUmlJar() const
+{
+    return m_settings->value(QStringLiteral("plantuml/jar")).toString();
+}
+
+void AppSettings::setPlantUmlJar(const QString &path)
+{
+    m_settings->setValue(QStringLiteral("plantuml/jar"), path);
+}
+
 } // namespace rosarch

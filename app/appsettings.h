@@ -55,6 +55,9 @@ public:
     /// was stored, $ROSARCH_LLM_ENDPOINT / $ROSARCH_LLM_MODEL or the defaults.
     LlmSettings llmSettings() const;
     void setLlmSettings(const LlmSettings &settings);
+    /// The PlantUML jar a person chose for rendering ("" = look in the usual places).
+    QString plantUmlJar() const;
+    void setPlantUmlJar(const QString &path);
     /// Whether suggestion runs ask the LLM (off until a person turns it on).
     bool useLlm() const;
     void setUseLlm(bool use);

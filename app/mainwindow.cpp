@@ -1,9 +1,11 @@
 #include "mainwindow.h"
 #include "aboutdialog.h"
 #include "appsettings.h"
+#include "architecturediffview.h"
 #include "artifactwriter.h"
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
+#include "comparecontroller.h"
 #include "diagnosticmodel.h"
 #include "diagramcontroller.h"
 #include "diagramlayouter.h"
@@ -14,6 +16,7 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
+#include "rendercontroller.h"
 #include "sourceview.h"
 #include "stagecontroller.h"
 #include "stagerunner.h"
@@ -127,6 +130,9 @@ void MainWindow::createPanels()
     m_suggestionPanel->setModel(m_suggestionModel);
     m_suggestionDock =
         makeDock(m_suggestionPanel, tr("Suggestions"), QStringLiteral("suggestionsDock"));
+    m_changesView = new ArchitectureDiffView(this);
+    m_changesDock =
+        makeDock(m_changesView, tr("Architecture changes"), QStringLiteral("changesDock"));
     resetLayout();
 
     m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
@@ -171,6 +177,10 @@ void MainWindow::createPanels()
         if (c.has(DocumentChange::Suggestion) && c.id == m_suggestionPanel->currentSuggestionId())
             preview(c.id);
     });
+    m_compare = new CompareController(m_document, m_changesView, m_changesDock, m_logView, this);
+    m_render = new RenderController(m_document, m_logView, this);
+    connect(m_render, &RenderController::status, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
     connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
@@ -196,6 +206,14 @@ void MainWindow::resetLayout()
     splitDockWidget(m_diagramDock, m_sourceDock, Qt::Horizontal);
     for (QDockWidget *dock : docks)
         dock->show();
+    // Architecture changes share the log's place and appear when a comparison runs.
+    if (m_changesDock) {
+        removeDockWidget(m_changesDock);
+        m_changesDock->setFloating(false);
+        tabifyDockWidget(m_logDock, m_changesDock);
+        m_changesDock->hide();
+        m_logDock->raise();
+    }
     if (m_toolBar)
         m_toolBar->show();
     const int w = std::max(width(), 800);

@@ -13,7 +13,10 @@ class QToolButton;
 
 namespace rosarch {
 
+class ArchitectureDiffView;
 class AtomicNodeModel;
+class CompareController;
+class RenderController;
 class AtomicNodePanel;
 class DiagramController;
 class DiagramLayouter;
@@ -74,6 +77,9 @@ public:
     QAction *suggestAction() const { return m_suggestAction; }
     LogView *logView() const { return m_logView; }
     QLabel *countsLabel() const { return m_countsLabel; }
+    CompareController *compare() const { return m_compare; }
+    RenderController *render() const { return m_render; }
+    ArchitectureDiffView *changesView() const { return m_changesView; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -124,6 +130,10 @@ private:
     QDockWidget *m_diagramDock = nullptr;
     QDockWidget *m_sourceDock = nullptr;
     QDockWidget *m_logDock = nullptr;
+    QDockWidget *m_changesDock = nullptr; ///< architecture changes; shown by a comparison
+    ArchitectureDiffView *m_changesView = nullptr;
+    CompareController *m_compare = nullptr;
+    RenderController *m_render = nullptr;
     QToolBar *m_toolBar = nullptr;
 
     QAction *m_openAction = nullptr;

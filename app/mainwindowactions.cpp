@@ -1,12 +1,14 @@
 // MainWindow's actions, menus and toolbar (the rest of the class is in mainwindow.cpp).
 #include "aboutdialog.h"
 #include "atomicnodepanel.h"
+#include "comparecontroller.h"
 #include "diagramcontroller.h"
 #include "document.h"
 #include "icons.h"
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "rendercontroller.h"
 #include "stagerunner.h"
 #include "suggestioncontroller.h"
 
@@ -143,8 +145,13 @@ void MainWindow::createMenus()
     file->addAction(m_diagrams->exportSvgAction());
     file->addAction(m_diagrams->exportPngAction());
     file->addSeparator();
+    file->addAction(m_render->renderAction());
+    file->addAction(m_render->jarAction());
+    file->addSeparator();
     file->addAction(m_diagrams->compareAction());
     file->addAction(m_diagrams->clearComparisonAction());
+    file->addAction(m_compare->compareFolderAction());
+    file->addAction(m_compare->compareRevisionAction());
     file->addSeparator();
     file->addAction(m_quitAction);
 
@@ -173,6 +180,7 @@ void MainWindow::createMenus()
     for (QDockWidget *dock :
          {m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock, m_suggestionDock, m_logDock})
         view->addAction(dock->toggleViewAction());
+    view->addAction(m_changesDock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
     view->addSeparator();

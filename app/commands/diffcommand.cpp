@@ -1,6 +1,7 @@
 #include "diffcommand.h"
 #include "architecturediff.h"
 #include "commandline.h"
+#include "gitrevision.h"
 #include "recovery.h"
 
 #include <QCommandLineParser>
@@ -8,7 +9,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QProcess>
 #include <QSaveFile>
 #include <QTemporaryDir>
 #include <QTextStream>
@@ -28,58 +28,6 @@ enum DiffExit
 QString tr(const char *text)
 {
     return QCoreApplication::translate("rosarch::DiffCommand", text);
-}
-
-/// Runs git in `folder`; its standard output, or "" with `error` set.
-bool git(const QString &folder, const QStringList &args, QByteArray *output, QString *error)
-{
-    QProcess p;
-    p.setWorkingDirectory(folder);
-    p.start(QStringLiteral("git"), args);
-    if (!p.waitForStarted(10000)) {
-        *error = tr("git could not be started: %1").arg(p.errorString());
-        return false;
-    }
-    p.closeWriteChannel();
-    if (!p.waitForFinished(300000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
-        *error = tr("git %1 failed: %2")
-                     .arg(args.join(QLatin1Char(' ')),
-                          QString::fromLocal8Bit(p.readAllStandardError()).trimmed());
-        return false;
-    }
-    if (output)
-        *output = p.readAllStandardOutput();
-    return true;
-}
-
-/// Writes the workspace as it is at `rev` below `into` (git archive, then tar), and returns
-/// the folder that corresponds to `workspace` there.
-bool checkout(const QString &workspace, const QString &rev, const QString &into, QString *folder,
-              QString *error)
-{
-    QByteArray prefix, top;
-    if (!git(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-prefix")}, &prefix,
-             error) ||
-        !git(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-toplevel")}, &top,
-             error))
-        return false;
-    // The workspace's own tree at `rev` ("rev:path/in/repo/"), unpacked as the folder itself.
-    const QString tar = QDir(into).filePath(QStringLiteral("tree.tar"));
-    if (!git(QString::fromLocal8Bit(top.trimmed()),
-             {QStringLiteral("archive"), QStringLiteral("--format=tar"), QStringLiteral("-o"), tar,
-              rev + QLatin1Char(':') + QString::fromUtf8(prefix.trimmed())},
-             nullptr, error))
-        return false;
-    QProcess untar;
-    untar.start(QStringLiteral("tar"), {QStringLiteral("-xf"), tar, QStringLiteral("-C"), into});
-    if (!untar.waitForFinished(300000) || untar.exitCode() != 0) {
-        *error = tr("Cannot unpack revision %1: %2")
-                     .arg(rev, QString::fromLocal8Bit(untar.readAllStandardError()).trimmed());
-        return false;
-    }
-    QFile::remove(tar);
-    *folder = into;
-    return true;
 }
 
 /// An artifact folder is read; any other folder is recovered as a workspace.
@@ -154,14 +102,13 @@ int runDiff(const QStringList &arguments)
         }
     } else {
         QTemporaryDir a, b;
-        QString folderA, folderB;
         if (!a.isValid() || !b.isValid()) {
             err << tr("Cannot create a temporary folder.\n");
             return InputError;
         }
-        if (!checkout(positional.at(1), revs.at(0), a.path(), &folderA, &error) ||
-            !checkout(positional.at(1), revs.at(1), b.path(), &folderB, &error) ||
-            !snapshot(folderA, &before, &error) || !snapshot(folderB, &after, &error)) {
+        if (!GitRevision::checkout(positional.at(1), revs.at(0), a.path(), &error) ||
+            !GitRevision::checkout(positional.at(1), revs.at(1), b.path(), &error) ||
+            !snapshot(a.path(), &before, &error) || !snapshot(b.path(), &after, &error)) {
             err << error << '\n';
             return InputError;
         }
