@@ -45,13 +45,17 @@ QString who(const RosNodePart &part)
 class Checker
 {
 public:
-    Checker(const Architecture &arch, QList<Diagnostic> *out) : m_arch(arch), m_out(out) {}
+    Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
+            QList<Diagnostic> *out)
+        : m_arch(arch), m_nodes(nodes), m_launch(launch), m_out(out)
+    {
+    }
 
     void checkRoot(const Composite &root)
     {
         m_system.clear();
         m_order.clear();
-        m_nodes.clear();
+        m_named.clear();
         m_nodeOrder.clear();
         collect(root, 0);
         for (const QString &key : std::as_const(m_order))
@@ -72,11 +76,11 @@ private:
                     collect(*child, depth + 1);
                 continue;
             }
-            if (!part.name.isEmpty()) {
+            if (nameIsKnown(part)) {
                 const QString fq = who(part);
-                if (!m_nodes.contains(fq))
+                if (!m_named.contains(fq))
                     m_nodeOrder.append(fq);
-                m_nodes[fq].append(&part);
+                m_named[fq].append(&part);
             }
             for (const PartPort &port : part.ports) {
                 if (!port.active || !port.resolved)
@@ -292,7 +296,7 @@ private:
     void checkNodeNames(const Composite &root)
     {
         for (const QString &fq : std::as_const(m_nodeOrder)) {
-            const QList<const RosNodePart *> &parts = m_nodes[fq];
+            const QList<const RosNodePart *> &parts = m_named[fq];
             if (parts.size() < 2)
                 continue;
             QList<Diagnostic::Related> rel;
@@ -307,11 +311,26 @@ private:
         }
     }
 
+    /// The node name is what runs: given in the launch file, or in the node's code. A name
+    /// guessed from the executable (a package outside the workspace, a computed name) is not.
+    bool nameIsKnown(const RosNodePart &part) const
+    {
+        if (part.name.isEmpty())
+            return false;
+        const NodeInstance *instance = m_launch.node(part.instanceId);
+        if (instance && !instance->nodeName.isEmpty())
+            return true;
+        const AtomicNode *cls = instance ? m_nodes.node(instance->classId) : nullptr;
+        return cls && !cls->nodeName.isEmpty();
+    }
+
     const Architecture &m_arch;
+    const AtomicNodeList &m_nodes;
+    const LaunchDependencies &m_launch;
     QList<Diagnostic> *m_out;
     QHash<QString, Family> m_system;
     QStringList m_order;
-    QHash<QString, QList<const RosNodePart *>> m_nodes; ///< fully qualified name -> parts
+    QHash<QString, QList<const RosNodePart *>> m_named; ///< fully qualified name -> parts
     QStringList m_nodeOrder;
     QSet<QString> m_seen;
 };
@@ -370,7 +389,7 @@ QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const Atomic
                                           const LaunchDependencies &launch)
 {
     QList<Diagnostic> out;
-    Checker checker(arch, &out);
+    Checker checker(arch, nodes, launch, &out);
     for (const Composite &c : arch.composites)
         if (c.parentId.isEmpty())
             checker.checkRoot(c);
