@@ -57,16 +57,24 @@ QosProfile QosProfile::fromWritten(const QString &written)
     if (t.isEmpty())
         return q;
     const bool literal = isLiteralProfile(written);
-    if (containsAny(t, {"best_effort", "besteffort", "sensordata", "sensor_data"}))
+    // A policy set explicitly (.best_effort(), ReliabilityPolicy.RELIABLE, the RMW enum)
+    // counts even on a profile that is otherwise a variable; a named profile (SensorDataQoS)
+    // only when it is ROS's own, spelled out at the call.
+    if (containsAny(t, {".best_effort()", "Policy.BEST_EFFORT", "RELIABILITY_BEST_EFFORT"}) ||
+        (literal && containsAny(t, {"sensordata", "sensor_data", "BestEffort"})))
         q.reliability = Reliability::BestEffort;
-    else if (containsAny(t, {"reliable", "RELIABILITY_RELIABLE"}))
+    else if (containsAny(t, {".reliable()", "Policy.RELIABLE", "RELIABILITY_RELIABLE"}) ||
+             (literal && containsAny(t, {"Reliable"})))
         q.reliability = Reliability::Reliable;
     else if (literal &&
              !containsAny(t, {"reliability", "bestavailable", "system_default", "systemdefault"}))
         q.reliability = Reliability::Reliable;
-    if (containsAny(t, {"transient_local", "transientlocal"}))
+    if (containsAny(
+            t, {".transient_local()", "Policy.TRANSIENT_LOCAL", "DURABILITY_TRANSIENT_LOCAL"}) ||
+        (literal && containsAny(t, {"TransientLocal"})))
         q.durability = Durability::TransientLocal;
-    else if (containsAny(t, {"volatile"}))
+    else if (containsAny(t, {".durability_volatile()", "Policy.VOLATILE", "DURABILITY_VOLATILE"}) ||
+             (literal && containsAny(t, {"Volatile"})))
         q.durability = Durability::Volatile;
     else if (literal &&
              !containsAny(t, {"durability", "bestavailable", "system_default", "systemdefault"}))

@@ -175,9 +175,6 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
         port.typeIsTemplateParameter =
             m_templateParameters.contains(head) || m_templateParameters.contains(port.typeWritten);
     }
-    if ((port.kind == PortKind::Publisher || port.kind == PortKind::Subscriber) &&
-        callbackFrom < int(args.size()))
-        port.qos = simplified(m_tree, args[size_t(callbackFrom)]);
     if (k.freeForm)
         port.receiver = simplified(m_tree, args.front());
     else if (!ts::isNull(shape.receiver))
@@ -188,6 +185,23 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
         const int at = m_function.parameterNames.indexOf(port.callback);
         if (at >= 0 && !m_locals.contains(port.callback))
             port.callbackParameter = at;
+    }
+    if (port.kind == PortKind::Publisher || port.kind == PortKind::Subscriber) {
+        // QoS follows the name, or the callback in wrappers that take it first
+        // (nav2's create_subscription(topic, callback, qos)).
+        for (int i = callbackFrom; i < int(args.size()) && i <= callbackFrom + 1; ++i) {
+            const QString text = simplified(m_tree, args[size_t(i)]);
+            const bool callback = text.startsWith(QLatin1String("std::bind")) ||
+                                  text.startsWith(QLatin1String("bind(")) ||
+                                  text.startsWith(QLatin1String("std::forward")) ||
+                                  text.startsWith(QLatin1Char('[')) ||
+                                  text.startsWith(QLatin1Char('&')) ||
+                                  (!port.callback.isEmpty() && text.contains(port.callback));
+            if (!callback) {
+                port.qos = text;
+                break;
+            }
+        }
     }
     guardOf(call, &port.guard, &port.guardValue);
     m_function.ports.append(port);

@@ -107,7 +107,7 @@ private Q_SLOTS:
         pairs.sort();
         // Python subscription against a Python publisher, and C++ against Python. The viewer's
         // sensor-data scan and its volatile map subscription are compatible: not reported.
-        QCOMPARE(pairs, (QStringList{QStringLiteral("src/drive/src/base.cpp:16 <- "
+        QCOMPARE(pairs, (QStringList{QStringLiteral("src/drive/src/base.cpp:17 <- "
                                                     "src/patrol/patrol/teleop.py:13"),
                                      QStringLiteral("src/patrol/patrol/mapper.py:16 <- "
                                                     "src/patrol/patrol/lidar.py:14")}));
@@ -144,6 +144,13 @@ private Q_SLOTS:
         QTest::newRow("variable") << QStringLiteral("qos") << U << U;
         QTest::newRow("member") << QStringLiteral("qos_profile_") << U << U;
         QTest::newRow("parameter depth") << QStringLiteral("rclcpp::QoS(depth_)") << U << U;
+        // An explicit policy on a profile that is otherwise a variable still counts...
+        QTest::newRow("explicit on variable")
+            << QStringLiteral("rclcpp::QoS(depth_).best_effort()") << B << U;
+        // ...but a project's own named profile (navigation2's) is not taken at its name.
+        QTest::newRow("project profile") << QStringLiteral("nav2::qos::SensorDataQoS()") << U << U;
+        QTest::newRow("a callback named reliably")
+            << QStringLiteral("std::bind(&N::onReliableData, this, _1)") << U << U;
         QTest::newRow("none") << QString() << U << U;
     }
 
@@ -190,6 +197,7 @@ private Q_SLOTS:
     }
 
 private:
+    Recovery m_recovery;
     QList<Diagnostic> m_diagnostics;
 };
 
