@@ -34,8 +34,32 @@ class TestArchitectureChecks : public QObject
 private Q_SLOTS:
     void initTestCase()
     {
-        m_diagnostics = recoverWorkspace(test::dataDir(QStringLiteral("check_system/ws")))
-                            .architecture.diagnostics;
+        m_recovery = recoverWorkspace(test::dataDir(QStringLiteral("check_system/ws")));
+        m_diagnostics = m_recovery.architecture.diagnostics;
+    }
+
+    void qosIsReadAtTheCall()
+    {
+        QStringList qos;
+        for (const AtomicNode &n : std::as_const(m_recovery.nodes.nodes))
+            for (const Port &p : n.ports)
+                qos << QStringLiteral("%1 %2: %3").arg(n.className, p.name, p.qos);
+        qos.sort();
+        QCOMPARE(qos, (QStringList{QStringLiteral(
+                                       "Base cmd_vel: rclcpp::QoS(rclcpp::KeepLast(1)).reliable()"),
+                                   // the callback before the QoS is skipped
+                                   QStringLiteral("Base map: rclcpp::QoS(1).transient_local()"),
+                                   QStringLiteral("Lidar scan: qos_profile_sensor_data"),
+                                   QStringLiteral("Lidar wheel_odom: 10"),
+                                   QStringLiteral("Mapper initialpose: 10"),
+                                   QStringLiteral("Mapper map: latched"),
+                                   QStringLiteral("Mapper scan: QoSProfile(depth=5, "
+                                                  "reliability=ReliabilityPolicy.RELIABLE)"),
+                                   QStringLiteral("Mapper whel_odom: 10"),
+                                   QStringLiteral("Teleop cmd_vel: QoSProfile(depth=1, "
+                                                  "reliability=ReliabilityPolicy.BEST_EFFORT)"),
+                                   QStringLiteral("Viewer map: 1"),
+                                   QStringLiteral("Viewer scan: qos_profile_sensor_data")}));
     }
 
     void findsExactlyWhatTheFixtureHolds()
