@@ -85,6 +85,19 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "A symbolic link points back into a folder already visited, or out of the "
              "workspace; it was not followed.",
              "note"),
+        kind("symlink-outside", "Symbolic link out of the workspace",
+             "A symbolic link points outside the workspace; it was not followed, so nothing "
+             "outside the workspace is read. Copy what it links to into the workspace to "
+             "analyse it.",
+             "note"),
+        kind("unreadable-name", "File name that is not UTF-8",
+             "A file or folder name is not valid UTF-8, so it cannot be opened by name; it "
+             "was skipped. Rename it.",
+             "warning"),
+        kind("not-utf8", "File that is not UTF-8",
+             "A file's content is not valid UTF-8; it was read as Latin-1, so non-ASCII "
+             "characters in names or comments may be shown wrongly. ROS 2 expects UTF-8.",
+             "note"),
         kind("cmake-depth", "CMake nesting too deep",
              "add_subdirectory nesting went beyond the limit; deeper CMakeLists.txt files were "
              "not read, so their executables and plugins are unknown.",

@@ -43,6 +43,8 @@ public:
             std::optional<LaunchFileDescription> read = LaunchAnalyzer::read(f, content);
             if (!read)
                 continue;
+            if (f.language != SourceFile::Language::Python)
+                diagnostics->append(readProblems); // how it was read (an encoding note)
             LaunchFileDescription &d = *read;
             control.report(done, int(ws.files.size()), f.path);
             if (f.language !=
@@ -138,6 +140,24 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         if (!unique.contains(d))
             unique.append(d);
     out.diagnostics = unique;
+    // An include that names no launch file of the workspace (and no package outside it) is
+    // said: its nodes are missing from the system.
+    for (const LaunchFileInstance &i : std::as_const(out.instances))
+        if (!i.external && i.file.isEmpty() && !i.parentId.isEmpty() && i.active) {
+            QString written = i.type;
+            for (const Unresolved &u : i.unresolved)
+                if (!u.expression.isEmpty())
+                    written = u.expression;
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.code = QStringLiteral("no-such-launch-file");
+            d.message =
+                QStringLiteral("The included launch file %1 was not found in the workspace; "
+                               "the nodes it would start are missing.")
+                    .arg(written);
+            d.evidence = i.evidence;
+            out.diagnostics.append(d);
+        }
     // External includes are listed too, so a headless run shows what was not followed.
     for (const LaunchFileInstance &i : std::as_const(out.instances))
         if (i.external) {

@@ -126,28 +126,35 @@ TSNode field(TSNode n, const char *name)
     return ts_node_child_by_field_name(n, name, uint32_t(strlen(name)));
 }
 
-std::vector<TSNode> namedChildren(TSNode n)
+// The children through a cursor, in one pass: ts_node_child(n, i) walks from the first
+// child each time, which made wide nodes (an ERROR node holding a whole broken header)
+// quadratic.
+static std::vector<TSNode> childrenOf(TSNode n, bool namedOnly)
 {
     std::vector<TSNode> out;
     if (ts_node_is_null(n))
         return out;
-    const uint32_t count = ts_node_named_child_count(n);
-    out.reserve(count);
-    for (uint32_t i = 0; i < count; ++i)
-        out.push_back(ts_node_named_child(n, i));
+    out.reserve(namedOnly ? ts_node_named_child_count(n) : ts_node_child_count(n));
+    TSTreeCursor cursor = ts_tree_cursor_new(n);
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+        do {
+            const TSNode c = ts_tree_cursor_current_node(&cursor);
+            if (!namedOnly || ts_node_is_named(c))
+                out.push_back(c);
+        } while (ts_tree_cursor_goto_next_sibling(&cursor));
+    }
+    ts_tree_cursor_delete(&cursor);
     return out;
+}
+
+std::vector<TSNode> namedChildren(TSNode n)
+{
+    return childrenOf(n, true);
 }
 
 std::vector<TSNode> children(TSNode n)
 {
-    std::vector<TSNode> out;
-    if (ts_node_is_null(n))
-        return out;
-    const uint32_t count = ts_node_child_count(n);
-    out.reserve(count);
-    for (uint32_t i = 0; i < count; ++i)
-        out.push_back(ts_node_child(n, i));
-    return out;
+    return childrenOf(n, false);
 }
 
 std::vector<TSNode> fieldChildren(TSNode n, const char *name)

@@ -60,9 +60,17 @@ public:
         }
     }
 
-    QString evaluate(TSNode n, bool *ok) const
+    /// Deeper than this, an expression is not evaluated (a generated or hostile setup.py
+    /// must not overflow the stack); entry points nest two or three levels.
+    static constexpr int kMaxDepth = 100;
+
+    QString evaluate(TSNode n, bool *ok, int depth = 0) const
     {
         *ok = true;
+        if (depth > kMaxDepth) {
+            *ok = false;
+            return {};
+        }
         const auto t = ts::type(n);
         if (t == "string") {
             QString out;
@@ -71,7 +79,7 @@ public:
                     out += m_tree.text(c);
                 else if (ts::is(c, "interpolation")) {
                     bool inner = false;
-                    out += evaluate(ts::field(c, "expression"), &inner);
+                    out += evaluate(ts::field(c, "expression"), &inner, depth + 1);
                     *ok = *ok && inner;
                 }
             }
@@ -81,22 +89,22 @@ public:
             QString out;
             for (TSNode c : ts::namedChildren(n)) {
                 bool inner = false;
-                out += evaluate(c, &inner);
+                out += evaluate(c, &inner, depth + 1);
                 *ok = *ok && inner;
             }
             return out;
         }
         if (t == "binary_operator") {
             bool a = false, b = false;
-            const QString s =
-                evaluate(ts::field(n, "left"), &a) + evaluate(ts::field(n, "right"), &b);
+            const QString s = evaluate(ts::field(n, "left"), &a, depth + 1) +
+                              evaluate(ts::field(n, "right"), &b, depth + 1);
             *ok = a && b;
             return s;
         }
         if (t == "identifier" && m_vars.contains(m_tree.text(n)))
             return m_vars.value(m_tree.text(n));
         if (t == "parenthesized_expression")
-            return evaluate(ts_node_named_child(n, 0), ok);
+            return evaluate(ts_node_named_child(n, 0), ok, depth + 1);
         *ok = false;
         return {};
     }
@@ -117,7 +125,9 @@ void BuildFileParser::readPackageXml(const QByteArray &content, const QString &f
         const auto token = xml.readNext();
         if (token == QXmlStreamReader::StartElement) {
             path.append(xml.name().toString());
-            const QString joined = path.join(QLatin1Char('/'));
+            // Only package/name and package/export/build_type are read: deeper elements are
+            // not joined (a deeply nested file would make this quadratic).
+            const QString joined = path.size() <= 3 ? path.join(QLatin1Char('/')) : QString();
             if (joined == QLatin1String("package/name")) {
                 const int line = int(xml.lineNumber());
                 package->name = xml.readElementText().trimmed();

@@ -164,6 +164,7 @@ QList<Executable> CMakeListsReader::read(const QString &file, QList<Diagnostic> 
     m_executables.clear();
     m_plugins.clear();
     m_functions.clear();
+    m_read.clear();
     readFile(file, 0, diagnostics);
     // A plugin registered on a library target is implemented by that target's sources.
     for (Executable &p : m_plugins) {
@@ -179,6 +180,7 @@ QList<Executable> CMakeListsReader::read(const QString &file, QList<Diagnostic> 
 void CMakeListsReader::readFile(const QString &file, int depth, QList<Diagnostic> *diagnostics)
 {
     QByteArray content;
+    m_read.insert(QDir::cleanPath(file));
     if (!m_load(file, &content))
         return;
     m_file = file;
@@ -314,8 +316,19 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
                 diagnostics->append(d);
                 continue;
             }
-            readFile(joinPath(joinPath(dir, args.first()), QStringLiteral("CMakeLists.txt")),
-                     depth + 1, diagnostics);
+            const QString sub =
+                joinPath(joinPath(dir, args.first()), QStringLiteral("CMakeLists.txt"));
+            if (m_read.contains(sub)) {
+                Diagnostic d;
+                d.code = QStringLiteral("cmake-depth");
+                d.message = QStringLiteral("add_subdirectory(%1) in %2 names %3, which was "
+                                           "already read; not read again.")
+                                .arg(args.first(), file, sub);
+                d.evidence = evidence(c);
+                diagnostics->append(d);
+                continue;
+            }
+            readFile(sub, depth + 1, diagnostics);
             m_file = file;
             m_dir = dir;
         }

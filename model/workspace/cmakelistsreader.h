@@ -5,6 +5,7 @@
 
 #include <QHash>
 #include <QList>
+#include <QSet>
 #include <QString>
 #include <QStringList>
 #include <functional>
@@ -49,8 +50,9 @@ private:
     QStringList expandArgs(const QStringList &args) const;
 
     Loader m_load;
-    QString m_file; ///< the CMakeLists.txt being executed
-    QString m_dir;  ///< its folder, relative to the workspace root
+    QString m_file;       ///< the CMakeLists.txt being executed
+    QSet<QString> m_read; ///< every CMakeLists.txt read in this run (no file is read twice)
+    QString m_dir;        ///< its folder, relative to the workspace root
     QHash<QString, Function> m_functions;
     QHash<QString, QString> m_vars;
     QHash<QString, QStringList> m_targetSources; ///< target -> workspace-relative sources

@@ -47,6 +47,19 @@ bool SourceReader::read(const QString &relativePath, QByteArray *content,
         return fail(QStringLiteral("binary-file"),
                     QStringLiteral("Skipped: %1 looks like a binary file (it contains NUL bytes).")
                         .arg(relativePath));
+    if (!content->isValidUtf8()) {
+        // Read it anyway: every byte is a Latin-1 character, so nothing is lost but the exact
+        // spelling of the non-ASCII ones (ROS 2 itself expects UTF-8).
+        *content = QString::fromLatin1(*content).toUtf8();
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Info;
+        d.code = QStringLiteral("not-utf8");
+        d.message = QStringLiteral("%1 is not valid UTF-8; it was read as Latin-1 (ISO 8859-1), "
+                                   "so non-ASCII characters may be shown wrongly.")
+                        .arg(relativePath);
+        d.evidence.file = relativePath;
+        diagnostics->append(d);
+    }
     return true;
 }
 

@@ -17,7 +17,8 @@ public:
 
     explicit SourceReader(QString root, qint64 maxBytes = kDefaultMaxBytes);
 
-    /// Returns false and appends a diagnostic when the file cannot be analysed.
+    /// Returns false and appends a diagnostic when the file cannot be analysed. Content that
+    /// is not UTF-8 is read as Latin-1 and converted, with an info diagnostic appended.
     bool read(const QString &relativePath, QByteArray *content,
               QList<Diagnostic> *diagnostics) const;
 

@@ -4,10 +4,13 @@
 #include "sourcereader.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QSet>
 
 #include <algorithm>
+
+#include <dirent.h>
 
 namespace rosarch {
 
@@ -46,6 +49,23 @@ SourceFile::Language languageOf(const QString &fileName)
     return SourceFile::Language::Other;
 }
 
+/// The entries of `dir` whose names are not valid UTF-8, decoded lossily.
+QStringList undecodableNames(const QString &dir)
+{
+    QStringList out;
+    DIR *d = opendir(QFile::encodeName(dir).constData());
+    if (!d)
+        return out;
+    while (const dirent *e = readdir(d)) {
+        const QByteArray name(e->d_name);
+        if (!name.isValidUtf8())
+            out << QString::fromUtf8(name);
+    }
+    closedir(d);
+    out.sort();
+    return out;
+}
+
 class Walker
 {
 public:
@@ -54,12 +74,27 @@ public:
     {
     }
 
-    void walk(const QString &absDir, const QString &relDir)
+    void walk(const QString &absDir, const QString &relDir, int depth = 0)
     {
         if (m_control.isCanceled())
             return;
+        if (depth > kMaxDepth) {
+            skip(QStringLiteral("nesting-too-deep"),
+                 QStringLiteral("Skipped %1: folders nest deeper than %2 levels here.")
+                     .arg(relDir)
+                     .arg(kMaxDepth),
+                 relDir);
+            return;
+        }
         const QFileInfo dirInfo(absDir);
         const QString canonical = dirInfo.canonicalFilePath();
+        if (!canonical.isEmpty() && !isInside(canonical)) {
+            skip(QStringLiteral("symlink-outside"),
+                 QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
+                     .arg(relDir, canonical),
+                 relDir);
+            return;
+        }
         if (canonical.isEmpty() || m_visited.contains(canonical)) {
             Diagnostic d;
             d.code = QStringLiteral("symlink-loop");
@@ -90,16 +125,32 @@ public:
             m_ws->diagnostics.append(d);
             return;
         }
+        // Qt leaves out names whose bytes are not UTF-8; they are said, not dropped.
+        for (const QString &name : undecodableNames(absDir)) {
+            const QString rel = relDir.isEmpty() ? name : relDir + QLatin1Char('/') + name;
+            skip(QStringLiteral("unreadable-name"),
+                 QStringLiteral("Skipped %1: its name is not valid UTF-8 (shown with \uFFFD), so "
+                                "it cannot be opened by name; rename it to analyse it.")
+                     .arg(rel),
+                 rel);
+        }
         for (const QFileInfo &e : entries) {
             const QString rel =
                 relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
             if (e.isDir()) {
                 if (!isSkippedFolder(e.fileName()))
-                    walk(e.absoluteFilePath(), rel);
+                    walk(e.absoluteFilePath(), rel, depth + 1);
                 continue;
             }
             if (e.isSymLink() && !e.exists()) {
                 continue; // a dangling link is not a source file
+            }
+            if (e.isSymLink() && !isInside(e.canonicalFilePath())) {
+                skip(QStringLiteral("symlink-outside"),
+                     QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
+                         .arg(rel, e.canonicalFilePath()),
+                     rel);
+                continue;
             }
             const SourceFile::Language lang = languageOf(e.fileName());
             if (lang == SourceFile::Language::Other)
@@ -115,7 +166,25 @@ public:
     }
 
 private:
+    static constexpr int kMaxDepth = 100;
+
+    bool isInside(const QString &canonical) const
+    {
+        return canonical == m_canonicalRoot ||
+               canonical.startsWith(m_canonicalRoot + QLatin1Char('/'));
+    }
+
+    void skip(const QString &code, const QString &message, const QString &rel)
+    {
+        Diagnostic d;
+        d.code = code;
+        d.message = message;
+        d.evidence.file = rel;
+        m_ws->diagnostics.append(d);
+    }
+
     QString m_root;
+    QString m_canonicalRoot = QFileInfo(m_root).canonicalFilePath();
     const StageControl &m_control;
     Workspace *m_ws;
     QSet<QString> m_visited;

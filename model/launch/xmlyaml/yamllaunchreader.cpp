@@ -13,6 +13,25 @@ namespace {
 // never exhaust the stack.
 constexpr int kMaxDepth = 200;
 
+/// YAML aliases share nodes, so a small file can stand for a huge tree ("billion laughs").
+/// Every walk over the tree spends from one budget of node visits per file; when it runs out,
+/// the rest is not read and a diagnostic says so.
+struct Budget
+{
+    static constexpr qint64 kVisits = 200000;
+    qint64 left = kVisits;
+    bool exhausted = false;
+    bool spend()
+    {
+        if (left <= 0) {
+            exhausted = true;
+            return false;
+        }
+        --left;
+        return true;
+    }
+};
+
 struct Position
 {
     int line = 0;
@@ -32,9 +51,9 @@ Position startOf(const YAML::Node &n)
 }
 
 // yaml-cpp keeps no end marks: the end is where the last scalar inside ends.
-void extendEnd(const YAML::Node &n, Position *end, int depth = 0)
+void extendEnd(const YAML::Node &n, Position *end, Budget *budget, int depth = 0)
 {
-    if (depth > kMaxDepth)
+    if (depth > kMaxDepth || !budget->spend())
         return;
     if (n.IsScalar()) {
         Position p = startOf(n);
@@ -43,23 +62,28 @@ void extendEnd(const YAML::Node &n, Position *end, int depth = 0)
         *end = std::max(*end, p);
     } else if (n.IsSequence()) {
         for (const YAML::Node &item : n)
-            extendEnd(item, end, depth + 1);
+            extendEnd(item, end, budget, depth + 1);
     } else if (n.IsMap()) {
         for (const auto &kv : n) {
-            extendEnd(kv.first, end, depth + 1);
-            extendEnd(kv.second, end, depth + 1);
+            extendEnd(kv.first, end, budget, depth + 1);
+            extendEnd(kv.second, end, budget, depth + 1);
         }
     }
 }
 
-QString scalarText(const YAML::Node &n)
+QString scalarText(const YAML::Node &n, Budget *budget, int depth = 0)
 {
+    if (depth > kMaxDepth || !budget->spend())
+        return {};
     if (n.IsScalar())
         return QString::fromStdString(n.Scalar());
     if (n.IsSequence()) {
         QStringList items;
-        for (const YAML::Node &item : n)
-            items << scalarText(item);
+        for (const YAML::Node &item : n) {
+            if (budget->exhausted)
+                break;
+            items << scalarText(item, budget, depth + 1);
+        }
         return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
     }
     return {};
@@ -80,13 +104,15 @@ public:
     {
     }
 
-    Evidence evidence(const YAML::Node &start, const YAML::Node &content) const
+    Evidence evidence(const YAML::Node &start, const YAML::Node &content)
     {
         Evidence e;
         e.file = m_file;
         const Position begin = startOf(start);
         Position end = begin;
-        extendEnd(content, &end);
+        Budget local; // each range and value has its own budget: one large one cuts only itself
+        extendEnd(content, &end, &local);
+        m_cut = m_cut || local.exhausted;
         e.line = begin.line;
         e.column = begin.column;
         e.endLine = end.line;
@@ -98,6 +124,8 @@ public:
     void appendChildren(const YAML::Node &list, QList<FrontendEntity> *out, int depth)
     {
         for (const YAML::Node &item : list) {
+            if (!m_budget.spend())
+                return;
             if (!item.IsMap() || item.size() != 1) {
                 report(QStringLiteral("invalid-entity"),
                        QStringLiteral("A launch entity must be a mapping with one key, the "
@@ -130,6 +158,8 @@ public:
         if (!n.IsMap())
             return e;
         for (const auto &kv : n) {
+            if (!m_budget.spend())
+                break;
             const QString key =
                 QString::fromStdString(kv.first.IsScalar() ? kv.first.Scalar() : std::string());
             const YAML::Node &v = kv.second;
@@ -143,12 +173,36 @@ public:
             } else {
                 FrontendAttribute a;
                 a.name = key;
-                a.value = scalarText(v);
+                Budget local;
+                a.value = scalarText(v, &local);
+                m_cut = m_cut || local.exhausted;
                 a.evidence = evidence(v.IsNull() ? kv.first : v, v.IsNull() ? kv.first : v);
                 e.attributes << a;
             }
         }
         return e;
+    }
+
+    /// After the walk: a diagnostic when the budget ran out, naming where reading stopped.
+    void reportBudget()
+    {
+        if (!m_budget.exhausted && !m_cut)
+            return;
+        Evidence e;
+        e.file = m_file;
+        e.line = e.endLine = 1;
+        e.column = e.endColumn = 1;
+        report(QStringLiteral("launch-evaluation-limit"),
+               QStringLiteral("The YAML in %1 expands (through aliases) to more than %2 nodes; "
+                              "%3")
+                   .arg(m_file)
+                   .arg(Budget::kVisits)
+                   .arg(m_budget.exhausted
+                            ? QStringLiteral("reading stopped there, so later entities are "
+                                             "missing.")
+                            : QStringLiteral("the values and ranges that large were cut "
+                                             "short.")),
+               e);
     }
 
 private:
@@ -164,6 +218,8 @@ private:
 
     QString m_file;
     QList<Diagnostic> *m_diagnostics;
+    Budget m_budget;    ///< entities and attributes of the whole file
+    bool m_cut = false; ///< a value or an evidence range ran out of its own budget
 };
 
 } // namespace
@@ -242,6 +298,7 @@ LaunchFileDescription YamlLaunchReader::read(const QByteArray &content, const QS
         FrontendEntity entity;
         try {
             entity = builder.build(QStringLiteral("launch"), launch, launch, 0);
+            builder.reportBudget();
         } catch (const YAML::Exception &ex) { // not expected on a loaded tree; never fatal
             Diagnostic diag;
             diag.code = QStringLiteral("malformed-yaml");

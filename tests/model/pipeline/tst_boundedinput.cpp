@@ -1,0 +1,209 @@
+// Pathological input, generated here, never crashes, hangs or silently drops anything: each
+// case is a workspace with one hostile file next to a healthy node, and the run must finish
+// with the healthy part recovered and a diagnostic naming what was skipped and why.
+#include "recovery.h"
+#include "testsupport.h"
+
+#include <QDir>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rosarch;
+using test::writeFile;
+
+namespace {
+
+QStringList codes(const Recovery &r, const QString &code)
+{
+    QStringList out;
+    for (const QList<Diagnostic> *list :
+         {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
+        for (const Diagnostic &d : *list)
+            if (d.code == code)
+                out << d.evidence.file + QStringLiteral(": ") + d.message;
+    return out;
+}
+
+QStringList classes(const Recovery &r)
+{
+    QStringList out;
+    for (const AtomicNode &n : r.nodes.nodes)
+        out << n.className;
+    return out;
+}
+
+QStringList instances(const Recovery &r)
+{
+    QStringList out;
+    for (const NodeInstance &n : r.launch.nodes)
+        out << n.nodeName;
+    return out;
+}
+
+/// A Python package `pkg` with one healthy node class, Good, started as `good`.
+void healthyPackage(const QString &root)
+{
+    writeFile(root + "/src/pkg/package.xml",
+              "<package format=\"3\"><name>pkg</name><export><build_type>ament_python"
+              "</build_type></export></package>\n");
+    writeFile(root + "/src/pkg/pkg/__init__.py", "");
+    writeFile(root + "/src/pkg/pkg/good.py",
+              "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
+              "class Good(Node):\n    def __init__(self):\n        super().__init__('good')\n"
+              "        self.pub = self.create_publisher(String, 'out', 10)\n");
+    writeFile(root + "/src/pkg/setup.py",
+              "from setuptools import setup\nsetup(name='pkg', entry_points={'console_scripts': "
+              "['good = pkg.good:main']})\n");
+}
+
+/// A C++ package `cpp` whose CMakeLists.txt is `cmake` and whose node is Worker.
+void cppPackage(const QString &root, const QByteArray &cmake)
+{
+    writeFile(root + "/src/cpp/package.xml", "<package format=\"3\"><name>cpp</name></package>\n");
+    writeFile(root + "/src/cpp/CMakeLists.txt", cmake);
+    writeFile(root + "/src/cpp/src/worker.cpp",
+              "#include \"rclcpp/rclcpp.hpp\"\nclass Worker : public rclcpp::Node {\npublic:\n"
+              "  Worker() : Node(\"worker\") {\n    pub_ = create_publisher<std_msgs::msg::String>("
+              "\"work\", 10);\n  }\n  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n"
+              "};\n");
+}
+
+} // namespace
+
+class TestBoundedInput : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void symlinksOutOfTheWorkspaceAreNotFollowed()
+    {
+        // Before: the scanner walked the whole file system through the link, then crashed.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        QVERIFY(QFile::link(QStringLiteral("/"), dir.path() + "/src/pkg/root"));
+        QVERIFY(QFile::link(QStringLiteral("/etc/hostname"), dir.path() + "/src/pkg/host.py"));
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(classes(r), QStringList{QStringLiteral("Good")});
+        const QStringList outside = codes(r, QStringLiteral("symlink-outside"));
+        QCOMPARE(outside.size(), 2);
+        QVERIFY(outside.join('\n').contains(QLatin1String("src/pkg/root: Skipped src/pkg/root: "
+                                                          "it links to /, outside the workspace")));
+    }
+
+    void setupPyNestingIsBounded()
+    {
+        // Before: the setup.py evaluator overflowed the stack on 50,000 nested parentheses
+        // and on a 50,000-term `+` chain.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        const QByteArray deep = "x = " + QByteArray(50000, '(') + "'a'" + QByteArray(50000, ')');
+        QByteArray chain = "y = 'a'";
+        for (int i = 0; i < 50000; ++i)
+            chain += " + 'a'";
+        writeFile(dir.path() + "/src/pkg/setup.py",
+                  "from setuptools import setup\n" + deep + "\n" + chain +
+                      "\nsetup(name='pkg', version=y, entry_points={'console_scripts': "
+                      "['good = pkg.good:main']})\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(classes(r), QStringList{QStringLiteral("Good")});
+        QCOMPARE(r.nodes.nodes.first().executables, QStringList{QStringLiteral("good")});
+    }
+
+    void yamlAliasesHaveABudget()
+    {
+        // Before: nine levels of ten aliases each (10^9 nodes from 1 KB) never finished.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        QByteArray yaml = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+        for (int i = 1; i <= 8; ++i) {
+            QByteArrayList refs;
+            for (int k = 0; k < 10; ++k)
+                refs << "*a" + QByteArray::number(i - 1);
+            yaml += "a" + QByteArray::number(i) + ": &a" + QByteArray::number(i) + " [" +
+                    refs.join(", ") + "]\n";
+        }
+        yaml += "launch:\n- node: {pkg: pkg, exec: good, name: good, namespace: *a8}\n";
+        writeFile(dir.path() + "/src/pkg/launch/bomb.launch.yaml", yaml);
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(instances(r), QStringList{QStringLiteral("good")}); // the node is still read
+        const QStringList limit = codes(r, QStringLiteral("launch-evaluation-limit"));
+        QCOMPARE(limit.size(), 1);
+        QVERIFY(limit.first().contains(QLatin1String("expands (through aliases)")));
+    }
+
+    void cmakeSubdirectoriesAreReadOnce()
+    {
+        // Before: four add_subdirectory(.) re-read the file 4^n times (39 s, 1.1 GB).
+        QTemporaryDir dir;
+        cppPackage(dir.path(), "project(cpp)\nadd_subdirectory(.)\nadd_subdirectory(.)\n"
+                               "add_subdirectory(./)\nadd_subdirectory(../cpp)\n"
+                               "add_executable(worker src/worker.cpp)\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(classes(r), QStringList{QStringLiteral("Worker")});
+        QCOMPARE(r.nodes.nodes.first().executables, QStringList{QStringLiteral("worker")});
+        QCOMPARE(codes(r, QStringLiteral("cmake-depth")).size(), 4);
+    }
+
+    void wideAndDeepFilesStayLinear()
+    {
+        // A package.xml 20,000 elements deep, and a 200 KB header that is one long syntax
+        // error (each was quadratic: seconds per file). The healthy node is still found.
+        QTemporaryDir dir;
+        cppPackage(dir.path(), "project(cpp)\nadd_executable(worker src/worker.cpp)\n");
+        writeFile(dir.path() + "/src/cpp/package.xml",
+                  "<package format=\"3\"><name>cpp</name>" +
+                      QByteArray(20000 * 3, ' ').replace(QByteArray("   "), QByteArray("<x>")) +
+                      QByteArray(20000 * 4, ' ').replace(QByteArray("    "), QByteArray("</x>")) +
+                      "</package>\n");
+        QByteArray header;
+        for (int i = 0; header.size() < 200 * 1024; ++i)
+            header += "class C" + QByteArray::number(i) + " { int a = ; void f( { }\n";
+        writeFile(dir.path() + "/src/cpp/include/cpp/broken.hpp", header);
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(classes(r), QStringList{QStringLiteral("Worker")});
+        QCOMPARE(r.nodes.packages.first().name, QStringLiteral("cpp"));
+        QVERIFY(!codes(r, QStringLiteral("syntax-error")).isEmpty());
+    }
+
+    void otherEncodingsAreReadAndSaid()
+    {
+        // Before: one Latin-1 byte made the XML launch file silently empty, and a file name
+        // that is not UTF-8 was dropped without a word.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        writeFile(dir.path() + "/src/pkg/launch/cafe.launch.xml",
+                  "<launch>\n  <!-- caf\xe9 au lait -->\n  <node pkg=\"pkg\" exec=\"good\" "
+                  "name=\"latin\"/>\n</launch>\n");
+        const QByteArray badName =
+            QFile::encodeName(dir.path()) + "/src/pkg/launch/caf\xe9.launch.py";
+        FILE *f = fopen(badName.constData(), "w");
+        QVERIFY(f);
+        fputs("from launch import LaunchDescription\n", f);
+        fclose(f);
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(instances(r), QStringList{QStringLiteral("latin")});
+        QCOMPARE(codes(r, QStringLiteral("not-utf8")).size(), 1);
+        const QStringList names = codes(r, QStringLiteral("unreadable-name"));
+        QCOMPARE(names.size(), 1);
+        QVERIFY(names.first().contains(QLatin1String("not valid UTF-8")));
+    }
+
+    void aMissingIncludeIsSaid()
+    {
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        writeFile(dir.path() + "/src/pkg/launch/main.launch.xml",
+                  "<launch>\n  <include file=\"$(find-pkg-share pkg)/launch/gone.launch.xml\"/>\n"
+                  "  <node pkg=\"pkg\" exec=\"good\" name=\"good\"/>\n</launch>\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(instances(r), QStringList{QStringLiteral("good")});
+        const QStringList missing = codes(r, QStringLiteral("no-such-launch-file"));
+        QCOMPARE(missing.size(), 1);
+        QVERIFY2(missing.first().startsWith(
+                     QLatin1String("src/pkg/launch/main.launch.xml: The included launch file "
+                                   "$(find-pkg-share pkg)/launch/gone.launch.xml was not found")),
+                 qPrintable(missing.first()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBoundedInput)
+#include "tst_boundedinput.moc"
