@@ -10,11 +10,11 @@ CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString
 {
 }
 
-int CppValueEvaluator::literalParameterIndex(const std::vector<TSNode> &args,
-                                             QString *parameter) const
+int CppValueEvaluator::literalParameterIndex(const std::vector<TSNode> &args, QString *parameter,
+                                             int depth) const
 {
     for (size_t i = 0; i < args.size() && i < 3; ++i) {
-        const CppValue v = evaluate(args[i]);
+        const CppValue v = evaluate(args[i], depth + 1);
         if (v.kind != CppValue::Kind::Literal && v.kind != CppValue::Kind::Local)
             continue;
         // A bool or a number (or nothing) is not a parameter name.
@@ -34,6 +34,12 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
     if (ts::isNull(expression))
         return v;
     v.text = simplified(m_tree, expression);
+    // Every path deeper counts, identifiers and parameter calls included: a self-referencing
+    // assignment (`x = node.declare_parameter(prefix + "x", x);`) must end, not recurse.
+    if (depth > kMaxDepth) {
+        v.kind = CppValue::Kind::Expression;
+        return v;
+    }
     const TSNode n = unwrap(m_tree, expression);
     QString literal;
     if (stringLiteral(m_tree, n, &literal)) {
@@ -79,7 +85,8 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
             !lower.endsWith(QLatin1String("parameters")) &&
             (lower.contains(QLatin1String("get")) || lower.contains(QLatin1String("declare")))) {
             QString parameter;
-            if (literalParameterIndex(arguments(ts::field(n, "arguments")), &parameter) >= 0) {
+            if (literalParameterIndex(arguments(ts::field(n, "arguments")), &parameter, depth) >=
+                0) {
                 v.kind = CppValue::Kind::Parameter;
                 v.parameter = parameter;
                 return v;

@@ -32,7 +32,10 @@ public:
     /// What the identifier `name` holds at this point of the function.
     CppValue evaluateIdentifier(const QString &name, int depth) const;
     /// The first of the leading arguments that is a literal parameter name (`parameter`), or -1.
-    int literalParameterIndex(const std::vector<TSNode> &args, QString *parameter) const;
+    int literalParameterIndex(const std::vector<TSNode> &args, QString *parameter,
+                              int depth = 0) const;
+    /// How deep one evaluation may go, through identifiers and calls (they nest a few levels).
+    static constexpr int kMaxDepth = 24;
 
 private:
     const SyntaxTree &m_tree;

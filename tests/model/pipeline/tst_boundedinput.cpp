@@ -89,6 +89,25 @@ private Q_SLOTS:
                                                           "it links to /, outside the workspace")));
     }
 
+    void selfReferencingParameterDefaultsEnd()
+    {
+        // A common idiom: a local read back from a parameter whose default is the local itself.
+        // Before: C++ value evaluation restarted its depth at every parameter call and
+        // recursed until the stack overflowed (autoware.universe crashed on it).
+        QTemporaryDir dir;
+        cppPackage(dir.path(), "project(cpp)\nadd_executable(worker src/worker.cpp)\n");
+        writeFile(dir.path() + "/src/cpp/src/labels.cpp",
+                  "#include \"rclcpp/rclcpp.hpp\"\n"
+                  "std::vector<std::string> readLabels(rclcpp::Node & node, const std::string & "
+                  "prefix)\n{\n  std::vector<std::string> labels;\n"
+                  "  labels = node.declare_parameter<std::vector<std::string>>(prefix + "
+                  "\"labels\", labels);\n  std::string topic = \"out\";\n"
+                  "  topic = node.declare_parameter<std::string>(topic, topic);\n"
+                  "  return labels;\n}\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(classes(r), QStringList{QStringLiteral("Worker")});
+    }
+
     void setupPyNestingIsBounded()
     {
         // Before: the setup.py evaluator overflowed the stack on 50,000 nested parentheses
