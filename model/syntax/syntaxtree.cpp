@@ -29,6 +29,10 @@ SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
     ts_parser_set_timeout_micros(parser, 20 * 1000 * 1000);
     tree.m_tree.reset(ts_parser_parse_string(parser, nullptr, tree.m_source.constData(),
                                              uint32_t(tree.m_source.size())));
+    // A parse that timed out leaves the parser holding the suspended parse: drop it before
+    // the parser goes (the tree is null, and syntaxErrors() says the file was not parsed).
+    if (!tree.m_tree)
+        ts_parser_reset(parser);
     ts_parser_delete(parser);
     return tree;
 }

@@ -88,10 +88,12 @@ QList<Value> PythonLaunchContext::iterate(const Value &value, bool *known) const
     }
 }
 
-bool PythonLaunchContext::step()
+bool PythonLaunchContext::step(TSNode at)
 {
-    if (++m_steps > kMaxSteps)
+    if (++m_steps > kMaxSteps && !exhausted) {
         exhausted = true;
+        stoppedAt = at;
+    }
     return !exhausted;
 }
 

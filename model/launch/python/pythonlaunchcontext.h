@@ -54,7 +54,9 @@ public:
     PythonLaunchContext &operator=(const PythonLaunchContext &) = delete;
 
     /// Counts one evaluation step; false once the budget is spent (then `exhausted`).
-    bool step();
+    /// Spends one step of the file's budget on `at`; false once it is spent (the first node
+    /// it was refused for is kept in `stoppedAt`).
+    bool step(TSNode at);
     /// True when the current block must not go on: budget spent, returned, break, continue.
     bool stopped() const;
 
@@ -76,6 +78,7 @@ public:
     int callDepth = 0;
     int exprDepth = 0;
     bool exhausted = false;
+    TSNode stoppedAt{}; ///< where the step budget ran out (null while it lasts)
     QList<Diagnostic> diagnostics;
 
 private:

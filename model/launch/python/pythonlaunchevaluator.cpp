@@ -92,10 +92,14 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
     if (m_ctx.exhausted) {
         Diagnostic d;
         d.code = QStringLiteral("launch-evaluation-limit");
-        d.message = QStringLiteral("%1 needs more evaluation steps than allowed; the launch "
-                                   "description may be incomplete.")
-                        .arg(m_ctx.tree.file());
-        d.evidence.file = m_ctx.tree.file();
+        d.evidence = ts::isNull(m_ctx.stoppedAt) ? Evidence{m_ctx.tree.file(), 1, 1, 1, 1}
+                                                 : m_ctx.tree.evidence(m_ctx.stoppedAt);
+        d.evidence.endLine = d.evidence.line; // the place, not the whole statement
+        d.message = QStringLiteral("%1 needs more evaluation steps than allowed; evaluation "
+                                   "stopped at line %2, so what follows (nodes, includes, "
+                                   "arguments) is not in the launch description.")
+                        .arg(m_ctx.tree.file())
+                        .arg(d.evidence.line);
         m_ctx.diagnostics << d;
     }
     return actions;
@@ -112,7 +116,7 @@ void PythonLaunchEvaluator::execBlock(TSNode block)
 
 void PythonLaunchEvaluator::execStatement(TSNode n)
 {
-    if (!m_ctx.step())
+    if (!m_ctx.step(n))
         return;
     const std::string_view t = ts::type(n);
     if (t == "expression_statement") {
@@ -452,7 +456,7 @@ Value PythonLaunchEvaluator::callFunction(const Value &function, const CallArgs 
     QString starName, starStarName;
     for (TSNode p : ts::namedChildren(ts::field(function.node, "parameters"))) {
         const std::string_view t = ts::type(p);
-        TSNode nameNode, defaultNode;
+        TSNode nameNode{}, defaultNode{}; // unset until a parameter form sets them
         if (t == "identifier") {
             nameNode = p;
         } else if (t == "default_parameter" || t == "typed_default_parameter") {

@@ -69,7 +69,7 @@ Value PythonLaunchExpressions::eval(TSNode node)
 {
     if (ts::isNull(node))
         return Value::unknown(QString());
-    if (m_ctx.exprDepth >= kMaxExpressionDepth || !m_ctx.step())
+    if (m_ctx.exprDepth >= kMaxExpressionDepth || !m_ctx.step(node))
         return m_ctx.unknownAt(node);
     ++m_ctx.exprDepth;
     Value v = evalNode(node);

@@ -206,6 +206,45 @@ private Q_SLOTS:
         QVERIFY(names.first().contains(QLatin1String("not valid UTF-8")));
     }
 
+    void aLaunchFileTooLongToEvaluateSaysWhereItStopped()
+    {
+        // Before: the step budget ran out silently for what came after, and the diagnostic
+        // named no line.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        QByteArray body;
+        for (int i = 0; i < 150000; ++i)
+            body += "    x" + QByteArray::number(i) + " = " + QByteArray::number(i) + "\n";
+        writeFile(dir.path() + "/src/pkg/launch/long.launch.py",
+                  "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+                  "def generate_launch_description():\n" +
+                      body +
+                      "    return LaunchDescription([Node(package='pkg', executable='good', "
+                      "name='late')])\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QVERIFY(instances(r).isEmpty());
+        const QStringList limit = codes(r, QStringLiteral("launch-evaluation-limit"));
+        QCOMPARE(limit.size(), 1);
+        QVERIFY2(limit.first().contains(QLatin1String("evaluation stopped at line ")),
+                 qPrintable(limit.first()));
+    }
+
+    void aCallThatLeavesOutAParameter()
+    {
+        // A helper called with fewer arguments than it declares: the missing one is unknown,
+        // never read from an unset syntax node (AddressSanitizer found that one).
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        writeFile(dir.path() + "/src/pkg/launch/helper.launch.py",
+                  "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+                  "def make(name, namespace, extra=None):\n"
+                  "    return Node(package='pkg', executable='good', name=name)\n\n"
+                  "def generate_launch_description():\n"
+                  "    return LaunchDescription([make('helped')])\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QCOMPARE(instances(r), QStringList{QStringLiteral("helped")});
+    }
+
     void aMissingIncludeIsSaid()
     {
         QTemporaryDir dir;
