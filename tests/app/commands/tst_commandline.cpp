@@ -2,6 +2,7 @@
 #include "commandline.h"
 #include "testsupport.h"
 
+#include <QDirIterator>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -225,6 +226,47 @@ private Q_SLOTS:
         r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
                         QStringLiteral("--render"), QStringLiteral("pdf")});
         QCOMPARE(r.exitCode, 2);
+    }
+
+    void aFailedWriteLeavesThePreviousArtifacts()
+    {
+        // A disk that fills up half-way (here: a 2 KB file-size limit, so the larger files
+        // fail to write) leaves the previous run's artifacts as they were, and no staging
+        // folder behind. Before, 11 of 16 files were half-written.
+        QTemporaryDir out;
+        const QString ws = rosarch::test::dataDir(QStringLiteral("compose_system/ws"));
+        QCOMPARE(runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path()})
+                     .exitCode,
+                 0);
+        QMap<QString, QByteArray> before;
+        QDirIterator it(out.path(), QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString f = it.next();
+            before.insert(f, rosarch::test::readFile(f));
+        }
+        QVERIFY(before.size() > 10);
+        QProcess sh;
+        sh.setProcessChannelMode(QProcess::MergedChannels);
+        sh.start(QStringLiteral("sh"),
+                 {QStringLiteral("-c"),
+                  QStringLiteral("trap '' XFSZ; ulimit -f 4; exec \"$0\" recover \"$1\" --out "
+                                 "\"$2\" --launch-arg unused:=1"),
+                  QStringLiteral(ROSARCH_BINARY), exampleWorkspace(), out.path()});
+        QVERIFY(sh.waitForFinished(60000));
+        const QString output = QString::fromUtf8(sh.readAll());
+        QVERIFY2(sh.exitCode() == 1 && output.contains(QLatin1String("Cannot write")),
+                 qPrintable(output));
+        QMap<QString, QByteArray> after;
+        QDirIterator again(out.path(), QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+        while (again.hasNext()) {
+            const QString f = again.next();
+            after.insert(f, rosarch::test::readFile(f));
+        }
+        QCOMPARE(after.keys(), before.keys());
+        QVERIFY(after == before);
+        QVERIFY(QDir(out.path())
+                    .entryList({QStringLiteral(".rosarch-writing-*")}, QDir::Dirs | QDir::Hidden)
+                    .isEmpty());
     }
 
     void unwritableOutputIsReported()
