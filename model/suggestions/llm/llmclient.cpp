@@ -37,6 +37,7 @@ struct Exchange
     QByteArray pending; // an incomplete SSE line
     QString content;
     int chunks = 0;
+    bool tooLarge = false; ///< the reply passed kMaxReplyBytes; the transfer was stopped
     const LlmRequest *request = nullptr;
 };
 
@@ -64,6 +65,10 @@ size_t onWrite(char *data, size_t size, size_t count, void *user)
 {
     auto *x = static_cast<Exchange *>(user);
     const size_t n = size * count;
+    if (x->body.size() + qsizetype(n) > LlmClient::kMaxReplyBytes) {
+        x->tooLarge = true;
+        return 0; // libcurl stops the transfer (CURLE_WRITE_ERROR)
+    }
     x->body.append(data, qsizetype(n));
     x->pending.append(data, qsizetype(n));
     qsizetype nl;
@@ -168,11 +173,41 @@ QByteArray requestBody(const LlmSettings &settings, const LlmRequest &request,
     return QJsonDocument(body).toJson(QJsonDocument::Compact);
 }
 
+/// The start of a reply for a message: never raw bytes on a terminal or in the log. Control
+/// characters and bytes that are not UTF-8 are shown as escapes (\x00, \xff).
 QString excerpt(const QByteArray &data, int max = 200)
 {
-    QString s = QString::fromUtf8(data).simplified();
-    if (s.size() > max)
-        s = s.left(max) + QStringLiteral("...");
+    QString s;
+    const QByteArray head = data.left(max * 4);
+    for (qsizetype i = 0; i < head.size() && s.size() < max;) {
+        const uchar c = uchar(head.at(i));
+        if (c == '\n' || c == '\r' || c == '\t') {
+            s += QLatin1Char(' ');
+            ++i;
+            continue;
+        }
+        if (c < 0x20 || c == 0x7f) {
+            s += QStringLiteral("\\x%1").arg(c, 2, 16, QLatin1Char('0'));
+            ++i;
+            continue;
+        }
+        const int length = c < 0x80           ? 1
+                           : (c >> 5) == 0x6  ? 2
+                           : (c >> 4) == 0xe  ? 3
+                           : (c >> 3) == 0x1e ? 4
+                                              : 0;
+        const QByteArray sequence = length > 0 ? head.mid(i, length) : QByteArray();
+        if (length == 0 || sequence.size() < length || !sequence.isValidUtf8()) {
+            s += QStringLiteral("\\x%1").arg(c, 2, 16, QLatin1Char('0'));
+            ++i;
+            continue;
+        }
+        s += QString::fromUtf8(sequence);
+        i += length;
+    }
+    s = s.simplified();
+    if (s.size() >= max || data.size() > head.size())
+        s += QStringLiteral("...");
     return s;
 }
 
@@ -255,6 +290,8 @@ QString LlmResult::errorName(Error error)
         return QStringLiteral("canceled");
     case Error::Network:
         return QStringLiteral("network-error");
+    case Error::ReplyTooLarge:
+        return QStringLiteral("reply-too-large");
     }
     return QStringLiteral("unknown");
 }
@@ -284,6 +321,14 @@ LlmResult LlmClient::complete(const LlmRequest &request) const
             ++result.requests;
             result.httpStatus = int(x.status);
             result.responseFormat = QString::fromLatin1(kFormatNames[level]);
+            if (x.tooLarge)
+                return finish(LlmResult::Error::ReplyTooLarge,
+                              QStringLiteral("The reply of the LLM endpoint %1 exceeded %2 MB and "
+                                             "was cut off; no suggestion was taken from it. It "
+                                             "began: %3")
+                                  .arg(url)
+                                  .arg(kMaxReplyBytes / (1024 * 1024))
+                                  .arg(excerpt(x.body)));
             if (x.code == CURLE_ABORTED_BY_CALLBACK)
                 return finish(LlmResult::Error::Canceled,
                               QStringLiteral("The LLM request was canceled."));

@@ -13,6 +13,8 @@ namespace rosarch {
 class LlmClient
 {
 public:
+    /// A reply larger than this is cut off and reported (a chat completion is kilobytes).
+    static constexpr qsizetype kMaxReplyBytes = 16 * 1024 * 1024;
     explicit LlmClient(const LlmSettings &settings);
 
     /// Sends the conversation, asking for JSON that fits `request.schema`; retries 429/5xx with

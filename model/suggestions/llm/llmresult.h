@@ -19,7 +19,8 @@ struct LlmResult
         NotJson,           ///< the reply (or its content) is not JSON
         SchemaMismatch,    ///< valid JSON that does not fit the schema, also after the repair retry
         Canceled,
-        Network, ///< any other transfer failure
+        Network,       ///< any other transfer failure
+        ReplyTooLarge, ///< the reply exceeded LlmClient::kMaxReplyBytes and was cut off
     };
 
     Error error = Error::None;

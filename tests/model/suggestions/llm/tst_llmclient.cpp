@@ -195,6 +195,36 @@ private Q_SLOTS:
                  qPrintable(r.message));
     }
 
+    void aHugeReplyIsCutOff()
+    {
+        // Before: a 200 MB reply was read whole (119 s, 860 MB).
+        FakeLlmServer server;
+        server.enqueue(FakeLlmServer::status(200, QByteArray(20 * 1024 * 1024, 'x')));
+        const LlmResult r = call(LlmClient(settings(server)), describeRequest());
+        QCOMPARE(r.error, LlmResult::Error::ReplyTooLarge);
+        QVERIFY2(r.message.contains(QStringLiteral("exceeded 16 MB")), qPrintable(r.message));
+        QCOMPARE(LlmResult::errorName(r.error), QStringLiteral("reply-too-large"));
+        QVERIFY(r.message.size() < 1000);
+    }
+
+    void rawReplyBytesAreEscaped()
+    {
+        // Before: NUL, 0xFF and terminal escape sequences went to the terminal as they came.
+        static const char raw[] = "bad\0gateway \xff\xfe \x1b[31mred\x1b[0m caf\xc3\xa9";
+        FakeLlmServer server;
+        server.enqueue(FakeLlmServer::status(502, QByteArray(raw, sizeof(raw) - 1)));
+        LlmSettings s = settings(server);
+        s.maxRetries = 0;
+        const LlmResult r = call(LlmClient(s), describeRequest());
+        QCOMPARE(r.error, LlmResult::Error::Http);
+        QVERIFY2(r.message.contains(QStringLiteral("bad\\x00gateway \\xff\\xfe \\x1b[31mred")),
+                 qPrintable(r.message));
+        QVERIFY(r.message.contains(QStringLiteral("café"))); // valid UTF-8 stays as it is
+        for (const QChar c : r.message)
+            QVERIFY2(c.unicode() >= 0x20 && c != QChar::ReplacementCharacter,
+                     qPrintable(QString::number(c.unicode(), 16)));
+    }
+
     void rateLimitHonoursRetryAfter()
     {
         FakeLlmServer server;
