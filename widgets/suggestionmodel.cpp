@@ -203,6 +203,8 @@ QString SuggestionModel::targetText(const Suggestion &s) const
 
 QString SuggestionModel::proposalText(const Suggestion &s) const
 {
+    if (s.quoted) // repository text is data: shown as a quotation, never as rosarch's words
+        return tr("“%1” (quoted from the code)").arg(s.value);
     if (s.kind != Suggestion::Kind::SubsystemGrouping)
         return s.value;
     QStringList names;

@@ -464,7 +464,13 @@ void SuggestionPanel::updateDetails()
         html += QStringLiteral("<p>%1 <b>%2</b>: %3</p>")
                     .arg(esc(tr("Group")), esc(s->value), esc(m_model->proposalText(*s)));
     else
-        html += QStringLiteral("<p>%1 <b>%2</b></p>").arg(esc(tr("Proposal:")), esc(s->value));
+        html +=
+            s->quoted
+                ? QStringLiteral("<p>%1<br/><q><i>%2</i></q></p>")
+                      .arg(esc(tr("Proposal, quoted from the code (the repository's "
+                                  "words, not rosarch's):")),
+                           esc(s->value))
+                : QStringLiteral("<p>%1 <b>%2</b></p>").arg(esc(tr("Proposal:")), esc(s->value));
     if (!s->rationale.isEmpty())
         html += QStringLiteral("<p>%1</p>").arg(esc(s->rationale));
     if (!s->evidence.isEmpty()) {

@@ -51,6 +51,9 @@ struct Suggestion
     QStringList memberIds; ///< subsystem-grouping: the node instance ids of the group, sorted
     QString value;         ///< the description, the group name, or the candidate value
     QString rationale;
+    /// The value is text quoted from the repository (a docstring, a comment), not written by
+    /// rosarch or a model: it is data, and is shown as a quotation wherever it is proposed.
+    bool quoted = false;
     QList<Citation> evidence;
     Origin origin;
     Status status = Status::Pending;

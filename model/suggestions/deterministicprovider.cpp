@@ -190,6 +190,7 @@ QList<Suggestion> DeterministicProvider::describeNodes() const
         Suggestion s = make(Suggestion::Kind::NodeDescription);
         s.targetId = node.id;
         s.value = text;
+        s.quoted = true;
         s.rationale = QStringLiteral("The documentation of %1 in %2, lines %3-%4.")
                           .arg(node.className, node.evidence.file)
                           .arg(first)

@@ -47,6 +47,8 @@ Json suggestionJson(const Suggestion &s)
         proposal["value"] = utf8(s.value);
         break;
     }
+    if (s.quoted)
+        proposal["quoted_from_code"] = true;
     j["proposal"] = proposal;
     j["rationale"] = utf8(s.rationale);
     Json evidence = Json::array();
@@ -135,6 +137,7 @@ bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QSt
                   : s.kind == Suggestion::Kind::SubsystemGrouping
                       ? JsonSupport::string(proposal, "group_name")
                       : JsonSupport::string(proposal, "value");
+        s.quoted = proposal.value("quoted_from_code", false);
         s.rationale = JsonSupport::string(j, "rationale");
         if (j.contains("evidence") && j["evidence"].is_array())
             for (const Json &e : j["evidence"])

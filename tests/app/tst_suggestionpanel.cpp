@@ -131,8 +131,9 @@ private Q_SLOTS:
         QCOMPARE(row(model, 0),
                  (QStringList{
                      QStringLiteral("Description"), QStringLiteral("BatteryMonitor"),
-                     QStringLiteral(
-                         "Publishes the battery state and a diagnostic when the charge is low."),
+                     // a docstring: the repository's words, shown as a quotation
+                     QStringLiteral("“Publishes the battery state and a diagnostic when the "
+                                    "charge is low.” (quoted from the code)"),
                      QStringLiteral("deterministic"), QStringLiteral("battery_monitor.py:10")}));
         const int group = 8;
         QCOMPARE(model.index(group, SuggestionModel::KindColumn).data().toString(),
@@ -179,6 +180,7 @@ private Q_SLOTS:
         const QString details = panel.details()->toPlainText();
         QVERIFY2(details.contains(QStringLiteral("battery_monitor.py:10")), qPrintable(details));
         QVERIFY(details.contains(QStringLiteral("Origin: deterministic")));
+        QVERIFY2(details.contains(QStringLiteral("quoted from the code")), qPrintable(details));
 
         panel.selectSuggestion(QStringLiteral("s9"));
         QCOMPARE(instances, (QList<QStringList>{{QStringLiteral("n2"), QStringLiteral("n4"),

@@ -195,6 +195,17 @@ private Q_SLOTS:
             QString reason, detail;
             QVERIFY2(checker.check(s, &reason, &detail), qPrintable(detail));
             QCOMPARE(s.origin.provider, QStringLiteral("deterministic"));
+            // A docstring or comment is the repository's text: marked as quoted, so that it is
+            // shown as a quotation and never taken for rosarch's own words.
+            QVERIFY(s.quoted);
+        }
+        if (!list.isEmpty()) {
+            SuggestionReport report;
+            report.suggestions = list;
+            SuggestionReport back;
+            QString error;
+            QVERIFY(SuggestionsJson::read(SuggestionsJson::write(report), &back, &error));
+            QVERIFY(back.suggestions.first().quoted);
         }
     }
 
