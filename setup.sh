@@ -5,7 +5,8 @@
 #   ./setup.sh gui     build and open the GUI on resources/example_ws
 #   ./setup.sh test    format check, warnings-as-errors build, the whole test suite and
 #                      clang-tidy, then the suite again under AddressSanitizer + UBSan in
-#                      build-asan (what CI runs)
+#                      build-asan, then every libFuzzer target for a fixed number of runs in
+#                      build-fuzz (what CI runs)
 #   ./setup.sh build   only build
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -16,7 +17,7 @@ packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
   nlohmann-json3-dev libcurl4-openssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth fonts-dejavu-core
-  ccache clang-format clang-tidy default-jre-headless nodejs git)
+  ccache clang-format clang-tidy default-jre-headless nodejs git clang-16 libclang-rt-16-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -75,6 +76,15 @@ case "$mode" in
         -DROSARCH_WERROR=ON -DROSARCH_SANITIZE=address,undefined
       ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir "$asan_dir" --output-on-failure -j "$jobs"
+    fi
+    if [ "${ROSARCH_SKIP_FUZZ:-0}" != 1 ]; then
+      # Every libFuzzer target (clang-16, ASan + UBSan) over its seed corpus, a fixed number
+      # of runs each.
+      fuzz_dir=${ROSARCH_FUZZ_BUILD_DIR:-build-fuzz}
+      configure_and_build "$fuzz_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+        -DCMAKE_C_COMPILER=clang-16 -DCMAKE_CXX_COMPILER=clang++-16 -DROSARCH_FUZZ=ON \
+        -DROSARCH_SANITIZE=address,undefined,fuzzer-no-link
+      scripts/run-fuzzers.sh "$fuzz_dir" runs=2000
     fi ;;
   build)
     configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo ;;

@@ -298,6 +298,11 @@ QString LlmResult::errorName(Error error)
 
 LlmClient::LlmClient(const LlmSettings &settings) : m_settings(settings) {}
 
+QJsonDocument LlmClient::parseReply(const QString &content, QString *error)
+{
+    return parseContent(content, error);
+}
+
 LlmResult LlmClient::complete(const LlmRequest &request) const
 {
     LlmResult result;

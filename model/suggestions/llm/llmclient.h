@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QJsonDocument>
+
 #include "llmrequest.h"
 #include "llmresult.h"
 #include "llmsettings.h"
@@ -22,6 +24,9 @@ public:
     /// the server rejects it (400), and retries once with the validation error appended.
     LlmResult complete(const LlmRequest &request) const;
     const LlmSettings &settings() const { return m_settings; }
+    /// The JSON inside a reply's content (a Markdown code fence around it is tolerated); a
+    /// null document, with `error`, when there is none.
+    static QJsonDocument parseReply(const QString &content, QString *error);
 
 private:
     LlmSettings m_settings;

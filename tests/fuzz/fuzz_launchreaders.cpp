@@ -1,0 +1,28 @@
+// libFuzzer target: the three launch-file readers (XML, YAML, Python), each on the input.
+// The first byte picks the reader, so one corpus covers all three formats.
+#include "fuzzsupport.h"
+#include "pythonlaunchreader.h"
+#include "xmllaunchreader.h"
+#include "yamllaunchreader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    if (size == 0)
+        return 0;
+    const QByteArray content = rosarch::fuzz::bytes(data + 1, size - 1);
+    switch (data[0] % 3) {
+    case 0:
+        rosarch::XmlLaunchReader::isLaunchFile(content);
+        rosarch::XmlLaunchReader::read(content, QStringLiteral("f.launch.xml"));
+        break;
+    case 1:
+        rosarch::YamlLaunchReader::isLaunchFile(content);
+        rosarch::YamlLaunchReader::read(content, QStringLiteral("f.launch.yaml"));
+        break;
+    default:
+        rosarch::PythonLaunchReader::isLaunchFile(content);
+        rosarch::PythonLaunchReader::read(content, QStringLiteral("f.launch.py"));
+        break;
+    }
+    return 0;
+}
