@@ -23,20 +23,6 @@ struct Family
     QList<Use> users;     ///< subscribers, clients
 };
 
-QString familyName(PortKind k)
-{
-    switch (k) {
-    case PortKind::Publisher:
-    case PortKind::Subscriber:
-        return QStringLiteral("topic");
-    case PortKind::ServiceServer:
-    case PortKind::ServiceClient:
-        return QStringLiteral("service");
-    default:
-        return QStringLiteral("action");
-    }
-}
-
 QString who(const RosNodePart &part)
 {
     return RosNames::fullyQualified(part.nameSpace, part.name);
@@ -85,7 +71,7 @@ private:
             for (const PartPort &port : part.ports) {
                 if (!port.active || !port.resolved)
                     continue;
-                const QString key = familyName(port.kind) + QLatin1Char(' ') + port.name;
+                const QString key = portFamilyName(port.kind) + QLatin1Char(' ') + port.name;
                 if (!m_system.contains(key))
                     m_order.append(key);
                 Family &f = m_system[key];
@@ -256,7 +242,7 @@ private:
         QList<Diagnostic::Related> rel{{QStringLiteral("%1 %2 as written in the code")
                                             .arg(portKindName(u.port->kind), u.port->nameAsWritten),
                                         u.port->evidence}};
-        const QString family = familyName(u.port->kind);
+        const QString family = portFamilyName(u.port->kind);
         const QString h = hint(family, name, !isProvidingPort(u.port->kind), &rel);
         // Like the unremapped findings: an input nobody feeds is a warning, an output
         // nobody hears (often meant for something outside the system) is a note.

@@ -35,6 +35,22 @@ bool portKindFromName(const QString &name, PortKind *kind)
     return false;
 }
 
+QString portFamilyName(PortKind kind)
+{
+    switch (kind) {
+    case PortKind::Publisher:
+    case PortKind::Subscriber:
+        return QStringLiteral("topic");
+    case PortKind::ServiceServer:
+    case PortKind::ServiceClient:
+        return QStringLiteral("service");
+    case PortKind::ActionServer:
+    case PortKind::ActionClient:
+        break;
+    }
+    return QStringLiteral("action");
+}
+
 QString portIdPrefix(PortKind kind)
 {
     switch (kind) {

@@ -20,6 +20,8 @@ enum class PortKind
 QString portKindName(PortKind kind);
 /// Inverse of portKindName; returns false for an unknown name.
 bool portKindFromName(const QString &name, PortKind *kind);
+/// "topic", "service" or "action": what a port of this kind talks on.
+QString portFamilyName(PortKind kind);
 /// ACD port-id prefix: p, s, ps, rs, pa, ra.
 QString portIdPrefix(PortKind kind);
 /// Subscriber, service server, action server: ports that take input (`portin`).

@@ -7,16 +7,9 @@
 namespace rosarch {
 
 using PlantUmlText::label;
+using PlantUmlText::safeId;
 
 namespace {
-
-QString safe(const QString &text)
-{
-    QString s;
-    for (const QChar c : text)
-        s += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
-    return s;
-}
 
 QString arrow(Connection::Kind kind)
 {
@@ -76,7 +69,7 @@ QString partBlock(const RosNodePart &part, const QString &indent)
 
 QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
 {
-    const QString top = safe(c.stem);
+    const QString top = safeId(c.stem);
     QString out = QStringLiteral("@startuml\n");
     // Records that the next line written declares the element (kind, id).
     const auto declare = [&](WrittenElement::Kind kind, const QString &id) {
@@ -115,9 +108,9 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
         const bool scoped = !ns.isEmpty();
         const QString indent = scoped ? QStringLiteral("    ") : QStringLiteral("  ");
         if (scoped) {
-            QString alias = QStringLiteral("ns_") + safe(ns);
+            QString alias = QStringLiteral("ns_") + safeId(ns);
             for (int n = 2; nsAliases.contains(alias); ++n)
-                alias = QStringLiteral("ns_%1_%2").arg(safe(ns)).arg(n);
+                alias = QStringLiteral("ns_%1_%2").arg(safeId(ns)).arg(n);
             nsAliases.insert(alias);
             out += QStringLiteral("  package \"%1\" as %2 <<namespace>> {\n").arg(label(ns), alias);
         }
@@ -134,9 +127,9 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
             if (written.contains(part->subsystem))
                 continue;
             written.insert(part->subsystem);
-            QString alias = QStringLiteral("sub_") + safe(part->subsystem);
+            QString alias = QStringLiteral("sub_") + safeId(part->subsystem);
             for (int n = 2; subAliases.contains(alias); ++n)
-                alias = QStringLiteral("sub_%1_%2").arg(safe(part->subsystem)).arg(n);
+                alias = QStringLiteral("sub_%1_%2").arg(safeId(part->subsystem)).arg(n);
             subAliases.insert(alias);
             out += QStringLiteral("%1component \"%2\" as %3 <<Subsystem>> {\n")
                        .arg(indent, label(part->subsystem), alias);

@@ -25,22 +25,6 @@ struct Graph
     int unresolved = 0;
 };
 
-QString family(PortKind k)
-{
-    switch (k) {
-    case PortKind::Publisher:
-    case PortKind::Subscriber:
-        return QStringLiteral("topic");
-    case PortKind::ServiceServer:
-    case PortKind::ServiceClient:
-        return QStringLiteral("service");
-    case PortKind::ActionServer:
-    case PortKind::ActionClient:
-        break;
-    }
-    return QStringLiteral("action");
-}
-
 QString colour(PortKind k)
 {
     switch (k) {
@@ -79,7 +63,7 @@ void collect(const Architecture &arch, const Composite &c, Graph *g, int depth)
                 ++g->unresolved;
                 continue;
             }
-            const QString channel = family(p.kind) + QLatin1Char(' ') + p.name;
+            const QString channel = portFamilyName(p.kind) + QLatin1Char(' ') + p.name;
             if (!g->channels.contains(channel) || g->channels.value(channel).isEmpty())
                 g->channels.insert(channel, p.type);
             const QString n = quoted(QStringLiteral("node ") + node);

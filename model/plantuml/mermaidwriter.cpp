@@ -1,4 +1,5 @@
 #include "mermaidwriter.h"
+#include "plantumltext.h"
 
 #include <QHash>
 #include <QMap>
@@ -6,6 +7,8 @@
 namespace rosarch {
 
 namespace {
+
+using PlantUmlText::safeId;
 
 /// Mermaid labels go in double quotes; a quote inside becomes the #quot; entity, and the
 /// characters Mermaid reads as markup inside a label are escaped the same way.
@@ -25,14 +28,6 @@ QString quoted(const QString &text)
             out += c;
     }
     return QLatin1Char('"') + out + QLatin1Char('"');
-}
-
-QString safeId(const QString &text)
-{
-    QString s;
-    for (const QChar c : text)
-        s += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
-    return s;
 }
 
 QString colour(Connection::Kind kind)

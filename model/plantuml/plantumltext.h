@@ -12,6 +12,16 @@ inline QString label(QString text)
     return text;
 }
 
+/// An identifier made of ASCII letters, digits and '_' (every other character becomes '_'):
+/// a PlantUML alias or a Mermaid node id.
+inline QString safeId(const QString &text)
+{
+    QString s;
+    for (const QChar c : text)
+        s += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
+    return s;
+}
+
 /// "pkg/msg/T" -> "pkg::msg::T", the blueprint's notation ("?" when unknown).
 inline QString type(const QString &canonical)
 {
