@@ -82,15 +82,29 @@ std::vector<TSNode> fieldChildren(TSNode n, const char *name);
 /// The nearest ancestor of one of the given types (null node if none).
 TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types);
 /// Calls `visit` for `n` and every descendant in document order; return false to skip children.
+/// Iterative (a tree cursor), so that no nesting depth can exhaust the stack, and linear.
 template <typename F> void walk(TSNode n, F &&visit)
 {
     if (isNull(n))
         return;
-    if (!visit(n))
-        return;
-    const uint32_t count = ts_node_child_count(n);
-    for (uint32_t i = 0; i < count; ++i)
-        walk(ts_node_child(n, i), visit);
+    TSTreeCursor cursor = ts_tree_cursor_new(n);
+    for (;;) {
+        const bool descend = visit(ts_tree_cursor_current_node(&cursor));
+        if (descend && ts_tree_cursor_goto_first_child(&cursor))
+            continue;
+        // Up until a next sibling exists, never above `n`.
+        bool moved = false;
+        while (!moved) {
+            if (ts_node_eq(ts_tree_cursor_current_node(&cursor), n))
+                break;
+            moved = ts_tree_cursor_goto_next_sibling(&cursor);
+            if (!moved && !ts_tree_cursor_goto_parent(&cursor))
+                break;
+        }
+        if (!moved)
+            break;
+    }
+    ts_tree_cursor_delete(&cursor);
 }
 } // namespace ts
 
