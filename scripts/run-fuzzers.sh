@@ -29,7 +29,7 @@ for corpus in tests/fuzz/corpus/*/; do
   log="$build/fuzz-artifacts/$target.log"
   QT_QPA_PLATFORM=offscreen ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
     UBSAN_OPTIONS=print_stacktrace=1 \
-    "$exe" "${limit[@]}" -max_len=65536 -timeout=60 -rss_limit_mb=2560 -print_final_stats=1 \
+    "$exe" "${limit[@]}" -seed=1 -max_len=65536 -timeout=60 -rss_limit_mb=2560 -print_final_stats=1 \
     -artifact_prefix="$artifacts/" "$scratch" "$corpus" > "$log" 2>&1
   rc=$?
   execs=$(grep -m1 'stat::number_of_executed_units' "$log" | awk '{print $2}')

@@ -60,7 +60,13 @@ int PlantUmlDocument::owner(int index) const
 
 bool PlantUmlDocument::encloses(int ancestor, int index) const
 {
-    for (int p = at(index).parent; p >= 0; p = at(p).parent)
+    // Indexes come from the reader's searches, which answer -1 for "none" (found by fuzzing):
+    // nothing encloses what does not exist. The steps are bounded by the declarations.
+    if (index < 0 || index >= size())
+        return false;
+    int steps = 0;
+    for (int p = at(index).parent; p >= 0 && p < size() && steps <= size();
+         p = at(p).parent, ++steps)
         if (p == ancestor)
             return true;
     return false;

@@ -6,6 +6,7 @@
 #include "umlmodel.h"
 #include "umltestsupport.h"
 
+#include <QDir>
 #include <QtTest>
 
 using namespace rosarch;
@@ -266,6 +267,22 @@ endlegend
         QCOMPARE(all.at(0).level, UmlLevel::Acd);
         QCOMPARE(all.at(1).level, UmlLevel::Ccd);
         QCOMPARE(describe(all.at(1)), sorted(kCcdElements));
+    }
+
+    void fuzzerFindingsReadWithoutCrashing()
+    {
+        // Inputs libFuzzer found crashing the reader (tests/fuzz/corpus/fuzz_plantuml/
+        // regression-*): each must read, to whatever it says, without a crash.
+        const QDir corpus(QStringLiteral(ROSARCH_SOURCE_DIR "/tests/fuzz/corpus/fuzz_plantuml"));
+        const QStringList found = corpus.entryList({QStringLiteral("regression-*")}, QDir::Files);
+        QVERIFY(!found.isEmpty());
+        for (const QString &f : found) {
+            QFile file(corpus.filePath(f));
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const QList<UmlDiagram> diagrams =
+                PlantUmlReader::read(QString::fromUtf8(file.readAll()));
+            QVERIFY(!diagrams.isEmpty());
+        }
     }
 
     void ourAcdWriterReadsBack()
