@@ -72,6 +72,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_runner, &StageRunner::stageFinished, this, [this] { setRunning(false); });
     connect(m_runner, &StageRunner::launchStageFinished, this, [this] { setRunning(false); });
     connect(m_runner, &StageRunner::stageCanceled, this, [this] { setRunning(false); });
+    connect(m_runner, &StageRunner::stageFailed, this, [this] { setRunning(false); });
     const auto filesMayHaveChanged = [this] {
         // The files may have changed since they were shown; start the source view afresh.
         m_sourceView->setWorkspaceRoot(m_document->workspaceRoot());

@@ -18,6 +18,7 @@ StageController::StageController(Document *document, StageRunner *runner,
     connect(m_runner, &StageRunner::launchStageFinished, this,
             &StageController::onLaunchStageFinished);
     connect(m_runner, &StageRunner::stageCanceled, this, &StageController::onStageCanceled);
+    connect(m_runner, &StageRunner::stageFailed, this, &StageController::onStageFailed);
 }
 
 void StageController::setWorkspace(const QString &root)
@@ -150,6 +151,18 @@ void StageController::onStageCanceled(StageRunner::Job job)
     const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–3") : tr("Stages 2–3");
     m_log->appendLog(tr("%1 canceled; the previous result is kept.").arg(what));
     Q_EMIT statusMessage(tr("%1 canceled").arg(what), 5000);
+}
+
+void StageController::onStageFailed(StageRunner::Job job, const QString &message)
+{
+    m_restoreNodeId.clear();
+    m_restorePortId.clear();
+    m_restoreLaunchId.clear();
+    const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–3") : tr("Stages 2–3");
+    m_log->appendLog(
+        tr("%1 stopped without a result; the previous result is kept. %2").arg(what, message));
+    Q_EMIT statusMessage(tr("%1 stopped: the analysis worker failed (see the log)").arg(what),
+                         0);
 }
 
 } // namespace rosarch

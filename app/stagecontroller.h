@@ -46,6 +46,7 @@ private:
     void onStageFinished(const Recovery &result);
     void onLaunchStageFinished(const LaunchDependencies &result, const Architecture &architecture);
     void onStageCanceled(StageRunner::Job job);
+    void onStageFailed(StageRunner::Job job, const QString &message);
     void rememberSelection();
     void restoreSelection();
     void report(const QString &summary);

@@ -19,17 +19,20 @@ Diagnostic internalError(int stage, const std::exception &e)
     return d;
 }
 
+/// A note that the worker was not found, so the stages ran inside the window.
+Diagnostic inProcess(const QString &why)
+{
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.code = QStringLiteral("worker-missing");
+    d.message = StageRunner::tr("The stages ran inside the application, not isolated: %1")
+                    .arg(why);
+    return d;
+}
+
 } // namespace
 
-StageRunner::StageRunner(QObject *parent)
-    : QObject(parent),
-      m_stage([](const QString &root, const LaunchOptions &options, const StageControl &control) {
-          return recoverWorkspace(root, options, control);
-      }),
-      m_launchStage([](const QString &root, const AtomicNodeList &nodes,
-                       const LaunchOptions &options, const StageControl &control) {
-          return analyzeLaunchFiles(root, nodes, options, control);
-      })
+StageRunner::StageRunner(QObject *parent) : QObject(parent)
 {
     connect(&m_jobs, &JobRunner::progressed, this,
             [this](qint64 done, qint64 total, const QString &what) {
@@ -52,17 +55,31 @@ void StageRunner::setLaunchFunction(LaunchFunction stage)
 void StageRunner::run(const QString &root, const LaunchOptions &options)
 {
     const RecoveryFunction stage = m_stage;
-    start(root, Job::Recovery, [stage, root, options](const StageControl &control) {
-        Recovery result;
+    const StageProcess::Options process = m_process;
+    start(root, Job::Recovery, [stage, root, options, process](const StageControl &control) {
+        Outcome out;
+        Recovery &result = out.recovery;
         try {
-            result = stage(root, options, control);
+            if (stage) {
+                result = stage(root, options, control);
+            } else if (StageProcess::helperPath(process.helperPath).isEmpty()) {
+                result = recoverWorkspace(root, options, control);
+                result.nodes.diagnostics.append(
+                    inProcess(StageRunner::tr("the analysis worker rosarch-stages was not found "
+                                              "next to the application")));
+            } else {
+                StageProcess::Result r = StageProcess::recover(root, options, control, process);
+                result = std::move(r.recovery);
+                result.nodes.canceled = result.nodes.canceled || r.canceled;
+                out.error = r.error;
+            }
         } catch (const std::exception &e) {
             result = {};
             result.nodes.diagnostics.append(internalError(1, e));
         }
         if (result.nodes.workspaceRoot.isEmpty())
             result.nodes.workspaceRoot = root;
-        return result;
+        return out;
     });
 }
 
@@ -70,37 +87,53 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
                             const LaunchOptions &options)
 {
     const LaunchFunction stage = m_launchStage;
-    start(root, Job::LaunchOnly, [stage, root, nodes, options](const StageControl &control) {
-        Recovery result;
-        try {
-            result.launch = stage(root, nodes, options, control);
-            if (!result.launch.canceled && !control.isCanceled())
-                result.architecture = composeArchitecture(nodes, result.launch, control);
-        } catch (const std::exception &e) {
-            result.launch = {};
-            result.launch.diagnostics.append(internalError(2, e));
-        }
-        return result;
-    });
+    const StageProcess::Options process = m_process;
+    start(root, Job::LaunchOnly,
+          [stage, root, nodes, options, process](const StageControl &control) {
+              Outcome out;
+              Recovery &result = out.recovery;
+              try {
+                  if (stage || StageProcess::helperPath(process.helperPath).isEmpty()) {
+                      result.launch = stage ? stage(root, nodes, options, control)
+                                            : analyzeLaunchFiles(root, nodes, options, control);
+                      if (!result.launch.canceled && !control.isCanceled())
+                          result.architecture = composeArchitecture(nodes, result.launch, control);
+                  } else {
+                      StageProcess::Result r =
+                          StageProcess::launch(root, nodes, options, control, process);
+                      result = std::move(r.recovery);
+                      result.launch.canceled = result.launch.canceled || r.canceled;
+                      out.error = r.error;
+                  }
+              } catch (const std::exception &e) {
+                  result.launch = {};
+                  result.launch.diagnostics.append(internalError(2, e));
+              }
+              return out;
+          });
 }
 
 void StageRunner::start(const QString &root, Job job,
-                        std::function<Recovery(const StageControl &)> work)
+                        std::function<Outcome(const StageControl &)> work)
 {
     m_currentJob = job;
-    m_jobs.start<Recovery>([work = std::move(work)](
-                               const JobControl &control) { return work(control.stageControl()); },
-                           [this, job](Recovery result, bool canceled) {
-                               canceled = canceled ||
-                                          (job == Job::Recovery ? result.nodes.canceled : false) ||
-                                          result.launch.canceled;
-                               if (canceled)
-                                   Q_EMIT stageCanceled(job);
-                               else if (job == Job::Recovery)
-                                   Q_EMIT stageFinished(result);
-                               else
-                                   Q_EMIT launchStageFinished(result.launch, result.architecture);
-                           });
+    m_jobs.start<Outcome>(
+        [work = std::move(work)](const JobControl &control) {
+            return work(control.stageControl());
+        },
+        [this, job](Outcome out, bool canceled) {
+            const Recovery &result = out.recovery;
+            canceled = canceled || (job == Job::Recovery ? result.nodes.canceled : false) ||
+                       result.launch.canceled;
+            if (canceled)
+                Q_EMIT stageCanceled(job);
+            else if (!out.error.isEmpty())
+                Q_EMIT stageFailed(job, out.error);
+            else if (job == Job::Recovery)
+                Q_EMIT stageFinished(result);
+            else
+                Q_EMIT launchStageFinished(result.launch, result.architecture);
+        });
     Q_EMIT stageStarted(root, job);
 }
 

@@ -6,6 +6,7 @@
 #include "launchdependencies.h"
 #include "recovery.h"
 #include "stagecontrol.h"
+#include "stageprocess.h"
 
 #include <QObject>
 
@@ -18,6 +19,10 @@ namespace rosarch {
 /// to 3 together, or stages 2 and 3 against a stage 1 result. Starting a new run cancels the
 /// previous one; its late result is dropped by the runner's generation number, so only the
 /// latest run ever reports.
+///
+/// The stages run in the analysis worker process (StageProcess), so that a crash or a memory
+/// blow-up in analysing somebody's code costs at most a file, and never the window: what the
+/// worker cannot pin on one file arrives as stageFailed, and the previous result stays.
 class StageRunner : public QObject
 {
     Q_OBJECT
@@ -37,10 +42,13 @@ public:
 
     explicit StageRunner(QObject *parent = nullptr);
 
-    /// Replaces stages 1+2 (default: recoverWorkspace); tests use slow or counting stages.
+    /// Runs stages 1 to 3 in this process with `stage` instead of the worker; tests use slow
+    /// or counting stages.
     void setStageFunction(RecoveryFunction stage);
-    /// Replaces the stage 2 re-run (default: analyzeLaunchFiles).
+    /// Runs the stage 2 re-run in this process with `stage` instead of the worker.
     void setLaunchFunction(LaunchFunction stage);
+    /// How the worker is run (its path, the per-file time and memory budgets).
+    void setProcessOptions(const StageProcess::Options &options) { m_process = options; }
 
     /// Starts stages 1 to 3 on `root`, superseding any run in progress.
     void run(const QString &root, const LaunchOptions &options = {});
@@ -63,12 +71,22 @@ Q_SIGNALS:
     void launchStageFinished(const rosarch::LaunchDependencies &result,
                              const rosarch::Architecture &architecture);
     void stageCanceled(rosarch::StageRunner::Job job);
+    /// The run ended without a result (the worker stopped outside any one file's analysis);
+    /// `message` says why, for a person.
+    void stageFailed(rosarch::StageRunner::Job job, const QString &message);
 
 private:
-    void start(const QString &root, Job job, std::function<Recovery(const StageControl &)> work);
+    /// A run's result, or why there is none.
+    struct Outcome
+    {
+        Recovery recovery;
+        QString error;
+    };
+    void start(const QString &root, Job job, std::function<Outcome(const StageControl &)> work);
 
-    RecoveryFunction m_stage;
-    LaunchFunction m_launchStage;
+    RecoveryFunction m_stage;     ///< in-process stages 1 to 3 (empty: the worker)
+    LaunchFunction m_launchStage; ///< in-process stage 2 re-run (empty: the worker)
+    StageProcess::Options m_process;
     Job m_currentJob = Job::Recovery;
     JobRunner m_jobs; ///< last member: its destructor cancels and waits for the workers
 };

@@ -19,6 +19,7 @@ struct AtomicNodeList
     bool canceled = false;
 
     const AtomicNode *node(const QString &id) const;
+    bool operator==(const AtomicNodeList &) const = default;
     QList<const AtomicNode *> nodesOfPackage(const QString &package) const;
 };
 

@@ -118,6 +118,7 @@ struct Composite
     const RosNodePart *part(const QString &id) const;
     const Channel *channel(const QString &id) const;
     const BoundaryPort *boundaryPort(const QString &id) const;
+    bool operator==(const Composite &) const = default;
 };
 
 /// Stage 3's result: one composite per launch-file instance, plus the architecture checks.
@@ -130,6 +131,7 @@ struct Architecture
     const Composite *composite(const QString &instanceId) const;
     /// The composite written as the launch file's CCD: its first instance (roots come first).
     QList<const Composite *> representatives() const;
+    bool operator==(const Architecture &) const = default;
 };
 
 QString connectionKindName(Connection::Kind kind);

@@ -74,6 +74,16 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "The parser gave up on a file (a timeout or an internal limit); nothing in it was "
              "analysed.",
              "error"),
+        kind("file-skipped", "File skipped after a crash or an overrun",
+             "Analysing this file crashed the analysis worker, ran out of its memory budget or "
+             "took longer than its time budget, so the run was repeated without it. Nothing in "
+             "it was analysed; everything else was. Please report the file: it found a bug.",
+             "error"),
+        kind("worker-missing", "Stages run without isolation",
+             "The analysis worker rosarch-stages was not found next to the application, so the "
+             "stages ran inside it: a crash in analysis would close the window. Reinstall, or "
+             "set ROSARCH_STAGES to the worker's path.",
+             "warning"),
         kind("file-too-large", "File too large",
              "A file above the size limit was skipped; nothing in it was analysed.", "warning"),
         kind("binary-file", "Binary file", "A file that looks binary was skipped.", "note"),

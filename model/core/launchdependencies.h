@@ -89,6 +89,7 @@ struct LaunchDependencies
 
     const LaunchFileInstance *instance(const QString &id) const;
     const NodeInstance *node(const QString &id) const;
+    bool operator==(const LaunchDependencies &) const = default;
 };
 
 } // namespace rosarch

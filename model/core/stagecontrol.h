@@ -1,5 +1,9 @@
 #pragma once
 
+#include "diagnostic.h"
+
+#include <QHash>
+#include <QList>
 #include <QString>
 
 #include <functional>
@@ -11,6 +15,13 @@ struct StageControl
 {
     std::function<bool()> canceled; ///< polled between files
     std::function<void(int done, int total, const QString &what)> progressed;
+    /// Called, from any thread, when the work on one file starts (`entering`) and when it ends.
+    /// A supervisor that runs the stages in a worker process learns from it which files were
+    /// being analysed when the worker crashed, ran out of memory or overran its time budget.
+    std::function<void(const QString &file, bool entering)> fileWork;
+    /// Files not to analyse, with the reason: an earlier attempt crashed or ran out of its
+    /// budget in them. Each skip becomes a `file-skipped` diagnostic.
+    QHash<QString, QString> skipped;
 
     bool isCanceled() const { return canceled && canceled(); }
     void report(int done, int total, const QString &what) const
@@ -18,6 +29,26 @@ struct StageControl
         if (progressed)
             progressed(done, total, what);
     }
+};
+
+/// The work on one file, for StageControl::fileWork: construct it before the file is read,
+/// and it says so again when it goes out of scope. A file the control says to skip is
+/// diagnosed here instead (skip()).
+class FileWork
+{
+public:
+    FileWork(const StageControl &control, const QString &file);
+    ~FileWork();
+    FileWork(const FileWork &) = delete;
+    FileWork &operator=(const FileWork &) = delete;
+
+    /// True when the file is not to be analysed; then appends its `file-skipped` diagnostic.
+    bool skip(QList<Diagnostic> *diagnostics) const;
+
+private:
+    const StageControl &m_control;
+    QString m_file;
+    bool m_reported;
 };
 
 } // namespace rosarch

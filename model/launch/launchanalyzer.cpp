@@ -33,9 +33,10 @@ public:
                                    f.language == SourceFile::Language::Yaml;
             if (!candidate)
                 continue;
+            const FileWork work(control, f.path);
             QByteArray content;
             QList<Diagnostic> readProblems; // already reported by the node analyzers for .py
-            if (!reader.read(f.path, &content, &readProblems)) {
+            if (work.skip(&readProblems) || !reader.read(f.path, &content, &readProblems)) {
                 if (f.language != SourceFile::Language::Python)
                     diagnostics->append(readProblems);
                 continue;
@@ -120,7 +121,9 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             out.canceled = true;
             return out;
         }
-        executor.runRoot(root, options.arguments);
+        const FileWork work(control, root);
+        if (!work.skip(&out.diagnostics))
+            executor.runRoot(root, options.arguments);
     }
     if (options.rootFile.isEmpty()) {
         // Files only reachable through a cycle have no top-level includer: run them as roots too.
@@ -129,7 +132,9 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             reached.insert(i.file);
         for (const QString &f : std::as_const(out.launchFiles))
             if (!reached.contains(f)) {
-                executor.runRoot(f, options.arguments);
+                const FileWork work(control, f);
+                if (!work.skip(&out.diagnostics))
+                    executor.runRoot(f, options.arguments);
                 for (const LaunchFileInstance &i : std::as_const(out.instances))
                     reached.insert(i.file);
             }

@@ -16,6 +16,8 @@ struct Recovery
     AtomicNodeList nodes;      ///< stage 1
     LaunchDependencies launch; ///< stage 2
     Architecture architecture; ///< stage 3
+
+    bool operator==(const Recovery &) const = default;
 };
 
 /// The figures of a recovery that the command line, the log and the status bar report.

@@ -230,8 +230,9 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
             continue;
         RosPackage pkg;
         pkg.path = parentDir(f.path);
+        const FileWork work(control, f.path);
         QByteArray content;
-        if (load(f.path, &content))
+        if (!work.skip(&ws.diagnostics) && load(f.path, &content))
             BuildFileParser::readPackageXml(content, f.path, &pkg, &ws.diagnostics);
         if (pkg.name.isEmpty())
             pkg.name = QFileInfo(pkg.path.isEmpty() ? ws.root : pkg.path).fileName();
@@ -258,13 +259,16 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
     for (RosPackage &pkg : ws.packages) {
         const QString prefix = pkg.path.isEmpty() ? QString() : pkg.path + QLatin1Char('/');
         QByteArray content;
-        if (load(prefix + QStringLiteral("setup.py"), &content))
+        if (const FileWork work(control, prefix + QStringLiteral("setup.py"));
+            !work.skip(&ws.diagnostics) && load(prefix + QStringLiteral("setup.py"), &content))
             pkg.executables.append(BuildFileParser::readSetupPy(
                 content, prefix + QStringLiteral("setup.py"), &ws.diagnostics));
         if (load(prefix + QStringLiteral("setup.cfg"), &content))
             pkg.executables.append(
                 BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
-        if (QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt")))) {
+        if (const FileWork work(control, prefix + QStringLiteral("CMakeLists.txt"));
+            QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt"))) &&
+            !work.skip(&ws.diagnostics)) {
             CMakeListsReader cmake(load);
             pkg.executables.append(
                 cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));

@@ -469,6 +469,52 @@ private Q_SLOTS:
         QVERIFY(!bar->isVisible());
         QVERIFY(w.logView()->logEdit()->toPlainText().contains(QStringLiteral("canceled")));
     }
+
+    void aCrashInAnalysisLeavesTheWindowAndTheModel()
+    {
+        // The stages run in the worker process: a crash there is a message in the log, and
+        // the window, its model and the person's edits stay.
+        MainWindow w;
+        w.show();
+        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy failed(w.runner(), &StageRunner::stageFailed);
+        w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
+
+        QTemporaryDir bin;
+        StageProcess::Options dying;
+        dying.helperPath = test::script(bin, QStringLiteral("dying-worker"), "kill -SEGV $$");
+        w.runner()->setProcessOptions(dying);
+        QTest::keyClick(&w, Qt::Key_F5); // Stages → Run all
+        QVERIFY(failed.wait(30000));
+        QCOMPARE(finished.count(), 1);
+        QVERIFY(w.isVisible());
+        QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
+        const QString log = w.logView()->logEdit()->toPlainText();
+        QVERIFY2(log.contains(QStringLiteral("stopped without a result; the previous result is "
+                                             "kept. The analysis stopped outside the work on "
+                                             "any one file")),
+                 qPrintable(log));
+        QVERIFY(log.contains(QStringLiteral("crashed (signal 11)")));
+        saveScreenshot(w, QStringLiteral("mainwindow_worker_crashed.png"));
+
+        // A crash while one file is analysed costs that file; the rest is shown.
+        w.runner()->setProcessOptions({});
+        qputenv("ROSARCH_STAGES_TEST_CRASH_IN", "talker.py");
+        QTest::keyClick(&w, Qt::Key_F5);
+        QVERIFY(finished.wait(60000));
+        qunsetenv("ROSARCH_STAGES_TEST_CRASH_IN");
+        QStringList classes;
+        for (const AtomicNode &n : w.document()->atomicNodes().nodes)
+            classes << n.className;
+        QCOMPARE(classes, QStringList{QStringLiteral("Listener")});
+        bool said = false;
+        for (const Diagnostic &d : w.document()->atomicNodes().diagnostics)
+            said = said || (d.code == QLatin1String("file-skipped") &&
+                            d.message.contains(QLatin1String("crashed (signal 11) on it")));
+        QVERIFY(said);
+    }
 };
 
 QTEST_MAIN(TestMainWindow)

@@ -11,6 +11,23 @@
 
 namespace rosarch {
 
+namespace {
+
+Diagnostic analysisFailed(const QString &file, const std::exception &e)
+{
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Error;
+    d.code = QStringLiteral("parse-failed");
+    d.message = QStringLiteral("%1 could not be analysed (%2); nothing in it was analysed.")
+                    .arg(file, QString::fromLocal8Bit(e.what()));
+    d.evidence.file = file;
+    d.evidence.line = d.evidence.endLine = 1;
+    d.evidence.column = d.evidence.endColumn = 1;
+    return d;
+}
+
+} // namespace
+
 CppNodeAnalyzer::CppNodeAnalyzer(const Workspace &workspace) : m_workspace(workspace) {}
 
 LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
@@ -31,12 +48,20 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         facts.package = file->package;
         if (control.isCanceled())
             return facts;
+        const FileWork work(control, file->path);
         QByteArray bytes;
-        if (reader.read(file->path, &bytes, &facts.diagnostics)) {
-            cppsyntax::blankExportMacros(&bytes);
-            const SyntaxTree tree =
-                SyntaxTree::parse(SyntaxTree::Grammar::Cpp, std::move(bytes), file->path);
-            facts = CppFileExtractor::extract(tree, file->package);
+        if (!work.skip(&facts.diagnostics) && reader.read(file->path, &bytes, &facts.diagnostics)) {
+            try {
+                cppsyntax::blankExportMacros(&bytes);
+                const SyntaxTree tree =
+                    SyntaxTree::parse(SyntaxTree::Grammar::Cpp, std::move(bytes), file->path);
+                facts = CppFileExtractor::extract(tree, file->package);
+            } catch (const std::exception &e) { // out of memory: this file, not the run
+                facts = CppFileFacts();
+                facts.path = file->path;
+                facts.package = file->package;
+                facts.diagnostics.append(analysisFailed(file->path, e));
+            }
         }
         QMutexLocker lock(&reportMutex); // reports stay in order and never overlap
         control.report(++done, total, file->path);

@@ -60,8 +60,10 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
             return result;
         const SourceFile &file = *files.at(i);
         control.report(i, int(files.size()), file.path);
+        const FileWork work(control, file.path);
         QByteArray content;
-        if (!reader.read(file.path, &content, &result.diagnostics))
+        if (work.skip(&result.diagnostics) ||
+            !reader.read(file.path, &content, &result.diagnostics))
             continue;
         SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file.path);
         if (!ts::isNull(tree.root()) && ts_node_has_error(tree.root())) {

@@ -1,0 +1,37 @@
+#include "stagecontrol.h"
+
+namespace rosarch {
+
+FileWork::FileWork(const StageControl &control, const QString &file)
+    : m_control(control), m_file(file),
+      m_reported(control.fileWork && !control.skipped.contains(file))
+{
+    if (m_reported) // a skipped file is not worked on
+        m_control.fileWork(m_file, true);
+}
+
+FileWork::~FileWork()
+{
+    if (m_reported)
+        m_control.fileWork(m_file, false);
+}
+
+bool FileWork::skip(QList<Diagnostic> *diagnostics) const
+{
+    const auto it = m_control.skipped.constFind(m_file);
+    if (it == m_control.skipped.cend())
+        return false;
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Error;
+    d.code = QStringLiteral("file-skipped");
+    d.message = QStringLiteral("%1 was not analysed: %2").arg(m_file, it.value());
+    d.evidence.file = m_file;
+    d.evidence.line = 1;
+    d.evidence.column = 1;
+    d.evidence.endLine = 1;
+    d.evidence.endColumn = 1;
+    diagnostics->append(d);
+    return true;
+}
+
+} // namespace rosarch

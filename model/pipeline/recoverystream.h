@@ -1,0 +1,63 @@
+#pragma once
+
+#include "launchanalyzer.h"
+#include "recovery.h"
+
+#include <QDataStream>
+#include <QHash>
+
+namespace rosarch {
+
+// Binary streaming of a recovery and what asks for one, for the analysis worker process
+// (rosarch-stages) and the application that runs it. Every field of every model type is
+// written; a round-trip test compares the result with operator== on real fixtures. The format
+// is private to one build of rosarch (the worker and the application come from one build),
+// so it carries a version only to catch a stale helper.
+
+QDataStream &operator<<(QDataStream &s, const Recovery &v);
+QDataStream &operator>>(QDataStream &s, Recovery &v);
+QDataStream &operator<<(QDataStream &s, const AtomicNodeList &v);
+QDataStream &operator>>(QDataStream &s, AtomicNodeList &v);
+QDataStream &operator<<(QDataStream &s, const LaunchOptions &v);
+QDataStream &operator>>(QDataStream &s, LaunchOptions &v);
+
+/// What one start of the analysis worker is asked to do (stdin of rosarch-stages).
+struct StageRequest
+{
+    enum class Job : quint8
+    {
+        Recovery = 1, ///< stages 1 to 3
+        Launch = 2,   ///< stages 2 and 3 against `nodes`
+    };
+    Job job = Job::Recovery;
+    QString root;
+    LaunchOptions options;
+    AtomicNodeList nodes;            ///< Launch: stage 1's result
+    QHash<QString, QString> skipped; ///< files not to analyse, with the reason
+    qint64 memoryBudgetMb = 0;       ///< the worker's address space (0 = unlimited)
+    bool serial = false;             ///< one analysis thread: one file in flight at a crash
+};
+
+QDataStream &operator<<(QDataStream &s, const StageRequest &v);
+QDataStream &operator>>(QDataStream &s, StageRequest &v);
+
+namespace stagestream {
+/// The first bytes of a request and of every worker reply: "RSTG" and the format version.
+constexpr quint32 kMagic = 0x52535447;
+constexpr quint32 kVersion = 1;
+/// The QDataStream version both sides use.
+constexpr QDataStream::Version kStreamVersion = QDataStream::Qt_6_4;
+/// The worker's replies on stdout are frames: a type and a payload (QByteArray).
+enum Frame : quint8
+{
+    Progress = 'P', ///< qint32 done, qint32 total, QString what
+    Enter = 'E',    ///< quint64 thread, QString file: work on a file begins
+    Leave = 'L',    ///< quint64 thread, QString file: and ends
+    Result = 'R',   ///< Recovery
+};
+/// Worker exit codes besides 0 (done) and a signal.
+constexpr int kExitBadRequest = 2;
+constexpr int kExitOutOfMemory = 4;
+} // namespace stagestream
+
+} // namespace rosarch

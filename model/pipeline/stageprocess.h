@@ -1,0 +1,53 @@
+#pragma once
+
+#include "atomicnodelist.h"
+#include "launchanalyzer.h"
+#include "recovery.h"
+#include "stagecontrol.h"
+
+#include <QString>
+
+namespace rosarch {
+
+/// Runs the stages in the analysis worker process, rosarch-stages, and supervises it, so that
+/// nothing the analysed code can do to the analysis reaches the caller:
+/// - a crash, an exhausted memory budget or a file that overruns its time budget costs that
+///   one file: the worker is started again with the file skipped, and the result says so
+///   (a `file-skipped` diagnostic naming the file and the reason);
+/// - what cannot be pinned on one file ends the run with an error, never the caller;
+/// - canceling kills the worker at once.
+/// The worker reports which files it is working on (StageControl::fileWork); with two files in
+/// flight at a crash it runs once more on one thread to tell which of them it was.
+class StageProcess
+{
+public:
+    struct Options
+    {
+        QString helperPath;              ///< "" = helperPath(): next to the application, ...
+        int fileTimeoutMs = 120 * 1000;  ///< the time budget of one file's analysis
+        qint64 memoryBudgetMb = 4096;    ///< the worker's address space (0 = unlimited)
+        int maxAttempts = 6;             ///< worker starts for one run, restarts included
+    };
+
+    struct Result
+    {
+        Recovery recovery;
+        bool canceled = false;
+        QString error; ///< why there is no result ("" when there is one)
+        int attempts = 0;
+    };
+
+    /// The worker: $ROSARCH_STAGES, else rosarch-stages next to the application, else the one
+    /// in the build tree. "" when there is none.
+    static QString helperPath(const QString &configured = {});
+
+    /// Stages 1 to 3 on `root`.
+    static Result recover(const QString &root, const LaunchOptions &options,
+                          const StageControl &control, const Options &process);
+    /// Stages 2 and 3 on `root` against stage 1's `nodes`.
+    static Result launch(const QString &root, const AtomicNodeList &nodes,
+                         const LaunchOptions &options, const StageControl &control,
+                         const Options &process);
+};
+
+} // namespace rosarch

@@ -1,0 +1,258 @@
+// The stages in the analysis worker process (rosarch-stages), supervised by StageProcess: the
+// result is the one the stages give in-process, field for field; a crash, a hang or a memory
+// blow-up while one file is analysed costs that file alone, with a diagnostic saying why; what
+// cannot be pinned on a file is an error, never a crash of the caller. The faults are the
+// worker's test switches (ROSARCH_STAGES_TEST_*), a stand-in for analyser bugs nobody has found.
+#include "composearchitecture.h"
+#include "recovery.h"
+#include "recoverystream.h"
+#include "stageprocess.h"
+#include "testsupport.h"
+
+#include <QDir>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <atomic>
+#include <thread>
+
+using namespace rosarch;
+using test::writeFile;
+
+namespace {
+
+/// A Python package with a healthy node `Good` and a second node in `victim.py`.
+void twoNodes(const QString &root)
+{
+    writeFile(root + "/src/pkg/package.xml",
+              "<package format=\"3\"><name>pkg</name><export><build_type>ament_python"
+              "</build_type></export></package>\n");
+    writeFile(root + "/src/pkg/pkg/__init__.py", "");
+    writeFile(root + "/src/pkg/pkg/good.py",
+              "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
+              "class Good(Node):\n    def __init__(self):\n        super().__init__('good')\n"
+              "        self.pub = self.create_publisher(String, 'out', 10)\n");
+    writeFile(root + "/src/pkg/pkg/victim.py",
+              "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
+              "class Victim(Node):\n    def __init__(self):\n        super().__init__('victim')\n"
+              "        self.sub = self.create_subscription(String, 'out', print, 10)\n");
+    writeFile(root + "/src/pkg/launch/both.launch.py",
+              "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+              "def generate_launch_description():\n    return LaunchDescription([\n"
+              "        Node(package='pkg', executable='good', name='good'),\n"
+              "        Node(package='pkg', executable='victim', name='victim')])\n");
+    writeFile(root + "/src/pkg/setup.py",
+              "from setuptools import setup\nsetup(name='pkg', entry_points={'console_scripts': "
+              "['good = pkg.good:main', 'victim = pkg.victim:main']})\n");
+}
+
+QStringList classes(const Recovery &r)
+{
+    QStringList out;
+    for (const AtomicNode &n : r.nodes.nodes)
+        out << n.className;
+    return out;
+}
+
+QStringList skipped(const Recovery &r)
+{
+    QStringList out;
+    for (const QList<Diagnostic> *list :
+         {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
+        for (const Diagnostic &d : *list)
+            if (d.code == QLatin1String("file-skipped"))
+                out << d.message;
+    return out;
+}
+
+/// Sets a worker test switch for the scope of one test.
+class Fault
+{
+public:
+    Fault(const char *name, const QByteArray &value) : m_name(name) { qputenv(name, value); }
+    ~Fault() { qunsetenv(m_name); }
+
+private:
+    const char *m_name;
+};
+
+bool sanitized()
+{
+#if defined(__SANITIZE_ADDRESS__)
+    return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return true;
+#endif
+#endif
+    return false;
+}
+
+} // namespace
+
+class TestStageProcess : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void theWorkerIsBuilt() { QVERIFY(!StageProcess::helperPath().isEmpty()); }
+
+    void aRecoveryStreamsFieldForField_data()
+    {
+        QTest::addColumn<QString>("workspace");
+        QTest::newRow("check_system") << test::dataDir(QStringLiteral("check_system/ws"));
+        QTest::newRow("compose_system") << test::dataDir(QStringLiteral("compose_system/ws"));
+        QTest::newRow("launch_constructs") << test::dataDir(QStringLiteral("launch_constructs"));
+        QTest::newRow("cpp_helpers") << test::dataDir(QStringLiteral("cpp_helpers/ws"));
+    }
+
+    void aRecoveryStreamsFieldForField()
+    {
+        QFETCH(QString, workspace);
+        const Recovery direct = recoverWorkspace(workspace);
+        QVERIFY(!direct.nodes.nodes.isEmpty() || !direct.launch.instances.isEmpty());
+        QByteArray bytes;
+        {
+            QDataStream out(&bytes, QIODevice::WriteOnly);
+            out.setVersion(stagestream::kStreamVersion);
+            out << direct;
+        }
+        Recovery back;
+        QDataStream in(bytes);
+        in.setVersion(stagestream::kStreamVersion);
+        in >> back;
+        QCOMPARE(in.status(), QDataStream::Ok);
+        QVERIFY(in.atEnd());
+        QVERIFY(back == direct);
+
+        // And through the worker: the same recovery as in this process.
+        const StageProcess::Result r =
+            StageProcess::recover(workspace, {}, StageControl(), StageProcess::Options());
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QCOMPARE(r.attempts, 1);
+        QVERIFY(r.recovery.nodes == direct.nodes);
+        QVERIFY(r.recovery.launch == direct.launch);
+        QVERIFY(r.recovery.architecture == direct.architecture);
+    }
+
+    void theLaunchStageRunsAgainstGivenNodes()
+    {
+        QTemporaryDir dir;
+        twoNodes(dir.path());
+        const Recovery full = recoverWorkspace(dir.path());
+        LaunchOptions options;
+        options.rootFile = QStringLiteral("src/pkg/launch/both.launch.py");
+        const StageProcess::Result r = StageProcess::launch(dir.path(), full.nodes, options,
+                                                            StageControl(), {});
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        const LaunchDependencies expected = analyzeLaunchFiles(dir.path(), full.nodes, options);
+        QVERIFY(r.recovery.launch == expected);
+        QVERIFY(r.recovery.architecture == composeArchitecture(full.nodes, expected));
+        QCOMPARE(r.recovery.launch.nodes.size(), 2);
+    }
+
+    void aCrashInOneFileCostsThatFile()
+    {
+        QTemporaryDir dir;
+        twoNodes(dir.path());
+        const Fault fault("ROSARCH_STAGES_TEST_CRASH_IN", "victim.py");
+        QStringList progress;
+        StageControl control;
+        control.progressed = [&](int, int, const QString &what) { progress << what; };
+        const StageProcess::Result r = StageProcess::recover(dir.path(), {}, control, {});
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QVERIFY(r.attempts >= 2);
+        QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
+        const QStringList why = skipped(r.recovery);
+        QCOMPARE(why.size(), 1);
+        QVERIFY2(why.first().startsWith(QLatin1String("src/pkg/pkg/victim.py was not analysed: "
+                                                      "the analysis worker crashed (signal 11) on it")),
+                 qPrintable(why.first()));
+        QVERIFY(progress.contains(
+            QStringLiteral("Repeating the analysis without src/pkg/pkg/victim.py…")));
+        // The rest of the run went on: the launch file still starts both executables.
+        QCOMPARE(r.recovery.launch.nodes.size(), 2);
+    }
+
+    void aFileThatOverrunsItsTimeBudgetIsSkipped()
+    {
+        QTemporaryDir dir;
+        twoNodes(dir.path());
+        const Fault fault("ROSARCH_STAGES_TEST_HANG_IN", "victim.py");
+        StageProcess::Options options;
+        options.fileTimeoutMs = 1500;
+        const StageProcess::Result r = StageProcess::recover(dir.path(), {}, {}, options);
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
+        const QStringList why = skipped(r.recovery);
+        QCOMPARE(why.size(), 1);
+        QVERIFY2(why.first().contains(
+                     QLatin1String("took longer than the time budget of 1.5 s per file")),
+                 qPrintable(why.first()));
+    }
+
+    void aFileThatExhaustsTheMemoryBudgetIsSkipped()
+    {
+        if (sanitized())
+            QSKIP("sanitizers reserve the address space a memory budget limits");
+        QTemporaryDir dir;
+        twoNodes(dir.path());
+        const Fault fault("ROSARCH_STAGES_TEST_EXHAUST_IN", "victim.py");
+        StageProcess::Options options;
+        options.memoryBudgetMb = 1024;
+        const StageProcess::Result r = StageProcess::recover(dir.path(), {}, {}, options);
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
+        const QStringList why = skipped(r.recovery);
+        QCOMPARE(why.size(), 1);
+        QVERIFY2(why.first().contains(QLatin1String("exhausted its memory budget of 1024 MB on it")),
+                 qPrintable(why.first()));
+    }
+
+    void cancelingKillsTheWorker()
+    {
+        QTemporaryDir dir;
+        twoNodes(dir.path());
+        const Fault fault("ROSARCH_STAGES_TEST_HANG_IN", "victim.py");
+        std::atomic_bool cancel = false;
+        StageControl control;
+        control.canceled = [&] { return cancel.load(); };
+        std::thread canceler([&] {
+            std::this_thread::sleep_for(std::chrono::milliseconds(500));
+            cancel = true;
+        });
+        const StageProcess::Result r = StageProcess::recover(dir.path(), {}, control, {});
+        canceler.join();
+        QVERIFY(r.canceled);
+        QVERIFY(r.error.isEmpty());
+    }
+
+    void aWorkerThatDiesOutsideAnyFileIsAnError()
+    {
+        QTemporaryDir bin;
+        const QString dying = test::script(bin, QStringLiteral("dying-worker"), "kill -SEGV $$");
+        StageProcess::Options options;
+        options.helperPath = dying;
+        const StageProcess::Result r =
+            StageProcess::recover(test::dataDir(QStringLiteral("py_basic")), {}, {}, options);
+        QVERIFY(!r.canceled);
+        QCOMPARE(r.attempts, 1);
+        QVERIFY2(r.error.startsWith(QLatin1String(
+                     "The analysis stopped outside the work on any one file, so there is no "
+                     "result: the analysis worker crashed (signal 11).")),
+                 qPrintable(r.error));
+    }
+
+    void aMissingWorkerIsSaid()
+    {
+        StageProcess::Options options;
+        options.helperPath = QStringLiteral("/nonexistent/rosarch-stages");
+        const StageProcess::Result r =
+            StageProcess::recover(test::dataDir(QStringLiteral("py_basic")), {}, {}, options);
+        QVERIFY2(r.error.startsWith(QLatin1String(
+                     "The analysis worker /nonexistent/rosarch-stages could not be started")),
+                 qPrintable(r.error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStageProcess)
+#include "tst_stageprocess.moc"

@@ -1,0 +1,162 @@
+// rosarch-stages: reads a StageRequest (model/pipeline/recoverystream.h) on stdin, runs the
+// stages it asks for and writes frames to stdout: progress, the file each thread begins and
+// ends, and the result. The supervisor (StageProcess) learns from the frames which file a
+// crash, an exhausted memory budget or an overrun belongs to, and starts this again without it.
+//
+// Exit codes: 0 done, 2 unreadable request, 4 out of memory; a crash ends it by a signal.
+//
+// For the supervisor's tests only: ROSARCH_STAGES_TEST_CRASH_IN, _HANG_IN and _EXHAUST_IN name
+// a substring; the worker crashes, hangs or allocates without bound when it begins a file whose
+// path contains it (a stand-in for the analyser bug that nobody has found yet).
+#include "recoverystream.h"
+#include "composearchitecture.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QMutex>
+#include <QThread>
+#include <QThreadPool>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace {
+
+using namespace rosarch;
+
+QMutex outputMutex;
+
+void writeAll(const QByteArray &bytes)
+{
+    const char *p = bytes.constData();
+    qsizetype left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(STDOUT_FILENO, p, size_t(left));
+        if (n <= 0)
+            _exit(3); // the supervisor went away
+        p += n;
+        left -= n;
+    }
+}
+
+template <class... T> void frame(stagestream::Frame type, const T &...fields)
+{
+    QByteArray payload;
+    {
+        QDataStream out(&payload, QIODevice::WriteOnly);
+        out.setVersion(stagestream::kStreamVersion);
+        (out << ... << fields);
+    }
+    QByteArray bytes;
+    QDataStream out(&bytes, QIODevice::WriteOnly);
+    out.setVersion(stagestream::kStreamVersion);
+    out << quint8(type) << payload;
+    QMutexLocker lock(&outputMutex);
+    writeAll(bytes);
+}
+
+void outOfMemory()
+{
+    // No unwinding: the files in flight stay in flight for the supervisor to see.
+    static const char message[] = "rosarch-stages: out of memory (the memory budget)\n";
+    [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, message, sizeof message - 1);
+    _exit(stagestream::kExitOutOfMemory);
+}
+
+bool sanitized()
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+    return true;
+#endif
+#endif
+    return false;
+}
+
+void limitMemory(qint64 budgetMb)
+{
+    // Sanitizers reserve terabytes of address space for their shadow memory.
+    if (budgetMb <= 0 || sanitized())
+        return;
+    const rlim_t bytes = rlim_t(budgetMb) * 1024 * 1024;
+    rlimit limit{bytes, bytes};
+    setrlimit(RLIMIT_AS, &limit);
+}
+
+void testFault(const QString &file)
+{
+    static const QByteArray crash = qgetenv("ROSARCH_STAGES_TEST_CRASH_IN");
+    static const QByteArray hang = qgetenv("ROSARCH_STAGES_TEST_HANG_IN");
+    static const QByteArray exhaust = qgetenv("ROSARCH_STAGES_TEST_EXHAUST_IN");
+    if (!crash.isEmpty() && file.contains(QString::fromUtf8(crash)))
+        std::raise(SIGSEGV);
+    if (!hang.isEmpty() && file.contains(QString::fromUtf8(hang)))
+        for (;;)
+            QThread::sleep(1);
+    if (!exhaust.isEmpty() && file.contains(QString::fromUtf8(exhaust))) {
+        std::vector<std::vector<char>> hog;
+        for (;;)
+            hog.emplace_back(64 * 1024 * 1024, 'x');
+    }
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    std::set_new_handler(outOfMemory);
+
+    QFile input;
+    if (!input.open(stdin, QIODevice::ReadOnly)) {
+        std::fputs("rosarch-stages: cannot read the request\n", stderr);
+        return stagestream::kExitBadRequest;
+    }
+    QDataStream in(&input);
+    in.setVersion(stagestream::kStreamVersion);
+    quint32 magic = 0, version = 0;
+    StageRequest request;
+    in >> magic >> version;
+    if (magic != stagestream::kMagic || version != stagestream::kVersion) {
+        std::fputs("rosarch-stages: the request is not from this build of rosarch\n", stderr);
+        return stagestream::kExitBadRequest;
+    }
+    in >> request;
+    if (in.status() != QDataStream::Ok) {
+        std::fputs("rosarch-stages: the request is incomplete\n", stderr);
+        return stagestream::kExitBadRequest;
+    }
+    limitMemory(request.memoryBudgetMb);
+    if (request.serial)
+        QThreadPool::globalInstance()->setMaxThreadCount(1);
+
+    StageControl control;
+    control.skipped = request.skipped;
+    control.progressed = [](int done, int total, const QString &what) {
+        frame(stagestream::Progress, qint32(done), qint32(total), what);
+    };
+    control.fileWork = [](const QString &file, bool entering) {
+        const auto thread = quint64(quintptr(QThread::currentThreadId()));
+        frame(entering ? stagestream::Enter : stagestream::Leave, thread, file);
+        if (entering)
+            testFault(file);
+    };
+    Recovery result;
+    if (request.job == StageRequest::Job::Launch) {
+        result.launch = analyzeLaunchFiles(request.root, request.nodes, request.options, control);
+        if (!result.launch.canceled)
+            result.architecture = composeArchitecture(request.nodes, result.launch, control);
+    } else {
+        result = recoverWorkspace(request.root, request.options, control);
+    }
+    frame(stagestream::Result, result);
+    return 0;
+}
