@@ -19,17 +19,6 @@ Diagnostic internalError(int stage, const std::exception &e)
     return d;
 }
 
-/// A note that the worker was not found, so the stages ran inside the window.
-Diagnostic inProcess(const QString &why)
-{
-    Diagnostic d;
-    d.severity = Diagnostic::Severity::Warning;
-    d.code = QStringLiteral("worker-missing");
-    d.message = StageRunner::tr("The stages ran inside the application, not isolated: %1")
-                    .arg(why);
-    return d;
-}
-
 } // namespace
 
 StageRunner::StageRunner(QObject *parent) : QObject(parent)
@@ -64,9 +53,7 @@ void StageRunner::run(const QString &root, const LaunchOptions &options)
                 result = stage(root, options, control);
             } else if (StageProcess::helperPath(process.helperPath).isEmpty()) {
                 result = recoverWorkspace(root, options, control);
-                result.nodes.diagnostics.append(
-                    inProcess(StageRunner::tr("the analysis worker rosarch-stages was not found "
-                                              "next to the application")));
+                result.nodes.diagnostics.append(StageProcess::missingWorker());
             } else {
                 StageProcess::Result r = StageProcess::recover(root, options, control, process);
                 result = std::move(r.recovery);

@@ -103,7 +103,12 @@ int runCheck(const QStringList &arguments)
         }
     }
 
-    const Recovery recovery = run.recover();
+    QString failure;
+    const Recovery recovery = run.recover(nullptr, &failure);
+    if (!failure.isEmpty()) {
+        err << failure << '\n';
+        return CheckIoError;
+    }
     QList<Diagnostic> diagnostics = recovery.nodes.diagnostics;
     diagnostics.append(recovery.launch.diagnostics);
     diagnostics.append(recovery.architecture.diagnostics);

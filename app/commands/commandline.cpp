@@ -65,6 +65,8 @@ QString usageText()
         "diagnostics.json, acd/<ClassName>.puml, ccd/<launch file stem>.puml,\n"
         "mermaid/<launch file stem>.md, graph/<root launch file stem>.dot (and .svg/.png next "
         "to each .puml with --render)\n"
+        "recover and check run the stages in the analysis worker (rosarch-stages), which skips\n"
+        "a file that crashes it or overruns its budget; --in-process runs them in the command.\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
 }
 
@@ -137,8 +139,16 @@ int recover(const QStringList &arguments)
     QElapsedTimer timer;
     timer.start();
     int decisions = 0;
-    const Recovery recovery = run.recover(&decisions);
+    QString failure;
+    const Recovery recovery = run.recover(&decisions, &failure);
     const qint64 elapsed = timer.elapsed();
+    if (!failure.isEmpty()) {
+        err << failure << '\n'
+            << QCoreApplication::translate("rosarch::CommandLine",
+                                           "Nothing was written; earlier artifacts are unchanged.")
+            << '\n';
+        return CommandLine::AnalysisErrors;
+    }
 
     QList<Diagnostic> diagnostics = recovery.nodes.diagnostics;
     diagnostics.append(recovery.launch.diagnostics);

@@ -1,5 +1,6 @@
 #include "workspacerun.h"
 #include "decisionstore.h"
+#include "stageprocess.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -13,6 +14,7 @@ void WorkspaceRun::addOptions(QCommandLineParser &parser) const
     parser.addOption(m_rootOption);
     parser.addOption(m_noDecisionsOption);
     parser.addOption(m_projectOption);
+    parser.addOption(m_inProcessOption);
 }
 
 bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command, QString *error)
@@ -30,6 +32,7 @@ bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command
                      .arg(m_workspace);
         return false;
     }
+    m_inProcess = parser.isSet(m_inProcessOption);
     m_launch = {};
     m_launch.rootFile = parser.value(m_rootOption);
     for (const QString &arg : parser.values(m_argOption)) {
@@ -58,9 +61,23 @@ bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command
     return true;
 }
 
-Recovery WorkspaceRun::recover(int *applied) const
+Recovery WorkspaceRun::recover(int *applied, QString *failure) const
 {
-    const Recovery recovered = recoverWorkspace(m_workspace, m_launch);
+    Recovery recovered;
+    if (!m_inProcess && !StageProcess::helperPath().isEmpty()) {
+        StageProcess::Result r =
+            StageProcess::recover(m_workspace, m_launch, StageControl(), StageProcess::Options());
+        if (!r.error.isEmpty()) {
+            if (failure)
+                *failure = r.error;
+            return {};
+        }
+        recovered = std::move(r.recovery);
+    } else {
+        recovered = recoverWorkspace(m_workspace, m_launch);
+        if (!m_inProcess)
+            recovered.nodes.diagnostics.append(StageProcess::missingWorker());
+    }
     // The model as accepted, exactly as the GUI exports it for the same decisions.
     const AcceptedDecisions accepted =
         m_decisions.isEmpty() ? AcceptedDecisions{}

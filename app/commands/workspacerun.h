@@ -22,8 +22,10 @@ public:
     /// workspace. False with a message (a usage error) when they are wrong.
     bool read(const QCommandLineParser &parser, const QString &command, QString *error);
 
-    /// Runs the stages and applies the decisions; `applied` counts them.
-    Recovery recover(int *applied = nullptr) const;
+    /// Runs the stages, in the analysis worker unless --in-process, and applies the decisions;
+    /// `applied` counts them. When the worker stops without a result (outside any one file's
+    /// analysis), `failure` says why and the recovery is empty.
+    Recovery recover(int *applied = nullptr, QString *failure = nullptr) const;
     const QString &workspace() const { return m_workspace; }
 
 private:
@@ -43,8 +45,14 @@ private:
         QStringLiteral("Apply the decisions in this file (a decisions.json the GUI saved) "
                        "instead of the workspace's own."),
         QStringLiteral("file")};
+    QCommandLineOption m_inProcessOption{
+        QStringLiteral("in-process"),
+        QStringLiteral("Run the stages in this process instead of the analysis worker "
+                       "(rosarch-stages): faster to debug, but a crash in analysis ends the "
+                       "command and the per-file time and memory budgets do not apply.")};
     QString m_workspace;
     LaunchOptions m_launch;
+    bool m_inProcess = false;
     QString m_decisions; ///< the decisions file ("" = none)
 };
 

@@ -267,6 +267,17 @@ QString StageProcess::helperPath(const QString &configured)
     return {};
 }
 
+Diagnostic StageProcess::missingWorker()
+{
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.code = QStringLiteral("worker-missing");
+    d.message = QStringLiteral("The analysis worker rosarch-stages was not found next to the "
+                               "application, so the stages ran without crash isolation and "
+                               "without per-file budgets.");
+    return d;
+}
+
 StageProcess::Result StageProcess::recover(const QString &root, const LaunchOptions &options,
                                            const StageControl &control, const Options &process)
 {

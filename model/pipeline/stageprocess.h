@@ -41,6 +41,9 @@ public:
     /// in the build tree. "" when there is none.
     static QString helperPath(const QString &configured = {});
 
+    /// The warning for a run that had to use the stages in-process, the worker being missing.
+    static Diagnostic missingWorker();
+
     /// Stages 1 to 3 on `root`.
     static Result recover(const QString &root, const LaunchOptions &options,
                           const StageControl &control, const Options &process);
