@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QtEndian>
 #include <QFileInfo>
 #include <QHash>
 #include <QProcess>
@@ -89,12 +90,18 @@ public:
         clock.start();
         auto readFrames = [&] {
             for (;;) {
-                in.startTransaction();
+                // A frame is its type, a 32-bit big-endian length and the payload: wait for
+                // all of it before reading (reading a large result as it trickles in through
+                // the pipe would copy it again for every chunk).
+                const QByteArray header = process.peek(5);
+                if (header.size() < 5)
+                    return;
+                const quint32 length = qFromBigEndian<quint32>(header.constData() + 1);
+                if (process.bytesAvailable() < 5 + qint64(length))
+                    return;
                 quint8 type = 0;
                 QByteArray payload;
                 in >> type >> payload;
-                if (!in.commitTransaction())
-                    return;
                 QDataStream frame(payload);
                 frame.setVersion(stagestream::kStreamVersion);
                 if (type == stagestream::Progress) {

@@ -1,5 +1,7 @@
 #include "syntaxtree.h"
 
+#include <atomic>
+#include <cstdint>
 #include <cstring>
 
 extern "C" {
@@ -8,6 +10,20 @@ const TSLanguage *tree_sitter_cpp();
 }
 
 namespace rosarch {
+
+namespace {
+std::atomic<std::int64_t> parseTimeoutMicros{20 * 1000 * 1000};
+}
+
+void SyntaxTree::setParseTimeout(std::chrono::microseconds budget)
+{
+    parseTimeoutMicros = budget.count();
+}
+
+std::chrono::microseconds SyntaxTree::parseTimeout()
+{
+    return std::chrono::microseconds(parseTimeoutMicros.load());
+}
 
 void SyntaxTree::TreeDeleter::operator()(TSTree *t) const
 {
@@ -25,8 +41,8 @@ SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
     TSParser *parser = ts_parser_new();
     ts_parser_set_language(parser,
                            grammar == Grammar::Python ? tree_sitter_python() : tree_sitter_cpp());
-    // A generous bound so that pathological input cannot stall a stage (microseconds).
-    ts_parser_set_timeout_micros(parser, 20 * 1000 * 1000);
+    // A generous bound so that pathological input cannot stall a stage.
+    ts_parser_set_timeout_micros(parser, uint64_t(parseTimeoutMicros.load()));
     tree.m_tree.reset(ts_parser_parse_string(parser, nullptr, tree.m_source.constData(),
                                              uint32_t(tree.m_source.size())));
     // A parse that timed out leaves the parser holding the suspended parse: drop it before
@@ -84,9 +100,15 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
     TSNode r = root();
     if (ts_node_is_null(r)) {
         Diagnostic d;
+        d.severity = Diagnostic::Severity::Error;
         d.code = QStringLiteral("parse-failed");
-        d.message = QStringLiteral("%1 could not be parsed (parser timeout).").arg(m_file);
+        d.message = QStringLiteral("%1 was not analysed: parsing it took longer than the time "
+                                   "budget of %2 s per file.")
+                        .arg(m_file)
+                        .arg(double(parseTimeoutMicros.load()) / 1e6);
         d.evidence.file = m_file;
+        d.evidence.line = d.evidence.endLine = 1;
+        d.evidence.column = d.evidence.endColumn = 1;
         out.append(d);
         return out;
     }

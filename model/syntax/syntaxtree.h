@@ -9,6 +9,7 @@
 
 #include <tree_sitter/api.h>
 
+#include <chrono>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -26,8 +27,13 @@ public:
         Cpp
     };
 
-    /// Parses `source`; never fails for text input (errors become ERROR nodes).
+    /// Parses `source`; never fails for text input (errors become ERROR nodes). A parse that
+    /// runs longer than the parse time budget gives no tree (syntaxErrors() says so).
     static SyntaxTree parse(Grammar grammar, QByteArray source, QString file);
+
+    /// The time budget of one parse, for every parse of the process (default 20 s).
+    static void setParseTimeout(std::chrono::microseconds budget);
+    static std::chrono::microseconds parseTimeout();
 
     SyntaxTree(SyntaxTree &&) noexcept = default;
     SyntaxTree &operator=(SyntaxTree &&) noexcept = default;

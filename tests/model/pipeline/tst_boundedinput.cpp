@@ -2,6 +2,7 @@
 // case is a workspace with one hostile file next to a healthy node, and the run must finish
 // with the healthy part recovered and a diagnostic naming what was skipped and why.
 #include "recovery.h"
+#include "syntaxtree.h"
 #include "testsupport.h"
 
 #include <QDir>
@@ -125,6 +126,52 @@ private Q_SLOTS:
         const Recovery r = recoverWorkspace(dir.path());
         QCOMPARE(classes(r), QStringList{QStringLiteral("Good")});
         QCOMPARE(r.nodes.nodes.first().executables, QStringList{QStringLiteral("good")});
+    }
+
+    void deepNestingInSourceFilesIsBounded()
+    {
+        // Before: 50,000 nested parentheses overflowed the stack in the C++ syntax-tree walk,
+        // and in the syntax-error walk of a Python file that also has a syntax error.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        cppPackage(dir.path(), "project(cpp)\nadd_executable(worker src/worker.cpp)\n");
+        writeFile(dir.path() + "/src/cpp/src/deep.cpp",
+                  "int f() { return " + QByteArray(50000, '(') + "1" + QByteArray(50000, ')') +
+                      "; }\n");
+        writeFile(dir.path() + "/src/pkg/pkg/deep.py",
+                  "x = " + QByteArray(50000, '(') + "1" + QByteArray(50000, ')') +
+                      "\ndef broken(:\n    pass\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QStringList found = classes(r);
+        found.sort();
+        QCOMPARE(found, (QStringList{QStringLiteral("Good"), QStringLiteral("Worker")}));
+        bool deepPy = false;
+        for (const QString &e : codes(r, QStringLiteral("syntax-error")))
+            deepPy = deepPy || e.startsWith(QLatin1String("src/pkg/pkg/deep.py"));
+        QVERIFY(deepPy);
+    }
+
+    void aParseOverItsTimeBudgetIsSaidAndSafe()
+    {
+        // Before: a parse that hit tree-sitter's timeout ended in `free(): invalid size` when
+        // the parser was deleted. Now the file is reported and the run goes on. (The budget is
+        // cut to a microsecond here so that a 1 MB file overruns it.)
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        QByteArray big = "from setuptools import setup\n";
+        while (big.size() < 1024 * 1024)
+            big += "x = [" + QByteArray("1, ").repeated(40) + "]\n";
+        writeFile(dir.path() + "/src/pkg/pkg/big.py", big);
+        const auto before = SyntaxTree::parseTimeout();
+        SyntaxTree::setParseTimeout(std::chrono::microseconds(1));
+        const Recovery r = recoverWorkspace(dir.path());
+        SyntaxTree::setParseTimeout(before);
+        const QStringList failed = codes(r, QStringLiteral("parse-failed"));
+        QVERIFY2(failed.contains(QStringLiteral(
+                     "src/pkg/pkg/big.py: src/pkg/pkg/big.py was not analysed: parsing it took "
+                     "longer than the time budget of 1e-06 s per file.")),
+                 qPrintable(failed.join(QLatin1Char('\n'))));
+        QCOMPARE(r.nodes.packages.size(), 1);
     }
 
     void yamlAliasesHaveABudget()
