@@ -2,6 +2,8 @@
 
 #include <QJsonArray>
 
+#include <cmath>
+
 namespace rosarch {
 
 namespace {
@@ -20,8 +22,13 @@ bool hasType(const QJsonValue &value, const QString &type)
         return value.isNull();
     if (type == QLatin1String("number"))
         return value.isDouble();
-    if (type == QLatin1String("integer"))
-        return value.isDouble() && value.toDouble() == double(qint64(value.toDouble()));
+    if (type == QLatin1String("integer")) {
+        // Only within the range a double holds exactly: converting 1e62 to an integer type
+        // is undefined behaviour (libFuzzer found a reply citing line 1.3e62).
+        const double d = value.toDouble();
+        return value.isDouble() && std::isfinite(d) && std::abs(d) <= 9007199254740992.0 &&
+               d == std::trunc(d);
+    }
     return true; // unknown keywords do not reject
 }
 

@@ -368,6 +368,13 @@ private Q_SLOTS:
                 R"({"groups":[{"name":"a","member_ids":["n1","n2"],"rationale":"","evidence":[{"file":"f","line":0,"end_line":1,"quote":"q"}]}]})"),
             &error));
         QCOMPARE(error, QStringLiteral("$.groups[0].evidence[0].line: below the minimum 1"));
+        // A line far beyond any integer is not an integer (it was undefined behaviour: the
+        // fuzzer's regression input is tests/fuzz/corpus/fuzz_llmreply/regression-*).
+        QVERIFY(!LlmSchemaValidator(schema).validate(
+            parse(
+                R"({"groups":[{"name":"a","member_ids":["n1","n2"],"rationale":"","evidence":[{"file":"f","line":1333333333333333333333333333333333333333333333333333333333333333,"end_line":1,"quote":"q"}]}]})"),
+            &error));
+        QCOMPARE(error, QStringLiteral("$.groups[0].evidence[0].line: expected integer"));
     }
 
     void promptTemplatesAreComplete_data()
