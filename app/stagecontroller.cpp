@@ -161,8 +161,7 @@ void StageController::onStageFailed(StageRunner::Job job, const QString &message
     const QString what = job == StageRunner::Job::Recovery ? tr("Stages 1–3") : tr("Stages 2–3");
     m_log->appendLog(
         tr("%1 stopped without a result; the previous result is kept. %2").arg(what, message));
-    Q_EMIT statusMessage(tr("%1 stopped: the analysis worker failed (see the log)").arg(what),
-                         0);
+    Q_EMIT statusMessage(tr("%1 stopped: the analysis worker failed (see the log)").arg(what), 0);
 }
 
 } // namespace rosarch

@@ -104,23 +104,22 @@ void StageRunner::start(const QString &root, Job job,
                         std::function<Outcome(const StageControl &)> work)
 {
     m_currentJob = job;
-    m_jobs.start<Outcome>(
-        [work = std::move(work)](const JobControl &control) {
-            return work(control.stageControl());
-        },
-        [this, job](Outcome out, bool canceled) {
-            const Recovery &result = out.recovery;
-            canceled = canceled || (job == Job::Recovery ? result.nodes.canceled : false) ||
-                       result.launch.canceled;
-            if (canceled)
-                Q_EMIT stageCanceled(job);
-            else if (!out.error.isEmpty())
-                Q_EMIT stageFailed(job, out.error);
-            else if (job == Job::Recovery)
-                Q_EMIT stageFinished(result);
-            else
-                Q_EMIT launchStageFinished(result.launch, result.architecture);
-        });
+    m_jobs.start<Outcome>([work = std::move(work)](
+                              const JobControl &control) { return work(control.stageControl()); },
+                          [this, job](Outcome out, bool canceled) {
+                              const Recovery &result = out.recovery;
+                              canceled = canceled ||
+                                         (job == Job::Recovery ? result.nodes.canceled : false) ||
+                                         result.launch.canceled;
+                              if (canceled)
+                                  Q_EMIT stageCanceled(job);
+                              else if (!out.error.isEmpty())
+                                  Q_EMIT stageFailed(job, out.error);
+                              else if (job == Job::Recovery)
+                                  Q_EMIT stageFinished(result);
+                              else
+                                  Q_EMIT launchStageFinished(result.launch, result.architecture);
+                          });
     Q_EMIT stageStarted(root, job);
 }
 

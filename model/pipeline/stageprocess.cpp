@@ -4,10 +4,10 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QtEndian>
 #include <QFileInfo>
 #include <QHash>
 #include <QProcess>
+#include <QtEndian>
 
 namespace rosarch {
 
@@ -54,7 +54,7 @@ struct Attempt
     bool crashed = false;
     int exitCode = 0;
     QByteArray stderrBytes;
-    QString timedOut; ///< the file that overran its time budget (the worker was killed)
+    QString timedOut;     ///< the file that overran its time budget (the worker was killed)
     QStringList inFlight; ///< files being analysed when the worker stopped
 };
 
@@ -217,9 +217,9 @@ StageProcess::Result supervise(Request request, const StageControl &control,
             return result;
         }
         if (!a.started) {
-            result.error = QStringLiteral("The analysis worker %1 could not be started: %2")
-                               .arg(QDir::toNativeSeparators(helper),
-                                    QString::fromLocal8Bit(a.stderrBytes));
+            result.error =
+                QStringLiteral("The analysis worker %1 could not be started: %2")
+                    .arg(QDir::toNativeSeparators(helper), QString::fromLocal8Bit(a.stderrBytes));
             return result;
         }
         if (a.hasResult && !a.crashed && a.exitCode == 0) {
@@ -296,8 +296,8 @@ StageProcess::Result StageProcess::recover(const QString &root, const LaunchOpti
 }
 
 StageProcess::Result StageProcess::launch(const QString &root, const AtomicNodeList &nodes,
-                                          const LaunchOptions &options,
-                                          const StageControl &control, const Options &process)
+                                          const LaunchOptions &options, const StageControl &control,
+                                          const Options &process)
 {
     Request r;
     r.job = Job::Launch;

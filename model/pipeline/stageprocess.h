@@ -23,10 +23,10 @@ class StageProcess
 public:
     struct Options
     {
-        QString helperPath;              ///< "" = helperPath(): next to the application, ...
-        int fileTimeoutMs = 120 * 1000;  ///< the time budget of one file's analysis
-        qint64 memoryBudgetMb = 4096;    ///< the worker's address space (0 = unlimited)
-        int maxAttempts = 6;             ///< worker starts for one run, restarts included
+        QString helperPath;             ///< "" = helperPath(): next to the application, ...
+        int fileTimeoutMs = 120 * 1000; ///< the time budget of one file's analysis
+        qint64 memoryBudgetMb = 4096;   ///< the worker's address space (0 = unlimited)
+        int maxAttempts = 6;            ///< worker starts for one run, restarts included
     };
 
     struct Result

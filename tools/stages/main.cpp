@@ -8,8 +8,8 @@
 // For the supervisor's tests only: ROSARCH_STAGES_TEST_CRASH_IN, _HANG_IN and _EXHAUST_IN name
 // a substring; the worker crashes, hangs or allocates without bound when it begins a file whose
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
-#include "recoverystream.h"
 #include "composearchitecture.h"
+#include "recoverystream.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -135,12 +135,12 @@ private Q_SLOTS:
         QTemporaryDir dir;
         healthyPackage(dir.path());
         cppPackage(dir.path(), "project(cpp)\nadd_executable(worker src/worker.cpp)\n");
-        writeFile(dir.path() + "/src/cpp/src/deep.cpp",
-                  "int f() { return " + QByteArray(50000, '(') + "1" + QByteArray(50000, ')') +
-                      "; }\n");
-        writeFile(dir.path() + "/src/pkg/pkg/deep.py",
-                  "x = " + QByteArray(50000, '(') + "1" + QByteArray(50000, ')') +
-                      "\ndef broken(:\n    pass\n");
+        writeFile(dir.path() + "/src/cpp/src/deep.cpp", "int f() { return " +
+                                                            QByteArray(50000, '(') + "1" +
+                                                            QByteArray(50000, ')') + "; }\n");
+        writeFile(dir.path() + "/src/pkg/pkg/deep.py", "x = " + QByteArray(50000, '(') + "1" +
+                                                           QByteArray(50000, ')') +
+                                                           "\ndef broken(:\n    pass\n");
         const Recovery r = recoverWorkspace(dir.path());
         QStringList found = classes(r);
         found.sort();

@@ -141,8 +141,8 @@ private Q_SLOTS:
         const Recovery full = recoverWorkspace(dir.path());
         LaunchOptions options;
         options.rootFile = QStringLiteral("src/pkg/launch/both.launch.py");
-        const StageProcess::Result r = StageProcess::launch(dir.path(), full.nodes, options,
-                                                            StageControl(), {});
+        const StageProcess::Result r =
+            StageProcess::launch(dir.path(), full.nodes, options, StageControl(), {});
         QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
         const LaunchDependencies expected = analyzeLaunchFiles(dir.path(), full.nodes, options);
         QVERIFY(r.recovery.launch == expected);
@@ -164,9 +164,10 @@ private Q_SLOTS:
         QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
         const QStringList why = skipped(r.recovery);
         QCOMPARE(why.size(), 1);
-        QVERIFY2(why.first().startsWith(QLatin1String("src/pkg/pkg/victim.py was not analysed: "
-                                                      "the analysis worker crashed (signal 11) on it")),
-                 qPrintable(why.first()));
+        QVERIFY2(
+            why.first().startsWith(QLatin1String("src/pkg/pkg/victim.py was not analysed: "
+                                                 "the analysis worker crashed (signal 11) on it")),
+            qPrintable(why.first()));
         QVERIFY(progress.contains(
             QStringLiteral("Repeating the analysis without src/pkg/pkg/victim.py…")));
         // The rest of the run went on: the launch file still starts both executables.
@@ -204,8 +205,9 @@ private Q_SLOTS:
         QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
         const QStringList why = skipped(r.recovery);
         QCOMPARE(why.size(), 1);
-        QVERIFY2(why.first().contains(QLatin1String("exhausted its memory budget of 1024 MB on it")),
-                 qPrintable(why.first()));
+        QVERIFY2(
+            why.first().contains(QLatin1String("exhausted its memory budget of 1024 MB on it")),
+            qPrintable(why.first()));
     }
 
     void cancelingKillsTheWorker()
