@@ -164,10 +164,10 @@ private Q_SLOTS:
         QCOMPARE(classes(r.recovery), QStringList{QStringLiteral("Good")});
         const QStringList why = skipped(r.recovery);
         QCOMPARE(why.size(), 1);
-        QVERIFY2(
-            why.first().startsWith(QLatin1String("src/pkg/pkg/victim.py was not analysed: "
-                                                 "the analysis worker crashed (signal 11) on it")),
-            qPrintable(why.first()));
+        // SIGSEGV; SIGABRT under AddressSanitizer, which reports the fault and aborts.
+        static const QRegularExpression crashed(QStringLiteral(
+            R"(^src/pkg/pkg/victim\.py was not analysed: the analysis worker crashed \(signal (11|6)\) on it)"));
+        QVERIFY2(crashed.match(why.first()).hasMatch(), qPrintable(why.first()));
         QVERIFY(progress.contains(
             QStringLiteral("Repeating the analysis without src/pkg/pkg/victim.py…")));
         // The rest of the run went on: the launch file still starts both executables.
