@@ -1,4 +1,5 @@
 #include "graphlayout.h"
+#include "helperprogram.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -195,22 +196,13 @@ QString GraphLayout::toDot(const LayoutGraph &graph)
 
 QString GraphLayout::helperPath(const LayoutOptions &options)
 {
-    if (!options.helperPath.isEmpty())
-        return options.helperPath;
-    const QString fromEnvironment = qEnvironmentVariable("ROSARCH_LAYOUT");
-    if (!fromEnvironment.isEmpty())
-        return fromEnvironment;
-    if (QCoreApplication::instance()) {
-        const QString beside =
-            QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("rosarch-layout"));
-        if (QFileInfo(beside).isExecutable())
-            return beside;
-    }
 #ifdef ROSARCH_LAYOUT_HELPER
-    if (QFileInfo(QStringLiteral(ROSARCH_LAYOUT_HELPER)).isExecutable())
-        return QStringLiteral(ROSARCH_LAYOUT_HELPER);
+    const QString buildTree = QStringLiteral(ROSARCH_LAYOUT_HELPER);
+#else
+    const QString buildTree;
 #endif
-    return {};
+    return findHelperProgram(options.helperPath, "ROSARCH_LAYOUT", QStringLiteral("rosarch-layout"),
+                             buildTree);
 }
 
 LayoutResult GraphLayout::layout(const LayoutGraph &graph, const LayoutOptions &options)

@@ -1,4 +1,5 @@
 #include "stageprocess.h"
+#include "helperprogram.h"
 #include "recoverystream.h"
 
 #include <QCoreApplication>
@@ -256,22 +257,13 @@ StageProcess::Result supervise(Request request, const StageControl &control,
 
 QString StageProcess::helperPath(const QString &configured)
 {
-    if (!configured.isEmpty())
-        return configured;
-    const QString fromEnvironment = qEnvironmentVariable("ROSARCH_STAGES");
-    if (!fromEnvironment.isEmpty())
-        return fromEnvironment;
-    if (QCoreApplication::instance()) {
-        const QString beside =
-            QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("rosarch-stages"));
-        if (QFileInfo(beside).isExecutable())
-            return beside;
-    }
 #ifdef ROSARCH_STAGES_HELPER
-    if (QFileInfo(QStringLiteral(ROSARCH_STAGES_HELPER)).isExecutable())
-        return QStringLiteral(ROSARCH_STAGES_HELPER);
+    const QString buildTree = QStringLiteral(ROSARCH_STAGES_HELPER);
+#else
+    const QString buildTree;
 #endif
-    return {};
+    return findHelperProgram(configured, "ROSARCH_STAGES", QStringLiteral("rosarch-stages"),
+                             buildTree);
 }
 
 Diagnostic StageProcess::missingWorker()

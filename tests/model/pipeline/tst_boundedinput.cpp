@@ -2,6 +2,7 @@
 // case is a workspace with one hostile file next to a healthy node, and the run must finish
 // with the healthy part recovered and a diagnostic naming what was skipped and why.
 #include "recovery.h"
+#include "recoverytest.h"
 #include "syntaxtree.h"
 #include "testsupport.h"
 
@@ -16,21 +17,12 @@ namespace {
 
 QStringList codes(const Recovery &r, const QString &code)
 {
-    QStringList out;
-    for (const QList<Diagnostic> *list :
-         {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
-        for (const Diagnostic &d : *list)
-            if (d.code == code)
-                out << d.evidence.file + QStringLiteral(": ") + d.message;
-    return out;
+    return test::diagnosticsWithCode(r, code);
 }
 
 QStringList classes(const Recovery &r)
 {
-    QStringList out;
-    for (const AtomicNode &n : r.nodes.nodes)
-        out << n.className;
-    return out;
+    return test::classNames(r);
 }
 
 QStringList instances(const Recovery &r)
@@ -44,17 +36,7 @@ QStringList instances(const Recovery &r)
 /// A Python package `pkg` with one healthy node class, Good, started as `good`.
 void healthyPackage(const QString &root)
 {
-    writeFile(root + "/src/pkg/package.xml",
-              "<package format=\"3\"><name>pkg</name><export><build_type>ament_python"
-              "</build_type></export></package>\n");
-    writeFile(root + "/src/pkg/pkg/__init__.py", "");
-    writeFile(root + "/src/pkg/pkg/good.py",
-              "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
-              "class Good(Node):\n    def __init__(self):\n        super().__init__('good')\n"
-              "        self.pub = self.create_publisher(String, 'out', 10)\n");
-    writeFile(root + "/src/pkg/setup.py",
-              "from setuptools import setup\nsetup(name='pkg', entry_points={'console_scripts': "
-              "['good = pkg.good:main']})\n");
+    test::healthyPythonPackage(root);
 }
 
 /// A C++ package `cpp` whose CMakeLists.txt is `cmake` and whose node is Worker.

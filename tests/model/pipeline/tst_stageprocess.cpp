@@ -6,6 +6,7 @@
 #include "composearchitecture.h"
 #include "recovery.h"
 #include "recoverystream.h"
+#include "recoverytest.h"
 #include "stageprocess.h"
 #include "testsupport.h"
 
@@ -24,14 +25,7 @@ namespace {
 /// A Python package with a healthy node `Good` and a second node in `victim.py`.
 void twoNodes(const QString &root)
 {
-    writeFile(root + "/src/pkg/package.xml",
-              "<package format=\"3\"><name>pkg</name><export><build_type>ament_python"
-              "</build_type></export></package>\n");
-    writeFile(root + "/src/pkg/pkg/__init__.py", "");
-    writeFile(root + "/src/pkg/pkg/good.py",
-              "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
-              "class Good(Node):\n    def __init__(self):\n        super().__init__('good')\n"
-              "        self.pub = self.create_publisher(String, 'out', 10)\n");
+    test::healthyPythonPackage(root, "victim = pkg.victim:main");
     writeFile(root + "/src/pkg/pkg/victim.py",
               "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
               "class Victim(Node):\n    def __init__(self):\n        super().__init__('victim')\n"
@@ -41,28 +35,16 @@ void twoNodes(const QString &root)
               "def generate_launch_description():\n    return LaunchDescription([\n"
               "        Node(package='pkg', executable='good', name='good'),\n"
               "        Node(package='pkg', executable='victim', name='victim')])\n");
-    writeFile(root + "/src/pkg/setup.py",
-              "from setuptools import setup\nsetup(name='pkg', entry_points={'console_scripts': "
-              "['good = pkg.good:main', 'victim = pkg.victim:main']})\n");
 }
 
 QStringList classes(const Recovery &r)
 {
-    QStringList out;
-    for (const AtomicNode &n : r.nodes.nodes)
-        out << n.className;
-    return out;
+    return test::classNames(r);
 }
 
 QStringList skipped(const Recovery &r)
 {
-    QStringList out;
-    for (const QList<Diagnostic> *list :
-         {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
-        for (const Diagnostic &d : *list)
-            if (d.code == QLatin1String("file-skipped"))
-                out << d.message;
-    return out;
+    return test::diagnosticsWithCode(r, QStringLiteral("file-skipped"));
 }
 
 /// Sets a worker test switch for the scope of one test.
@@ -166,7 +148,7 @@ private Q_SLOTS:
         QCOMPARE(why.size(), 1);
         // SIGSEGV; SIGABRT under AddressSanitizer, which reports the fault and aborts.
         static const QRegularExpression crashed(QStringLiteral(
-            R"(^src/pkg/pkg/victim\.py was not analysed: the analysis worker crashed \(signal (11|6)\) on it)"));
+            R"(^src/pkg/pkg/victim\.py: src/pkg/pkg/victim\.py was not analysed: the analysis worker crashed \(signal (11|6)\) on it)"));
         QVERIFY2(crashed.match(why.first()).hasMatch(), qPrintable(why.first()));
         QVERIFY(progress.contains(
             QStringLiteral("Repeating the analysis without src/pkg/pkg/victim.py…")));
