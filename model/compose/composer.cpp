@@ -96,7 +96,6 @@ void wire(Composite *c)
         }
     }
     QSet<QString> aliases;
-    QHash<QString, QString> boundaryIds; // kind + name -> id
     QHash<QString, int> counters;
     for (const auto &[family, name] : order) {
         const QList<Endpoint> &eps = groups.value(keyOf(family, name));
@@ -133,16 +132,13 @@ void wire(Composite *c)
             }
             continue;
         }
+        // Delegation is one to one (blueprint §1): each promoted inner port gets its own
+        // boundary port, even when two share a topic; the name travels with each of them.
         for (const Endpoint &e : eps) {
-            const QString bkey = portKindName(e.port->kind) + QLatin1Char(' ') + name;
-            QString id = boundaryIds.value(bkey);
-            if (id.isEmpty()) {
-                const QString prefix = portIdPrefix(e.port->kind);
-                id = prefix + QString::number(++counters[prefix]);
-                boundaryIds.insert(bkey, id);
-                c->boundary.append({id, e.port->kind, name, e.port->type});
-            }
-            const bool in = c->boundaryPort(id)->isInput();
+            const QString prefix = portIdPrefix(e.port->kind);
+            const QString id = prefix + QString::number(++counters[prefix]);
+            c->boundary.append({id, e.port->kind, name, e.port->type});
+            const bool in = c->boundary.constLast().isInput();
             c->connections.append(
                 {in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut, e.part->id,
                  e.port->id, id});

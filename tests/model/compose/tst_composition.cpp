@@ -295,14 +295,17 @@ private Q_SLOTS:
                  (QStringList{QStringLiteral("server planner.pa1"),
                               QStringLiteral("server backup_planner.pa1"),
                               QStringLiteral("client commander.ra1")}));
-        // Three publishers of /robot/cmd_vel and no subscriber: one boundary port, three
-        // delegations.
-        const BoundaryPort *cmd = nullptr;
+        // Three publishers of /robot/cmd_vel and no subscriber: delegation is one to one
+        // (blueprint §1), so three boundary ports, each with one delegation and its own type.
+        QStringList cmd;
         for (const BoundaryPort &b : m_system->boundary)
-            if (b.name == QLatin1String("/robot/cmd_vel"))
-                cmd = &b;
-        QVERIFY(cmd);
-        QCOMPARE(connectionsOf(*m_system, cmd->id).size(), 3);
+            if (b.name == QLatin1String("/robot/cmd_vel")) {
+                QCOMPARE(connectionsOf(*m_system, b.id).size(), 1);
+                cmd << b.id + QLatin1Char(' ') + b.type;
+            }
+        QCOMPARE(cmd, (QStringList{QStringLiteral("p2 geometry_msgs/msg/Twist"),
+                                   QStringLiteral("p3 geometry_msgs/msg/Twist"),
+                                   QStringLiteral("p4 geometry_msgs/msg/TwistStamped")}));
     }
 
     void inactivePartsAreKeptButNotWired()
