@@ -238,6 +238,16 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
         byName.insert(RosNames::fullyQualified(n.nameSpace, n.nodeName), &n);
         byName.insert(n.nodeName, &n);
     }
+    // Component containers are deployment, not architecture (blueprint §1): the process that
+    // hosts composable nodes is not a part; its components are, each recording its container.
+    QSet<QString> containers;
+    for (const NodeInstance &n : launch.nodes) {
+        if (n.execName.startsWith(QLatin1String("component_container")))
+            containers.insert(n.id);
+        if (!n.container.isEmpty())
+            if (const NodeInstance *host = instances.value(n.container, byName.value(n.container)))
+                containers.insert(host->id);
+    }
 
     QHash<QString, Composite> built;
     const int total = int(launch.instances.size());
@@ -262,7 +272,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
         };
         QList<Entry> entries;
         for (const QString &id : lf.nodes)
-            if (const NodeInstance *n = instances.value(id))
+            if (const NodeInstance *n = instances.value(id); n && !containers.contains(id))
                 entries.append({true, id, n->evidence});
         for (const QString &id : lf.includedLaunchFiles)
             if (const LaunchFileInstance *child = launch.instance(id))

@@ -147,10 +147,10 @@ private Q_SLOTS:
         const Architecture g = SubsystemGrouping::apply(m_arch, m_groups);
         QCOMPARE(grouped(g), (QStringList{QStringLiteral("lf1/part3=planning"),
                                           QStringLiteral("lf1/part4=planning"),
+                                          QStringLiteral("lf2/part2=perception"),
                                           QStringLiteral("lf2/part3=perception"),
-                                          QStringLiteral("lf2/part4=perception"),
-                                          QStringLiteral("lf3/part3=perception"),
-                                          QStringLiteral("lf3/part4=detection")}));
+                                          QStringLiteral("lf3/part2=perception"),
+                                          QStringLiteral("lf3/part3=detection")}));
         QCOMPARE(membersOf(g, QStringLiteral("perception")),
                  (QStringList{QStringLiteral("n3"), QStringLiteral("n4"), QStringLiteral("n7")}));
         QCOMPARE(membersOf(g, QStringLiteral("wrong_root")), QStringList());
@@ -200,10 +200,10 @@ private Q_SLOTS:
         QVERIFY(
             vision.contains(QStringLiteral("    component \"perception\" as sub_perception "
                                            "<<Subsystem>> {\n"
-                                           "      component \"rectifier:\\nRectifier\" as part3 "
+                                           "      component \"rectifier:\\nRectifier\" as part2 "
                                            "<<RosNodePart>> {\n")));
         QCOMPARE(partsInBlock(vision, QStringLiteral("perception")),
-                 (QStringList{QStringLiteral("part3"), QStringLiteral("part4")}));
+                 (QStringList{QStringLiteral("part2"), QStringLiteral("part3")}));
         QCOMPARE(partsInBlock(vision, QStringLiteral("detection")), QStringList());
 
         // Read back: grouping adds structure but no element.
@@ -268,7 +268,7 @@ private Q_SLOTS:
         // The members, and the topic only they use; the camera's topic stays in the namespace.
         QCOMPARE(clusterOfNodes(g, key),
                  (QStringList{QStringLiteral("channel:q_front_rectified"),
-                              QStringLiteral("part:part3"), QStringLiteral("part:part4")}));
+                              QStringLiteral("part:part2"), QStringLiteral("part:part3")}));
         QCOMPARE(g.node(QStringLiteral("channel:q_front_camera_image"))->cluster,
                  DiagramBuilder::namespaceKey(QStringLiteral("/front")));
         // Parents before children, as the layout needs them.

@@ -267,6 +267,25 @@ private Q_SLOTS:
         QCOMPARE(m_rear->boundary.size(), 3);
     }
 
+    void containersAreNotParts()
+    {
+        // The component container is deployment (blueprint §1): its components are parts and
+        // record it; the container itself is not a part.
+        QStringList parts;
+        for (const RosNodePart &p : m_front->parts)
+            parts << p.name;
+        QCOMPARE(parts, (QStringList{QStringLiteral("front_camera"), QStringLiteral("rectifier"),
+                                     QStringLiteral("detector")}));
+        for (const QString &component : {QStringLiteral("rectifier"), QStringLiteral("detector")}) {
+            const NodeInstance *n =
+                m_recovery.launch.node(partNamed(*m_front, component)->instanceId);
+            QVERIFY(n);
+            const NodeInstance *host = m_recovery.launch.node(n->container);
+            QVERIFY(host);
+            QCOMPARE(host->nodeName, QStringLiteral("vision_container"));
+        }
+    }
+
     void wiresAcrossIncludes()
     {
         const RosNodePart *front = nullptr;
