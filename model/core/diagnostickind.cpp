@@ -164,6 +164,12 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
         kind("no-such-launch-file", "Included launch file not found",
              "An include names a file that is not in the workspace; its nodes are missing.",
              "warning"),
+        kind("executable-in-other-package", "Executable of another package",
+             "A launch file starts an executable under a package that does not build it, and "
+             "exactly one other package of the workspace does (it installs the executable "
+             "under the first package's name). The instance is typed by that package's class. "
+             "Check that this is the executable meant.",
+             "note"),
         kind("external-include", "Include from outside the workspace",
              "An include names a launch file of a package outside the workspace; it shows as an "
              "opaque part.",

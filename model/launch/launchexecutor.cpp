@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSet>
 
 namespace rosarch {
 
@@ -346,6 +347,37 @@ LaunchExecutor::resolveClasses(const QString &package, const QString &executable
     return out;
 }
 
+namespace {
+bool declaresExecutable(const RosPackage *package, const QString &name)
+{
+    if (!package)
+        return false;
+    for (const Executable &e : package->executables)
+        if (e.name == name)
+            return true;
+    return false;
+}
+} // namespace
+
+QList<const AtomicNode *> LaunchExecutor::resolveElsewhere(const QString &executable,
+                                                           QString *builtBy) const
+{
+    // A package may install an executable under another package's name
+    // (`install(TARGETS x DESTINATION lib/other)`): the one package of the workspace that
+    // builds it, when there is exactly one.
+    QList<const AtomicNode *> out;
+    QSet<QString> packages;
+    for (const AtomicNode &n : m_nodes.nodes)
+        if (n.executables.contains(executable)) {
+            out.append(&n);
+            packages.insert(n.packageName);
+        }
+    if (packages.size() != 1)
+        return {};
+    *builtBy = *packages.cbegin();
+    return out;
+}
+
 void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                                  const QString &container)
 {
@@ -366,7 +398,22 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.active = scope.active && conditionHolds(a, scope, frame, &u);
     if (a.condition.isSet() && !n.active)
         n.active = false;
-    const QList<const AtomicNode *> classes = resolveClasses(n.package, n.execName, composable);
+    QList<const AtomicNode *> classes = resolveClasses(n.package, n.execName, composable);
+    QString builtBy;
+    if (classes.isEmpty() && !composable && a.kind == LaunchAction::Kind::Node &&
+        !n.execName.isEmpty() && !declaresExecutable(m_workspace.package(n.package), n.execName))
+        classes = resolveElsewhere(n.execName, &builtBy);
+    if (!builtBy.isEmpty()) {
+        Diagnostic diag;
+        diag.severity = Diagnostic::Severity::Info;
+        diag.code = QStringLiteral("executable-in-other-package");
+        diag.message = QStringLiteral("The executable %1 is started as part of package %2, which "
+                                      "does not build it; package %3 of the workspace does, so "
+                                      "the instance is typed by its class.")
+                           .arg(n.execName, n.package, builtBy);
+        diag.evidence = a.evidence;
+        m_out->diagnostics.append(diag);
+    }
     if (const AtomicNode *cls = classes.value(0)) {
         n.className = cls->className;
         n.classId = cls->id;

@@ -73,6 +73,9 @@ private:
     /// The classes an executable starts (several when its main spins more than one node).
     QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable,
                                              bool plugin) const;
+    /// The classes of `executable` when exactly one workspace package builds it (a launch file
+    /// may name it under another package, which it is installed into); `builtBy` names it.
+    QList<const AtomicNode *> resolveElsewhere(const QString &executable, QString *builtBy) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
 
     const Workspace &m_workspace;

@@ -339,6 +339,38 @@ private Q_SLOTS:
         QCOMPARE(d.nodes[1].evidence, d.nodes[0].evidence);
     }
 
+    void executableBuiltByAnotherPackage()
+    {
+        // Package `drivers` installs its executable `lidar` under `bringup`'s name; the launch
+        // file names it as bringup's. It is typed by the one class that builds it, with a note.
+        // Before, the instance stayed untyped.
+        Fixture fx;
+        AtomicNode lidar;
+        lidar.id = QStringLiteral("arc_7");
+        lidar.className = QStringLiteral("LidarDriver");
+        lidar.nodeName = QStringLiteral("lidar");
+        lidar.packageName = QStringLiteral("drivers");
+        lidar.executables << QStringLiteral("lidar");
+        fx.nodes.nodes << lidar;
+        fx.add(QStringLiteral("bringup/launch/l.launch.py"),
+               {node(QStringLiteral("bringup"), QStringLiteral("lidar"), QString(), 3),
+                node(QStringLiteral("bringup"), QStringLiteral("missing"), QString(), 4)});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/l.launch.py"));
+        QCOMPARE(d.nodes.size(), 2);
+        QCOMPARE(d.nodes[0].classId, QStringLiteral("arc_7"));
+        QCOMPARE(d.nodes[0].className, QStringLiteral("LidarDriver"));
+        QCOMPARE(d.nodes[0].package, QStringLiteral("bringup"));
+        QCOMPARE(d.nodes[1].classId, QString()); // nobody builds it
+        QStringList notes;
+        for (const Diagnostic &diag : d.diagnostics)
+            if (diag.code == QLatin1String("executable-in-other-package"))
+                notes << diag.message;
+        QCOMPARE(notes, QStringList{QStringLiteral(
+                            "The executable lidar is started as part of package bringup, which "
+                            "does not build it; package drivers of the workspace does, so the "
+                            "instance is typed by its class.")});
+    }
+
     void pythonExpressions_data()
     {
         QTest::addColumn<QString>("expression");
