@@ -14,6 +14,9 @@ struct Evidence
     int endLine = 0;
     int endColumn = 0;
 
+    /// The start of `file` (line 1, column 1): for what concerns a file as a whole.
+    static Evidence startOf(const QString &file) { return {file, 1, 1, 1, 1}; }
+
     bool isValid() const { return !file.isEmpty() && line > 0; }
     /// True when the 1-based line lies within this range.
     bool containsLine(int l) const { return isValid() && l >= line && l <= endLine; }

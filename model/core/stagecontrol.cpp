@@ -25,11 +25,7 @@ bool FileWork::skip(QList<Diagnostic> *diagnostics) const
     d.severity = Diagnostic::Severity::Error;
     d.code = QStringLiteral("file-skipped");
     d.message = QStringLiteral("%1 was not analysed: %2").arg(m_file, it.value());
-    d.evidence.file = m_file;
-    d.evidence.line = 1;
-    d.evidence.column = 1;
-    d.evidence.endLine = 1;
-    d.evidence.endColumn = 1;
+    d.evidence = Evidence::startOf(m_file);
     diagnostics->append(d);
     return true;
 }

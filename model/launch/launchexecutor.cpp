@@ -133,11 +133,7 @@ void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &
         if (f.path == file)
             inst.package = f.package;
     inst.format = formatName(d->format);
-    inst.evidence.file = file;
-    inst.evidence.line = 1;
-    inst.evidence.column = 1;
-    inst.evidence.endLine = 1;
-    inst.evidence.endColumn = 1;
+    inst.evidence = Evidence::startOf(file);
     m_out->instances.append(inst);
 
     Scope scope;

@@ -106,9 +106,7 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
                                    "budget of %2 s per file.")
                         .arg(m_file)
                         .arg(double(parseTimeoutMicros.load()) / 1e6);
-        d.evidence.file = m_file;
-        d.evidence.line = d.evidence.endLine = 1;
-        d.evidence.column = d.evidence.endColumn = 1;
+        d.evidence = Evidence::startOf(m_file);
         out.append(d);
         return out;
     }

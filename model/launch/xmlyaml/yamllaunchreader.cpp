@@ -188,10 +188,7 @@ public:
     {
         if (!m_budget.exhausted && !m_cut)
             return;
-        Evidence e;
-        e.file = m_file;
-        e.line = e.endLine = 1;
-        e.column = e.endColumn = 1;
+        const Evidence e = Evidence::startOf(m_file);
         report(QStringLiteral("launch-evaluation-limit"),
                QStringLiteral("The YAML in %1 expands (through aliases) to more than %2 nodes; "
                               "%3")
@@ -304,9 +301,7 @@ LaunchFileDescription YamlLaunchReader::read(const QByteArray &content, const QS
             diag.code = QStringLiteral("malformed-yaml");
             diag.message = QStringLiteral("Cannot read the YAML tree: %1.")
                                .arg(QString::fromStdString(ex.msg));
-            diag.evidence.file = file;
-            diag.evidence.line = diag.evidence.endLine = 1;
-            diag.evidence.column = diag.evidence.endColumn = 1;
+            diag.evidence = Evidence::startOf(file);
             d.diagnostics << diag;
         }
         FrontendActionMapper mapper(&d.diagnostics);
@@ -315,9 +310,7 @@ LaunchFileDescription YamlLaunchReader::read(const QByteArray &content, const QS
         Diagnostic diag;
         diag.code = QStringLiteral("not-a-launch-file");
         diag.message = QStringLiteral("The YAML file has no top-level 'launch' list.");
-        diag.evidence.file = file;
-        diag.evidence.line = diag.evidence.endLine = 1;
-        diag.evidence.column = diag.evidence.endColumn = 1;
+        diag.evidence = Evidence::startOf(file);
         d.diagnostics << diag;
     }
     if (!error.code.isEmpty())

@@ -20,9 +20,7 @@ Diagnostic analysisFailed(const QString &file, const std::exception &e)
     d.code = QStringLiteral("parse-failed");
     d.message = QStringLiteral("%1 could not be analysed (%2); nothing in it was analysed.")
                     .arg(file, QString::fromLocal8Bit(e.what()));
-    d.evidence.file = file;
-    d.evidence.line = d.evidence.endLine = 1;
-    d.evidence.column = d.evidence.endColumn = 1;
+    d.evidence = Evidence::startOf(file);
     return d;
 }
 
