@@ -297,6 +297,8 @@ int LaunchTreeLayout::itemAt(const LaunchDependencies &launch, const QString &fi
                          &span);
             break;
         case Kind::Namespace:
+        case Kind::Parameters: // not laid out: the model makes them
+        case Kind::Parameter:
         case Kind::None:
             break;
         }

@@ -21,7 +21,9 @@ public:
         LaunchFile,
         Namespace,
         Node,
-        Unresolved
+        Unresolved,
+        Parameters, ///< a node's "Parameters" row (made by the model on demand, not laid out)
+        Parameter,  ///< one parameter in effect under it (likewise)
     };
     struct Item
     {

@@ -41,8 +41,42 @@ int LaunchTreeModel::itemOf(const QModelIndex &index) const
 {
     if (!index.isValid() || index.model() != this)
         return -1;
-    const int item = int(index.internalId());
-    return item >= 0 && item < m_layout.items().size() ? item : -1;
+    const quintptr id = index.internalId();
+    return id < quintptr(m_layout.items().size()) ? int(id) : -1;
+}
+
+const NodeInstance *LaunchTreeModel::nodeOfItem(int item) const
+{
+    const QList<Item> &items = m_layout.items();
+    if (item < 0 || item >= items.size() || items[item].kind != ItemKind::Node)
+        return nullptr;
+    return &m_document->launchDependencies().nodes[items[item].ref];
+}
+
+int LaunchTreeModel::parameterRowOf(const QModelIndex &index, int *k) const
+{
+    if (!index.isValid() || index.model() != this)
+        return -1;
+    const quintptr id = index.internalId();
+    int item = -1;
+    *k = -1;
+    if (id & kParametersTag) {
+        item = int(id & ~kParametersTag);
+    } else if (id & kParameterTag) {
+        item = int((id & ~kParameterTag) >> kParameterBits);
+        *k = int(id & ((quintptr(1) << kParameterBits) - 1));
+    }
+    const NodeInstance *n = nodeOfItem(item);
+    if (!n || n->effectiveParameters.isEmpty() || *k >= n->effectiveParameters.size())
+        return -1;
+    return item;
+}
+
+const ParameterSetting *LaunchTreeModel::parameter(const QModelIndex &index) const
+{
+    int k = -1;
+    const int item = parameterRowOf(index, &k);
+    return item < 0 || k < 0 ? nullptr : &nodeOfItem(item)->effectiveParameters[k];
 }
 
 QModelIndex LaunchTreeModel::indexOfItem(int item, int column) const
@@ -62,8 +96,23 @@ QModelIndex LaunchTreeModel::index(int row, int column, const QModelIndex &paren
         return row < m_layout.roots().size()
                    ? createIndex(row, column, quintptr(m_layout.roots()[row]))
                    : QModelIndex();
+    if (parent.column() != 0)
+        return {};
+    int k = -1;
+    if (const int owner = parameterRowOf(parent, &k); owner >= 0) {
+        const qsizetype count = nodeOfItem(owner)->effectiveParameters.size();
+        if (k >= 0 || row >= count || count >= (qsizetype(1) << kParameterBits))
+            return {};
+        return createIndex(row, column,
+                           kParameterTag | (quintptr(owner) << kParameterBits) | quintptr(row));
+    }
     const int p = itemOf(parent);
-    if (p < 0 || parent.column() != 0 || row >= items[p].children.size())
+    if (p < 0)
+        return {};
+    if (row == items[p].children.size() && nodeOfItem(p) &&
+        !nodeOfItem(p)->effectiveParameters.isEmpty())
+        return createIndex(row, column, kParametersTag | quintptr(p));
+    if (row >= items[p].children.size())
         return {};
     return createIndex(row, column, quintptr(items[p].children[row]));
 }
@@ -71,6 +120,11 @@ QModelIndex LaunchTreeModel::index(int row, int column, const QModelIndex &paren
 QModelIndex LaunchTreeModel::parent(const QModelIndex &child) const
 {
     const QList<Item> &items = m_layout.items();
+    int k = -1;
+    if (const int owner = parameterRowOf(child, &k); owner >= 0)
+        return k < 0 ? indexOfItem(owner, 0)
+                     : createIndex(int(items[owner].children.size()), 0,
+                                   kParametersTag | quintptr(owner));
     const int item = itemOf(child);
     return item < 0 ? QModelIndex() : indexOfItem(items[item].parent, 0);
 }
@@ -80,8 +134,16 @@ int LaunchTreeModel::rowCount(const QModelIndex &parent) const
     const QList<Item> &items = m_layout.items();
     if (!parent.isValid())
         return int(m_layout.roots().size());
+    if (parent.column() != 0)
+        return 0;
+    int k = -1;
+    if (const int owner = parameterRowOf(parent, &k); owner >= 0)
+        return k < 0 ? int(nodeOfItem(owner)->effectiveParameters.size()) : 0;
     const int item = itemOf(parent);
-    return item < 0 || parent.column() != 0 ? 0 : int(items[item].children.size());
+    if (item < 0)
+        return 0;
+    const NodeInstance *n = nodeOfItem(item);
+    return int(items[item].children.size()) + (n && !n->effectiveParameters.isEmpty() ? 1 : 0);
 }
 
 int LaunchTreeModel::columnCount(const QModelIndex &) const
@@ -92,6 +154,9 @@ int LaunchTreeModel::columnCount(const QModelIndex &) const
 LaunchTreeModel::ItemKind LaunchTreeModel::kind(const QModelIndex &index) const
 {
     const QList<Item> &items = m_layout.items();
+    int k = -1;
+    if (parameterRowOf(index, &k) >= 0)
+        return k < 0 ? ItemKind::Parameters : ItemKind::Parameter;
     const int item = itemOf(index);
     return item < 0 ? ItemKind::None : items[item].kind;
 }
@@ -136,6 +201,9 @@ Evidence LaunchTreeModel::evidence(const QModelIndex &index) const
         return node(index)->evidence;
     case ItemKind::Unresolved:
         return unresolved(index)->evidence;
+    case ItemKind::Parameter:
+        return parameter(index)->evidence;
+    case ItemKind::Parameters:
     case ItemKind::Namespace:
     case ItemKind::None:
         break;
@@ -146,6 +214,9 @@ Evidence LaunchTreeModel::evidence(const QModelIndex &index) const
 bool LaunchTreeModel::isActive(const QModelIndex &index) const
 {
     const QList<Item> &items = m_layout.items();
+    int k = -1;
+    if (const int owner = parameterRowOf(index, &k); owner >= 0)
+        return items[owner].active;
     const int item = itemOf(index);
     return item < 0 || items[item].active;
 }
@@ -169,6 +240,9 @@ QModelIndex LaunchTreeModel::indexAt(const QString &file, int line, const QModel
 QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
 {
     const QList<Item> &items = m_layout.items();
+    int k = -1;
+    if (parameterRowOf(index, &k) >= 0)
+        return parameterData(index, role);
     const int item = itemOf(index);
     if (item < 0)
         return {};
@@ -195,6 +269,8 @@ QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
     case ItemKind::Unresolved:
         value = unresolvedData(it, index.column(), role);
         break;
+    case ItemKind::Parameters:
+    case ItemKind::Parameter:
     case ItemKind::None:
         break;
     }
@@ -207,11 +283,15 @@ QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
 Qt::ItemFlags LaunchTreeModel::flags(const QModelIndex &index) const
 {
     const QList<Item> &items = m_layout.items();
+    int k = -1;
+    if (parameterRowOf(index, &k) >= 0)
+        return Qt::ItemIsEnabled | Qt::ItemIsSelectable |
+               (k >= 0 ? Qt::ItemNeverHasChildren : Qt::NoItemFlags);
     const int item = itemOf(index);
     if (item < 0)
         return Qt::NoItemFlags;
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-    if (items[item].children.isEmpty() && items[item].kind != ItemKind::LaunchFile &&
+    if (rowCount(index.siblingAtColumn(0)) == 0 && items[item].kind != ItemKind::LaunchFile &&
         items[item].kind != ItemKind::Namespace)
         f |= Qt::ItemNeverHasChildren;
     return f;
@@ -367,6 +447,45 @@ bool LaunchTreeModel::isWorkspacePackage(const QString &package) const
     const QList<RosPackage> &packages = m_document->atomicNodes().packages;
     return std::any_of(packages.cbegin(), packages.cend(),
                        [&](const RosPackage &p) { return p.name == package; });
+}
+
+QVariant LaunchTreeModel::parameterData(const QModelIndex &index, int role) const
+{
+    int k = -1;
+    const int owner = parameterRowOf(index, &k);
+    const NodeInstance *n = nodeOfItem(owner);
+    const bool active = m_layout.items()[owner].active;
+    switch (role) {
+    case Qt::ForegroundRole:
+        return active ? QVariant()
+                      : QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+    case ActiveRole:
+        return active;
+    case KindRole:
+        return int(k < 0 ? ItemKind::Parameters : ItemKind::Parameter);
+    case InstanceIdRole:
+        return n->id;
+    default:
+        break;
+    }
+    if (k < 0) {
+        if (role == Qt::DisplayRole && index.column() == NameColumn)
+            return tr("Parameters");
+        if (role == Qt::DisplayRole && index.column() == DetailsColumn)
+            return tr("%n in effect", nullptr, int(n->effectiveParameters.size()));
+        if (role == Qt::ToolTipRole)
+            return tr("The parameters this instance runs with, and where each comes from: the "
+                      "launch file, a parameter file, or the default in code.");
+        return {};
+    }
+    const ParameterSetting &p = n->effectiveParameters[k];
+    if (role == Qt::DisplayRole && index.column() == NameColumn)
+        return p.name;
+    if (role == Qt::DisplayRole && index.column() == DetailsColumn)
+        return LaunchTreeText::parameterDetails(p);
+    if (role == Qt::ToolTipRole)
+        return LaunchTreeText::parameterToolTip(p);
+    return {};
 }
 
 QVariant LaunchTreeModel::unresolvedData(const Item &item, int column, int role) const

@@ -51,6 +51,8 @@ public:
     const LaunchFileInstance *launchFile(const QModelIndex &index) const;
     const NodeInstance *node(const QModelIndex &index) const;
     const Unresolved *unresolved(const QModelIndex &index) const;
+    /// A parameter row's parameter (null for other rows).
+    const ParameterSetting *parameter(const QModelIndex &index) const;
     /// Where the row's element comes from (invalid for namespace rows).
     Evidence evidence(const QModelIndex &index) const;
     /// Whether the row's condition and those of all its ancestors hold.
@@ -75,6 +77,17 @@ private:
     QVariant namespaceData(const Item &item, int column, int role) const;
     QVariant nodeData(const Item &item, int column, int role) const;
     QVariant unresolvedData(const Item &item, int column, int role) const;
+    // A node's parameters in effect are rows made on demand (a navigation stack has ten
+    // thousands): a "Parameters" row after the node's children, and one row per parameter.
+    // Their internal ids carry a tag bit above the item numbers.
+    static constexpr quintptr kParametersTag = quintptr(1) << 62;
+    static constexpr quintptr kParameterTag = quintptr(1) << 61;
+    static constexpr int kParameterBits = 24;
+    /// The node item of a "Parameters" row or a parameter row (-1 for other rows); `*k` is the
+    /// parameter's index (-1 for the "Parameters" row).
+    int parameterRowOf(const QModelIndex &index, int *k) const;
+    const NodeInstance *nodeOfItem(int item) const;
+    QVariant parameterData(const QModelIndex &index, int role) const;
 
     Document *m_document;
     LaunchTreeLayout m_layout;

@@ -176,8 +176,11 @@ QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *
             entries << (p.first.isEmpty()
                             ? tr("file %1").arg(html(p.second))
                             : QStringLiteral("%1 = %2").arg(html(p.first), html(p.second)));
-        line(tr("Parameters:") + htmlList(entries));
+        line(tr("Parameters given:") + htmlList(entries));
     }
+    if (!node.effectiveParameters.isEmpty())
+        line(tr("Parameters in effect: %n (listed under the node, each with its source)", nullptr,
+                int(node.effectiveParameters.size())));
     if (!node.unresolved.isEmpty())
         line(tr("Not resolved statically:") + htmlList(unresolvedEntries(node.unresolved)));
     if (node.evidence.isValid())
@@ -242,6 +245,35 @@ QString LaunchTreeText::unresolvedToolTip(const Unresolved &unresolved)
                tr("The analysis continued with: %1").arg(html(unresolved.guess));
     if (unresolved.evidence.isValid())
         tip += QStringLiteral("<br/>") + tr("At %1").arg(html(location(unresolved.evidence)));
+    return tip;
+}
+
+QString LaunchTreeText::parameterDetails(const ParameterSetting &parameter)
+{
+    QString source;
+    if (parameter.source == QLatin1String("default"))
+        source = tr("default in code");
+    else if (parameter.source == QLatin1String("file"))
+        source = QStringLiteral("%1:%2")
+                     .arg(parameter.evidence.file.section(QLatin1Char('/'), -1))
+                     .arg(parameter.evidence.line);
+    else
+        source = tr("launch file");
+    return QStringLiteral("%1 · %2").arg(parameter.value.simplified(), source);
+}
+
+QString LaunchTreeText::parameterToolTip(const ParameterSetting &parameter)
+{
+    QString tip =
+        QStringLiteral("<b>%1</b> = %2<br>").arg(html(parameter.name), html(parameter.value));
+    if (parameter.source == QLatin1String("default"))
+        tip += tr("No launch value or parameter file sets it: the default declared in code, "
+                  "at %1.")
+                   .arg(html(location(parameter.evidence)));
+    else if (parameter.source == QLatin1String("file"))
+        tip += tr("From the parameter file %1.").arg(html(location(parameter.evidence)));
+    else
+        tip += tr("Set by the launch file at %1.").arg(html(location(parameter.evidence)));
     return tip;
 }
 

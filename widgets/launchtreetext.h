@@ -36,6 +36,9 @@ public:
     static QString namespaceToolTip(const QString &nameSpace, const LaunchFileInstance &instance,
                                     int itemCount);
     static QString unresolvedToolTip(const Unresolved &unresolved);
+    /// "0.5 · nav2_params.yaml:184", "odom · default in code", "true · launch file:12"
+    static QString parameterDetails(const ParameterSetting &parameter);
+    static QString parameterToolTip(const ParameterSetting &parameter);
 
     /// "substitution", "condition", ... for people.
     static QString unresolvedKindLabel(const QString &kind);

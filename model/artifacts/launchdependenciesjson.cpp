@@ -81,6 +81,18 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["lifecycle"] = n.lifecycle;
         j["remaps"] = pairs(n.remaps, "from", "to");
         j["parameters"] = pairs(n.parameters, "name", "value");
+        Json effective = Json::array();
+        for (const ParameterSetting &p : n.effectiveParameters) {
+            Json e;
+            e["name"] = utf8(p.name);
+            e["value"] = utf8(p.value);
+            e["source"] = utf8(p.source);
+            if (!p.file.isEmpty())
+                e["file"] = utf8(p.file);
+            e["evidence"] = EvidenceJson::toJson(p.evidence);
+            effective.push_back(e);
+        }
+        j["effective_parameters"] = effective;
         j["condition"] = utf8(n.condition);
         j["active"] = n.active;
         j["unresolved"] = unresolvedJson(n.unresolved);

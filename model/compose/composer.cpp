@@ -33,10 +33,10 @@ Family familyOf(PortKind k)
 
 QString parameterValue(const NodeInstance &instance, const QString &name, bool *found)
 {
-    for (const auto &[key, value] : instance.parameters) {
-        if (!key.isEmpty() && key == name) {
+    for (const ParameterSetting &p : instance.effectiveParameters) {
+        if (p.name == name) {
             *found = true;
-            return value;
+            return p.value;
         }
     }
     *found = false;

@@ -170,6 +170,16 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "under the first package's name). The instance is typed by that package's class. "
              "Check that this is the executable meant.",
              "note"),
+        kind("no-such-parameter-file", "Parameter file not found",
+             "A node is given a parameter file that is not in the workspace (or whose path "
+             "cannot be decided statically). Its parameters fall back to the launch values and "
+             "the defaults in code, so names and guards that depend on them may differ at run "
+             "time.",
+             "note"),
+        kind("parameter-file-unused", "Parameter file without parameters",
+             "A parameter file given to a node has no ros__parameters section, so rclcpp reads "
+             "nothing from it. Check the file's structure: node name, then ros__parameters.",
+             "warning"),
         kind("external-include", "Include from outside the workspace",
              "An include names a launch file of a package outside the workspace; it shows as an "
              "opaque part.",

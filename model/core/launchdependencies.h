@@ -20,6 +20,19 @@ struct Unresolved
     bool operator==(const Unresolved &) const = default;
 };
 
+/// A parameter's final value for a node instance, and where it comes from (blueprint §1:
+/// launch values over parameter files, later sources over earlier ones, the code default last).
+struct ParameterSetting
+{
+    QString name;      ///< dotted, as rclcpp names it ("FollowPath.max_vel_x")
+    QString value;     ///< as text; lists as "[a, b]"
+    QString source;    ///< "launch" (a value in the launch file), "file" (a parameter file) or
+                       ///< "default" (the declared default in code)
+    QString file;      ///< the parameter file (workspace-relative) for source "file"
+    Evidence evidence; ///< the YAML line, the launch line, or the declaration in code
+    bool operator==(const ParameterSetting &) const = default;
+};
+
 /// A node instance started by a launch file (blueprint §2 list_atom_node_instances).
 struct NodeInstance
 {
@@ -34,9 +47,10 @@ struct NodeInstance
     QString nameSpace; ///< effective namespace ("/" at the root)
     QString container; ///< composable: the container instance id (or its name when not found)
     bool lifecycle = false;
-    QList<QPair<QString, QString>> remaps;     ///< evaluated from -> to (scope remaps first)
-    QList<QPair<QString, QString>> parameters; ///< name -> value; parameter files as ("", path)
-    QString condition;                         ///< as written ("" when none)
+    QList<QPair<QString, QString>> remaps;       ///< evaluated from -> to (scope remaps first)
+    QList<QPair<QString, QString>> parameters;   ///< name -> value; parameter files as ("", path)
+    QList<ParameterSetting> effectiveParameters; ///< the final values, one per name, sorted
+    QString condition;                           ///< as written ("" when none)
     bool active = true; ///< the condition's value (true when undecidable: best guess)
     QList<Unresolved> unresolved;
     Evidence evidence;

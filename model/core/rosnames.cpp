@@ -45,7 +45,13 @@ QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
 {
     const QString expanded = expand(name, nameSpace, nodeName);
     for (qsizetype i = 0; i < rules.size(); ++i) {
-        const auto &[from, to] = rules.at(i);
+        auto [from, to] = rules.at(i);
+        // "node:from" is a rule for one node only (rcl's node-name prefix)
+        if (const auto colon = from.indexOf(QLatin1Char(':')); colon > 0 && !from.contains("::")) {
+            if (from.left(colon).trimmed() != nodeName)
+                continue;
+            from = from.mid(colon + 1);
+        }
         if (!isNameRule(from) || to.trimmed().isEmpty())
             continue;
         if (expand(from, nameSpace, nodeName) == expanded) {

@@ -16,7 +16,7 @@ QString expand(const QString &name, const QString &nameSpace, const QString &nod
 /// Applies the first remapping rule whose `from` expands to the same name as `name`; returns
 /// the expanded result and the index of the rule used (-1 when none matched). Rules for the
 /// node's own name or namespace (`__node`, `__ns`) and rules for another node ("n:from") are
-/// skipped.
+/// skipped; a rule for this node ("<nodeName>:from") applies.
 QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
               const QString &nameSpace, const QString &nodeName, int *ruleUsed = nullptr);
 

@@ -67,6 +67,8 @@ QString Substitution::describe() const
         return QStringLiteral("$(dirname)");
     case Kind::ThisLaunchFile:
         return QStringLiteral("$(filename)");
+    case Kind::RewrittenYaml:
+        return QStringLiteral("RewrittenYaml(%1)").arg(joined(QStringLiteral(", ")));
     case Kind::Unknown:
         return text;
     }

@@ -24,6 +24,8 @@ struct Substitution
         Eval, ///< PythonExpression / $(eval ...): parts concatenated, then evaluated if simple
         ThisLaunchFileDir, ///< ThisLaunchFileDir() / $(dirname)
         ThisLaunchFile,    ///< ThisLaunchFile() / $(filename)
+        RewrittenYaml,     ///< nav2_common's RewrittenYaml: parts[0] = source file, parts[1] = root
+                           ///< key, then each rewrite as a name and a value; evaluates to the file
         Unknown, ///< anything else (Command, OpaqueFunction results, ...): `text` = the expression
     };
 

@@ -1,10 +1,14 @@
 #include "launchexecutor.h"
+#include "rosnames.h"
+#include "sourcereader.h"
 #include "substitutionevaluator.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QSet>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -259,7 +263,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             for (const LaunchParameter &p : a.parameters)
                 scope.parameters.append(
                     {p.isFile ? QString() : evaluate(p.name, scope, frame, nullptr, p.evidence),
-                     evaluate(p.value, scope, frame, unresolvedSink(), p.evidence)});
+                     evaluate(p.value, scope, frame, unresolvedSink(), p.evidence),
+                     QStringLiteral("launch"), QString(), p.evidence});
             break;
         case LaunchAction::Kind::Group: {
             Scope inner = scope;
@@ -431,10 +436,12 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     for (const LaunchRemap &r : a.remaps)
         n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence),
                          evaluate(r.to, scope, frame, &u, r.evidence)});
-    n.parameters = scope.parameters;
+    for (const ParameterSetting &p : scope.parameters)
+        n.parameters.append({p.name, p.value});
     for (const LaunchParameter &p : a.parameters)
         n.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, &u, p.evidence),
                              evaluate(p.value, scope, frame, &u, p.evidence)});
+    n.effectiveParameters = effectiveParameters(a, scope, frame, n, classes.value(0), &u);
     m_out->instances[frame.instance].nodes.append(n.id);
     addToNamespace(frame.instance, n.nameSpace, n.id);
     m_out->nodes.append(n);
@@ -446,10 +453,128 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         more.classId = classes[k]->id;
         more.lifecycle = a.lifecycle || classes[k]->lifecycle;
         more.nodeName = launchName.isEmpty() ? classes[k]->nodeName : launchName;
+        QList<Unresolved> reported; // the same launch line: already on `n`
+        more.effectiveParameters =
+            effectiveParameters(a, scope, frame, more, classes[k], &reported);
         m_out->instances[frame.instance].nodes.append(more.id);
         addToNamespace(frame.instance, more.nameSpace, more.id);
         m_out->nodes.append(more);
     }
+}
+
+const ParameterFile *LaunchExecutor::parameterFile(const QString &path, const Frame &frame,
+                                                   const Evidence &evidence)
+{
+    const IncludeTarget target = resolveInclude(path, frame.file);
+    if (target.file.isEmpty()) {
+        if (!m_missingParameterFiles.contains(path)) {
+            m_missingParameterFiles.insert(path);
+            Diagnostic diag;
+            diag.severity = Diagnostic::Severity::Info;
+            diag.code = QStringLiteral("no-such-parameter-file");
+            diag.message = path.trimmed().isEmpty()
+                               ? QStringLiteral("A parameter file is given whose path is empty "
+                                                "with the launch arguments' defaults.")
+                           : target.external
+                               ? QStringLiteral("The parameter file %1 belongs to package %2, "
+                                                "which is not in the workspace; its values are "
+                                                "not known.")
+                                     .arg(path, target.package)
+                               : QStringLiteral("The parameter file %1 is not in the workspace; "
+                                                "its values are not known.")
+                                     .arg(path);
+            diag.evidence = evidence;
+            m_out->diagnostics.append(diag);
+        }
+        return nullptr;
+    }
+    auto it = m_parameterFiles.find(target.file);
+    if (it == m_parameterFiles.end()) {
+        QByteArray content;
+        QList<Diagnostic> problems;
+        ParameterFile read;
+        if (SourceReader(m_workspace.root).read(target.file, &content, &problems))
+            read = ParameterFile::read(content, target.file);
+        read.file = target.file;
+        m_out->diagnostics.append(problems);
+        m_out->diagnostics.append(read.diagnostics);
+        it = m_parameterFiles.insert(target.file, read);
+    }
+    return &*it;
+}
+
+QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &a,
+                                                            const Scope &scope, const Frame &frame,
+                                                            const NodeInstance &n,
+                                                            const AtomicNode *cls,
+                                                            QList<Unresolved> *u)
+{
+    QList<ParameterSetting> out;
+    auto set = [&out](const ParameterSetting &s) {
+        for (ParameterSetting &o : out) {
+            if (o.name == s.name) {
+                o = s;
+                return;
+            }
+        }
+        out.append(s);
+    };
+    for (const ParameterSetting &s : scope.parameters)
+        if (!s.name.isEmpty())
+            set(s);
+    const QString fqn = RosNames::fullyQualified(n.nameSpace, n.nodeName);
+    for (const LaunchParameter &p : a.parameters) {
+        if (!p.isFile) {
+            set({evaluate(p.name, scope, frame, nullptr, p.evidence),
+                 evaluate(p.value, scope, frame, nullptr, p.evidence), QStringLiteral("launch"),
+                 QString(), p.evidence});
+            continue;
+        }
+        const bool rewritten = p.value.kind == Substitution::Kind::RewrittenYaml;
+        const Substitution &source = rewritten ? p.value.parts.value(0) : p.value;
+        QList<Unresolved> found;
+        const QString path = evaluate(source, scope, frame, &found, p.evidence);
+        const ParameterFile *file =
+            found.isEmpty() ? parameterFile(path, frame, p.evidence) : nullptr;
+        if (!file) {
+            u->append(found);
+            continue;
+        }
+        if (!rewritten) {
+            for (const ParameterSetting &s : file->forNode(fqn))
+                set(s);
+            continue;
+        }
+        QList<QPair<QString, QString>> rewrites;
+        for (qsizetype i = 2; i + 1 < p.value.parts.size(); i += 2)
+            rewrites.append({evaluate(p.value.parts.at(i), scope, frame, u, p.evidence),
+                             evaluate(p.value.parts.at(i + 1), scope, frame, u, p.evidence)});
+        ParameterFile copy = *file;
+        copy.rewrite(rewrites, evaluate(p.value.parts.value(1), scope, frame, u, p.evidence));
+        for (ParameterSetting s : copy.forNode(fqn)) {
+            if (s.source == QLatin1String("launch"))
+                s.evidence = p.evidence; // the rewrite decided the value
+            set(s);
+        }
+    }
+    if (cls) {
+        auto byDefault = [&](const QString &name, const QString &value, const Evidence &e) {
+            if (name.isEmpty())
+                return;
+            for (const ParameterSetting &o : out)
+                if (o.name == name)
+                    return;
+            out.append({name, value, QStringLiteral("default"), QString(), e});
+        };
+        for (const Port &port : cls->ports) {
+            if (port.nameOrigin == NameOrigin::Parameter)
+                byDefault(port.parameter, port.name, port.evidence);
+            byDefault(port.guardParameter, port.guardDefault, port.evidence);
+        }
+    }
+    std::sort(out.begin(), out.end(),
+              [](const ParameterSetting &x, const ParameterSetting &y) { return x.name < y.name; });
+    return out;
 }
 
 void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)

@@ -3,10 +3,12 @@
 #include "atomicnodelist.h"
 #include "launchaction.h"
 #include "launchdependencies.h"
+#include "parameterfile.h"
 #include "workspace.h"
 
 #include <QHash>
 #include <QMap>
+#include <QSet>
 #include <QString>
 #include <QStringList>
 
@@ -49,7 +51,7 @@ private:
         QMap<QString, QString> configurations;
         QString nameSpace; ///< "" = root
         QList<QPair<QString, QString>> remaps;
-        QList<QPair<QString, QString>> parameters;
+        QList<ParameterSetting> parameters; ///< SetParameter: source "launch"
         bool active = true;
     };
     struct Frame
@@ -77,12 +79,24 @@ private:
     /// may name it under another package, which it is installed into); `builtBy` names it.
     QList<const AtomicNode *> resolveElsewhere(const QString &executable, QString *builtBy) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
+    /// The parameters a node instance ends up with (blueprint §1): scope values, then the
+    /// node's own values and parameter files in order, a later value over an earlier one; the
+    /// declared defaults of the class's parameter-derived names and guards last.
+    QList<ParameterSetting> effectiveParameters(const LaunchAction &a, const Scope &scope,
+                                                const Frame &frame, const NodeInstance &n,
+                                                const AtomicNode *cls, QList<Unresolved> *u);
+    /// A parameter file given to a node (`--params-file`, RewrittenYaml), read once; null, with
+    /// a diagnostic, when it is not in the workspace.
+    const ParameterFile *parameterFile(const QString &path, const Frame &frame,
+                                       const Evidence &evidence);
 
     const Workspace &m_workspace;
     const AtomicNodeList &m_nodes;
     Loader m_load;
     LaunchDependencies *m_out;
-    QHash<QString, QString> m_packagePaths; ///< package -> folder
+    QHash<QString, QString> m_packagePaths;         ///< package -> folder
+    QHash<QString, ParameterFile> m_parameterFiles; ///< by workspace-relative path
+    QSet<QString> m_missingParameterFiles;          ///< reported once per path
 };
 
 /// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.

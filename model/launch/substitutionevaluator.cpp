@@ -336,6 +336,10 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
     case Substitution::Kind::ThisLaunchFile:
         r->value += m_launchFileDir + QStringLiteral("/$(filename)");
         return;
+    case Substitution::Kind::RewrittenYaml: // the rewrites apply when the file is read
+        if (!s.parts.isEmpty())
+            r->value += sub(s.parts.first());
+        return;
     case Substitution::Kind::Unknown:
         r->unresolved.append({QStringLiteral("substitution"), s.text, s.text, {}});
         r->value += s.text;

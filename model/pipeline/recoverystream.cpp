@@ -44,11 +44,15 @@ template <class F> void fields(Unresolved &v, F f)
 {
     f(v.kind, v.expression, v.guess, v.evidence);
 }
+template <class F> void fields(ParameterSetting &v, F f)
+{
+    f(v.name, v.value, v.source, v.file, v.evidence);
+}
 template <class F> void fields(NodeInstance &v, F f)
 {
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
-      v.nameSpace, v.container, v.lifecycle, v.remaps, v.parameters, v.condition, v.active,
-      v.unresolved, v.evidence);
+      v.nameSpace, v.container, v.lifecycle, v.remaps, v.parameters, v.effectiveParameters,
+      v.condition, v.active, v.unresolved, v.evidence);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {
@@ -122,6 +126,7 @@ ROSARCH_DECLARE_STREAM(AtomicNode)
 ROSARCH_DECLARE_STREAM(Executable)
 ROSARCH_DECLARE_STREAM(RosPackage)
 ROSARCH_DECLARE_STREAM(Unresolved)
+ROSARCH_DECLARE_STREAM(ParameterSetting)
 ROSARCH_DECLARE_STREAM(NodeInstance)
 ROSARCH_DECLARE_STREAM(LaunchFileInstance)
 ROSARCH_DECLARE_STREAM(LaunchArgument)
@@ -154,6 +159,7 @@ ROSARCH_DEFINE_STREAM(AtomicNode)
 ROSARCH_DEFINE_STREAM(Executable)
 ROSARCH_DEFINE_STREAM(RosPackage)
 ROSARCH_DEFINE_STREAM(Unresolved)
+ROSARCH_DEFINE_STREAM(ParameterSetting)
 ROSARCH_DEFINE_STREAM(NodeInstance)
 ROSARCH_DEFINE_STREAM(LaunchFileInstance)
 ROSARCH_DEFINE_STREAM(LaunchArgument)

@@ -127,6 +127,8 @@ QString substitution(const Substitution &s)
         return QStringLiteral("$(dirname)");
     case SK::ThisLaunchFile:
         return QStringLiteral("$(filename)");
+    case SK::RewrittenYaml:
+        return QStringLiteral("RewrittenYaml(%1)").arg(joined(QStringLiteral(", ")));
     case SK::Unknown:
         return QStringLiteral("?{%1}").arg(s.text);
     }

@@ -146,6 +146,20 @@ std::optional<Value> PythonLaunchApi::callSubstitutionApi(const QString &name, c
     if (name == QLatin1String("NotSubstitution") && a0)
         return Value::substitution(
             evaluation({Substitution::literal(QStringLiteral("not ")), a0->toSubstitution()}));
+    if (name == QLatin1String("RewrittenYaml")) { // nav2_common: a parameter file rewritten
+        const Value *source = args.get(0, {"source_file"});
+        if (!source)
+            return std::nullopt;
+        Substitution s = withKind(K::RewrittenYaml, {}, {source->toSubstitution()});
+        const Value *root = args.get(2, {"root_key"});
+        s.parts << (given(root) ? root->toSubstitution() : Substitution());
+        if (const Value *rewrites = args.get(1, {"param_rewrites"});
+            given(rewrites) && rewrites->type == Value::Type::Dict) {
+            for (const auto &[key, value] : rewrites->dict->entries)
+                s.parts << key.toSubstitution() << value.toParameterValue();
+        }
+        return Value::substitution(s);
+    }
     if (oneOf(name, {"ParameterFile", "ParameterValue"})) {
         const Value *v = args.get(0, {"param_file", "value"});
         return v ? *v : Value::unknown(textOfCall(call), m_ctx.tree.evidence(call));
@@ -267,12 +281,29 @@ void PythonLaunchApi::readNodeFields(LaunchAction &a, const CallArgs &args,
             if (flag.type != Value::Type::String ||
                 !(flag.text == QLatin1String("-r") || flag.text == QLatin1String("--remap")))
                 continue;
-            if (rule.type == Value::Type::String && rule.text.contains(QLatin1String(":=")) &&
-                !rule.text.startsWith(QLatin1String("__"))) {
-                a.remaps << LaunchRemap{
-                    Substitution::literal(rule.text.section(QLatin1String(":="), 0, 0)),
-                    Substitution::literal(rule.text.section(QLatin1String(":="), 1)), evidence};
-            }
+            if (rule.type != Value::Type::String || !rule.text.contains(QLatin1String(":=")))
+                continue;
+            const QString from = rule.text.section(QLatin1String(":="), 0, 0);
+            const Substitution to =
+                Substitution::literal(rule.text.section(QLatin1String(":="), 1));
+            if (from == u"__ns" || from == u"__node" || from == u"__name")
+                (from == u"__ns" ? a.nameSpace : a.name) = to; // rcl: the command line wins
+            else if (!from.startsWith(QLatin1String("__")))
+                a.remaps << LaunchRemap{Substitution::literal(from), to, evidence};
+        }
+    }
+    // `remappings=[('__node', 'x')]` renames the node unless `name=` does (launch_ros puts the
+    // name first, and rcl applies the first matching rule)
+    for (qsizetype i = 0; i < a.remaps.size();) {
+        const LaunchRemap &r = a.remaps.at(i);
+        const QString from = r.from.isLiteral() ? r.from.text : QString();
+        if (from == u"__ns" || from == u"__node" || from == u"__name") {
+            Substitution &target = from == u"__ns" ? a.nameSpace : a.name;
+            if (target.isEmpty())
+                target = r.to;
+            a.remaps.removeAt(i);
+        } else {
+            ++i;
         }
     }
 }

@@ -1,5 +1,6 @@
 #include "yamllaunchreader.h"
 #include "frontendactionmapper.h"
+#include "yamlsupport.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -13,24 +14,7 @@ namespace {
 // never exhaust the stack.
 constexpr int kMaxDepth = 200;
 
-/// YAML aliases share nodes, so a small file can stand for a huge tree ("billion laughs").
-/// Every walk over the tree spends from one budget of node visits per file; when it runs out,
-/// the rest is not read and a diagnostic says so.
-struct Budget
-{
-    static constexpr qint64 kVisits = 200000;
-    qint64 left = kVisits;
-    bool exhausted = false;
-    bool spend()
-    {
-        if (left <= 0) {
-            exhausted = true;
-            return false;
-        }
-        --left;
-        return true;
-    }
-};
+using Budget = YamlBudget;
 
 struct Position
 {
@@ -259,34 +243,8 @@ LaunchFileDescription YamlLaunchReader::read(const QByteArray &content, const QS
     d.file = file;
     d.format = LaunchFileDescription::Format::Yaml;
 
-    YAML::Node root;
     Diagnostic error;
-    try {
-        root = YAML::Load(content.toStdString());
-    } catch (const YAML::Exception &ex) {
-        error.severity = Diagnostic::Severity::Error;
-        error.code = QStringLiteral("malformed-yaml");
-        error.evidence.file = file;
-        error.evidence.line = error.evidence.endLine = ex.mark.is_null() ? 1 : ex.mark.line + 1;
-        error.evidence.column = error.evidence.endColumn =
-            ex.mark.is_null() ? 1 : ex.mark.column + 1;
-        error.message = QStringLiteral("Malformed YAML at line %1, column %2: %3.")
-                            .arg(error.evidence.line)
-                            .arg(error.evidence.column)
-                            .arg(QString::fromStdString(ex.msg));
-        // Keep what was read: the lines before the error, if they parse on their own.
-        qsizetype cut = 0;
-        for (int line = 1; line < error.evidence.line && cut >= 0; ++line) {
-            cut = content.indexOf('\n', cut);
-            if (cut >= 0)
-                ++cut;
-        }
-        try {
-            root = cut > 0 ? YAML::Load(content.left(cut).toStdString()) : YAML::Node();
-        } catch (const YAML::Exception &) {
-            root = YAML::Node();
-        }
-    }
+    const YAML::Node root = loadYaml(content, file, &error);
 
     const YAML::Node &r = root;
     const YAML::Node launch = r.IsMap() ? r["launch"] : YAML::Node();

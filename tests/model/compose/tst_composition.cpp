@@ -200,8 +200,16 @@ private Q_SLOTS:
         QVERIFY(!ports.at(1).active); // the declared default is false
         QCOMPARE(ports.at(1).name, QStringLiteral("/cam/rect/reset"));
 
-        instance.parameters = {{QStringLiteral("output_topic"), QStringLiteral("/custom")},
-                               {QStringLiteral("enable_reset"), QStringLiteral("true")}};
+        instance.effectiveParameters = {{QStringLiteral("enable_reset"),
+                                         QStringLiteral("true"),
+                                         QStringLiteral("launch"),
+                                         {},
+                                         {}},
+                                        {QStringLiteral("output_topic"),
+                                         QStringLiteral("/custom"),
+                                         QStringLiteral("launch"),
+                                         {},
+                                         {}}};
         NodeInstance container;
         container.remaps = {{QStringLiteral("/custom"), QStringLiteral("/final")}};
         ports = Composer::resolvePorts(node, instance, &container);

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "diagnostic.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <yaml-cpp/yaml.h>
+
+namespace rosarch {
+
+/// YAML aliases share nodes, so a small file can stand for a huge tree ("billion laughs").
+/// Every walk over a YAML tree spends from one budget of node visits per file; when it runs
+/// out, the rest is not read and a diagnostic says so.
+struct YamlBudget
+{
+    static constexpr qint64 kVisits = 200000;
+    qint64 left = kVisits;
+    bool exhausted = false;
+    bool spend()
+    {
+        if (left <= 0) {
+            exhausted = true;
+            return false;
+        }
+        --left;
+        return true;
+    }
+};
+
+/// Loads YAML text. On a syntax error, `*error` becomes a `malformed-yaml` diagnostic naming
+/// the line, and the result is what the lines before the error give on their own.
+YAML::Node loadYaml(const QByteArray &content, const QString &file, Diagnostic *error);
+
+} // namespace rosarch
