@@ -8,8 +8,19 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
                                  const StageControl &control)
 {
     Architecture arch = Composer::run(nodes, launch, control);
-    if (!arch.canceled)
-        arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
+    if (arch.canceled)
+        return arch;
+    arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
+    if (!launch.classifierInstances.isEmpty()) {
+        LaunchDependencies alone;
+        alone.instances = launch.classifierInstances;
+        alone.nodes = launch.classifierNodes;
+        Architecture classifiers = Composer::run(nodes, alone, control);
+        arch.canceled = classifiers.canceled;
+        for (Composite &c : classifiers.composites)
+            if (c.parentId.isEmpty())
+                arch.classifiers.append(std::move(c));
+    }
     return arch;
 }
 

@@ -210,6 +210,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         } else {
             pp.name = base;
         }
+        pp.name = RosNames::scopeRelative(pp.name); // a classifier's relative names stay relative
         if (!p.guard.isEmpty() && !p.guardParameter.isEmpty()) {
             bool set = false;
             QString v = parameterValue(instance, p.guardParameter, &set);
@@ -295,7 +296,8 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 part.kind = RosNodePart::Kind::Node;
                 part.typeName = !n.className.isEmpty() ? n.className : n.execName;
                 part.typeId = n.classId;
-                part.nameSpace = n.nameSpace.isEmpty() ? QStringLiteral("/") : n.nameSpace;
+                part.nameSpace = n.nameSpace.isEmpty() ? QStringLiteral("/")
+                                                       : RosNames::scopeRelative(n.nameSpace);
                 part.active = n.active && lf.active;
                 part.typed = cls != nullptr;
                 if (cls) {
@@ -312,7 +314,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 part.kind = RosNodePart::Kind::Launch;
                 part.typeName = launchStem(child.type);
                 part.typeId = child.id;
-                part.nameSpace = namespaceOfInclude(lf, child.id);
+                part.nameSpace = RosNames::scopeRelative(namespaceOfInclude(lf, child.id));
                 part.active = child.active && lf.active;
                 part.external = child.external;
                 part.typed = !child.external;

@@ -41,6 +41,26 @@ Architecture SubsystemGrouping::apply(const Architecture &architecture,
             if (part.kind == RosNodePart::Kind::Node && part.subsystem.isEmpty())
                 part.subsystem = groupOf.value(part.instanceId);
     }
+    // A launch file's classifier shows the grouping of the same node, started by the same
+    // launch line, in the system.
+    auto keyOf = [](const Composite &c, const RosNodePart &part) {
+        return QStringLiteral("%1|%2|%3:%4|%5")
+            .arg(c.file, part.evidence.file)
+            .arg(part.evidence.line)
+            .arg(part.evidence.column)
+            .arg(part.name);
+    };
+    QHash<QString, QString> grouped;
+    for (const Composite &c : std::as_const(out.composites))
+        for (const RosNodePart &part : c.parts)
+            if (!part.subsystem.isEmpty() && !grouped.contains(keyOf(c, part)))
+                grouped.insert(keyOf(c, part), part.subsystem);
+    if (grouped.isEmpty())
+        return out;
+    for (Composite &c : out.classifiers)
+        for (RosNodePart &part : c.parts)
+            if (part.kind == RosNodePart::Kind::Node && part.subsystem.isEmpty())
+                part.subsystem = grouped.value(keyOf(c, part));
     return out;
 }
 

@@ -44,7 +44,7 @@ QList<const Composite *> Architecture::representatives() const
 {
     QList<const Composite *> out;
     QStringList seen;
-    for (const Composite &c : composites) {
+    for (const Composite &c : classifiers.isEmpty() ? composites : classifiers) {
         const QString key = c.file.isEmpty() ? c.stem : c.file;
         if (seen.contains(key))
             continue;

@@ -125,11 +125,15 @@ struct Composite
 struct Architecture
 {
     QList<Composite> composites; ///< in launch-file instance order (roots first, depth first)
+    /// One per launch file: the file analysed on its own, its classifier (blueprint §1); names
+    /// relative to its scope stay relative. In launch-file order of first appearance.
+    QList<Composite> classifiers;
     QList<Diagnostic> diagnostics;
     bool canceled = false;
 
     const Composite *composite(const QString &instanceId) const;
-    /// The composite written as the launch file's CCD: its first instance (roots come first).
+    /// The composite written as each launch file's CCD: its classifier, or, when there are
+    /// none (a composition of given instances), its first instance (roots come first).
     QList<const Composite *> representatives() const;
     bool operator==(const Architecture &) const = default;
 };

@@ -98,6 +98,11 @@ struct LaunchDependencies
         instances; ///< roots first, each followed by its includes (depth first)
     QList<NodeInstance> nodes;
     QList<LaunchArgument> arguments; ///< declared by the analysed roots
+    /// Each launch file analysed on its own with its declared defaults, in the classifier scope
+    /// (RosNames::kClassifierScope), for its CCD: the runs' launch-file instances ("clf1", ...)
+    /// and node instances ("cn1", ...). Not part of the system; not in the JSON.
+    QList<LaunchFileInstance> classifierInstances;
+    QList<NodeInstance> classifierNodes;
     QList<Diagnostic> diagnostics;
     bool canceled = false;
 

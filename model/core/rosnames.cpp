@@ -16,6 +16,16 @@ QString trimmedNamespace(QString ns)
 }
 } // namespace
 
+QString scopeRelative(const QString &name)
+{
+    const QLatin1String scope(kClassifierScope);
+    if (!name.startsWith(scope))
+        return name;
+    if (name.size() == scope.size())
+        return {};
+    return name.at(scope.size()) == QLatin1Char('/') ? name.mid(scope.size() + 1) : name;
+}
+
 QString fullyQualified(const QString &nameSpace, const QString &nodeName)
 {
     return trimmedNamespace(nameSpace) + QLatin1Char('/') + nodeName;
@@ -43,6 +53,11 @@ bool isNameRule(const QString &from)
 QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
               const QString &nameSpace, const QString &nodeName, int *ruleUsed)
 {
+    // A file analysed on its own stands at the root: its names compare as they would there.
+    auto atRoot = [](const QString &expanded) {
+        const QString relative = scopeRelative(expanded);
+        return relative.startsWith(QLatin1Char('/')) ? relative : QLatin1Char('/') + relative;
+    };
     const QString expanded = expand(name, nameSpace, nodeName);
     for (qsizetype i = 0; i < rules.size(); ++i) {
         auto [from, to] = rules.at(i);
@@ -54,7 +69,7 @@ QString remap(const QString &name, const QList<QPair<QString, QString>> &rules,
         }
         if (!isNameRule(from) || to.trimmed().isEmpty())
             continue;
-        if (expand(from, nameSpace, nodeName) == expanded) {
+        if (atRoot(expand(from, nameSpace, nodeName)) == atRoot(expanded)) {
             if (ruleUsed)
                 *ruleUsed = int(i);
             return expand(to, nameSpace, nodeName);

@@ -6,6 +6,14 @@
 
 namespace rosarch::RosNames {
 
+/// The namespace a launch file is analysed in on its own, for its classifier CCD (blueprint §1):
+/// names under it are relative to the file's scope; `scopeRelative` takes it off again.
+inline constexpr char kClassifierScope[] = "/__rosarch_file_scope__";
+
+/// A name or namespace under kClassifierScope without it ("scan", "" for the scope itself);
+/// other names unchanged.
+QString scopeRelative(const QString &name);
+
 /// The fully qualified node name: "/ns/node" ("/node" at the root).
 QString fullyQualified(const QString &nameSpace, const QString &nodeName);
 

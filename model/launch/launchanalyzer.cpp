@@ -1,6 +1,7 @@
 #include "launchanalyzer.h"
 #include "launchexecutor.h"
 #include "pythonlaunchreader.h"
+#include "rosnames.h"
 #include "sourcereader.h"
 #include "workspacescanner.h"
 #include "xmllaunchreader.h"
@@ -76,6 +77,45 @@ private:
     std::map<QString, LaunchFileDescription> m_files;
 };
 
+/// Each launch file of the system analysed on its own, with its declared defaults, in the
+/// classifier scope: what its CCD shows (blueprint §1). What these runs find was found by the
+/// system's runs already, so their diagnostics are dropped; a budget bounds their size.
+void runClassifiers(const Workspace &workspace, const AtomicNodeList &nodes,
+                    const LaunchFileIndex &index, const StageControl &control,
+                    LaunchDependencies *out)
+{
+    constexpr qsizetype kBudget = 100000; // instances over all runs
+    LaunchDependencies alone;
+    LaunchExecutor executor(
+        workspace, nodes, [&](const QString &f) { return index.find(f); }, &alone);
+    executor.setIdPrefix(QStringLiteral("c"));
+    QSet<QString> done;
+    for (const LaunchFileInstance &i : std::as_const(out->instances)) {
+        if (i.file.isEmpty() || done.contains(i.file))
+            continue;
+        done.insert(i.file);
+        if (control.isCanceled())
+            return;
+        if (alone.instances.size() + alone.nodes.size() > kBudget) {
+            Diagnostic d;
+            d.code = QStringLiteral("launch-evaluation-limit");
+            d.message = QStringLiteral("Analysing each launch file on its own for its diagram "
+                                       "stopped after %1 instances; the diagrams of %2 and later "
+                                       "files show them as included by the system.")
+                            .arg(kBudget)
+                            .arg(i.file);
+            d.evidence = Evidence::startOf(i.file);
+            out->diagnostics.append(d);
+            break;
+        }
+        const FileWork work(control, i.file);
+        if (!work.skip(&alone.diagnostics))
+            executor.runRoot(i.file, {}, QLatin1String(RosNames::kClassifierScope));
+    }
+    out->classifierInstances = std::move(alone.instances);
+    out->classifierNodes = std::move(alone.nodes);
+}
+
 } // namespace
 
 LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
@@ -139,6 +179,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                     reached.insert(i.file);
             }
     }
+    runClassifiers(workspace, nodes, index, control, &out);
     // The same problem met through two include chains is one diagnostic.
     QList<Diagnostic> unique;
     for (const Diagnostic &d : std::as_const(out.diagnostics))

@@ -124,13 +124,14 @@ IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QStri
     return t;
 }
 
-void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &arguments)
+void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &arguments,
+                             const QString &nameSpace)
 {
     const LaunchFileDescription *d = m_load(file);
     if (!d)
         return;
     LaunchFileInstance inst;
-    inst.id = QStringLiteral("lf%1").arg(m_out->instances.size() + 1);
+    inst.id = (m_idPrefix + QStringLiteral("lf%1")).arg(m_out->instances.size() + 1);
     inst.type = QFileInfo(file).fileName();
     inst.file = file;
     for (const SourceFile &f : m_workspace.files)
@@ -142,6 +143,7 @@ void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &
 
     Scope scope;
     scope.configurations = arguments;
+    scope.nameSpace = nameSpace;
     Frame frame;
     frame.instance = int(m_out->instances.size()) - 1;
     frame.file = file;
@@ -383,7 +385,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
                                  const QString &container)
 {
     NodeInstance n;
-    n.id = QStringLiteral("n%1").arg(m_out->nodes.size() + 1);
+    n.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
     n.launchFileId = m_out->instances[frame.instance].id;
     n.evidence = a.evidence;
     n.lifecycle = a.lifecycle;
@@ -448,7 +450,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     // An executable whose main spins several nodes starts one instance of each.
     for (qsizetype k = 1; k < classes.size(); ++k) {
         NodeInstance more = n;
-        more.id = QStringLiteral("n%1").arg(m_out->nodes.size() + 1);
+        more.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
         more.className = classes[k]->className;
         more.classId = classes[k]->id;
         more.lifecycle = a.lifecycle || classes[k]->lifecycle;
@@ -522,7 +524,10 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
     for (const ParameterSetting &s : scope.parameters)
         if (!s.name.isEmpty())
             set(s);
-    const QString fqn = RosNames::fullyQualified(n.nameSpace, n.nodeName);
+    // a file analysed on its own stands at the root: its parameter keys match from there
+    QString fqn = RosNames::scopeRelative(RosNames::fullyQualified(n.nameSpace, n.nodeName));
+    if (!fqn.startsWith(QLatin1Char('/')))
+        fqn.prepend(QLatin1Char('/'));
     for (const LaunchParameter &p : a.parameters) {
         if (!p.isFile) {
             set({evaluate(p.name, scope, frame, nullptr, p.evidence),
@@ -589,7 +594,7 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         return;
     }
     LaunchFileInstance inst;
-    inst.id = QStringLiteral("lf%1").arg(m_out->instances.size() + 1);
+    inst.id = (m_idPrefix + QStringLiteral("lf%1")).arg(m_out->instances.size() + 1);
     inst.parentId = m_out->instances[frame.instance].id;
     inst.type = QFileInfo(target.file.isEmpty() ? path : target.file).fileName();
     inst.file = target.file;

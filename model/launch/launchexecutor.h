@@ -36,7 +36,12 @@ public:
                    LaunchDependencies *out);
 
     /// Runs `file` as a root with the given argument values; records declared arguments.
-    void runRoot(const QString &file, const QMap<QString, QString> &arguments);
+    /// `nameSpace` is the namespace the root runs in ("" for the system's root).
+    void runRoot(const QString &file, const QMap<QString, QString> &arguments,
+                 const QString &nameSpace = {});
+
+    /// Prefixes the ids of the instances made ("c" gives "clf1", "cn1").
+    void setIdPrefix(const QString &prefix) { m_idPrefix = prefix; }
 
     /// Evaluates an include path (as produced by SubstitutionEvaluator) to a launch file.
     IncludeTarget resolveInclude(const QString &path, const QString &fromFile) const;
@@ -97,6 +102,7 @@ private:
     QHash<QString, QString> m_packagePaths;         ///< package -> folder
     QHash<QString, ParameterFile> m_parameterFiles; ///< by workspace-relative path
     QSet<QString> m_missingParameterFiles;          ///< reported once per path
+    QString m_idPrefix;
 };
 
 /// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.

@@ -66,7 +66,8 @@ template <class F> void fields(LaunchArgument &v, F f)
 }
 template <class F> void fields(LaunchDependencies &v, F f)
 {
-    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.diagnostics, v.canceled);
+    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.classifierInstances, v.classifierNodes,
+      v.diagnostics, v.canceled);
 }
 template <class F> void fields(PartPort &v, F f)
 {
@@ -97,7 +98,7 @@ template <class F> void fields(Composite &v, F f)
 }
 template <class F> void fields(Architecture &v, F f)
 {
-    f(v.composites, v.diagnostics, v.canceled);
+    f(v.composites, v.classifiers, v.diagnostics, v.canceled);
 }
 template <class F> void fields(Recovery &v, F f)
 {

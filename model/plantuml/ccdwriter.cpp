@@ -198,6 +198,13 @@ QMap<QString, QString> CcdWriter::fileStems(const Architecture &arch)
         taken.insert(stem);
         stems.insert(c->instanceId, stem);
     }
+    // Every instance of a launch file points to its file's CCD.
+    QHash<QString, QString> byFile;
+    for (const Composite *c : reps)
+        byFile.insert(c->file.isEmpty() ? c->stem : c->file, stems.value(c->instanceId));
+    for (const Composite &c : arch.composites)
+        if (!stems.contains(c.instanceId))
+            stems.insert(c.instanceId, byFile.value(c.file.isEmpty() ? c.stem : c.file));
     return stems;
 }
 

@@ -385,13 +385,45 @@ private Q_SLOTS:
         }
     }
 
-    void representativeIsTheFirstInstance()
+    void theCcdIsTheFileOnItsOwn()
     {
+        // vision.launch.xml is included twice, under front and under rear: its CCD is the file
+        // analysed on its own (blueprint §1), the same whoever includes it, with its relative
+        // names relative; every instance's composite points to it.
         const QList<const Composite *> reps = m_recovery.architecture.representatives();
         QCOMPARE(reps.size(), 2);
-        QCOMPARE(reps.at(1), m_front);
+        const Composite *vision = reps.at(1);
+        QCOMPARE(vision->file, m_front->file);
+        QVERIFY(vision->instanceId.startsWith(QLatin1Char('c'))); // a classifier, not an instance
+        QVERIFY(vision->parentId.isEmpty());
+        QCOMPARE(vision->parts.size(), m_front->parts.size());
+        for (const RosNodePart &p : vision->parts)
+            QVERIFY2(p.nameSpace.isEmpty(), qPrintable(p.nameSpace));
+        QStringList channels;
+        for (const Channel &ch : vision->channels)
+            channels << ch.name;
+        QCOMPARE(channels,
+                 (QStringList{QStringLiteral("camera/image"), QStringLiteral("rectified")}));
+        const QString ccd = CcdWriter::write(*vision);
+        QVERIFY(!ccd.contains(QLatin1String("front/")));
+        QVERIFY(!ccd.contains(QLatin1String("rear")) &&
+                !ccd.contains(QLatin1String("<<namespace>>")));
+        QVERIFY(ccd.contains(QLatin1String("/detections"))); // absolute in the file: stays
+        // The instances keep their own resolution, and point to the one CCD.
+        QStringList frontChannels;
+        for (const Channel &ch : m_front->channels)
+            frontChannels << ch.name;
+        QVERIFY(frontChannels.contains(QStringLiteral("/front/camera/image")));
         const QMap<QString, QString> stems = CcdWriter::fileStems(m_recovery.architecture);
+        QCOMPARE(stems.value(vision->instanceId), QStringLiteral("vision"));
         QCOMPARE(stems.value(m_front->instanceId), QStringLiteral("vision"));
+        int visionInstances = 0;
+        for (const Composite &c : m_recovery.architecture.composites)
+            if (c.file == vision->file) {
+                ++visionInstances;
+                QCOMPARE(stems.value(c.instanceId), QStringLiteral("vision"));
+            }
+        QCOMPARE(visionInstances, 2);
     }
 
     void cancelStopsTheStage()

@@ -99,8 +99,8 @@ private Q_SLOTS:
             << QStringList{
                    QStringLiteral("FN part: detector"),
                    QStringLiteral("FN part_type: detector:Detector"),
-                   QStringLiteral("FN namespace: (front, detector)"),
-                   QStringLiteral("FN connection: subscribe front/rectified -> detector"),
+                   QStringLiteral("FN namespace: (/, detector)"),
+                   QStringLiteral("FN connection: subscribe rectified -> detector"),
                    QStringLiteral("FN connection: delegation detector -> "
                                   "boundary:out/vision_msgs/msg/Detection2DArray"),
                    QStringLiteral(
@@ -108,8 +108,8 @@ private Q_SLOTS:
         QTest::newRow("wrong namespace")
             << "vision_wrong_namespace"
             << "vision"
-            << QStringList{QStringLiteral("FN namespace: (front, front_camera)"),
-                           QStringLiteral("FP namespace: (front/cam, front_camera)")};
+            << QStringList{QStringLiteral("FN namespace: (/, front_camera)"),
+                           QStringLiteral("FP namespace: (cam, front_camera)")};
     }
 
     void brokenVariantsScoreBelowOne()
