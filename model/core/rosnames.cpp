@@ -94,8 +94,13 @@ bool truthy(const QString &value, bool *known)
 
 bool evaluateGuard(const QString &guard, const QString &parameterValue, bool *known)
 {
+    // a variable, or the parameter read in place: self.get_parameter('x').value,
+    // this->get_parameter("x").as_bool(), node->get_parameter("x").get_value<bool>()
     static const QRegularExpression single(QStringLiteral(
-        R"(^\s*(!|not\s+)?\s*(?:this->|self\.)?[A-Za-z_][A-Za-z0-9_]*\s*(?:==\s*(true|false|True|False))?\s*$)"));
+        R"(^\s*(!|not\s+)?\s*(?:(?:this->|self\.)?[A-Za-z_][A-Za-z0-9_]*|)"
+        R"((?:[A-Za-z_][A-Za-z0-9_]*(?:->|\.))*get_parameter\s*\(\s*['"][^'"]+['"]\s*\))"
+        R"((?:(?:->|\.)[A-Za-z_][A-Za-z0-9_<>]*(?:\(\s*\))?)*)\s*)"
+        R"((?:==\s*(true|false|True|False))?\s*$)"));
     const auto m = single.match(guard);
     if (!m.hasMatch()) {
         *known = false;

@@ -140,7 +140,7 @@ Port PythonPortReader::read(TSNode call, PortKind kind) const
         if (!ts::isNull(qos))
             port.qos = QString(tree.text(qos)).simplified();
     }
-    m_resolver.guard(call, &port.guard, &port.guardParameter);
+    m_resolver.guard(call, &port.guard, &port.guardParameter, &port.guardDefault);
     return port;
 }
 

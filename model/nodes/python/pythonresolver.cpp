@@ -492,7 +492,8 @@ QString PythonResolver::callbackName(TSNode expr) const
     return m_tree.text(expr);
 }
 
-void PythonResolver::guard(TSNode node, QString *guard, QString *guardParameter) const
+void PythonResolver::guard(TSNode node, QString *guard, QString *guardParameter,
+                           QString *guardDefault) const
 {
     QStringList conditions;
     QString parameter;
@@ -540,6 +541,11 @@ void PythonResolver::guard(TSNode node, QString *guard, QString *guardParameter)
     }
     *guard = conditions.join(QStringLiteral(" and "));
     *guardParameter = parameter;
+    guardDefault->clear();
+    bool declared = false;
+    if (!parameter.isEmpty())
+        if (const TSNode d = declaredDefault(node, parameter, &declared); declared)
+            *guardDefault = m_tree.text(d);
 }
 
 } // namespace rosarch

@@ -41,7 +41,8 @@ public:
     /// "listener_callback" for self.listener_callback, "lambda" for a lambda, ...
     QString callbackName(TSNode expr) const;
     /// The conditions of the enclosing ifs (same function), and the parameter they test.
-    void guard(TSNode node, QString *guard, QString *guardParameter) const;
+    /// `*guardDefault`: the declared default of the parameter the guard tests, when known.
+    void guard(TSNode node, QString *guard, QString *guardParameter, QString *guardDefault) const;
 
     /// True for a plain (non-f) string literal or a concatenation of them.
     static bool stringLiteral(const SyntaxTree &tree, TSNode node, QString *value);

@@ -137,6 +137,32 @@ private Q_SLOTS:
                                  QStringLiteral("n"), &used),
                  QStringLiteral("/robot/other"));
         QCOMPARE(used, -1);
+
+        // A rule for one node ("node:from") applies to that node only.
+        const QList<QPair<QString, QString>> nodeRules{
+            {QStringLiteral("other_node:cmd"), QStringLiteral("wrong")},
+            {QStringLiteral("n:cmd"), QStringLiteral("/mine")}};
+        QCOMPARE(RosNames::remap(QStringLiteral("cmd"), nodeRules, QStringLiteral("/robot"),
+                                 QStringLiteral("n"), &used),
+                 QStringLiteral("/mine"));
+        QCOMPARE(used, 1);
+        // The reverse of the first case: an absolute name in code, a relative rule.
+        const QList<QPair<QString, QString>> relative{
+            {QStringLiteral("cmd_vel"), QStringLiteral("safe/cmd_vel")}};
+        QCOMPARE(RosNames::remap(QStringLiteral("/robot/cmd_vel"), relative,
+                                 QStringLiteral("/robot"), QStringLiteral("n")),
+                 QStringLiteral("/robot/safe/cmd_vel"));
+        // A file analysed on its own stands at the root: an absolute rule matches its relative
+        // name, and the name stays relative when no rule applies.
+        const QString scope = QLatin1String(RosNames::kClassifierScope);
+        const QList<QPair<QString, QString>> absolute{
+            {QStringLiteral("/robo/cmd_vel"), QStringLiteral("/mux/cmd_vel")}};
+        QCOMPARE(
+            RosNames::remap(QStringLiteral("robo/cmd_vel"), absolute, scope, QStringLiteral("n")),
+            QStringLiteral("/mux/cmd_vel"));
+        QCOMPARE(RosNames::scopeRelative(RosNames::remap(QStringLiteral("robo/other"), absolute,
+                                                         scope, QStringLiteral("n"))),
+                 QStringLiteral("robo/other"));
     }
 
     void evaluatesGuards_data()
@@ -157,6 +183,14 @@ private Q_SLOTS:
                                 << "1" << true << true;
         QTest::newRow("compared") << "use_x == false"
                                   << "false" << true << true;
+        QTest::newRow("python read in place") << "self.get_parameter('use_x').value"
+                                              << "False" << true << false;
+        QTest::newRow("negated read in place") << "not self.get_parameter(\"use_x\").value"
+                                               << "false" << true << true;
+        QTest::newRow("cpp read in place") << "this->get_parameter(\"use_x\").as_bool()"
+                                           << "true" << true << true;
+        QTest::newRow("read in place, compound") << "self.get_parameter('a').value and ready"
+                                                 << "true" << false << true;
         QTest::newRow("compound") << "use_x && ready"
                                   << "true" << false << true;
         QTest::newRow("not a bool") << "use_x"

@@ -41,6 +41,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("workspace");
         QTest::newRow("compose_system")
             << "compose_system" << test::dataDir(QStringLiteral("compose_system/ws"));
+        // one launch file per ROS 2 launch-time rule (blueprint §1), expected CCDs hand-checked
+        QTest::newRow("ros_rules") << "ros_rules" << test::dataDir(QStringLiteral("ros_rules/ws"));
         QTest::newRow("example_ws") << "example_ws"
                                     << QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
                                            .filePath(QStringLiteral("resources/example_ws"));

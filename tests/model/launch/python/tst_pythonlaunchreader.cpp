@@ -41,6 +41,7 @@ class TestPythonLaunchReader : public QObject
 private Q_SLOTS:
     void detectsLaunchFilesByContent();
     void nodesParametersRemappings();
+    void rewrittenYamlAndNodeRenames();
     void actionsThroughVariablesAndLists();
     void legacyAndLifecycleNodes();
     void composableNodes();
@@ -106,6 +107,22 @@ void TestPythonLaunchReader::nodesParametersRemappings()
     QCOMPARE(talker.nameSpace.describe(), QStringLiteral("$(var ns)"));
     QVERIFY(!talker.lifecycle);
     QVERIFY(!talker.condition.isSet());
+}
+
+void TestPythonLaunchReader::rewrittenYamlAndNodeRenames()
+{
+    const LaunchFileDescription desc = readFixture("renamed_launch.py");
+    QVERIFY(desc.diagnostics.isEmpty());
+    QCOMPARE(AnalysisText::actions(desc.actions),
+             (QStringList{QStringLiteral("Node pkg=planner exe=plan name=global_planner ns=/nav "
+                                         "paramfile:RewrittenYaml(join[$(find-pkg-share "
+                                         "planner_bringup), config, p.yaml], $(var robot), "
+                                         "use_sim_time, $(var sim), rate, 5) @21"),
+                          QStringLiteral("Node pkg=planner exe=plan name=kept ns=/fleet "
+                                         "remap:map->/map @23")}));
+    const Substitution &file = desc.actions.at(0).parameters.at(0).value;
+    QCOMPARE(file.kind, Substitution::Kind::RewrittenYaml);
+    QCOMPARE(file.parts.size(), 6);
 }
 
 void TestPythonLaunchReader::actionsThroughVariablesAndLists()
