@@ -41,6 +41,11 @@ void FilteredTreePanel::applyFilter(const QString &text)
 {
     m_proxy->setFilterRegularExpression(QRegularExpression(
         QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
+    expandRows();
+}
+
+void FilteredTreePanel::expandRows()
+{
     m_tree->expandAll();
 }
 

@@ -35,6 +35,8 @@ Q_SIGNALS:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    /// Expands the rows a person sees without asking (after a reset or a filter): all of them.
+    virtual void expandRows();
 
     NodeFilterProxyModel *m_proxy;
     QLineEdit *m_filter;

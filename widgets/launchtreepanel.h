@@ -30,6 +30,10 @@ Q_SIGNALS:
     /// context menu "Go to Class").
     void classRequested(const QString &classId);
 
+protected:
+    /// Everything but the nodes' "Parameters" rows: a navigation stack has ten thousands.
+    void expandRows() override;
+
 private:
     void onModelReset();
     void updateActions();

@@ -112,11 +112,13 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
                 !stage(QStringLiteral("mermaid/%1.md").arg(stem),
                        MermaidWriter::write(*c).toUtf8()))
                 return false;
-            if (c->parentId.isEmpty() &&
-                !stage(QStringLiteral("graph/%1.dot").arg(stem),
-                       CommunicationGraph::dot(recovery.architecture, *c).toUtf8()))
-                return false;
         }
+        // The communication graph is the running system's: one per root, as launched.
+        for (const Composite &c : recovery.architecture.composites)
+            if (c.parentId.isEmpty() &&
+                !stage(QStringLiteral("graph/%1.dot").arg(ccdStems.value(c.instanceId, c.stem)),
+                       CommunicationGraph::dot(recovery.architecture, c).toUtf8()))
+                return false;
     }
 
     // Every file is written: diagrams of an earlier run (and their pictures) would otherwise

@@ -87,9 +87,10 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
             e["name"] = utf8(p.name);
             e["value"] = utf8(p.value);
             e["source"] = utf8(p.source);
-            if (!p.file.isEmpty())
-                e["file"] = utf8(p.file);
-            e["evidence"] = EvidenceJson::toJson(p.evidence);
+            // where it is set: the YAML line, the launch line, or the declaration in code (a
+            // navigation stack has a hundred thousand of these: a line, not a range)
+            e["file"] = utf8(p.evidence.file);
+            e["line"] = p.evidence.line;
             effective.push_back(e);
         }
         j["effective_parameters"] = effective;

@@ -541,10 +541,8 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
         const QString path = evaluate(source, scope, frame, &found, p.evidence);
         const ParameterFile *file =
             found.isEmpty() ? parameterFile(path, frame, p.evidence) : nullptr;
-        if (!file) {
-            u->append(found);
-            continue;
-        }
+        if (!file)
+            continue; // an unresolved path is reported with the parameters as given
         if (!rewritten) {
             for (const ParameterSetting &s : file->forNode(fqn))
                 set(s);

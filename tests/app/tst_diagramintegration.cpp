@@ -19,6 +19,7 @@
 
 #include <QGraphicsItem>
 #include <QImage>
+#include <QLabel>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -101,6 +102,11 @@ private Q_SLOTS:
         QVERIFY(waitForLayout());
         QCOMPARE(panel()->currentComposite(), composite);
         QCOMPARE(panel()->breadcrumbIds(), (QStringList{QStringLiteral("lf1"), composite}));
+        // The breadcrumbs say whose view it is: vision as system includes it.
+        const auto *note = panel()->findChild<QLabel *>(QStringLiteral("crumbNote"));
+        QVERIFY(note);
+        QCOMPARE(note->text(), QStringLiteral("as included by system"));
+        QVERIFY(note->toolTip().contains(QLatin1String("on its own")));
         const Composite *c = doc()->architecture().composite(composite);
         QString partId;
         for (const RosNodePart &p : c->parts)

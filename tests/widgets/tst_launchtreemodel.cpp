@@ -110,7 +110,16 @@ LaunchDependencies sample()
                             QStringLiteral("/"), at(kRobot, 10, 12));
     map.package = QStringLiteral("nav2_map_server");
     map.execName = QStringLiteral("map_server");
-    map.parameters = {{QStringLiteral("yaml_filename"), QStringLiteral("map.yaml")}};
+    map.parameters = {{QStringLiteral("yaml_filename"), QStringLiteral("map.yaml")},
+                      {QString(), QStringLiteral("$(find-pkg-share robot)/config/map.yaml")}};
+    map.effectiveParameters = {{QStringLiteral("frame_id"), QStringLiteral("map"),
+                                QStringLiteral("file"), QStringLiteral("robot/config/map.yaml"),
+                                at(QStringLiteral("robot/config/map.yaml"), 4, 4)},
+                               {QStringLiteral("topic"), QStringLiteral("map"),
+                                QStringLiteral("default"), QString(),
+                                at(QStringLiteral("nav/src/map_server.cpp"), 30, 30)},
+                               {QStringLiteral("yaml_filename"), QStringLiteral("map.yaml"),
+                                QStringLiteral("launch"), QString(), at(kRobot, 10, 12)}};
     NodeInstance container =
         node(QStringLiteral("n2"), robot.id, QStringLiteral("camera_container"),
              QStringLiteral("/robot/sensors"), at(kRobot, 52, 53));
@@ -242,6 +251,43 @@ private Q_SLOTS:
         QCOMPARE(model.launchFile(model.nodeIndex(QStringLiteral("n6")))->id,
                  QStringLiteral("lf3"));
         QCOMPARE(model.rowCount(model.launchFileIndex(QStringLiteral("lf4"))), 0);
+    }
+
+    void parametersInEffectAreRowsUnderTheNode()
+    {
+        Document document;
+        document.setLaunchDependencies(sample());
+        LaunchTreeModel model(&document);
+        const QModelIndex map = model.nodeIndex(QStringLiteral("n1"));
+        QCOMPARE(childNames(&model, map), QStringList{QStringLiteral("Parameters")});
+        const QModelIndex group = model.index(0, 0, map);
+        QCOMPARE(model.kind(group), LaunchTreeModel::ItemKind::Parameters);
+        QCOMPARE(group.parent(), map);
+        QCOMPARE(model.index(0, LaunchTreeModel::DetailsColumn, map).data().toString(),
+                 QStringLiteral("3 in effect"));
+        QCOMPARE(childNames(&model, group),
+                 (QStringList{QStringLiteral("frame_id"), QStringLiteral("topic"),
+                              QStringLiteral("yaml_filename")}));
+        const QModelIndex frame = model.index(0, 0, group);
+        QCOMPARE(model.kind(frame), LaunchTreeModel::ItemKind::Parameter);
+        QCOMPARE(frame.parent(), group);
+        QCOMPARE(model.rowCount(frame), 0);
+        QVERIFY(model.flags(frame) & Qt::ItemNeverHasChildren);
+        QCOMPARE(model.parameter(frame)->value, QStringLiteral("map"));
+        // each row says where the value comes from, and leads there
+        QCOMPARE(model.index(0, LaunchTreeModel::DetailsColumn, group).data().toString(),
+                 QStringLiteral("map · map.yaml:4"));
+        QCOMPARE(model.index(1, LaunchTreeModel::DetailsColumn, group).data().toString(),
+                 QStringLiteral("map · default in code"));
+        QCOMPARE(model.index(2, LaunchTreeModel::DetailsColumn, group).data().toString(),
+                 QStringLiteral("map.yaml · launch file"));
+        QCOMPARE(model.evidence(frame).file, QStringLiteral("robot/config/map.yaml"));
+        QCOMPARE(model.evidence(frame).line, 4);
+        QVERIFY(frame.data(Qt::ToolTipRole).toString().contains(QLatin1String("parameter file")));
+        QCOMPARE(frame.data(LaunchTreeModel::InstanceIdRole).toString(), QStringLiteral("n1"));
+        // a node without parameters in effect has no such row
+        QCOMPARE(model.rowCount(model.nodeIndex(QStringLiteral("n5"))), 0);
+        QVERIFY(!model.parameter(map));
     }
 
     void columnsShowWhatAnInstanceIs()

@@ -14,7 +14,8 @@ DiagramBreadcrumbBar::DiagramBreadcrumbBar(QWidget *parent)
     m_layout->addStretch(1);
 }
 
-void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path)
+void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path, const QString &note,
+                                   const QString &noteToolTip)
 {
     qDeleteAll(m_widgets);
     m_widgets.clear();
@@ -44,6 +45,14 @@ void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path)
         });
         m_layout->insertWidget(m_layout->count() - 1, button);
         m_widgets << button;
+    }
+    if (!note.isEmpty()) {
+        auto *label = new QLabel(note, this);
+        label->setObjectName(QStringLiteral("crumbNote"));
+        label->setForegroundRole(QPalette::PlaceholderText);
+        label->setToolTip(noteToolTip);
+        m_layout->insertWidget(m_layout->count() - 1, label);
+        m_widgets << label;
     }
 }
 

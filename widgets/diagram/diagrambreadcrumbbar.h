@@ -22,7 +22,9 @@ public:
 
     explicit DiagramBreadcrumbBar(QWidget *parent = nullptr);
 
-    void setPath(const QList<Crumb> &path);
+    /// `note`: a quiet line after the crumbs saying whose view this is ("" for none).
+    void setPath(const QList<Crumb> &path, const QString &note = {},
+                 const QString &noteToolTip = {});
     QList<Crumb> path() const { return m_path; }
     /// The button of a crumb, for tests and keyboard navigation; null when absent.
     QToolButton *button(const QString &id) const;

@@ -311,7 +311,19 @@ void DiagramPanel::updateBreadcrumbs()
         seen << c->instanceId;
         path.prepend({c->instanceId, c->stem, c->file.isEmpty() ? c->stem : c->file});
     }
-    m_breadcrumbs->setPath(path);
+    // Whose view: an included file is shown as that include resolves it (blueprint §1); its
+    // exported CCD is the file on its own.
+    QString note, tip;
+    if (path.size() > 1) {
+        note = tr("as included by %1").arg(path.at(path.size() - 2).label);
+        tip = tr("Names, namespaces and arguments are resolved for this include of %1. The "
+                 "exported CCD of %1 is the file on its own, with its declared defaults.")
+                  .arg(path.last().label);
+    } else if (!path.isEmpty()) {
+        note = tr("as launched");
+        tip = tr("The root launch file with the launch arguments of the run.");
+    }
+    m_breadcrumbs->setPath(path, note, tip);
 }
 
 void DiagramPanel::updateSearch(bool centre)
