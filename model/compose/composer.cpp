@@ -294,7 +294,11 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 const NodeInstance &n = *instances.value(e.id);
                 const AtomicNode *cls = classes.value(n.classId);
                 part.kind = RosNodePart::Kind::Node;
-                part.typeName = !n.className.isEmpty() ? n.className : n.execName;
+                // a node of a package outside the workspace is typed `package/executable`
+                part.typeName = !n.className.isEmpty() ? n.className
+                                : n.package.isEmpty() || n.execName.isEmpty()
+                                    ? n.execName
+                                    : QStringLiteral("%1/%2").arg(n.package, n.execName);
                 part.typeId = n.classId;
                 part.nameSpace = n.nameSpace.isEmpty() ? QStringLiteral("/")
                                                        : RosNames::scopeRelative(n.nameSpace);

@@ -6,6 +6,8 @@
 #   one part teleop: Teleop (no name given here, so the node name from the code, `teleop`);
 #   it publishes /robo/cmd_vel (absolute in the code), promoted: one boundary port;
 #   an info diagnostic that the executable is built by rules_nodes, not rules_bringup.
+# A node of a package outside the workspace is a part typed `package/executable`, named by
+# name= when given, else by its executable: here `joy_node: joy/joy_node`, without ports.
 from launch import LaunchDescription
 from launch_ros.actions import Node
 
@@ -13,4 +15,5 @@ from launch_ros.actions import Node
 def generate_launch_description():
     return LaunchDescription([
         Node(package='rules_bringup', executable='teleop'),
+        Node(package='joy', executable='joy_node'),
     ])
