@@ -25,7 +25,8 @@ struct Substitution
         ThisLaunchFileDir, ///< ThisLaunchFileDir() / $(dirname)
         ThisLaunchFile,    ///< ThisLaunchFile() / $(filename)
         RewrittenYaml,     ///< nav2_common's RewrittenYaml: parts[0] = source file, parts[1] = root
-                           ///< key, then each rewrite as a name and a value; evaluates to the file
+                           ///< key, then each rewrite as a name and a value (a value
+                           ///< rewrite's name starts with '='); evaluates to the file
         Unknown, ///< anything else (Command, OpaqueFunction results, ...): `text` = the expression
     };
 

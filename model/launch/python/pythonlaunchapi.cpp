@@ -158,6 +158,14 @@ std::optional<Value> PythonLaunchApi::callSubstitutionApi(const QString &name, c
             for (const auto &[key, value] : rewrites->dict->entries)
                 s.parts << key.toSubstitution() << value.toParameterValue();
         }
+        // value_rewrites replace values, not keys: their keys are marked with a leading '='
+        if (const Value *rewrites = args.get(4, {"value_rewrites"});
+            given(rewrites) && rewrites->type == Value::Type::Dict) {
+            for (const auto &[key, value] : rewrites->dict->entries)
+                s.parts << concatenate(
+                               {Substitution::literal(QStringLiteral("=")), key.toSubstitution()})
+                        << value.toParameterValue();
+        }
         return Value::substitution(s);
     }
     if (oneOf(name, {"ParameterFile", "ParameterValue"})) {

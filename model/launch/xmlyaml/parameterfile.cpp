@@ -171,7 +171,8 @@ void ParameterFile::rewrite(const QList<QPair<QString, QString>> &rewrites, cons
         for (ParameterSetting &s : e.parameters) {
             const QString leaf = s.name.section(QLatin1Char('.'), -1);
             for (const auto &[key, value] : rewrites) {
-                if (key == s.name || key == leaf) {
+                const bool byValue = key.startsWith(QLatin1Char('='));
+                if (byValue ? s.value == key.mid(1) : key == s.name || key == leaf) {
                     s.value = value;
                     s.source = QStringLiteral("launch"); // the launch file decides it now
                 }

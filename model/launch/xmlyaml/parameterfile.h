@@ -28,7 +28,8 @@ struct ParameterFile
 
     /// nav2_common's RewrittenYaml: the value of every parameter whose name, or last name
     /// segment, is a rewrite's key is replaced (keys that are not in the file are not added);
-    /// with a root key, every entry moves under that namespace.
+    /// a key "=X" replaces every value X (value_rewrites); with a root key, every entry moves
+    /// under that namespace.
     void rewrite(const QList<QPair<QString, QString>> &rewrites, const QString &rootKey);
 
     /// The parameters for the node `fqn` as rclcpp applies one file: the entries matched by a

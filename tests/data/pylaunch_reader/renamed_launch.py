@@ -15,7 +15,8 @@ def generate_launch_description():
     overrides = {'use_sim_time': LaunchConfiguration('sim'), 'rate': '5'}
     rewritten = ParameterFile(
         RewrittenYaml(source_file=params, root_key=LaunchConfiguration('robot'),
-                      param_rewrites=overrides, convert_types=True),
+                      param_rewrites=overrides, value_rewrites={'ZONE': 'on'},
+                      convert_types=True),
         allow_substs=True)
     return LaunchDescription([
         Node(package='planner', executable='plan', parameters=[rewritten],

@@ -451,14 +451,15 @@ private Q_SLOTS:
         QFile yaml(fx.dir.filePath(QStringLiteral("bringup/config/base.yaml")));
         QVERIFY(yaml.open(QIODevice::WriteOnly));
         yaml.write("talker:\n  ros__parameters:\n    topic: base\n    use_sim_time: false\n"
-                   "    other: kept\n");
+                   "    other: kept\n    zone:\n      enabled: ZONE_ON\n");
         yaml.close();
         Substitution rewritten;
         rewritten.kind = Substitution::Kind::RewrittenYaml;
         rewritten.parts << share(QStringLiteral("bringup"), QStringLiteral("config/base.yaml"))
                         << var(QStringLiteral("namespace")) << lit(QStringLiteral("topic"))
                         << lit(QStringLiteral("rewritten")) << lit(QStringLiteral("missing"))
-                        << lit(QStringLiteral("not added"));
+                        << lit(QStringLiteral("not added")) // value_rewrites: by value
+                        << lit(QStringLiteral("=ZONE_ON")) << lit(QStringLiteral("true"));
         const QString robot = QStringLiteral("robot");
         LaunchAction talker =
             node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("talker"), 3);
@@ -475,7 +476,8 @@ private Q_SLOTS:
         QCOMPARE(effective(d.nodes[0]),
                  (QStringList{QStringLiteral("other=kept (file 5)"),
                               QStringLiteral("topic=rewritten (launch 9)"),
-                              QStringLiteral("use_sim_time=false (file 4)")}));
+                              QStringLiteral("use_sim_time=false (file 4)"),
+                              QStringLiteral("zone.enabled=true (launch 9)")}));
         QCOMPARE(effective(d.nodes[1]), QStringList());
     }
 

@@ -117,12 +117,12 @@ void TestPythonLaunchReader::rewrittenYamlAndNodeRenames()
              (QStringList{QStringLiteral("Node pkg=planner exe=plan name=global_planner ns=/nav "
                                          "paramfile:RewrittenYaml(join[$(find-pkg-share "
                                          "planner_bringup), config, p.yaml], $(var robot), "
-                                         "use_sim_time, $(var sim), rate, 5) @21"),
+                                         "use_sim_time, $(var sim), rate, 5, =ZONE, on) @22"),
                           QStringLiteral("Node pkg=planner exe=plan name=kept ns=/fleet "
-                                         "remap:map->/map @23")}));
+                                         "remap:map->/map @24")}));
     const Substitution &file = desc.actions.at(0).parameters.at(0).value;
     QCOMPARE(file.kind, Substitution::Kind::RewrittenYaml);
-    QCOMPARE(file.parts.size(), 6);
+    QCOMPARE(file.parts.size(), 8);
 }
 
 void TestPythonLaunchReader::actionsThroughVariablesAndLists()
