@@ -12,25 +12,6 @@ namespace {
 constexpr int kMaxDepth = 64; // parameter files nest a few levels; deeper keys are skipped
 const QLatin1String kParameters("ros__parameters");
 
-/// A parameter value as text: scalars as written, sequences as "[a, b]".
-QString valueText(const YAML::Node &n, YamlBudget *budget, int depth)
-{
-    if (depth > kMaxDepth || !budget->spend())
-        return {};
-    if (n.IsScalar())
-        return QString::fromStdString(n.Scalar());
-    if (n.IsSequence()) {
-        QStringList items;
-        for (const YAML::Node &item : n) {
-            if (budget->exhausted)
-                break;
-            items << valueText(item, budget, depth + 1);
-        }
-        return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
-    }
-    return {};
-}
-
 Evidence evidenceAt(const QString &file, const YAML::Node &key)
 {
     const YAML::Mark m = key.Mark();
@@ -99,7 +80,7 @@ ParameterFile ParameterFile::read(const QByteArray &content, const QString &file
                 }
                 ParameterSetting s;
                 s.name = name;
-                s.value = valueText(kv.second, &budget, depth + 1);
+                s.value = yamlValueText(kv.second, &budget, kMaxDepth, depth + 1);
                 s.source = QStringLiteral("file");
                 s.file = file;
                 s.evidence = evidenceAt(file, kv.first);

@@ -55,22 +55,9 @@ void extendEnd(const YAML::Node &n, Position *end, Budget *budget, int depth = 0
     }
 }
 
-QString scalarText(const YAML::Node &n, Budget *budget, int depth = 0)
+QString scalarText(const YAML::Node &n, Budget *budget)
 {
-    if (depth > kMaxDepth || !budget->spend())
-        return {};
-    if (n.IsScalar())
-        return QString::fromStdString(n.Scalar());
-    if (n.IsSequence()) {
-        QStringList items;
-        for (const YAML::Node &item : n) {
-            if (budget->exhausted)
-                break;
-            items << scalarText(item, budget, depth + 1);
-        }
-        return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
-    }
-    return {};
+    return yamlValueText(n, budget, kMaxDepth);
 }
 
 bool isListOfMappings(const YAML::Node &n)

@@ -1,6 +1,26 @@
 #include "yamlsupport.h"
 
+#include <QStringList>
+
 namespace rosarch {
+
+QString yamlValueText(const YAML::Node &n, YamlBudget *budget, int maxDepth, int depth)
+{
+    if (depth > maxDepth || !budget->spend())
+        return {};
+    if (n.IsScalar())
+        return QString::fromStdString(n.Scalar());
+    if (n.IsSequence()) {
+        QStringList items;
+        for (const YAML::Node &item : n) {
+            if (budget->exhausted)
+                break;
+            items << yamlValueText(item, budget, maxDepth, depth + 1);
+        }
+        return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
+    }
+    return {};
+}
 
 YAML::Node loadYaml(const QByteArray &content, const QString &file, Diagnostic *error)
 {

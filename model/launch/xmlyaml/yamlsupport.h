@@ -28,6 +28,10 @@ struct YamlBudget
     }
 };
 
+/// A value as text: a scalar as written, a sequence as "[a, b]" (nested to `maxDepth`), spending
+/// from `budget`; a mapping gives "".
+QString yamlValueText(const YAML::Node &n, YamlBudget *budget, int maxDepth, int depth = 0);
+
 /// Loads YAML text. On a syntax error, `*error` becomes a `malformed-yaml` diagnostic naming
 /// the line, and the result is what the lines before the error give on their own.
 YAML::Node loadYaml(const QByteArray &content, const QString &file, Diagnostic *error);
