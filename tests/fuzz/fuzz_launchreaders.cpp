@@ -1,6 +1,8 @@
-// libFuzzer target: the three launch-file readers (XML, YAML, Python), each on the input.
-// The first byte picks the reader, so one corpus covers all three formats.
+// libFuzzer target: the three launch-file readers (XML, YAML, Python), each on the input, and
+// the YAML parameter-file reader with its node matching and rewrites. The first byte picks the
+// reader, so one corpus covers all three formats.
 #include "fuzzsupport.h"
+#include "parameterfile.h"
 #include "pythonlaunchreader.h"
 #include "xmllaunchreader.h"
 #include "yamllaunchreader.h"
@@ -18,6 +20,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 1:
         rosarch::YamlLaunchReader::isLaunchFile(content);
         rosarch::YamlLaunchReader::read(content, QStringLiteral("f.launch.yaml"));
+        {
+            rosarch::ParameterFile params =
+                rosarch::ParameterFile::read(content, QStringLiteral("p.yaml"));
+            params.forNode(QStringLiteral("/ns/node"));
+            params.rewrite({{QStringLiteral("a"), QStringLiteral("b")},
+                            {QStringLiteral("=x"), QStringLiteral("y")}},
+                           QStringLiteral("root"));
+            params.forNode(QStringLiteral("/root/ns/node"));
+        }
         break;
     default:
         rosarch::PythonLaunchReader::isLaunchFile(content);
