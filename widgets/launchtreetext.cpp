@@ -178,6 +178,12 @@ QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *
                             : QStringLiteral("%1 = %2").arg(html(p.first), html(p.second)));
         line(tr("Parameters given:") + htmlList(entries));
     }
+    if (!node.plugins.isEmpty()) {
+        QStringList entries;
+        for (const ParameterSetting &p : node.plugins)
+            entries << QStringLiteral("%1: %2").arg(html(p.name), html(p.value));
+        line(tr("Loads plugins:") + htmlList(entries));
+    }
     if (!node.effectiveParameters.isEmpty())
         line(tr("Parameters in effect: %n (listed under the node, each with its source)", nullptr,
                 int(node.effectiveParameters.size())));

@@ -94,6 +94,13 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
             effective.push_back(e);
         }
         j["effective_parameters"] = effective;
+        Json plugins = Json::array();
+        for (const ParameterSetting &p : n.plugins)
+            plugins.push_back({{"name", utf8(p.name)},
+                               {"class", utf8(p.value)},
+                               {"file", utf8(p.evidence.file)},
+                               {"line", p.evidence.line}});
+        j["plugins"] = plugins;
         j["condition"] = utf8(n.condition);
         j["active"] = n.active;
         j["unresolved"] = unresolvedJson(n.unresolved);

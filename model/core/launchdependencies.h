@@ -50,7 +50,10 @@ struct NodeInstance
     QList<QPair<QString, QString>> remaps;       ///< evaluated from -> to (scope remaps first)
     QList<QPair<QString, QString>> parameters;   ///< name -> value; parameter files as ("", path)
     QList<ParameterSetting> effectiveParameters; ///< the final values, one per name, sorted
-    QString condition;                           ///< as written ("" when none)
+    /// The plugins the instance loads, named by its parameters the pluginlib way
+    /// (`<name>.plugin: pkg::Class`): name -> class; each entry's evidence is its parameter's.
+    QList<ParameterSetting> plugins;
+    QString condition;  ///< as written ("" when none)
     bool active = true; ///< the condition's value (true when undecidable: best guess)
     QList<Unresolved> unresolved;
     Evidence evidence;

@@ -34,6 +34,26 @@ QString formatName(LaunchFileDescription::Format f)
     return {};
 }
 
+/// The plugins parameters name the pluginlib way: `FollowPath.plugin: "pkg::Class"` (or
+/// "pkg/Class") loads plugin FollowPath of that class.
+QList<ParameterSetting> pluginsOf(const QList<ParameterSetting> &parameters)
+{
+    static const QRegularExpression cls(QStringLiteral(R"(^[A-Za-z_]\w*(::|/)[A-Za-z_][\w:/]*$)"));
+    QList<ParameterSetting> out;
+    for (const ParameterSetting &p : parameters) {
+        if (!p.name.endsWith(QLatin1String(".plugin")))
+            continue;
+        const QString value = p.value.trimmed().remove(QLatin1Char('"')).remove(QLatin1Char('\''));
+        if (!cls.match(value).hasMatch())
+            continue;
+        ParameterSetting plugin = p;
+        plugin.name = p.name.chopped(int(qstrlen(".plugin")));
+        plugin.value = value;
+        out.append(plugin);
+    }
+    return out;
+}
+
 QString nsKey(const QString &ns)
 {
     return ns.isEmpty() ? QStringLiteral("/") : ns;
@@ -444,6 +464,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         n.parameters.append({p.isFile ? QString() : evaluate(p.name, scope, frame, &u, p.evidence),
                              evaluate(p.value, scope, frame, &u, p.evidence)});
     n.effectiveParameters = effectiveParameters(a, scope, frame, n, classes.value(0), &u);
+    n.plugins = pluginsOf(n.effectiveParameters);
     m_out->instances[frame.instance].nodes.append(n.id);
     addToNamespace(frame.instance, n.nameSpace, n.id);
     m_out->nodes.append(n);
@@ -458,6 +479,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         QList<Unresolved> reported; // the same launch line: already on `n`
         more.effectiveParameters =
             effectiveParameters(a, scope, frame, more, classes[k], &reported);
+        more.plugins = pluginsOf(more.effectiveParameters);
         m_out->instances[frame.instance].nodes.append(more.id);
         addToNamespace(frame.instance, more.nameSpace, more.id);
         m_out->nodes.append(more);

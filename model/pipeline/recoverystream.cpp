@@ -52,7 +52,7 @@ template <class F> void fields(NodeInstance &v, F f)
 {
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
       v.nameSpace, v.container, v.lifecycle, v.remaps, v.parameters, v.effectiveParameters,
-      v.condition, v.active, v.unresolved, v.evidence);
+      v.plugins, v.condition, v.active, v.unresolved, v.evidence);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {

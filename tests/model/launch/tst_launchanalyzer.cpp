@@ -481,6 +481,32 @@ private Q_SLOTS:
         QCOMPARE(effective(d.nodes[1]), QStringList());
     }
 
+    void pluginsAreNamedByParameters()
+    {
+        // pluginlib's convention: `<name>.plugin: "pkg::Class"` loads plugin <name>.
+        Fixture fx;
+        QDir(fx.dir.path()).mkpath(QStringLiteral("bringup/config"));
+        QFile yaml(fx.dir.filePath(QStringLiteral("bringup/config/server.yaml")));
+        QVERIFY(yaml.open(QIODevice::WriteOnly));
+        yaml.write("talker:\n  ros__parameters:\n    controller_plugins: [\"Follow\"]\n"
+                   "    Follow:\n      plugin: \"ctrl_pkg::Follower\"\n      speed: 0.5\n"
+                   "    Checker:\n      plugin: ctrl_pkg/Checker\n"
+                   "    NotAClass:\n      plugin: \"just words\"\n");
+        yaml.close();
+        LaunchAction a =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("talker"), 3);
+        a.parameters = {
+            parameterFile(share(QStringLiteral("bringup"), QStringLiteral("config/server.yaml")))};
+        fx.add(QStringLiteral("bringup/launch/s.launch.py"), {a});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/s.launch.py"));
+        QCOMPARE(d.nodes.size(), 1);
+        QStringList plugins;
+        for (const ParameterSetting &p : d.nodes[0].plugins)
+            plugins << QStringLiteral("%1=%2 @%3").arg(p.name, p.value).arg(p.evidence.line);
+        QCOMPARE(plugins, (QStringList{QStringLiteral("Checker=ctrl_pkg/Checker @8"),
+                                       QStringLiteral("Follow=ctrl_pkg::Follower @5")}));
+    }
+
     void parameterFileProblemsAreSaid()
     {
         Fixture fx;
