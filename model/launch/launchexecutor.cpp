@@ -534,14 +534,15 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
                                                             QList<Unresolved> *u)
 {
     QList<ParameterSetting> out;
-    auto set = [&out](const ParameterSetting &s) {
-        for (ParameterSetting &o : out) {
-            if (o.name == s.name) {
-                o = s;
-                return;
-            }
+    QHash<QString, qsizetype> at; // name -> index in `out`
+    auto set = [&](const ParameterSetting &s) {
+        const auto it = at.constFind(s.name);
+        if (it != at.constEnd()) {
+            out[*it] = s;
+        } else {
+            at.insert(s.name, out.size());
+            out.append(s);
         }
-        out.append(s);
     };
     for (const ParameterSetting &s : scope.parameters)
         if (!s.name.isEmpty())
@@ -574,9 +575,19 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
         for (qsizetype i = 2; i + 1 < p.value.parts.size(); i += 2)
             rewrites.append({evaluate(p.value.parts.at(i), scope, frame, u, p.evidence),
                              evaluate(p.value.parts.at(i + 1), scope, frame, u, p.evidence)});
-        ParameterFile copy = *file;
-        copy.rewrite(rewrites, evaluate(p.value.parts.value(1), scope, frame, u, p.evidence));
-        for (ParameterSetting s : copy.forNode(fqn)) {
+        const QString root = evaluate(p.value.parts.value(1), scope, frame, u, p.evidence);
+        // one rewritten copy per file, root key and rewrites (a stack starts dozens of nodes
+        // with the same one)
+        QString key = file->file + QChar(0) + root;
+        for (const auto &[name, value] : std::as_const(rewrites))
+            key += QChar(0) + name + QChar(1) + value;
+        auto it = m_rewrittenFiles.find(key);
+        if (it == m_rewrittenFiles.end()) {
+            ParameterFile copy = *file;
+            copy.rewrite(rewrites, root);
+            it = m_rewrittenFiles.insert(key, copy);
+        }
+        for (ParameterSetting s : it->forNode(fqn)) {
             if (s.source == QLatin1String("launch"))
                 s.evidence = p.evidence; // the rewrite decided the value
             set(s);
@@ -584,12 +595,8 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
     }
     if (cls) {
         auto byDefault = [&](const QString &name, const QString &value, const Evidence &e) {
-            if (name.isEmpty())
-                return;
-            for (const ParameterSetting &o : out)
-                if (o.name == name)
-                    return;
-            out.append({name, value, QStringLiteral("default"), QString(), e});
+            if (!name.isEmpty() && !at.contains(name))
+                set({name, value, QStringLiteral("default"), QString(), e});
         };
         for (const Port &port : cls->ports) {
             if (port.nameOrigin == NameOrigin::Parameter)

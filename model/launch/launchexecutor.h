@@ -101,6 +101,7 @@ private:
     LaunchDependencies *m_out;
     QHash<QString, QString> m_packagePaths;         ///< package -> folder
     QHash<QString, ParameterFile> m_parameterFiles; ///< by workspace-relative path
+    QHash<QString, ParameterFile> m_rewrittenFiles; ///< RewrittenYaml results, by file and rewrites
     QSet<QString> m_missingParameterFiles;          ///< reported once per path
     QString m_idPrefix;
 };

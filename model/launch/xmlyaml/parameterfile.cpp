@@ -1,6 +1,7 @@
 #include "parameterfile.h"
 #include "yamlsupport.h"
 
+#include <QHash>
 #include <QStringList>
 
 #include <functional>
@@ -168,11 +169,16 @@ void ParameterFile::rewrite(const QList<QPair<QString, QString>> &rewrites, cons
 QList<ParameterSetting> ParameterFile::forNode(const QString &fqn) const
 {
     QList<ParameterSetting> out;
+    QHash<QString, qsizetype> at; // name -> index in `out`
     auto apply = [&](const Entry &e) {
         for (const ParameterSetting &s : e.parameters) {
-            auto same = [&](const ParameterSetting &o) { return o.name == s.name; };
-            out.erase(std::remove_if(out.begin(), out.end(), same), out.end());
-            out << s;
+            const auto it = at.constFind(s.name);
+            if (it != at.constEnd()) {
+                out[*it] = s;
+            } else {
+                at.insert(s.name, out.size());
+                out << s;
+            }
         }
     };
     for (const Entry &e : entries)
