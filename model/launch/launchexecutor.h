@@ -90,6 +90,9 @@ private:
     QList<ParameterSetting> effectiveParameters(const LaunchAction &a, const Scope &scope,
                                                 const Frame &frame, const NodeInstance &n,
                                                 const AtomicNode *cls, QList<Unresolved> *u);
+    /// The plugins parameters name the pluginlib way: `FollowPath.plugin: "pkg::Class"` (or
+    /// "pkg/Class") loads plugin FollowPath of that class.
+    static QList<ParameterSetting> pluginsOf(const QList<ParameterSetting> &parameters);
     /// A parameter file given to a node (`--params-file`, RewrittenYaml), read once; null, with
     /// a diagnostic, when it is not in the workspace.
     const ParameterFile *parameterFile(const QString &path, const Frame &frame,
