@@ -1,5 +1,7 @@
 #include "composition.h"
 
+#include <QSet>
+
 namespace rosarch {
 
 namespace {
@@ -43,14 +45,21 @@ const Composite *Architecture::composite(const QString &instanceId) const
 QList<const Composite *> Architecture::representatives() const
 {
     QList<const Composite *> out;
-    QStringList seen;
-    for (const Composite &c : classifiers.isEmpty() ? composites : classifiers) {
+    QSet<QString> seen;
+    auto add = [&](const Composite &c) {
         const QString key = c.file.isEmpty() ? c.stem : c.file;
         if (seen.contains(key))
-            continue;
-        seen.append(key);
+            return;
+        seen.insert(key);
         out.append(&c);
-    }
+    };
+    for (const Composite &c : classifiers)
+        add(c);
+    // A workspace file without a classifier (its run was skipped or over budget) is drawn as
+    // first included; without classifiers at all, every file is.
+    for (const Composite &c : composites)
+        if (classifiers.isEmpty() || !c.file.isEmpty())
+            add(c);
     return out;
 }
 

@@ -132,8 +132,9 @@ struct Architecture
     bool canceled = false;
 
     const Composite *composite(const QString &instanceId) const;
-    /// The composite written as each launch file's CCD: its classifier, or, when there are
-    /// none (a composition of given instances), its first instance (roots come first).
+    /// The composite written as each launch file's CCD: its classifier, or, for a file without
+    /// one (a skipped or over-budget run, a composition of given instances), its first
+    /// instance (roots come first).
     QList<const Composite *> representatives() const;
     bool operator==(const Architecture &) const = default;
 };
