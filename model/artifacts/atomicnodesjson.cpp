@@ -58,6 +58,10 @@ Json nodeJson(const AtomicNode &n)
     j["base_classes"] = strings(n.baseClasses);
     j["lifecycle"] = n.lifecycle;
     j["procedural"] = n.procedural;
+    if (n.isPlugin()) {
+        j["kind"] = "plugin";
+        j["plugin_interface"] = utf8(n.pluginInterface);
+    }
     j["evidence"] = EvidenceJson::toJson(n.evidence);
     Json ports = Json::array();
     for (const Port &p : n.ports)
@@ -169,6 +173,8 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
             n.baseClasses = JsonSupport::stringList(nj, "base_classes");
             n.lifecycle = nj.value("lifecycle", false);
             n.procedural = nj.value("procedural", false);
+            if (JsonSupport::string(nj, "kind") == QLatin1String("plugin"))
+                n.pluginInterface = JsonSupport::string(nj, "plugin_interface");
             if (nj.contains("evidence"))
                 n.evidence = EvidenceJson::fromJson(nj["evidence"]);
             if (nj.contains("ports") && nj["ports"].is_array()) {

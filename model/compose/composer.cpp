@@ -225,13 +225,42 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
     return out;
 }
 
+// A node instance carries the ports of the pluginlib plugins its parameters load
+// (`FollowPath.plugin: dwb_core::DWBLocalPlanner`), each port id prefixed by the plugin's name.
+QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &pluginClasses,
+                                      const NodeInstance &instance, const NodeInstance *container)
+{
+    QList<PartPort> out;
+    for (const ParameterSetting &plugin : instance.plugins) {
+        QString written = plugin.value.trimmed();
+        written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
+        if (written.startsWith(QLatin1String("::")))
+            written = written.mid(2);
+        const AtomicNode *cls = pluginClasses.value(written);
+        if (!cls)
+            continue;
+        AtomicNode loaded = *cls; // the plugin under the name it is loaded by
+        for (Port &p : loaded.ports)
+            p.name.replace(QLatin1String(kPluginNamePlaceholder), plugin.name);
+        for (PartPort pp : resolvePorts(loaded, instance, container)) {
+            pp.id = QStringLiteral("%1_%2").arg(plugin.name, pp.id);
+            out.append(pp);
+        }
+    }
+    return out;
+}
+
 Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies &launch,
                            const StageControl &control)
 {
     Architecture arch;
     QHash<QString, const AtomicNode *> classes;
-    for (const AtomicNode &n : nodes.nodes)
+    QHash<QString, const AtomicNode *> pluginClasses; // by qualified name
+    for (const AtomicNode &n : nodes.nodes) {
         classes.insert(n.id, &n);
+        if (n.isPlugin())
+            pluginClasses.insert(n.qualifiedName, &n);
+    }
     QHash<QString, const NodeInstance *> instances;
     QHash<QString, const NodeInstance *> byName; // containers referred to by name
     for (const NodeInstance &n : launch.nodes) {
@@ -310,6 +339,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                     if (!n.container.isEmpty())
                         container = instances.value(n.container, byName.value(n.container));
                     part.ports = resolvePorts(*cls, n, container);
+                    part.ports += pluginPorts(pluginClasses, n, container);
                 } else {
                     part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;
                 }

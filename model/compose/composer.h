@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QHash>
+
 #include "atomicnodelist.h"
 #include "composition.h"
 #include "launchdependencies.h"
@@ -22,6 +24,10 @@ public:
     static QList<PartPort> resolvePorts(const AtomicNode &node, const NodeInstance &instance,
                                         const NodeInstance *container,
                                         QList<int> *rulesUsed = nullptr);
+    /// The ports of the pluginlib plugins the instance loads (its `plugins`), resolved as the
+    /// instance's own, their ids prefixed by the plugin's name.
+    static QList<PartPort> pluginPorts(const QHash<QString, const AtomicNode *> &pluginClasses,
+                                       const NodeInstance &instance, const NodeInstance *container);
 };
 
 /// The launch file's stem: "robot" for robot.launch.py, "nav" for nav_launch.py.

@@ -8,6 +8,8 @@ QString AtomicNode::execution() const
         return executables.first();
     if (!plugins.isEmpty())
         return plugins.first();
+    if (isPlugin())
+        return qualifiedName; // pluginlib: the class a parameter file names
     return {};
 }
 

@@ -32,12 +32,15 @@ struct AtomicNode
     bool procedural = false; ///< rclpy.create_node / make_shared<rclcpp::Node>(...)
     QStringList executables; ///< executables that start it (from build files)
     QStringList plugins;     ///< component plugin names (rclcpp_components)
-    Evidence evidence;       ///< the class definition (or the create_node call)
+    /// A pluginlib plugin (kind "plugin"): the interface it is exported as ("" for a node).
+    QString pluginInterface;
+    Evidence evidence; ///< the class definition (or the create_node call)
     QList<Port> ports;
 
     /// The blueprint's `execution`: the first executable, else the first plugin.
     QString execution() const;
     bool isComposable() const { return !plugins.isEmpty(); }
+    bool isPlugin() const { return !pluginInterface.isEmpty(); }
     bool operator==(const AtomicNode &) const = default;
 };
 

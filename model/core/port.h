@@ -40,6 +40,10 @@ enum class NameOrigin
 };
 QString nameOriginName(NameOrigin origin);
 
+/// In a pluginlib plugin's port name, the name the plugin is loaded under
+/// (`{plugin}/toggle_filter`); an instance that loads the plugin fills it in.
+inline constexpr char kPluginNamePlaceholder[] = "{plugin}";
+
 /// One communication port of an atomic node: publisher, subscriber, service, action.
 struct Port
 {

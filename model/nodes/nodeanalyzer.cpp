@@ -94,6 +94,8 @@ private:
         const QString wanted = stripGlobal(qualified);
         QList<AtomicNode *> exact, bySimpleName;
         for (AtomicNode &n : *m_nodes) {
+            if (n.isPlugin())
+                continue; // a pluginlib plugin is loaded by a node, never started itself
             if (stripGlobal(n.qualifiedName) == wanted)
                 exact.append(&n);
             else if (n.className == lastSegment(wanted))
@@ -130,6 +132,8 @@ private:
         if (!out.isEmpty())
             return out;
         for (AtomicNode &n : *m_nodes) {
+            if (n.isPlugin())
+                continue; // a pluginlib plugin is loaded by a node, never started itself
             for (const QString &file : files) {
                 if (n.sourceFiles.contains(file) && (!n.procedural || function.isEmpty()) &&
                     !out.contains(&n))

@@ -26,7 +26,7 @@ template <class F> void fields(AtomicNode &v, F f)
 {
     f(v.id, v.className, v.qualifiedName, v.nodeName, v.packageName, v.headerFiles, v.sourceFiles,
       v.description, v.compileType, v.baseClasses, v.lifecycle, v.procedural, v.executables,
-      v.plugins, v.evidence, v.ports);
+      v.plugins, v.pluginInterface, v.evidence, v.ports);
 }
 template <class F> void fields(Executable &v, F f)
 {

@@ -10,6 +10,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <vector>
+
 namespace rosarch {
 
 // Per-file facts that the C++ analyzer extracts in parallel (phase 1) and links afterwards
@@ -28,6 +30,8 @@ struct CppValue
         Parameter,         ///< the ROS parameter `parameter` (through `variable`, if any)
         FunctionParameter, ///< parameter `index` of the enclosing function
         SelfNode,          ///< `this`, `shared_from_this()`, a variable holding one of them
+        SelfCall,          ///< `getName()`: a method `variable` of this object, without arguments
+        Concatenation,     ///< `prefix + "/" + name`: the `parts`, joined
         Expression,        ///< anything else
     };
     Kind kind = Kind::None;
@@ -35,8 +39,9 @@ struct CppValue
     QString literal; ///< Literal, Local
     QString
         variable; ///< Local, Member, Parameter (when read through a variable), FunctionParameter
-    QString parameter; ///< Parameter
-    int index = -1;    ///< FunctionParameter
+    QString parameter;           ///< Parameter
+    int index = -1;              ///< FunctionParameter
+    std::vector<CppValue> parts; ///< Concatenation
 
     bool isNone() const { return kind == Kind::None; }
 };
@@ -129,6 +134,7 @@ struct CppFunction
     QList<CppInstantiation> instantiations;
     QList<CppFreeCall> freeCalls;
     QList<CppProceduralNode> proceduralNodes;
+    CppValue returnValue; ///< a body that is a single `return x;`: x
     Evidence evidence;
 };
 
@@ -146,6 +152,14 @@ struct CppClass
     Evidence evidence;
 };
 
+/// `PLUGINLIB_EXPORT_CLASS(ns::Class, base::Interface)`: a pluginlib plugin.
+struct CppPluginExport
+{
+    QString className; ///< as written
+    QString baseClass; ///< the plugin interface, as written
+    Evidence evidence;
+};
+
 /// Everything extracted from one C++ file.
 struct CppFileFacts
 {
@@ -159,6 +173,7 @@ struct CppFileFacts
     QStringList usingNamespaces; ///< `using namespace x;`
     QHash<QString, QString> constants; ///< namespace-level string constants: kTopic -> "chatter"
     QList<ComponentRegistration> registrations;
+    QList<CppPluginExport> pluginExports;
     QList<Diagnostic> diagnostics;
 };
 

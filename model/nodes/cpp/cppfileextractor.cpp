@@ -393,11 +393,12 @@ int lineOf(const QByteArray &source, qsizetype offset, int *column)
     return line;
 }
 
-// RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class), found in the text so that a macro the parser
-// could not place still counts; comments and macro definitions are skipped.
-void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
+// Calls of `macro(...)` found in the text, so that a macro the parser could not place still
+// counts; comments and macro definitions are skipped. Calls back with the arguments (spaces
+// removed) and where the call is.
+template <typename F>
+void scanMacroCalls(const SyntaxTree &tree, const QByteArray &macro, const QString &path, F found)
 {
-    static const QByteArray macro("RCLCPP_COMPONENTS_REGISTER_NODE");
     const QByteArray &src = tree.source();
     qsizetype from = 0;
     while (true) {
@@ -420,18 +421,39 @@ void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
         const qsizetype close = src.indexOf(')', i);
         if (close < 0)
             continue;
-        const QString plugin =
-            QString::fromUtf8(src.mid(i + 1, close - i - 1)).simplified().remove(u' ');
-        if (plugin.isEmpty())
+        const QString inside = QString::fromUtf8(src.mid(i + 1, close - i - 1)).simplified();
+        QStringList arguments = inside.split(u',');
+        for (QString &a : arguments)
+            a.remove(u' ');
+        if (inside.isEmpty() || arguments.first().isEmpty())
             continue;
-        ComponentRegistration r;
-        r.file = facts.path;
-        r.pluginClass = plugin;
-        r.evidence.file = facts.path;
-        r.evidence.line = lineOf(src, at, &r.evidence.column);
-        r.evidence.endLine = lineOf(src, close + 1, &r.evidence.endColumn);
-        facts.registrations.append(r);
+        Evidence evidence;
+        evidence.file = path;
+        evidence.line = lineOf(src, at, &evidence.column);
+        evidence.endLine = lineOf(src, close + 1, &evidence.endColumn);
+        found(arguments, evidence);
     }
+}
+
+// RCLCPP_COMPONENTS_REGISTER_NODE(ns::Class) and PLUGINLIB_EXPORT_CLASS(ns::Class, base::Iface).
+void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
+{
+    scanMacroCalls(tree, QByteArrayLiteral("RCLCPP_COMPONENTS_REGISTER_NODE"), facts.path,
+                   [&](const QStringList &arguments, const Evidence &evidence) {
+                       ComponentRegistration r;
+                       r.file = facts.path;
+                       r.pluginClass = arguments.join(QLatin1String(","));
+                       r.evidence = evidence;
+                       facts.registrations.append(r);
+                   });
+    scanMacroCalls(tree, QByteArrayLiteral("PLUGINLIB_EXPORT_CLASS"), facts.path,
+                   [&](const QStringList &arguments, const Evidence &evidence) {
+                       CppPluginExport e;
+                       e.className = arguments.value(0);
+                       e.baseClass = arguments.value(1);
+                       e.evidence = evidence;
+                       facts.pluginExports.append(e);
+                   });
 }
 
 } // namespace
@@ -448,7 +470,8 @@ CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &pa
         return facts;
     Walker walker(tree, facts);
     walker.visitScope(root, Scope());
-    if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE"))
+    if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE") ||
+        tree.source().contains("PLUGINLIB_EXPORT_CLASS"))
         findRegistrations(tree, facts);
     return facts;
 }

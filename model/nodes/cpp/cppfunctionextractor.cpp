@@ -53,7 +53,15 @@ CppFunction CppFunctionExtractor::extract(TSNode definition,
     readSignature(definition);
     m_member = m_context.ownerClass >= 0 || !m_function.ownerScope.isEmpty();
     readInitializers(definition);
-    visit(ts::field(definition, "body"));
+    const TSNode body = ts::field(definition, "body");
+    visit(body);
+    // `std::string getName() override {return std::string("navigate_to_pose");}`
+    const std::vector<TSNode> statements = arguments(body);
+    if (statements.size() == 1 && ts::is(statements.front(), "return_statement")) {
+        const std::vector<TSNode> value = arguments(statements.front());
+        if (value.size() == 1)
+            m_function.returnValue = m_values.evaluate(value.front());
+    }
     // A function that returns the node it creates is a factory, not a node definition.
     m_function.proceduralNodes.removeIf(
         [this](const CppProceduralNode &n) { return m_returned.contains(n.variable); });

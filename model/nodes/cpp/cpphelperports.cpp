@@ -8,8 +8,6 @@ namespace rosarch {
 
 using namespace cppsyntax;
 
-using namespace cppsyntax;
-
 namespace {
 
 // "std::shared_ptr<ns::Helper<T>>", "ns::Helper::UniquePtr", "Helper *" -> "ns::Helper<T>".
@@ -37,7 +35,14 @@ QString classFromType(const QString &type)
     return parts.join(QStringLiteral("::"));
 }
 
-// "ns::Helper<a::B, C<int>>" -> {"a::B", "C<int>"}.
+bool looksLikeQos(const QString &text)
+{
+    return text.contains(QLatin1String("qos"), Qt::CaseInsensitive) ||
+           text.contains(QLatin1String("QoS"));
+}
+
+} // namespace
+
 QStringList templateArgumentsOf(const QString &type)
 {
     const qsizetype open = type.indexOf(u'<');
@@ -60,14 +65,6 @@ QStringList templateArgumentsOf(const QString &type)
         out.append(current.trimmed());
     return out;
 }
-
-bool looksLikeQos(const QString &text)
-{
-    return text.contains(QLatin1String("qos"), Qt::CaseInsensitive) ||
-           text.contains(QLatin1String("QoS"));
-}
-
-} // namespace
 
 CppHelperPorts::CppHelperPorts(
     const CppClassIndex &index, const CppNameResolver &names,

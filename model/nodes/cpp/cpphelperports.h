@@ -12,6 +12,9 @@
 
 namespace rosarch {
 
+/// "ns::Helper<a::B, C<int>>" -> {"a::B", "C<int>"}.
+QStringList templateArgumentsOf(const QString &type);
+
 /// Finds the ports a node creates through helpers: classes it instantiates with the node
 /// (`this`, `shared_from_this()`, a procedural node) and free functions it hands the node to,
 /// followed to a bounded depth, with the helper's parameters standing for the arguments.

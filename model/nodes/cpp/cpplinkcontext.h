@@ -21,6 +21,7 @@ struct CppLinkContext
     const CppFunction *fn = nullptr;
     const CppFileFacts *file = nullptr;
     const CppSubstitution *subst = nullptr; ///< arguments of the helper's instantiation
+    int self = -1; ///< the object's most derived class, for virtual calls (-1: `cls`)
 };
 
 /// The arguments a helper was handed, and where they were written.
@@ -30,6 +31,9 @@ struct CppSubstitution
     CppLinkContext outer;
     QHash<QString, QString> templateArguments; ///< helper template parameter -> type
     const CppFunction *function = nullptr;     ///< free helper function; null: the constructors
+    /// A pluginlib plugin's own code: a parameter typed as a node handle is the node it is
+    /// given (`configure(parent, ...)`), since the loader hands it over.
+    bool plugin = false;
 };
 
 /// A port name as resolved: where it comes from, the name (or the expression as written),

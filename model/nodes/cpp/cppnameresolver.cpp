@@ -53,6 +53,11 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
     }
     case CppValue::Kind::Member:
         return resolveMember(value.variable, value.text, ctx, depth + 1);
+    case CppValue::Kind::SelfCall:
+        if (const CppLinkContext at = selfMethod(value.variable, ctx);
+            at.fn && depth < kMaxLinkDepth)
+            return resolve(at.fn->returnValue, at, depth + 1);
+        return r;
     case CppValue::Kind::FunctionParameter:
         if (substitutes(ctx) && depth < kMaxLinkDepth) {
             if (value.index >= 0 && value.index < ctx.subst->arguments.size())
@@ -61,10 +66,56 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
             if (!def.isEmpty())
                 return {NameOrigin::Literal, def, QString(), QString()};
         }
+        if (isPluginNameParameter(value, ctx))
+            return {NameOrigin::Member, QLatin1String(kPluginNamePlaceholder), value.text,
+                    QString()};
         return r;
+    case CppValue::Kind::Concatenation:
+        return resolveConcatenation(value, ctx, depth);
     default:
         return r;
     }
+}
+
+// Each part resolved and joined; the whole stays the expression when a part cannot be. A part
+// read from a parameter makes the whole parameter-derived.
+CppResolvedName CppNameResolver::resolveConcatenation(const CppValue &value,
+                                                      const CppLinkContext &ctx, int depth) const
+{
+    CppResolvedName whole{NameOrigin::Literal, QString(), value.text, QString()};
+    if (depth > kMaxLinkDepth)
+        return {NameOrigin::Expression, value.text, value.text, QString()};
+    for (const CppValue &part : value.parts) {
+        const CppResolvedName r = resolve(part, ctx, depth + 1);
+        if (r.origin == NameOrigin::Expression)
+            return {NameOrigin::Expression, value.text, value.text, QString()};
+        whole.name += r.name;
+        if (r.origin == NameOrigin::Parameter && whole.parameter.isEmpty()) {
+            whole.origin = NameOrigin::Parameter;
+            whole.parameter = r.parameter;
+        } else if (whole.origin == NameOrigin::Literal) {
+            whole.origin = r.origin;
+        }
+    }
+    return whole;
+}
+
+// A plugin's entry point is handed its name by the loader (`configure(parent, name, ...)`,
+// `initialize(..., name, ...)`): in the classifier it is the placeholder the instance fills.
+bool CppNameResolver::isPluginNameParameter(const CppValue &value, const CppLinkContext &ctx) const
+{
+    if (ctx.self < 0 || !ctx.fn || substitutes(ctx) || ctx.fn->isConstructor)
+        return false;
+    static const QStringList names{QStringLiteral("name"), QStringLiteral("plugin_name"),
+                                   QStringLiteral("plugin_id"), QStringLiteral("id")};
+    const QString type = ctx.fn->parameterTypes.value(value.index);
+    if (!names.contains(ctx.fn->parameterNames.value(value.index)) ||
+        !type.contains(QLatin1String("string")))
+        return false;
+    for (const QString &t : ctx.fn->parameterTypes)
+        if (isNodeHandleType(t))
+            return true;
+    return false;
 }
 
 CppResolvedName CppNameResolver::resolveMember(const QString &member, const QString &text,
@@ -93,8 +144,11 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
             }
             for (const CppBinding &b : bindings) {
                 CppResolvedName r;
-                if (b.value.kind == CppValue::Kind::FunctionParameter && ctx.subst && b.fn) {
-                    r = resolve(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst},
+                const bool composed = b.value.kind == CppValue::Kind::Concatenation ||
+                                      b.value.kind == CppValue::Kind::SelfCall;
+                if ((b.value.kind == CppValue::Kind::FunctionParameter && ctx.subst && b.fn) ||
+                    (composed && b.fn)) {
+                    r = resolve(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
                                 depth + 1);
                 } else if (b.value.kind == CppValue::Kind::Member && b.value.variable != member) {
                     r = resolveMember(b.value.variable, text, ctx, depth + 1);
@@ -177,7 +231,9 @@ bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &
     case CppValue::Kind::FunctionParameter:
         if (substitutes(ctx) && value.index >= 0 && value.index < ctx.subst->arguments.size())
             return isNodeHandle(ctx.subst->arguments.at(value.index), ctx.subst->outer, depth + 1);
-        return false;
+        // A plugin's `configure(parent_node, ...)`: a parameter typed as a node handle.
+        return ctx.subst && ctx.subst->plugin && !substitutes(ctx) && ctx.fn &&
+               isNodeHandleType(ctx.fn->parameterTypes.value(value.index));
     case CppValue::Kind::Member:
         if (ctx.cls < 0)
             return false;
@@ -186,7 +242,8 @@ bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &
                 if (b.value.kind == CppValue::Kind::SelfNode)
                     return true;
                 if (b.value.kind == CppValue::Kind::FunctionParameter && b.fn &&
-                    isNodeHandle(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst},
+                    isNodeHandle(b.value,
+                                 CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
                                  depth + 1))
                     return true;
             }
@@ -195,6 +252,27 @@ bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &
     default:
         return false;
     }
+}
+
+CppLinkContext CppNameResolver::selfMethod(const QString &name, const CppLinkContext &ctx) const
+{
+    const int from = ctx.self >= 0 ? ctx.self : ctx.cls;
+    if (from < 0)
+        return {};
+    for (int c : m_index.lineage(from))
+        for (const auto &ref : m_index.at(c).functions)
+            if (ref.function->name == name && ref.function->parameterNames.isEmpty() &&
+                !ref.function->returnValue.isNone())
+                return CppLinkContext{c, ref.function, ref.file, ctx.subst, ctx.self};
+    return {};
+}
+
+bool isNodeHandleType(const QString &type)
+{
+    static const QRegularExpression node(
+        QStringLiteral("(^|::|<|\\s)(Node|LifecycleNode|LifecycleNodeInterface)(\\s*(::(WeakPtr|"
+                       "SharedPtr|Ptr)|>|\\*|&)|$)"));
+    return node.match(type.simplified()).hasMatch();
 }
 
 QString CppNameResolver::resolveType(const QString &written, const CppLinkContext &ctx) const

@@ -11,6 +11,10 @@
 
 namespace rosarch {
 
+/// A parameter type that holds a node: `rclcpp::Node::SharedPtr`, `nav2::LifecycleNode::WeakPtr`,
+/// `std::shared_ptr<rclcpp::Node> &`, `rclcpp_lifecycle::LifecycleNode *`.
+bool isNodeHandleType(const QString &type);
+
 /// Resolves what the C++ facts leave symbolic, in the context of a class and function: port
 /// names through members, locals, declared parameters and helper arguments; interface types
 /// through aliases and helper template arguments; guards to the parameters they test.
@@ -39,7 +43,14 @@ public:
     QStringList scopeOf(const CppLinkContext &ctx) const;
     const CppMemberFacts &facts(int cls) const;
 
+    /// `name()` called on the object of `ctx`: the most derived definition with a single
+    /// return statement, as a context (fn null when none).
+    CppLinkContext selfMethod(const QString &name, const CppLinkContext &ctx) const;
+
 private:
+    CppResolvedName resolveConcatenation(const CppValue &value, const CppLinkContext &ctx,
+                                         int depth) const;
+    bool isPluginNameParameter(const CppValue &value, const CppLinkContext &ctx) const;
     CppResolvedName resolveMember(const QString &member, const QString &text,
                                   const CppLinkContext &ctx, int depth) const;
 

@@ -7,6 +7,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <map>
 
 namespace rosarch {
 
@@ -121,6 +122,22 @@ LanguageAnalysis CppNodeLinker::link() const
         addEntryPoint(ref, procedural, &out.entryPoints);
         out.nodes += procedural;
     }
+    QSet<int> plugins;
+    for (const CppFileFacts &file : m_files) {
+        for (const CppPluginExport &e : file.pluginExports) {
+            const QString written =
+                e.className.startsWith(QLatin1String("::")) ? e.className.mid(2) : e.className;
+            const int c = m_index.lookup(written, {}, &file);
+            if (c < 0 || m_index.at(c).node || ownedNode(c) || plugins.contains(c))
+                continue;
+            plugins.insert(c);
+            // A plugin that creates no ports (a planner's math, a costmap filter) is no part
+            // of the communication architecture.
+            AtomicNode n = pluginNode(c, e);
+            if (!n.ports.isEmpty())
+                out.nodes.append(n);
+        }
+    }
     for (const CppFileFacts &file : m_files)
         out.registrations += file.registrations;
     std::stable_sort(out.nodes.begin(), out.nodes.end(),
@@ -175,6 +192,74 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
         if (!node.ports.contains(p))
             node.ports.append(p);
     return node;
+}
+
+AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported) const
+{
+    AtomicNode node = classNode(index);
+    node.nodeName.clear();
+    node.pluginInterface = exported.baseClass.startsWith(QLatin1String("::"))
+                               ? exported.baseClass.mid(2)
+                               : exported.baseClass;
+    node.ports.clear();
+    QList<Port> ports = pluginPorts(index);
+    std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
+        return evidenceLess(a.evidence, b.evidence);
+    });
+    for (const Port &p : std::as_const(ports))
+        if (!node.ports.contains(p))
+            node.ports.append(p);
+    return node;
+}
+
+// Every class on the plugin's lineage creates ports through the node handle its entry points
+// are given (`configure(parent, ...)`, `initialize(node)`, a `weak_ptr` locked); a template
+// base (BehaviorTreeNavigator<ActionT>) sees the arguments the plugin gives it, and a virtual
+// `getName()` is the plugin's.
+QList<Port> CppNodeLinker::pluginPorts(int plugin) const
+{
+    static const CppFunction noCall; // no parameter stands for an argument
+    const QList<int> lineage = m_index.lineage(plugin);
+    std::map<int, CppSubstitution> substitutions; // stable references while inserting
+    substitutions.emplace(plugin, CppSubstitution{{}, {}, {}, &noCall, true});
+    for (int c : lineage) {
+        const CppClassIndex::ClassInfo &info = m_index.at(c);
+        const CppSubstitution &own = substitutions[c];
+        const CppLinkContext here{c, nullptr, info.file, &own, plugin};
+        for (const QString &base : info.cls->bases) {
+            const int b = m_index.lookup(withoutTemplateArguments(base).remove(u' '),
+                                         m_names.scopeOf(here), info.file);
+            if (b < 0 || substitutions.count(b))
+                continue;
+            CppSubstitution subst{{}, {}, {}, &noCall, true};
+            const QStringList arguments = templateArgumentsOf(base.simplified());
+            const QStringList &parameters = m_index.at(b).cls->templateParameters;
+            for (qsizetype i = 0; i < parameters.size() && i < arguments.size(); ++i)
+                subst.templateArguments.insert(parameters.at(i),
+                                               m_names.expandAliases(arguments.at(i), here));
+            substitutions.emplace(b, subst);
+        }
+    }
+    QList<Port> ports;
+    for (int c : lineage) {
+        const CppSubstitution &subst = substitutions[c];
+        for (const auto &ref : m_index.at(c).functions) {
+            const CppLinkContext ctx{c, ref.function, ref.file, &subst, plugin};
+            for (const CppPortCall &call : ref.function->ports) {
+                if (call.typeIsTemplateParameter &&
+                    !subst.templateArguments.contains(splitScope(call.typeWritten).value(0)))
+                    continue;
+                Port p = m_names.port(call, ctx);
+                p.inherited = c != plugin;
+                ports.append(p);
+            }
+            for (const CppInstantiation &inst : ref.function->instantiations)
+                m_helpers.addHelperPorts(inst, ctx, 0, &ports);
+            for (const CppFreeCall &call : ref.function->freeCalls)
+                m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
+        }
+    }
+    return ports;
 }
 
 // The first argument of the base-class initializer in a constructor; without one, the base's

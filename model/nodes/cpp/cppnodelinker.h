@@ -30,6 +30,9 @@ private:
     const CppProceduralNode *ownedNode(int cls) const;
     QString nodeNameOf(int index, int depth) const;
     QList<Port> portsOf(int cls, bool inherited) const;
+    /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
+    AtomicNode pluginNode(int index, const CppPluginExport &exported) const;
+    QList<Port> pluginPorts(int plugin) const;
     void addProceduralNodes(const CppClassIndex::FunctionRef &ref, QList<AtomicNode> *nodes,
                             QHash<QString, int> *stems) const;
     void addEntryPoint(const CppClassIndex::FunctionRef &ref, const QList<AtomicNode> &procedural,

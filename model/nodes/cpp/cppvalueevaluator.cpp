@@ -66,6 +66,19 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         r.text = v.text;
         return r;
     }
+    // `prefix + "/" + name`, `std::string(ns_) + "/" + name`: the parts, resolved later.
+    if (t == "binary_expression" && m_tree.text(ts::field(n, "operator")) == QLatin1String("+")) {
+        v.kind = CppValue::Kind::Concatenation;
+        for (const char *side : {"left", "right"}) {
+            CppValue part = evaluate(ts::field(n, side), depth + 1);
+            if (part.kind == CppValue::Kind::Concatenation)
+                for (CppValue &inner : part.parts)
+                    v.parts.push_back(std::move(inner));
+            else
+                v.parts.push_back(std::move(part));
+        }
+        return v;
+    }
     if (t == "field_expression" && ts::is(ts::field(n, "argument"), "this")) {
         v.kind = CppValue::Kind::Member;
         v.variable = m_tree.text(ts::field(n, "field"));
@@ -92,6 +105,13 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 return v;
             }
         }
+        const std::vector<TSNode> args = arguments(ts::field(n, "arguments"));
+        // `std::shared_ptr<rclcpp::Node>(this, [](rclcpp::Node *) {})`: a handle on this node.
+        if (shape.name == QLatin1String("shared_ptr") && !args.empty() &&
+            evaluate(args.front(), depth + 1).kind == CppValue::Kind::SelfNode) {
+            v.kind = CppValue::Kind::SelfNode;
+            return v;
+        }
         if (!ts::isNull(shape.receiver) && depth < 6) {
             // get_parameter("p").as_string(), .get_value<T>(), node.lock(), ...
             const CppValue inner = evaluate(shape.receiver, depth + 1);
@@ -100,10 +120,22 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 r.text = v.text;
                 return r;
             }
-            if (inner.kind == CppValue::Kind::SelfNode && shape.name == QLatin1String("lock")) {
-                v.kind = CppValue::Kind::SelfNode;
-                return v;
+            if (shape.name == QLatin1String("lock") &&
+                (inner.kind == CppValue::Kind::SelfNode ||
+                 inner.kind == CppValue::Kind::FunctionParameter ||
+                 inner.kind == CppValue::Kind::Member)) {
+                CppValue r = inner; // the weak pointer's node is the node it points to
+                r.text = v.text;
+                return r;
             }
+        }
+        // `getName()`: a method of this object without arguments, resolved through what it
+        // returns in the object's most derived class.
+        if (onSelf && args.empty() && ts::isNull(shape.templateArguments) &&
+            shape.scope.isEmpty()) {
+            v.kind = CppValue::Kind::SelfCall;
+            v.variable = shape.name;
+            return v;
         }
     }
     v.kind = CppValue::Kind::Expression;
@@ -136,7 +168,9 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
                 return v;
             case CppValue::Kind::SelfNode:
             case CppValue::Kind::Member:
-            case CppValue::Kind::FunctionParameter: {
+            case CppValue::Kind::FunctionParameter:
+            case CppValue::Kind::SelfCall:
+            case CppValue::Kind::Concatenation: {
                 CppValue r = inner;
                 r.text = name;
                 return r;
