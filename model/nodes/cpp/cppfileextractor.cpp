@@ -1,6 +1,7 @@
 #include "cppfileextractor.h"
 
 #include "cppfunctionextractor.h"
+#include "cpppreprocessor.h"
 #include "cppsyntax.h"
 
 namespace rosarch {
@@ -434,9 +435,30 @@ void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
     }
 }
 
+// `#define TOPIC "scan"`, also through another macro (`#define TOPIC BASE_TOPIC`).
+void addMacroConstants(const CppMacros &macros, CppFileFacts &facts)
+{
+    constexpr int kMaxAliasDepth = 8;
+    for (auto it = macros.cbegin(); it != macros.cend(); ++it) {
+        const CppMacro *m = &it.value();
+        for (int depth = 0; m && !m->functionLike && depth < kMaxAliasDepth; ++depth) {
+            const QString value = CppPreprocessor::constantValue(m->body);
+            if (!value.isNull()) {
+                const QString name = QString::fromUtf8(it.key());
+                if (!facts.constants.contains(name))
+                    facts.constants.insert(name, value);
+                break;
+            }
+            const auto next = macros.constFind(m->body);
+            m = next == macros.cend() ? nullptr : &next.value();
+        }
+    }
+}
+
 } // namespace
 
-CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &package)
+CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &package,
+                                       const CppMacros &macros)
 {
     CppFileFacts facts;
     facts.path = tree.file();
@@ -450,6 +472,7 @@ CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &pa
     walker.visitScope(root, Scope());
     if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE"))
         findRegistrations(tree, facts);
+    addMacroConstants(macros, facts);
     return facts;
 }
 
