@@ -423,6 +423,55 @@ private:
     QByteArray m_guard;
 };
 
+constexpr int kMaxConstantDepth = 8;
+
+// The value of a macro body: a number, or string literals and macros standing for strings,
+// concatenated ("robot/" NAME "/scan"); null for anything else.
+QString constantText(const QByteArray &body, const CppMacros &macros, int depth)
+{
+    const QByteArray text = body.trimmed();
+    if (text.isEmpty() || depth > kMaxConstantDepth)
+        return {};
+    if (std::isdigit(uchar(text.at(0))) || (text.at(0) == '-' && text.size() > 1)) {
+        for (qsizetype i = 1; i < text.size(); ++i)
+            if (!(isIdent(text.at(i)) || text.at(i) == '.' || text.at(i) == '\''))
+                return {};
+        return std::isdigit(uchar(text.at(text.at(0) == '-' ? 1 : 0))) ? QString::fromUtf8(text)
+                                                                       : QString();
+    }
+    QString value;
+    qsizetype i = 0;
+    while (i < text.size()) {
+        const char c = text.at(i);
+        if (std::isspace(uchar(c))) {
+            ++i;
+        } else if (c == '"') {
+            qsizetype j = i + 1;
+            while (j < text.size() && text.at(j) != '"')
+                j += text.at(j) == '\\' ? 2 : 1;
+            if (j >= text.size())
+                return {};
+            value += QString::fromUtf8(text.mid(i + 1, j - i - 1));
+            i = j + 1;
+        } else if (std::isalpha(uchar(c)) || c == '_') {
+            qsizetype j = i;
+            while (j < text.size() && isIdent(text.at(j)))
+                ++j;
+            const auto it = macros.constFind(text.mid(i, j - i));
+            if (it == macros.cend() || it->functionLike)
+                return {};
+            const QString part = constantText(it->body, macros, depth + 1);
+            if (part.isNull())
+                return {};
+            value += part;
+            i = j;
+        } else {
+            return {};
+        }
+    }
+    return value.isNull() ? QStringLiteral("") : value;
+}
+
 } // namespace
 
 CppPreprocessor::Result CppPreprocessor::run(QByteArray *source, const QString &file,
@@ -431,38 +480,9 @@ CppPreprocessor::Result CppPreprocessor::run(QByteArray *source, const QString &
     return Run(source, file, initial, lookup).run();
 }
 
-QString CppPreprocessor::constantValue(const QByteArray &body)
+QString CppPreprocessor::constantValue(const QByteArray &body, const CppMacros &macros)
 {
-    const QByteArray text = body.trimmed();
-    if (text.isEmpty())
-        return {};
-    if (text.at(0) != '"') {
-        qsizetype i = text.at(0) == '-' ? 1 : 0;
-        if (i >= text.size() || !std::isdigit(uchar(text.at(i))))
-            return {};
-        for (; i < text.size(); ++i)
-            if (!(isIdent(text.at(i)) || text.at(i) == '.' || text.at(i) == '\''))
-                return {};
-        return QString::fromUtf8(text);
-    }
-    QByteArray value;
-    qsizetype i = 0;
-    while (i < text.size()) {
-        if (std::isspace(uchar(text.at(i)))) {
-            ++i;
-            continue;
-        }
-        if (text.at(i) != '"')
-            return {};
-        qsizetype j = i + 1;
-        while (j < text.size() && text.at(j) != '"')
-            j += text.at(j) == '\\' ? 2 : 1;
-        if (j >= text.size())
-            return {};
-        value += text.mid(i + 1, j - i - 1);
-        i = j + 1;
-    }
-    return QString::fromUtf8(value);
+    return constantText(body, macros, 0);
 }
 
 } // namespace rosarch

@@ -43,9 +43,9 @@ public:
     static Result run(QByteArray *source, const QString &file, const CppMacros &initial,
                       const IncludeLookup &lookup = {});
 
-    /// The string a macro body stands for when it is only string literals ("a" "b" -> "ab"), or
-    /// its text when it is a number; null otherwise.
-    static QString constantValue(const QByteArray &body);
+    /// The string a macro body stands for when it is string literals and `macros` standing for
+    /// strings ("a" B "c" -> "abc"), or its text when it is a number; null otherwise.
+    static QString constantValue(const QByteArray &body, const CppMacros &macros = {});
 };
 
 } // namespace rosarch

@@ -435,23 +435,18 @@ void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
     }
 }
 
-// `#define TOPIC "scan"`, also through another macro (`#define TOPIC BASE_TOPIC`).
+// `#define TOPIC "scan"`, also through other macros (`#define TOPIC PREFIX "scan"`).
 void addMacroConstants(const CppMacros &macros, CppFileFacts &facts)
 {
-    constexpr int kMaxAliasDepth = 8;
     for (auto it = macros.cbegin(); it != macros.cend(); ++it) {
-        const CppMacro *m = &it.value();
-        for (int depth = 0; m && !m->functionLike && depth < kMaxAliasDepth; ++depth) {
-            const QString value = CppPreprocessor::constantValue(m->body);
-            if (!value.isNull()) {
-                const QString name = QString::fromUtf8(it.key());
-                if (!facts.constants.contains(name))
-                    facts.constants.insert(name, value);
-                break;
-            }
-            const auto next = macros.constFind(m->body);
-            m = next == macros.cend() ? nullptr : &next.value();
-        }
+        if (it->functionLike)
+            continue;
+        const QString name = QString::fromUtf8(it.key());
+        if (facts.constants.contains(name))
+            continue;
+        const QString value = CppPreprocessor::constantValue(it->body, macros);
+        if (!value.isNull())
+            facts.constants.insert(name, value);
     }
 }
 

@@ -277,6 +277,13 @@ private Q_SLOTS:
         QVERIFY(r.exported.value("MAKE").functionLike);
         QCOMPARE(r.exported.value("MAKE").parameters, QList<QByteArray>{"x"});
         QVERIFY(CppPreprocessor::constantValue("foo()").isNull());
+        // Through other macros, defined before or after.
+        const CppMacros m = macros(
+            {{"NS", "\"rover/\""}, {"FULL", "NS \"status\""}, {"BAD", "NS + 1"}, {"LOOP", "LOOP"}});
+        QCOMPARE(CppPreprocessor::constantValue("FULL", m), QStringLiteral("rover/status"));
+        QVERIFY(CppPreprocessor::constantValue("BAD", m).isNull());
+        QVERIFY(CppPreprocessor::constantValue("LOOP", m).isNull());
+        QVERIFY(CppPreprocessor::constantValue("UNKNOWN", m).isNull());
     }
 
     // A guard is only `#ifndef G` followed at once by `#define G`.
