@@ -60,6 +60,7 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     &bytes, file->path, macroIndex.initialMacros(file->package),
                     macroIndex.lookup(file->path));
                 cppsyntax::blankExportMacros(&bytes);
+                cppsyntax::blankQtKeywords(&bytes);
                 const SyntaxTree tree =
                     SyntaxTree::parse(SyntaxTree::Grammar::Cpp, std::move(bytes), file->path);
                 facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);

@@ -4,6 +4,7 @@
 #include "cppconditionevaluator.h"
 #include "cppmacroindex.h"
 #include "cpppreprocessor.h"
+#include "cppsyntax.h"
 
 #include <QtTest>
 
@@ -312,6 +313,30 @@ private Q_SLOTS:
         QCOMPARE(kept(src), QStringLiteral("#include <other/x.hpp>|#include \"pkg/config.hpp\"|"
                                            "after"));
         QVERIFY(r.exported.contains("USE_LASER"));
+    }
+
+    // Qt's moc keywords, which the parser takes for syntax errors, keep their columns.
+    void qtKeywords()
+    {
+        QByteArray src = "class Panel : public QWidget\n"
+                         "{\n"
+                         "  Q_OBJECT  // moc\n"
+                         "public Q_SLOTS:\n"
+                         "  void a();\n"
+                         "protected slots :\n"
+                         "signals:\n"
+                         "  Q_SIGNALS:\n"
+                         "  void Q_OBJECT_like();\n"
+                         "  int slots = 0;\n"
+                         "};\n";
+        const qsizetype size = src.size();
+        cppsyntax::blankQtKeywords(&src);
+        QCOMPARE(src.size(), size);
+        QCOMPARE(src.split('\n'),
+                 (QList<QByteArray>{"class Panel : public QWidget", "{", "            // moc",
+                                    "public        :", "  void a();", "protected       :",
+                                    "public :", "  public   :", "  void Q_OBJECT_like();",
+                                    "  int slots = 0;", "};", ""}));
     }
 
     void compileDefinitions()
