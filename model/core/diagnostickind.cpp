@@ -70,6 +70,19 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "Part of a source or launch file could not be parsed. Analysis continues with what "
              "could be read, so ports or nodes in the broken region may be missing.",
              "warning"),
+        kind("preprocessor-guess", "Conditional compilation guessed",
+             "An #if or #elif condition needs something the workspace does not define: a "
+             "function-like macro of an installed header (RCLCPP_VERSION_GTE(28, 0, 0)), "
+             "__has_include, or a macro whose value is not a number. Such a condition is taken "
+             "as true: its branch is analysed and the #elif / #else branches after it are not. "
+             "Ports that exist only in those branches are missing from the diagram.",
+             "note"),
+        kind("preprocessor-malformed", "Unbalanced conditional compilation",
+             "An #endif, #else or #elif without its #if, a second #else, an #if without "
+             "#endif, or conditionals nested too deeply to evaluate. The directive is ignored "
+             "(an #if without #endif runs to the end of the file); check the file, it does not "
+             "build as it is.",
+             "warning"),
         kind("parse-failed", "File could not be parsed",
              "The parser gave up on a file (a timeout or an internal limit); nothing in it was "
              "analysed.",

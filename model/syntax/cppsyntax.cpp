@@ -345,6 +345,51 @@ void blankExportMacros(QByteArray *source)
     }
 }
 
+void blankQtKeywords(QByteArray *source)
+{
+    if (!source->contains("Q_OBJECT") && !source->contains("Q_GADGET") &&
+        !source->contains("slots") && !source->contains("signals") && !source->contains("Q_S"))
+        return;
+    char *data = source->data();
+    const qsizetype size = source->size();
+    auto word = [&](qsizetype i, qsizetype *end) {
+        qsizetype j = i;
+        while (j < size && (std::isalnum(uchar(data[j])) || data[j] == '_'))
+            ++j;
+        *end = j;
+        return std::string_view(data + i, size_t(j - i));
+    };
+    auto skipBlanks = [&](qsizetype i) {
+        while (i < size && (data[i] == ' ' || data[i] == '\t'))
+            ++i;
+        return i;
+    };
+    for (qsizetype line = 0; line < size;) {
+        qsizetype next = source->indexOf('\n', line);
+        next = next < 0 ? size : next + 1;
+        const qsizetype i = skipBlanks(line);
+        qsizetype end = 0;
+        const std::string_view first = word(i, &end);
+        const qsizetype after = skipBlanks(end);
+        const bool alone = after >= next - 1 || data[after] == '\n' || data[after] == '\r' ||
+                           (data[after] == '/' && after + 1 < size && data[after + 1] == '/');
+        if ((first == "Q_OBJECT" || first == "Q_GADGET") && alone) {
+            std::fill(data + i, data + end, ' ');
+        } else if ((first == "signals" || first == "Q_SIGNALS") && after < size &&
+                   data[after] == ':') {
+            std::fill(data + i, data + end, ' ');
+            std::copy_n("public", 6, data + i);
+        } else if (first == "public" || first == "protected" || first == "private") {
+            qsizetype end2 = 0;
+            const std::string_view second = word(after, &end2);
+            const qsizetype colon = skipBlanks(end2);
+            if ((second == "slots" || second == "Q_SLOTS") && colon < size && data[colon] == ':')
+                std::fill(data + after, data + end2, ' ');
+        }
+        line = next;
+    }
+}
+
 bool isHeaderPath(const QString &path)
 {
     const QString lower = path.toLower();

@@ -56,6 +56,11 @@ QString canonicalInterfaceType(const QString &written);
 /// lines and columns stay the same.
 void blankExportMacros(QByteArray *source);
 
+/// Overwrites the Qt moc keywords the parser cannot read, keeping offsets, lines and columns:
+/// a `Q_OBJECT` / `Q_GADGET` line is blanked, `public slots:` / `public Q_SLOTS:` loses its
+/// `slots`, and `signals:` / `Q_SIGNALS:` becomes `public:` (what moc's headers define them as).
+void blankQtKeywords(QByteArray *source);
+
 /// True for header extensions (.h .hh .hpp .hxx .inl).
 bool isHeaderPath(const QString &path);
 

@@ -1,6 +1,7 @@
 #include "cppfileextractor.h"
 
 #include "cppfunctionextractor.h"
+#include "cpppreprocessor.h"
 #include "cppsyntax.h"
 
 namespace rosarch {
@@ -456,9 +457,25 @@ void findRegistrations(const SyntaxTree &tree, CppFileFacts &facts)
                    });
 }
 
+// `#define TOPIC "scan"`, also through other macros (`#define TOPIC PREFIX "scan"`).
+void addMacroConstants(const CppMacros &macros, CppFileFacts &facts)
+{
+    for (auto it = macros.cbegin(); it != macros.cend(); ++it) {
+        if (it->functionLike)
+            continue;
+        const QString name = QString::fromUtf8(it.key());
+        if (facts.constants.contains(name))
+            continue;
+        const QString value = CppPreprocessor::constantValue(it->body, macros);
+        if (!value.isNull())
+            facts.constants.insert(name, value);
+    }
+}
+
 } // namespace
 
-CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &package)
+CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &package,
+                                       const CppMacros &macros)
 {
     CppFileFacts facts;
     facts.path = tree.file();
@@ -473,6 +490,7 @@ CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &pa
     if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE") ||
         tree.source().contains("PLUGINLIB_EXPORT_CLASS"))
         findRegistrations(tree, facts);
+    addMacroConstants(macros, facts);
     return facts;
 }
 

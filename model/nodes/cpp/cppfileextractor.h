@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cppfacts.h"
+#include "cppmacro.h"
 #include "syntaxtree.h"
 
 namespace rosarch {
@@ -10,7 +11,10 @@ namespace rosarch {
 class CppFileExtractor
 {
 public:
-    static CppFileFacts extract(const SyntaxTree &tree, const QString &package);
+    /// `macros` are those in effect at the end of the file (CppPreprocessor): the object-like
+    /// ones that stand for a string or a number become file constants, like `const` strings.
+    static CppFileFacts extract(const SyntaxTree &tree, const QString &package,
+                                const CppMacros &macros = {});
 };
 
 } // namespace rosarch

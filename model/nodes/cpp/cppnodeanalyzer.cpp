@@ -1,6 +1,7 @@
 #include "cppnodeanalyzer.h"
 
 #include "cppfileextractor.h"
+#include "cppmacroindex.h"
 #include "cppnodelinker.h"
 #include "cppsyntax.h"
 #include "sourcereader.h"
@@ -37,6 +38,11 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
 
     // Phase 1: per-file facts, in parallel. Trees are dropped as soon as a file is done.
     const SourceReader reader(m_workspace.root);
+    // Before any file is parsed: the macros the packages and the workspace headers define, so
+    // that conditional compilation is decided as the build decides it.
+    const CppMacroIndex macroIndex(m_workspace, reader, control);
+    if (control.isCanceled())
+        return {};
     const int total = int(sources.size());
     int done = 0;
     QMutex reportMutex;
@@ -50,10 +56,15 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         QByteArray bytes;
         if (!work.skip(&facts.diagnostics) && reader.read(file->path, &bytes, &facts.diagnostics)) {
             try {
+                CppPreprocessor::Result preprocessed = CppPreprocessor::run(
+                    &bytes, file->path, macroIndex.initialMacros(file->package),
+                    macroIndex.lookup(file->path));
                 cppsyntax::blankExportMacros(&bytes);
+                cppsyntax::blankQtKeywords(&bytes);
                 const SyntaxTree tree =
                     SyntaxTree::parse(SyntaxTree::Grammar::Cpp, std::move(bytes), file->path);
-                facts = CppFileExtractor::extract(tree, file->package);
+                facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
+                facts.diagnostics = preprocessed.diagnostics + facts.diagnostics;
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();
                 facts.path = file->path;

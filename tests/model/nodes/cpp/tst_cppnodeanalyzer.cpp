@@ -257,6 +257,29 @@ private Q_SLOTS:
         QCOMPARE(a.entryPoints.size(), 2);
     }
 
+    // Ports behind #if, a class whose branches open braces differently, macros as names; the
+    // ports themselves are in tests/data/cpp_preprocessor/expected.
+    void conditionalCompilation()
+    {
+        const LanguageAnalysis a = analyzeCase(QStringLiteral("cpp_preprocessor"));
+        QCOMPARE(classNames(a), (QStringList{QStringLiteral("rover_base/RoverDriver"),
+                                             QStringLiteral("rover_base/StatusReporter")}));
+        QCOMPARE(a.diagnostics.size(), 1);
+        const Diagnostic &guess = a.diagnostics.first();
+        QCOMPARE(guess.code, QStringLiteral("preprocessor-guess"));
+        QCOMPARE(guess.severity, Diagnostic::Severity::Info);
+        QCOMPARE(guess.evidence.file, QStringLiteral("src/rover_base/src/rover_driver.cpp"));
+        QCOMPARE(guess.evidence.line, 45);
+        QVERIFY(guess.message.contains(QStringLiteral("RCLCPP_VERSION_GTE(28, 0, 0)")));
+        const AtomicNode *driver = findNode(a, QStringLiteral("RoverDriver"));
+        QVERIFY(driver);
+        QStringList names;
+        for (const Port &p : driver->ports)
+            names << p.name;
+        QCOMPARE(names, (QStringList{QStringLiteral("odom"), QStringLiteral("cmd_vel"),
+                                     QStringLiteral("scan"), QStringLiteral("emergency_stop")}));
+    }
+
     void macroNoiseIsNotAnError()
     {
         // Format macros after strings, export macros, a registration without ';'.
