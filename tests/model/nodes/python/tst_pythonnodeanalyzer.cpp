@@ -450,7 +450,7 @@ private Q_SLOTS:
                 QStringLiteral("subscriber cmd_vel_in geometry_msgs/msg/Twist cb=relay literal "
                                "via=CommandRelay") +
                     h + QStringLiteral("14:9-14:75"),
-                QStringLiteral("publisher name + '/diagnostics' std_msgs/msg/String cb= expression "
+                QStringLiteral("publisher robot/diagnostics std_msgs/msg/String cb= local "
                                "expr=name + '/diagnostics' via=add_diagnostics") +
                     h + QStringLiteral("21:5-21:61"),
                 QStringLiteral("service_server self_test std_srvs/srv/Trigger cb=lambda literal "
