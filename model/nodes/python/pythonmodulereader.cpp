@@ -260,9 +260,18 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
             return true;
         }
         TSNode function = ts::field(n, "function");
-        if (!py::isDottedName(function))
+        QString target;
+        if (py::isDottedName(function)) {
+            target = m_resolver.qualifiedName(function);
+        } else if (ts::is(function, "attribute")) {
+            // `Helper(...).attach(self)`: a method of an object built on the spot
+            TSNode object = ts::field(function, "object");
+            if (ts::is(object, "call") && py::isDottedName(ts::field(object, "function")))
+                target = m_resolver.qualifiedName(ts::field(object, "function")) +
+                         QLatin1Char('.') + m_tree.text(ts::field(function, "attribute"));
+        }
+        if (target.isEmpty())
             return true;
-        const QString target = m_resolver.qualifiedName(function);
         // builtins (print, len, ...) and message constructors cannot take a node handle apart
         const bool external = !target.contains(QLatin1Char('.')) || isInterfaceName(target);
         int position = 0;

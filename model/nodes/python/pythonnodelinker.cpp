@@ -222,14 +222,18 @@ QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff,
 QList<Port> PythonNodeLinker::methodPorts(const PythonHandoff &handoff, int depth) const
 {
     // `obj.method(node)` on an object of unknown type: the one workspace class with such a
-    // method that takes the node at that position
+    // method that takes the node at that position (or the class named, when it is)
     const qsizetype dot = handoff.target.lastIndexOf(QLatin1Char('.'));
     if (dot <= 0)
         return {};
     const QString method = handoff.target.mid(dot + 1);
+    // `Helper().attach(node)` names the class
+    const int owner = m_index.findClass(handoff.target.left(dot));
     int found = -1;
     PythonHandle handle;
     for (int id = 0; id < m_index.classCount(); ++id) {
+        if (owner >= 0 && id != owner)
+            continue;
         const PythonClassFacts &c = m_index.classFacts(id);
         const qsizetype m = c.methods.indexOf(method);
         if (m < 0 || method == QLatin1String("__init__"))
