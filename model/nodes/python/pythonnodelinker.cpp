@@ -16,6 +16,8 @@ namespace {
 constexpr int kMaxDepth = 8;
 /// Classes followed for one setup call: a tree of a few dozen behaviours is usual.
 constexpr int kMaxInstantiations = 256;
+/// Classes and functions entered for one setup call.
+constexpr int kMaxVisits = 2000;
 
 // rclpy's node classes as reached through imports, and whether they are lifecycle nodes.
 const std::pair<const char *, bool> kRosNodeBases[] = {
@@ -315,8 +317,14 @@ void PythonNodeLinker::reachInstantiations(const PythonScopeFacts &scope,
         const int fn = cls >= 0 ? -1 : m_index.findFunction(call.target);
         if ((cls < 0 && fn < 0) || (cls >= 0 && nodeKind(cls) != NotANode))
             continue;
-        if (depth > kMaxDepth || reach->found.size() >= kMaxInstantiations) {
-            reportBound(call.evidence, QStringLiteral("classes that build the behaviour tree"));
+        if (reach->stopped)
+            break;
+        const bool deep = depth > kMaxDepth;
+        reach->stopped = reach->found.size() >= kMaxInstantiations || reach->visits >= kMaxVisits;
+        if (deep || reach->stopped) {
+            if (!reach->reported)
+                reportBound(call.evidence, QStringLiteral("classes that build the behaviour tree"));
+            reach->reported = true;
             break;
         }
         const QList<PythonArgument> arguments =
@@ -331,6 +339,7 @@ void PythonNodeLinker::reachInstantiations(const PythonScopeFacts &scope,
                      : &m_index.functionFacts(fn);
         if (reach->open.contains(next))
             continue;
+        ++reach->visits;
         if (cls >= 0)
             reachInstantiations(*next, nullptr, nullptr, here, depth + 1, reach);
         else
@@ -384,11 +393,13 @@ void PythonNodeLinker::reportBound(const Evidence &at, const QString &what) cons
     Diagnostic d;
     d.severity = Diagnostic::Severity::Info;
     d.code = QStringLiteral("helper-depth");
-    d.message = QStringLiteral("Stopped following %1 here (bounds: %2 levels, %3 classes per "
-                               "tree); ports created beyond it are not given to the node.")
+    d.message = QStringLiteral("Stopped following %1 here (bounds: %2 levels; %3 classes and "
+                               "%4 calls per tree); ports created beyond it are not given to "
+                               "the node.")
                     .arg(what)
                     .arg(kMaxDepth)
-                    .arg(kMaxInstantiations);
+                    .arg(kMaxInstantiations)
+                    .arg(kMaxVisits);
     d.evidence = at;
     if (!m_diagnostics.contains(d))
         m_diagnostics.append(d);

@@ -70,6 +70,9 @@ private:
     {
         QList<Instantiation> found;
         QList<const PythonScopeFacts *> open; ///< scopes being followed (cycles)
+        int visits = 0;        ///< scopes followed so far (a call graph can fan out widely)
+        bool reported = false; ///< a bound was hit (one diagnostic per setup call)
+        bool stopped = false;  ///< a budget ran out: follow nothing more
     };
 
     int nodeKind(int id, int depth = 0) const;

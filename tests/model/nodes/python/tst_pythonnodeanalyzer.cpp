@@ -691,6 +691,36 @@ private Q_SLOTS:
         QCOMPARE(a.diagnostics.first().evidence.file, QStringLiteral("src/demo/demo/deep.py"));
         QVERIFY2(a.diagnostics.first().message.contains(QStringLiteral("behaviour tree")),
                  qPrintable(a.diagnostics.first().message));
+
+        // functions that each call the next six times, 6^5 paths: following stops at the
+        // bound, and the leaf found before it still counts
+        QByteArray wide = "from rclpy.node import Node\n"
+                          "from std_msgs.msg import String\n"
+                          "class Leaf:\n"
+                          "    def setup(self, **kwargs):\n"
+                          "        kwargs['node'].create_publisher(String, 'wide', 1)\n"
+                          "def level0():\n"
+                          "    return 0\n";
+        for (int i = 1; i <= 5; ++i)
+            wide += QStringLiteral("def level%1():\n    return [%2]\n")
+                        .arg(i)
+                        .arg(QStringList(6, QStringLiteral("level%1()").arg(i - 1))
+                                 .join(QStringLiteral(", ")))
+                        .toUtf8();
+        wide += "class Wide(Node):\n"
+                "    def __init__(self):\n"
+                "        super().__init__('wide')\n"
+                "        self.leaf = Leaf()\n"
+                "        level5()\n"
+                "        self.setup(node=self)\n";
+        QTemporaryDir wideDir;
+        const LanguageAnalysis w = analyzeModules(wideDir, {{QStringLiteral("wide"), wide}});
+        const AtomicNode *wideNode = node(w, QStringLiteral("demo.wide.Wide"));
+        QVERIFY(wideNode);
+        QCOMPARE(wideNode->ports.size(), 1);
+        QCOMPARE(wideNode->ports.first().name, QStringLiteral("wide"));
+        QCOMPARE(w.diagnostics.size(), 1);
+        QCOMPARE(w.diagnostics.first().code, QStringLiteral("helper-depth"));
     }
 
     void syntaxErrorKeepsTheRest()
