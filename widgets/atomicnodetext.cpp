@@ -155,6 +155,12 @@ QString AtomicNodeText::portToolTip(const AtomicNode &node, const Port &port)
         line(tr("Exists only if: %1").arg(html(port.guard)));
     if (!port.via.isEmpty())
         line(tr("Created through: %1").arg(html(port.via)));
+    if (!port.viaEvidence.isEmpty()) {
+        QStringList steps;
+        for (const Evidence &e : port.viaEvidence)
+            steps << html(location(e));
+        line(tr("Reached from the node through %1").arg(steps.join(QStringLiteral(" → "))));
+    }
     if (port.inherited)
         line(tr("Declared in a base class"));
     if (port.evidence.isValid())

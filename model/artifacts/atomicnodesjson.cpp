@@ -38,6 +38,12 @@ Json portJson(const Port &p)
     if (p.inherited)
         j["inherited"] = true;
     j["evidence"] = EvidenceJson::toJson(p.evidence);
+    if (!p.viaEvidence.isEmpty()) {
+        Json chain = Json::array();
+        for (const Evidence &e : p.viaEvidence)
+            chain.push_back(EvidenceJson::toJson(e));
+        j["via_evidence"] = chain;
+    }
     return j;
 }
 
@@ -100,6 +106,9 @@ bool readPort(const Json &j, Port *p, QString *error)
     p->inherited = j.value("inherited", false);
     if (j.contains("evidence"))
         p->evidence = EvidenceJson::fromJson(j["evidence"]);
+    if (j.contains("via_evidence") && j["via_evidence"].is_array())
+        for (const Json &e : j["via_evidence"])
+            p->viaEvidence.append(EvidenceJson::fromJson(e));
     return true;
 }
 

@@ -127,6 +127,11 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "warning"),
         kind("no-workspace", "Not a workspace",
              "The folder has no ROS 2 package (no package.xml); nothing was analysed.", "error"),
+        kind("helper-depth", "Helper chain too deep",
+             "Ports created through helpers, behaviours or functions nested deeper than the "
+             "analysis follows (or a behaviour tree of more classes than it follows) are not "
+             "given to the node. The message names where it stopped.",
+             "note"),
         kind("unresolved-entry-point", "Entry point without a node",
              "A setup.py console script names a function whose node class could not be found.",
              "note"),

@@ -2,6 +2,7 @@
 
 #include "evidence.h"
 
+#include <QList>
 #include <QString>
 
 namespace rosarch {
@@ -62,6 +63,9 @@ struct Port
     QString qos;            ///< the QoS argument as written at the call ("" = none given)
     bool inherited = false; ///< declared in a project base class
     Evidence evidence;
+    /// Where the node reaches the helper that creates the port, outermost first: hand-offs,
+    /// setup calls, instantiations ("" via = empty).
+    QList<Evidence> viaEvidence;
 
     bool isResolved() const { return nameOrigin != NameOrigin::Expression; }
     bool operator==(const Port &) const = default;

@@ -58,6 +58,8 @@ AtomicNodeList sampleList()
     sub.nameOrigin = NameOrigin::Parameter;
     sub.parameter = QStringLiteral("echo_topic");
     sub.guard = QStringLiteral("self.use_echo");
+    pub.via = QStringLiteral("ChatBehaviour");
+    pub.viaEvidence = {at(talkerFile, 20, 20), at(QStringLiteral("src/alpha_py/tree.py"), 4, 4)};
     talker.ports = {pub, sub};
 
     const QString listenerFile = QStringLiteral("src/beta_cpp/src/listener.cpp");
@@ -270,6 +272,14 @@ private Q_SLOTS:
         QVERIFY(portTip.contains(QStringLiteral("Service server")));
         QVERIFY(portTip.contains(QStringLiteral("std_srvs/srv/Trigger")));
         QVERIFY(portTip.contains(QStringLiteral("on_reset")));
+        // a port made by a helper says how the node reaches it
+        const QString viaTip = model.portIndex(QStringLiteral("arc_1"), QStringLiteral("p1"))
+                                   .data(Qt::ToolTipRole)
+                                   .toString();
+        QVERIFY2(viaTip.contains(QStringLiteral("ChatBehaviour")), qPrintable(viaTip));
+        QVERIFY2(viaTip.contains(
+                     QStringLiteral("src/alpha_py/alpha_py/talker.py:20 → src/alpha_py/tree.py:4")),
+                 qPrintable(viaTip));
         // tooltips are on every column, not just the name
         QCOMPARE(model
                      .portIndex(QStringLiteral("arc_2"), QStringLiteral("ps1"),

@@ -20,7 +20,8 @@ struct PythonHandle
     {
         Self,
         Parameter,
-        Procedural
+        Procedural,
+        Setup ///< the node handed over later by `setup(node=...)` (py_trees' setup protocol)
     };
 
     Kind kind = Kind::Self;
@@ -55,6 +56,14 @@ struct PythonParameterRef
     bool isValid() const { return index >= 0; }
 };
 
+/// One piece of a port name built from parts (f-string, `.format`, `+`): literal text, or a
+/// parameter that each call site supplies.
+struct PythonNamePart
+{
+    QString text; ///< the literal text when `from` is not valid
+    PythonParameterRef from;
+};
+
 /// A port-creating call (create_publisher, ActionServer(...), ...).
 struct PythonPortFact
 {
@@ -63,6 +72,7 @@ struct PythonPortFact
     PythonHandle handle;
     PythonParameterRef nameFrom;
     PythonParameterRef typeFrom;
+    QList<PythonNamePart> nameParts; ///< the name's parts when some are parameters; else empty
 };
 
 /// A call that passes a node handle on to a helper class or function.
@@ -74,6 +84,7 @@ struct PythonHandoff
     PythonHandle handle;             ///< which handle is passed
     QString method;                  ///< enclosing method ("" in functions)
     QList<PythonArgument> arguments; ///< all arguments of the call
+    Evidence evidence;               ///< the call
 };
 
 /// A call `Name(...)` / `mod.Name(...)` that may instantiate a class or call a function.
@@ -81,6 +92,7 @@ struct PythonCall
 {
     QString target; ///< callee, qualified through the imports
     QList<PythonArgument> arguments;
+    Evidence evidence; ///< the call
 };
 
 /// A node built without a class: `x = rclpy.create_node('name')`, `x = Node('name')`.

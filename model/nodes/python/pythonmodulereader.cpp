@@ -2,6 +2,8 @@
 
 #include "pythonsyntax.h"
 
+#include <algorithm>
+
 namespace rosarch {
 
 namespace {
@@ -42,6 +44,26 @@ PythonHandle parameterHandle(int index, const QString &name, const QString &meth
 bool isSuperCall(const SyntaxTree &tree, TSNode n)
 {
     return ts::is(n, "call") && tree.view(ts::field(n, "function")) == "super";
+}
+
+/// py_trees' setup protocol: `def setup(self, node=None, **kwargs)` receives the node that the
+/// tree hands over, as its `node` parameter or as `kwargs['node']` / `kwargs.get('node')`.
+void addSetupHandles(const SyntaxTree &tree, TSNode method, QHash<QString, PythonHandle> *handles)
+{
+    PythonHandle setup;
+    setup.kind = PythonHandle::Kind::Setup;
+    for (const py::Parameter &p : py::parameters(tree, method))
+        if (p.name == QLatin1String("node"))
+            handles->insert(p.name, setup);
+    for (TSNode p : ts::namedChildren(ts::field(method, "parameters"))) {
+        TSNode splat = ts::is(p, "typed_parameter") ? ts_node_named_child(p, 0) : p;
+        if (!ts::is(splat, "dictionary_splat_pattern"))
+            continue;
+        const QString kwargs = tree.text(ts_node_named_child(splat, 0));
+        for (const char *form : {"%1['node']", "%1[\"node\"]", "%1.get('node')", "%1.get(\"node\")",
+                                 "%1.get('node',None)", "%1.get(\"node\",None)"})
+            handles->insert(QString::fromLatin1(form).arg(kwargs), setup);
+    }
 }
 } // namespace
 
@@ -217,13 +239,39 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
             };
             fact.nameFrom = parameterRef(m_ports.nameArgument(n, kind));
             fact.typeFrom = parameterRef(m_ports.typeArgument(n, kind));
+            // a name built from parts (f-string, format, +): literal where all parts are known,
+            // else a template that each call site completes
+            QList<PythonNamePart> parts;
+            if (!fact.nameFrom.isValid() && fact.port.nameOrigin == NameOrigin::Expression &&
+                nameParts(m_ports.nameArgument(n, kind), 0, &parts)) {
+                const bool literal =
+                    std::all_of(parts.cbegin(), parts.cend(),
+                                [](const PythonNamePart &p) { return !p.from.isValid(); });
+                if (literal) {
+                    fact.port.name.clear();
+                    for (const PythonNamePart &p : parts)
+                        fact.port.name += p.text;
+                    fact.port.nameOrigin = NameOrigin::Local;
+                } else {
+                    fact.nameParts = parts;
+                }
+            }
             facts->ports.append(fact);
             return true;
         }
         TSNode function = ts::field(n, "function");
-        if (!py::isDottedName(function))
+        QString target;
+        if (py::isDottedName(function)) {
+            target = m_resolver.qualifiedName(function);
+        } else if (ts::is(function, "attribute")) {
+            // `Helper(...).attach(self)`: a method of an object built on the spot
+            TSNode object = ts::field(function, "object");
+            if (ts::is(object, "call") && py::isDottedName(ts::field(object, "function")))
+                target = m_resolver.qualifiedName(ts::field(object, "function")) +
+                         QLatin1Char('.') + m_tree.text(ts::field(function, "attribute"));
+        }
+        if (target.isEmpty())
             return true;
-        const QString target = m_resolver.qualifiedName(function);
         // builtins (print, len, ...) and message constructors cannot take a node handle apart
         const bool external = !target.contains(QLatin1Char('.')) || isInterfaceName(target);
         int position = 0;
@@ -245,6 +293,7 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
                 h.handle = it.value();
                 h.method = method;
                 h.arguments = arguments(n, parameterNames, false);
+                h.evidence = m_tree.evidence(n);
                 facts->handoffs.append(h);
             }
             if (!named)
@@ -253,13 +302,163 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
         if (m_tree.view(function).substr(0, 5) != "self.") {
             PythonCall call;
             call.target = target;
-            const QString last = target.section(QLatin1Char('.'), -1);
-            if (!last.isEmpty() && last.at(0).isUpper() && !isInterfaceName(target))
+            // arguments of workspace functions too: they may pass on what builds a helper
+            if (!external)
                 call.arguments = arguments(n, parameterNames, false);
+            call.evidence = m_tree.evidence(n);
             facts->calls.append(call);
         }
         return true;
     });
+}
+
+PythonParameterRef PythonModuleReader::parameterOf(TSNode identifier) const
+{
+    const PythonScopeIndex &scopes = m_resolver.scopes();
+    TSNode f = scopes.enclosingFunction(identifier);
+    if (ts::isNull(f))
+        return {};
+    // parameters of a top-level function or of a method; a nested function's are not passed in
+    // from a call site that the linker sees
+    const bool topLevel = scopes.isTopLevel(f);
+    const bool method = !topLevel && ts::isNull(scopes.enclosingFunction(f)) &&
+                        !ts::isNull(scopes.enclosingClass(f));
+    if (!topLevel && !method)
+        return {};
+    const QString name = m_tree.text(identifier);
+    const auto params = py::parameters(m_tree, f);
+    const size_t skip = method ? 1 : 0;
+    for (size_t i = skip; i < params.size(); ++i) {
+        if (params[i].name != name)
+            continue;
+        const QString function = m_tree.text(ts::field(f, "name"));
+        const bool init = !method || function == QLatin1String("__init__");
+        return {int(i - skip), name, init ? QString() : function};
+    }
+    return {};
+}
+
+bool PythonModuleReader::nameParts(TSNode expr, int depth, QList<PythonNamePart> *parts) const
+{
+    if (ts::isNull(expr) || depth > 8)
+        return false;
+    QString literal;
+    if (PythonResolver::stringLiteral(m_tree, expr, &literal)) {
+        parts->append({literal, {}});
+        return true;
+    }
+    const std::string_view t = ts::type(expr);
+    if (t == "parenthesized_expression" && ts_node_named_child_count(expr) == 1)
+        return nameParts(ts_node_named_child(expr, 0), depth + 1, parts);
+    if (t == "string") { // an f-string
+        for (TSNode c : ts::namedChildren(expr)) {
+            const std::string_view ct = ts::type(c);
+            if (ct == "string_start") {
+                if (m_tree.view(c).find_first_of("bB") != std::string_view::npos)
+                    return false;
+            } else if (ct == "string_content") {
+                parts->append({m_tree.text(c), {}});
+            } else if (ct == "interpolation") {
+                // a conversion or format spec (`{x!r}`, `{x:>4}`) changes the text
+                if (ts_node_named_child_count(c) != 1 ||
+                    !nameParts(ts::field(c, "expression"), depth + 1, parts))
+                    return false;
+            } else if (ct != "string_end") {
+                return false;
+            }
+        }
+        return true;
+    }
+    if (t == "concatenated_string") {
+        for (TSNode c : ts::namedChildren(expr))
+            if (!nameParts(c, depth + 1, parts))
+                return false;
+        return true;
+    }
+    if (t == "binary_operator") {
+        return m_tree.view(ts::field(expr, "operator")) == "+" &&
+               nameParts(ts::field(expr, "left"), depth + 1, parts) &&
+               nameParts(ts::field(expr, "right"), depth + 1, parts);
+    }
+    if (t == "call") {
+        const std::string_view callee = py::calleeName(m_tree, expr);
+        TSNode function = ts::field(expr, "function");
+        if (callee == "format" && ts::is(function, "attribute"))
+            return formatParts(expr, depth, parts);
+        if (callee == "str" && ts::is(function, "identifier"))
+            return nameParts(py::positional(expr, 0), depth + 1, parts);
+    }
+    if (t == "identifier" || t == "attribute") {
+        TSNode assigned = m_resolver.assignedExpression(expr);
+        if (!ts::isNull(assigned))
+            return nameParts(assigned, depth + 1, parts);
+        if (t == "identifier") {
+            const PythonParameterRef ref = parameterOf(expr);
+            if (ref.isValid()) {
+                parts->append({QString(), ref});
+                return true;
+            }
+        }
+    }
+    // a known string; one from a declared parameter stays an expression, since launch files
+    // may set the parameter and the rest of the name would be lost
+    const PythonValue v = m_resolver.value(expr);
+    if (v.origin == NameOrigin::Expression || !v.parameter.isEmpty())
+        return false;
+    parts->append({v.value, {}});
+    return true;
+}
+
+bool PythonModuleReader::formatParts(TSNode call, int depth, QList<PythonNamePart> *parts) const
+{
+    QString format;
+    if (!PythonResolver::stringLiteral(m_tree, py::calleeObject(call), &format))
+        return false;
+    QString text;
+    int next = 0;
+    for (qsizetype i = 0; i < format.size(); ++i) {
+        const QChar c = format.at(i);
+        const bool doubled = i + 1 < format.size() && format.at(i + 1) == c;
+        if (c == QLatin1Char('}')) {
+            text += c;
+            i += doubled ? 1 : 0;
+            continue;
+        }
+        if (c != QLatin1Char('{')) {
+            text += c;
+            continue;
+        }
+        if (doubled) {
+            text += c;
+            ++i;
+            continue;
+        }
+        const qsizetype close = format.indexOf(QLatin1Char('}'), i);
+        if (close < 0)
+            return false;
+        const QString field = format.mid(i + 1, close - i - 1);
+        bool isIndex = false;
+        const int index = field.toInt(&isIndex);
+        TSNode argument{};
+        if (field.isEmpty()) {
+            argument = py::positional(call, next++);
+        } else if (isIndex) {
+            argument = py::positional(call, index);
+        } else if (!field.contains(QLatin1Char(':')) && !field.contains(QLatin1Char('!')) &&
+                   !field.contains(QLatin1Char('.')) && !field.contains(QLatin1Char('['))) {
+            const std::string keyword = field.toStdString();
+            argument = py::keyword(m_tree, call, keyword);
+        }
+        if (!text.isEmpty())
+            parts->append({text, {}});
+        text.clear();
+        if (!nameParts(argument, depth + 1, parts))
+            return false;
+        i = close;
+    }
+    if (!text.isEmpty())
+        parts->append({text, {}});
+    return true;
 }
 
 PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
@@ -334,6 +533,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         if (facts.methods.at(qsizetype(i)) == QLatin1String("__init__")) {
             for (size_t p = 1; p < params.size(); ++p)
                 visible.insert(params[p].name, parameterHandle(int(p - 1), params[p].name));
+        } else if (facts.methods.at(qsizetype(i)) == QLatin1String("setup")) {
+            addSetupHandles(m_tree, methods[i], &visible);
         }
         findAliases(ts::field(methods[i], "body"), &members, true, facts.methods.at(qsizetype(i)),
                     methods[i], &facts, visible);
@@ -352,6 +553,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
             receivers.insert(params[p].name, parameterHandle(int(p - 1), params[p].name,
                                                              isInit ? QString() : name));
         }
+        if (name == QLatin1String("setup"))
+            addSetupHandles(m_tree, methods[i], &receivers);
         TSNode body = ts::field(methods[i], "body");
         findAliases(body, &receivers, false, name, methods[i], &facts, {});
         scan(body, receivers, name, parameterNames, &facts);

@@ -33,6 +33,9 @@ private:
                                     bool skipFirst) const;
     QList<PythonParameter> parameters(TSNode function, bool skipSelf) const;
     QString key(TSNode expr) const;
+    bool nameParts(TSNode expr, int depth, QList<PythonNamePart> *parts) const;
+    bool formatParts(TSNode call, int depth, QList<PythonNamePart> *parts) const;
+    PythonParameterRef parameterOf(TSNode identifier) const;
 
     const SyntaxTree &m_tree;
     PythonResolver m_resolver;

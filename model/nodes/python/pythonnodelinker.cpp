@@ -1,5 +1,7 @@
 #include "pythonnodelinker.h"
 
+#include "pythonbinding.h"
+
 #include <QFileInfo>
 #include <QSet>
 
@@ -7,8 +9,15 @@
 
 namespace rosarch {
 
+using PythonBinding::argumentAt;
+using PythonBinding::substituteName;
+
 namespace {
 constexpr int kMaxDepth = 8;
+/// Classes followed for one setup call: a tree of a few dozen behaviours is usual.
+constexpr int kMaxInstantiations = 256;
+/// Classes and functions entered for one setup call.
+constexpr int kMaxVisits = 2000;
 
 // rclpy's node classes as reached through imports, and whether they are lifecycle nodes.
 const std::pair<const char *, bool> kRosNodeBases[] = {
@@ -33,29 +42,12 @@ bool sameHandle(const PythonHandle &a, const PythonHandle &b)
            (a.kind == PythonHandle::Kind::Self || (a.index == b.index && a.method == b.method));
 }
 
-const PythonArgument *argumentAt(const QList<PythonArgument> &args, int index,
-                                 const QString &keyword)
+/// `tree.setup(node=self)`, `root.setup(node=node)`, `behaviour.setup(self)`: py_trees' setup
+/// protocol, which hands the node to every behaviour of the tree.
+bool isSetupHandoff(const PythonHandoff &h)
 {
-    if (!keyword.isEmpty())
-        for (const PythonArgument &a : args)
-            if (a.keyword == keyword)
-                return &a;
-    int position = 0;
-    for (const PythonArgument &a : args) {
-        if (!a.keyword.isEmpty())
-            continue;
-        if (position++ == index)
-            return &a;
-    }
-    return nullptr;
-}
-
-/// The port's name is a parameter; the caller passed `a` for it.
-void substituteName(Port *port, const PythonArgument &a)
-{
-    port->name = a.value;
-    port->nameOrigin = a.origin == NameOrigin::Literal ? NameOrigin::Local : a.origin;
-    port->parameter = a.parameter;
+    return h.target.section(QLatin1Char('.'), -1) == QLatin1String("setup") &&
+           (h.keyword == QLatin1String("node") || (h.keyword.isEmpty() && h.argument == 0));
 }
 
 bool portLess(const Port &a, const Port &b)
@@ -132,6 +124,14 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
         ScopedPort sp;
         sp.port = f.port;
         sp.method = f.method;
+        if (!f.nameParts.isEmpty()) {
+            // a name built from the parameters of one of the node's methods: their defaults
+            const QString method = f.nameParts.first().from.method;
+            const qsizetype m =
+                c.methods.indexOf(method.isEmpty() ? QStringLiteral("__init__") : method);
+            if (m >= 0)
+                PythonBinding::applyArguments(&sp.port, f, method, {}, &c.methodParameters.at(m));
+        }
         if (f.nameFrom.isValid() && f.nameFrom.method.isEmpty()) {
             sp.parameter = f.nameFrom.index;
             sp.parameterName = f.nameFrom.name;
@@ -140,7 +140,7 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
     }
     for (const PythonHandoff &h : c.handoffs)
         if (h.handle.kind == PythonHandle::Kind::Self)
-            for (const Port &p : helperPorts(h, depth + 1)) {
+            for (const Port &p : helperPorts(h, c, depth + 1)) {
                 ScopedPort sp;
                 sp.port = p;
                 sp.method = h.method;
@@ -173,10 +173,15 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
     return out;
 }
 
-QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff, int depth) const
+QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff,
+                                          const PythonScopeFacts &from, int depth) const
 {
-    if (depth > kMaxDepth)
+    if (depth > kMaxDepth) {
+        reportBound(handoff.evidence, QStringLiteral("helpers handed the node"));
         return {};
+    }
+    if (isSetupHandoff(handoff))
+        return setupPorts(handoff, from, depth);
     auto parameterHandle = [&](const QList<PythonParameter> &params, PythonHandle *handle) {
         int index = handoff.argument;
         if (index < 0)
@@ -190,6 +195,7 @@ QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff, int dept
         handle->name = params.at(index).name;
         return true;
     };
+    QList<Port> out;
     PythonHandle handle;
     int cls = m_index.findClass(handoff.target);
     // a helper without a constructor of its own takes the node through its base's constructor
@@ -197,32 +203,39 @@ QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff, int dept
         const QList<int> bases = m_index.projectBases(cls);
         cls = bases.isEmpty() ? -1 : bases.first();
     }
+    const int fn = cls >= 0 ? -1 : m_index.findFunction(handoff.target);
     if (cls >= 0) {
         const PythonClassFacts &c = m_index.classFacts(cls);
-        if (!parameterHandle(c.initParameters, &handle))
-            return {};
-        return scopePorts(c, handle, c.name, depth, &handoff.arguments);
+        if (parameterHandle(c.initParameters, &handle))
+            out = scopePorts(c, handle, c.name, depth, &handoff.arguments, &c.initParameters);
+    } else if (fn >= 0) {
+        const PythonFunctionFacts &function = m_index.functionFacts(fn);
+        if (parameterHandle(function.parameters, &handle))
+            out = scopePorts(function, handle, function.name, depth, &handoff.arguments,
+                             &function.parameters);
+    } else {
+        out = methodPorts(handoff, depth);
     }
-    const int fn = m_index.findFunction(handoff.target);
-    if (fn < 0)
-        return methodPorts(handoff, depth);
-    const PythonFunctionFacts &function = m_index.functionFacts(fn);
-    if (!parameterHandle(function.parameters, &handle))
-        return {};
-    return scopePorts(function, handle, function.name, depth, &handoff.arguments);
+    for (Port &p : out)
+        p.viaEvidence.prepend(handoff.evidence);
+    return out;
 }
 
 QList<Port> PythonNodeLinker::methodPorts(const PythonHandoff &handoff, int depth) const
 {
     // `obj.method(node)` on an object of unknown type: the one workspace class with such a
-    // method that takes the node at that position
+    // method that takes the node at that position (or the class named, when it is)
     const qsizetype dot = handoff.target.lastIndexOf(QLatin1Char('.'));
     if (dot <= 0)
         return {};
     const QString method = handoff.target.mid(dot + 1);
+    // `Helper().attach(node)` names the class
+    const int owner = m_index.findClass(handoff.target.left(dot));
     int found = -1;
     PythonHandle handle;
     for (int id = 0; id < m_index.classCount(); ++id) {
+        if (owner >= 0 && id != owner)
+            continue;
         const PythonClassFacts &c = m_index.classFacts(id);
         const qsizetype m = c.methods.indexOf(method);
         if (m < 0 || method == QLatin1String("__init__"))
@@ -246,12 +259,14 @@ QList<Port> PythonNodeLinker::methodPorts(const PythonHandoff &handoff, int dept
     if (found < 0)
         return {};
     const PythonClassFacts &c = m_index.classFacts(found);
-    return scopePorts(c, handle, c.name, depth, &handoff.arguments);
+    return scopePorts(c, handle, c.name, depth, &handoff.arguments,
+                      &c.methodParameters.at(c.methods.indexOf(method)));
 }
 
 QList<Port> PythonNodeLinker::scopePorts(const PythonScopeFacts &scope, const PythonHandle &handle,
                                          const QString &via, int depth,
-                                         const QList<PythonArgument> *arguments) const
+                                         const QList<PythonArgument> *arguments,
+                                         const QList<PythonParameter> *parameters) const
 {
     QList<Port> out;
     for (const PythonPortFact &f : scope.ports) {
@@ -260,22 +275,134 @@ QList<Port> PythonNodeLinker::scopePorts(const PythonScopeFacts &scope, const Py
         Port p = f.port;
         if (p.via.isEmpty())
             p.via = via;
-        if (arguments && f.nameFrom.isValid() && f.nameFrom.method == handle.method) {
-            const PythonArgument *a = argumentAt(*arguments, f.nameFrom.index, f.nameFrom.name);
-            if (a && a->isString)
-                substituteName(&p, *a);
-        }
-        if (arguments && f.typeFrom.isValid() && f.typeFrom.method == handle.method) {
-            const PythonArgument *a = argumentAt(*arguments, f.typeFrom.index, f.typeFrom.name);
-            if (a && !a->interfaceType.isEmpty())
-                p.type = a->interfaceType;
-        }
+        if (arguments)
+            PythonBinding::applyArguments(&p, f, handle.method, *arguments, parameters);
         out.append(p);
     }
     for (const PythonHandoff &h : scope.handoffs)
         if (sameHandle(h.handle, handle))
-            out.append(helperPorts(h, depth + 1));
+            out.append(helperPorts(h, scope, depth + 1));
     return out;
+}
+
+QList<Port> PythonNodeLinker::setupPorts(const PythonHandoff &handoff, const PythonScopeFacts &from,
+                                         int depth) const
+{
+    // py_trees' setup(node=...) reaches every behaviour of the tree; the tree is built from
+    // the workspace classes instantiated where the node sets it up, directly or in functions
+    // called from there
+    Reach reach;
+    reachInstantiations(from, nullptr, nullptr, {handoff.evidence}, depth, &reach);
+    QList<Port> out;
+    for (const Instantiation &i : reach.found) {
+        for (const ScopedPort &sp : setupClassPorts(i.id, i.arguments, depth + 1)) {
+            Port p = sp.port;
+            p.via = m_index.classFacts(i.id).name;
+            p.viaEvidence = i.chain + p.viaEvidence;
+            out.append(p);
+        }
+    }
+    return out;
+}
+
+void PythonNodeLinker::reachInstantiations(const PythonScopeFacts &scope,
+                                           const QList<PythonArgument> *bound,
+                                           const QList<PythonParameter> *parameters,
+                                           const QList<Evidence> &chain, int depth,
+                                           Reach *reach) const
+{
+    reach->open.append(&scope);
+    for (const PythonCall &call : scope.calls) {
+        const int cls = m_index.findClass(call.target);
+        const int fn = cls >= 0 ? -1 : m_index.findFunction(call.target);
+        if ((cls < 0 && fn < 0) || (cls >= 0 && nodeKind(cls) != NotANode))
+            continue;
+        if (reach->stopped)
+            break;
+        const bool deep = depth > kMaxDepth;
+        reach->stopped = reach->found.size() >= kMaxInstantiations || reach->visits >= kMaxVisits;
+        if (deep || reach->stopped) {
+            if (!reach->reported)
+                reportBound(call.evidence, QStringLiteral("classes that build the behaviour tree"));
+            reach->reported = true;
+            break;
+        }
+        const QList<PythonArgument> arguments =
+            bound ? PythonBinding::bind(call.arguments, *bound, *parameters) : call.arguments;
+        const QList<Evidence> here = chain + QList<Evidence>{call.evidence};
+        if (cls >= 0)
+            reach->found.append({cls, arguments, here});
+        // what a workspace class or function builds in turn (a composite of its own, a
+        // function returning a subtree)
+        const PythonScopeFacts *next =
+            cls >= 0 ? static_cast<const PythonScopeFacts *>(&m_index.classFacts(cls))
+                     : &m_index.functionFacts(fn);
+        if (reach->open.contains(next))
+            continue;
+        ++reach->visits;
+        if (cls >= 0)
+            reachInstantiations(*next, nullptr, nullptr, here, depth + 1, reach);
+        else
+            reachInstantiations(*next, &arguments, &m_index.functionFacts(fn).parameters, here,
+                                depth + 1, reach);
+    }
+    reach->open.removeLast();
+}
+
+QList<PythonNodeLinker::ScopedPort>
+PythonNodeLinker::setupClassPorts(int id, const QList<PythonArgument> &arguments, int depth) const
+{
+    QList<ScopedPort> out;
+    const PythonClassFacts &c = m_index.classFacts(id);
+    if (depth > kMaxDepth) {
+        reportBound(c.evidence, QStringLiteral("base classes of a behaviour"));
+        return out;
+    }
+    PythonHandle setup;
+    setup.kind = PythonHandle::Kind::Setup;
+    for (const PythonPortFact &f : c.ports) {
+        if (!sameHandle(f.handle, setup))
+            continue;
+        ScopedPort sp;
+        sp.port = f.port;
+        sp.method = f.method;
+        PythonBinding::applyArguments(&sp.port, f, QString(), arguments, &c.initParameters);
+        out.append(sp);
+    }
+    for (const PythonHandoff &h : c.handoffs) {
+        if (!sameHandle(h.handle, setup))
+            continue;
+        for (const Port &p : helperPorts(h, c, depth + 1))
+            out.append({p, h.method, -1, {}});
+    }
+    for (int base : m_index.projectBases(id)) {
+        for (const ScopedPort &sp :
+             setupClassPorts(base, PythonBinding::forwardToBase(c, arguments), depth + 1)) {
+            // an override that does not call the base's version replaces its ports
+            if (!sp.method.isEmpty() && c.methods.contains(sp.method) &&
+                !c.superCalledMethods.contains(sp.method))
+                continue;
+            out.append(sp);
+        }
+    }
+    return out;
+}
+
+void PythonNodeLinker::reportBound(const Evidence &at, const QString &what) const
+{
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Info;
+    d.code = QStringLiteral("helper-depth");
+    d.message = QStringLiteral("Stopped following %1 here (bounds: %2 levels; %3 classes and "
+                               "%4 calls per tree); ports created beyond it are not given to "
+                               "the node.")
+                    .arg(what)
+                    .arg(kMaxDepth)
+                    .arg(kMaxInstantiations)
+                    .arg(kMaxVisits);
+    d.evidence = at;
+    if (!m_diagnostics.contains(d))
+        m_diagnostics.append(d);
 }
 
 PythonNodeLinker::NameInfo PythonNodeLinker::nameInfo(int id, int depth) const
@@ -492,6 +619,7 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         n.ports = sortedUnique(scopePorts(*p.scope, handle, QString(), 0));
         nodes.append(n);
     }
+    out->diagnostics.append(m_diagnostics);
     std::sort(nodes.begin(), nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
         return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file,
                         a.evidence.line) < std::tie(b.packageName, b.className, b.qualifiedName,

@@ -456,6 +456,45 @@ const PythonResolver::AssignmentIndex &PythonResolver::members(TSNode classNode)
     return index;
 }
 
+TSNode PythonResolver::assignedExpression(TSNode expr) const
+{
+    if (ts::is(expr, "identifier")) {
+        const QString name = m_tree.text(expr);
+        const uint32_t at = ts_node_start_byte(expr);
+        for (TSNode f = m_scopes.enclosingFunction(expr); !ts::isNull(f);
+             f = m_scopes.enclosingFunction(f)) {
+            const auto &index = locals(f);
+            const auto it = index.constFind(name);
+            if (it == index.constEnd() || it->isEmpty())
+                continue;
+            TSNode pick{};
+            for (const Assignment &a : *it)
+                if (a.byte < at)
+                    pick = a.right;
+            return pick;
+        }
+        return TSNode{};
+    }
+    if (!ts::is(expr, "attribute") || m_tree.view(ts::field(expr, "object")) != "self")
+        return TSNode{};
+    TSNode cls = m_scopes.enclosingClass(expr);
+    if (ts::isNull(cls))
+        return TSNode{};
+    const auto &index = members(cls);
+    const auto it = index.constFind(m_tree.text(ts::field(expr, "attribute")));
+    if (it == index.constEnd())
+        return TSNode{};
+    TSNode found{};
+    for (const Assignment &a : *it) {
+        if (ts::isNull(a.right) || ts::is(a.right, "none"))
+            continue;
+        if (!ts::isNull(found))
+            return TSNode{};
+        found = a.right;
+    }
+    return found;
+}
+
 QString PythonResolver::callbackName(TSNode expr) const
 {
     for (int depth = 0; depth < 4 && !ts::isNull(expr); ++depth) {
@@ -526,6 +565,24 @@ void PythonResolver::guard(TSNode node, QString *guard, QString *guardParameter,
     TSNode scope = m_scopes.enclosingFunction(node);
     const std::vector<TSNode> path =
         PythonScopeIndex::pathBetween(ts::isNull(scope) ? m_tree.root() : scope, node);
+    // `if self.pub is None: self.pub = create_publisher(...)` creates the port lazily: the
+    // condition says when, not whether
+    QString lazyTarget;
+    for (size_t i = path.size(); i-- > 0 && lazyTarget.isEmpty();) {
+        const std::string_view t = ts::type(path[i]);
+        if (t == "assignment")
+            lazyTarget = m_tree.text(ts::field(path[i], "left")).remove(QLatin1Char(' '));
+        else if (t == "block" || t == "function_definition")
+            break;
+    }
+    auto isLazyCheck = [&](TSNode condition) {
+        if (lazyTarget.isEmpty())
+            return false;
+        QString text = m_tree.text(condition);
+        text.remove(QLatin1Char(' '));
+        return text == lazyTarget + QLatin1String("isNone") ||
+               text == QLatin1String("not") + lazyTarget;
+    };
     for (size_t i = path.size() - 1; i-- > 0;) {
         const TSNode p = path[i];
         const TSNode child = path[i + 1];
@@ -533,7 +590,8 @@ void PythonResolver::guard(TSNode node, QString *guard, QString *guardParameter,
         if (t == "class_definition")
             break;
         if (t == "if_statement" || t == "elif_clause") {
-            if (ts_node_eq(child, ts::field(p, "consequence")))
+            if (ts_node_eq(child, ts::field(p, "consequence")) &&
+                !isLazyCheck(ts::field(p, "condition")))
                 add(ts::field(p, "condition"), false);
         } else if (t == "else_clause" && i > 0 && ts::is(path[i - 1], "if_statement")) {
             add(ts::field(path[i - 1], "condition"), true);

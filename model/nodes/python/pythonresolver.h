@@ -38,6 +38,9 @@ public:
     QString interfaceType(TSNode expr) const;
     /// The string the expression holds and where it comes from.
     PythonValue value(TSNode expr) const;
+    /// The expression a local (`x`) or member (`self.x`) is assigned: the last local assignment
+    /// before the use, or a member's only assignment other than `None`. Null if none or unclear.
+    TSNode assignedExpression(TSNode expr) const;
     /// "listener_callback" for self.listener_callback, "lambda" for a lambda, ...
     QString callbackName(TSNode expr) const;
     /// The conditions of the enclosing ifs (same function), and the parameter they test.

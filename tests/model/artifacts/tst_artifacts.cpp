@@ -71,6 +71,8 @@ AtomicNodeList sampleList()
     cli.via = QStringLiteral("Helper");
     cli.inherited = true;
     cli.evidence = at(QStringLiteral("src/demo/src/talker.cpp"), 15);
+    cli.viaEvidence = {at(QStringLiteral("src/demo/src/talker.cpp"), 30),
+                       at(QStringLiteral("src/demo/src/helper.cpp"), 7)};
     n.ports << pub << sub << srv << cli;
     list.nodes << n;
 
@@ -95,7 +97,8 @@ private Q_SLOTS:
              {"\"list_packages\"", "\"package_name\"", "\"list_atomic_ros_node_classifiers\"",
               "\"id\": \"arc_1\"", "\"class_name\": \"Talker\"", "\"node_name\": \"talker\"",
               "\"header_file_paths\"", "\"source_file_paths\"", "\"description\"",
-              "\"compile_type\": \"cpp\"", "\"execution\": \"talker\"", "\"end_column\": 40"})
+              "\"compile_type\": \"cpp\"", "\"execution\": \"talker\"", "\"end_column\": 40",
+              "\"via_evidence\""})
             QVERIFY2(json.contains(field), field);
 
         AtomicNodeList back;
