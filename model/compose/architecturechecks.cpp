@@ -114,15 +114,16 @@ private:
         const QString bare = name.section(QLatin1Char('/'), -1);
         int best = std::max(2, int(bare.size()) / 3) + 1;
         const Use *use = nullptr;
+        const QString prefix = family + QLatin1Char(' ');
         for (const QString &key : m_order) {
-            if (key.section(QLatin1Char(' '), 0, 0) != family)
+            if (!key.startsWith(prefix))
                 continue;
-            const QString other = key.section(QLatin1Char(' '), 1);
+            const QString other = key.mid(prefix.size());
             const Family &f = m_system[key];
             const QList<Use> &side = wantProviders ? f.providers : f.users;
             if (other == name || side.isEmpty())
                 continue;
-            const int d = editDistance(name, other);
+            const int d = editDistance(name, other, best);
             if (d < best) {
                 best = d;
                 use = &side.first();

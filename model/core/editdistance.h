@@ -6,6 +6,8 @@ namespace rosarch {
 
 /// Levenshtein distance between two strings: the fewest single-character insertions,
 /// deletions and substitutions that turn `a` into `b` (for "did you mean" hints).
-int editDistance(const QString &a, const QString &b);
+/// With `limit`, any distance of `limit` or more is returned as `limit`, and the work stops as
+/// soon as that is certain (for finding near names among many).
+int editDistance(const QString &a, const QString &b, int limit = -1);
 
 } // namespace rosarch

@@ -206,6 +206,29 @@ QStringList splitScope(const QString &qualified)
     return out;
 }
 
+QStringList templateArgumentsOf(const QString &type)
+{
+    const qsizetype open = type.indexOf(u'<');
+    if (open < 0 || !type.endsWith(u'>'))
+        return {};
+    QStringList out;
+    QString current;
+    int depth = 0;
+    for (qsizetype i = open + 1; i < type.size() - 1; ++i) {
+        const QChar c = type.at(i);
+        depth += c == u'<' ? 1 : c == u'>' ? -1 : 0;
+        if (c == u',' && depth == 0) {
+            out.append(current.trimmed());
+            current.clear();
+            continue;
+        }
+        current += c;
+    }
+    if (!current.trimmed().isEmpty())
+        out.append(current.trimmed());
+    return out;
+}
+
 QString withoutTemplateArguments(const QString &name)
 {
     QString out;

@@ -44,6 +44,8 @@ QString simplified(const SyntaxTree &tree, TSNode n);
 QStringList splitScope(const QString &qualified);
 /// "ns::Foo<int>" -> "ns::Foo".
 QString withoutTemplateArguments(const QString &name);
+/// "ns::Helper<a::B, C<int>>" -> {"a::B", "C<int>"}.
+QStringList templateArgumentsOf(const QString &type);
 /// "ns::Foo<int>" -> "Foo".
 QString lastSegment(const QString &qualified);
 

@@ -29,6 +29,7 @@ CppClassIndex::CppClassIndex(const QList<CppFileFacts> &files)
             info.file = &file;
             info.cls = &cls;
             m_byQualifiedName[cls.qualifiedName].append(int(m_classes.size()));
+            m_bySimpleName[cls.name].append(int(m_classes.size()));
             m_classes.push_back(info);
         }
     }

@@ -39,6 +39,13 @@ public:
     int lookup(const QString &written, const QStringList &fromScope,
                const CppFileFacts *file) const;
 
+    /// The one workspace class with this unqualified name, -1 when none or several.
+    int uniqueBySimpleName(const QString &name) const
+    {
+        const QList<int> found = m_bySimpleName.value(name);
+        return found.size() == 1 ? found.front() : -1;
+    }
+
     /// Functions that are members of no class in the workspace (main, helpers, ...).
     const QList<FunctionRef> &freeFunctions() const { return m_freeFunctions; }
 
@@ -61,6 +68,7 @@ private:
 
     std::vector<ClassInfo> m_classes;
     QHash<QString, QList<int>> m_byQualifiedName;
+    QHash<QString, QList<int>> m_bySimpleName;
     QList<FunctionRef> m_freeFunctions;
     QHash<const CppFunction *, int> m_owner;
 };

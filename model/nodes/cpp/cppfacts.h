@@ -88,11 +88,24 @@ struct CppInstantiation
     Evidence evidence;
 };
 
+/// A call of a method on an object the function's class holds, with a string or template
+/// argument: `debug_publisher_->publish<T>("debug/time", value)`. A helper that creates its
+/// ports lazily (keyed by the name it is handed) creates them at such calls.
+struct CppMethodCall
+{
+    QString member; ///< the object: a member variable
+    QString method;
+    QStringList templateArguments; ///< as written
+    QList<CppValue> arguments;
+    Evidence evidence;
+};
+
 /// A call of a free function that may hand it the node: `setup_publishers(node, "x")`.
 struct CppFreeCall
 {
     QString function; ///< as written, e.g. "setup" or "ns::setup"
     QList<CppValue> arguments;
+    Evidence evidence;
 };
 
 /// `auto node = rclcpp::Node::make_shared("name")` and its equivalents: in a free function a
@@ -133,8 +146,10 @@ struct CppFunction
     QList<CppMemberBinding> memberBindings;
     QList<CppInstantiation> instantiations;
     QList<CppFreeCall> freeCalls;
+    QList<CppMethodCall> methodCalls;
     QList<CppProceduralNode> proceduralNodes;
-    CppValue returnValue; ///< a body that is a single `return x;`: x
+    QStringList templateParameters; ///< the function's own (`template <class T> void f()`)
+    CppValue returnValue;           ///< a body that is a single `return x;`: x
     Evidence evidence;
 };
 
@@ -149,6 +164,8 @@ struct CppClass
     QHash<QString, QString> aliases;     ///< member `using X = ...;` / typedef
     QHash<QString, QString> memberTypes; ///< member variable -> its type as written
     QList<CppMemberBinding> memberInitializers;
+    /// `Helper<T> member_{this, "name"};`: a helper built in the class body with the node
+    QList<CppInstantiation> memberInstantiations;
     Evidence evidence;
 };
 

@@ -210,11 +210,36 @@ private:
             return;
         if (ts::is(value, "initializer_list")) {
             const auto items = arguments(value);
+            addMemberInstantiation(c, name, typeText, items, n);
             if (items.size() != 1)
                 return;
             value = items.front();
         }
         c.memberInitializers.append({name, valueOf(value)});
+    }
+
+    // `Helper<T> member_{this, "name"};`: the helper is built with the node in the class body.
+    void addMemberInstantiation(CppClass &c, const QString &member, const QString &type,
+                                const std::vector<TSNode> &items, TSNode where) const
+    {
+        bool handsNode = false;
+        QList<CppValue> arguments;
+        for (TSNode item : items) {
+            CppValue v = valueOf(item);
+            if (ts::is(unwrap(m_tree, item), "this")) {
+                v.kind = CppValue::Kind::SelfNode;
+                handsNode = true;
+            }
+            arguments.append(v);
+        }
+        if (!handsNode)
+            return;
+        CppInstantiation inst;
+        inst.className = type;
+        inst.member = member;
+        inst.arguments = arguments;
+        inst.evidence = m_tree.evidence(where);
+        c.memberInstantiations.append(inst);
     }
 
     // `const std::string kTopic = "x";` at namespace scope.

@@ -50,6 +50,7 @@ CppFunction CppFunctionExtractor::extract(TSNode definition,
     m_function.namespaces = m_context.namespaces;
     m_function.evidence = m_tree.evidence(definition);
     m_templateParameters = m_context.templateParameters + functionTemplateParameters;
+    m_function.templateParameters = functionTemplateParameters;
     readSignature(definition);
     m_member = m_context.ownerClass >= 0 || !m_function.ownerScope.isEmpty();
     readInitializers(definition);
@@ -295,7 +296,8 @@ void CppFunctionExtractor::onCall(TSNode call)
     const bool makeShared =
         shape.name == QLatin1String("make_shared") || shape.name == QLatin1String("make_unique");
     if (!makeShared) {
-        addFreeCall(shape, args);
+        addFreeCall(call, shape, args);
+        addMethodCall(call, shape, args);
         return;
     }
     QString className;
@@ -404,7 +406,35 @@ void CppFunctionExtractor::addInstantiation(const QString &className,
         m_function.instantiations.append(inst);
 }
 
-void CppFunctionExtractor::addFreeCall(const CallShape &shape, const std::vector<TSNode> &args)
+void CppFunctionExtractor::addMethodCall(TSNode call, const CallShape &shape,
+                                         const std::vector<TSNode> &args)
+{
+    if (!m_member || ts::isNull(shape.receiver) || args.empty())
+        return;
+    // Only calls on a member (`x_->m(...)`, `this->x_.m(...)`), not on locals or parameters.
+    const CppValue object = m_values.evaluate(shape.receiver);
+    if (object.kind != CppValue::Kind::Member || object.variable.isEmpty())
+        return;
+    CppMethodCall c;
+    c.member = object.variable;
+    c.method = shape.name;
+    if (!ts::isNull(shape.templateArguments))
+        for (TSNode a : arguments(shape.templateArguments))
+            c.templateArguments.append(simplified(m_tree, a));
+    bool named = false;
+    for (TSNode a : args) {
+        CppValue v = m_values.evaluate(a);
+        named = named || v.kind == CppValue::Kind::Literal || v.kind == CppValue::Kind::Local;
+        c.arguments.append(std::move(v));
+    }
+    if (!named && c.templateArguments.isEmpty())
+        return; // `pub_->publish(msg)`: nothing a lazy helper would key a port by
+    c.evidence = m_tree.evidence(call);
+    m_function.methodCalls.append(c);
+}
+
+void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
+                                       const std::vector<TSNode> &args)
 {
     // Only calls without an object, and only those that pass something node-like: `this`, a
     // parameter, a member or a plain variable (a procedural node).
@@ -426,6 +456,7 @@ void CppFunctionExtractor::addFreeCall(const CallShape &shape, const std::vector
                          v.kind == CppValue::Kind::Member;
         call.arguments.append(v);
     }
+    call.evidence = m_tree.evidence(where);
     if (handsSomething)
         m_function.freeCalls.append(call);
 }

@@ -48,7 +48,10 @@ private:
                           const QString &member = {});
     void addProceduralNode(TSNode creation, const std::vector<TSNode> &args, bool lifecycle);
     bool isProceduralNodeType(const QString &className, bool *lifecycle) const;
-    void addFreeCall(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
+    void addMethodCall(TSNode call, const cppsyntax::CallShape &shape,
+                       const std::vector<TSNode> &args);
+    void addFreeCall(TSNode where, const cppsyntax::CallShape &shape,
+                     const std::vector<TSNode> &args);
     QString assignedVariable(TSNode expression) const;
 
     const SyntaxTree &m_tree;

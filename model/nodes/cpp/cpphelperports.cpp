@@ -43,29 +43,6 @@ bool looksLikeQos(const QString &text)
 
 } // namespace
 
-QStringList templateArgumentsOf(const QString &type)
-{
-    const qsizetype open = type.indexOf(u'<');
-    if (open < 0 || !type.endsWith(u'>'))
-        return {};
-    QStringList out;
-    QString current;
-    int depth = 0;
-    for (qsizetype i = open + 1; i < type.size() - 1; ++i) {
-        const QChar c = type.at(i);
-        depth += c == u'<' ? 1 : c == u'>' ? -1 : 0;
-        if (c == u',' && depth == 0) {
-            out.append(current.trimmed());
-            current.clear();
-            continue;
-        }
-        current += c;
-    }
-    if (!current.trimmed().isEmpty())
-        out.append(current.trimmed());
-    return out;
-}
-
 CppHelperPorts::CppHelperPorts(
     const CppClassIndex &index, const CppNameResolver &names,
     const QHash<QString, QList<CppClassIndex::FunctionRef>> &freeFunctions,
@@ -93,12 +70,24 @@ void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkC
     const int helper = helperClass(inst, ctx, &templateArguments);
     if (helper < 0 || helper == ctx.cls)
         return;
-    *ports += helperPorts(helper, inst.arguments, templateArguments, ctx, depth + 1);
+    QList<Port> found = helperPorts(helper, inst.arguments, templateArguments, ctx, depth + 1);
+    for (Port &p : found) // the chain of call sites, outermost first
+        p.viaEvidence.prepend(inst.evidence);
+    *ports += found;
 }
 
 // `setup_publishers(node)`: the ports a free function creates on the node it is handed.
 void CppHelperPorts::addFreeCallPorts(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
                                       QList<Port> *ports) const
+{
+    const qsizetype before = ports->size();
+    addFreeCallPortsAt(call, ctx, depth, ports);
+    for (qsizetype i = before; i < ports->size(); ++i)
+        (*ports)[i].viaEvidence.prepend(call.evidence);
+}
+
+void CppHelperPorts::addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx,
+                                        int depth, QList<Port> *ports) const
 {
     if (depth > 3)
         return;
@@ -162,6 +151,86 @@ void CppHelperPorts::addFreeCallPorts(const CppFreeCall &call, const CppLinkCont
     }
 }
 
+bool CppHelperPorts::handsNode(const QList<CppValue> &arguments, const CppLinkContext &ctx) const
+{
+    return std::any_of(arguments.begin(), arguments.end(),
+                       [&](const CppValue &arg) { return m_names.isNodeHandle(arg, ctx); });
+}
+
+void CppHelperPorts::addMemberHelperPorts(int cls, int self, QList<Port> *ports) const
+{
+    const CppClassIndex::ClassInfo &info = m_index.at(cls);
+    const CppLinkContext ctx{cls, nullptr, info.file, nullptr, self};
+    for (const CppInstantiation &inst : info.cls->memberInstantiations)
+        addHelperPorts(inst, ctx, 0, ports);
+}
+
+void CppHelperPorts::addMethodCallPorts(const CppMethodCall &call, const CppLinkContext &ctx,
+                                        int depth, QList<Port> *ports) const
+{
+    if (depth > 3 || ctx.cls < 0)
+        return;
+    CppInstantiation asMember;
+    asMember.member = call.member;
+    QStringList classArguments;
+    const int helper = helperClass(asMember, ctx, &classArguments);
+    if (helper < 0 || helper == ctx.cls)
+        return;
+    // The object must have been built with the node somewhere in the class.
+    const CppInstantiation *built = nullptr;
+    CppLinkContext builtAt;
+    for (int c : m_index.lineage(ctx.cls)) {
+        for (const auto &ref : m_index.at(c).functions) {
+            const CppLinkContext at{c, ref.function, ref.file, ctx.subst, ctx.self};
+            for (const CppInstantiation &inst : ref.function->instantiations) {
+                QStringList unused;
+                if (!built && (inst.member.isEmpty() || inst.member == call.member) &&
+                    helperClass(inst, at, &unused) == helper && handsNode(inst.arguments, at)) {
+                    built = &inst;
+                    builtAt = at;
+                }
+            }
+        }
+    }
+    if (!built)
+        return;
+    const CppSubstitution constructed{built->arguments, builtAt, {}, nullptr};
+    const int n = int(call.arguments.size());
+    const QStringList &classParameters = m_index.at(helper).cls->templateParameters;
+    for (const auto &ref : m_index.at(helper).functions) {
+        const CppFunction *fn = ref.function;
+        if (fn->name != call.method || fn->isConstructor || fn->ports.isEmpty() ||
+            n < fn->requiredParameters || (!fn->variadic && n > fn->parameterNames.size()))
+            continue;
+        CppSubstitution subst{call.arguments, ctx, {}, fn};
+        subst.constructed = &constructed;
+        for (qsizetype i = 0; i < classParameters.size() && i < classArguments.size(); ++i)
+            subst.templateArguments.insert(classParameters.at(i),
+                                           m_names.expandAliases(classArguments.at(i), ctx));
+        for (qsizetype i = 0;
+             i < fn->templateParameters.size() && i < call.templateArguments.size(); ++i)
+            subst.templateArguments.insert(
+                fn->templateParameters.at(i),
+                m_names.expandAliases(call.templateArguments.at(i), ctx));
+        const CppLinkContext inner{helper, fn, ref.file, &subst};
+        for (const CppPortCall &port : fn->ports) {
+            if (port.typeIsTemplateParameter &&
+                !subst.templateArguments.contains(splitScope(port.typeWritten).value(0)))
+                continue;
+            Port p = m_names.port(port, inner);
+            p.via = m_index.at(helper).cls->name;
+            p.viaEvidence = {call.evidence};
+            // Created once per name: a second call with the same name is the same port.
+            const bool seen = std::any_of(ports->begin(), ports->end(), [&](const Port &q) {
+                return q.kind == p.kind && q.name == p.name && q.type == p.type && q.via == p.via;
+            });
+            if (!seen)
+                ports->append(p);
+        }
+        return; // the first overload that creates ports (the others forward to it)
+    }
+}
+
 int CppHelperPorts::helperClass(const CppInstantiation &inst, const CppLinkContext &ctx,
                                 QStringList *templateArguments) const
 {
@@ -177,7 +246,11 @@ int CppHelperPorts::helperClass(const CppInstantiation &inst, const CppLinkConte
         return -1;
     // `using ActionServer = SimpleActionServer<Action>; make_unique<ActionServer>(...)`
     const QString written = classFromType(m_names.expandAliases(classFromType(type), ctx));
-    const int h = m_index.lookup(withoutTemplateArguments(written), m_names.scopeOf(ctx), ctx.file);
+    int h = m_index.lookup(withoutTemplateArguments(written), m_names.scopeOf(ctx), ctx.file);
+    // A helper library that moved namespaces (autoware_utils:: for autoware::universe_utils::)
+    // is taken by its class name when the workspace has exactly one class of that name.
+    if (h < 0 && written.contains(QLatin1String("::")))
+        h = m_index.uniqueBySimpleName(lastSegment(withoutTemplateArguments(written)));
     if (h < 0 || m_index.at(h).node || isOwner(h))
         return -1;
     *templateArguments = templateArgumentsOf(written);

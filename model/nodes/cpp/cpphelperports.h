@@ -12,9 +12,6 @@
 
 namespace rosarch {
 
-/// "ns::Helper<a::B, C<int>>" -> {"a::B", "C<int>"}.
-QStringList templateArgumentsOf(const QString &type);
-
 /// Finds the ports a node creates through helpers: classes it instantiates with the node
 /// (`this`, `shared_from_this()`, a procedural node) and free functions it hands the node to,
 /// followed to a bounded depth, with the helper's parameters standing for the arguments.
@@ -33,7 +30,17 @@ public:
     void addFreeCallPorts(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
                           QList<Port> *ports) const;
 
+    /// `debug_->publish<T>("debug/time", v)`: the ports a method of a helper the class built
+    /// with the node creates at this call (a lazily created publisher, keyed by its name).
+    void addMethodCallPorts(const CppMethodCall &call, const CppLinkContext &ctx, int depth,
+                            QList<Port> *ports) const;
+    /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
+    void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;
+
 private:
+    void addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
+                            QList<Port> *ports) const;
+    bool handsNode(const QList<CppValue> &arguments, const CppLinkContext &ctx) const;
     int helperClass(const CppInstantiation &inst, const CppLinkContext &ctx,
                     QStringList *templateArguments) const;
     QList<Port> helperPorts(int helper, const QList<CppValue> &arguments,

@@ -34,6 +34,9 @@ struct CppSubstitution
     /// A pluginlib plugin's own code: a parameter typed as a node handle is the node it is
     /// given (`configure(parent, ...)`), since the loader hands it over.
     bool plugin = false;
+    /// A method called on a helper object (`debug_->publish<T>("x", v)`): the arguments the
+    /// object was constructed with, for its constructors.
+    const CppSubstitution *constructed = nullptr;
 };
 
 /// A port name as resolved: where it comes from, the name (or the expression as written),
@@ -61,13 +64,23 @@ struct CppMemberFacts
     QHash<QString, CppParameterDeclaration> parameters;
 };
 
-/// Parameters of the function in `ctx` stand for the arguments of the helper's instantiation
-/// (its constructors) or of the call (a free helper function).
-inline bool substitutes(const CppLinkContext &ctx)
+/// What the parameters of the function in `ctx` stand for: the arguments of the helper's
+/// instantiation (its constructors), of the call (a free helper function or a method called on
+/// a helper), or, in a constructor of a helper whose method was called, of its construction.
+inline const CppSubstitution *substitutionFor(const CppLinkContext &ctx)
 {
     if (!ctx.subst || !ctx.fn)
-        return false;
-    return ctx.subst->function ? ctx.fn == ctx.subst->function : ctx.fn->isConstructor;
+        return nullptr;
+    if (ctx.subst->function ? ctx.fn == ctx.subst->function : ctx.fn->isConstructor)
+        return ctx.subst;
+    if (ctx.subst->constructed && ctx.fn->isConstructor)
+        return ctx.subst->constructed;
+    return nullptr;
+}
+
+inline bool substitutes(const CppLinkContext &ctx)
+{
+    return substitutionFor(ctx) != nullptr;
 }
 
 } // namespace rosarch

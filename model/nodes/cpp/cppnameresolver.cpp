@@ -59,9 +59,9 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
             return resolve(at.fn->returnValue, at, depth + 1);
         return r;
     case CppValue::Kind::FunctionParameter:
-        if (substitutes(ctx) && depth < kMaxLinkDepth) {
-            if (value.index >= 0 && value.index < ctx.subst->arguments.size())
-                return resolve(ctx.subst->arguments.at(value.index), ctx.subst->outer, depth + 1);
+        if (const CppSubstitution *subst = substitutionFor(ctx); subst && depth < kMaxLinkDepth) {
+            if (value.index >= 0 && value.index < subst->arguments.size())
+                return resolve(subst->arguments.at(value.index), subst->outer, depth + 1);
             const QString def = ctx.fn->parameterDefaults.value(value.index);
             if (!def.isEmpty())
                 return {NameOrigin::Literal, def, QString(), QString()};
@@ -229,8 +229,9 @@ bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &
     case CppValue::Kind::SelfNode:
         return true;
     case CppValue::Kind::FunctionParameter:
-        if (substitutes(ctx) && value.index >= 0 && value.index < ctx.subst->arguments.size())
-            return isNodeHandle(ctx.subst->arguments.at(value.index), ctx.subst->outer, depth + 1);
+        if (const CppSubstitution *subst = substitutionFor(ctx);
+            subst && value.index >= 0 && value.index < subst->arguments.size())
+            return isNodeHandle(subst->arguments.at(value.index), subst->outer, depth + 1);
         // A plugin's `configure(parent_node, ...)`: a parameter typed as a node handle.
         return ctx.subst && ctx.subst->plugin && !substitutes(ctx) && ctx.fn &&
                isNodeHandleType(ctx.fn->parameterTypes.value(value.index));
@@ -350,10 +351,9 @@ Port CppNameResolver::port(const CppPortCall &call, const CppLinkContext &ctx) c
     port.type = call.imageTransport ? QStringLiteral("sensor_msgs/msg/Image")
                                     : resolveType(call.typeWritten, ctx);
     port.callback = call.callback;
-    if (call.callbackParameter >= 0 && substitutes(ctx) &&
-        call.callbackParameter < ctx.subst->arguments.size()) {
-        const QString handed =
-            callbackFromText(ctx.subst->arguments.at(call.callbackParameter).text);
+    const CppSubstitution *subst = substitutionFor(ctx);
+    if (call.callbackParameter >= 0 && subst && call.callbackParameter < subst->arguments.size()) {
+        const QString handed = callbackFromText(subst->arguments.at(call.callbackParameter).text);
         if (!handed.isEmpty())
             port.callback = handed;
     }

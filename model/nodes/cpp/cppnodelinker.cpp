@@ -257,7 +257,10 @@ QList<Port> CppNodeLinker::pluginPorts(int plugin) const
                 m_helpers.addHelperPorts(inst, ctx, 0, &ports);
             for (const CppFreeCall &call : ref.function->freeCalls)
                 m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
+            for (const CppMethodCall &call : ref.function->methodCalls)
+                m_helpers.addMethodCallPorts(call, ctx, 0, &ports);
         }
+        m_helpers.addMemberHelperPorts(c, plugin, &ports);
     }
     return ports;
 }
@@ -305,7 +308,10 @@ QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
             m_helpers.addHelperPorts(inst, ctx, 0, &ports);
         for (const CppFreeCall &call : ref.function->freeCalls)
             m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
+        for (const CppMethodCall &call : ref.function->methodCalls)
+            m_helpers.addMethodCallPorts(call, ctx, 0, &ports);
     }
+    m_helpers.addMemberHelperPorts(cls, -1, &ports);
     for (Port &p : ports)
         p.inherited = inherited;
     return ports;

@@ -161,6 +161,9 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
     port.name = m_values.evaluate(args[size_t(nameIndex)]);
     if (!ts::isNull(shape.templateArguments))
         port.typeWritten = firstTemplateArgument(m_tree, shape.templateArguments);
+    else if (k.freeForm && shape.scope.endsWith(u'>'))
+        // a static factory: `PollingSubscriber<Odometry>::create_subscription(this, "odom")`
+        port.typeWritten = templateArgumentsOf(shape.scope).value(0);
     int callbackFrom = nameIndex + 1;
     if (k.generic && nameIndex + 1 < int(args.size())) {
         const CppValue type = m_values.evaluate(args[size_t(nameIndex + 1)]);
