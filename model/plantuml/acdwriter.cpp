@@ -43,6 +43,9 @@ QString AcdWriter::write(const AtomicNode &node)
     out += QStringLiteral("' %1 (%2) in package %3\n")
                .arg(node.qualifiedName.isEmpty() ? node.className : node.qualifiedName,
                     compileTypeName(node.compileType), node.packageName);
+    if (node.isPlugin()) // a pluginlib plugin: its ports are those of the node that loads it
+        out += QStringLiteral("' plugin of %1; {plugin} is the name it is loaded under\n")
+                   .arg(node.pluginInterface);
     out += QStringLiteral("component \"<<AtomicRosNodeClassifier>>\\n%1\" as node {\n")
                .arg(label(node.className));
     for (const Port &p : node.ports) {
