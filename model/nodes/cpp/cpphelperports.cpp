@@ -2,6 +2,8 @@
 
 #include "cppsyntax.h"
 
+#include <QRegularExpression>
+
 // Ports created through helpers: classes and free functions that receive the node (`this`,
 // shared_from_this(), a procedural node) and create ports on it.
 namespace rosarch {
@@ -220,6 +222,18 @@ void CppHelperPorts::addMethodCallPorts(const CppMethodCall &call, const CppLink
             Port p = m_names.port(port, inner);
             p.via = m_index.at(helper).cls->name;
             p.viaEvidence = {call.evidence};
+            // `if (publishers_.count(name) == 0)` makes the port on first use: no guard.
+            if (std::any_of(fn->parameterNames.begin(), fn->parameterNames.end(),
+                            [&](const QString &key) {
+                                return !key.isEmpty() &&
+                                       QRegularExpression(QStringLiteral("\\b%1\\b").arg(key))
+                                           .match(p.guard)
+                                           .hasMatch();
+                            })) {
+                p.guard.clear();
+                p.guardParameter.clear();
+                p.guardDefault.clear();
+            }
             // Created once per name: a second call with the same name is the same port.
             const bool seen = std::any_of(ports->begin(), ports->end(), [&](const Port &q) {
                 return q.kind == p.kind && q.name == p.name && q.type == p.type && q.via == p.via;

@@ -1,3 +1,4 @@
+#include "editdistance.h"
 #include "port.h"
 
 #include <QtTest>
@@ -21,6 +22,29 @@ private Q_SLOTS:
         QVERIFY(!portKindFromName(QStringLiteral("timer"), &dummy));
         QCOMPARE(portIdPrefix(PortKind::ServiceServer), QStringLiteral("ps"));
         QCOMPARE(portIdPrefix(PortKind::ActionClient), QStringLiteral("ra"));
+    }
+
+    // The near-name hints only want distances below a limit; a bounded distance must agree
+    // with the full one below it and report the limit above it.
+    void boundedEditDistance()
+    {
+        const QStringList words{QString(),
+                                QStringLiteral("scan"),
+                                QStringLiteral("scna"),
+                                QStringLiteral("/robot/scan"),
+                                QStringLiteral("cmd_vel"),
+                                QStringLiteral("cmd_vel_nav"),
+                                QStringLiteral("odom")};
+        for (const QString &a : words) {
+            for (const QString &b : words) {
+                const int full = editDistance(a, b);
+                for (int limit = 0; limit < 12; ++limit)
+                    QCOMPARE(editDistance(a, b, limit), std::min(full, limit));
+            }
+        }
+        QCOMPARE(editDistance(QStringLiteral("scan"), QStringLiteral("scna")), 2);
+        QCOMPARE(editDistance(QStringLiteral("/a/very/long/topic/name"), QStringLiteral("x"), 3),
+                 3);
     }
 };
 

@@ -1,6 +1,7 @@
 // How the C++ analyzer resolves names: port names from literals, locals, members, parameters
 // and expressions, names handed through helper classes and methods, and interface types.
 #include "cppanalysis.h"
+#include "cppnameresolver.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
 #include "testsupport.h"
@@ -172,6 +173,57 @@ private Q_SLOTS:
             describePorts(a.nodes[0]),
             QStringList{QStringLiteral("subscriber deep std_msgs/msg/Empty cb=on origin=literal "
                                        "expr= param= guard= gp= via=Sub @deep.cpp:3")});
+    }
+
+    // What a plugin's entry point may be handed as its node.
+    void nodeHandleTypes()
+    {
+        for (const char *yes :
+             {"rclcpp::Node::SharedPtr", "nav2::LifecycleNode::WeakPtr",
+              "const rclcpp_lifecycle::LifecycleNode::WeakPtr &", "std::shared_ptr<rclcpp::Node> &",
+              "rclcpp::Node *", "rclcpp::Node & node",
+              "std::weak_ptr<rclcpp_lifecycle::LifecycleNode>"})
+            QVERIFY2(isNodeHandleType(QString::fromLatin1(yes)), yes);
+        for (const char *no : {"rclcpp::NodeOptions", "const std::string &", "NodeT",
+                               "BT::TreeNode *", "std::shared_ptr<tf2_ros::Buffer>", "Node2D"})
+            QVERIFY2(!isNodeHandleType(QString::fromLatin1(no)), no);
+    }
+
+    // `prefix + "/" + name` resolves part by part; a part that is a declared parameter makes the
+    // whole parameter-derived, an unknown part leaves the whole expression as written.
+    void concatenatedNames()
+    {
+        QTemporaryDir dir;
+        QFile f(dir.filePath(QStringLiteral("joined.cpp")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("class Joined : public rclcpp::Node {\n"
+                "public:\n"
+                "  Joined() : Node(\"joined\") {\n"
+                "    prefix_ = declare_parameter(\"prefix\", std::string(\"arm\"));\n"
+                "    a_ = create_publisher<std_msgs::msg::Empty>(prefix_ + \"/state\", 1);\n"
+                "    const std::string base = \"robot\";\n"
+                "    b_ = create_publisher<std_msgs::msg::Empty>(base + \"/\" + kName, 1);\n"
+                "    c_ = create_publisher<std_msgs::msg::Empty>(base + unknown(), 1);\n"
+                "  }\n"
+                "  static constexpr const char * kName = \"status\";\n"
+                "};\n"
+                "const std::string kName = \"status\";\n");
+        f.close();
+        Workspace ws;
+        ws.root = dir.path();
+        ws.files.append({QStringLiteral("joined.cpp"), QStringLiteral("joined"),
+                         SourceFile::Language::Cpp, f.size()});
+        const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
+        QCOMPARE(a.nodes.size(), 1);
+        const QList<Port> &ports = a.nodes[0].ports;
+        QCOMPARE(ports.size(), 3);
+        QCOMPARE(ports[0].name, QStringLiteral("arm/state"));
+        QCOMPARE(ports[0].nameOrigin, NameOrigin::Parameter);
+        QCOMPARE(ports[0].parameter, QStringLiteral("prefix"));
+        QCOMPARE(ports[1].name, QStringLiteral("robot/status"));
+        QVERIFY(ports[1].isResolved());
+        QCOMPARE(ports[2].nameOrigin, NameOrigin::Expression);
+        QCOMPARE(ports[2].name, QStringLiteral("base + unknown()"));
     }
 
     void interfaceTypes_data()
