@@ -35,6 +35,17 @@ bool isMacroFunction(const QString &name)
     return !name.isEmpty() && name == name.toUpper() && name.at(0).isLetter();
 }
 
+// One call can be reached twice (a helper built twice with the same arguments, or through two
+// chains of calls): the same port, kept with the first chain.
+bool containsPort(const QList<Port> &ports, const Port &p)
+{
+    return std::any_of(ports.begin(), ports.end(), [&](const Port &q) {
+        Port same = p;
+        same.viaEvidence = q.viaEvidence;
+        return q == same;
+    });
+}
+
 } // namespace
 
 CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
@@ -127,13 +138,14 @@ LanguageAnalysis CppNodeLinker::link() const
         for (const CppPluginExport &e : file.pluginExports) {
             const QString written =
                 e.className.startsWith(QLatin1String("::")) ? e.className.mid(2) : e.className;
-            const int c = m_index.lookup(written, {}, &file);
+            QHash<QString, QString> templateArguments;
+            const int c = pluginClass(written, file, &templateArguments);
             if (c < 0 || m_index.at(c).node || ownedNode(c) || plugins.contains(c))
                 continue;
             plugins.insert(c);
             // A plugin that creates no ports (a planner's math, a costmap filter) is no part
             // of the communication architecture.
-            AtomicNode n = pluginNode(c, e);
+            AtomicNode n = pluginNode(c, e, templateArguments);
             if (!n.ports.isEmpty())
                 out.nodes.append(n);
         }
@@ -189,25 +201,58 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
     });
     // One call can be reached twice (a helper instantiated twice with the same arguments).
     for (const Port &p : std::as_const(ports))
-        if (!node.ports.contains(p))
+        if (!containsPort(node.ports, p))
             node.ports.append(p);
     return node;
 }
 
-AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported) const
+// The exported class, also when it is an alias of a template instance
+// (`using SmacPlannerHybrid = SmacPlannerHybridT<NodeHybrid>;` in a header of the package).
+int CppNodeLinker::pluginClass(const QString &written, const CppFileFacts &file,
+                               QHash<QString, QString> *templateArguments) const
+{
+    const int c = m_index.lookup(written, {}, &file);
+    if (c >= 0)
+        return c;
+    QStringList scope = splitScope(written);
+    const QString name = scope.isEmpty() ? QString() : scope.takeLast();
+    for (const CppFileFacts &f : m_files) {
+        const QString target = f.package == file.package ? f.aliases.value(name) : QString();
+        if (target.isEmpty())
+            continue;
+        const int t = m_index.lookup(withoutTemplateArguments(target).remove(u' '), scope, &f);
+        if (t < 0)
+            continue;
+        const QStringList arguments = templateArgumentsOf(target.simplified());
+        const QStringList &parameters = m_index.at(t).cls->templateParameters;
+        for (qsizetype i = 0; i < parameters.size() && i < arguments.size(); ++i)
+            templateArguments->insert(parameters.at(i), arguments.at(i));
+        return t;
+    }
+    return -1;
+}
+
+AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported,
+                                     const QHash<QString, QString> &templateArguments) const
 {
     AtomicNode node = classNode(index);
     node.nodeName.clear();
+    // Named as exported, which is how parameter files name it (an alias of a template instance
+    // included: nav2_smac_planner::SmacPlannerHybrid for SmacPlannerHybridT<NodeHybrid>).
+    node.qualifiedName = exported.className.startsWith(QLatin1String("::"))
+                             ? exported.className.mid(2)
+                             : exported.className;
+    node.className = lastSegment(node.qualifiedName);
     node.pluginInterface = exported.baseClass.startsWith(QLatin1String("::"))
                                ? exported.baseClass.mid(2)
                                : exported.baseClass;
     node.ports.clear();
-    QList<Port> ports = pluginPorts(index);
+    QList<Port> ports = pluginPorts(index, templateArguments);
     std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
         return evidenceLess(a.evidence, b.evidence);
     });
     for (const Port &p : std::as_const(ports))
-        if (!node.ports.contains(p))
+        if (!containsPort(node.ports, p))
             node.ports.append(p);
     return node;
 }
@@ -216,12 +261,13 @@ AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported)
 // are given (`configure(parent, ...)`, `initialize(node)`, a `weak_ptr` locked); a template
 // base (BehaviorTreeNavigator<ActionT>) sees the arguments the plugin gives it, and a virtual
 // `getName()` is the plugin's.
-QList<Port> CppNodeLinker::pluginPorts(int plugin) const
+QList<Port> CppNodeLinker::pluginPorts(int plugin,
+                                       const QHash<QString, QString> &templateArguments) const
 {
     static const CppFunction noCall; // no parameter stands for an argument
     const QList<int> lineage = m_index.lineage(plugin);
     std::map<int, CppSubstitution> substitutions; // stable references while inserting
-    substitutions.emplace(plugin, CppSubstitution{{}, {}, {}, &noCall, true});
+    substitutions.emplace(plugin, CppSubstitution{{}, {}, templateArguments, &noCall, true});
     for (int c : lineage) {
         const CppClassIndex::ClassInfo &info = m_index.at(c);
         const CppSubstitution &own = substitutions[c];

@@ -31,8 +31,11 @@ private:
     QString nodeNameOf(int index, int depth) const;
     QList<Port> portsOf(int cls, bool inherited) const;
     /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
-    AtomicNode pluginNode(int index, const CppPluginExport &exported) const;
-    QList<Port> pluginPorts(int plugin) const;
+    int pluginClass(const QString &written, const CppFileFacts &file,
+                    QHash<QString, QString> *templateArguments) const;
+    AtomicNode pluginNode(int index, const CppPluginExport &exported,
+                          const QHash<QString, QString> &templateArguments) const;
+    QList<Port> pluginPorts(int plugin, const QHash<QString, QString> &templateArguments) const;
     void addProceduralNodes(const CppClassIndex::FunctionRef &ref, QList<AtomicNode> *nodes,
                             QHash<QString, int> *stems) const;
     void addEntryPoint(const CppClassIndex::FunctionRef &ref, const QList<AtomicNode> &procedural,
