@@ -405,6 +405,8 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
         case TypeColumn:
             if (node.procedural)
                 return tr("procedural node");
+            if (node.isPlugin())
+                return tr("plugin: %1").arg(node.pluginInterface);
             return node.baseClasses.join(QStringLiteral(", "));
         case DetailsColumn:
             return AtomicNodeText::nodeDetails(node);

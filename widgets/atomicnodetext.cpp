@@ -97,7 +97,8 @@ QString AtomicNodeText::packageToolTip(const QString &name, const RosPackage *pk
 
 QString AtomicNodeText::nodeToolTip(const AtomicNode &node)
 {
-    const QString what = node.lifecycle    ? tr("Lifecycle node class")
+    const QString what = node.isPlugin()   ? tr("pluginlib plugin")
+                         : node.lifecycle  ? tr("Lifecycle node class")
                          : node.procedural ? tr("Procedurally built node")
                                            : tr("Atomic ROS node class");
     QString tip =
@@ -108,6 +109,10 @@ QString AtomicNodeText::nodeToolTip(const AtomicNode &node)
         line(tr("Node name in code: %1").arg(html(node.nodeName)));
     if (!node.baseClasses.isEmpty())
         line(tr("Derives from: %1").arg(html(node.baseClasses.join(QStringLiteral(", ")))));
+    if (node.isPlugin())
+        line(tr("Exported as a %1 plugin: a node that loads it (by its parameters) gets these "
+                "ports; {plugin} in a name is the name it is loaded under")
+                 .arg(html(node.pluginInterface)));
     if (!node.executables.isEmpty())
         line(
             tr("Started by executable: %1").arg(html(node.executables.join(QStringLiteral(", ")))));

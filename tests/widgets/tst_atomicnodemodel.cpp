@@ -247,6 +247,37 @@ private Q_SLOTS:
             !node.siblingAtColumn(AtomicNodeModel::TypeColumn).data(Qt::DecorationRole).isValid());
     }
 
+    // A pluginlib plugin shows as such: its interface in the type column, and the tooltip says
+    // who gets its ports.
+    void pluginsShowTheirInterface()
+    {
+        AtomicNodeList list = sampleList();
+        AtomicNode plugin;
+        plugin.id = QStringLiteral("arc_4");
+        plugin.className = QStringLiteral("PathFollower");
+        plugin.qualifiedName = QStringLiteral("beta_cpp::PathFollower");
+        plugin.packageName = QStringLiteral("beta_cpp");
+        plugin.pluginInterface = QStringLiteral("nav_core::Controller");
+        plugin.evidence = at(QStringLiteral("src/beta_cpp/src/follower.cpp"), 9, 9);
+        list.nodes.append(plugin);
+        Document doc;
+        doc.setAtomicNodes(list);
+        AtomicNodeModel model(&doc);
+        QCOMPARE(
+            model.nodeIndex(QStringLiteral("arc_4"), AtomicNodeModel::TypeColumn).data().toString(),
+            QStringLiteral("plugin: nav_core::Controller"));
+        const QString details =
+            model.nodeIndex(QStringLiteral("arc_4"), AtomicNodeModel::DetailsColumn)
+                .data()
+                .toString();
+        QVERIFY2(details.contains(QStringLiteral("plugin: beta_cpp::PathFollower")),
+                 qPrintable(details));
+        const QString tip =
+            model.nodeIndex(QStringLiteral("arc_4")).data(Qt::ToolTipRole).toString();
+        QVERIFY2(tip.startsWith(QStringLiteral("<b>pluginlib plugin</b>")), qPrintable(tip));
+        QVERIFY2(tip.contains(QStringLiteral("nav_core::Controller plugin")), qPrintable(tip));
+    }
+
     void toolTipsSayWhatAndWhere()
     {
         Document doc;
