@@ -435,14 +435,16 @@ void MainWindow::updateCounts()
     const auto count = [](qsizetype n, const QString &one, const QString &many) {
         return n == 1 ? one : many.arg(n);
     };
-    const QStringList parts{count(counts.packages, tr("1 package"), tr("%1 packages")),
-                            count(counts.nodes, tr("1 node"), tr("%1 nodes")),
-                            count(counts.ports, tr("1 port"), tr("%1 ports")),
-                            count(counts.launchFiles, tr("1 launch file"), tr("%1 launch files")),
-                            count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
-                            count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
-                            count(counts.composites, tr("1 composite"), tr("%1 composites")),
-                            count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
+    QStringList parts{count(counts.packages, tr("1 package"), tr("%1 packages")),
+                      count(counts.nodes, tr("1 node"), tr("%1 nodes"))};
+    if (counts.plugins > 0)
+        parts << count(counts.plugins, tr("1 plugin"), tr("%1 plugins"));
+    parts << QStringList{count(counts.ports, tr("1 port"), tr("%1 ports")),
+                         count(counts.launchFiles, tr("1 launch file"), tr("%1 launch files")),
+                         count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
+                         count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
+                         count(counts.composites, tr("1 composite"), tr("%1 composites")),
+                         count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
     m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
     m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
                                  "Stage 2: launch files found, node instances they start and "

@@ -9,9 +9,10 @@ RecoveryCounts RecoveryCounts::of(const Recovery &r)
 {
     RecoveryCounts c;
     c.packages = r.nodes.packages.size();
-    c.nodes = r.nodes.nodes.size();
-    for (const AtomicNode &n : r.nodes.nodes)
+    for (const AtomicNode &n : r.nodes.nodes) {
+        (n.isPlugin() ? c.plugins : c.nodes) += 1;
         c.ports += n.ports.size();
+    }
     c.launchFiles = r.launch.launchFiles.size();
     c.launchInstances = r.launch.instances.size();
     c.nodeInstances = r.launch.nodes.size();

@@ -24,7 +24,8 @@ struct Recovery
 struct RecoveryCounts
 {
     qsizetype packages = 0;
-    qsizetype nodes = 0; ///< atomic node classes
+    qsizetype nodes = 0;   ///< atomic node classes (pluginlib plugins excluded)
+    qsizetype plugins = 0; ///< pluginlib plugin classifiers
     qsizetype ports = 0;
     qsizetype launchFiles = 0;
     qsizetype launchInstances = 0; ///< launch-file instances
