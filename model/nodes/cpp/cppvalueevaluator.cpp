@@ -64,6 +64,16 @@ bool splitFormat(const QString &format, QStringList *pieces, QList<int> *indices
     return true;
 }
 
+// `for (std::size_t i = 0; ...)`: the initial value is no value of the variable in the body.
+bool isLoopVariable(TSNode value)
+{
+    TSNode n = ts_node_parent(value);
+    for (int up = 0; up < 3 && !ts::isNull(n); ++up, n = ts_node_parent(n))
+        if (ts::is(n, "for_statement"))
+            return true;
+    return false;
+}
+
 } // namespace
 
 CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
@@ -231,7 +241,7 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             v.parameter = it->parameter;
             return v;
         }
-        if (!ts::isNull(it->value) && depth < 6) {
+        if (!ts::isNull(it->value) && depth < 6 && !isLoopVariable(it->value)) {
             const CppValue inner = evaluate(it->value, depth + 1);
             switch (inner.kind) {
             case CppValue::Kind::Literal:

@@ -192,6 +192,23 @@ private Q_SLOTS:
             << "r/odom parameter ns";
     }
 
+    // A loop counter's initial value is not its value in the body: `image_raw0` would be wrong.
+    void loopCounter()
+    {
+        const QByteArray code =
+            "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n"
+            "    for (std::size_t i = 0; i < 3; ++i)\n"
+            "      pubs_.push_back(create_publisher<std_msgs::msg::String>(\n"
+            "        \"~/image_raw\" + std::to_string(i), 1));\n"
+            "    const int first = 0;\n"
+            "    pub_ = create_publisher<std_msgs::msg::String>(\"~/image_raw\" + "
+            "std::to_string(first), 1);\n"
+            "  }\n};\n";
+        QCOMPARE(resolvedNames(analyzeFiles({{"a/n.cpp", "a", code}})),
+                 (QStringList{QStringLiteral("\"~/image_raw\" + std::to_string(i) expression"),
+                              QStringLiteral("~/image_raw0 local")}));
+    }
+
     void formattedNames()
     {
         QFETCH(QByteArray, expression);
