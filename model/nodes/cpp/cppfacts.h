@@ -32,6 +32,8 @@ struct CppValue
         SelfNode,          ///< `this`, `shared_from_this()`, a variable holding one of them
         SelfCall,          ///< `getName()`: a method `variable` of this object, without arguments
         Concatenation,     ///< `prefix + "/" + name`: the `parts`, joined
+        Field,             ///< `params_->topic`, `p.topic`: `field` of the object `variable`
+        Constant,          ///< `ns::kTopic`, `Foo::kTopic`: a constant `variable` (qualified)
         Expression,        ///< anything else
     };
     Kind kind = Kind::None;
@@ -42,6 +44,8 @@ struct CppValue
     QString parameter;           ///< Parameter
     int index = -1;              ///< FunctionParameter
     std::vector<CppValue> parts; ///< Concatenation
+    QString field;      ///< Field: the field read (`variable` is the object's member or local)
+    QString objectType; ///< Field: the object's type as written, when the function knows it
 
     bool isNone() const { return kind == Kind::None; }
 };
@@ -58,6 +62,15 @@ struct CppParameterDeclaration
 struct CppMemberBinding
 {
     QString member;
+    CppValue value;
+};
+
+/// A field of an object receiving a value: `params_.topic = declare_parameter("topic", ...)`,
+/// `get_parameter("topic", params_->topic)`. Parameters structs are often filled by one class
+/// and read by another, so the linker indexes these by struct type and field.
+struct CppFieldBinding
+{
+    CppValue target; ///< a Field
     CppValue value;
 };
 
@@ -144,6 +157,7 @@ struct CppFunction
     QList<CppPortCall> ports;
     QList<CppParameterDeclaration> parameterDeclarations;
     QList<CppMemberBinding> memberBindings;
+    QList<CppFieldBinding> fieldBindings;
     QList<CppInstantiation> instantiations;
     QList<CppFreeCall> freeCalls;
     QList<CppMethodCall> methodCalls;

@@ -268,7 +268,20 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
     } else if (ts::is(left, "field_expression") && ts::is(ts::field(left, "argument"), "this")) {
         m_function.memberBindings.append(
             {m_tree.text(ts::field(left, "field")), m_values.evaluate(value)});
+    } else if (ts::is(left, "field_expression")) {
+        addFieldBinding(left, m_values.evaluate(value));
     }
+}
+
+// `params_.topic = declare_parameter(...)`. Only parameter reads are kept: a literal stored
+// into a field is as often a message filled in a test as a setting.
+void CppFunctionExtractor::addFieldBinding(TSNode target, const CppValue &value)
+{
+    if (value.kind != CppValue::Kind::Parameter)
+        return;
+    const CppValue field = m_values.evaluate(target);
+    if (field.kind == CppValue::Kind::Field)
+        m_function.fieldBindings.append({field, value});
 }
 
 void CppFunctionExtractor::onNew(TSNode expression)
@@ -364,6 +377,8 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
                ts::is(ts::field(target, "argument"), "this")) {
         bound.variable = m_tree.text(ts::field(target, "field"));
         m_function.memberBindings.append({bound.variable, bound});
+    } else if (ts::is(target, "field_expression")) {
+        addFieldBinding(target, bound); // get_parameter("p", params_.p)
     }
 }
 

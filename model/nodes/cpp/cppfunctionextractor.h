@@ -44,6 +44,7 @@ private:
     void onCall(TSNode call);
     void onNew(TSNode expression);
     void onParameterCall(const QString &name, const std::vector<TSNode> &args);
+    void addFieldBinding(TSNode target, const CppValue &value);
     void addInstantiation(const QString &className, const std::vector<TSNode> &args, TSNode where,
                           const QString &member = {});
     void addProceduralNode(TSNode creation, const std::vector<TSNode> &args, bool lifecycle);

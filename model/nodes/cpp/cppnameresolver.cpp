@@ -30,8 +30,9 @@ QString callbackFromText(const QString &text)
 
 CppNameResolver::CppNameResolver(const CppClassIndex &index,
                                  const std::vector<CppMemberFacts> &facts,
-                                 const QHash<QString, QHash<QString, QString>> &interfaceAliases)
-    : m_index(index), m_facts(facts), m_interfaceAliases(interfaceAliases)
+                                 const QHash<QString, QHash<QString, QString>> &interfaceAliases,
+                                 const CppSharedNames &shared)
+    : m_index(index), m_facts(facts), m_interfaceAliases(interfaceAliases), m_shared(shared)
 {
 }
 
@@ -72,6 +73,10 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         return r;
     case CppValue::Kind::Concatenation:
         return resolveConcatenation(value, ctx, depth);
+    case CppValue::Kind::Field:
+        return resolveField(value, ctx, depth + 1);
+    case CppValue::Kind::Constant:
+        return resolveConstant(value, ctx, depth + 1);
     default:
         return r;
     }
@@ -165,7 +170,70 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
         if (file && file->constants.contains(member))
             return {NameOrigin::Local, file->constants.value(member), text, QString()};
     }
+    // A constant of an included header, in this package or another.
+    if (const QString c = m_shared.constant(member, packageOf(ctx)); !c.isNull())
+        return {NameOrigin::Local, c, text, QString()};
     return expression;
+}
+
+// A field of a parameters struct: the parameter the workspace reads into it, found by the
+// object's struct type or, when one side's type is unknown, by the field's name within the
+// package; else the struct's own in-class initializer.
+CppResolvedName CppNameResolver::resolveField(const CppValue &value, const CppLinkContext &ctx,
+                                              int depth) const
+{
+    const QString &text = value.text;
+    CppResolvedName expression{NameOrigin::Expression, text, text, QString()};
+    if (depth > kMaxLinkDepth)
+        return expression;
+    QString written = value.objectType;
+    QStringList templateParameters;
+    if (written.isEmpty() && !value.variable.isEmpty() && ctx.cls >= 0)
+        written = m_shared.memberType(value.variable, ctx.cls, &templateParameters);
+    const QString type = CppSharedNames::structType(written, templateParameters);
+    const CppSharedNames::FieldBinding *read = nullptr;
+    for (const CppSharedNames::FieldBinding *b :
+         m_shared.fieldBindings(value.field, type, packageOf(ctx))) {
+        if (read && read->value.parameter != b->value.parameter)
+            return expression; // two structs' fields of one name, filled differently
+        read = b;
+    }
+    if (read) {
+        const CppLinkContext at{read->cls, read->fn, read->file, nullptr, -1};
+        const QString def = parameterDefault(read->value.parameter, at, depth + 1);
+        return {NameOrigin::Parameter, def.isNull() ? text : def, text, read->value.parameter};
+    }
+    const int cls = type.isEmpty() ? -1 : m_index.lookup(type, scopeOf(ctx), ctx.file);
+    if (cls < 0 || m_index.at(cls).cls->name != type)
+        return expression;
+    const CppResolvedName r = resolveMember(
+        value.field, text, CppLinkContext{cls, nullptr, m_index.at(cls).file}, depth + 1);
+    return r.origin == NameOrigin::Parameter || r.origin == NameOrigin::Member ? r : expression;
+}
+
+// `ns::kTopic` names a namespace-level constant; `Foo::kTopic` a class's static member.
+CppResolvedName CppNameResolver::resolveConstant(const CppValue &value, const CppLinkContext &ctx,
+                                                 int depth) const
+{
+    CppResolvedName expression{NameOrigin::Expression, value.text, value.text, QString()};
+    const QStringList parts = splitScope(value.variable);
+    if (parts.size() < 2 || depth > kMaxLinkDepth)
+        return expression;
+    const QString &name = parts.last();
+    const QString scope = parts.mid(0, parts.size() - 1).join(QStringLiteral("::"));
+    const int cls = m_index.lookup(scope, scopeOf(ctx), ctx.file);
+    if (cls >= 0)
+        return resolveMember(name, value.text, CppLinkContext{cls, nullptr, m_index.at(cls).file},
+                             depth + 1);
+    return resolveMember(name, value.text, CppLinkContext{-1, ctx.fn, ctx.file, nullptr, -1},
+                         depth + 1);
+}
+
+QString CppNameResolver::packageOf(const CppLinkContext &ctx) const
+{
+    if (ctx.file)
+        return ctx.file->package;
+    return ctx.cls >= 0 ? m_index.at(ctx.cls).file->package : QString();
 }
 
 QString CppNameResolver::parameterDefault(const QString &parameter, const CppLinkContext &ctx,
@@ -212,8 +280,10 @@ QString CppNameResolver::guardParameter(const CppValue &value, const CppLinkCont
 {
     if (value.kind == CppValue::Kind::Parameter)
         return value.parameter;
-    if (value.kind == CppValue::Kind::Member) {
-        const CppResolvedName r = resolveMember(value.variable, value.text, ctx, 0);
+    if (value.kind == CppValue::Kind::Member || value.kind == CppValue::Kind::Field) {
+        const CppResolvedName r = value.kind == CppValue::Kind::Member
+                                      ? resolveMember(value.variable, value.text, ctx, 0)
+                                      : resolveField(value, ctx, 0);
         if (r.origin == NameOrigin::Parameter)
             return r.parameter;
     }

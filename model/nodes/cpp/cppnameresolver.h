@@ -2,6 +2,7 @@
 
 #include "cppclassindex.h"
 #include "cpplinkcontext.h"
+#include "cppsharednames.h"
 #include "port.h"
 
 #include <QHash>
@@ -24,7 +25,8 @@ public:
     /// The resolver keeps references: `facts` (by class) and `interfaceAliases` may be
     /// filled after construction, before the first resolution.
     CppNameResolver(const CppClassIndex &index, const std::vector<CppMemberFacts> &facts,
-                    const QHash<QString, QHash<QString, QString>> &interfaceAliases);
+                    const QHash<QString, QHash<QString, QString>> &interfaceAliases,
+                    const CppSharedNames &shared);
 
     /// A port call as a Port: its name, type, callback and guard resolved in `ctx`.
     Port port(const CppPortCall &call, const CppLinkContext &ctx) const;
@@ -53,12 +55,17 @@ private:
     bool isPluginNameParameter(const CppValue &value, const CppLinkContext &ctx) const;
     CppResolvedName resolveMember(const QString &member, const QString &text,
                                   const CppLinkContext &ctx, int depth) const;
+    CppResolvedName resolveField(const CppValue &value, const CppLinkContext &ctx, int depth) const;
+    CppResolvedName resolveConstant(const CppValue &value, const CppLinkContext &ctx,
+                                    int depth) const;
+    QString packageOf(const CppLinkContext &ctx) const;
 
     const CppClassIndex &m_index;
     const std::vector<CppMemberFacts> &m_facts;
     /// Namespace-level aliases of interface types from any file (typedefs in included
     /// headers): package -> alias -> target, and "" -> alias -> target for the workspace.
     const QHash<QString, QHash<QString, QString>> &m_interfaceAliases;
+    const CppSharedNames &m_shared;
 };
 
 } // namespace rosarch

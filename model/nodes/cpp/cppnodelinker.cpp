@@ -49,7 +49,8 @@ bool containsPort(const QList<Port> &ports, const Port &p)
 } // namespace
 
 CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
-    : m_files(files), m_index(files), m_names(m_index, m_facts, m_interfaceAliases),
+    : m_files(files), m_index(files), m_shared(files, m_index),
+      m_names(m_index, m_facts, m_interfaceAliases, m_shared),
       m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes)
 {
     for (const CppFileFacts &file : files) {

@@ -5,6 +5,7 @@
 #include "cpphelperports.h"
 #include "cpplinkcontext.h"
 #include "cppnameresolver.h"
+#include "cppsharednames.h"
 #include "languageanalysis.h"
 
 #include <QHash>
@@ -43,6 +44,7 @@ private:
 
     const QList<CppFileFacts> &m_files;
     CppClassIndex m_index;
+    CppSharedNames m_shared;             ///< after the index it reads
     std::vector<CppMemberFacts> m_facts; ///< by class, built up front (resolution keeps pointers)
     std::vector<const CppProceduralNode *> m_ownedNodes;
     QHash<QString, QList<CppClassIndex::FunctionRef>> m_freeFunctionsByName;

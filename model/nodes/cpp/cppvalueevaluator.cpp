@@ -1,8 +1,80 @@
 #include "cppvalueevaluator.h"
 
+#include <QRegularExpression>
+
 namespace rosarch {
 
 using namespace cppsyntax;
+
+namespace {
+
+CppValue literalPart(const QString &text)
+{
+    CppValue v;
+    v.kind = CppValue::Kind::Literal;
+    v.literal = text;
+    v.text = text;
+    return v;
+}
+
+// `{}`, `{0}` placeholders of a std::format / fmt::format string, split into literal pieces and
+// argument indices (-1 in `indices` marks a literal piece). False when the string is malformed
+// or a placeholder has a format spec (`{:02}`).
+bool splitFormat(const QString &format, QStringList *pieces, QList<int> *indices)
+{
+    QString piece;
+    int next = 0;
+    for (qsizetype i = 0; i < format.size(); ++i) {
+        const QChar c = format.at(i);
+        if ((c == u'{' || c == u'}') && i + 1 < format.size() && format.at(i + 1) == c) {
+            piece += c;
+            ++i;
+            continue;
+        }
+        if (c == u'}')
+            return false;
+        if (c != u'{') {
+            piece += c;
+            continue;
+        }
+        const qsizetype close = format.indexOf(u'}', i);
+        if (close < 0)
+            return false;
+        const QString spec = format.mid(i + 1, close - i - 1);
+        if (!spec.section(u':', 1).isEmpty())
+            return false; // `{:02}`, `{:.2f}`: a format spec changes the text
+        const QString id = spec.section(u':', 0, 0).trimmed();
+        bool ok = true;
+        const int index = id.isEmpty() ? next++ : id.toInt(&ok);
+        if (!ok)
+            return false;
+        if (!piece.isEmpty()) {
+            pieces->append(piece);
+            indices->append(-1);
+            piece.clear();
+        }
+        pieces->append(QString());
+        indices->append(index);
+        i = close;
+    }
+    if (!piece.isEmpty()) {
+        pieces->append(piece);
+        indices->append(-1);
+    }
+    return true;
+}
+
+// `for (std::size_t i = 0; ...)`: the initial value is no value of the variable in the body.
+bool isLoopVariable(TSNode value)
+{
+    TSNode n = ts_node_parent(value);
+    for (int up = 0; up < 3 && !ts::isNull(n); ++up, n = ts_node_parent(n))
+        if (ts::is(n, "for_statement"))
+            return true;
+    return false;
+}
+
+} // namespace
 
 CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
                                      const CppFunction &function)
@@ -84,6 +156,17 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         v.variable = m_tree.text(ts::field(n, "field"));
         return v;
     }
+    if (t == "field_expression") {
+        CppValue f = evaluateField(n, depth);
+        f.text = v.text;
+        return f;
+    }
+    // `ns::kTopic`, `Foo::kTopic`: a constant of the workspace, looked up when linking.
+    if (t == "qualified_identifier") {
+        v.kind = CppValue::Kind::Constant;
+        v.variable = v.text.startsWith(QLatin1String("::")) ? v.text.mid(2) : v.text;
+        return v;
+    }
     if (t == "call_expression") {
         const CallShape shape = callShape(m_tree, ts::field(n, "function"));
         const bool onSelf = ts::isNull(shape.receiver) || ts::is(shape.receiver, "this");
@@ -111,6 +194,10 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
             evaluate(args.front(), depth + 1).kind == CppValue::Kind::SelfNode) {
             v.kind = CppValue::Kind::SelfNode;
             return v;
+        }
+        if (CppValue s = evaluateStringCall(shape, args, depth); !s.isNone()) {
+            s.text = v.text;
+            return s;
         }
         if (!ts::isNull(shape.receiver) && depth < 6) {
             // get_parameter("p").as_string(), .get_value<T>(), node.lock(), ...
@@ -154,7 +241,7 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             v.parameter = it->parameter;
             return v;
         }
-        if (!ts::isNull(it->value) && depth < 6) {
+        if (!ts::isNull(it->value) && depth < 6 && !isLoopVariable(it->value)) {
             const CppValue inner = evaluate(it->value, depth + 1);
             switch (inner.kind) {
             case CppValue::Kind::Literal:
@@ -170,7 +257,9 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             case CppValue::Kind::Member:
             case CppValue::Kind::FunctionParameter:
             case CppValue::Kind::SelfCall:
-            case CppValue::Kind::Concatenation: {
+            case CppValue::Kind::Concatenation:
+            case CppValue::Kind::Field:
+            case CppValue::Kind::Constant: {
                 CppValue r = inner;
                 r.text = name;
                 return r;
@@ -190,6 +279,98 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
     }
     // Not a local: a member (or a namespace-level constant, which the linker also knows).
     v.kind = CppValue::Kind::Member;
+    return v;
+}
+
+// `params_->topic`, `this->params_.topic`, `p.topic` (p a local or a parameter of the function),
+// `handler_->getParams()->topic`: a field, with what the function knows of the object.
+CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
+{
+    CppValue v;
+    v.kind = CppValue::Kind::Field;
+    v.field = m_tree.text(ts::field(n, "field"));
+    const TSNode object = unwrap(m_tree, ts::field(n, "argument"));
+    if (ts::is(object, "identifier")) {
+        const QString name = m_tree.text(object);
+        const auto local = m_locals.constFind(name);
+        const qsizetype index = m_function.parameterNames.indexOf(name);
+        if (local != m_locals.constEnd()) {
+            // `auto & p = params_;` reads the member; `Parameters p;` has its own type.
+            const CppValue held =
+                ts::isNull(local->value) ? CppValue() : evaluate(local->value, depth + 1);
+            if (held.kind == CppValue::Kind::Member)
+                v.variable = held.variable;
+            else
+                v.objectType = local->type;
+        } else if (index >= 0) {
+            QString type = m_function.parameterTypes.value(index);
+            if (type.endsWith(name))
+                type = type.chopped(name.size()).trimmed();
+            v.objectType = type;
+        } else {
+            v.variable = name;
+        }
+    } else if (ts::is(object, "field_expression") &&
+               ts::is(ts::field(object, "argument"), "this")) {
+        v.variable = m_tree.text(ts::field(object, "field"));
+    } else if (!ts::is(object, "call_expression")) {
+        v.kind = CppValue::Kind::Expression; // `msg->header.frame_id`, `arr[i].topic`, ...
+    }
+    return v;
+}
+
+// Calls that make a string of their arguments: `std::string(x)` and `std::to_string(x)` are x,
+// `x.c_str()` is x, `std::format("{}/{}", a, b)` / `fmt::format(...)` join the pieces and
+// arguments. None when the call is none of them.
+CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
+                                               const std::vector<TSNode> &args, int depth) const
+{
+    const bool inStd = shape.scope == QLatin1String("std");
+    const bool one = ts::isNull(shape.receiver) && args.size() == 1 && inStd;
+    if (one && shape.name == QLatin1String("string"))
+        return evaluate(args.front(), depth + 1);
+    if (one && shape.name == QLatin1String("to_string")) {
+        // Only an integer reads the same in code and in the name (to_string(0.5) is "0.500000").
+        static const QRegularExpression integer(QStringLiteral("^-?\\d+$"));
+        CppValue inner = evaluate(args.front(), depth + 1);
+        const bool known =
+            inner.kind == CppValue::Kind::Literal || inner.kind == CppValue::Kind::Local;
+        if (!known || !integer.match(inner.literal).hasMatch())
+            inner.kind = CppValue::Kind::Expression;
+        return inner;
+    }
+    if (shape.name == QLatin1String("c_str") && !ts::isNull(shape.receiver) && args.empty())
+        return evaluate(shape.receiver, depth + 1);
+    if (shape.name != QLatin1String("format") || !ts::isNull(shape.receiver) ||
+        !(inStd || shape.scope == QLatin1String("fmt")) || args.empty())
+        return {};
+    CppValue v;
+    v.kind = CppValue::Kind::Expression;
+    QString format;
+    QStringList pieces;
+    QList<int> indices;
+    if (!stringLiteral(m_tree, unwrap(m_tree, args.front()), &format) ||
+        !splitFormat(format, &pieces, &indices))
+        return v;
+    v.kind = CppValue::Kind::Concatenation;
+    for (qsizetype i = 0; i < pieces.size(); ++i) {
+        const int index = indices.at(i);
+        if (index < 0) {
+            v.parts.push_back(literalPart(pieces.at(i)));
+            continue;
+        }
+        if (size_t(index) + 1 >= args.size()) {
+            v.kind = CppValue::Kind::Expression;
+            v.parts.clear();
+            return v;
+        }
+        CppValue part = evaluate(args[size_t(index) + 1], depth + 1);
+        if (part.kind == CppValue::Kind::Concatenation)
+            for (CppValue &inner : part.parts)
+                v.parts.push_back(std::move(inner));
+        else
+            v.parts.push_back(std::move(part));
+    }
     return v;
 }
 

@@ -38,6 +38,10 @@ public:
     static constexpr int kMaxDepth = 24;
 
 private:
+    CppValue evaluateField(TSNode fieldExpression, int depth) const;
+    CppValue evaluateStringCall(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args,
+                                int depth) const;
+
     const SyntaxTree &m_tree;
     const QHash<QString, CppLocal> &m_locals;
     const CppFunction &m_function;

@@ -9,13 +9,218 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <array>
+
 using namespace rosarch;
 using namespace rosarch::test::cpp;
+
+namespace {
+
+// Analyses files written into a temporary workspace: (path, package, content) triples.
+LanguageAnalysis analyzeFiles(const QList<std::array<QByteArray, 3>> &files)
+{
+    QTemporaryDir dir;
+    Workspace ws;
+    ws.root = dir.path();
+    for (const auto &[path, package, content] : files) {
+        const QString rel = QString::fromUtf8(path);
+        QDir().mkpath(QFileInfo(dir.filePath(rel)).path());
+        QFile f(dir.filePath(rel));
+        if (!f.open(QIODevice::WriteOnly))
+            return {};
+        f.write(content);
+        ws.files.append({rel, QString::fromUtf8(package), SourceFile::Language::Cpp, f.size()});
+    }
+    return CppNodeAnalyzer(ws).analyze();
+}
+
+// A node publishing on each of `names` (expressions) after the statements `prelude`, with
+// `members` declared in the class.
+QByteArray publishingNode(const QByteArrayList &names, const QByteArray &members = {},
+                          const QByteArray &prelude = {})
+{
+    QByteArray body = prelude;
+    for (const QByteArray &n : names)
+        body += "    pubs_.push_back(create_publisher<std_msgs::msg::String>(" + n + ", 1));\n";
+    return "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n" + body + "  }\n" +
+           members + "};\n";
+}
+
+QStringList resolvedNames(const LanguageAnalysis &a)
+{
+    QStringList out;
+    for (const AtomicNode &n : a.nodes)
+        for (const Port &p : n.ports)
+            out << p.name + QStringLiteral(" ") + nameOriginName(p.nameOrigin) +
+                       (p.parameter.isEmpty() ? QString() : QStringLiteral(" ") + p.parameter);
+    return out;
+}
+
+} // namespace
 
 class TestCppNameResolution : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
+    // A controller reads fields of a struct its parameter handler fills (another class, another
+    // file); constants of another package; std::format, fmt::format, std::string, to_string.
+    void namesFromElsewhere()
+    {
+        const LanguageAnalysis a = analyzeCase(QStringLiteral("cpp_names_deep"));
+        QCOMPARE(classNames(a), QStringList{QStringLiteral("deep_controller/ControllerServer")});
+        const QString f = QStringLiteral("src/deep_controller/src/controller_server.cpp");
+        QCOMPARE(
+            describePorts(a.nodes[0]).mid(0, 3),
+            (QStringList{
+                QStringLiteral("subscriber odom nav_msgs/msg/Odometry cb=lambda origin=parameter "
+                               "expr=params_->odom_topic param=odom_topic guard= gp= via= @%1:45")
+                    .arg(f),
+                QStringLiteral("subscriber speed_limit std_msgs/msg/Float64 cb=lambda "
+                               "origin=parameter expr=params_->speed_limit_topic "
+                               "param=speed_limit_topic guard= gp= via= @%1:47")
+                    .arg(f),
+                QStringLiteral("publisher base_link/pose geometry_msgs/msg/PoseStamped cb= "
+                               "origin=parameter expr=params_->base_frame + \"/pose\" "
+                               "param=base_frame guard= gp= via= @%1:49")
+                    .arg(f),
+            }));
+        QCOMPARE(resolvedNames(a).mid(3),
+                 (QStringList{
+                     QStringLiteral("cmd_vel member"),
+                     QStringLiteral("alarm local"),
+                     QStringLiteral("status local"),
+                     QStringLiteral("heartbeat member"),
+                     QStringLiteral("robot1/diagnostics parameter robot_name"),
+                     QStringLiteral("~/wheels/rate_2 local"),
+                     QStringLiteral("robot/1/state local"),
+                     QStringLiteral("request->pose_topic expression"),
+                 }));
+    }
+
+    // Fields found by the object's struct type, and by the field's name in the package when
+    // a type is unknown; one name filled from two parameters, or a field of another package's
+    // untyped object, decides nothing.
+    void structFields()
+    {
+        const QByteArray handler =
+            "template<typename T> struct Holder { T params_; };\n"
+            "struct Params { std::string in; std::string out; std::string both; };\n"
+            "struct Other { std::string both; };\n"
+            "class Handler : public Holder<Params> {\npublic:\n"
+            "  Handler(rclcpp::Node * node) {\n"
+            "    params_.in = node->declare_parameter(\"in_topic\", \"in\");\n"
+            "    node->declare_parameter(\"out_topic\", std::string(\"out\"));\n"
+            "    node->get_parameter(\"out_topic\", params_.out);\n"
+            "    params_.both = node->declare_parameter(\"both_a\", \"a\");\n"
+            "    other_.both = node->declare_parameter(\"both_b\", \"b\");\n"
+            "  }\n  Other other_;\n};\n";
+        const QByteArray node = publishingNode(
+            {"params_->in", "params_->out", "params_->both", "other_.both", "handler_->get()->in",
+             "p.in", "q.in"},
+            "  Params * params_;\n  Other other_;\n  std::shared_ptr<Handler> handler_;\n",
+            "    Params p;\n    auto & q = params_;\n");
+        const LanguageAnalysis a =
+            analyzeFiles({{"a/handler.hpp", "a", handler}, {"a/node.cpp", "a", node}});
+        QCOMPARE(resolvedNames(a), (QStringList{
+                                       QStringLiteral("in parameter in_topic"),
+                                       QStringLiteral("out parameter out_topic"),
+                                       // typed Params: the untyped both_a binding, not Other's
+                                       QStringLiteral("a parameter both_a"),
+                                       QStringLiteral("b parameter both_b"),
+                                       QStringLiteral("in parameter in_topic"),
+                                       // a local of the struct's type, a reference to the member
+                                       QStringLiteral("in parameter in_topic"),
+                                       QStringLiteral("in parameter in_topic"),
+                                   }));
+        // Another package reading an object of unknown type learns nothing from package a.
+        const LanguageAnalysis b =
+            analyzeFiles({{"a/handler.hpp", "a", handler},
+                          {"b/node.cpp", "b",
+                           publishingNode({"handler_->get()->in", "cfg_.in"},
+                                          "  std::shared_ptr<Handler> handler_;\n"
+                                          "  Cfg cfg_;\n")}});
+        QCOMPARE(resolvedNames(b), (QStringList{QStringLiteral("handler_->get()->in expression"),
+                                                QStringLiteral("cfg_.in expression")}));
+    }
+
+    // Namespace-level constants of any file: the package's own definition first; definitions
+    // elsewhere only when they agree.
+    void workspaceConstants()
+    {
+        const LanguageAnalysis a = analyzeFiles({
+            {"a/topics.hpp", "a", "namespace a { constexpr char kTopic[] = \"mine\"; }\n"},
+            {"b/topics.hpp", "b", "namespace b { constexpr char kTopic[] = \"theirs\"; }\n"},
+            {"b/more.hpp", "b",
+             "namespace b { const std::string kOnly = \"only\";\n"
+             "struct Names { static constexpr const char * kStatic = \"static\"; }; }\n"},
+            {"c/x.hpp", "c", "namespace c { constexpr char kSplit[] = \"x\"; }\n"},
+            {"d/y.hpp", "d", "namespace d { constexpr char kSplit[] = \"y\"; }\n"},
+            {"a/node.cpp", "a",
+             publishingNode({"kTopic", "b::kOnly", "b::Names::kStatic", "kSplit",
+                             "std::string(kOnly) + \"/\" + kTopic"})},
+        });
+        QCOMPARE(resolvedNames(a), (QStringList{
+                                       QStringLiteral("mine local"),
+                                       QStringLiteral("only local"),
+                                       QStringLiteral("static member"),
+                                       QStringLiteral("kSplit expression"),
+                                       QStringLiteral("only/mine local"),
+                                   }));
+    }
+
+    void formattedNames_data()
+    {
+        QTest::addColumn<QByteArray>("expression");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("std::format")
+            << QByteArray("std::format(\"{}/{}\", ns, \"scan\")") << "robot/scan local";
+        QTest::newRow("fmt positional")
+            << QByteArray("fmt::format(\"{1}_{0}\", ns, \"x\")") << "x_robot local";
+        QTest::newRow("braces") << QByteArray("std::format(\"{{{}}}\", \"a\")") << "{a} literal";
+        QTest::newRow("plain spec") << QByteArray("std::format(\"cam{0:}\", 3)") << "cam3 literal";
+        QTest::newRow("spec") << QByteArray("std::format(\"cam{:02}\", 3)")
+                              << "std::format(\"cam{:02}\", 3) expression";
+        QTest::newRow("missing argument")
+            << QByteArray("std::format(\"{}/{}\", ns)") << "std::format(\"{}/{}\", ns) expression";
+        QTest::newRow("unknown part") << QByteArray("std::format(\"{}\", get_ns())")
+                                      << "std::format(\"{}\", get_ns()) expression";
+        QTest::newRow("to_string") << QByteArray("\"cam\" + std::to_string(2)") << "cam2 literal";
+        QTest::newRow("to_string double") << QByteArray("\"cam\" + std::to_string(0.5)")
+                                          << "\"cam\" + std::to_string(0.5) expression";
+        QTest::newRow("c_str") << QByteArray("std::string(ns.c_str())") << "robot local";
+        QTest::newRow("parameter")
+            << QByteArray("std::format(\"{}/odom\", declare_parameter(\"ns\", \"r\"))")
+            << "r/odom parameter ns";
+    }
+
+    // A loop counter's initial value is not its value in the body: `image_raw0` would be wrong.
+    void loopCounter()
+    {
+        const QByteArray code =
+            "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n"
+            "    for (std::size_t i = 0; i < 3; ++i)\n"
+            "      pubs_.push_back(create_publisher<std_msgs::msg::String>(\n"
+            "        \"~/image_raw\" + std::to_string(i), 1));\n"
+            "    const int first = 0;\n"
+            "    pub_ = create_publisher<std_msgs::msg::String>(\"~/image_raw\" + "
+            "std::to_string(first), 1);\n"
+            "  }\n};\n";
+        QCOMPARE(resolvedNames(analyzeFiles({{"a/n.cpp", "a", code}})),
+                 (QStringList{QStringLiteral("\"~/image_raw\" + std::to_string(i) expression"),
+                              QStringLiteral("~/image_raw0 local")}));
+    }
+
+    void formattedNames()
+    {
+        QFETCH(QByteArray, expression);
+        QFETCH(QString, name);
+        const QByteArray code = "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n"
+                                "    const std::string ns = \"robot\";\n"
+                                "    pub_ = create_publisher<std_msgs::msg::String>(" +
+                                expression + ", 1);\n  }\n};\n";
+        QCOMPARE(resolvedNames(analyzeFiles({{"a/n.cpp", "a", code}})), QStringList{name});
+    }
+
     void portNames()
     {
         const LanguageAnalysis a = analyzeCase(QStringLiteral("cpp_names"));
