@@ -17,6 +17,30 @@ using namespace rosarch::test::cpp;
 
 namespace {
 
+// The analysis of a workspace holding one C++ file of package `pkg`.
+LanguageAnalysis analyzeFile(const QTemporaryDir &dir, const QString &name,
+                             const QByteArray &content)
+{
+    QFile f(dir.filePath(name));
+    if (!f.open(QIODevice::WriteOnly))
+        return {};
+    f.write(content);
+    f.close();
+    Workspace ws;
+    ws.root = dir.path();
+    ws.files.append({name, QStringLiteral("pkg"), SourceFile::Language::Cpp, f.size()});
+    return CppNodeAnalyzer(ws).analyze();
+}
+
+QStringList portNames(const AtomicNode *n)
+{
+    QStringList names;
+    if (n)
+        for (const Port &p : n->ports)
+            names.append(p.name);
+    return names;
+}
+
 } // namespace
 
 class TestCppNodeAnalyzer : public QObject
@@ -251,10 +275,80 @@ private Q_SLOTS:
         QCOMPARE(a.diagnostics[0].code, QStringLiteral("syntax-error"));
         QCOMPARE(a.diagnostics[0].evidence.file, QStringLiteral("broken_pkg/src/half_written.cpp"));
         QCOMPARE(a.diagnostics[0].evidence.line, 13);
+        QVERIFY2(a.diagnostics[0].message.endsWith(QLatin1String("the rest parses: line 13.")),
+                 qPrintable(a.diagnostics[0].message));
         QCOMPARE(findNode(a, QStringLiteral("Survivor"))->ports.size(), 1);
         QCOMPARE(findNode(a, QStringLiteral("Unfinished"))->ports.value(0).name,
                  QStringLiteral("draft"));
         QCOMPARE(a.entryPoints.size(), 2);
+    }
+
+    // A broken member costs that member: the statement or line is blanked and the file parsed
+    // again, so the class keeps its other members and the class after it is still found.
+    void brokenMemberCostsOnlyItself()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const LanguageAnalysis a = analyzeFile(
+            dir, QStringLiteral("n.cpp"),
+            "class N : public rclcpp::Node\n"                                            // 1
+            "{\n"                                                                        // 2
+            "public:\n"                                                                  // 3
+            "  N() : Node(\"n\")\n"                                                      // 4
+            "  {\n"                                                                      // 5
+            "    a_ = create_publisher<std_msgs::msg::String>(\"before\", 10);\n"        // 6
+            "    b_ = create_publisher<std_msgs::msg::String>(\"same_function\", 10);\n" // 7
+            "  }\n"                                                                      // 8
+            "  void broken() { int x = ; foo(}; }\n"                                     // 9
+            "  void later()\n"                                                           // 10
+            "  {\n"                                                                      // 11
+            "    c_ = create_subscription<std_msgs::msg::String>(\"after\", 10, cb);\n"  // 12
+            "  }\n"                                                                      // 13
+            "  int max_;\n"                                                              // 14
+            "};\n"                                                                       // 15
+            "class M : public rclcpp::Node\n"                                            // 16
+            "{\n"                                                                        // 17
+            "public:\n"                                                                  // 18
+            "  M() : Node(\"m\") { d_ = create_publisher<std_msgs::msg::Empty>(\"next\", 1); }\n"
+            "};\n");
+        QCOMPARE(classNames(a), (QStringList{QStringLiteral("pkg/M"), QStringLiteral("pkg/N")}));
+        QCOMPARE(portNames(findNode(a, QStringLiteral("N"))),
+                 (QStringList{QStringLiteral("before"), QStringLiteral("same_function"),
+                              QStringLiteral("after")}));
+        QCOMPARE(portNames(findNode(a, QStringLiteral("M"))), QStringList{QStringLiteral("next")});
+        QCOMPARE(a.diagnostics.size(), 1);
+        const Diagnostic &d = a.diagnostics.first();
+        QCOMPARE(d.code, QStringLiteral("syntax-error"));
+        QCOMPARE(d.evidence.line, 9);
+        QVERIFY2(d.message.endsWith(QLatin1String("the rest parses: line 9.")),
+                 qPrintable(d.message));
+        // Evidence after the blanked line is where it was written.
+        QCOMPARE(findNode(a, QStringLiteral("N"))->ports.value(2).evidence.line, 12);
+        QCOMPARE(findNode(a, QStringLiteral("N"))->ports.value(2).evidence.column, 10);
+    }
+
+    // Balanced braces: only the broken statement goes, the rest of its function stays.
+    void brokenStatementCostsOnlyItself()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const LanguageAnalysis a = analyzeFile(
+            dir, QStringLiteral("s.cpp"),
+            "struct S : rclcpp::Node\n"                                                      // 1
+            "{\n"                                                                            // 2
+            "  S() : Node(\"s\")\n"                                                          // 3
+            "  {\n"                                                                          // 4
+            "    int x = (3 + ;\n"                                                           // 5
+            "    a_ = create_publisher<std_msgs::msg::String>(\"kept\", 10);\n"              // 6
+            "  }\n"                                                                          // 7
+            "  void more() { b_ = create_publisher<std_msgs::msg::String>(\"also\", 1); }\n" // 8
+            "};\n");
+        QCOMPARE(classNames(a), QStringList{QStringLiteral("pkg/S")});
+        QCOMPARE(portNames(findNode(a, QStringLiteral("S"))),
+                 (QStringList{QStringLiteral("kept"), QStringLiteral("also")}));
+        QCOMPARE(a.diagnostics.size(), 1);
+        QVERIFY2(a.diagnostics[0].message.endsWith(QLatin1String("the rest parses: line 5.")),
+                 qPrintable(a.diagnostics[0].message));
     }
 
     // Ports behind #if, a class whose branches open braces differently, macros as names; the
