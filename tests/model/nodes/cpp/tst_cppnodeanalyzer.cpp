@@ -351,6 +351,46 @@ private Q_SLOTS:
                  qPrintable(a.diagnostics[0].message));
     }
 
+    // point_cloud_transport: PointCloudTransport::subscribe / advertise through a member or a
+    // local, and the free functions; the type is always sensor_msgs/msg/PointCloud2.
+    void pointCloudTransport()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const LanguageAnalysis a = analyzeFile(
+            dir, QStringLiteral("cloud.cpp"),
+            "class Cloud : public rclcpp::Node\n" // 1
+            "{\n"                                 // 2
+            "public:\n"                           // 3
+            "  Cloud() : Node(\"cloud\")\n"       // 4
+            "  {\n"                               // 5
+            "    pct_ = std::make_shared<point_cloud_transport::PointCloudTransport>(*this);\n"
+            "    sub_ = pct_->subscribe(\"points\", rclcpp::SensorDataQoS(),\n"             // 7
+            "      std::bind(&Cloud::onPoints, this, std::placeholders::_1), {}, &hint);\n" // 8
+            "    point_cloud_transport::PointCloudTransport transport(*this);\n"            // 9
+            "    pub_ = transport.advertise(\"filtered\", 10);\n"                           // 10
+            "    raw_ = point_cloud_transport::create_subscription(\n"                      // 11
+            "      this, \"raw\", std::bind(&Cloud::onRaw, this, std::placeholders::_1), "
+            "\"raw\");\n"
+            "    out_ = point_cloud_transport::create_publisher(this, \"out\");\n" // 13
+            "  }\n"                                                                // 14
+            "};\n");
+        const AtomicNode *cloud = findNode(a, QStringLiteral("Cloud"));
+        QVERIFY(cloud);
+        QCOMPARE(describePorts(*cloud),
+                 (QStringList{
+                     QStringLiteral("subscriber points sensor_msgs/msg/PointCloud2 cb=onPoints "
+                                    "origin=literal expr= param= guard= gp= via= @cloud.cpp:7"),
+                     QStringLiteral("publisher filtered sensor_msgs/msg/PointCloud2 cb= "
+                                    "origin=literal expr= param= guard= gp= via= @cloud.cpp:10"),
+                     QStringLiteral("subscriber raw sensor_msgs/msg/PointCloud2 cb=onRaw "
+                                    "origin=literal expr= param= guard= gp= via= @cloud.cpp:11"),
+                     QStringLiteral("publisher out sensor_msgs/msg/PointCloud2 cb= "
+                                    "origin=literal expr= param= guard= gp= via= @cloud.cpp:13"),
+                 }));
+        QCOMPARE(cloud->ports.value(0).qos, QStringLiteral("rclcpp::SensorDataQoS()"));
+    }
+
     // Ports behind #if, a class whose branches open braces differently, macros as names; the
     // ports themselves are in tests/data/cpp_preprocessor/expected.
     void conditionalCompilation()
