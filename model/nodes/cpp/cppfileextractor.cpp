@@ -42,7 +42,8 @@ QStringList templateParameterNames(const SyntaxTree &tree, TSNode list)
 class Walker
 {
 public:
-    Walker(const SyntaxTree &tree, CppFileFacts &facts) : m_tree(tree), m_facts(facts)
+    Walker(const SyntaxTree &tree, CppFileFacts &facts, const CppMacros &macros)
+        : m_tree(tree), m_facts(facts), m_macros(macros)
     {
         const QByteArray &src = tree.source();
         m_rclcppNode =
@@ -154,6 +155,7 @@ private:
         context.templateParameters = scope.templateParameters;
         context.rclcppNodeInScope = m_rclcppNode;
         context.lifecycleNodeInScope = m_lifecycleNode;
+        context.macros = &m_macros;
         CppFunctionExtractor extractor(m_tree, context);
         m_facts.functions.append(extractor.extract(n, templateParameters));
     }
@@ -265,6 +267,7 @@ private:
 
     const SyntaxTree &m_tree;
     CppFileFacts &m_facts;
+    const CppMacros &m_macros;
     bool m_rclcppNode = false;
     bool m_lifecycleNode = false;
 };
@@ -400,7 +403,7 @@ CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &pa
     const TSNode root = tree.root();
     if (ts::isNull(root))
         return facts;
-    Walker walker(tree, facts);
+    Walker walker(tree, facts, macros);
     walker.visitScope(root, Scope());
     if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE") ||
         tree.source().contains("PLUGINLIB_EXPORT_CLASS"))

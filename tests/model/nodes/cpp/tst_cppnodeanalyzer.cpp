@@ -391,6 +391,37 @@ private Q_SLOTS:
         QCOMPARE(cloud->ports.value(0).qos, QStringLiteral("rclcpp::SensorDataQoS()"));
     }
 
+    // A function-like macro that wraps a string names a port through its expansion.
+    void stringMacrosNamePorts()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const LanguageAnalysis a = analyzeFile(
+            dir, QStringLiteral("m.cpp"),
+            "#define ROBOT \"robot\"\n"                                                  // 1
+            "#define TOPIC(x) ROBOT \"/\" x\n"                                           // 2
+            "#define NS(x) \"ns/\" #x\n"                                                 // 3
+            "class M : public rclcpp::Node\n"                                            // 4
+            "{\n"                                                                        // 5
+            "public:\n"                                                                  // 6
+            "  M() : Node(\"m\")\n"                                                      // 7
+            "  {\n"                                                                      // 8
+            "    a_ = create_publisher<std_msgs::msg::String>(TOPIC(\"status\"), 10);\n" // 9
+            "    b_ = create_publisher<std_msgs::msg::String>(NS(odom), 10);\n"          // 10
+            "    c_ = create_publisher<std_msgs::msg::String>(TOPIC(name_), 10);\n"      // 11
+            "  }\n"                                                                      // 12
+            "};\n");
+        const AtomicNode *m = findNode(a, QStringLiteral("M"));
+        QVERIFY(m);
+        QCOMPARE(m->ports.size(), 3);
+        QCOMPARE(m->ports[0].name, QStringLiteral("robot/status"));
+        QCOMPARE(m->ports[0].nameOrigin, NameOrigin::Literal);
+        QCOMPARE(m->ports[0].evidence.line, 9);
+        QCOMPARE(m->ports[0].evidence.column, 10);
+        QCOMPARE(m->ports[1].name, QStringLiteral("ns/odom"));
+        QVERIFY(m->ports[2].nameOrigin != NameOrigin::Literal); // a variable is not expanded
+    }
+
     // Ports behind #if, a class whose branches open braces differently, macros as names; the
     // ports themselves are in tests/data/cpp_preprocessor/expected.
     void conditionalCompilation()
