@@ -62,6 +62,7 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     macroIndex.lookup(file->path));
                 cppsyntax::blankExportMacros(&bytes);
                 cppsyntax::blankQtKeywords(&bytes);
+                cppsyntax::blankGrammarGaps(&bytes);
                 QList<Diagnostic> isolated;
                 const SyntaxTree tree =
                     CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);

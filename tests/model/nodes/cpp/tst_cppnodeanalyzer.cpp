@@ -4,6 +4,7 @@
 #include "cppanalysis.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
+#include "syntaxtree.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
 
@@ -585,6 +586,37 @@ private Q_SLOTS:
         QVERIFY(canceled.entryPoints.isEmpty());
     }
 
+    // Valid C++ the grammar cannot read is rewritten in place, so it parses without errors and
+    // every offset stays.
+    void grammarGapsAreBlanked()
+    {
+        QByteArray src("void f(Border<T> border = {}, int n = 1)\n"
+                       "{\n"
+                       "  a = new double *[n + 2];\n"
+                       "  b = new double *[n]();\n"
+                       "  goal_ = typename ActionT::Goal();\n"
+                       "  g->setPose(typename NodeT::Coordinates(mx, my));\n"
+                       "  bb->template set(\"node\", c);\n"
+                       "  bb->template get<int>(\"node\");\n"
+                       "  x = {};\n"
+                       "}\n");
+        const QByteArray before = src;
+        cppsyntax::blankGrammarGaps(&src);
+        QCOMPARE(src.size(), before.size());
+        QCOMPARE(src, QByteArray("void f(Border<T> border = 0 , int n = 1)\n"
+                                 "{\n"
+                                 "  a = new double  [n + 2];\n"
+                                 "  b = new double  [n]  ;\n"
+                                 "  goal_ =          ActionT::Goal();\n"
+                                 "  g->setPose(         NodeT::Coordinates(mx, my));\n"
+                                 "  bb->         set(\"node\", c);\n"
+                                 "  bb->template get<int>(\"node\");\n"
+                                 "  x = {};\n"
+                                 "}\n"));
+        const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Cpp, src, QString());
+        QVERIFY(!ts_node_has_error(tree.root()));
+    }
+
     void exportMacrosAreBlanked()
     {
         QByteArray src(
@@ -596,6 +628,12 @@ private Q_SLOTS:
         QVERIFY(src.startsWith("#define FOO_PUBLIC")); // preprocessor lines stay
         QVERIFY(src.contains(
             "class            Foo {            void f(const char *s = \"BAR_PUBLIC\"); };"));
+        // Values are enumerators or constants, whatever their suffix.
+        QByteArray values("auto d = RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL;\n"
+                          "EXPECT_EQ(q.durability, RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL);\n");
+        const QByteArray unchanged = values;
+        cppsyntax::blankExportMacros(&values);
+        QCOMPARE(values, unchanged);
     }
 };
 
