@@ -431,8 +431,8 @@ void blankGrammarGaps(QByteArray *source)
     }
     if (typenames) {
         static const QRegularExpression constructed(
-            QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+[A-Za-z_][\\w]*(?:<[^;{}()]*?>)?(?"
-                           ":::[A-Za-z_]\\w*)+"
+            QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+"
+                           "[A-Za-z_]\\w*(?:<[^;{}()]*?>)?(?:::[A-Za-z_]\\w*(?:<[^;{}()]*?>)?)+"
                            "\\s*[({]"));
         each(constructed, [&](const QRegularExpressionMatch &m) {
             blank(m.capturedStart(1), m.capturedEnd(1));
