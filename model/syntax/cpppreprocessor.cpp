@@ -485,4 +485,57 @@ QString CppPreprocessor::constantValue(const QByteArray &body, const CppMacros &
     return constantText(body, macros, 0);
 }
 
+QString CppPreprocessor::expandedValue(const CppMacro &macro, const QList<QByteArray> &arguments,
+                                       const CppMacros &macros)
+{
+    if (!macro.functionLike || macro.parameters.size() != arguments.size() ||
+        macro.body.contains("##") || macro.body.size() > 512)
+        return {};
+    // Parameters are replaced outside string literals only; `#x` becomes "x as written".
+    const QByteArray &body = macro.body;
+    QByteArray text;
+    for (qsizetype i = 0; i < body.size();) {
+        const char c = body.at(i);
+        if (c == '"') {
+            qsizetype j = i + 1;
+            while (j < body.size() && body.at(j) != '"')
+                j += body.at(j) == '\\' ? 2 : 1;
+            text += body.mid(i, j + 1 - i);
+            i = j + 1;
+            continue;
+        }
+        const bool stringify = c == '#';
+        qsizetype from = stringify ? i + 1 : i;
+        while (stringify && from < body.size() && std::isspace(uchar(body.at(from))))
+            ++from;
+        if (from < body.size() && (std::isalpha(uchar(body.at(from))) || body.at(from) == '_')) {
+            qsizetype j = from;
+            while (j < body.size() && isIdent(body.at(j)))
+                ++j;
+            const qsizetype at = macro.parameters.indexOf(body.mid(from, j - from));
+            if (at >= 0) {
+                const QByteArray argument = arguments.at(at).simplified();
+                if (stringify) {
+                    if (argument.contains('"') || argument.contains('\\'))
+                        return {};
+                    text += '"' + argument + '"';
+                } else {
+                    text += ' ' + argument + ' ';
+                }
+            } else if (stringify) {
+                return {};
+            } else {
+                text += body.mid(i, j - i);
+            }
+            i = j;
+            continue;
+        }
+        if (stringify)
+            return {};
+        text += c;
+        ++i;
+    }
+    return constantText(text, macros, 0);
+}
+
 } // namespace rosarch

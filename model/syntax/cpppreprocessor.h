@@ -46,6 +46,13 @@ public:
     /// The string a macro body stands for when it is string literals and `macros` standing for
     /// strings ("a" B "c" -> "abc"), or its text when it is a number; null otherwise.
     static QString constantValue(const QByteArray &body, const CppMacros &macros = {});
+
+    /// The string a function-like macro call stands for when its body, with the arguments (as
+    /// written) put in for the parameters and `#param` made a string, is a constant as above:
+    /// `#define TOPIC(x) "robot/" x`, `TOPIC("scan")` -> "robot/scan". Null otherwise, and for
+    /// token pasting (`##`) or a wrong number of arguments.
+    static QString expandedValue(const CppMacro &macro, const QList<QByteArray> &arguments,
+                                 const CppMacros &macros = {});
 };
 
 } // namespace rosarch

@@ -63,6 +63,13 @@ void blankExportMacros(QByteArray *source);
 /// `slots`, and `signals:` / `Q_SIGNALS:` becomes `public:` (what moc's headers define them as).
 void blankQtKeywords(QByteArray *source);
 
+/// Overwrites, keeping offsets, lines and columns, what valid C++ the grammar cannot read:
+/// the `*` of `new T *[n]` and the `()` of `new T[n]()`, `typename` before a dependent type
+/// constructed in an expression (`x = typename T::Goal();`), `template` after `->` / `.`
+/// without template arguments (`bb->template set(...)`), and a `{}` default argument, which
+/// becomes `0`. None of it names a port.
+void blankGrammarGaps(QByteArray *source);
+
 /// True for header extensions (.h .hh .hpp .hxx .inl).
 bool isHeaderPath(const QString &path);
 

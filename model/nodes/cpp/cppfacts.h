@@ -82,12 +82,14 @@ struct CppPortCall
     QString typeWritten; ///< the interface type as written in the template argument
     bool typeIsTemplateParameter = false; ///< generic wrapper code, not a port
     QString callback;
-    int callbackParameter = -1;  ///< the callback is this parameter of the enclosing function
-    QString guard;               ///< enclosing `if` conditions, joined with " && "
-    CppValue guardValue;         ///< the variable (or parameter read) the guard tests
-    QString receiver;            ///< "" for an implicit `this`, else the object expression
-    bool imageTransport = false; ///< image_transport call: the type is sensor_msgs/msg/Image
-    QString qos;                 ///< the QoS argument of a publisher or subscription, as written
+    int callbackParameter = -1; ///< the callback is this parameter of the enclosing function
+    QString guard;              ///< enclosing `if` conditions, joined with " && "
+    CppValue guardValue;        ///< the variable (or parameter read) the guard tests
+    QString receiver;           ///< "" for an implicit `this`, else the object expression
+    /// The type an image_transport (sensor_msgs/msg/Image) or point_cloud_transport
+    /// (sensor_msgs/msg/PointCloud2) call always has; "" for other calls.
+    QString transportType;
+    QString qos; ///< the QoS argument of a publisher or subscription, as written
     Evidence evidence;
 };
 

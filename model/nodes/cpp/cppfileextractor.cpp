@@ -1,5 +1,6 @@
 #include "cppfileextractor.h"
 
+#include "cpperrorrecovery.h"
 #include "cppfunctionextractor.h"
 #include "cpppreprocessor.h"
 #include "cppsyntax.h"
@@ -41,7 +42,8 @@ QStringList templateParameterNames(const SyntaxTree &tree, TSNode list)
 class Walker
 {
 public:
-    Walker(const SyntaxTree &tree, CppFileFacts &facts) : m_tree(tree), m_facts(facts)
+    Walker(const SyntaxTree &tree, CppFileFacts &facts, const CppMacros &macros)
+        : m_tree(tree), m_facts(facts), m_macros(macros)
     {
         const QByteArray &src = tree.source();
         m_rclcppNode =
@@ -73,6 +75,10 @@ public:
         } else if (t == "class_specifier" || t == "struct_specifier") {
             addClass(n, scope, templateParameters);
         } else if (t == "function_definition") {
+            // A class the parser closed early can end up as the return type of what follows.
+            const TSNode type = ts::field(n, "type");
+            if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
+                addClass(type, scope, templateParameters);
             addFunction(n, scope, templateParameters);
         } else if (t == "alias_declaration") {
             addAlias(scope, m_tree.text(ts::field(n, "name")),
@@ -149,6 +155,7 @@ private:
         context.templateParameters = scope.templateParameters;
         context.rclcppNodeInScope = m_rclcppNode;
         context.lifecycleNodeInScope = m_lifecycleNode;
+        context.macros = &m_macros;
         CppFunctionExtractor extractor(m_tree, context);
         m_facts.functions.append(extractor.extract(n, templateParameters));
     }
@@ -285,109 +292,20 @@ private:
 
     const SyntaxTree &m_tree;
     CppFileFacts &m_facts;
+    const CppMacros &m_macros;
     bool m_rclcppNode = false;
     bool m_lifecycleNode = false;
 };
-
-bool isMacroName(std::string_view name)
-{
-    if (name.size() < 2)
-        return false;
-    if (name.substr(0, 3) == "PRI" || name.substr(0, 3) == "SCN")
-        return true; // <cinttypes> format macros: "%" PRId64
-    for (char c : name)
-        if (!(std::isupper(uchar(c)) || std::isdigit(uchar(c)) || c == '_'))
-            return false;
-    return true;
-}
-
-bool isSpecifierWord(std::string_view word)
-{
-    for (const char *k : {"explicit", "virtual", "inline", "static", "constexpr", "override",
-                          "final", "friend", "extern", "const"})
-        if (word == k)
-            return true;
-    return false;
-}
-
-// Tree-sitter does not expand macros, so ROS code is full of harmless "errors": a format
-// macro after a string ("%" PRId64), an export macro before a declaration, a registration
-// macro without a semicolon, an `extern "C"` split across #ifdef. Those are not reported.
-bool isMacroArtifact(const SyntaxTree &tree, TSNode n)
-{
-    if (ts_node_is_missing(n)) {
-        const std::string_view missing = ts::type(n);
-        if (!missing.empty() && missing.front() == '#')
-            return true;
-        if (missing == ";") {
-            // MACRO(args) without a semicolon: look at the text before the gap.
-            const QByteArray &src = tree.source();
-            qsizetype i = qsizetype(ts_node_start_byte(n)) - 1;
-            while (i >= 0 && std::isspace(uchar(src.at(i))))
-                --i;
-            if (i < 0 || src.at(i) != ')')
-                return false;
-            for (int depth = 0; i >= 0; --i) {
-                depth += src.at(i) == ')' ? 1 : src.at(i) == '(' ? -1 : 0;
-                if (depth == 0)
-                    break;
-            }
-            qsizetype end = i;
-            while (end > 0 && std::isspace(uchar(src.at(end - 1))))
-                --end;
-            qsizetype begin = end;
-            while (begin > 0 &&
-                   (std::isalnum(uchar(src.at(begin - 1))) || src.at(begin - 1) == '_'))
-                --begin;
-            return end > begin &&
-                   isMacroName(std::string_view(src.constData() + begin, size_t(end - begin)));
-        }
-        return false;
-    }
-    const auto kids = ts::namedChildren(n);
-    if (kids.empty()) { // `EXPORT_MACRO ~Foo()`: the stray token becomes the error
-        const TSNode previous = ts_node_prev_named_sibling(n);
-        return !ts::isNull(previous) && isMacroName(tree.view(previous));
-    }
-    bool strings = true;
-    bool words = true;
-    bool macro = false;
-    for (TSNode k : kids) {
-        const bool name = ts::is(k, "identifier") || ts::is(k, "type_identifier");
-        strings = strings && (ts::is(k, "string_literal") || ts::is(k, "concatenated_string"));
-        words = words && name && (isMacroName(tree.view(k)) || isSpecifierWord(tree.view(k)));
-        macro = macro || (name && isMacroName(tree.view(k)));
-    }
-    const TSNode next = ts_node_next_named_sibling(n);
-    const TSNode previous = ts_node_prev_named_sibling(n);
-    if (strings) // "%" PRId64: the string becomes the error, the macro its sibling
-        return ts::is(next, "identifier") && isMacroName(tree.view(next));
-    if (words && !macro) // `EXPORT_MACRO explicit Foo(...)`: the keyword becomes the error
-        return !ts::isNull(previous) && isMacroName(tree.view(previous));
-    return words;
-}
 
 QList<Diagnostic> syntaxErrors(const SyntaxTree &tree)
 {
     const TSNode root = tree.root();
     if (ts::isNull(root) || !ts_node_has_error(root))
         return tree.syntaxErrors(1);
-    TSNode first{};
-    bool found = false;
-    ts::walk(root, [&](TSNode n) {
-        if (found)
-            return false;
-        if (ts::is(n, "ERROR") || ts_node_is_missing(n)) {
-            if (!isMacroArtifact(tree, n)) {
-                first = n;
-                found = true;
-            }
-            return false;
-        }
-        return bool(ts_node_has_error(n));
-    });
-    if (!found)
+    const std::vector<TSNode> errors = CppErrorRecovery::realErrors(tree);
+    if (errors.empty())
         return {};
+    const TSNode first = errors.front();
     Diagnostic d;
     d.severity = Diagnostic::Severity::Warning;
     d.code = QStringLiteral("syntax-error");
@@ -510,7 +428,7 @@ CppFileFacts CppFileExtractor::extract(const SyntaxTree &tree, const QString &pa
     const TSNode root = tree.root();
     if (ts::isNull(root))
         return facts;
-    Walker walker(tree, facts);
+    Walker walker(tree, facts, macros);
     walker.visitScope(root, Scope());
     if (tree.source().contains("RCLCPP_COMPONENTS_REGISTER_NODE") ||
         tree.source().contains("PLUGINLIB_EXPORT_CLASS"))

@@ -26,6 +26,7 @@ public:
         QStringList templateParameters; ///< of enclosing class templates
         bool rclcppNodeInScope = false; ///< `using rclcpp::Node` / `using namespace rclcpp`
         bool lifecycleNodeInScope = false;
+        const CppMacros *macros = nullptr; ///< in effect in the file (function-like ones expand)
     };
 
     CppFunctionExtractor(const SyntaxTree &tree, Context context);
@@ -63,7 +64,7 @@ private:
     QStringList m_templateParameters;
     QHash<QString, CppLocal> m_locals;
     QStringList m_returned; ///< locals the function returns (node factories are no nodes)
-    CppValueEvaluator m_values{m_tree, m_locals, m_function};
+    CppValueEvaluator m_values{m_tree, m_locals, m_function, m_context.macros};
     CppPortCallReader m_portCalls{m_tree,       m_values,  m_locals, m_templateParameters,
                                   m_definition, m_function};
 };

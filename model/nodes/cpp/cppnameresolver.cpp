@@ -418,8 +418,8 @@ Port CppNameResolver::port(const CppPortCall &call, const CppLinkContext &ctx) c
     port.nameOrigin = r.origin;
     port.nameExpression = r.expression;
     port.parameter = r.parameter;
-    port.type = call.imageTransport ? QStringLiteral("sensor_msgs/msg/Image")
-                                    : resolveType(call.typeWritten, ctx);
+    port.type =
+        !call.transportType.isEmpty() ? call.transportType : resolveType(call.typeWritten, ctx);
     port.callback = call.callback;
     const CppSubstitution *subst = substitutionFor(ctx);
     if (call.callbackParameter >= 0 && subst && call.callbackParameter < subst->arguments.size()) {

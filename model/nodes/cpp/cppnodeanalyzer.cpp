@@ -1,5 +1,6 @@
 #include "cppnodeanalyzer.h"
 
+#include "cpperrorrecovery.h"
 #include "cppfileextractor.h"
 #include "cppmacroindex.h"
 #include "cppnodelinker.h"
@@ -61,10 +62,12 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     macroIndex.lookup(file->path));
                 cppsyntax::blankExportMacros(&bytes);
                 cppsyntax::blankQtKeywords(&bytes);
+                cppsyntax::blankGrammarGaps(&bytes);
+                QList<Diagnostic> isolated;
                 const SyntaxTree tree =
-                    SyntaxTree::parse(SyntaxTree::Grammar::Cpp, std::move(bytes), file->path);
+                    CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
                 facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
-                facts.diagnostics = preprocessed.diagnostics + facts.diagnostics;
+                facts.diagnostics = preprocessed.diagnostics + isolated + facts.diagnostics;
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();
                 facts.path = file->path;

@@ -23,9 +23,21 @@ struct PortCallKind
     bool generic = false; ///< create_generic_*: the type is the second argument, as a string
     PortKind kind = PortKind::Publisher;
     bool freeForm =
-        false;          ///< the node is the first argument: rclcpp_action::create_server(node, ...)
-    bool image = false; ///< image_transport: the type is always sensor_msgs/msg/Image
+        false; ///< the node is the first argument: rclcpp_action::create_server(node, ...)
+    QString transportType; ///< image_transport, point_cloud_transport: the type is fixed
 };
+
+const QString imageType = QStringLiteral("sensor_msgs/msg/Image");
+const QString pointCloudType = QStringLiteral("sensor_msgs/msg/PointCloud2");
+
+// pct_, point_cloud_transport_, cloud_transport: a PointCloudTransport (a member's type is not
+// known to the file that calls it).
+bool looksLikePointCloudTransport(const QString &receiver)
+{
+    const QString r = receiver.toLower();
+    return r.contains(QLatin1String("pct")) || r.contains(QLatin1String("point_cloud")) ||
+           r.contains(QLatin1String("pointcloud")) || r.contains(QLatin1String("cloud_transport"));
+}
 
 bool looksLikeImageTransport(const QString &receiver)
 {
@@ -47,18 +59,37 @@ PortCallKind portCallKind(const CallShape &shape, const QString &receiverText,
     const bool memberQualified = scoped && scope.endsWith(QLatin1String("Node"));
     const bool free = scoped && !memberQualified;
     const bool imageScope = scope.contains(QLatin1String("image_transport"));
+    const bool cloudScope = scope.contains(QLatin1String("point_cloud_transport"));
     k.freeForm = free;
+    if (cloudScope) {
+        if (n == QLatin1String("create_publisher") || n == QLatin1String("create_subscription")) {
+            k.port = true;
+            k.kind =
+                n == QLatin1String("create_publisher") ? PortKind::Publisher : PortKind::Subscriber;
+            k.transportType = pointCloudType;
+        }
+        return k;
+    }
+    const bool receiverIsCloud = !scoped && !ts::isNull(shape.receiver) &&
+                                 (receiverType.contains(QLatin1String("PointCloudTransport")) ||
+                                  looksLikePointCloudTransport(receiverText));
+    if (receiverIsCloud && (n == QLatin1String("advertise") || n == QLatin1String("subscribe"))) {
+        k.port = true;
+        k.kind = n == QLatin1String("advertise") ? PortKind::Publisher : PortKind::Subscriber;
+        k.transportType = pointCloudType;
+        return k;
+    }
     if (imageScope) {
         if (n == QLatin1String("create_publisher") ||
             n == QLatin1String("create_camera_publisher")) {
             k.port = true;
             k.kind = PortKind::Publisher;
-            k.image = true;
+            k.transportType = imageType;
         } else if (n == QLatin1String("create_subscription") ||
                    n == QLatin1String("create_camera_subscription")) {
             k.port = true;
             k.kind = PortKind::Subscriber;
-            k.image = true;
+            k.transportType = imageType;
         }
         return k;
     }
@@ -95,14 +126,14 @@ PortCallKind portCallKind(const CallShape &shape, const QString &receiverText,
                (n == QLatin1String("advertise") || n == QLatin1String("advertiseCamera"))) {
         k.port = true;
         k.kind = PortKind::Publisher;
-        k.image = true;
+        k.transportType = imageType;
     } else if (!scoped && !ts::isNull(shape.receiver) &&
                (n == QLatin1String("subscribe") || n == QLatin1String("subscribeCamera")) &&
                (receiverType.contains(QLatin1String("ImageTransport")) ||
                 looksLikeImageTransport(receiverText))) {
         k.port = true;
         k.kind = PortKind::Subscriber;
-        k.image = true;
+        k.transportType = imageType;
     }
     return k;
 }
@@ -156,7 +187,7 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
 
     CppPortCall port;
     port.kind = k.kind;
-    port.imageTransport = k.image;
+    port.transportType = k.transportType;
     port.evidence = m_tree.evidence(call);
     port.name = m_values.evaluate(args[size_t(nameIndex)]);
     if (!ts::isNull(shape.templateArguments))

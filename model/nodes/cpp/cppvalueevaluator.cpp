@@ -1,5 +1,7 @@
 #include "cppvalueevaluator.h"
 
+#include "cpppreprocessor.h"
+
 #include <QRegularExpression>
 
 namespace rosarch {
@@ -77,8 +79,8 @@ bool isLoopVariable(TSNode value)
 } // namespace
 
 CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
-                                     const CppFunction &function)
-    : m_tree(tree), m_locals(locals), m_function(function)
+                                     const CppFunction &function, const CppMacros *macros)
+    : m_tree(tree), m_locals(locals), m_function(function), m_macros(macros)
 {
 }
 
@@ -170,6 +172,23 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
     if (t == "call_expression") {
         const CallShape shape = callShape(m_tree, ts::field(n, "function"));
         const bool onSelf = ts::isNull(shape.receiver) || ts::is(shape.receiver, "this");
+        if (m_macros && ts::isNull(shape.receiver) && shape.scope.isEmpty() &&
+            ts::isNull(shape.templateArguments)) {
+            // TOPIC("scan") with `#define TOPIC(x) "robot/" x`: the string it expands to.
+            const auto macro = m_macros->constFind(shape.name.toUtf8());
+            if (macro != m_macros->cend() && macro->functionLike) {
+                QList<QByteArray> texts;
+                for (TSNode a : arguments(ts::field(n, "arguments")))
+                    texts.append(
+                        QByteArray(m_tree.view(a).data(), qsizetype(m_tree.view(a).size())));
+                const QString value = CppPreprocessor::expandedValue(*macro, texts, *m_macros);
+                if (!value.isNull()) {
+                    v.kind = CppValue::Kind::Literal;
+                    v.literal = value;
+                    return v;
+                }
+            }
+        }
         if ((shape.name == QLatin1String("shared_from_this") ||
              shape.name == QLatin1String("weak_from_this")) &&
             onSelf) {

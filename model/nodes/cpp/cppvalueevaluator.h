@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cppfacts.h"
+#include "cppmacro.h"
 #include "cppsyntax.h"
 #include "syntaxtree.h"
 
@@ -25,8 +26,10 @@ class CppValueEvaluator
 {
 public:
     /// Reads `locals` and `function` as they are when asked (the extractor fills them).
+    /// `macros` (may be null): a call of a function-like one that stands for a string is that
+    /// string.
     CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
-                      const CppFunction &function);
+                      const CppFunction &function, const CppMacros *macros = nullptr);
 
     CppValue evaluate(TSNode expression, int depth = 0) const;
     /// What the identifier `name` holds at this point of the function.
@@ -45,6 +48,7 @@ private:
     const SyntaxTree &m_tree;
     const QHash<QString, CppLocal> &m_locals;
     const CppFunction &m_function;
+    const CppMacros *m_macros = nullptr;
 };
 
 } // namespace rosarch

@@ -288,6 +288,28 @@ private Q_SLOTS:
     }
 
     // A guard is only `#ifndef G` followed at once by `#define G`.
+    // Function-like macros that wrap a string: arguments put in, #x made a string, through
+    // object-like macros; anything else (pasting, a wrong count, code) is no constant.
+    void functionLikeStringMacros()
+    {
+        const CppMacros m = macros({{"ROOT", "\"robot\""}});
+        const CppMacro topic{"ROOT \"/\" x", {"x"}, true};
+        QCOMPARE(CppPreprocessor::expandedValue(topic, {"\"scan\""}, m),
+                 QStringLiteral("robot/scan"));
+        QCOMPARE(CppPreprocessor::expandedValue(topic, {"ROOT"}, m), QStringLiteral("robot/robot"));
+        const CppMacro named{"\"ns/\" # x \"/x\"", {"x"}, true};
+        QCOMPARE(CppPreprocessor::expandedValue(named, {"  odom  "}), QStringLiteral("ns/odom/x"));
+        const CppMacro two{"a \"_\" b", {"a", "b"}, true};
+        QCOMPARE(CppPreprocessor::expandedValue(two, {"\"l\"", "\"r\""}), QStringLiteral("l_r"));
+        QVERIFY(CppPreprocessor::expandedValue(two, {"\"l\""}).isNull());
+        QVERIFY(
+            CppPreprocessor::expandedValue(CppMacro{"a ## b", {"a", "b"}, true}, {"\"l\"", "\"r\""})
+                .isNull());
+        QVERIFY(CppPreprocessor::expandedValue(CppMacro{"f(x)", {"x"}, true}, {"\"y\""}).isNull());
+        QVERIFY(CppPreprocessor::expandedValue(topic, {"name_"}).isNull()); // a variable
+        QVERIFY(CppPreprocessor::expandedValue(CppMacro{"\"x\"", {}, false}, {}).isNull());
+    }
+
     void notAGuard()
     {
         QByteArray src = "#ifndef USE_SIM\n#define USE_HW 1\n#define USE_SIM 0\n#endif\n";
