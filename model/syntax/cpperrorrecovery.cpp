@@ -255,8 +255,7 @@ SyntaxTree CppErrorRecovery::parse(QByteArray source, const QString &file,
                 continue; // would unbalance a balanced file, or not help an unbalanced one
             if (!repairs && balance != 0 && fallback)
                 continue;
-            SyntaxTree next =
-                SyntaxTree::parse(SyntaxTree::Grammar::Cpp, blanked(tree.source(), r), file);
+            SyntaxTree next = SyntaxTree::reparse(tree, blanked(tree.source(), r), r.begin, r.end);
             ++parses;
             if (ts::isNull(next.root()))
                 continue;

@@ -32,7 +32,51 @@ void SyntaxTree::TreeDeleter::operator()(TSTree *t) const
 
 SyntaxTree::~SyntaxTree() = default;
 
+namespace {
+
+TSPoint pointAt(const QByteArray &source, qsizetype offset)
+{
+    TSPoint p{0, 0};
+    qsizetype lineStart = 0;
+    for (qsizetype i = 0; i < offset && i < source.size(); ++i) {
+        if (source.at(i) == '\n') {
+            ++p.row;
+            lineStart = i + 1;
+        }
+    }
+    p.column = uint32_t(offset - lineStart);
+    return p;
+}
+
+} // namespace
+
 SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
+{
+    return parseWith(grammar, std::move(source), std::move(file), nullptr);
+}
+
+SyntaxTree SyntaxTree::reparse(const SyntaxTree &previous, QByteArray source, qsizetype begin,
+                               qsizetype end)
+{
+    if (!previous.m_tree || source.size() != previous.m_source.size() || begin < 0 ||
+        end > source.size() || begin > end)
+        return parse(previous.m_grammar, std::move(source), previous.m_file);
+    TSTree *edited = ts_tree_copy(previous.m_tree.get());
+    TSInputEdit edit;
+    edit.start_byte = uint32_t(begin);
+    edit.old_end_byte = uint32_t(end);
+    edit.new_end_byte = uint32_t(end);
+    edit.start_point = pointAt(source, begin);
+    edit.old_end_point = pointAt(source, end);
+    edit.new_end_point = edit.old_end_point;
+    ts_tree_edit(edited, &edit);
+    SyntaxTree tree = parseWith(previous.m_grammar, std::move(source), previous.m_file, edited);
+    ts_tree_delete(edited);
+    return tree;
+}
+
+SyntaxTree SyntaxTree::parseWith(Grammar grammar, QByteArray source, QString file,
+                                 const TSTree *old)
 {
     SyntaxTree tree;
     tree.m_grammar = grammar;
@@ -43,7 +87,7 @@ SyntaxTree SyntaxTree::parse(Grammar grammar, QByteArray source, QString file)
                            grammar == Grammar::Python ? tree_sitter_python() : tree_sitter_cpp());
     // A generous bound so that pathological input cannot stall a stage.
     ts_parser_set_timeout_micros(parser, uint64_t(parseTimeoutMicros.load()));
-    tree.m_tree.reset(ts_parser_parse_string(parser, nullptr, tree.m_source.constData(),
+    tree.m_tree.reset(ts_parser_parse_string(parser, old, tree.m_source.constData(),
                                              uint32_t(tree.m_source.size())));
     // A parse that timed out leaves the parser holding the suspended parse: drop it before
     // the parser goes (the tree is null, and syntaxErrors() says the file was not parsed).

@@ -30,6 +30,12 @@ public:
     /// Parses `source`; never fails for text input (errors become ERROR nodes). A parse that
     /// runs longer than the parse time budget gives no tree (syntaxErrors() says so).
     static SyntaxTree parse(Grammar grammar, QByteArray source, QString file);
+    /// Parses `source`, which is `previous`'s source with the bytes [begin, end) replaced by as
+    /// many others (newlines kept), reusing what the edit did not touch (tree-sitter's
+    /// incremental parse). Where the text has errors, tree-sitter's recovery may differ in
+    /// detail from a full parse's; correct text gives the same tree.
+    static SyntaxTree reparse(const SyntaxTree &previous, QByteArray source, qsizetype begin,
+                              qsizetype end);
 
     /// The time budget of one parse, for every parse of the process (default 20 s).
     static void setParseTimeout(std::chrono::microseconds budget);
@@ -55,6 +61,8 @@ public:
 
 private:
     SyntaxTree() = default;
+    static SyntaxTree parseWith(Grammar grammar, QByteArray source, QString file,
+                                const TSTree *old);
     struct TreeDeleter
     {
         void operator()(TSTree *t) const;
