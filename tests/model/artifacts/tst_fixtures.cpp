@@ -1,5 +1,6 @@
 // Data-driven: every tests/data/<case>/ with expected/atomic_nodes.json is a row; when the case
-// also has expected/launch_dependencies.json, stage 2's output is compared too. The case's
+// also has expected/launch_dependencies.json, stage 2's output is compared too, and with
+// expected/stage1_diagnostics.txt the code and place of each stage-1 diagnostic. The case's
 // workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
 #include "acdwriter.h"
@@ -94,6 +95,17 @@ private Q_SLOTS:
             QDir(caseDir).filePath(QStringLiteral("expected/launch_dependencies.json"));
         if (QFileInfo::exists(launchExpected))
             compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
+
+        // Stage 1's diagnostics, one "code file:line" per line, when the case lists them.
+        const QString diagnosticsExpected =
+            QDir(caseDir).filePath(QStringLiteral("expected/stage1_diagnostics.txt"));
+        if (QFileInfo::exists(diagnosticsExpected)) {
+            QStringList lines;
+            for (const Diagnostic &d : list.diagnostics)
+                lines << QStringLiteral("%1 %2:%3").arg(d.code, d.evidence.file).arg(d.evidence.line);
+            lines.sort();
+            compareOrUpdate((lines.join(u'\n') + u'\n').toUtf8(), diagnosticsExpected);
+        }
 
         const QString archExpected =
             QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
