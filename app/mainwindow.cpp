@@ -138,6 +138,8 @@ void MainWindow::createPanels()
 
     m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
                                       m_sourceView, this);
+    connect(m_nodePanel, &AtomicNodePanel::evidenceRequested, m_traceability,
+            &Traceability::showEvidence);
     connect(m_traceability, &Traceability::evidenceUnavailable, this,
             [this](const Evidence &evidence) {
                 statusBar()->showMessage(tr("Cannot show %1").arg(evidence.file), 5000);

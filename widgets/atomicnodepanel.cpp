@@ -5,6 +5,7 @@
 #include <QAction>
 #include <QHeaderView>
 #include <QLineEdit>
+#include <QMenu>
 #include <QTreeView>
 
 namespace rosarch {
@@ -31,7 +32,40 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
         }
     });
     m_tree->addAction(editDescription);
-    m_tree->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_editDescription = editDescription;
+    m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_tree, &QWidget::customContextMenuRequested, this, &AtomicNodePanel::showContextMenu);
+}
+
+// Besides editing, a port made through helpers offers each step from the node to the call
+// that creates it, so the source view can walk the chain.
+void AtomicNodePanel::showContextMenu(const QPoint &at)
+{
+    QMenu menu(this);
+    menu.addAction(m_editDescription);
+    addChainActions(&menu, m_proxy->mapToSource(m_tree->indexAt(at)));
+    menu.exec(m_tree->viewport()->mapToGlobal(at));
+}
+
+void AtomicNodePanel::addChainActions(QMenu *menu, const QModelIndex &sourceIndex)
+{
+    const Port *port = m_model ? m_model->port(sourceIndex) : nullptr;
+    if (port && !port->viaEvidence.isEmpty()) {
+        menu->addSection(tr("How the node reaches this port"));
+        const auto place = [](const Evidence &e) {
+            return QStringLiteral("%1:%2").arg(e.file).arg(e.line);
+        };
+        int step = 0;
+        for (const Evidence &e : port->viaEvidence) {
+            QAction *go = menu->addAction(tr("%1. Handed over at %2").arg(++step).arg(place(e)));
+            connect(go, &QAction::triggered, this, [this, e] { Q_EMIT evidenceRequested(e); });
+        }
+        const Evidence created = port->evidence;
+        QAction *go = menu->addAction(
+            tr("%1. Created in %2 at %3").arg(++step).arg(port->via, place(created)));
+        connect(go, &QAction::triggered, this,
+                [this, created] { Q_EMIT evidenceRequested(created); });
+    }
 }
 
 void AtomicNodePanel::setModel(AtomicNodeModel *model)

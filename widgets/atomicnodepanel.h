@@ -1,6 +1,9 @@
 #pragma once
 
+#include "evidence.h"
 #include "filteredtreepanel.h"
+
+class QMenu;
 
 namespace rosarch {
 
@@ -17,10 +20,21 @@ public:
     void setModel(AtomicNodeModel *model);
     AtomicNodeModel *model() const { return m_model; }
 
+    /// Adds to `menu` one entry per step from the node to the port at `sourceIndex` (a port
+    /// made through helpers), each asking to show its place; nothing for other rows.
+    void addChainActions(QMenu *menu, const QModelIndex &sourceIndex);
+
+Q_SIGNALS:
+    /// The person asked to see a place in the source: a call site on the way from the node to
+    /// a port made by a helper, or the call that creates it.
+    void evidenceRequested(const Evidence &evidence);
+
 private:
     void onModelReset();
+    void showContextMenu(const QPoint &at);
 
     AtomicNodeModel *m_model = nullptr;
+    QAction *m_editDescription = nullptr;
 };
 
 } // namespace rosarch

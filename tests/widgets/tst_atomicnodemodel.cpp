@@ -1,4 +1,5 @@
 #include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
 #include "diagnosticmodel.h"
 #include "document.h"
 #include "guifixture.h"
@@ -7,6 +8,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QIcon>
+#include <QMenu>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -276,6 +278,44 @@ private Q_SLOTS:
             model.nodeIndex(QStringLiteral("arc_4")).data(Qt::ToolTipRole).toString();
         QVERIFY2(tip.startsWith(QStringLiteral("<b>pluginlib plugin</b>")), qPrintable(tip));
         QVERIFY2(tip.contains(QStringLiteral("nav_core::Controller plugin")), qPrintable(tip));
+    }
+
+    // The context menu of a port made through a helper walks the chain: one entry per call
+    // site, then the creating call, each asking the source view for its place.
+    void contextMenuWalksTheChain()
+    {
+        AtomicNodeList list = sampleList();
+        Port &p = list.nodes[0].ports[0];
+        p.via = QStringLiteral("Sensor");
+        p.viaEvidence = {at(QStringLiteral("src/alpha_py/alpha_py/talker.py"), 30, 30),
+                         at(QStringLiteral("src/alpha_py/alpha_py/sensor.py"), 7, 7)};
+        Document doc;
+        doc.setAtomicNodes(list);
+        AtomicNodeModel model(&doc);
+        AtomicNodePanel panel;
+        panel.setModel(&model);
+        QSignalSpy asked(&panel, &AtomicNodePanel::evidenceRequested);
+        QMenu menu;
+        panel.addChainActions(&menu, model.portIndex(QStringLiteral("arc_1"), p.id));
+        QList<QAction *> steps;
+        for (QAction *a : menu.actions())
+            if (!a->isSeparator())
+                steps << a;
+        QCOMPARE(steps.size(), 3);
+        QCOMPARE(steps[0]->text(),
+                 QStringLiteral("1. Handed over at src/alpha_py/alpha_py/talker.py:30"));
+        QVERIFY2(steps[2]->text().startsWith(QStringLiteral("3. Created in Sensor at ")),
+                 qPrintable(steps[2]->text()));
+        steps[1]->trigger();
+        steps[2]->trigger();
+        QCOMPARE(asked.size(), 2);
+        QCOMPARE(asked[0][0].value<Evidence>().line, 7);
+        QCOMPARE(asked[1][0].value<Evidence>(), p.evidence);
+
+        QMenu plain; // a port the node makes itself has no chain
+        panel.addChainActions(&plain,
+                              model.portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
+        QVERIFY(plain.actions().isEmpty());
     }
 
     void toolTipsSayWhatAndWhere()

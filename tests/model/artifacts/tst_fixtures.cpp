@@ -102,7 +102,8 @@ private Q_SLOTS:
         if (QFileInfo::exists(diagnosticsExpected)) {
             QStringList lines;
             for (const Diagnostic &d : list.diagnostics)
-                lines << QStringLiteral("%1 %2:%3").arg(d.code, d.evidence.file).arg(d.evidence.line);
+                lines
+                    << QStringLiteral("%1 %2:%3").arg(d.code, d.evidence.file).arg(d.evidence.line);
             lines.sort();
             compareOrUpdate((lines.join(u'\n') + u'\n').toUtf8(), diagnosticsExpected);
         }
