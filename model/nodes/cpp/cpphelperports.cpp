@@ -123,10 +123,7 @@ void CppHelperPorts::addFreeCallPortsAt(const CppFreeCall &call, const CppLinkCo
                     continue;
                 const CppSubstitution subst{call.arguments, ctx, ctx.subst->templateArguments, fn};
                 const CppLinkContext inner{ctx.cls, fn, ref.file, &subst};
-                for (const CppInstantiation &inst : fn->instantiations)
-                    addHelperPorts(inst, inner, depth + 1, ports);
-                for (const CppFreeCall &next : fn->freeCalls)
-                    addFreeCallPorts(next, inner, depth + 1, ports);
+                addCallPorts(*fn, inner, depth + 1, ports);
             }
         }
     }
@@ -146,11 +143,19 @@ void CppHelperPorts::addFreeCallPortsAt(const CppFreeCall &call, const CppLinkCo
             p.via = fn->name;
             ports->append(p);
         }
-        for (const CppInstantiation &inst : fn->instantiations)
-            addHelperPorts(inst, inner, depth + 1, ports);
-        for (const CppFreeCall &next : fn->freeCalls)
-            addFreeCallPorts(next, inner, depth + 1, ports);
+        addCallPorts(*fn, inner, depth + 1, ports);
     }
+}
+
+void CppHelperPorts::addCallPorts(const CppFunction &fn, const CppLinkContext &ctx, int depth,
+                                  QList<Port> *ports) const
+{
+    for (const CppInstantiation &inst : fn.instantiations)
+        addHelperPorts(inst, ctx, depth, ports);
+    for (const CppFreeCall &call : fn.freeCalls)
+        addFreeCallPorts(call, ctx, depth, ports);
+    for (const CppMethodCall &call : fn.methodCalls)
+        addMethodCallPorts(call, ctx, depth, ports);
 }
 
 bool CppHelperPorts::handsNode(const QList<CppValue> &arguments, const CppLinkContext &ctx) const
@@ -302,10 +307,7 @@ QList<Port> CppHelperPorts::helperPorts(int helper, const QList<CppValue> &argum
                 p.via = via;
                 ports.append(p);
             }
-            for (const CppInstantiation &inst : ref.function->instantiations)
-                addHelperPorts(inst, ctx, depth, &ports);
-            for (const CppFreeCall &call : ref.function->freeCalls)
-                addFreeCallPorts(call, ctx, depth, &ports);
+            addCallPorts(*ref.function, ctx, depth, &ports);
         }
     }
     return ports;

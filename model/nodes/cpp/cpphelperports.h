@@ -34,6 +34,10 @@ public:
     /// with the node creates at this call (a lazily created publisher, keyed by its name).
     void addMethodCallPorts(const CppMethodCall &call, const CppLinkContext &ctx, int depth,
                             QList<Port> *ports) const;
+    /// What `fn` hands the node to: helpers it builds, functions it calls with the node, and
+    /// methods it calls on helpers (lazily made ports).
+    void addCallPorts(const CppFunction &fn, const CppLinkContext &ctx, int depth,
+                      QList<Port> *ports) const;
     /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
     void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;
 

@@ -300,12 +300,7 @@ QList<Port> CppNodeLinker::pluginPorts(int plugin,
                 p.inherited = c != plugin;
                 ports.append(p);
             }
-            for (const CppInstantiation &inst : ref.function->instantiations)
-                m_helpers.addHelperPorts(inst, ctx, 0, &ports);
-            for (const CppFreeCall &call : ref.function->freeCalls)
-                m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
-            for (const CppMethodCall &call : ref.function->methodCalls)
-                m_helpers.addMethodCallPorts(call, ctx, 0, &ports);
+            m_helpers.addCallPorts(*ref.function, ctx, 0, &ports);
         }
         m_helpers.addMemberHelperPorts(c, plugin, &ports);
     }
@@ -351,12 +346,7 @@ QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
         for (const CppPortCall &call : ref.function->ports)
             if (!call.typeIsTemplateParameter)
                 ports.append(m_names.port(call, ctx));
-        for (const CppInstantiation &inst : ref.function->instantiations)
-            m_helpers.addHelperPorts(inst, ctx, 0, &ports);
-        for (const CppFreeCall &call : ref.function->freeCalls)
-            m_helpers.addFreeCallPorts(call, ctx, 0, &ports);
-        for (const CppMethodCall &call : ref.function->methodCalls)
-            m_helpers.addMethodCallPorts(call, ctx, 0, &ports);
+        m_helpers.addCallPorts(*ref.function, ctx, 0, &ports);
     }
     m_helpers.addMemberHelperPorts(cls, -1, &ports);
     for (Port &p : ports)

@@ -10,6 +10,16 @@ using namespace cppsyntax;
 
 namespace {
 
+// A part of a concatenation; a concatenation inside one is flattened into it.
+void appendPart(CppValue *whole, CppValue part)
+{
+    if (part.kind == CppValue::Kind::Concatenation)
+        for (CppValue &inner : part.parts)
+            whole->parts.push_back(std::move(inner));
+    else
+        whole->parts.push_back(std::move(part));
+}
+
 CppValue literalPart(const QString &text)
 {
     CppValue v;
@@ -143,14 +153,8 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
     // `prefix + "/" + name`, `std::string(ns_) + "/" + name`: the parts, resolved later.
     if (t == "binary_expression" && m_tree.text(ts::field(n, "operator")) == QLatin1String("+")) {
         v.kind = CppValue::Kind::Concatenation;
-        for (const char *side : {"left", "right"}) {
-            CppValue part = evaluate(ts::field(n, side), depth + 1);
-            if (part.kind == CppValue::Kind::Concatenation)
-                for (CppValue &inner : part.parts)
-                    v.parts.push_back(std::move(inner));
-            else
-                v.parts.push_back(std::move(part));
-        }
+        for (const char *side : {"left", "right"})
+            appendPart(&v, evaluate(ts::field(n, side), depth + 1));
         return v;
     }
     if (t == "field_expression" && ts::is(ts::field(n, "argument"), "this")) {
@@ -383,12 +387,7 @@ CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
             v.parts.clear();
             return v;
         }
-        CppValue part = evaluate(args[size_t(index) + 1], depth + 1);
-        if (part.kind == CppValue::Kind::Concatenation)
-            for (CppValue &inner : part.parts)
-                v.parts.push_back(std::move(inner));
-        else
-            v.parts.push_back(std::move(part));
+        appendPart(&v, evaluate(args[size_t(index) + 1], depth + 1));
     }
     return v;
 }
