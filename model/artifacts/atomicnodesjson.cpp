@@ -25,6 +25,10 @@ Json portJson(const Port &p)
         j["name_expression"] = utf8(p.nameExpression);
     if (!p.parameter.isEmpty())
         j["parameter"] = utf8(p.parameter);
+    if (!p.parameterPrefix.isEmpty())
+        j["parameter_prefix"] = utf8(p.parameterPrefix);
+    if (!p.parameterSuffix.isEmpty())
+        j["parameter_suffix"] = utf8(p.parameterSuffix);
     if (!p.guard.isEmpty())
         j["guard"] = utf8(p.guard);
     if (!p.guardParameter.isEmpty())
@@ -98,6 +102,8 @@ bool readPort(const Json &j, Port *p, QString *error)
             p->nameOrigin = o;
     p->nameExpression = JsonSupport::string(j, "name_expression");
     p->parameter = JsonSupport::string(j, "parameter");
+    p->parameterPrefix = JsonSupport::string(j, "parameter_prefix");
+    p->parameterSuffix = JsonSupport::string(j, "parameter_suffix");
     p->guard = JsonSupport::string(j, "guard");
     p->guardParameter = JsonSupport::string(j, "guard_parameter");
     p->guardDefault = JsonSupport::string(j, "guard_default");

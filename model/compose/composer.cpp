@@ -198,8 +198,8 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             pp.parameterDerived = true;
             bool set = false;
             const QString v = parameterValue(instance, p.parameter, &set);
-            if (set && !v.isEmpty())
-                base = v;
+            if (set && !v.isEmpty()) // a joined name keeps the text around the value
+                base = p.parameterPrefix + v + p.parameterSuffix;
         }
         if (pp.resolved) {
             int used = -1;

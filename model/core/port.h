@@ -56,6 +56,10 @@ struct Port
     NameOrigin nameOrigin = NameOrigin::Literal;
     QString nameExpression; ///< the expression at the call when it is not a literal
     QString parameter;      ///< the parameter the name comes from (NameOrigin::Parameter)
+    /// A name joined around the parameter's value (`prefix_ + "/state"`): the text before and
+    /// after it, so that an instance's value replaces only the parameter's part.
+    QString parameterPrefix;
+    QString parameterSuffix;
     QString guard;          ///< condition under which the port exists, as written ("" = always)
     QString guardParameter; ///< the parameter the guard depends on, when known
     QString guardDefault;   ///< that parameter's declared default, when known

@@ -20,8 +20,8 @@ template <class F> void fields(Diagnostic &v, F f)
 template <class F> void fields(Port &v, F f)
 {
     f(v.id, v.kind, v.name, v.type, v.callback, v.nameOrigin, v.nameExpression, v.parameter,
-      v.guard, v.guardParameter, v.guardDefault, v.via, v.qos, v.inherited, v.evidence,
-      v.viaEvidence);
+      v.parameterPrefix, v.parameterSuffix, v.guard, v.guardParameter, v.guardDefault, v.via, v.qos,
+      v.inherited, v.evidence, v.viaEvidence);
 }
 template <class F> void fields(AtomicNode &v, F f)
 {

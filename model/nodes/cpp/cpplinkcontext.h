@@ -43,10 +43,18 @@ struct CppSubstitution
 /// and the parameter it is declared by.
 struct CppResolvedName
 {
+    CppResolvedName() = default;
+    CppResolvedName(NameOrigin o, QString n, QString e, QString p)
+        : origin(o), name(std::move(n)), expression(std::move(e)), parameter(std::move(p))
+    {
+    }
+
     NameOrigin origin = NameOrigin::Expression;
     QString name;
     QString expression;
     QString parameter;
+    QString parameterPrefix; ///< a joined name: the text around the parameter's value
+    QString parameterSuffix;
 };
 
 /// One assignment to a member, and where it is.

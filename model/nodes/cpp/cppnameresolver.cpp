@@ -90,17 +90,24 @@ CppResolvedName CppNameResolver::resolveConcatenation(const CppValue &value,
     CppResolvedName whole{NameOrigin::Literal, QString(), value.text, QString()};
     if (depth > kMaxLinkDepth)
         return {NameOrigin::Expression, value.text, value.text, QString()};
+    qsizetype valueAt = -1, valueSize = 0; // where the parameter's value is in the name
     for (const CppValue &part : value.parts) {
         const CppResolvedName r = resolve(part, ctx, depth + 1);
         if (r.origin == NameOrigin::Expression)
             return {NameOrigin::Expression, value.text, value.text, QString()};
-        whole.name += r.name;
         if (r.origin == NameOrigin::Parameter && whole.parameter.isEmpty()) {
             whole.origin = NameOrigin::Parameter;
             whole.parameter = r.parameter;
+            valueAt = whole.name.size() + r.parameterPrefix.size();
+            valueSize = r.name.size() - r.parameterPrefix.size() - r.parameterSuffix.size();
         } else if (whole.origin == NameOrigin::Literal) {
             whole.origin = r.origin;
         }
+        whole.name += r.name;
+    }
+    if (valueAt >= 0) {
+        whole.parameterPrefix = whole.name.left(valueAt);
+        whole.parameterSuffix = whole.name.mid(valueAt + valueSize);
     }
     return whole;
 }
@@ -418,6 +425,8 @@ Port CppNameResolver::port(const CppPortCall &call, const CppLinkContext &ctx) c
     port.nameOrigin = r.origin;
     port.nameExpression = r.expression;
     port.parameter = r.parameter;
+    port.parameterPrefix = r.parameterPrefix;
+    port.parameterSuffix = r.parameterSuffix;
     port.type =
         !call.transportType.isEmpty() ? call.transportType : resolveType(call.typeWritten, ctx);
     port.callback = call.callback;
