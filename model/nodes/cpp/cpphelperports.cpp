@@ -61,8 +61,10 @@ bool CppHelperPorts::isOwner(int cls) const
 void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkContext &ctx,
                                     int depth, QList<Port> *ports) const
 {
-    if (depth > 3)
+    if (depth > kMaxHelperDepth) {
+        m_boundsHit.append(inst.evidence);
         return;
+    }
     bool handsNode = false;
     for (const CppValue &arg : inst.arguments)
         handsNode = handsNode || m_names.isNodeHandle(arg, ctx);
@@ -91,8 +93,10 @@ void CppHelperPorts::addFreeCallPorts(const CppFreeCall &call, const CppLinkCont
 void CppHelperPorts::addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx,
                                         int depth, QList<Port> *ports) const
 {
-    if (depth > 3)
+    if (depth > kMaxHelperDepth) {
+        m_boundsHit.append(call.evidence);
         return;
+    }
     bool handsNode = false;
     for (const CppValue &arg : call.arguments)
         handsNode = handsNode || m_names.isNodeHandle(arg, ctx);
@@ -175,7 +179,9 @@ void CppHelperPorts::addMemberHelperPorts(int cls, int self, QList<Port> *ports)
 void CppHelperPorts::addMethodCallPorts(const CppMethodCall &call, const CppLinkContext &ctx,
                                         int depth, QList<Port> *ports) const
 {
-    if (depth > 3 || ctx.cls < 0)
+    if (depth > kMaxHelperDepth)
+        m_boundsHit.append(call.evidence);
+    if (depth > kMaxHelperDepth || ctx.cls < 0)
         return;
     CppInstantiation asMember;
     asMember.member = call.member;

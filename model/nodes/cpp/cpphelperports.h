@@ -8,6 +8,8 @@
 #include <QHash>
 #include <QList>
 
+#include <utility>
+
 #include <vector>
 
 namespace rosarch {
@@ -41,6 +43,12 @@ public:
     /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
     void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;
 
+    /// Helper chains are followed this deep; what lies deeper is not given to the node.
+    static constexpr int kMaxHelperDepth = 3;
+    /// Where the depth bound was hit since the last call (the deepest call site not followed),
+    /// cleared by the call.
+    QList<Evidence> takeBoundsHit() const { return std::exchange(m_boundsHit, {}); }
+
 private:
     void addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
                             QList<Port> *ports) const;
@@ -59,6 +67,7 @@ private:
     const CppNameResolver &m_names;
     const QHash<QString, QList<CppClassIndex::FunctionRef>> &m_freeFunctionsByName;
     const std::vector<const CppProceduralNode *> &m_ownedNodes;
+    mutable QList<Evidence> m_boundsHit; ///< the linker is single-threaded
 };
 
 } // namespace rosarch

@@ -119,11 +119,29 @@ const CppProceduralNode *CppNodeLinker::ownedNode(int cls) const
 LanguageAnalysis CppNodeLinker::link() const
 {
     LanguageAnalysis out;
+    // Where a helper chain went deeper than followed, one note per node.
+    const auto reportBounds = [&](const AtomicNode &node) {
+        const QList<Evidence> hit = m_helpers.takeBoundsHit();
+        if (hit.isEmpty())
+            return;
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Info;
+        d.code = QStringLiteral("helper-depth");
+        d.message = QStringLiteral("Stopped following the helpers of %1 here (bound: %2 levels "
+                                   "of helpers); ports created beyond it are not given to it.")
+                        .arg(node.className)
+                        .arg(CppHelperPorts::kMaxHelperDepth);
+        d.evidence = hit.front();
+        out.diagnostics.append(d);
+    };
     for (int i = 0; i < m_index.size(); ++i) {
         if (m_index.at(i).node)
             out.nodes.append(classNode(i));
         else if (const CppProceduralNode *owned = ownedNode(i))
             out.nodes.append(classNode(i, owned));
+        else
+            continue;
+        reportBounds(out.nodes.last());
     }
     QHash<QString, int> stems;
     for (const auto &ref : m_index.freeFunctions()) {
@@ -131,6 +149,9 @@ LanguageAnalysis CppNodeLinker::link() const
             continue;
         QList<AtomicNode> procedural;
         addProceduralNodes(ref, &procedural, &stems);
+        if (!procedural.isEmpty())
+            reportBounds(procedural.first());
+        m_helpers.takeBoundsHit();
         addEntryPoint(ref, procedural, &out.entryPoints);
         out.nodes += procedural;
     }
@@ -147,8 +168,11 @@ LanguageAnalysis CppNodeLinker::link() const
             // A plugin that creates no ports (a planner's math, a costmap filter) is no part
             // of the communication architecture.
             AtomicNode n = pluginNode(c, e, templateArguments);
-            if (!n.ports.isEmpty())
+            if (!n.ports.isEmpty()) {
                 out.nodes.append(n);
+                reportBounds(n);
+            }
+            m_helpers.takeBoundsHit();
         }
     }
     for (const CppFileFacts &file : m_files)

@@ -431,6 +431,43 @@ private Q_SLOTS:
         QCOMPARE(ports[2].name, QStringLiteral("base + unknown()"));
     }
 
+    // Helper chains are followed to a bound; the port beyond it is not given to the node, and a
+    // note says where the analysis stopped.
+    void helperChainsAreBounded()
+    {
+        QTemporaryDir dir;
+        QFile f(dir.filePath(QStringLiteral("chain.cpp")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray code;
+        for (int level = 5; level >= 1; --level) {
+            const QByteArray inner = level == 5
+                                         ? QByteArray("    pub_ = node->create_publisher<std_msgs::"
+                                                      "msg::Empty>(\"deep\", 1);\n")
+                                         : QByteArray("    next_ = std::make_shared<H%1>(node);\n")
+                                               .replace("%1", QByteArray::number(level + 1));
+            code += "struct H" + QByteArray::number(level) + " {\n  explicit H" +
+                    QByteArray::number(level) + "(rclcpp::Node * node) {\n" + inner + "  }\n};\n";
+        }
+        code += "class Deep : public rclcpp::Node {\npublic:\n  Deep() : Node(\"deep\") { "
+                "h_ = std::make_shared<H1>(this); }\n};\n";
+        f.write(code);
+        f.close();
+        Workspace ws;
+        ws.root = dir.path();
+        ws.files.append({QStringLiteral("chain.cpp"), QStringLiteral("chain"),
+                         SourceFile::Language::Cpp, f.size()});
+        const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
+        QCOMPARE(a.nodes.size(), 1);
+        QVERIFY(a.nodes[0].ports.isEmpty()); // five helpers deep: beyond the bound
+        const auto bound =
+            std::find_if(a.diagnostics.begin(), a.diagnostics.end(), [](const Diagnostic &d) {
+                return d.code == QLatin1String("helper-depth");
+            });
+        QVERIFY(bound != a.diagnostics.end());
+        QVERIFY2(bound->message.contains(QStringLiteral("Deep")), qPrintable(bound->message));
+        QCOMPARE(bound->evidence.file, QStringLiteral("chain.cpp"));
+    }
+
     void interfaceTypes_data()
     {
         QTest::addColumn<QString>("written");
