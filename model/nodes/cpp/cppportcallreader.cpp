@@ -162,8 +162,38 @@ CppPortCallReader::CppPortCallReader(const SyntaxTree &tree, const CppValueEvalu
 {
 }
 
+// `std::make_shared<message_filters::Subscriber<Imu>>(node, "imu")`: a subscription whose
+// messages go to a synchronizer rather than a callback.
+bool CppPortCallReader::readMessageFilter(TSNode call, const CallShape &shape,
+                                          const std::vector<TSNode> &args)
+{
+    if ((shape.name != QLatin1String("make_shared") &&
+         shape.name != QLatin1String("make_unique")) ||
+        ts::isNull(shape.templateArguments) || args.size() < 2)
+        return false;
+    const QString made = firstTemplateArgument(m_tree, shape.templateArguments);
+    if (withoutTemplateArguments(made).remove(u' ') != QLatin1String("message_filters::Subscriber"))
+        return false;
+    CppPortCall port;
+    port.kind = PortKind::Subscriber;
+    port.evidence = m_tree.evidence(call);
+    port.name = m_values.evaluate(args[1]);
+    port.typeWritten = templateArgumentsOf(made).value(0);
+    const QString head = splitScope(withoutTemplateArguments(port.typeWritten)).value(0);
+    port.typeIsTemplateParameter =
+        m_templateParameters.contains(head) || m_templateParameters.contains(port.typeWritten);
+    port.receiver = simplified(m_tree, args.front());
+    if (args.size() > 2)
+        port.qos = simplified(m_tree, args[2]);
+    guardOf(call, &port.guard, &port.guardValue);
+    m_function.ports.append(port);
+    return true;
+}
+
 bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vector<TSNode> &args)
 {
+    if (readMessageFilter(call, shape, args))
+        return true;
     QString receiverText;
     QString receiverType;
     if (!ts::isNull(shape.receiver)) {

@@ -24,6 +24,8 @@ public:
 
     /// Adds the port `call` creates to the function; false when it creates none.
     bool read(TSNode call, const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
+    bool readMessageFilter(TSNode call, const cppsyntax::CallShape &shape,
+                           const std::vector<TSNode> &args);
     /// The callback among the arguments from `first` on ("" when none).
     QString callbackName(const std::vector<TSNode> &args, int first) const;
     /// The `if` condition around `call` within the function, and the value it tests.
