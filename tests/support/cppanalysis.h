@@ -6,6 +6,9 @@
 #include "testsupport.h"
 #include "workspacescanner.h"
 
+#include <QFile>
+#include <QTemporaryDir>
+
 namespace rosarch::test {
 
 // The C++ analyzer on the fixture workspaces tests/data/cpp_*/ws.
@@ -46,6 +49,21 @@ inline QStringList describePorts(const AtomicNode &n)
     for (const Port &p : n.ports)
         out << describe(p);
     return out;
+}
+
+// The analysis of a workspace holding one C++ file of package `pkg`.
+inline LanguageAnalysis analyzeFile(const QTemporaryDir &dir, const QString &name,
+                                    const QByteArray &content)
+{
+    QFile f(dir.filePath(name));
+    if (!f.open(QIODevice::WriteOnly))
+        return {};
+    f.write(content);
+    f.close();
+    Workspace ws;
+    ws.root = dir.path();
+    ws.files.append({name, QStringLiteral("pkg"), SourceFile::Language::Cpp, f.size()});
+    return CppNodeAnalyzer(ws).analyze();
 }
 
 } // namespace cpp

@@ -30,6 +30,11 @@ struct PythonHandle
     QString method; ///< Parameter of a method other than the constructor: that method
 
     bool operator==(const PythonHandle &) const = default;
+    /// The same handle, whatever name a parameter has at each place it is seen.
+    bool sameAs(const PythonHandle &o) const
+    {
+        return kind == o.kind && (kind == Kind::Self || (index == o.index && method == o.method));
+    }
 };
 
 /// One argument at a call site, with what is statically known about it.

@@ -13,11 +13,7 @@ using PythonBinding::argumentAt;
 using PythonBinding::substituteName;
 
 namespace {
-constexpr int kMaxDepth = 8;
-/// Classes followed for one setup call: a tree of a few dozen behaviours is usual.
-constexpr int kMaxInstantiations = 256;
-/// Classes and functions entered for one setup call.
-constexpr int kMaxVisits = 2000;
+constexpr int kMaxDepth = PythonSetupProtocol::kMaxDepth;
 
 // rclpy's node classes as reached through imports, and whether they are lifecycle nodes.
 const std::pair<const char *, bool> kRosNodeBases[] = {
@@ -34,20 +30,6 @@ int rosNodeBase(const QString &target)
         if (target == QLatin1String(name))
             return lifecycle ? 2 : 1;
     return 0;
-}
-
-bool sameHandle(const PythonHandle &a, const PythonHandle &b)
-{
-    return a.kind == b.kind &&
-           (a.kind == PythonHandle::Kind::Self || (a.index == b.index && a.method == b.method));
-}
-
-/// `tree.setup(node=self)`, `root.setup(node=node)`, `behaviour.setup(self)`: py_trees' setup
-/// protocol, which hands the node to every behaviour of the tree.
-bool isSetupHandoff(const PythonHandoff &h)
-{
-    return h.target.section(QLatin1Char('.'), -1) == QLatin1String("setup") &&
-           (h.keyword == QLatin1String("node") || (h.keyword.isEmpty() && h.argument == 0));
 }
 
 bool portLess(const Port &a, const Port &b)
@@ -73,7 +55,12 @@ QList<Port> sortedUnique(QList<Port> ports)
 } // namespace
 
 PythonNodeLinker::PythonNodeLinker(const QList<PythonModuleFacts> &modules)
-    : m_modules(modules), m_index(modules)
+    : m_modules(modules), m_index(modules),
+      m_setup(
+          m_index, [this](int id) { return nodeKind(id) != NotANode; },
+          [this](const PythonHandoff &h, const PythonScopeFacts &from, int depth) {
+              return helperPorts(h, from, depth);
+          })
 {
     auto indexCalls = [&](const PythonScopeFacts &scope) {
         for (const PythonCall &call : scope.calls) {
@@ -177,11 +164,11 @@ QList<Port> PythonNodeLinker::helperPorts(const PythonHandoff &handoff,
                                           const PythonScopeFacts &from, int depth) const
 {
     if (depth > kMaxDepth) {
-        reportBound(handoff.evidence, QStringLiteral("helpers handed the node"));
+        m_setup.reportBound(handoff.evidence, QStringLiteral("helpers handed the node"));
         return {};
     }
-    if (isSetupHandoff(handoff))
-        return setupPorts(handoff, from, depth);
+    if (PythonSetupProtocol::isSetupHandoff(handoff))
+        return m_setup.setupPorts(handoff, from, depth);
     auto parameterHandle = [&](const QList<PythonParameter> &params, PythonHandle *handle) {
         int index = handoff.argument;
         if (index < 0)
@@ -270,7 +257,7 @@ QList<Port> PythonNodeLinker::scopePorts(const PythonScopeFacts &scope, const Py
 {
     QList<Port> out;
     for (const PythonPortFact &f : scope.ports) {
-        if (!sameHandle(f.handle, handle))
+        if (!f.handle.sameAs(handle))
             continue;
         Port p = f.port;
         if (p.via.isEmpty())
@@ -280,129 +267,9 @@ QList<Port> PythonNodeLinker::scopePorts(const PythonScopeFacts &scope, const Py
         out.append(p);
     }
     for (const PythonHandoff &h : scope.handoffs)
-        if (sameHandle(h.handle, handle))
+        if (h.handle.sameAs(handle))
             out.append(helperPorts(h, scope, depth + 1));
     return out;
-}
-
-QList<Port> PythonNodeLinker::setupPorts(const PythonHandoff &handoff, const PythonScopeFacts &from,
-                                         int depth) const
-{
-    // py_trees' setup(node=...) reaches every behaviour of the tree; the tree is built from
-    // the workspace classes instantiated where the node sets it up, directly or in functions
-    // called from there
-    Reach reach;
-    reachInstantiations(from, nullptr, nullptr, {handoff.evidence}, depth, &reach);
-    QList<Port> out;
-    for (const Instantiation &i : reach.found) {
-        for (const ScopedPort &sp : setupClassPorts(i.id, i.arguments, depth + 1)) {
-            Port p = sp.port;
-            p.via = m_index.classFacts(i.id).name;
-            p.viaEvidence = i.chain + p.viaEvidence;
-            out.append(p);
-        }
-    }
-    return out;
-}
-
-void PythonNodeLinker::reachInstantiations(const PythonScopeFacts &scope,
-                                           const QList<PythonArgument> *bound,
-                                           const QList<PythonParameter> *parameters,
-                                           const QList<Evidence> &chain, int depth,
-                                           Reach *reach) const
-{
-    reach->open.append(&scope);
-    for (const PythonCall &call : scope.calls) {
-        const int cls = m_index.findClass(call.target);
-        const int fn = cls >= 0 ? -1 : m_index.findFunction(call.target);
-        if ((cls < 0 && fn < 0) || (cls >= 0 && nodeKind(cls) != NotANode))
-            continue;
-        if (reach->stopped)
-            break;
-        const bool deep = depth > kMaxDepth;
-        reach->stopped = reach->found.size() >= kMaxInstantiations || reach->visits >= kMaxVisits;
-        if (deep || reach->stopped) {
-            if (!reach->reported)
-                reportBound(call.evidence, QStringLiteral("classes that build the behaviour tree"));
-            reach->reported = true;
-            break;
-        }
-        const QList<PythonArgument> arguments =
-            bound ? PythonBinding::bind(call.arguments, *bound, *parameters) : call.arguments;
-        const QList<Evidence> here = chain + QList<Evidence>{call.evidence};
-        if (cls >= 0)
-            reach->found.append({cls, arguments, here});
-        // what a workspace class or function builds in turn (a composite of its own, a
-        // function returning a subtree)
-        const PythonScopeFacts *next =
-            cls >= 0 ? static_cast<const PythonScopeFacts *>(&m_index.classFacts(cls))
-                     : &m_index.functionFacts(fn);
-        if (reach->open.contains(next))
-            continue;
-        ++reach->visits;
-        if (cls >= 0)
-            reachInstantiations(*next, nullptr, nullptr, here, depth + 1, reach);
-        else
-            reachInstantiations(*next, &arguments, &m_index.functionFacts(fn).parameters, here,
-                                depth + 1, reach);
-    }
-    reach->open.removeLast();
-}
-
-QList<PythonNodeLinker::ScopedPort>
-PythonNodeLinker::setupClassPorts(int id, const QList<PythonArgument> &arguments, int depth) const
-{
-    QList<ScopedPort> out;
-    const PythonClassFacts &c = m_index.classFacts(id);
-    if (depth > kMaxDepth) {
-        reportBound(c.evidence, QStringLiteral("base classes of a behaviour"));
-        return out;
-    }
-    PythonHandle setup;
-    setup.kind = PythonHandle::Kind::Setup;
-    for (const PythonPortFact &f : c.ports) {
-        if (!sameHandle(f.handle, setup))
-            continue;
-        ScopedPort sp;
-        sp.port = f.port;
-        sp.method = f.method;
-        PythonBinding::applyArguments(&sp.port, f, QString(), arguments, &c.initParameters);
-        out.append(sp);
-    }
-    for (const PythonHandoff &h : c.handoffs) {
-        if (!sameHandle(h.handle, setup))
-            continue;
-        for (const Port &p : helperPorts(h, c, depth + 1))
-            out.append({p, h.method, -1, {}});
-    }
-    for (int base : m_index.projectBases(id)) {
-        for (const ScopedPort &sp :
-             setupClassPorts(base, PythonBinding::forwardToBase(c, arguments), depth + 1)) {
-            // an override that does not call the base's version replaces its ports
-            if (!sp.method.isEmpty() && c.methods.contains(sp.method) &&
-                !c.superCalledMethods.contains(sp.method))
-                continue;
-            out.append(sp);
-        }
-    }
-    return out;
-}
-
-void PythonNodeLinker::reportBound(const Evidence &at, const QString &what) const
-{
-    Diagnostic d;
-    d.severity = Diagnostic::Severity::Info;
-    d.code = QStringLiteral("helper-depth");
-    d.message = QStringLiteral("Stopped following %1 here (bounds: %2 levels; %3 classes and "
-                               "%4 calls per tree); ports created beyond it are not given to "
-                               "the node.")
-                    .arg(what)
-                    .arg(kMaxDepth)
-                    .arg(kMaxInstantiations)
-                    .arg(kMaxVisits);
-    d.evidence = at;
-    if (!m_diagnostics.contains(d))
-        m_diagnostics.append(d);
 }
 
 PythonNodeLinker::NameInfo PythonNodeLinker::nameInfo(int id, int depth) const
@@ -619,7 +486,7 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         n.ports = sortedUnique(scopePorts(*p.scope, handle, QString(), 0));
         nodes.append(n);
     }
-    out->diagnostics.append(m_diagnostics);
+    out->diagnostics.append(m_setup.diagnostics());
     std::sort(nodes.begin(), nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
         return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file,
                         a.evidence.line) < std::tie(b.packageName, b.className, b.qualifiedName,

@@ -3,6 +3,7 @@
 #include "languageanalysis.h"
 #include "pythondefinitionindex.h"
 #include "pythonmodulefacts.h"
+#include "pythonsetupprotocol.h"
 
 #include <QHash>
 #include <QList>
@@ -17,6 +18,7 @@ class PythonNodeLinker
 {
 public:
     explicit PythonNodeLinker(const QList<PythonModuleFacts> &modules);
+    Q_DISABLE_COPY_MOVE(PythonNodeLinker) // the setup protocol calls back into this linker
 
     /// Appends the nodes (sorted by package and class) and the entry points.
     void link(LanguageAnalysis *out) const;
@@ -59,22 +61,6 @@ private:
         QString qualifiedName;
     };
 
-    /// A workspace class built while a node's tree (or helper) is made, and how it is reached.
-    struct Instantiation
-    {
-        int id = -1;
-        QList<PythonArgument> arguments;
-        QList<Evidence> chain; ///< call sites from the node's scope to the instantiation
-    };
-    struct Reach
-    {
-        QList<Instantiation> found;
-        QList<const PythonScopeFacts *> open; ///< scopes being followed (cycles)
-        int visits = 0;        ///< scopes followed so far (a call graph can fan out widely)
-        bool reported = false; ///< a bound was hit (one diagnostic per setup call)
-        bool stopped = false;  ///< a budget ran out: follow nothing more
-    };
-
     int nodeKind(int id, int depth = 0) const;
     QList<ScopedPort> classPorts(int id, int depth) const;
     QList<Port> helperPorts(const PythonHandoff &handoff, const PythonScopeFacts &from,
@@ -84,15 +70,6 @@ private:
                            const QString &via, int depth,
                            const QList<PythonArgument> *arguments = nullptr,
                            const QList<PythonParameter> *parameters = nullptr) const;
-    /// Ports of the objects built in `from` that receive the node through `setup(node=...)`.
-    QList<Port> setupPorts(const PythonHandoff &handoff, const PythonScopeFacts &from,
-                           int depth) const;
-    QList<ScopedPort> setupClassPorts(int id, const QList<PythonArgument> &arguments,
-                                      int depth) const;
-    void reachInstantiations(const PythonScopeFacts &scope, const QList<PythonArgument> *bound,
-                             const QList<PythonParameter> *parameters, const QList<Evidence> &chain,
-                             int depth, Reach *reach) const;
-    void reportBound(const Evidence &at, const QString &what) const;
     /// The value all instantiations of a class pass for a constructor parameter, if they agree.
     bool agreedArgument(int id, int index, const QString &name, const QString &fallback,
                         PythonArgument *agreed) const;
@@ -106,7 +83,7 @@ private:
     QHash<int, QList<const PythonCall *>> m_instantiations; ///< by class id
     QList<Procedural> m_procedurals;
     mutable QHash<int, int> m_kinds;
-    mutable QList<Diagnostic> m_diagnostics; ///< bounds hit while following helpers
+    PythonSetupProtocol m_setup; ///< follows `setup(node=...)`; keeps the bounds hit
 };
 
 } // namespace rosarch

@@ -31,9 +31,9 @@ QString canonicalInterface(const QString &qualified)
 } // namespace
 
 PythonResolver::PythonResolver(const SyntaxTree &tree, QString modulePath)
-    : m_tree(tree), m_scopes(tree), m_modulePath(std::move(modulePath))
+    : m_tree(tree), m_scopes(tree), m_modulePath(std::move(modulePath)),
+      m_imports(tree, m_scopes, m_modulePath)
 {
-    collectImports();
 }
 
 bool PythonResolver::stringLiteral(const SyntaxTree &tree, TSNode node, QString *value)
@@ -70,84 +70,9 @@ bool PythonResolver::stringLiteral(const SyntaxTree &tree, TSNode node, QString 
     return true;
 }
 
-void PythonResolver::collectImports()
-{
-    py::walk(m_tree.root(), [&](TSNode n) {
-        const std::string_view t = ts::type(n);
-        if (t == "import_statement") {
-            for (TSNode name : ts::fieldChildren(n, "name")) {
-                if (ts::is(name, "dotted_name")) {
-                    const QString full = m_tree.text(name);
-                    const QString first = full.section(QLatin1Char('.'), 0, 0);
-                    m_bindings.insert(first, first);
-                } else if (ts::is(name, "aliased_import")) {
-                    m_bindings.insert(m_tree.text(ts::field(name, "alias")),
-                                      m_tree.text(ts::field(name, "name")));
-                }
-            }
-            return false;
-        }
-        if (t == "import_from_statement") {
-            TSNode module = ts::field(n, "module_name");
-            const QString from =
-                ts::is(module, "relative_import") ? resolveRelative(module) : m_tree.text(module);
-            const QString prefix = from.isEmpty() ? QString() : from + QLatin1Char('.');
-            for (TSNode name : ts::fieldChildren(n, "name")) {
-                if (ts::is(name, "dotted_name")) {
-                    const QString text = m_tree.text(name);
-                    m_bindings.insert(text, prefix + text);
-                } else if (ts::is(name, "aliased_import")) {
-                    m_bindings.insert(m_tree.text(ts::field(name, "alias")),
-                                      prefix + m_tree.text(ts::field(name, "name")));
-                }
-            }
-            for (TSNode c : ts::namedChildren(n))
-                if (ts::is(c, "wildcard_import"))
-                    m_wildcards.append(from);
-            return false;
-        }
-        if (t == "class_definition") {
-            m_definitions.insert(m_tree.text(ts::field(n, "name")));
-        } else if (t == "function_definition") {
-            if (m_scopes.isTopLevel(n))
-                m_definitions.insert(m_tree.text(ts::field(n, "name")));
-            return true;
-        }
-        return true;
-    });
-}
-
-QString PythonResolver::resolveRelative(TSNode relativeImport) const
-{
-    int dots = 0;
-    QString rest;
-    for (TSNode c : ts::children(relativeImport)) {
-        if (ts::is(c, "import_prefix"))
-            dots += int(m_tree.view(c).size());
-        else if (ts::is(c, "dotted_name"))
-            rest = m_tree.text(c);
-    }
-    QStringList base = m_modulePath.split(QLatin1Char('.'), Qt::SkipEmptyParts);
-    for (int i = 0; i < dots && !base.isEmpty(); ++i)
-        base.removeLast();
-    if (!rest.isEmpty())
-        base.append(rest);
-    return base.join(QLatin1Char('.'));
-}
-
 QString PythonResolver::qualify(const QString &dotted) const
 {
-    const qsizetype dot = dotted.indexOf(QLatin1Char('.'));
-    const QString first = dot < 0 ? dotted : dotted.left(dot);
-    const QString rest = dot < 0 ? QString() : dotted.mid(dot);
-    if (m_definitions.contains(first))
-        return m_modulePath.isEmpty() ? dotted : m_modulePath + QLatin1Char('.') + dotted;
-    const auto it = m_bindings.constFind(first);
-    if (it != m_bindings.constEnd())
-        return it.value() + rest;
-    if (m_wildcards.size() == 1 && !first.isEmpty() && first.at(0).isUpper())
-        return m_wildcards.first() + QLatin1Char('.') + dotted;
-    return dotted;
+    return m_imports.qualify(dotted);
 }
 
 QString PythonResolver::qualifiedName(TSNode expr) const

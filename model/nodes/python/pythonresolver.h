@@ -1,6 +1,7 @@
 #pragma once
 
 #include "port.h"
+#include "pythonimports.h"
 #include "pythonscopeindex.h"
 #include "syntaxtree.h"
 
@@ -67,16 +68,12 @@ private:
     const AssignmentIndex &locals(TSNode scope) const;
     const AssignmentIndex &members(TSNode classNode) const;
     void indexParameters() const;
-    void collectImports();
-    QString resolveRelative(TSNode relativeImport) const;
     QString interfaceTypeAt(TSNode expr, int depth) const;
 
     const SyntaxTree &m_tree;
     PythonScopeIndex m_scopes;
     QString m_modulePath;
-    QHash<QString, QString> m_bindings; ///< local name -> qualified dotted name
-    QStringList m_wildcards;            ///< modules imported with *
-    QSet<QString> m_definitions;        ///< classes and top-level functions of this file
+    PythonImports m_imports;
     mutable QHash<uint32_t, AssignmentIndex> m_locals;  ///< by scope start byte (+1; 0 = module)
     mutable QHash<uint32_t, AssignmentIndex> m_members; ///< by class start byte
     mutable bool m_parametersIndexed = false;
