@@ -1,0 +1,256 @@
+// Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
+#include "cppsyntax.h"
+
+#include <QRegularExpression>
+
+namespace rosarch::cppsyntax {
+
+namespace {
+
+bool isIdentifierChar(char c)
+{
+    return std::isalnum(uchar(c)) || c == '_';
+}
+
+// The end of the line at `i`, a backslash-continued line included.
+qsizetype endOfLogicalLine(const char *s, qsizetype n, qsizetype i)
+{
+    while (i < n) {
+        if (s[i] == '\n') {
+            const bool continued =
+                (i > 0 && s[i - 1] == '\\') || (i > 1 && s[i - 1] == '\r' && s[i - 2] == '\\');
+            if (!continued)
+                return i;
+        }
+        ++i;
+    }
+    return n;
+}
+
+// The source with comments, preprocessor lines and the contents of string and character
+// literals overwritten by spaces (newlines kept), so that the rewrites below only ever see
+// code: a pattern inside a string or a comment stays as written. One pass, linear.
+QByteArray codeOnly(const QByteArray &source)
+{
+    QByteArray out = source;
+    const char *s = source.constData();
+    char *o = out.data();
+    const qsizetype n = source.size();
+    auto blank = [&](qsizetype from, qsizetype to) {
+        for (qsizetype i = from; i < std::min(to, n); ++i)
+            if (s[i] != '\n' && s[i] != '\r')
+                o[i] = ' ';
+    };
+    bool lineStart = true;
+    qsizetype wordStart = -1;
+    qsizetype wordEnd = -1;
+    for (qsizetype i = 0; i < n;) {
+        const char c = s[i];
+        const char next = i + 1 < n ? s[i + 1] : '\0';
+        if (c == '\n') {
+            lineStart = true;
+            ++i;
+            continue;
+        }
+        if (lineStart && (c == ' ' || c == '\t' || c == '\r')) {
+            ++i;
+            continue;
+        }
+        if (lineStart && c == '#') {
+            const qsizetype end = endOfLogicalLine(s, n, i);
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        lineStart = false;
+        if (c == '/' && next == '/') {
+            const qsizetype end = endOfLogicalLine(s, n, i);
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        if (c == '/' && next == '*') {
+            const qsizetype close = source.indexOf("*/", i + 2);
+            const qsizetype end = close < 0 ? n : close + 2;
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        if (c == '"') {
+            // A raw string's prefix is the identifier right before the quote.
+            const std::string_view prefix =
+                wordEnd == i ? std::string_view(s + wordStart, size_t(i - wordStart))
+                             : std::string_view();
+            const bool raw = prefix == "R" || prefix == "u8R" || prefix == "uR" || prefix == "UR" ||
+                             prefix == "LR";
+            if (raw) {
+                qsizetype open = i + 1; // the delimiter has at most 16 characters
+                while (open < std::min(n, i + 18) && s[open] != '(' && s[open] != '\n')
+                    ++open;
+                if (open < n && s[open] == '(') {
+                    const QByteArray close = ')' + source.mid(i + 1, open - i - 1) + '"';
+                    const qsizetype at = source.indexOf(close, open + 1);
+                    const qsizetype end = at < 0 ? n : at + close.size();
+                    blank(i + 1, end - 1);
+                    i = end;
+                    continue;
+                }
+            }
+            qsizetype j = i + 1;
+            while (j < n && s[j] != '"' && s[j] != '\n')
+                j += s[j] == '\\' ? 2 : 1;
+            blank(i + 1, j);
+            i = j + 1;
+            continue;
+        }
+        if (c == '\'') { // a character literal: digit separators are consumed with their number
+            qsizetype j = i + 1;
+            while (j < n && s[j] != '\'' && s[j] != '\n')
+                j += s[j] == '\\' ? 2 : 1;
+            blank(i + 1, j);
+            i = j + 1;
+            continue;
+        }
+        if (std::isdigit(uchar(c)) || (c == '.' && std::isdigit(uchar(next)))) {
+            qsizetype j = i + 1;
+            while (j < n &&
+                   (isIdentifierChar(s[j]) || s[j] == '.' || s[j] == '\'' ||
+                    ((s[j] == '+' || s[j] == '-') && std::strchr("eEpP", s[j - 1]) != nullptr)))
+                ++j;
+            i = j;
+            continue;
+        }
+        if (isIdentifierChar(c)) {
+            wordStart = i;
+            while (i < n && isIdentifierChar(s[i]))
+                ++i;
+            wordEnd = i;
+            continue;
+        }
+        ++i;
+    }
+    return out;
+}
+
+// The last non-blank offset before `i`, -1 when none.
+qsizetype previousCode(const QByteArray &code, qsizetype i)
+{
+    --i;
+    while (i >= 0 && std::isspace(uchar(code.at(i))))
+        --i;
+    return i;
+}
+
+qsizetype nextCode(const QByteArray &code, qsizetype i)
+{
+    while (i < code.size() && std::isspace(uchar(code.at(i))))
+        ++i;
+    return i;
+}
+
+bool isWordAt(const QByteArray &code, qsizetype i, std::string_view word)
+{
+    const qsizetype end = i + qsizetype(word.size());
+    return i >= 0 && end <= code.size() &&
+           std::string_view(code.constData() + i, word.size()) == word &&
+           (i == 0 || !isIdentifierChar(code.at(i - 1))) &&
+           (end == code.size() || !isIdentifierChar(code.at(end)));
+}
+
+// Explicit instantiations, `template class X<int>;`, `extern template void f<int>(int);`, at
+// the start of a statement: they declare nothing the analysis reads.
+template <typename Blank> void blankExplicitInstantiations(const QByteArray &code, Blank blank)
+{
+    for (qsizetype from = 0;;) {
+        const qsizetype at = code.indexOf("template", from);
+        if (at < 0)
+            return;
+        from = at + 8;
+        if (!isWordAt(code, at, "template"))
+            continue;
+        const qsizetype after = nextCode(code, at + 8);
+        if (after >= code.size() || code.at(after) == '<') // a template declaration
+            continue;
+        qsizetype start = at;
+        qsizetype before = previousCode(code, at);
+        if (before >= 5 && isWordAt(code, before - 5, "extern")) {
+            start = before - 5;
+            before = previousCode(code, start);
+        }
+        if (before >= 0 && !std::strchr(";{}", code.at(before)))
+            continue;
+        // Up to the `;`; a brace means it was something else. Scans never overlap: the next
+        // statement starts after this one's `;` or brace.
+        qsizetype end = after;
+        while (end < code.size() && !std::strchr(";{}", code.at(end)))
+            ++end;
+        if (end >= code.size() || code.at(end) != ';')
+            continue;
+        blank(start, end + 1);
+        from = end + 1;
+    }
+}
+
+} // namespace
+
+void blankGrammarGaps(QByteArray *source)
+{
+    const bool news = source->contains("new ");
+    const bool typenames = source->contains("typename ");
+    const bool templates = source->contains("template");
+    const bool braces = source->contains("{}");
+    if (!news && !typenames && !templates && !braces)
+        return;
+    const QByteArray code = codeOnly(*source);
+    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
+    const QString text = QString::fromLatin1(code);
+    char *data = source->data();
+    auto blank = [&](qsizetype from, qsizetype to) {
+        for (qsizetype i = from; i < to; ++i)
+            if (data[i] != '\n' && data[i] != '\r')
+                data[i] = ' ';
+    };
+    auto each = [&](const QRegularExpression &re, auto apply) {
+        for (auto it = re.globalMatch(text); it.hasNext();)
+            apply(it.next());
+    };
+    if (news) {
+        static const QRegularExpression pointerArray(
+            QStringLiteral("\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*\\s*(\\*+)\\s*\\["));
+        each(pointerArray, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+        static const QRegularExpression valueInitialized(QStringLiteral(
+            "\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*[\\s*]*\\[[^\\]\\n;]*\\](\\s*\\(\\s*\\))"));
+        each(valueInitialized, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+    }
+    if (typenames) {
+        static const QRegularExpression constructed(
+            QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+"
+                           "[A-Za-z_]\\w*(?:<[^;{}()]*?>)?(?:::[A-Za-z_]\\w*(?:<[^;{}()]*?>)?)+"
+                           "\\s*[({]"));
+        each(constructed, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+    }
+    if (templates) {
+        static const QRegularExpression member(
+            QStringLiteral("(?:->|\\.)\\s*(template)\\s+[A-Za-z_]\\w*\\s*\\("));
+        each(member, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+        blankExplicitInstantiations(code, blank);
+    }
+    if (braces) {
+        static const QRegularExpression emptyDefault(
+            QStringLiteral("[\\w>&*]\\s*=\\s*(\\{)\\s*(\\})(?=\\s*[,)])"));
+        each(emptyDefault, [&](const QRegularExpressionMatch &m) {
+            data[m.capturedStart(1)] = '0';
+            data[m.capturedStart(2)] = ' ';
+        });
+    }
+}
+
+} // namespace rosarch::cppsyntax

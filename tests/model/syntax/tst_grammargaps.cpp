@@ -1,0 +1,77 @@
+// cppsyntax::blankGrammarGaps: valid C++ the tree-sitter grammar cannot read is rewritten in
+// place, keeping every offset, line and column, and never inside strings or comments.
+#include "cppsyntax.h"
+#include "syntaxtree.h"
+
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+QByteArray rewritten(const QByteArray &source)
+{
+    QByteArray out = source;
+    cppsyntax::blankGrammarGaps(&out);
+    [&] {
+        QCOMPARE(out.size(), source.size());
+        for (qsizetype i = 0; i < source.size(); ++i)
+            if (source.at(i) == '\n' || out.at(i) == '\n')
+                QCOMPARE(out.at(i), source.at(i));
+    }();
+    return out;
+}
+
+bool parsesCleanly(const QByteArray &source)
+{
+    const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Cpp, source, QString());
+    return !ts_node_has_error(tree.root());
+}
+
+} // namespace
+
+class TestGrammarGaps : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void explicitInstantiations()
+    {
+        const QByteArray src("namespace ns {\n"
+                             "template <typename T> class Checker { T t; };\n"
+                             "template class Checker<std::shared_ptr<Costmap2D>>;\n"
+                             "template class ns::Checker<Costmap2D *>;\n"
+                             "}  // namespace ns\n"
+                             "extern template std::unordered_set<std::string> remove<Data>(\n"
+                             "  std::map<int, Data> &, const double);\n"
+                             "template struct Pair<int, char>;\n"
+                             "void f() { bb->template set(\"a\", 1); }\n");
+        QVERIFY(!parsesCleanly(src));
+        const QByteArray out = rewritten(src);
+        QCOMPARE(
+            out.split('\n'),
+            (QList<QByteArray>{"namespace ns {", "template <typename T> class Checker { T t; };",
+                               QByteArray(51, ' '), QByteArray(40, ' '), "}  // namespace ns",
+                               QByteArray(61, ' '), QByteArray(39, ' '), QByteArray(32, ' '),
+                               "void f() { bb->         set(\"a\", 1); }", ""}));
+        QVERIFY(parsesCleanly(out));
+    }
+
+    // Patterns in string literals, raw strings, character literals, comments and preprocessor
+    // lines stay as written.
+    void stringsAndCommentsStay()
+    {
+        const QByteArray src("const char *a = \"; template class X<int>;\";\n"
+                             "// ; template class X<int>;\n"
+                             "/* ; template class X<int>; x = new double *[n]; */\n"
+                             "const char *b = R\"x(\"; template class X<int>; )\" )x\";\n"
+                             "#define INSTANTIATE ; template class X<int>;\n"
+                             "char c = '\"'; int d = 1'000; auto e = \"typename T::Goal()\";\n"
+                             "void f(int n = {}, const char *s = \"f(int n = {})\");\n");
+        const QByteArray out = rewritten(src);
+        QCOMPARE(out.left(out.lastIndexOf("void f")), src.left(src.lastIndexOf("void f")));
+        QVERIFY(out.endsWith("void f(int n = 0 , const char *s = \"f(int n = {})\");\n"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestGrammarGaps)
+#include "tst_grammargaps.moc"
