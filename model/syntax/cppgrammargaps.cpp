@@ -191,6 +191,52 @@ template <typename Blank> void blankExplicitInstantiations(const QByteArray &cod
     }
 }
 
+// Braced default arguments, `= {}`, `= {1.0, 2.0}`, `= {{'.', 0}, {'x', 255}}`: an `=` right
+// inside parentheses, after a name, `>`, `&` or `*`, then a balanced `{...}`, then `,` or `)`.
+// The braces are bounded, and the scan goes on after them, so it stays linear.
+template <typename Rewrite> void rewriteBracedDefaults(const QByteArray &code, Rewrite rewrite)
+{
+    std::vector<char> open;
+    const qsizetype n = code.size();
+    for (qsizetype i = 0; i < n; ++i) {
+        const char c = code.at(i);
+        if (c == '(' || c == '[' || c == '{') {
+            open.push_back(c);
+            continue;
+        }
+        if (c == ')' || c == ']' || c == '}') {
+            if (!open.empty())
+                open.pop_back();
+            continue;
+        }
+        if (c != '=' || open.empty() || open.back() != '(')
+            continue;
+        if (std::strchr("=!<>+-*/%&|^", code.at(i - 1)) || (i + 1 < n && code.at(i + 1) == '='))
+            continue; // a comparison or a compound assignment
+        const qsizetype before = previousCode(code, i);
+        if (before < 0 ||
+            !(isIdentifierChar(code.at(before)) || std::strchr(">&*", code.at(before))))
+            continue;
+        const qsizetype brace = nextCode(code, i + 1);
+        if (brace >= n || code.at(brace) != '{')
+            continue;
+        const qsizetype limit = std::min(n, brace + 4096);
+        qsizetype close = brace;
+        for (int depth = 0; close < limit && code.at(close) != ';'; ++close) {
+            depth += code.at(close) == '{' ? 1 : code.at(close) == '}' ? -1 : 0;
+            if (depth == 0)
+                break;
+        }
+        if (close >= limit || code.at(close) != '}')
+            continue;
+        const qsizetype after = nextCode(code, close + 1);
+        if (after >= n || (code.at(after) != ',' && code.at(after) != ')'))
+            continue;
+        rewrite(brace, close + 1);
+        i = close; // the braces were balanced: `open` is as it was before them
+    }
+}
+
 } // namespace
 
 void blankGrammarGaps(QByteArray *source)
@@ -198,7 +244,7 @@ void blankGrammarGaps(QByteArray *source)
     const bool news = source->contains("new ");
     const bool typenames = source->contains("typename ");
     const bool templates = source->contains("template");
-    const bool braces = source->contains("{}");
+    const bool braces = source->contains('{');
     if (!news && !typenames && !templates && !braces)
         return;
     const QByteArray code = codeOnly(*source);
@@ -244,11 +290,9 @@ void blankGrammarGaps(QByteArray *source)
         blankExplicitInstantiations(code, blank);
     }
     if (braces) {
-        static const QRegularExpression emptyDefault(
-            QStringLiteral("[\\w>&*]\\s*=\\s*(\\{)\\s*(\\})(?=\\s*[,)])"));
-        each(emptyDefault, [&](const QRegularExpressionMatch &m) {
-            data[m.capturedStart(1)] = '0';
-            data[m.capturedStart(2)] = ' ';
+        rewriteBracedDefaults(code, [&](qsizetype from, qsizetype to) {
+            blank(from, to);
+            data[from] = '0';
         });
     }
 }
