@@ -237,6 +237,71 @@ template <typename Rewrite> void rewriteBracedDefaults(const QByteArray &code, R
     }
 }
 
+// True when the first argument of EXPECT_THROW(statement, exception) is a declaration
+// (`GraphLoader loader(node)`, `auto tree = make()`), a block or several statements: the macro
+// makes a statement of it, the grammar sees a call whose argument is not an expression.
+bool isStatementArgument(const QByteArray &argument)
+{
+    const QByteArray a = argument.trimmed();
+    if (a.contains(';') || a.startsWith('{'))
+        return true;
+    static const QRegularExpression declaration(QStringLiteral(
+        "^(?:(?:const|static|constexpr|volatile)\\s+)*([A-Za-z_][\\w:]*)(?:\\s*<[^()]*>)?"
+        "(?:\\s*[*&]+\\s*|\\s+)[A-Za-z_]\\w*\\s*(?:[({=]|$)"));
+    const auto m = declaration.match(QString::fromLatin1(a));
+    static const QStringList expressions = {QStringLiteral("new"),    QStringLiteral("delete"),
+                                            QStringLiteral("sizeof"), QStringLiteral("co_await"),
+                                            QStringLiteral("throw"),  QStringLiteral("not")};
+    return m.hasMatch() && !expressions.contains(m.captured(1));
+}
+
+// The arguments of macros the grammar cannot read as a call: gtest's EXPECT_THROW family when
+// its statement is not an expression, and Qt's SIGNAL(signature) / SLOT(signature), whose
+// parameter types are not expressions. The call stays, with blank parentheses. Each scan
+// resumes after the parentheses it matched, so the pass is linear.
+template <typename Blank> void blankMacroArguments(const QByteArray &code, Blank blank)
+{
+    const qsizetype n = code.size();
+    for (qsizetype i = 0; i < n;) {
+        if (!isIdentifierChar(code.at(i))) {
+            ++i;
+            continue;
+        }
+        const qsizetype start = i;
+        while (i < n && isIdentifierChar(code.at(i)))
+            ++i;
+        const std::string_view word(code.constData() + start, size_t(i - start));
+        const bool signature = word == "SIGNAL" || word == "SLOT";
+        const bool throws = (word.starts_with("EXPECT_") || word.starts_with("ASSERT_")) &&
+                            word.ends_with("_THROW");
+        if (!signature && !throws)
+            continue;
+        const qsizetype open = nextCode(code, i);
+        if (open >= n || code.at(open) != '(')
+            continue;
+        qsizetype close = open;
+        qsizetype comma = -1;
+        for (int depth = 0; close < n; ++close) {
+            const char c = code.at(close);
+            if (c == '(' || c == '[' || c == '{')
+                ++depth;
+            else if ((c == ')' || c == ']' || c == '}') && --depth == 0)
+                break;
+            else if (c == ',' && depth == 1 && comma < 0)
+                comma = close;
+        }
+        if (close >= n)
+            return;
+        i = close;
+        if (code.at(close) != ')')
+            continue;
+        const qsizetype firstEnd = comma < 0 ? close : comma;
+        if (throws && !isStatementArgument(code.mid(open + 1, firstEnd - open - 1)))
+            continue;
+        blank(open + 1, close);
+    }
+}
+
 } // namespace
 
 void blankGrammarGaps(QByteArray *source)
@@ -245,7 +310,9 @@ void blankGrammarGaps(QByteArray *source)
     const bool typenames = source->contains("typename ");
     const bool templates = source->contains("template");
     const bool braces = source->contains('{');
-    if (!news && !typenames && !templates && !braces)
+    const bool macros =
+        source->contains("_THROW") || source->contains("SIGNAL") || source->contains("SLOT");
+    if (!news && !typenames && !templates && !braces && !macros)
         return;
     const QByteArray code = codeOnly(*source);
     // Latin-1 maps every byte to one character, so match offsets are byte offsets.
@@ -295,6 +362,8 @@ void blankGrammarGaps(QByteArray *source)
             data[from] = '0';
         });
     }
+    if (macros)
+        blankMacroArguments(code, blank);
 }
 
 } // namespace rosarch::cppsyntax

@@ -84,6 +84,34 @@ private Q_SLOTS:
         QVERIFY(parsesCleanly(out));
     }
 
+    // gtest's EXPECT_THROW(statement, exception) with a declaration or block, and Qt's
+    // SIGNAL(signature) / SLOT(signature), keep the call with blank parentheses; an
+    // expression statement stays.
+    void macroArguments()
+    {
+        const QByteArray src(
+            "void f() {\n"
+            "  EXPECT_THROW(GraphLoader loader(node, tf, frame), pluginlib::PluginlibException);\n"
+            "  EXPECT_THROW(\n"
+            "    auto tree = factory_->createTreeFromText(xml, bb),\n"
+            "    BT::RuntimeError);\n"
+            "  ASSERT_NO_THROW({ a(); b(); });\n"
+            "  EXPECT_THROW(node->create_publisher<Msg>(\"chatter\", 10), std::exception);\n"
+            "  connect(combo, SIGNAL(currentIndexChanged(int)), this, SLOT(onRate(int, "
+            "QString)));\n"
+            "  log(\"SIGNAL(x(int))\");\n"
+            "}\n");
+        QVERIFY(!parsesCleanly(src));
+        const QByteArray out = rewritten(src);
+        QCOMPARE(
+            lines(out),
+            (QList<QByteArray>{
+                "void f() {", "EXPECT_THROW( );", "EXPECT_THROW(", ");", "ASSERT_NO_THROW( );",
+                "EXPECT_THROW(node->create_publisher<Msg>(\"chatter\", 10), std::exception);",
+                "connect(combo, SIGNAL( ), this, SLOT( ));", "log(\"SIGNAL(x(int))\");", "}"}));
+        QVERIFY(parsesCleanly(out));
+    }
+
     // Patterns in string literals, raw strings, character literals, comments and preprocessor
     // lines stay as written.
     void stringsAndCommentsStay()
