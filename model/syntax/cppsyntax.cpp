@@ -420,64 +420,6 @@ void blankQtKeywords(QByteArray *source)
     }
 }
 
-void blankGrammarGaps(QByteArray *source)
-{
-    const bool news = source->contains("new ");
-    const bool typenames = source->contains("typename ");
-    const bool templates = source->contains("template ");
-    const bool braces = source->contains("{}");
-    if (!news && !typenames && !templates && !braces)
-        return;
-    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
-    const QString text = QString::fromLatin1(*source);
-    char *data = source->data();
-    auto blank = [&](qsizetype from, qsizetype to) {
-        for (qsizetype i = from; i < to; ++i)
-            if (data[i] != '\n' && data[i] != '\r')
-                data[i] = ' ';
-    };
-    auto each = [&](const QRegularExpression &re, auto apply) {
-        for (auto it = re.globalMatch(text); it.hasNext();)
-            apply(it.next());
-    };
-    if (news) {
-        static const QRegularExpression pointerArray(
-            QStringLiteral("\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*\\s*(\\*+)\\s*\\["));
-        each(pointerArray, [&](const QRegularExpressionMatch &m) {
-            blank(m.capturedStart(1), m.capturedEnd(1));
-        });
-        static const QRegularExpression valueInitialized(QStringLiteral(
-            "\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*[\\s*]*\\[[^\\]\\n;]*\\](\\s*\\(\\s*\\))"));
-        each(valueInitialized, [&](const QRegularExpressionMatch &m) {
-            blank(m.capturedStart(1), m.capturedEnd(1));
-        });
-    }
-    if (typenames) {
-        static const QRegularExpression constructed(
-            QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+"
-                           "[A-Za-z_]\\w*(?:<[^;{}()]*?>)?(?:::[A-Za-z_]\\w*(?:<[^;{}()]*?>)?)+"
-                           "\\s*[({]"));
-        each(constructed, [&](const QRegularExpressionMatch &m) {
-            blank(m.capturedStart(1), m.capturedEnd(1));
-        });
-    }
-    if (templates) {
-        static const QRegularExpression member(
-            QStringLiteral("(?:->|\\.)\\s*(template)\\s+[A-Za-z_]\\w*\\s*\\("));
-        each(member, [&](const QRegularExpressionMatch &m) {
-            blank(m.capturedStart(1), m.capturedEnd(1));
-        });
-    }
-    if (braces) {
-        static const QRegularExpression emptyDefault(
-            QStringLiteral("[\\w>&*]\\s*=\\s*(\\{)\\s*(\\})(?=\\s*[,)])"));
-        each(emptyDefault, [&](const QRegularExpressionMatch &m) {
-            data[m.capturedStart(1)] = '0';
-            data[m.capturedStart(2)] = ' ';
-        });
-    }
-}
-
 bool isHeaderPath(const QString &path)
 {
     const QString lower = path.toLower();

@@ -66,8 +66,10 @@ void blankQtKeywords(QByteArray *source);
 /// Overwrites, keeping offsets, lines and columns, what valid C++ the grammar cannot read:
 /// the `*` of `new T *[n]` and the `()` of `new T[n]()`, `typename` before a dependent type
 /// constructed in an expression (`x = typename T::Goal();`), `template` after `->` / `.`
-/// without template arguments (`bb->template set(...)`), and a `{}` default argument, which
-/// becomes `0`. None of it names a port.
+/// without template arguments (`bb->template set(...)`), a braced default argument (`= {}`,
+/// `= {1.0, 2.0}`), which becomes `0`, explicit instantiations (`template class X<int>;`), and
+/// the arguments of gtest's EXPECT_THROW(declaration, e) family and of Qt's SIGNAL() / SLOT().
+/// Strings, comments and preprocessor lines stay as written. None of it names a port.
 void blankGrammarGaps(QByteArray *source);
 
 /// True for header extensions (.h .hh .hpp .hxx .inl).

@@ -1,0 +1,369 @@
+// Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
+#include "cppsyntax.h"
+
+#include <QRegularExpression>
+
+namespace rosarch::cppsyntax {
+
+namespace {
+
+bool isIdentifierChar(char c)
+{
+    return std::isalnum(uchar(c)) || c == '_';
+}
+
+// The end of the line at `i`, a backslash-continued line included.
+qsizetype endOfLogicalLine(const char *s, qsizetype n, qsizetype i)
+{
+    while (i < n) {
+        if (s[i] == '\n') {
+            const bool continued =
+                (i > 0 && s[i - 1] == '\\') || (i > 1 && s[i - 1] == '\r' && s[i - 2] == '\\');
+            if (!continued)
+                return i;
+        }
+        ++i;
+    }
+    return n;
+}
+
+// The source with comments, preprocessor lines and the contents of string and character
+// literals overwritten by spaces (newlines kept), so that the rewrites below only ever see
+// code: a pattern inside a string or a comment stays as written. One pass, linear.
+QByteArray codeOnly(const QByteArray &source)
+{
+    QByteArray out = source;
+    const char *s = source.constData();
+    char *o = out.data();
+    const qsizetype n = source.size();
+    auto blank = [&](qsizetype from, qsizetype to) {
+        for (qsizetype i = from; i < std::min(to, n); ++i)
+            if (s[i] != '\n' && s[i] != '\r')
+                o[i] = ' ';
+    };
+    bool lineStart = true;
+    qsizetype wordStart = -1;
+    qsizetype wordEnd = -1;
+    for (qsizetype i = 0; i < n;) {
+        const char c = s[i];
+        const char next = i + 1 < n ? s[i + 1] : '\0';
+        if (c == '\n') {
+            lineStart = true;
+            ++i;
+            continue;
+        }
+        if (lineStart && (c == ' ' || c == '\t' || c == '\r')) {
+            ++i;
+            continue;
+        }
+        if (lineStart && c == '#') {
+            const qsizetype end = endOfLogicalLine(s, n, i);
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        lineStart = false;
+        if (c == '/' && next == '/') {
+            const qsizetype end = endOfLogicalLine(s, n, i);
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        if (c == '/' && next == '*') {
+            const qsizetype close = source.indexOf("*/", i + 2);
+            const qsizetype end = close < 0 ? n : close + 2;
+            blank(i, end);
+            i = end;
+            continue;
+        }
+        if (c == '"') {
+            // A raw string's prefix is the identifier right before the quote.
+            const std::string_view prefix =
+                wordEnd == i ? std::string_view(s + wordStart, size_t(i - wordStart))
+                             : std::string_view();
+            const bool raw = prefix == "R" || prefix == "u8R" || prefix == "uR" || prefix == "UR" ||
+                             prefix == "LR";
+            if (raw) {
+                qsizetype open = i + 1; // the delimiter has at most 16 characters
+                while (open < std::min(n, i + 18) && s[open] != '(' && s[open] != '\n')
+                    ++open;
+                if (open < n && s[open] == '(') {
+                    const QByteArray close = ')' + source.mid(i + 1, open - i - 1) + '"';
+                    const qsizetype at = source.indexOf(close, open + 1);
+                    const qsizetype end = at < 0 ? n : at + close.size();
+                    blank(i + 1, end - 1);
+                    i = end;
+                    continue;
+                }
+            }
+            qsizetype j = i + 1;
+            while (j < n && s[j] != '"' && s[j] != '\n')
+                j += s[j] == '\\' ? 2 : 1;
+            blank(i + 1, j);
+            i = j + 1;
+            continue;
+        }
+        if (c == '\'') { // a character literal: digit separators are consumed with their number
+            qsizetype j = i + 1;
+            while (j < n && s[j] != '\'' && s[j] != '\n')
+                j += s[j] == '\\' ? 2 : 1;
+            blank(i + 1, j);
+            i = j + 1;
+            continue;
+        }
+        if (std::isdigit(uchar(c)) || (c == '.' && std::isdigit(uchar(next)))) {
+            qsizetype j = i + 1;
+            while (j < n &&
+                   (isIdentifierChar(s[j]) || s[j] == '.' || s[j] == '\'' ||
+                    ((s[j] == '+' || s[j] == '-') && std::strchr("eEpP", s[j - 1]) != nullptr)))
+                ++j;
+            i = j;
+            continue;
+        }
+        if (isIdentifierChar(c)) {
+            wordStart = i;
+            while (i < n && isIdentifierChar(s[i]))
+                ++i;
+            wordEnd = i;
+            continue;
+        }
+        ++i;
+    }
+    return out;
+}
+
+// The last non-blank offset before `i`, -1 when none.
+qsizetype previousCode(const QByteArray &code, qsizetype i)
+{
+    --i;
+    while (i >= 0 && std::isspace(uchar(code.at(i))))
+        --i;
+    return i;
+}
+
+qsizetype nextCode(const QByteArray &code, qsizetype i)
+{
+    while (i < code.size() && std::isspace(uchar(code.at(i))))
+        ++i;
+    return i;
+}
+
+bool isWordAt(const QByteArray &code, qsizetype i, std::string_view word)
+{
+    const qsizetype end = i + qsizetype(word.size());
+    return i >= 0 && end <= code.size() &&
+           std::string_view(code.constData() + i, word.size()) == word &&
+           (i == 0 || !isIdentifierChar(code.at(i - 1))) &&
+           (end == code.size() || !isIdentifierChar(code.at(end)));
+}
+
+// Explicit instantiations, `template class X<int>;`, `extern template void f<int>(int);`, at
+// the start of a statement: they declare nothing the analysis reads.
+template <typename Blank> void blankExplicitInstantiations(const QByteArray &code, Blank blank)
+{
+    for (qsizetype from = 0;;) {
+        const qsizetype at = code.indexOf("template", from);
+        if (at < 0)
+            return;
+        from = at + 8;
+        if (!isWordAt(code, at, "template"))
+            continue;
+        const qsizetype after = nextCode(code, at + 8);
+        if (after >= code.size() || code.at(after) == '<') // a template declaration
+            continue;
+        qsizetype start = at;
+        qsizetype before = previousCode(code, at);
+        if (before >= 5 && isWordAt(code, before - 5, "extern")) {
+            start = before - 5;
+            before = previousCode(code, start);
+        }
+        if (before >= 0 && !std::strchr(";{}", code.at(before)))
+            continue;
+        // Up to the `;`; a brace means it was something else. Scans never overlap: the next
+        // statement starts after this one's `;` or brace.
+        qsizetype end = after;
+        while (end < code.size() && !std::strchr(";{}", code.at(end)))
+            ++end;
+        if (end >= code.size() || code.at(end) != ';')
+            continue;
+        blank(start, end + 1);
+        from = end + 1;
+    }
+}
+
+// Braced default arguments, `= {}`, `= {1.0, 2.0}`, `= {{'.', 0}, {'x', 255}}`: an `=` right
+// inside parentheses, after a name, `>`, `&` or `*`, then a balanced `{...}`, then `,` or `)`.
+// The braces are bounded, and the scan goes on after them, so it stays linear.
+template <typename Rewrite> void rewriteBracedDefaults(const QByteArray &code, Rewrite rewrite)
+{
+    std::vector<char> open;
+    const qsizetype n = code.size();
+    for (qsizetype i = 0; i < n; ++i) {
+        const char c = code.at(i);
+        if (c == '(' || c == '[' || c == '{') {
+            open.push_back(c);
+            continue;
+        }
+        if (c == ')' || c == ']' || c == '}') {
+            if (!open.empty())
+                open.pop_back();
+            continue;
+        }
+        if (c != '=' || open.empty() || open.back() != '(')
+            continue;
+        if (std::strchr("=!<>+-*/%&|^", code.at(i - 1)) || (i + 1 < n && code.at(i + 1) == '='))
+            continue; // a comparison or a compound assignment
+        const qsizetype before = previousCode(code, i);
+        if (before < 0 ||
+            !(isIdentifierChar(code.at(before)) || std::strchr(">&*", code.at(before))))
+            continue;
+        const qsizetype brace = nextCode(code, i + 1);
+        if (brace >= n || code.at(brace) != '{')
+            continue;
+        const qsizetype limit = std::min(n, brace + 4096);
+        qsizetype close = brace;
+        for (int depth = 0; close < limit && code.at(close) != ';'; ++close) {
+            depth += code.at(close) == '{' ? 1 : code.at(close) == '}' ? -1 : 0;
+            if (depth == 0)
+                break;
+        }
+        if (close >= limit || code.at(close) != '}')
+            continue;
+        const qsizetype after = nextCode(code, close + 1);
+        if (after >= n || (code.at(after) != ',' && code.at(after) != ')'))
+            continue;
+        rewrite(brace, close + 1);
+        i = close; // the braces were balanced: `open` is as it was before them
+    }
+}
+
+// True when the first argument of EXPECT_THROW(statement, exception) is a declaration
+// (`GraphLoader loader(node)`, `auto tree = make()`), a block or several statements: the macro
+// makes a statement of it, the grammar sees a call whose argument is not an expression.
+bool isStatementArgument(const QByteArray &argument)
+{
+    const QByteArray a = argument.trimmed();
+    if (a.contains(';') || a.startsWith('{'))
+        return true;
+    static const QRegularExpression declaration(QStringLiteral(
+        "^(?:(?:const|static|constexpr|volatile)\\s+)*([A-Za-z_][\\w:]*)(?:\\s*<[^()]*>)?"
+        "(?:\\s*[*&]+\\s*|\\s+)[A-Za-z_]\\w*\\s*(?:[({=]|$)"));
+    const auto m = declaration.match(QString::fromLatin1(a));
+    static const QStringList expressions = {QStringLiteral("new"),    QStringLiteral("delete"),
+                                            QStringLiteral("sizeof"), QStringLiteral("co_await"),
+                                            QStringLiteral("throw"),  QStringLiteral("not")};
+    return m.hasMatch() && !expressions.contains(m.captured(1));
+}
+
+// The arguments of macros the grammar cannot read as a call: gtest's EXPECT_THROW family when
+// its statement is not an expression, and Qt's SIGNAL(signature) / SLOT(signature), whose
+// parameter types are not expressions. The call stays, with blank parentheses. Each scan
+// resumes after the parentheses it matched, so the pass is linear.
+template <typename Blank> void blankMacroArguments(const QByteArray &code, Blank blank)
+{
+    const qsizetype n = code.size();
+    for (qsizetype i = 0; i < n;) {
+        if (!isIdentifierChar(code.at(i))) {
+            ++i;
+            continue;
+        }
+        const qsizetype start = i;
+        while (i < n && isIdentifierChar(code.at(i)))
+            ++i;
+        const std::string_view word(code.constData() + start, size_t(i - start));
+        const bool signature = word == "SIGNAL" || word == "SLOT";
+        const bool throws = (word.starts_with("EXPECT_") || word.starts_with("ASSERT_")) &&
+                            word.ends_with("_THROW");
+        if (!signature && !throws)
+            continue;
+        const qsizetype open = nextCode(code, i);
+        if (open >= n || code.at(open) != '(')
+            continue;
+        qsizetype close = open;
+        qsizetype comma = -1;
+        for (int depth = 0; close < n; ++close) {
+            const char c = code.at(close);
+            if (c == '(' || c == '[' || c == '{')
+                ++depth;
+            else if ((c == ')' || c == ']' || c == '}') && --depth == 0)
+                break;
+            else if (c == ',' && depth == 1 && comma < 0)
+                comma = close;
+        }
+        if (close >= n)
+            return;
+        i = close;
+        if (code.at(close) != ')')
+            continue;
+        const qsizetype firstEnd = comma < 0 ? close : comma;
+        if (throws && !isStatementArgument(code.mid(open + 1, firstEnd - open - 1)))
+            continue;
+        blank(open + 1, close);
+    }
+}
+
+} // namespace
+
+void blankGrammarGaps(QByteArray *source)
+{
+    const bool news = source->contains("new ");
+    const bool typenames = source->contains("typename ");
+    const bool templates = source->contains("template");
+    const bool braces = source->contains('{');
+    const bool macros =
+        source->contains("_THROW") || source->contains("SIGNAL") || source->contains("SLOT");
+    if (!news && !typenames && !templates && !braces && !macros)
+        return;
+    const QByteArray code = codeOnly(*source);
+    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
+    const QString text = QString::fromLatin1(code);
+    char *data = source->data();
+    auto blank = [&](qsizetype from, qsizetype to) {
+        for (qsizetype i = from; i < to; ++i)
+            if (data[i] != '\n' && data[i] != '\r')
+                data[i] = ' ';
+    };
+    auto each = [&](const QRegularExpression &re, auto apply) {
+        for (auto it = re.globalMatch(text); it.hasNext();)
+            apply(it.next());
+    };
+    if (news) {
+        static const QRegularExpression pointerArray(
+            QStringLiteral("\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*\\s*(\\*+)\\s*\\["));
+        each(pointerArray, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+        static const QRegularExpression valueInitialized(QStringLiteral(
+            "\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*[\\s*]*\\[[^\\]\\n;]*\\](\\s*\\(\\s*\\))"));
+        each(valueInitialized, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+    }
+    if (typenames) {
+        static const QRegularExpression constructed(
+            QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+"
+                           "[A-Za-z_]\\w*(?:<[^;{}()]*?>)?(?:::[A-Za-z_]\\w*(?:<[^;{}()]*?>)?)+"
+                           "\\s*[({]"));
+        each(constructed, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+    }
+    if (templates) {
+        static const QRegularExpression member(
+            QStringLiteral("(?:->|\\.)\\s*(template)\\s+[A-Za-z_]\\w*\\s*\\("));
+        each(member, [&](const QRegularExpressionMatch &m) {
+            blank(m.capturedStart(1), m.capturedEnd(1));
+        });
+        blankExplicitInstantiations(code, blank);
+    }
+    if (braces) {
+        rewriteBracedDefaults(code, [&](qsizetype from, qsizetype to) {
+            blank(from, to);
+            data[from] = '0';
+        });
+    }
+    if (macros)
+        blankMacroArguments(code, blank);
+}
+
+} // namespace rosarch::cppsyntax
