@@ -201,6 +201,14 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             if (set && !v.isEmpty()) // a joined name keeps the text around the value
                 base = p.parameterPrefix + v + p.parameterSuffix;
         }
+        // A parameter left empty (declared with "" and not set) names nothing ROS would
+        // accept: the name is only known at run time.
+        if (pp.resolved && base.trimmed().isEmpty()) {
+            pp.resolved = false;
+            base = !p.nameExpression.isEmpty() ? p.nameExpression
+                   : !p.parameter.isEmpty()    ? QStringLiteral("$(%1)").arg(p.parameter)
+                                               : QStringLiteral("?");
+        }
         if (pp.resolved) {
             int used = -1;
             pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);

@@ -7,6 +7,17 @@
 namespace rosarch {
 
 using PlantUmlText::label;
+
+namespace {
+
+// An empty label does not parse in PlantUML; a channel is never unnamed, but the root name
+// "/" is written relative as "".
+QString channelLabel(const QString &name)
+{
+    return name.isEmpty() ? QStringLiteral("/") : label(name);
+}
+
+} // namespace
 using PlantUmlText::safeId;
 
 namespace {
@@ -148,13 +159,15 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
         declare(WrittenElement::Kind::Channel, ch.id);
         switch (ch.kind) {
         case Channel::Kind::Topic:
-            out += QStringLiteral("  queue \"%1\" as %2\n").arg(label(ch.name), ch.id);
+            out += QStringLiteral("  queue \"%1\" as %2\n").arg(channelLabel(ch.name), ch.id);
             break;
         case Channel::Kind::Service:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>\n").arg(label(ch.name), ch.id);
+            out += QStringLiteral("  circle \"%1\" as %2 <<Service>>\n")
+                       .arg(channelLabel(ch.name), ch.id);
             break;
         case Channel::Kind::Action:
-            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>\n").arg(label(ch.name), ch.id);
+            out += QStringLiteral("  circle \"%1\" as %2 <<Action>>\n")
+                       .arg(channelLabel(ch.name), ch.id);
             break;
         }
     }

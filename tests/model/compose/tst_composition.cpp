@@ -252,6 +252,34 @@ private Q_SLOTS:
         QVERIFY(ports.at(1).active);
     }
 
+    // A parameter declared with "" and never set leaves the port's name unknown: it is not a
+    // topic "/" that every such port would meet on.
+    void anEmptyParameterNameIsUnresolved()
+    {
+        AtomicNode node;
+        node.nodeName = QStringLiteral("limiter");
+        Port limit = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QString(),
+                                     QStringLiteral("nav2_msgs/msg/SpeedLimit"), QString(), {});
+        limit.nameOrigin = NameOrigin::Parameter;
+        limit.parameter = QStringLiteral("speed_limit_topic");
+        limit.nameExpression = QStringLiteral("params_->speed_limit_topic");
+        node.ports = {limit};
+        NodeInstance instance;
+        instance.nodeName = QStringLiteral("limiter");
+        QList<PartPort> ports = Composer::resolvePorts(node, instance, nullptr);
+        QVERIFY(!ports.at(0).resolved);
+        QCOMPARE(ports.at(0).name, QStringLiteral("params_->speed_limit_topic"));
+
+        instance.effectiveParameters = {{QStringLiteral("speed_limit_topic"),
+                                         QStringLiteral("speed_limit"),
+                                         QStringLiteral("file"),
+                                         {},
+                                         {}}};
+        ports = Composer::resolvePorts(node, instance, nullptr);
+        QVERIFY(ports.at(0).resolved); // a value set for the instance names it
+        QCOMPARE(ports.at(0).name, QStringLiteral("/speed_limit"));
+    }
+
     void resolvesPortsPerInstance()
     {
         const RosNodePart *camera = partNamed(*m_front, QStringLiteral("front_camera"));
