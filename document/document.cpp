@@ -1,9 +1,12 @@
 #include "document.h"
 #include "decidesuggestioncommand.h"
 #include "decisionstore.h"
+#include "project.h"
 #include "setnodedescriptioncommand.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
 #include <QSet>
 
 namespace rosarch {
@@ -30,12 +33,13 @@ void Document::setRecovery(Recovery recovery)
     // The decisions belong to the workspace shown so far: on disk before it is replaced. If
     // they cannot be written and the same workspace comes back, they are kept in memory.
     const bool sameWorkspace = recovery.nodes.workspaceRoot == workspaceRoot();
+    const QList<SuggestionDecision> keyed = keyedDecisions(); // by the keys of the old model
     const bool saved = saveDecisions();
     DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
     if (hasSuggestionReport())
         change.parts |= DocumentChange::Suggestions;
     Q_EMIT aboutToChange(change);
-    m_accepted.reset();
+    m_corrected.reset();
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
     m_launch = std::move(recovery.launch);
@@ -44,7 +48,7 @@ void Document::setRecovery(Recovery recovery)
     for (const AtomicNode &n : m_nodes.nodes)
         m_analysisDescriptions.insert(n.id, n.description);
     if (sameWorkspace && !saved)
-        applyStoredDescriptions();
+        bindDecisions(keyed); // not on disk: re-bound from memory, by key
     else
         loadDecisions();
     // The old suggestions were checked against the old model; their ids may mean other things.
@@ -63,9 +67,11 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     if (hasSuggestionReport())
         change.parts |= DocumentChange::Suggestions;
     Q_EMIT aboutToChange(change);
-    m_accepted.reset();
+    m_corrected.reset();
+    const QList<SuggestionDecision> keyed = keyedDecisions(); // launch ids may change
     m_launch = std::move(launch);
     m_architecture = std::move(architecture);
+    bindDecisions(keyed);
     clearSuggestions(); // groupings and names refer to launch ids that may have changed
     Q_EMIT changed(change);
 }
@@ -91,7 +97,7 @@ void Document::applyNodeDescription(const QString &nodeId, const QString &descri
     for (AtomicNode &n : m_nodes.nodes) {
         if (n.id == nodeId) {
             n.description = description;
-            m_accepted.reset();
+            m_corrected.reset();
             emitChange(DocumentChange::Node, nodeId);
             return;
         }
@@ -128,7 +134,7 @@ int Document::setSuggestions(SuggestionReport report)
     }
     m_suggestionReport = std::move(report);
     if (!changedNodes.isEmpty())
-        m_accepted.reset();
+        m_corrected.reset();
     emitChange(DocumentChange::Suggestions);
     for (const QString &id : std::as_const(changedNodes))
         emitChange(DocumentChange::Node, id);
@@ -202,20 +208,71 @@ QMap<QString, QString> Document::acceptedNames() const
 
 const Recovery &Document::accepted() const
 {
-    if (!m_accepted) {
-        const Recovery recovery{m_nodes, m_launch, m_architecture};
-        AcceptedDecisions decisions = AcceptedModel::select(m_decisions, recovery);
-        // The nodes here already hold every description a person set, by accepting or by
-        // editing after accepting; the stored decision must not undo a later edit.
-        decisions.descriptions.clear();
-        m_accepted = AcceptedModel::apply(recovery, decisions);
+    if (!m_corrected) {
+        // The model as analysis found it: the nodes here hold the descriptions accepted since,
+        // which the project applies itself (the same function as every export and the command
+        // line); a description a person edited after that stays theirs.
+        Recovery recovered{m_nodes, m_launch, m_architecture};
+        for (AtomicNode &n : recovered.nodes.nodes)
+            n.description = m_analysisDescriptions.value(n.id, n.description);
+        m_corrected = CorrectedModel::apply(recovered, project());
+        for (AtomicNode &n : m_corrected->recovery.nodes.nodes)
+            if (const AtomicNode *here = m_nodes.node(n.id);
+                here && here->description != n.description) {
+                n.description = here->description;
+                n.marks.provenance = Provenance::Corrected;
+            }
     }
-    return *m_accepted;
+    return m_corrected->recovery;
+}
+
+const QList<Orphan> &Document::orphans() const
+{
+    accepted();
+    return m_corrected->orphans;
+}
+
+QList<SuggestionDecision> Document::keyedDecisions() const
+{
+    QList<SuggestionDecision> out = m_unboundDecisions;
+    const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+    for (const SuggestionDecision &d : m_decisions) {
+        SuggestionDecision k;
+        if (CorrectedModel::keyed(d, keys, &k))
+            out.append(k);
+    }
+    return out;
+}
+
+void Document::bindDecisions(const QList<SuggestionDecision> &keyed)
+{
+    m_decisions.clear();
+    m_unboundDecisions.clear();
+    const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+    for (const SuggestionDecision &d : keyed) {
+        SuggestionDecision b;
+        QString reason;
+        if (CorrectedModel::bound(d, keys, &b, &reason))
+            m_decisions.insert(b.key(), b);
+        else
+            m_unboundDecisions.append(d); // kept, applied to nothing
+    }
+    m_corrected.reset();
+    applyStoredDescriptions();
+}
+
+Project Document::project() const
+{
+    Project p = m_project;
+    p.decisions = keyedDecisions();
+    std::sort(p.decisions.begin(), p.decisions.end(),
+              [](const auto &a, const auto &b) { return a.key() < b.key(); });
+    return p;
 }
 
 QString Document::decisionsPath() const
 {
-    return DecisionStore::path(workspaceRoot());
+    return m_projectPath;
 }
 
 Document::DecisionSnapshot Document::snapshot(const Suggestion &suggestion) const
@@ -250,7 +307,7 @@ Document::DecisionSnapshot Document::decided(const Suggestion &suggestion,
 
 void Document::restore(const DecisionSnapshot &snapshot)
 {
-    m_accepted.reset();
+    m_corrected.reset();
     if (snapshot.decision)
         m_decisions.insert(snapshot.key, *snapshot.decision);
     else
@@ -276,9 +333,39 @@ void Document::restore(const DecisionSnapshot &snapshot)
 
 void Document::loadDecisions()
 {
-    m_decisions = DecisionStore::load(decisionsPath());
+    m_project = {};
     m_unsaved = false;
-    applyStoredDescriptions();
+    m_projectPath = ProjectFile::locate(workspaceRoot());
+    QList<SuggestionDecision> keyed;
+    if (QFileInfo::exists(m_projectPath)) {
+        QString error;
+        if (ProjectFile::read(m_projectPath, &m_project, &error)) {
+            keyed = m_project.decisions;
+        } else {
+            // kept under another name before anything is written over it
+            const QString kept = ProjectFile::keepUnreadable(m_projectPath);
+            Q_EMIT projectLoadFailed(kept.isEmpty()
+                                         ? error
+                                         : QCoreApplication::translate(
+                                               "rosarch::Document", "%1\nThe file was kept as %2.")
+                                               .arg(error, kept));
+        }
+    } else if (const QString legacy = DecisionStore::path(workspaceRoot());
+               QFileInfo::exists(legacy)) {
+        // Decisions of an earlier version, by position: taken over once, by the ids of the
+        // model they are opened with, then written as the project and the old file set aside.
+        const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+        for (const SuggestionDecision &d : DecisionStore::load(legacy)) {
+            SuggestionDecision k;
+            if (CorrectedModel::keyed(d, keys, &k))
+                keyed.append(k);
+        }
+        QFile::rename(legacy, legacy + QStringLiteral(".migrated"));
+        m_unsaved = !keyed.isEmpty();
+    }
+    bindDecisions(keyed);
+    if (m_unsaved)
+        saveDecisions();
 }
 
 void Document::applyStoredDescriptions()
@@ -313,7 +400,7 @@ bool Document::saveDecisions()
         return true;
     }
     QString error;
-    if (!DecisionStore::save(path, workspaceRoot(), m_decisions, &error)) {
+    if (!ProjectFile::write(path, project(), &error)) {
         Q_EMIT decisionsSaveFailed(error); // kept in memory; the next change or save tries again
         return false;
     }

@@ -2,6 +2,7 @@
 
 #include "acceptedmodel.h"
 #include "atomicnodelist.h"
+#include "correctedmodel.h"
 #include "documentchange.h"
 #include "launchanalyzer.h"
 #include "launchdependencies.h"
@@ -83,8 +84,14 @@ public:
     /// The model as accepted (AcceptedModel::apply of the recovery and the decisions): what the
     /// diagram draws and the exports write. Computed once per change of either.
     const Recovery &accepted() const;
-    /// The decisions file of the workspace ("" without a workspace).
+    /// The project file of the workspace ("" without a workspace): its own
+    /// rosarch.project.json, else the one kept for it under the application data.
     QString decisionsPath() const;
+    /// The project as it would be saved now: decisions by stable key (those that match
+    /// nothing in this model kept as they were), corrections, launch options.
+    Project project() const;
+    /// Decisions and corrections of the project that match nothing in the current model.
+    const QList<Orphan> &orphans() const;
     /// True while a decision is not on disk yet (the autosave is pending).
     bool hasUnsavedDecisions() const { return m_unsaved; }
     /// Writes the decisions now if any are not on disk; false when writing failed (then
@@ -114,6 +121,9 @@ Q_SIGNALS:
     void changed(const rosarch::DocumentChange &change);
     /// The decisions could not be written; `message` says where and why.
     void decisionsSaveFailed(const QString &message);
+    /// The project file could not be read; `message` says which file, why, and where the
+    /// unreadable file was kept.
+    void projectLoadFailed(const QString &message);
 
 private:
     friend class SetNodeDescriptionCommand;
@@ -123,8 +133,12 @@ private:
     DecisionSnapshot snapshot(const Suggestion &suggestion) const;
     DecisionSnapshot decided(const Suggestion &suggestion, Suggestion::Status status) const;
     void restore(const DecisionSnapshot &snapshot);
-    /// Reads the workspace's decisions and applies the accepted descriptions (no signals).
+    /// Reads the workspace's project and applies the accepted descriptions (no signals).
     void loadDecisions();
+    /// The decisions by stable key, with this model's keys (those bound nowhere included).
+    QList<SuggestionDecision> keyedDecisions() const;
+    /// Binds decisions stored by key to this model's ids; what matches nothing is kept apart.
+    void bindDecisions(const QList<SuggestionDecision> &keyed);
     /// Applies the accepted descriptions among the decisions to the nodes (no signals).
     void applyStoredDescriptions();
     void markDecisionsChanged();
@@ -138,9 +152,12 @@ private:
     Architecture m_architecture;
     LaunchOptions m_launchOptions;
     SuggestionReport m_suggestionReport;
-    QMap<QString, SuggestionDecision> m_decisions;
-    QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
-    mutable std::optional<Recovery> m_accepted;     ///< accepted(), until the next change
+    QMap<QString, SuggestionDecision> m_decisions; ///< bound to this model's ids
+    Project m_project;     ///< as read; decisions are rebuilt from m_decisions when saved
+    QString m_projectPath; ///< where m_project is kept
+    QList<SuggestionDecision> m_unboundDecisions;         ///< by key: nothing here matches them
+    mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted()/orphans(), until a change
+    QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     QTimer m_autosave;
     bool m_unsaved = false;

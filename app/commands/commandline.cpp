@@ -5,6 +5,7 @@
 #include "editdistance.h"
 #include "evalcommand.h"
 #include "plantumlrenderer.h"
+#include "projectcommand.h"
 #include "recovery.h"
 #include "suggestcommand.h"
 #include "workspacerun.h"
@@ -23,7 +24,7 @@ namespace rosarch {
 
 namespace {
 
-const char *const kCommands[] = {"recover", "check", "diff", "eval", "suggest"};
+const char *const kCommands[] = {"recover", "check", "diff", "eval", "suggest", "project"};
 
 QString usageText()
 {
@@ -34,11 +35,19 @@ QString usageText()
         "default)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
         "<file>]\n"
-        "                  [--no-decisions | --project <decisions.json>] [--render svg|png "
+        "                  [--no-decisions | --project <file>] [--render svg|png "
         "[--plantuml-jar <file>]]\n"
         "                                            run the stages headless and write the "
-        "artifacts,\n"
-        "                                            with the decisions made in the GUI applied\n"
+        "artifacts, with\n"
+        "                                            the project applied (default: the "
+        "workspace's\n"
+        "                                            rosarch.project.json, when there is one)\n"
+        "  rosarch project check <project file> <workspace> [--in-process]\n"
+        "                                            list the decisions and corrections that no "
+        "longer\n"
+        "                                            match anything (exit 0 none, 1 orphaned, 2 "
+        "usage,\n"
+        "                                            3 the project cannot be read)\n"
         "  rosarch check <workspace> [--format text|json|sarif|junit] [--output <file>]\n"
         "                [--baseline <file>] [--write-baseline <file>] [--fail-on "
         "error|warning|info|never]\n"
@@ -140,7 +149,8 @@ int recover(const QStringList &arguments)
     timer.start();
     int decisions = 0;
     QString failure;
-    const Recovery recovery = run.recover(&decisions, &failure);
+    QList<Orphan> orphans;
+    const Recovery recovery = run.recover(&decisions, &failure, &orphans);
     const qint64 elapsed = timer.elapsed();
     if (!failure.isEmpty()) {
         err << failure << '\n'
@@ -163,6 +173,8 @@ int recover(const QStringList &arguments)
                 : d.evidence.file + QStringLiteral(": ");
         err << where << Diagnostic::severityName(d.severity) << ": " << d.message << '\n';
     }
+    for (const Orphan &o : std::as_const(orphans))
+        err << ProjectCommand::describe(o, run.projectFile()) << '\n';
     QStringList written;
     QString error;
     if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error)) {
@@ -192,9 +204,11 @@ int recover(const QStringList &arguments)
                        .arg(render);
         if (decisions > 0)
             out << QCoreApplication::translate("rosarch::CommandLine",
-                                               "Applied %1 accepted decisions (--no-decisions "
-                                               "writes the model as recovered).\n")
-                       .arg(decisions);
+                                               "Applied %1 accepted decisions and corrections of "
+                                               "%2 (--no-decisions writes the model as "
+                                               "recovered).\n")
+                       .arg(decisions)
+                       .arg(QDir::toNativeSeparators(run.projectFile()));
         out << QCoreApplication::translate("rosarch::CommandLine",
                                            "Recovered %1 node classes with %2 ports in %3 "
                                            "packages; %4 launch files, %5 launch-file "
@@ -297,6 +311,8 @@ int CommandLine::run(const QStringList &arguments)
         return runEval(arguments);
     if (first == QLatin1String("suggest"))
         return runSuggest(arguments);
+    if (first == QLatin1String("project"))
+        return ProjectCommand::run(arguments);
     const bool pathLike = first.contains(QLatin1Char('/')) || first.startsWith(QLatin1Char('.')) ||
                           QFileInfo::exists(first);
     if (pathLike) {

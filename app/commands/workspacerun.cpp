@@ -1,5 +1,4 @@
 #include "workspacerun.h"
-#include "decisionstore.h"
 #include "stageprocess.h"
 
 #include <QCommandLineParser>
@@ -50,42 +49,82 @@ bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command
                                              "--no-decisions and --project exclude each other.");
         return false;
     }
-    m_decisions = parser.isSet(m_noDecisionsOption) ? QString()
-                  : parser.isSet(m_projectOption)   ? parser.value(m_projectOption)
-                                                    : DecisionStore::path(m_workspace);
-    if (parser.isSet(m_projectOption) && !QFileInfo(m_decisions).isFile()) {
+    m_projectFile = parser.isSet(m_noDecisionsOption) ? QString()
+                    : parser.isSet(m_projectOption)   ? parser.value(m_projectOption)
+                                                      : ProjectFile::locate(m_workspace);
+    if (parser.isSet(m_projectOption) && !QFileInfo(m_projectFile).isFile()) {
         *error = QCoreApplication::translate("rosarch::CommandLine", "No such file: %1")
-                     .arg(m_decisions);
+                     .arg(m_projectFile);
         return false;
+    }
+    if (!parser.isSet(m_projectOption) && !QFileInfo(m_projectFile).isFile())
+        m_projectFile.clear(); // the workspace has no project (yet)
+    m_project = {};
+    if (!m_projectFile.isEmpty()) {
+        if (!readProject(m_projectFile, &m_project, error))
+            return false;
+        // the command line's launch root and arguments win over the project's
+        if (m_launch.rootFile.isEmpty())
+            m_launch.rootFile = m_project.launch.rootFile;
+        for (auto it = m_project.launch.arguments.cbegin(); it != m_project.launch.arguments.cend();
+             ++it)
+            if (!m_launch.arguments.contains(it.key()))
+                m_launch.arguments.insert(it.key(), it.value());
     }
     return true;
 }
 
-Recovery WorkspaceRun::recover(int *applied, QString *failure) const
+bool WorkspaceRun::readProject(const QString &file, Project *project, QString *error)
 {
-    Recovery recovered;
-    if (!m_inProcess && !StageProcess::helperPath().isEmpty()) {
+    QString why;
+    if (ProjectFile::read(file, project, &why))
+        return true;
+    *error = QCoreApplication::translate("rosarch::CommandLine", "The project cannot be used: %1")
+                 .arg(why);
+    return false;
+}
+
+Recovery WorkspaceRun::recovered(const QString &workspace, const LaunchOptions &launch,
+                                 bool inProcess, QString *failure)
+{
+    if (!inProcess && !StageProcess::helperPath().isEmpty()) {
         StageProcess::Result r =
-            StageProcess::recover(m_workspace, m_launch, StageControl(), StageProcess::Options());
+            StageProcess::recover(workspace, launch, StageControl(), StageProcess::Options());
         if (!r.error.isEmpty()) {
             if (failure)
                 *failure = r.error;
             return {};
         }
-        recovered = std::move(r.recovery);
-    } else {
-        recovered = recoverWorkspace(m_workspace, m_launch);
-        if (!m_inProcess)
-            recovered.nodes.diagnostics.append(StageProcess::missingWorker());
+        return std::move(r.recovery);
     }
-    // The model as accepted, exactly as the GUI exports it for the same decisions.
-    const AcceptedDecisions accepted =
-        m_decisions.isEmpty() ? AcceptedDecisions{}
-                              : AcceptedModel::select(DecisionStore::load(m_decisions), recovered);
-    if (applied)
-        *applied =
-            int(accepted.groupings.size() + accepted.names.size() + accepted.descriptions.size());
-    return AcceptedModel::apply(recovered, accepted);
+    Recovery recovery = recoverWorkspace(workspace, launch);
+    if (!inProcess)
+        recovery.nodes.diagnostics.append(StageProcess::missingWorker());
+    return recovery;
+}
+
+Recovery WorkspaceRun::recover(int *applied, QString *failure, QList<Orphan> *orphans) const
+{
+    QString why;
+    Recovery recovery = recovered(m_workspace, m_launch, m_inProcess, &why);
+    if (!why.isEmpty()) {
+        if (failure)
+            *failure = why;
+        return {};
+    }
+    // The model as corrected, exactly as the GUI exports it for the same project.
+    CorrectedRecovery corrected = CorrectedModel::apply(recovery, m_project);
+    if (applied) {
+        int accepted = 0;
+        for (const SuggestionDecision &d : std::as_const(corrected.decisions))
+            accepted += d.status == Suggestion::Status::Accepted ? 1 : 0;
+        *applied = accepted + int(m_project.corrections.size());
+        for (const Orphan &o : std::as_const(corrected.orphans))
+            *applied -= o.source == Orphan::Source::Correction ? 1 : 0;
+    }
+    if (orphans)
+        *orphans = corrected.orphans;
+    return std::move(corrected.recovery);
 }
 
 } // namespace rosarch

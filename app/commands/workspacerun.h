@@ -1,6 +1,6 @@
 #pragma once
 
-#include "acceptedmodel.h"
+#include "correctedmodel.h"
 #include "recovery.h"
 
 #include <QCommandLineOption>
@@ -11,8 +11,8 @@ class QCommandLineParser;
 namespace rosarch {
 
 /// What `recover` and `check` share: the workspace argument, launch arguments, the launch
-/// root and the decisions to apply (the workspace's own, a given file, or none); and the
-/// recovery they ask for, as accepted.
+/// root and the project to apply (the workspace's own rosarch.project.json, a given file, or
+/// none); and the recovery they ask for, as corrected (CorrectedModel, as the GUI exports it).
 class WorkspaceRun
 {
 public:
@@ -22,11 +22,22 @@ public:
     /// workspace. False with a message (a usage error) when they are wrong.
     bool read(const QCommandLineParser &parser, const QString &command, QString *error);
 
-    /// Runs the stages, in the analysis worker unless --in-process, and applies the decisions;
-    /// `applied` counts them. When the worker stops without a result (outside any one file's
-    /// analysis), `failure` says why and the recovery is empty.
-    Recovery recover(int *applied = nullptr, QString *failure = nullptr) const;
+    /// Runs the stages, in the analysis worker unless --in-process, and applies the project;
+    /// `applied` counts its accepted decisions and corrections, `orphans` gets what matched
+    /// nothing. When the worker stops without a result (outside any one file's analysis),
+    /// `failure` says why and the recovery is empty.
+    Recovery recover(int *applied = nullptr, QString *failure = nullptr,
+                     QList<Orphan> *orphans = nullptr) const;
     const QString &workspace() const { return m_workspace; }
+    /// The project file applied ("" = none).
+    const QString &projectFile() const { return m_projectFile; }
+
+    /// Runs stages 1 to 3 on `workspace` as recovered (no project), in the analysis worker
+    /// unless `inProcess`; `failure` as for recover().
+    static Recovery recovered(const QString &workspace, const LaunchOptions &launch, bool inProcess,
+                              QString *failure);
+    /// Reads the project `file`; false with a message naming the file when it cannot be used.
+    static bool readProject(const QString &file, Project *project, QString *error);
 
 private:
     QCommandLineOption m_argOption{QStringLiteral("launch-arg"),
@@ -38,12 +49,12 @@ private:
         QStringLiteral("file")};
     QCommandLineOption m_noDecisionsOption{
         QStringLiteral("no-decisions"),
-        QStringLiteral("Use the model as recovered, without the decisions a person made on this "
-                       "workspace in the GUI.")};
+        QStringLiteral("Use the model as recovered, without the workspace's project (the "
+                       "decisions and corrections a person made).")};
     QCommandLineOption m_projectOption{
         QStringLiteral("project"),
-        QStringLiteral("Apply the decisions in this file (a decisions.json the GUI saved) "
-                       "instead of the workspace's own."),
+        QStringLiteral("Apply this project file instead of the workspace's own "
+                       "rosarch.project.json."),
         QStringLiteral("file")};
     QCommandLineOption m_inProcessOption{
         QStringLiteral("in-process"),
@@ -53,7 +64,8 @@ private:
     QString m_workspace;
     LaunchOptions m_launch;
     bool m_inProcess = false;
-    QString m_decisions; ///< the decisions file ("" = none)
+    QString m_projectFile; ///< the project file ("" = none)
+    Project m_project;
 };
 
 } // namespace rosarch

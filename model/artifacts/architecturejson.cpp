@@ -30,6 +30,7 @@ Json portJson(const PartPort &p)
     }
     if (p.evidence.isValid())
         j["evidence"] = EvidenceJson::toJson(p.evidence);
+    JsonSupport::putMarks(j, p.marks);
     return j;
 }
 
@@ -57,6 +58,7 @@ Json partJson(const RosNodePart &part)
     j["ports"] = ports;
     if (part.evidence.isValid())
         j["evidence"] = EvidenceJson::toJson(part.evidence);
+    JsonSupport::putMarks(j, part.marks);
     return j;
 }
 
@@ -75,11 +77,14 @@ Json compositeJson(const Composite &c, const QString &ccd)
         parts.push_back(partJson(p));
     j["parts"] = parts;
     Json channels = Json::array();
-    for (const Channel &ch : c.channels)
-        channels.push_back({{"id", utf8(ch.id)},
-                            {"kind", utf8(channelKindName(ch.kind))},
-                            {"name", utf8(ch.name)},
-                            {"type", utf8(ch.type)}});
+    for (const Channel &ch : c.channels) {
+        Json cj = {{"id", utf8(ch.id)},
+                   {"kind", utf8(channelKindName(ch.kind))},
+                   {"name", utf8(ch.name)},
+                   {"type", utf8(ch.type)}};
+        JsonSupport::putMarks(cj, ch.marks);
+        channels.push_back(cj);
+    }
     j["channels"] = channels;
     Json boundary = Json::array();
     for (const BoundaryPort &b : c.boundary)

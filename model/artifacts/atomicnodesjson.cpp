@@ -48,6 +48,7 @@ Json portJson(const Port &p)
             chain.push_back(EvidenceJson::toJson(e));
         j["via_evidence"] = chain;
     }
+    JsonSupport::putMarks(j, p.marks);
     return j;
 }
 
@@ -77,6 +78,7 @@ Json nodeJson(const AtomicNode &n)
     for (const Port &p : n.ports)
         ports.push_back(portJson(p));
     j["ports"] = ports;
+    JsonSupport::putMarks(j, n.marks);
     return j;
 }
 
@@ -108,6 +110,7 @@ bool readPort(const Json &j, Port *p, QString *error)
     p->guardParameter = JsonSupport::string(j, "guard_parameter");
     p->guardDefault = JsonSupport::string(j, "guard_default");
     p->via = JsonSupport::string(j, "via");
+    p->marks = JsonSupport::marks(j);
     p->qos = JsonSupport::string(j, "qos");
     p->inherited = j.value("inherited", false);
     if (j.contains("evidence"))
@@ -176,6 +179,7 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
             n.headerFiles = JsonSupport::stringList(nj, "header_file_paths");
             n.sourceFiles = JsonSupport::stringList(nj, "source_file_paths");
             n.description = JsonSupport::string(nj, "description");
+            n.marks = JsonSupport::marks(nj);
             n.compileType = JsonSupport::string(nj, "compile_type") == QLatin1String("python")
                                 ? AtomicNode::CompileType::Python
                                 : AtomicNode::CompileType::Cpp;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "provenance.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -42,6 +44,28 @@ inline QStringList stringList(const Json &j, const char *key)
             if (v.is_string())
                 out.append(QString::fromStdString(v.get<std::string>()));
     return out;
+}
+
+/// Writes `provenance` and `reviewed` when they are not the defaults (blueprint §5).
+inline void putMarks(Json &j, const Marks &marks)
+{
+    if (marks.provenance != Provenance::Recovered)
+        j["provenance"] = utf8(provenanceName(marks.provenance));
+    if (marks.reviewed)
+        j["reviewed"] = true;
+}
+
+/// Reads what putMarks wrote.
+inline Marks marks(const Json &j)
+{
+    Marks m;
+    const QString p = string(j, "provenance");
+    for (Provenance v : {Provenance::Suggested, Provenance::Corrected})
+        if (p == provenanceName(v))
+            m.provenance = v;
+    const auto it = j.find("reviewed");
+    m.reviewed = it != j.end() && it->is_boolean() && it->get<bool>();
+    return m;
 }
 
 } // namespace rosarch::JsonSupport

@@ -105,6 +105,7 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["active"] = n.active;
         j["unresolved"] = unresolvedJson(n.unresolved);
         j["evidence"] = EvidenceJson::toJson(n.evidence);
+        JsonSupport::putMarks(j, n.marks);
         nodes.push_back(j);
     }
     Json args = Json::array();

@@ -5,9 +5,10 @@
 namespace rosarch {
 
 Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDependencies &launch,
-                                 const StageControl &control)
+                                 const StageControl &control,
+                                 const QHash<QString, QString> &renamed)
 {
-    Architecture arch = Composer::run(nodes, launch, control);
+    Architecture arch = Composer::run(nodes, launch, control, renamed);
     if (arch.canceled)
         return arch;
     arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
@@ -15,7 +16,7 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
         LaunchDependencies alone;
         alone.instances = launch.classifierInstances;
         alone.nodes = launch.classifierNodes;
-        Architecture classifiers = Composer::run(nodes, alone, control);
+        Architecture classifiers = Composer::run(nodes, alone, control, renamed);
         arch.canceled = classifiers.canceled;
         for (Composite &c : classifiers.composites)
             if (c.parentId.isEmpty())

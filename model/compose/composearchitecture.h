@@ -5,10 +5,14 @@
 #include "launchdependencies.h"
 #include "stagecontrol.h"
 
+#include <QHash>
+
 namespace rosarch {
 
 /// Stage 3: the composites of every launch-file instance plus the architecture checks.
+/// `renamed`: topics, services and actions a person renamed (Composer::run).
 Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDependencies &launch,
-                                 const StageControl &control = {});
+                                 const StageControl &control = {},
+                                 const QHash<QString, QString> &renamed = {});
 
 } // namespace rosarch

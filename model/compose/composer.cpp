@@ -115,9 +115,12 @@ void wire(Composite *c)
                                                                : QStringLiteral("a_");
             ch.id = aliasOf(prefix, name, &aliases);
             ch.name = name;
-            for (const Endpoint &e : eps)
+            for (const Endpoint &e : eps) {
                 if (ch.type.isEmpty())
                     ch.type = e.port->type;
+                // a channel a correction renamed, or joined, is a corrected one
+                ch.marks.provenance = std::max(ch.marks.provenance, e.port->marks.provenance);
+            }
             c->channels.append(ch);
             for (bool provider : {true, false}) {
                 for (const Endpoint &e : eps) {
@@ -161,6 +164,11 @@ bool evidenceBefore(const Evidence &a, const Evidence &b)
 
 } // namespace
 
+QString channelKey(PortKind kind, const QString &name)
+{
+    return portFamilyName(kind) + QLatin1Char(':') + name;
+}
+
 QString launchStem(const QString &fileName)
 {
     QString stem = fileName.section(QLatin1Char('/'), -1);
@@ -183,7 +191,12 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         rules += container->remaps; // process-wide rules of the container reach its components
     const QString nodeName = runtimeNodeName(node, instance);
     QList<PartPort> out;
-    for (const Port &p : node.ports) {
+    QList<Port> ports;
+    for (const Port &p : node.ports)
+        if (!instance.removedPorts.contains(p.id))
+            ports.append(p);
+    ports += instance.addedPorts;
+    for (const Port &p : std::as_const(ports)) {
         PartPort pp;
         pp.id = p.id;
         pp.kind = p.kind;
@@ -192,6 +205,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         pp.guard = p.guard;
         pp.qos = p.qos;
         pp.evidence = p.evidence;
+        pp.marks = p.marks;
         pp.resolved = p.isResolved();
         QString base = p.name;
         if (p.nameOrigin == NameOrigin::Parameter) {
@@ -259,7 +273,7 @@ QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &
 }
 
 Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies &launch,
-                           const StageControl &control)
+                           const StageControl &control, const QHash<QString, QString> &renamed)
 {
     Architecture arch;
     QHash<QString, const AtomicNode *> classes;
@@ -341,7 +355,12 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                                                        : RosNames::scopeRelative(n.nameSpace);
                 part.active = n.active && lf.active;
                 part.typed = cls != nullptr;
-                if (cls) {
+                part.marks = n.marks;
+                if (!cls && !n.addedPorts.isEmpty()) {
+                    AtomicNode added; // an unknown class with ports a person added
+                    part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;
+                    part.ports = resolvePorts(added, n, nullptr);
+                } else if (cls) {
                     part.name = runtimeNodeName(*cls, n);
                     const NodeInstance *container = nullptr;
                     if (!n.container.isEmpty())
@@ -372,6 +391,13 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                     }
                 }
             }
+            if (!renamed.isEmpty() && part.kind == RosNodePart::Kind::Node)
+                for (PartPort &pp : part.ports)
+                    if (const auto it = renamed.constFind(channelKey(pp.kind, pp.name));
+                        it != renamed.cend()) {
+                        pp.name = *it;
+                        pp.marks.provenance = Provenance::Corrected;
+                    }
             c.parts.append(part);
         }
         wire(&c);

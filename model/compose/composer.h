@@ -16,8 +16,11 @@ namespace rosarch {
 class Composer
 {
 public:
+    /// `renamed` maps channelKey(kind, resolved name) to the name a person gave the topic,
+    /// service or action; every port that resolves to it is renamed before wiring.
     static Architecture run(const AtomicNodeList &nodes, const LaunchDependencies &launch,
-                            const StageControl &control = {});
+                            const StageControl &control = {},
+                            const QHash<QString, QString> &renamed = {});
 
     /// The ports of one node instance with names resolved (remaps, namespace, private names,
     /// parameter values) and guards evaluated; `container` supplies container-level remaps.
@@ -29,6 +32,10 @@ public:
     static QList<PartPort> pluginPorts(const QHash<QString, const AtomicNode *> &pluginClasses,
                                        const NodeInstance &instance, const NodeInstance *container);
 };
+
+/// "topic:/scan", "service:/map/save", "action:/navigate": what a port of `kind` named
+/// `name` talks on, as the stable key of that topic, service or action (blueprint §5).
+QString channelKey(PortKind kind, const QString &name);
 
 /// The launch file's stem: "robot" for robot.launch.py, "nav" for nav_launch.py.
 QString launchStem(const QString &fileName);

@@ -2,6 +2,8 @@
 
 #include "diagnostic.h"
 #include "evidence.h"
+#include "port.h"
+#include "provenance.h"
 
 #include <QList>
 #include <QMap>
@@ -57,6 +59,11 @@ struct NodeInstance
     bool active = true; ///< the condition's value (true when undecidable: best guess)
     QList<Unresolved> unresolved;
     Evidence evidence;
+    /// A person's corrections of this instance (blueprint §5), applied by stage 3: ports added
+    /// (absolute names) and port ids removed.
+    QList<Port> addedPorts;
+    QStringList removedPorts;
+    Marks marks; ///< provenance and review (blueprint §5); set by the corrected model
     bool operator==(const NodeInstance &) const = default;
 };
 

@@ -1,8 +1,8 @@
 // A person's decisions on disk: kept per workspace, written by the autosave (not on every undo
 // and redo), before another workspace replaces them and when the document goes, and kept in
 // memory when the disk refuses them.
-#include "decisionstore.h"
 #include "document.h"
+#include "project.h"
 #include "suggestionfixture.h"
 #include "testsupport.h"
 
@@ -13,6 +13,20 @@
 #include <QtTest>
 
 using namespace rosarch;
+
+namespace {
+
+/// How many decisions the project file at `path` holds (-1 when it cannot be read).
+qsizetype storedDecisions(const QString &path)
+{
+    if (!QFileInfo::exists(path))
+        return 0;
+    Project p;
+    QString error;
+    return ProjectFile::read(path, &p, &error) ? p.decisions.size() : -1;
+}
+
+} // namespace
 using rosarch::test::exampleWorkspace;
 using rosarch::test::kSecret;
 
@@ -32,18 +46,16 @@ private:
 
 private Q_SLOTS:
     void initTestCase() { QVERIFY(m_fixture.setUp()); }
-    void init() { QFile::remove(DecisionStore::path(exampleWorkspace())); }
+    void init() { QFile::remove(ProjectFile::locate(exampleWorkspace())); }
 
     void decisionsAreKeptWithTheProject()
     {
-        const QString path = DecisionStore::path(exampleWorkspace());
+        const QString path = ProjectFile::locate(exampleWorkspace());
         const QByteArray sha1 =
             QCryptographicHash::hash(exampleWorkspace().toUtf8(), QCryptographicHash::Sha1).toHex();
-        QCOMPARE(
-            path,
-            QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                .filePath(
-                    QStringLiteral("projects/%1/decisions.json").arg(QString::fromLatin1(sha1))));
+        QCOMPARE(path, QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                           .filePath(QStringLiteral("projects/%1/rosarch.project.json")
+                                         .arg(QString::fromLatin1(sha1))));
         QVERIFY(path.startsWith(m_fixture.home.path()));
         QString acceptedValue;
         {
@@ -84,12 +96,49 @@ private Q_SLOTS:
         third.undoStack()->undo();
         QVERIFY(third.saveDecisions());
         QVERIFY(test::readFile(path).contains("\"rejected\""));
-        QCOMPARE(DecisionStore::load(path).size(), 2);
+        QCOMPARE(storedDecisions(path), 2);
+    }
+
+    void aDecisionStaysWithItsClassWhenTheIdsShift()
+    {
+        // Decided on arc_1, the project names the class by key: a class inserted before it
+        // shifts every id, and the description stays with its class (blueprint §5).
+        QString target, value;
+        {
+            Document doc;
+            load(doc);
+            const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
+            target = doc.atomicNodes().node(d.targetId)->qualifiedName;
+            value = d.value;
+            QVERIFY(doc.acceptSuggestion(d.id));
+        }
+        Recovery shifted = m_recovery;
+        AtomicNode inserted;
+        inserted.className = QStringLiteral("Aardvark");
+        inserted.qualifiedName = QStringLiteral("aardvark.Aardvark");
+        inserted.packageName = shifted.nodes.nodes.first().packageName;
+        shifted.nodes.nodes.prepend(inserted);
+        QHash<QString, QString> renamed;
+        for (int i = 0; i < shifted.nodes.nodes.size(); ++i) {
+            AtomicNode &n = shifted.nodes.nodes[i];
+            const QString id = QStringLiteral("arc_%1").arg(i + 1);
+            renamed.insert(n.id, id);
+            n.id = id;
+        }
+        for (NodeInstance &n : shifted.launch.nodes)
+            n.classId = renamed.value(n.classId, n.classId);
+        Document doc;
+        doc.setRecovery(shifted);
+        QVERIFY(doc.orphans().isEmpty());
+        for (const AtomicNode &n : doc.atomicNodes().nodes)
+            QCOMPARE(n.description == value, n.qualifiedName == target);
+        for (const AtomicNode &n : doc.accepted().nodes.nodes)
+            QCOMPARE(n.marks.provenance == Provenance::Suggested, n.qualifiedName == target);
     }
 
     void undoAndRedoDoNotWriteTheAutosaveDoes()
     {
-        const QString path = DecisionStore::path(exampleWorkspace());
+        const QString path = ProjectFile::locate(exampleWorkspace());
         Document doc;
         load(doc);
         const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
@@ -102,13 +151,13 @@ private Q_SLOTS:
         QVERIFY(!QFileInfo::exists(path)); // nothing written yet
         QVERIFY(doc.saveDecisions());
         QVERIFY(!doc.hasUnsavedDecisions());
-        QCOMPARE(DecisionStore::load(path).size(), 1);
+        QCOMPARE(storedDecisions(path), 1);
 
         // The autosave writes a burst of changes once, an interval after the first one.
         doc.setAutosaveInterval(100);
         doc.undoStack()->undo();
-        QCOMPARE(DecisionStore::load(path).size(), 1);
-        QTRY_COMPARE(DecisionStore::load(path).size(), 0);
+        QCOMPARE(storedDecisions(path), 1);
+        QTRY_COMPARE(storedDecisions(path), 0);
         QVERIFY(!doc.hasUnsavedDecisions());
 
         // Replacing the workspace writes what is pending first; so does closing the document.
@@ -116,22 +165,22 @@ private Q_SLOTS:
         doc.undoStack()->redo();
         QVERIFY(doc.hasUnsavedDecisions());
         doc.setRecovery({});
-        QCOMPARE(DecisionStore::load(path).size(), 1);
+        QCOMPARE(storedDecisions(path), 1);
         {
             Document other;
             load(other);
             other.setAutosaveInterval(60000);
             QVERIFY(other.rejectSuggestion(first(other, Suggestion::Kind::SubsystemGrouping).id));
-            QCOMPARE(DecisionStore::load(path).size(), 1);
+            QCOMPARE(storedDecisions(path), 1);
         }
-        QCOMPARE(DecisionStore::load(path).size(), 2);
+        QCOMPARE(storedDecisions(path), 2);
     }
 
     void aBurstOfChangesDoesNotPostponeTheAutosave()
     {
         // A crash loses at most one interval of decisions, even while a person keeps deciding,
         // undoing and redoing faster than the interval: later changes do not restart it.
-        const QString path = DecisionStore::path(exampleWorkspace());
+        const QString path = ProjectFile::locate(exampleWorkspace());
         Document doc;
         load(doc);
         doc.setAutosaveInterval(300);
@@ -144,13 +193,13 @@ private Q_SLOTS:
             doc.undoStack()->redo();
         }
         QVERIFY2(QFileInfo::exists(path), "nothing written during three seconds of changes");
-        QCOMPARE(DecisionStore::load(path).size(), 1); // written between a redo and an undo
+        QCOMPARE(storedDecisions(path), 1); // written between a redo and an undo
     }
 
     void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
     {
         // The project folder cannot be created (a file stands where it would go).
-        const QString path = DecisionStore::path(exampleWorkspace());
+        const QString path = ProjectFile::locate(exampleWorkspace());
         const QString folder = QFileInfo(path).path();
         QDir(folder).removeRecursively();
         QDir().mkpath(QFileInfo(folder).path());
@@ -172,7 +221,7 @@ private Q_SLOTS:
         QVERIFY(doc.hasUnsavedDecisions());
         QFile::remove(folder);
         QVERIFY(doc.saveDecisions());
-        QCOMPARE(DecisionStore::load(path).size(), 1);
+        QCOMPARE(storedDecisions(path), 1);
     }
 };
 

@@ -3,13 +3,13 @@
 // against the ungrouped expected CCDs, the diagram's subsystem clusters, and the path from an
 // accepted suggestion in the Document to the drawn and exported architecture (with undo).
 #include "ccdwriter.h"
-#include "decisionstore.h"
 #include "diagrambuilder.h"
 #include "diagrampanel.h"
 #include "document.h"
 #include "evaluator.h"
 #include "mainwindow.h"
 #include "plantumlreader.h"
+#include "project.h"
 #include "subsystemgrouping.h"
 #include "suggestionengine.h"
 #include "testsupport.h"
@@ -285,7 +285,7 @@ private Q_SLOTS:
 
     void acceptedGroupingReachesThePanelAndTheExport()
     {
-        QFile::remove(DecisionStore::path(exampleWorkspace()));
+        QFile::remove(ProjectFile::locate(exampleWorkspace()));
         Recovery recovery = recoverWorkspace(exampleWorkspace());
         recovery.nodes.workspaceRoot = exampleWorkspace();
         const SuggestionReport report =
@@ -329,7 +329,7 @@ private Q_SLOTS:
         // artifact is byte-identical to the GUI's export.
         exportedCcds(w, out);
         QVERIFY(doc->saveDecisions());
-        QVERIFY(QFileInfo::exists(DecisionStore::path(exampleWorkspace())));
+        QVERIFY(QFileInfo::exists(ProjectFile::locate(exampleWorkspace())));
         const QString headless = m_home.filePath(QStringLiteral("headless"));
         const test::Run run = test::runRosarch(
             {QStringLiteral("recover"), exampleWorkspace(), QStringLiteral("--out"), headless});
@@ -354,7 +354,7 @@ private Q_SLOTS:
         for (const QString &f : std::as_const(files))
             if (f.startsWith(QLatin1String("ccd/")))
                 QVERIFY(!test::readFile(QDir(headless).filePath(f)).contains("<<Subsystem>>"));
-        QFile::remove(DecisionStore::path(exampleWorkspace()));
+        QFile::remove(ProjectFile::locate(exampleWorkspace()));
     }
 };
 

@@ -2,10 +2,10 @@
 // (undo round trips), decisions kept per workspace, the runner off the UI thread (stale
 // results, cancel) and the controller against a fake OpenAI-compatible server over real HTTP.
 #include "appsettings.h"
-#include "decisionstore.h"
 #include "document.h"
 #include "documentchanges.h"
 #include "fakellmserver.h"
+#include "project.h"
 #include "screenshot.h"
 #include "suggestioncontroller.h"
 #include "suggestionengine.h"
@@ -126,7 +126,7 @@ private:
     {
         return test::firstOf(doc, kind);
     }
-    void clearDecisions() { QFile::remove(DecisionStore::path(exampleWorkspace())); }
+    void clearDecisions() { QFile::remove(ProjectFile::locate(exampleWorkspace())); }
     void configureLlm(const QString &endpoint, bool use)
     {
         AppSettings settings;

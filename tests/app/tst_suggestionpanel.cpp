@@ -2,9 +2,9 @@
 // QAbstractItemModelTester through runs and decisions, pending suggestions appear with their
 // columns and counts, selection previews, keyboard accept / reject, filters, accept all, the
 // LLM settings dialog (the key shown as present, never its value), and screenshots.
-#include "decisionstore.h"
 #include "document.h"
 #include "llmsettingsdialog.h"
+#include "project.h"
 #include "screenshot.h"
 #include "suggestioncontroller.h"
 #include "suggestionengine.h"
@@ -61,7 +61,7 @@ private:
     /// A Document with the deterministic suggestions on example_ws plus one LLM suggestion.
     void load(Document &doc)
     {
-        QFile::remove(DecisionStore::path(exampleWorkspace()));
+        QFile::remove(ProjectFile::locate(exampleWorkspace()));
         doc.setRecovery(m_recovery);
         doc.setSuggestions(m_report);
     }

@@ -116,6 +116,9 @@ bool LlmSchemaValidator::check(const QJsonObject &schema, const QJsonValue &valu
                     return false;
             } else if (additional.isBool() && !additional.toBool()) {
                 return fail(QStringLiteral("unexpected property \"%1\"").arg(it.key()));
+            } else if (additional.isObject()) {
+                if (!check(additional.toObject(), it.value(), sub, error))
+                    return false;
             }
         }
     }

@@ -7,7 +7,7 @@
 namespace rosarch {
 
 /// Checks a JSON value against the subset of JSON Schema the prompt contracts use: type,
-/// properties, required, additionalProperties (false), items, enum, min/maxItems,
+/// properties, required, additionalProperties (false or a schema), items, enum, min/maxItems,
 /// min/maxLength, minimum/maximum.
 class LlmSchemaValidator
 {

@@ -1,0 +1,64 @@
+#pragma once
+
+#include "correction.h"
+#include "launchanalyzer.h"
+#include "suggestiondecision.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QString>
+
+namespace rosarch {
+
+/// Everything a person decided about one workspace (blueprint §5): the launch root and
+/// argument values, decisions on suggestions, corrections (review marks and groupings among
+/// them). Every target is a stable key, every path workspace-relative. It never holds a secret.
+struct Project
+{
+    /// The version this build writes; files of a newer version are refused, not guessed at.
+    static constexpr int kVersion = 1;
+
+    LaunchOptions launch;
+    /// Decisions on suggestions; targetId and memberIds hold stable keys (StableKeys), sorted by
+    /// SuggestionDecision::key.
+    QList<SuggestionDecision> decisions;
+    QList<Correction> corrections; ///< in the order they were made
+
+    bool isEmpty() const
+    {
+        return launch == LaunchOptions{} && decisions.isEmpty() && corrections.isEmpty();
+    }
+    /// "c<n>" one past the highest correction id in the project.
+    QString nextCorrectionId() const;
+    /// The correction with `id`, or null.
+    const Correction *correction(const QString &id) const;
+    bool operator==(const Project &) const = default;
+};
+
+/// The project file on disk: plain JSON with sorted keys, checked against
+/// schemas/project.schema.json on load, written atomically.
+namespace ProjectFile {
+/// Where a workspace keeps its project by default: `<workspace>/rosarch.project.json`.
+QString defaultPath(const QString &workspaceRoot);
+/// The project of a workspace: its own rosarch.project.json when there is one, else the one
+/// kept for it under the application data (`projects/<sha1 of the absolute path>/`).
+QString locate(const QString &workspaceRoot);
+/// The autosave side file of `file`: `.<name>.autosave` next to it.
+QString autosavePath(const QString &file);
+/// The schema (JSON Schema subset) every project file is checked against.
+QJsonObject schema();
+
+QByteArray toJson(const Project &project);
+/// False with `error` (which says where and what) when `data` is not a project this build reads:
+/// not JSON, against the schema, or of a newer version.
+bool fromJson(const QByteArray &data, Project *project, QString *error);
+/// Reads `file`; false with `error` naming the file when it cannot be read or is not a project.
+bool read(const QString &file, Project *project, QString *error);
+/// Writes atomically (QSaveFile); false with `error` naming the file and the reason.
+bool write(const QString &file, const Project &project, QString *error);
+/// Keeps a copy of a file that could not be read next to it (`<file>.unreadable-<time>`) so
+/// that saving over it loses nothing; returns the copy's path ("" when copying failed).
+QString keepUnreadable(const QString &file);
+} // namespace ProjectFile
+
+} // namespace rosarch
