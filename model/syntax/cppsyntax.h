@@ -67,9 +67,15 @@ void blankQtKeywords(QByteArray *source);
 /// the `*` of `new T *[n]` and the `()` of `new T[n]()`, `typename` before a dependent type
 /// constructed in an expression (`x = typename T::Goal();`), `template` after `->` / `.`
 /// without template arguments (`bb->template set(...)`), a braced default argument (`= {}`,
-/// `= {1.0, 2.0}`), which becomes `0`, explicit instantiations (`template class X<int>;`), and
-/// the arguments of gtest's EXPECT_THROW(declaration, e) family and of Qt's SIGNAL() / SLOT().
-/// Strings, comments and preprocessor lines stay as written. None of it names a port.
+/// `= {1.0, 2.0}`), which becomes `0`, explicit instantiations (`template class X<int>;`),
+/// the arguments of gtest's EXPECT_THROW(declaration, e) family and of Qt's SIGNAL() / SLOT(),
+/// all but the last operand of `decltype(a, b)`, the symbol of an operator function called by
+/// name (`x.operator()(a)` becomes `x.operator__(a)`), the class of a pointer-to-member type
+/// (`void (C::*)(int)`) and the `*` of `->*`, the `...` of `using Ts::operator()...;`, a
+/// built-in type in `typeid(int)`, the parentheses of a reference initialised with a member
+/// (`const T & x(a.b);` becomes `{a.b}`) and the declarator of a declaration that is the
+/// unbraced body of `for` / `while` / `if`. Strings, comments and
+/// preprocessor lines stay as written. None of it names a port.
 void blankGrammarGaps(QByteArray *source);
 
 /// True for header extensions (.h .hh .hpp .hxx .inl).
