@@ -53,9 +53,10 @@ QString lastSegment(const QString &qualified);
 /// anything that is not an interface type is returned simplified as written.
 QString canonicalInterfaceType(const QString &written);
 
-/// Overwrites symbol-visibility macros (FOO_PUBLIC, FOO_EXPORT, ...) outside preprocessor lines
-/// with spaces: the parser cannot expand them and they derail whole class bodies. Offsets,
-/// lines and columns stay the same.
+/// Overwrites symbol-visibility macros (FOO_PUBLIC, FOO_EXPORT, ..., PCL_EXPORTS) and CUDA's
+/// `__device__` / `__host__` / `__global__` outside preprocessor lines with spaces: the parser
+/// cannot expand them and they derail whole class bodies. Offsets, lines and columns stay the
+/// same.
 void blankExportMacros(QByteArray *source);
 
 /// Overwrites the Qt moc keywords the parser cannot read, keeping offsets, lines and columns:
