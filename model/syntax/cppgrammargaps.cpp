@@ -471,6 +471,105 @@ void blankDeclarationBodies(const QByteArray &code, const QString &text, Blank b
     }
 }
 
+bool isMacroWord(std::string_view word)
+{
+    bool underscore = false;
+    for (char c : word) {
+        if (!(std::isupper(uchar(c)) || std::isdigit(uchar(c)) || c == '_'))
+            return false;
+        underscore = underscore || c == '_';
+    }
+    return word.size() > 3 && underscore && !std::isdigit(uchar(word.front()));
+}
+
+// True when the code before `i` ends a statement or a member: `;`, `{`, `}`, or an access
+// specifier's `:`.
+bool atStatementStart(const QByteArray &code, qsizetype i)
+{
+    const qsizetype before = previousCode(code, i);
+    if (before < 0 || std::strchr(";{}", code.at(before)))
+        return true;
+    if (code.at(before) != ':' || (before > 0 && code.at(before - 1) == ':'))
+        return false;
+    const qsizetype word = previousCode(code, before);
+    return word >= 0 &&
+           (isWordAt(code, word - 5, "public") || isWordAt(code, word - 6, "private") ||
+            isWordAt(code, word - 8, "protected"));
+}
+
+// True when an argument in the parentheses at [open, close] is a built-in type, `int`,
+// `unsigned char`: no function takes that, only a macro.
+bool hasBuiltinTypeArgument(const QByteArray &code, qsizetype open, qsizetype close)
+{
+    static const QRegularExpression builtin(
+        QStringLiteral("^\\s*(?:(?:const|unsigned|signed|short|long|int|char|float|double|bool|"
+                       "void|wchar_t|char8_t|char16_t|char32_t|size_t|u?int(?:8|16|32|64)_t)\\b"
+                       "\\s*)+[*&\\s]*$"));
+    qsizetype from = open + 1;
+    for (qsizetype i = open + 1, depth = 0; i <= close; ++i) {
+        const char c = code.at(i);
+        if (depth == 0 && (c == ',' || i == close)) {
+            if (builtin.match(QString::fromLatin1(code.mid(from, i - from))).hasMatch())
+                return true;
+            from = i + 1;
+        }
+        depth += nesting(c);
+    }
+    return false;
+}
+
+// A macro invocation that stands alone, without a `;`, at the start of a statement or member:
+// `EIGEN_MAKE_ALIGNED_OPERATOR_NEW`, `ROBIN_HOOD_TRACE(this)`,
+// `BOOST_GEOMETRY_REGISTER_POINT_3D(P, double, cs::cartesian, x, y, z)`. A name in capitals
+// with an underscore, its balanced arguments if any, then, on a later line, the next
+// declaration or statement (a name) or the end of the block: nothing C++ reads that way.
+// A `{`, `;`, `(`, an operator or a `:` after it means it was a function header (`TEST(a, b)
+// {`), a statement or an expression, and it stays, unless, before a `;`, an argument is a
+// built-in type (`ROBIN_HOOD_HASH_INT(unsigned char);`, `CHECK_FIELD(0, float, P, x);`): only
+// a macro takes a type. The registration macros the analysis reads from the text stay.
+template <typename Blank> void blankStandaloneMacros(const QByteArray &code, Blank blank)
+{
+    const qsizetype n = code.size();
+    qsizetype previousEnd = -1;
+    for (qsizetype i = 0; i < n;) {
+        if (!isIdentifierChar(code.at(i))) {
+            ++i;
+            continue;
+        }
+        const qsizetype start = i;
+        while (i < n && isIdentifierChar(code.at(i)))
+            ++i;
+        const std::string_view word(code.constData() + start, size_t(i - start));
+        // Right after another standalone macro is a statement start too.
+        if (!isMacroWord(word) ||
+            !(atStatementStart(code, start) || previousCode(code, start) == previousEnd - 1))
+            continue;
+        qsizetype end = i;
+        const qsizetype open = nextCode(code, i);
+        bool typeArgument = false;
+        if (open < n && code.at(open) == '(') {
+            const qsizetype close = closingParen(code, open, open + 4096);
+            if (close < 0)
+                continue;
+            typeArgument = hasBuiltinTypeArgument(code, open, close);
+            end = close + 1;
+        }
+        const qsizetype next = nextCode(code, end);
+        const qsizetype newline = code.indexOf('\n', end);
+        const bool later = newline >= 0 && newline < next;
+        // A name alone before `}` closes a class only after a member, not as an enumerator.
+        const bool ends = next >= n || (code.at(next) == '}' &&
+                                        (end > i || code.at(previousCode(code, start)) != '{'));
+        const bool declaration = typeArgument && next < n && code.at(next) == ';';
+        if (!declaration && (!later || !(ends || isIdentifierChar(code.at(next)))))
+            continue;
+        if (word != "RCLCPP_COMPONENTS_REGISTER_NODE" && word != "PLUGINLIB_EXPORT_CLASS")
+            blank(start, end);
+        previousEnd = end;
+        i = end;
+    }
+}
+
 } // namespace
 
 void blankGrammarGaps(QByteArray *source)
@@ -551,6 +650,7 @@ void blankGrammarGaps(QByteArray *source)
     }
     if (code.contains("for") || code.contains("while") || code.contains("if"))
         blankDeclarationBodies(code, text, blank);
+    blankStandaloneMacros(code, blank);
 }
 
 } // namespace rosarch::cppsyntax

@@ -74,8 +74,9 @@ void blankQtKeywords(QByteArray *source);
 /// name (`x.operator()(a)` becomes `x.operator__(a)`), the class of a pointer-to-member type
 /// (`void (C::*)(int)`) and the `*` of `->*`, the `...` of `using Ts::operator()...;`, a
 /// built-in type in `typeid(int)`, the parentheses of a reference initialised with a member
-/// (`const T & x(a.b);` becomes `{a.b}`) and the declarator of a declaration that is the
-/// unbraced body of `for` / `while` / `if`. Strings, comments and
+/// (`const T & x(a.b);` becomes `{a.b}`), the declarator of a declaration that is the unbraced
+/// body of `for` / `while` / `if`, and a macro invocation standing alone without `;`
+/// (`EIGEN_MAKE_ALIGNED_OPERATOR_NEW`, `ROBIN_HOOD_TRACE(this)`). Strings, comments and
 /// preprocessor lines stay as written. None of it names a port.
 void blankGrammarGaps(QByteArray *source);
 

@@ -200,6 +200,105 @@ private Q_SLOTS:
         QVERIFY(parsesCleanly(out));
     }
 
+    // A macro invocation standing alone without `;` at statement or member level is blanked;
+    // a function header (`TEST(a, b) {`), a statement with `;`, an expression, an enumerator
+    // and the registration macros the analysis reads stay.
+    void standaloneMacros()
+    {
+        const QByteArray src(
+            "BOOST_GEOMETRY_REGISTER_POINT_3D(geometry_msgs::msg::Point, double, cs::cartesian,\n"
+            "                                 x, y, z)\n"
+            "POINT_CLOUD_REGISTER_POINT_STRUCT(\n"
+            "  LivoxPoint, (float, x, x)(std::uint8_t, tag, tag))\n"
+            "namespace ns {\n"
+            "ROBIN_HOOD_HASH_INT(unsigned char);\n"
+            "CHECK_FIELD(0, float, autoware::point_types::PointXYZIRCAEDT, x);\n"
+            "struct Result {\n"
+            "  float p;\n"
+            "  EIGEN_MAKE_ALIGNED_OPERATOR_NEW\n"
+            "  friend bool operator<(const Result & a, const Result & b) { return a.p < b.p; }\n"
+            "};\n"
+            "struct Aligned {\n"
+            "  float p;\n"
+            "public:\n"
+            "  EIGEN_MAKE_ALIGNED_OPERATOR_NEW\n"
+            "};\n"
+            "class Observation {\n"
+            "public:\n"
+            "  RCLCPP_SMART_PTR_DEFINITIONS(Observation)\n"
+            "  /* comment */\n"
+            "  Observation() = default;\n"
+            "  int find() const {\n"
+            "    ROBIN_HOOD_TRACE(this)\n"
+            "    return 1;\n"
+            "  }\n"
+            "};\n"
+            "enum Mode { MODE_A,\n"
+            "  MODE_B };\n"
+            "enum Single {\n"
+            "  SINGLE_MODE\n"
+            "};\n"
+            "void g() {\n"
+            "  EXPECT_EQ(1, count(x));\n"
+            "  f(x, \n"
+            "    MAX_SIZE\n"
+            "    );\n"
+            "}\n"
+            "TEST(Foo, Bar)\n"
+            "{\n"
+            "  RCLCPP_INFO(logger, \"x\");\n"
+            "  CHECK_VALUE(x)\n"
+            "    << \"message\";\n"
+            "}\n"
+            "}  // namespace ns\n"
+            "RCLCPP_COMPONENTS_REGISTER_NODE(ns::Observation)\n"
+            "BENCHMARK_MAIN()\n");
+        QVERIFY(!parsesCleanly(src));
+        const QByteArray out = rewritten(src);
+        QCOMPARE(
+            lines(out),
+            (QList<QByteArray>{
+                "namespace ns {",
+                ";",
+                ";",
+                "struct Result {",
+                "float p;",
+                "friend bool operator<(const Result & a, const Result & b) { return a.p < b.p; }",
+                "};",
+                "struct Aligned {",
+                "float p;",
+                "public:",
+                "};",
+                "class Observation {",
+                "public:",
+                "/* comment */",
+                "Observation() = default;",
+                "int find() const {",
+                "return 1;",
+                "}",
+                "};",
+                "enum Mode { MODE_A,",
+                "MODE_B };",
+                "enum Single {",
+                "SINGLE_MODE",
+                "};",
+                "void g() {",
+                "EXPECT_EQ(1, count(x));",
+                "f(x,",
+                "MAX_SIZE",
+                ");",
+                "}",
+                "TEST(Foo, Bar)",
+                "{",
+                "RCLCPP_INFO(logger, \"x\");",
+                "CHECK_VALUE(x)",
+                "<< \"message\";",
+                "}",
+                "} // namespace ns",
+                "RCLCPP_COMPONENTS_REGISTER_NODE(ns::Observation)"}));
+        QVERIFY(parsesCleanly(out.left(out.indexOf("RCLCPP_COMPONENTS"))));
+    }
+
     // Patterns in string literals, raw strings, character literals, comments and preprocessor
     // lines stay as written.
     void stringsAndCommentsStay()
