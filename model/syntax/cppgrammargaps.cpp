@@ -574,15 +574,23 @@ template <typename Blank> void blankStandaloneMacros(const QByteArray &code, Bla
 
 void blankGrammarGaps(QByteArray *source)
 {
-    const QByteArray code = codeOnly(*source);
-    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
-    const QString text = QString::fromLatin1(code);
+    QByteArray code = codeOnly(*source);
     char *data = source->data();
     auto blank = [&](qsizetype from, qsizetype to) {
         for (qsizetype i = from; i < to; ++i)
             if (data[i] != '\n' && data[i] != '\r')
                 data[i] = ' ';
     };
+    // First, so that the rewrites below see the statement that follows such a macro start
+    // after a `;` or a brace, as it does once the macro is expanded.
+    blankStandaloneMacros(code, [&](qsizetype from, qsizetype to) {
+        blank(from, to);
+        for (qsizetype i = from; i < to; ++i)
+            if (code.at(i) != '\n' && code.at(i) != '\r')
+                code[i] = ' ';
+    });
+    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
+    const QString text = QString::fromLatin1(code);
     auto each = [&](const QRegularExpression &re, auto apply) {
         for (auto it = re.globalMatch(text); it.hasNext();)
             apply(it.next());
@@ -650,7 +658,6 @@ void blankGrammarGaps(QByteArray *source)
     }
     if (code.contains("for") || code.contains("while") || code.contains("if"))
         blankDeclarationBodies(code, text, blank);
-    blankStandaloneMacros(code, blank);
 }
 
 } // namespace rosarch::cppsyntax

@@ -173,9 +173,9 @@ private Q_SLOTS:
         QVERIFY(parsesCleanly(out));
     }
 
-    // A reference initialised with parentheses around a member access gets braces; a
-    // declaration as the unbraced body of a loop loses its declarator. Function declarations
-    // returning a reference stay.
+    // A reference initialised with parentheses around a member access gets braces, also after
+    // a standalone macro; a declaration as the unbraced body of a loop loses its declarator.
+    // Function declarations returning a reference stay.
     void declarationsTheGrammarMisreads()
     {
         const QByteArray src("const Foo & get(const Bar & b);\n"
@@ -183,6 +183,8 @@ private Q_SLOTS:
                              "void f() {\n"
                              "  const rclcpp::Time & newest(records.rbegin()->header.stamp);\n"
                              "  const Pose & p(msg.pose);\n"
+                             "  TRACE_SCOPE(this)\n"
+                             "  const Time & stamp(cloud->header.stamp);\n"
                              "  for (const auto & polygon : polygons)\n"
                              "    const auto result = checker.intersections(polygon);\n"
                              "  while (a == b) auto & x = g();\n"
@@ -190,13 +192,13 @@ private Q_SLOTS:
                              "}\n");
         QVERIFY(!parsesCleanly(src));
         const QByteArray out = rewritten(src);
-        QCOMPARE(
-            lines(out),
-            (QList<QByteArray>{
-                "const Foo & get(const Bar & b);", "const Foo & get(double x = a.b);", "void f() {",
-                "const rclcpp::Time & newest{records.rbegin()->header.stamp};",
-                "const Pose & p{msg.pose};", "for (const auto & polygon : polygons)",
-                "checker.intersections(polygon);", "while (a == b) g();", "if (x) y = 2;", "}"}));
+        QCOMPARE(lines(out),
+                 (QList<QByteArray>{
+                     "const Foo & get(const Bar & b);", "const Foo & get(double x = a.b);",
+                     "void f() {", "const rclcpp::Time & newest{records.rbegin()->header.stamp};",
+                     "const Pose & p{msg.pose};", "const Time & stamp{cloud->header.stamp};",
+                     "for (const auto & polygon : polygons)", "checker.intersections(polygon);",
+                     "while (a == b) g();", "if (x) y = 2;", "}"}));
         QVERIFY(parsesCleanly(out));
     }
 
