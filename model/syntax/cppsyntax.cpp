@@ -2,6 +2,8 @@
 
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace rosarch::cppsyntax {
 
 namespace {
@@ -316,6 +318,8 @@ void blankExportMacros(QByteArray *source)
     static const char *suffixes[] = {"_PUBLIC", "_LOCAL",       "_EXPORT",
                                      "_IMPORT", "_PUBLIC_TYPE", "_API",
                                      "_HIDDEN", "_DLLEXPORT",   "_DLLIMPORT"};
+    // Attribute macros without a visibility suffix: PCL's, and CUDA's function qualifiers.
+    static const char *names[] = {"PCL_EXPORTS", "__device__", "__host__", "__global__"};
     char *data = source->data();
     const qsizetype size = source->size();
     bool lineStart = true;
@@ -361,8 +365,11 @@ void blankExportMacros(QByteArray *source)
             --before;
         const bool value = before >= 0 && (data[before] == '=' || data[before] == '(' ||
                                            data[before] == ',' || data[before] == '?');
-        if (!preprocessor && upper && !value && end - i > 7) {
-            const std::string_view word(data + i, size_t(end - i));
+        const std::string_view word(data + i, size_t(end - i));
+        if (!preprocessor && !value &&
+            std::find(std::begin(names), std::end(names), word) != std::end(names)) {
+            std::fill(data + i, data + end, ' ');
+        } else if (!preprocessor && upper && !value && end - i > 7) {
             for (const char *suffix : suffixes) {
                 const std::string_view sv(suffix);
                 if (word.size() > sv.size() && word.substr(word.size() - sv.size()) == sv) {

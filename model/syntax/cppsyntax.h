@@ -53,9 +53,10 @@ QString lastSegment(const QString &qualified);
 /// anything that is not an interface type is returned simplified as written.
 QString canonicalInterfaceType(const QString &written);
 
-/// Overwrites symbol-visibility macros (FOO_PUBLIC, FOO_EXPORT, ...) outside preprocessor lines
-/// with spaces: the parser cannot expand them and they derail whole class bodies. Offsets,
-/// lines and columns stay the same.
+/// Overwrites symbol-visibility macros (FOO_PUBLIC, FOO_EXPORT, ..., PCL_EXPORTS) and CUDA's
+/// `__device__` / `__host__` / `__global__` outside preprocessor lines with spaces: the parser
+/// cannot expand them and they derail whole class bodies. Offsets, lines and columns stay the
+/// same.
 void blankExportMacros(QByteArray *source);
 
 /// Overwrites the Qt moc keywords the parser cannot read, keeping offsets, lines and columns:
@@ -67,9 +68,16 @@ void blankQtKeywords(QByteArray *source);
 /// the `*` of `new T *[n]` and the `()` of `new T[n]()`, `typename` before a dependent type
 /// constructed in an expression (`x = typename T::Goal();`), `template` after `->` / `.`
 /// without template arguments (`bb->template set(...)`), a braced default argument (`= {}`,
-/// `= {1.0, 2.0}`), which becomes `0`, explicit instantiations (`template class X<int>;`), and
-/// the arguments of gtest's EXPECT_THROW(declaration, e) family and of Qt's SIGNAL() / SLOT().
-/// Strings, comments and preprocessor lines stay as written. None of it names a port.
+/// `= {1.0, 2.0}`), which becomes `0`, explicit instantiations (`template class X<int>;`),
+/// the arguments of gtest's EXPECT_THROW(declaration, e) family and of Qt's SIGNAL() / SLOT(),
+/// all but the last operand of `decltype(a, b)`, the symbol of an operator function called by
+/// name (`x.operator()(a)` becomes `x.operator__(a)`), the class of a pointer-to-member type
+/// (`void (C::*)(int)`) and the `*` of `->*`, the `...` of `using Ts::operator()...;`, a
+/// built-in type in `typeid(int)`, the parentheses of a reference initialised with a member
+/// (`const T & x(a.b);` becomes `{a.b}`), the declarator of a declaration that is the unbraced
+/// body of `for` / `while` / `if`, and a macro invocation standing alone without `;`
+/// (`EIGEN_MAKE_ALIGNED_OPERATOR_NEW`, `ROBIN_HOOD_TRACE(this)`). Strings, comments and
+/// preprocessor lines stay as written. None of it names a port.
 void blankGrammarGaps(QByteArray *source);
 
 /// True for header extensions (.h .hh .hpp .hxx .inl).

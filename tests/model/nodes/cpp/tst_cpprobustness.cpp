@@ -251,6 +251,19 @@ private Q_SLOTS:
         QVERIFY(src.startsWith("#define FOO_PUBLIC")); // preprocessor lines stay
         QVERIFY(src.contains(
             "class            Foo {            void f(const char *s = \"BAR_PUBLIC\"); };"));
+        // PCL's export macro and CUDA's function qualifiers have no visibility suffix.
+        QByteArray attributes("template <>\n"
+                              "class PCL_EXPORTS PassThrough<pcl::PCLPointCloud2> : public F {};\n"
+                              "void __device__ setCellValue(float wx);\n"
+                              "__global__ void kernel(int * __restrict__ a);\n");
+        cppsyntax::blankExportMacros(&attributes);
+        QCOMPARE(attributes, QByteArray("template <>\n"
+                                        "class             PassThrough<pcl::PCLPointCloud2> : "
+                                        "public F {};\n"
+                                        "void            setCellValue(float wx);\n"
+                                        "           void kernel(int * __restrict__ a);\n"));
+        QVERIFY(!ts_node_has_error(
+            SyntaxTree::parse(SyntaxTree::Grammar::Cpp, attributes, QString()).root()));
         // Values are enumerators or constants, whatever their suffix.
         QByteArray values("auto d = RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL;\n"
                           "EXPECT_EQ(q.durability, RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL);\n");
