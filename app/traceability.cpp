@@ -81,6 +81,9 @@ void Traceability::onNodeSelected(const QModelIndex &sourceIndex)
     const Evidence evidence = m_nodeModel->evidence(sourceIndex);
     if (evidence.isValid())
         showEvidence(evidence);
+    const QString portId = sourceIndex.data(AtomicNodeModel::PortIdRole).toString();
+    if (!portId.isEmpty())
+        Q_EMIT portSelected(sourceIndex.data(AtomicNodeModel::NodeIdRole).toString(), portId);
 }
 
 void Traceability::onLaunchItemSelected(const QModelIndex &sourceIndex)

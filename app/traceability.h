@@ -42,6 +42,9 @@ public:
 Q_SIGNALS:
     /// The source view could not show `evidence` (the file is missing or unreadable).
     void evidenceUnavailable(const rosarch::Evidence &evidence);
+    /// The user chose a port of a class in the atomic tree (not a row that followed another
+    /// view).
+    void portSelected(const QString &nodeId, const QString &portId);
 
 private:
     void onNodeSelected(const QModelIndex &sourceIndex);

@@ -395,6 +395,7 @@ void DiagramPanel::onElementClicked(const QString &key)
         if (DiagramBuilder::port(*c, k.id, k.portId))
             Q_EMIT portActivated(c->part(k.id)->instanceId, k.portId);
     }
+    Q_EMIT elementActivated(key);
     const Evidence evidence = DiagramBuilder::evidence(*c, key);
     if (evidence.isValid())
         Q_EMIT evidenceActivated(evidence);

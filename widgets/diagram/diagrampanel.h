@@ -89,6 +89,9 @@ Q_SIGNALS:
     /// Where the clicked element comes from: a part's launch line, a port's (or a
     /// connection's port's) creation in code.
     void evidenceActivated(const rosarch::Evidence &evidence);
+    /// Any element of the current composite was clicked (after partActivated and
+    /// portActivated, before evidenceActivated): its key.
+    void elementActivated(const QString &key);
     void compositeShown(const QString &instanceId);
     /// A layout finished and the scene shows it (ok), or the message says why not.
     void layoutFinished(bool ok);
