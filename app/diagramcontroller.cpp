@@ -224,7 +224,20 @@ void DiagramController::showTalkers(const QString &subject, const QString &scope
                                     const QList<TalkerGroup> &groups)
 {
     const Composite *c = m_panel->architecture().composite(scopeId);
-    m_talkers->showTalkers(subject, c ? c->stem : scopeId, groups);
+    // A name on the composite's boundary goes on outside it: say so, rather than suggest
+    // that the talkers listed are all there are.
+    QStringList leaving;
+    for (const TalkerGroup &g : groups)
+        for (const BoundaryPort &b : c ? c->boundary : QList<BoundaryPort>())
+            if (b.name == g.name && portFamilyName(b.kind) == g.family && !leaving.contains(g.name))
+                leaving << g.name;
+    const QString note =
+        leaving.isEmpty() || !c || c->parentId.isEmpty()
+            ? QString()
+            : tr("%1 leaves %2 through its boundary: the launch files that include %2 may "
+                 "have more talkers.")
+                  .arg(leaving.join(QStringLiteral(", ")), c->stem);
+    m_talkers->showTalkers(subject, c ? c->stem : scopeId, groups, note);
     Q_EMIT talkersShown();
 }
 

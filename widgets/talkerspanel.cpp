@@ -118,21 +118,22 @@ QString TalkersPanel::summary() const
 }
 
 void TalkersPanel::showTalkers(const QString &subject, const QString &scope,
-                               const QList<TalkerGroup> &groups)
+                               const QList<TalkerGroup> &groups, const QString &note)
 {
     const QScopedValueRollback guard(m_filling, true);
     m_tree->clear();
     int total = 0;
     for (const TalkerGroup &g : groups) {
         auto *head = new QTreeWidgetItem(m_tree);
-        head->setText(0, tr("%1 %2").arg(familyLabel(g.family), g.name));
-        head->setText(1, counts(g));
-        head->setText(3, g.type);
-        head->setToolTip(0, g.type.isEmpty() ? g.name : tr("%1\n%2").arg(g.name, g.type));
+        const QString what = tr("%1 %2").arg(familyLabel(g.family), g.name);
+        head->setText(0, g.type.isEmpty() ? tr("%1 · %2").arg(what, counts(g))
+                                          : tr("%1 · %2 · %3").arg(what, g.type, counts(g)));
+        head->setToolTip(0, head->text(0));
         head->setFlags(Qt::ItemIsEnabled);
         QFont bold = head->font(0);
         bold.setBold(true);
         head->setFont(0, bold);
+        head->setFirstColumnSpanned(true);
         for (const Talker &t : g.talkers) {
             auto *row = new QTreeWidgetItem(head);
             row->setIcon(0, Icons::port(t.port.kind));
@@ -154,12 +155,14 @@ void TalkersPanel::showTalkers(const QString &subject, const QString &scope,
         }
         head->setExpanded(true);
     }
+    QString text;
     if (groups.isEmpty())
-        m_summary->setText(tr("%1 talks on nothing in %2.").arg(subject, scope));
+        text = tr("%1 talks on nothing in %2.").arg(subject, scope);
     else if (total == 0)
-        m_summary->setText(tr("No node in %2 talks on %1.").arg(subject, scope));
+        text = tr("No node in %2 talks on %1.").arg(subject, scope);
     else
-        m_summary->setText(tr("Talkers on %1 in %2").arg(subject, scope));
+        text = tr("Talkers on %1 in %2").arg(subject, scope);
+    m_summary->setText(note.isEmpty() ? text : tr("%1\n%2").arg(text, note));
 }
 
 void TalkersPanel::onCurrentItemChanged(QTreeWidgetItem *current)

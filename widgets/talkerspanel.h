@@ -20,9 +20,9 @@ public:
     explicit TalkersPanel(QWidget *parent = nullptr);
 
     /// Shows `groups` for `subject` ("topic /scan", "port p1 of Camera") inside `scope` (the
-    /// composite's launch file stem).
-    void showTalkers(const QString &subject, const QString &scope,
-                     const QList<TalkerGroup> &groups);
+    /// composite's launch file stem), with a `note` under the summary.
+    void showTalkers(const QString &subject, const QString &scope, const QList<TalkerGroup> &groups,
+                     const QString &note = {});
     /// A message instead of talkers (nothing clicked yet, or nothing found).
     void setMessage(const QString &message);
 
