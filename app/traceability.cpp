@@ -28,6 +28,7 @@ void Traceability::selectNode(const QString &nodeId, const QString &portId)
 {
     const QModelIndex index =
         portId.isEmpty() ? m_nodeModel->nodeIndex(nodeId) : m_nodeModel->portIndex(nodeId, portId);
+    const QScopedValueRollback guard(m_selecting, true);
     if (index.isValid())
         m_nodePanel->selectSourceIndex(index);
 }
@@ -82,7 +83,7 @@ void Traceability::onNodeSelected(const QModelIndex &sourceIndex)
     if (evidence.isValid())
         showEvidence(evidence);
     const QString portId = sourceIndex.data(AtomicNodeModel::PortIdRole).toString();
-    if (!portId.isEmpty())
+    if (!portId.isEmpty() && !m_selecting)
         Q_EMIT portSelected(sourceIndex.data(AtomicNodeModel::NodeIdRole).toString(), portId);
 }
 
