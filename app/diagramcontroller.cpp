@@ -10,6 +10,7 @@
 #include "recovereddiagrams.h"
 #include "recovery.h"
 #include "subsystemgrouping.h"
+#include "talkerspanel.h"
 #include "traceability.h"
 #include "umlmodel.h"
 
@@ -21,15 +22,16 @@
 #include <QFileInfo>
 #include <QFontDatabase>
 #include <QPlainTextEdit>
+#include <QScopedValueRollback>
 #include <QVBoxLayout>
 
 namespace rosarch {
 
 DiagramController::DiagramController(Document *document, DiagramPanel *panel,
                                      LaunchTreePanel *launchPanel, Traceability *traceability,
-                                     LogView *log, QWidget *window)
+                                     TalkersPanel *talkers, LogView *log, QWidget *window)
     : QObject(window), m_document(document), m_panel(panel), m_launchPanel(launchPanel),
-      m_traceability(traceability), m_log(log), m_window(window)
+      m_traceability(traceability), m_talkers(talkers), m_log(log), m_window(window)
 {
     m_exportSvg = new QAction(tr("Export Diagram as &SVG…"), this);
     m_exportSvg->setStatusTip(tr("Write the composed diagram shown as an SVG drawing"));
@@ -63,7 +65,11 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
             });
     connect(m_panel, &DiagramPanel::partActivated, this, &DiagramController::onPartActivated);
     connect(m_panel, &DiagramPanel::portActivated, this, &DiagramController::onPortActivated);
+    connect(m_panel, &DiagramPanel::elementActivated, this, &DiagramController::onElementActivated);
     connect(m_panel, &DiagramPanel::evidenceActivated, m_traceability, &Traceability::showEvidence);
+    connect(m_traceability, &Traceability::portSelected, this,
+            &DiagramController::onClassPortSelected);
+    connect(m_talkers, &TalkersPanel::talkerSelected, this, &DiagramController::onTalkerSelected);
     connect(m_panel, &DiagramPanel::compositeShown, this, &DiagramController::applyMarks);
     connect(m_panel, &DiagramPanel::layoutFinished, this, [this](bool ok) {
         if (ok && !m_pendingInstance.isEmpty())
@@ -103,6 +109,8 @@ void DiagramController::previewGrouping(const QString &name, const QStringList &
 void DiagramController::onModelReset()
 {
     m_preview.clear();
+    m_talkers->setMessage(tr("Click a topic, service or action in the composed diagram, or a "
+                             "port in the node list, to see who talks on it."));
     showArchitecture();
     if (!m_referencePath.isEmpty()) { // the model changed: score it again
         QString error;
@@ -147,6 +155,111 @@ void DiagramController::onPortActivated(const QString &instanceId, const QString
         n && !n->classId.isEmpty())
         m_traceability->selectNode(n->classId, portId);
     m_fromDiagram = false;
+}
+
+void DiagramController::onElementActivated(const QString &key)
+{
+    const Architecture &architecture = m_panel->architecture();
+    const QString scope = m_panel->currentComposite();
+    const Composite *c = architecture.composite(scope);
+    if (!c)
+        return;
+    const DiagramKey k = DiagramKey::parse(key);
+    switch (k.kind) {
+    case DiagramKey::Kind::Channel:
+        if (const Channel *channel = c->channel(k.id)) {
+            const QString family = channelKindName(channel->kind);
+            showTalkers(tr("%1 %2").arg(family, channel->name), scope,
+                        {TalkerSearch::find(architecture, scope, family, channel->name)});
+        }
+        break;
+    case DiagramKey::Kind::Boundary:
+        if (const BoundaryPort *b = c->boundaryPort(k.id)) {
+            const QString family = portFamilyName(b->kind);
+            showTalkers(tr("%1 %2").arg(family, b->name), scope,
+                        {TalkerSearch::find(architecture, scope, family, b->name)});
+        }
+        break;
+    case DiagramKey::Kind::Port:
+    case DiagramKey::Kind::Connection: {
+        QString partId = k.id;
+        QString portId = k.portId;
+        if (k.kind == DiagramKey::Kind::Connection) {
+            if (k.index() < 0 || k.index() >= c->connections.size())
+                return;
+            partId = c->connections.at(k.index()).partId;
+            portId = c->connections.at(k.index()).portId;
+        }
+        const TalkerGroup group = TalkerSearch::ofPartPort(architecture, scope, partId, portId);
+        if (!group.name.isEmpty())
+            showTalkers(tr("%1 %2").arg(group.family, group.name), scope, {group});
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+void DiagramController::onClassPortSelected(const QString &classId, const QString &portId)
+{
+    if (m_fromDiagram || m_fromTalkers)
+        return; // the diagram click or the talker chosen says more precisely what to show
+    const Architecture &architecture = m_panel->architecture();
+    const QString scope =
+        TalkerSearch::scopeOfClass(architecture, m_panel->currentComposite(), classId);
+    const AtomicNode *node = m_document->atomicNodes().node(classId);
+    const QString className = node ? node->className : classId;
+    const QString subject = tr("port %1 of %2").arg(portId, className);
+    if (scope.isEmpty()) {
+        m_talkers->setMessage(
+            tr("No launch file starts %1, so its port %2 talks on nothing in the composed "
+               "architecture.")
+                .arg(className, portId));
+        return;
+    }
+    showTalkers(subject, scope, TalkerSearch::ofClassPort(architecture, scope, classId, portId));
+}
+
+void DiagramController::showTalkers(const QString &subject, const QString &scopeId,
+                                    const QList<TalkerGroup> &groups)
+{
+    const Composite *c = m_panel->architecture().composite(scopeId);
+    // A name on the composite's boundary goes on outside it: say so, rather than suggest
+    // that the talkers listed are all there are.
+    QStringList leaving;
+    for (const TalkerGroup &g : groups)
+        for (const BoundaryPort &b : c ? c->boundary : QList<BoundaryPort>())
+            if (b.name == g.name && portFamilyName(b.kind) == g.family && !leaving.contains(g.name))
+                leaving << g.name;
+    const QString note =
+        leaving.isEmpty() || !c || c->parentId.isEmpty()
+            ? QString()
+            : tr("%1 leaves %2 through its boundary: the launch files that include %2 may "
+                 "have more talkers.")
+                  .arg(leaving.join(QStringLiteral(", ")), c->stem);
+    m_talkers->showTalkers(subject, c ? c->stem : scopeId, groups, note);
+    Q_EMIT talkersShown();
+}
+
+void DiagramController::onTalkerSelected(const QString &instanceId, const QString &portId)
+{
+    // The instance in the launch tree (the node list follows with its class) and in the
+    // diagram, then its port in the node list and the port's line in code; the talkers stay.
+    const QScopedValueRollback guard(m_fromTalkers, true);
+    m_traceability->selectLaunchItem(instanceId);
+    onLaunchItemSelected(instanceId); // also when the launch tree was already there
+    const NodeInstance *n = m_document->launchDependencies().node(instanceId);
+    if (!n || n->classId.isEmpty())
+        return;
+    m_traceability->selectNode(n->classId, portId);
+    for (const Composite &c : m_panel->architecture().composites)
+        for (const RosNodePart &part : c.parts)
+            if (part.instanceId == instanceId)
+                if (const PartPort *port = DiagramBuilder::port(c, part.id, portId);
+                    port && port->evidence.isValid()) {
+                    m_traceability->showEvidence(port->evidence);
+                    return;
+                }
 }
 
 void DiagramController::applyMarks()

@@ -3,6 +3,7 @@
 #include "composition.h"
 #include "evaluation.h"
 #include "subsystemgroup.h"
+#include "talkersearch.h"
 
 #include <QObject>
 #include <QPointer>
@@ -16,18 +17,21 @@ class DiagramPanel;
 class Document;
 class LaunchTreePanel;
 class LogView;
+class TalkersPanel;
 class Traceability;
 
 /// Wires the composed-diagram panel into the window: the Document's architecture into the
 /// panel, launch tree selection into the shown composite and part, clicks in the diagram
-/// back to the launch tree and the source, the diagram exports, and the comparison with a
-/// reference PlantUML model (extra elements marked, missing ones listed).
+/// back to the launch tree and the source, the talkers of a clicked topic, service, action
+/// or port (and a talker back to its instance everywhere), the diagram exports, and the
+/// comparison with a reference PlantUML model (extra elements marked, missing ones listed).
 class DiagramController : public QObject
 {
     Q_OBJECT
 public:
     DiagramController(Document *document, DiagramPanel *panel, LaunchTreePanel *launchPanel,
-                      Traceability *traceability, LogView *log, QWidget *window);
+                      Traceability *traceability, TalkersPanel *talkers, LogView *log,
+                      QWidget *window);
 
     QAction *exportSvgAction() const { return m_exportSvg; }
     QAction *exportPngAction() const { return m_exportPng; }
@@ -47,12 +51,19 @@ public:
 
 Q_SIGNALS:
     void statusMessage(const QString &text, int timeout);
+    /// The talkers panel shows the talkers of what the user just clicked.
+    void talkersShown();
 
 private:
     void onModelReset();
     void onLaunchItemSelected(const QString &instanceId);
     void onPartActivated(const QString &instanceId);
     void onPortActivated(const QString &instanceId, const QString &portId);
+    void onElementActivated(const QString &key);
+    void onClassPortSelected(const QString &classId, const QString &portId);
+    void onTalkerSelected(const QString &instanceId, const QString &portId);
+    void showTalkers(const QString &subject, const QString &scopeId,
+                     const QList<TalkerGroup> &groups);
     void showArchitecture();
     void applyMarks();
     void exportDialog(const QString &suffix);
@@ -63,10 +74,12 @@ private:
     DiagramPanel *m_panel;
     LaunchTreePanel *m_launchPanel;
     Traceability *m_traceability;
+    TalkersPanel *m_talkers;
     LogView *m_log;
     QPointer<QWidget> m_window;
     QString m_pendingInstance;  ///< select once the layout of its composite is done
     bool m_fromDiagram = false; ///< a diagram click is being forwarded to the launch tree
+    bool m_fromTalkers = false; ///< a talker is being selected in the other views
     Evaluation m_evaluation;
     QString m_referencePath;
     QList<SubsystemGroup> m_preview; ///< a pending grouping drawn as if accepted

@@ -23,6 +23,7 @@
 #include "suggestioncontroller.h"
 #include "suggestionmodel.h"
 #include "suggestionpanel.h"
+#include "talkerspanel.h"
 #include "traceability.h"
 
 #include <Qsci/qsciscintilla.h>
@@ -134,6 +135,8 @@ void MainWindow::createPanels()
     m_changesView = new ArchitectureDiffView(this);
     m_changesDock =
         makeDock(m_changesView, tr("Architecture changes"), QStringLiteral("changesDock"));
+    m_talkersPanel = new TalkersPanel(this);
+    m_talkersDock = makeDock(m_talkersPanel, tr("Talkers"), QStringLiteral("talkersDock"));
     resetLayout();
 
     m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
@@ -150,8 +153,12 @@ void MainWindow::createPanels()
     });
     connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
     m_diagrams = new DiagramController(m_document, m_diagramPanel, m_launchPanel, m_traceability,
-                                       m_logView, this);
+                                       m_talkersPanel, m_logView, this);
     connect(m_diagrams, &DiagramController::statusMessage, statusBar(), &QStatusBar::showMessage);
+    connect(m_diagrams, &DiagramController::talkersShown, this, [this] {
+        m_talkersDock->show();
+        m_talkersDock->raise();
+    });
 
     m_suggestions = new SuggestionController(m_document, m_suggestionPanel, this);
     m_suggestions->setPreviews({[this](const Evidence &e) { m_traceability->showEvidence(e); },
@@ -209,14 +216,17 @@ void MainWindow::resetLayout()
     splitDockWidget(m_diagramDock, m_sourceDock, Qt::Horizontal);
     for (QDockWidget *dock : docks)
         dock->show();
-    // Architecture changes share the log's place and appear when a comparison runs.
-    if (m_changesDock) {
-        removeDockWidget(m_changesDock);
-        m_changesDock->setFloating(false);
-        tabifyDockWidget(m_logDock, m_changesDock);
-        m_changesDock->hide();
-        m_logDock->raise();
+    // Architecture changes and talkers share the log's place and appear when a comparison
+    // runs or a topic, service, action or port is clicked.
+    for (QDockWidget *dock : {m_changesDock, m_talkersDock}) {
+        if (!dock)
+            continue;
+        removeDockWidget(dock);
+        dock->setFloating(false);
+        tabifyDockWidget(m_logDock, dock);
+        dock->hide();
     }
+    m_logDock->raise();
     if (m_toolBar)
         m_toolBar->show();
     const int w = std::max(width(), 800);

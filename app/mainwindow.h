@@ -32,6 +32,7 @@ class StageRunner;
 class SuggestionController;
 class SuggestionModel;
 class SuggestionPanel;
+class TalkersPanel;
 class Traceability;
 
 /// The main window: wires the Document, the stage runner and the panels (atomic nodes,
@@ -80,6 +81,8 @@ public:
     CompareController *compare() const { return m_compare; }
     RenderController *render() const { return m_render; }
     ArchitectureDiffView *changesView() const { return m_changesView; }
+    TalkersPanel *talkersPanel() const { return m_talkersPanel; }
+    QDockWidget *talkersDock() const { return m_talkersDock; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -132,6 +135,8 @@ private:
     QDockWidget *m_logDock = nullptr;
     QDockWidget *m_changesDock = nullptr; ///< architecture changes; shown by a comparison
     ArchitectureDiffView *m_changesView = nullptr;
+    QDockWidget *m_talkersDock = nullptr; ///< who talks on a name; shown by a click on one
+    TalkersPanel *m_talkersPanel = nullptr;
     CompareController *m_compare = nullptr;
     RenderController *m_render = nullptr;
     QToolBar *m_toolBar = nullptr;

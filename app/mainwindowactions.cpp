@@ -181,6 +181,7 @@ void MainWindow::createMenus()
          {m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock, m_suggestionDock, m_logDock})
         view->addAction(dock->toggleViewAction());
     view->addAction(m_changesDock->toggleViewAction());
+    view->addAction(m_talkersDock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
     view->addSeparator();

@@ -28,6 +28,7 @@ void Traceability::selectNode(const QString &nodeId, const QString &portId)
 {
     const QModelIndex index =
         portId.isEmpty() ? m_nodeModel->nodeIndex(nodeId) : m_nodeModel->portIndex(nodeId, portId);
+    const QScopedValueRollback guard(m_selecting, true);
     if (index.isValid())
         m_nodePanel->selectSourceIndex(index);
 }
@@ -81,6 +82,9 @@ void Traceability::onNodeSelected(const QModelIndex &sourceIndex)
     const Evidence evidence = m_nodeModel->evidence(sourceIndex);
     if (evidence.isValid())
         showEvidence(evidence);
+    const QString portId = sourceIndex.data(AtomicNodeModel::PortIdRole).toString();
+    if (!portId.isEmpty() && !m_selecting)
+        Q_EMIT portSelected(sourceIndex.data(AtomicNodeModel::NodeIdRole).toString(), portId);
 }
 
 void Traceability::onLaunchItemSelected(const QModelIndex &sourceIndex)

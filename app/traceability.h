@@ -42,6 +42,9 @@ public:
 Q_SIGNALS:
     /// The source view could not show `evidence` (the file is missing or unreadable).
     void evidenceUnavailable(const rosarch::Evidence &evidence);
+    /// The user chose a port of a class in the atomic tree (not a row that followed another
+    /// view or that selectNode() chose).
+    void portSelected(const QString &nodeId, const QString &portId);
 
 private:
     void onNodeSelected(const QModelIndex &sourceIndex);
@@ -55,7 +58,8 @@ private:
     LaunchTreeModel *m_launchModel;
     LaunchTreePanel *m_launchPanel;
     SourceView *m_sourceView;
-    bool m_syncing = false; ///< a view follows another; do not echo back
+    bool m_syncing = false;   ///< a view follows another; do not echo back
+    bool m_selecting = false; ///< selectNode() chose the row, not the user
 };
 
 } // namespace rosarch

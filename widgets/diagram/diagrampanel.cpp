@@ -359,6 +359,15 @@ void DiagramPanel::selectKey(const QString &key)
     m_view->centerOn(item);
 }
 
+QString DiagramPanel::drawnKey(const RosNodePart &part) const
+{
+    // Inside a collapsed namespace, the namespace's box stands for the part.
+    for (const QString &ns : DiagramBuilder::namespaceChain(part.nameSpace))
+        if (isNamespaceCollapsed(ns))
+            return DiagramBuilder::namespaceKey(ns);
+    return DiagramBuilder::partKey(part.id);
+}
+
 bool DiagramPanel::selectInstance(const QString &instanceId)
 {
     const Composite *c = composite();
@@ -367,13 +376,7 @@ bool DiagramPanel::selectInstance(const QString &instanceId)
     for (const RosNodePart &part : c->parts) {
         if (part.instanceId != instanceId)
             continue;
-        QString key = DiagramBuilder::partKey(part.id);
-        // Inside a collapsed namespace, the namespace's box stands for the part.
-        for (const QString &ns : DiagramBuilder::namespaceChain(part.nameSpace))
-            if (isNamespaceCollapsed(ns)) {
-                key = DiagramBuilder::namespaceKey(ns);
-                break;
-            }
+        const QString key = drawnKey(part);
         if (!m_scene->item(key))
             return false;
         selectKey(key);
@@ -394,7 +397,16 @@ void DiagramPanel::onElementClicked(const QString &key)
     } else if (k.kind == DiagramKey::Kind::Port) {
         if (DiagramBuilder::port(*c, k.id, k.portId))
             Q_EMIT portActivated(c->part(k.id)->instanceId, k.portId);
+    } else if (k.kind == DiagramKey::Kind::Connection) {
+        // An edge stands for its part's port: the part is selected with it, everywhere.
+        const int i = k.index();
+        if (i >= 0 && i < c->connections.size())
+            if (const RosNodePart *part = c->part(c->connections.at(i).partId)) {
+                m_scene->selectAlso(drawnKey(*part));
+                Q_EMIT partActivated(part->instanceId);
+            }
     }
+    Q_EMIT elementActivated(key);
     const Evidence evidence = DiagramBuilder::evidence(*c, key);
     if (evidence.isValid())
         Q_EMIT evidenceActivated(evidence);

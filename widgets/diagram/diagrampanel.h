@@ -83,12 +83,16 @@ public Q_SLOTS:
     void focusSearch();
 
 Q_SIGNALS:
-    /// A part was clicked: its node or launch-file instance id.
+    /// A part, or a connection at its part's end, was clicked: its node or launch-file
+    /// instance id.
     void partActivated(const QString &instanceId);
     void portActivated(const QString &instanceId, const QString &portId);
     /// Where the clicked element comes from: a part's launch line, a port's (or a
     /// connection's port's) creation in code.
     void evidenceActivated(const rosarch::Evidence &evidence);
+    /// Any element of the current composite was clicked (after partActivated and
+    /// portActivated, before evidenceActivated): its key.
+    void elementActivated(const QString &key);
     void compositeShown(const QString &instanceId);
     /// A layout finished and the scene shows it (ok), or the message says why not.
     void layoutFinished(bool ok);
@@ -105,6 +109,8 @@ private:
     void updateBreadcrumbs();
     void updateSearch(bool centre);
     void selectKey(const QString &key);
+    /// The key of what draws `part`: its box, or the collapsed namespace around it.
+    QString drawnKey(const RosNodePart &part) const;
     void onElementClicked(const QString &key);
     void onElementDoubleClicked(const QString &key);
     void onContextMenu(const QString &key, const QPoint &screenPos);

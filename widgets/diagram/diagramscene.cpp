@@ -142,14 +142,37 @@ QString DiagramScene::keyAt(const QPointF &scenePos) const
     return {};
 }
 
+void DiagramScene::selectAlso(const QString &key)
+{
+    if (DiagramItem *d = m_items.value(key)) {
+        d->setSelected(true);
+        if (m_pressed)
+            m_alsoSelected << key;
+    }
+}
+
 void DiagramScene::mousePressEvent(QGraphicsSceneMouseEvent *event)
 {
     QGraphicsScene::mousePressEvent(event);
     if (event->button() != Qt::LeftButton)
         return;
+    m_pressed = true;
+    m_alsoSelected.clear();
     const QString key = keyAt(event->scenePos());
     if (!key.isEmpty())
         Q_EMIT elementClicked(key);
+}
+
+void DiagramScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
+{
+    QGraphicsScene::mouseReleaseEvent(event);
+    if (event->button() != Qt::LeftButton)
+        return;
+    m_pressed = false;
+    for (const QString &key : std::as_const(m_alsoSelected))
+        if (DiagramItem *d = m_items.value(key))
+            d->setSelected(true);
+    m_alsoSelected.clear();
 }
 
 void DiagramScene::mouseDoubleClickEvent(QGraphicsSceneMouseEvent *event)

@@ -43,6 +43,10 @@ public:
     void setToolTips(const QHash<QString, QString> &toolTips) { m_toolTips = toolTips; }
     QString toolTip(const QString &key) const { return m_toolTips.value(key); }
 
+    /// Selects an element besides the current selection, and keeps it selected when the click
+    /// in progress (which selects only the clicked item on release) ends.
+    void selectAlso(const QString &key);
+
     /// The key of the element under a scene position ("" for none).
     QString keyAt(const QPointF &scenePos) const;
 
@@ -57,6 +61,7 @@ Q_SIGNALS:
 
 protected:
     void mousePressEvent(QGraphicsSceneMouseEvent *event) override;
+    void mouseReleaseEvent(QGraphicsSceneMouseEvent *event) override;
     void mouseDoubleClickEvent(QGraphicsSceneMouseEvent *event) override;
     void contextMenuEvent(QGraphicsSceneContextMenuEvent *event) override;
     void helpEvent(QGraphicsSceneHelpEvent *event) override;
@@ -68,6 +73,8 @@ private:
     QHash<QString, DiagramItem *> m_items;
     QHash<QString, QString> m_toolTips;
     QRectF m_frame;
+    bool m_pressed = false;
+    QStringList m_alsoSelected; ///< selected by selectAlso during the click in progress
 };
 
 } // namespace rosarch

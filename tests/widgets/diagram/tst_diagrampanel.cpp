@@ -310,7 +310,13 @@ void TestDiagramPanel::clicksCarryIds()
     const Evidence e = evidence.last().first().value<Evidence>();
     QCOMPARE(e.file, QStringLiteral("src/demo/demo/talker.py"));
     QCOMPARE(e.line, 11); // the publisher p1
-    QCOMPARE(parts.size(), 1);
+    // The edge stands for its part's port: the part is activated (the other views follow it)
+    // and selected with the edge once the click ends.
+    QCOMPARE(parts.size(), 2);
+    QCOMPARE(parts.last().first().toString(), QStringLiteral("n1"));
+    QVERIFY(edge->isSelected());
+    QVERIFY(talker->isSelected());
+    QCOMPARE(panel.scene()->selectedItems().size(), 2);
 }
 
 void TestDiagramPanel::selectInstanceCentresThePart()
