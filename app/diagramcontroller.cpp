@@ -56,8 +56,8 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     connect(m_document, &Document::changed, this, [this](const DocumentChange &change) {
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             onModelReset();
-        else if (change.has(DocumentChange::Decisions))
-            showArchitecture(); // accepted groupings and names change what is drawn
+        else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections))
+            showArchitecture(); // accepted decisions and corrections change what is drawn
     });
     connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) {

@@ -1,4 +1,5 @@
 #include "document.h"
+#include "correctioncommand.h"
 #include "decidesuggestioncommand.h"
 #include "decisionstore.h"
 #include "project.h"
@@ -40,6 +41,7 @@ void Document::setRecovery(Recovery recovery)
         change.parts |= DocumentChange::Suggestions;
     Q_EMIT aboutToChange(change);
     m_corrected.reset();
+    m_keys.reset();
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
     m_launch = std::move(recovery.launch);
@@ -69,6 +71,7 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     Q_EMIT aboutToChange(change);
     m_corrected.reset();
     const QList<SuggestionDecision> keyed = keyedDecisions(); // launch ids may change
+    m_keys.reset();
     m_launch = std::move(launch);
     m_architecture = std::move(architecture);
     bindDecisions(keyed);
@@ -268,6 +271,100 @@ Project Document::project() const
     std::sort(p.decisions.begin(), p.decisions.end(),
               [](const auto &a, const auto &b) { return a.key() < b.key(); });
     return p;
+}
+
+QString Document::keyOf(const QString &id) const
+{
+    if (!m_keys)
+        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
+    return m_keys->keyOf(id);
+}
+
+QString Document::author()
+{
+    const QString configured = qEnvironmentVariable("ROSARCH_AUTHOR");
+    if (!configured.isEmpty())
+        return configured;
+    const QString user = qEnvironmentVariable("USER", qEnvironmentVariable("USERNAME"));
+    return user.isEmpty() ? QStringLiteral("unknown") : user;
+}
+
+bool Document::prepare(Correction *correction, int offset) const
+{
+    if (correction->target.isEmpty() || StableKeys::family(correction->target).isEmpty())
+        return false;
+    if (correction->id.isEmpty()) {
+        Project p;
+        p.corrections = m_project.corrections;
+        QString id = p.nextCorrectionId();
+        id = QStringLiteral("c%1").arg(id.mid(1).toInt() + offset);
+        correction->id = id;
+    }
+    if (correction->author.isEmpty())
+        correction->author = author();
+    if (!correction->time.isValid())
+        correction->time = QDateTime::currentDateTimeUtc();
+    correction->time = correction->time.toUTC();
+    correction->time.setTime(QTime(correction->time.time().hour(), correction->time.time().minute(),
+                                   correction->time.time().second())); // ISO 8601 seconds
+    return true;
+}
+
+QString Document::addCorrection(Correction correction)
+{
+    if (!prepare(&correction, 0))
+        return {};
+    const QString id = correction.id;
+    m_undoStack.push(new CorrectionCommand(this, CorrectionCommand::Action::Add, correction,
+                                           int(m_project.corrections.size())));
+    return id;
+}
+
+QStringList Document::addCorrections(const QList<Correction> &corrections, const QString &text)
+{
+    QStringList ids;
+    auto *macro = new QUndoCommand(text);
+    int index = int(m_project.corrections.size());
+    for (Correction c : corrections) {
+        if (!prepare(&c, int(ids.size())))
+            continue;
+        ids << c.id;
+        new CorrectionCommand(this, CorrectionCommand::Action::Add, c, index++, macro);
+    }
+    if (ids.isEmpty()) {
+        delete macro;
+        return ids;
+    }
+    m_undoStack.push(macro);
+    return ids;
+}
+
+bool Document::removeCorrection(const QString &id)
+{
+    for (int i = 0; i < m_project.corrections.size(); ++i)
+        if (m_project.corrections.at(i).id == id) {
+            m_undoStack.push(new CorrectionCommand(this, CorrectionCommand::Action::Remove,
+                                                   m_project.corrections.at(i), i));
+            return true;
+        }
+    return false;
+}
+
+void Document::insertCorrection(int index, const Correction &correction)
+{
+    m_project.corrections.insert(std::clamp(index, 0, int(m_project.corrections.size())),
+                                 correction);
+    m_corrected.reset();
+    markDecisionsChanged();
+    emitChange(DocumentChange::Corrections, correction.id);
+}
+
+void Document::takeCorrection(const QString &id)
+{
+    m_project.corrections.removeIf([&](const Correction &c) { return c.id == id; });
+    m_corrected.reset();
+    markDecisionsChanged();
+    emitChange(DocumentChange::Corrections, id);
 }
 
 QString Document::decisionsPath() const

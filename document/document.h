@@ -102,6 +102,27 @@ public:
     /// decisions do not postpone it, so a crash loses at most this much.
     void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
 
+    // Corrections (issue 12, blueprint §5): a person's edits of the model, kept in the project
+    // by stable key and applied by CorrectedModel; accepted() shows them.
+
+    /// The corrections of the project, in the order they were made.
+    const QList<Correction> &corrections() const { return m_project.corrections; }
+    /// The correction with `id`, or null.
+    const Correction *correction(const QString &id) const { return m_project.correction(id); }
+    /// Pushes an undoable correction. Its id, author and time are filled in when empty; returns
+    /// the id, or "" when the target is not an element of the current model (nothing pushed).
+    QString addCorrection(Correction correction);
+    /// Pushes an undoable removal of correction `id`, which reverts what it changed; false when
+    /// there is none.
+    bool removeCorrection(const QString &id);
+    /// Several corrections as one undo step (e.g. a group of edits); returns the ids pushed.
+    QStringList addCorrections(const QList<Correction> &corrections, const QString &text);
+    /// The stable key of an element by the id the views use ("arc_3", "arc_3/p1", "n3", "lf2",
+    /// "lf1/part2", "topic:/scan"); "" when there is no such element in the model as recovered.
+    QString keyOf(const QString &id) const;
+    /// Who makes corrections here: $ROSARCH_AUTHOR, else the login name.
+    static QString author();
+
     /// What a decision touches, captured for undo: the stored decision of one subject and
     /// proposal and, for a node description, the node's description.
     struct DecisionSnapshot
@@ -128,6 +149,11 @@ Q_SIGNALS:
 private:
     friend class SetNodeDescriptionCommand;
     friend class DecideSuggestionCommand;
+    friend class CorrectionCommand;
+    void insertCorrection(int index, const Correction &correction);
+    void takeCorrection(const QString &id);
+    /// `correction` made ready to push: id, author, time; false when its target is unknown.
+    bool prepare(Correction *correction, int offset) const;
     void applyNodeDescription(const QString &nodeId, const QString &description);
 
     DecisionSnapshot snapshot(const Suggestion &suggestion) const;
@@ -157,6 +183,7 @@ private:
     QString m_projectPath; ///< where m_project is kept
     QList<SuggestionDecision> m_unboundDecisions;         ///< by key: nothing here matches them
     mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted()/orphans(), until a change
+    mutable std::optional<StableKeys> m_keys;             ///< keyOf(): of the model as recovered
     QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     QTimer m_autosave;

@@ -18,11 +18,12 @@ struct DocumentChange
         Suggestions = 1u << 4,   ///< the suggestion list was replaced
         Suggestion = 1u << 5,    ///< one suggestion's status (`id`)
         Decisions = 1u << 6,     ///< accepted decisions: groupings, names, descriptions
+        Corrections = 1u << 7,   ///< the corrections (`id`: the one added or removed)
     };
     Q_DECLARE_FLAGS(Parts, Part)
 
     Parts parts;
-    QString id; ///< the node or suggestion, for Node and Suggestion
+    QString id; ///< the node, suggestion or correction, for Node, Suggestion and Corrections
 
     bool has(Part part) const { return parts.testFlag(part); }
     /// True when a list the views show from scratch is replaced (model, launch, suggestions).
