@@ -1,0 +1,179 @@
+// Corrections in the Document (blueprint §5): each one of the fixture project, made one by one,
+// gives the same model as the corrected-model function; every one undoes and redoes; removing
+// one reverts it; and re-running the stages on the same workspace keeps them, by key.
+#include "correctedmodel.h"
+#include "document.h"
+#include "testsupport.h"
+
+#include <QDirIterator>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+QString caseDir()
+{
+    return test::dataDir(QStringLiteral("project_corrections"));
+}
+
+Project fixtureCorrections()
+{
+    Project p;
+    QString error;
+    if (!ProjectFile::read(QDir(caseDir()).filePath(QStringLiteral("rosarch.project.json")), &p,
+                           &error))
+        qWarning("%s", qPrintable(error));
+    p.decisions.clear(); // corrections only: there are no suggestions here
+    return p;
+}
+
+/// What the composites say, without the positional ids that a code change shifts.
+QStringList shape(const Architecture &arch)
+{
+    QStringList out;
+    for (const Composite &c : arch.composites) {
+        for (const RosNodePart &part : c.parts) {
+            out << QStringLiteral("%1 %2 %3 %4 %5")
+                       .arg(c.file, part.name, part.typeName, part.subsystem)
+                       .arg(int(part.marks.provenance));
+            for (const PartPort &p : part.ports)
+                out << QStringLiteral("  %1 %2 %3 %4")
+                           .arg(p.id, p.name, p.type)
+                           .arg(int(p.marks.provenance));
+        }
+        for (const Channel &ch : c.channels)
+            out << QStringLiteral("channel %1 %2 %3").arg(ch.name, ch.type).arg(ch.marks.reviewed);
+    }
+    return out;
+}
+
+} // namespace
+
+class TestDocumentCorrections : public QObject
+{
+    Q_OBJECT
+    QTemporaryDir m_home;
+    QTemporaryDir m_ws;
+    Recovery m_recovered;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_home.isValid());
+        qputenv("XDG_DATA_HOME", m_home.filePath(QStringLiteral("data")).toUtf8());
+        qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral("config")).toUtf8());
+        QDirIterator it(QDir(caseDir()).filePath(QStringLiteral("ws")), QDir::Files,
+                        QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString file = it.next();
+            const QString target = m_ws.filePath(
+                QDir(QDir(caseDir()).filePath(QStringLiteral("ws"))).relativeFilePath(file));
+            QDir().mkpath(QFileInfo(target).path());
+            QVERIFY(QFile::copy(file, target));
+        }
+        m_recovered = recoverWorkspace(m_ws.path(), fixtureCorrections().launch);
+    }
+
+    void init()
+    {
+        // a document keeps its project on disk; every test starts from none
+        const QString project = ProjectFile::locate(m_ws.path());
+        QFile::remove(project);
+        QFile::remove(ProjectFile::autosavePath(project));
+    }
+
+    void eachCorrectionUndoesAndRedoes()
+    {
+        const Project project = fixtureCorrections();
+        Document doc;
+        doc.setAutosaveInterval(60000);
+        doc.setLaunchOptions(project.launch);
+        doc.setRecovery(m_recovered);
+        QSignalSpy changes(&doc, &Document::changed);
+        QList<Recovery> steps{doc.accepted()};
+        for (const Correction &c : project.corrections) {
+            Correction fresh = c;
+            fresh.id.clear(); // the document numbers them
+            const QString id = doc.addCorrection(fresh);
+            QCOMPARE(id, c.id);
+            QCOMPARE(doc.correction(id)->target, c.target);
+            QVERIFY(doc.correction(id)->time.isValid());
+            QVERIFY(!doc.correction(id)->author.isEmpty());
+            steps << doc.accepted();
+            QVERIFY2(steps.last() != steps.at(steps.size() - 2) ||
+                         c.kind == Correction::Kind::Review,
+                     qPrintable(c.id)); // each one changes the model (a review marks it)
+        }
+        QCOMPARE(changes.size(), project.corrections.size());
+        QCOMPARE(doc.orphans(), QList<Orphan>());
+        // the same model the pure function gives for the project (ids and times aside)
+        Project made = project;
+        made.corrections = doc.corrections();
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, made).recovery);
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, project).recovery);
+
+        for (int i = int(steps.size()) - 2; i >= 0; --i) {
+            doc.undoStack()->undo();
+            QVERIFY2(doc.accepted() == steps.at(i), qPrintable(QString::number(i)));
+        }
+        QVERIFY(doc.corrections().isEmpty());
+        QCOMPARE(doc.accepted(), m_recovered);
+        for (int i = 1; i < steps.size(); ++i) {
+            doc.undoStack()->redo();
+            QVERIFY2(doc.accepted() == steps.at(i), qPrintable(QString::number(i)));
+        }
+    }
+
+    void removingACorrectionRevertsIt()
+    {
+        const Project project = fixtureCorrections();
+        Document doc;
+        doc.setAutosaveInterval(60000);
+        doc.setRecovery(m_recovered);
+        for (const Correction &c : project.corrections)
+            doc.addCorrection(c);
+        const Recovery all = doc.accepted();
+        QVERIFY(doc.removeCorrection(QStringLiteral("c3"))); // the topic rename
+        QVERIFY(!doc.correction(QStringLiteral("c3")));
+        Project without = project;
+        without.corrections.removeAt(2);
+        const Recovery expected = CorrectedModel::apply(m_recovered, without).recovery;
+        QCOMPARE(doc.accepted(), expected);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.corrections().at(2).id, QStringLiteral("c3")); // back where it was
+        QCOMPARE(doc.accepted(), all);
+        QVERIFY(!doc.removeCorrection(QStringLiteral("c99")));
+        QVERIFY(doc.addCorrection(Correction{}).isEmpty()); // no target: nothing pushed
+    }
+
+    void reRunningTheStagesKeepsTheCorrections()
+    {
+        const Project project = fixtureCorrections();
+        Document doc;
+        doc.setAutosaveInterval(60000);
+        doc.setRecovery(m_recovered);
+        const QStringList ids =
+            doc.addCorrections(project.corrections, QStringLiteral("all of them"));
+        QCOMPARE(ids.size(), project.corrections.size());
+        QCOMPARE(doc.undoStack()->count(), 1); // one step
+        const Recovery before = doc.accepted();
+        // F5: the stages run again on the same workspace
+        doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
+        QCOMPARE(doc.corrections().size(), project.corrections.size());
+        QCOMPARE(doc.accepted(), before);
+        QVERIFY(doc.orphans().isEmpty());
+        // a code change that shifts ids: still applied to the same elements
+        test::writeFile(m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py")),
+                        "from rclpy.node import Node\n\n\nclass Arbiter(Node):\n"
+                        "    def __init__(self):\n        super().__init__('arbiter')\n");
+        doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
+        QVERIFY(doc.orphans().isEmpty());
+        QCOMPARE(shape(doc.accepted().architecture), shape(before.architecture));
+        QFile::remove(m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDocumentCorrections)
+#include "tst_documentcorrections.moc"
