@@ -29,6 +29,8 @@ QString describe(const Correction &c)
         return QCoreApplication::translate("rosarch::Document", "Group as %1").arg(c.newValue);
     case Correction::Kind::Review:
         return QCoreApplication::translate("rosarch::Document", "Mark reviewed");
+    case Correction::Kind::Describe:
+        return QCoreApplication::translate("rosarch::Document", "Edit description");
     }
     return {};
 }

@@ -3,7 +3,6 @@
 #include "decidesuggestioncommand.h"
 #include "decisionstore.h"
 #include "project.h"
-#include "setnodedescriptioncommand.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -92,19 +91,41 @@ void Document::setNodeDescription(const QString &nodeId, const QString &descript
     const AtomicNode *node = m_nodes.node(nodeId);
     if (!node || node->description == description)
         return;
-    m_undoStack.push(new SetNodeDescriptionCommand(this, nodeId, node->description, description));
+    // a correction like any other: kept in the project by key, so a re-run keeps it
+    Correction c;
+    c.kind = Correction::Kind::Describe;
+    c.target = keyOf(nodeId);
+    c.oldValue = node->description;
+    c.newValue = description;
+    addCorrection(c);
 }
 
-void Document::applyNodeDescription(const QString &nodeId, const QString &description)
+QStringList Document::refreshDescriptions()
 {
-    for (AtomicNode &n : m_nodes.nodes) {
-        if (n.id == nodeId) {
-            n.description = description;
-            m_corrected.reset();
-            emitChange(DocumentChange::Node, nodeId);
-            return;
-        }
+    // as analysis found them, then accepted suggestions, then a person's own edits in order
+    QHash<QString, QString> wanted = m_analysisDescriptions;
+    for (const SuggestionDecision &d : std::as_const(m_decisions))
+        if (d.kind == Suggestion::Kind::NodeDescription &&
+            d.status == Suggestion::Status::Accepted && wanted.contains(d.targetId))
+            wanted.insert(d.targetId, d.proposal);
+    bool anyEdit = false;
+    for (const Correction &c : std::as_const(m_project.corrections))
+        anyEdit = anyEdit || c.kind == Correction::Kind::Describe;
+    if (anyEdit) {
+        QHash<QString, QString> idOfKey;
+        for (const AtomicNode &n : std::as_const(m_nodes.nodes))
+            idOfKey.insert(keyOf(n.id), n.id);
+        for (const Correction &c : std::as_const(m_project.corrections))
+            if (c.kind == Correction::Kind::Describe && idOfKey.contains(c.target))
+                wanted.insert(idOfKey.value(c.target), c.newValue);
     }
+    QStringList changed;
+    for (AtomicNode &n : m_nodes.nodes)
+        if (const auto it = wanted.constFind(n.id); it != wanted.cend() && n.description != *it) {
+            n.description = *it;
+            changed << n.id;
+        }
+    return changed;
 }
 
 const Suggestion *Document::suggestion(const QString &id) const
@@ -212,19 +233,13 @@ QMap<QString, QString> Document::acceptedNames() const
 const Recovery &Document::accepted() const
 {
     if (!m_corrected) {
-        // The model as analysis found it: the nodes here hold the descriptions accepted since,
-        // which the project applies itself (the same function as every export and the command
-        // line); a description a person edited after that stays theirs.
+        // The model as analysis found it: the nodes here hold the descriptions accepted or
+        // edited since, which the project applies itself (the same function as every export
+        // and the command line).
         Recovery recovered{m_nodes, m_launch, m_architecture};
         for (AtomicNode &n : recovered.nodes.nodes)
             n.description = m_analysisDescriptions.value(n.id, n.description);
         m_corrected = CorrectedModel::apply(recovered, project());
-        for (AtomicNode &n : m_corrected->recovery.nodes.nodes)
-            if (const AtomicNode *here = m_nodes.node(n.id);
-                here && here->description != n.description) {
-                n.description = here->description;
-                n.marks.provenance = Provenance::Corrected;
-            }
     }
     return m_corrected->recovery;
 }
@@ -357,6 +372,8 @@ void Document::insertCorrection(int index, const Correction &correction)
     m_corrected.reset();
     markDecisionsChanged();
     emitChange(DocumentChange::Corrections, correction.id);
+    for (const QString &id : refreshDescriptions())
+        emitChange(DocumentChange::Node, id);
 }
 
 void Document::takeCorrection(const QString &id)
@@ -365,6 +382,8 @@ void Document::takeCorrection(const QString &id)
     m_corrected.reset();
     markDecisionsChanged();
     emitChange(DocumentChange::Corrections, id);
+    for (const QString &node : refreshDescriptions())
+        emitChange(DocumentChange::Node, node);
 }
 
 QString Document::decisionsPath() const
@@ -417,13 +436,11 @@ void Document::restore(const DecisionSnapshot &snapshot)
             s.status = status;
             changed << s.id;
         }
-    if (!snapshot.nodeId.isEmpty()) {
-        const AtomicNode *n = m_nodes.node(snapshot.nodeId);
-        if (n && n->description != snapshot.description)
-            applyNodeDescription(snapshot.nodeId, snapshot.description);
-    }
+    const QStringList nodes = refreshDescriptions();
     for (const QString &id : std::as_const(changed))
         emitChange(DocumentChange::Suggestion, id);
+    for (const QString &id : nodes)
+        emitChange(DocumentChange::Node, id);
     markDecisionsChanged();
     emitChange(DocumentChange::Decisions);
 }
@@ -467,13 +484,7 @@ void Document::loadDecisions()
 
 void Document::applyStoredDescriptions()
 {
-    for (const SuggestionDecision &d : std::as_const(m_decisions)) {
-        if (d.kind != Suggestion::Kind::NodeDescription || d.status != Suggestion::Status::Accepted)
-            continue;
-        for (AtomicNode &n : m_nodes.nodes)
-            if (n.id == d.targetId)
-                n.description = d.proposal;
-    }
+    refreshDescriptions();
 }
 
 void Document::markDecisionsChanged()

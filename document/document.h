@@ -54,7 +54,8 @@ public:
     /// Stores what the next stage 2 run uses; it does not run anything.
     void setLaunchOptions(const LaunchOptions &options);
 
-    /// Pushes an undoable change of a node's description (a person's correction).
+    /// Pushes an undoable change of a node's description: a correction (`describe`) kept in
+    /// the project, so re-running the stages keeps it.
     void setNodeDescription(const QString &nodeId, const QString &description);
 
     // Suggestions (issue 5). Decisions are kept per workspace (DecisionStore) and applied
@@ -147,14 +148,15 @@ Q_SIGNALS:
     void projectLoadFailed(const QString &message);
 
 private:
-    friend class SetNodeDescriptionCommand;
     friend class DecideSuggestionCommand;
     friend class CorrectionCommand;
     void insertCorrection(int index, const Correction &correction);
     void takeCorrection(const QString &id);
     /// `correction` made ready to push: id, author, time; false when its target is unknown.
     bool prepare(Correction *correction, int offset) const;
-    void applyNodeDescription(const QString &nodeId, const QString &description);
+    /// Sets every node's description to what analysis, accepted suggestions and `describe`
+    /// corrections say, in that order; returns the ids of the nodes that changed (no signals).
+    QStringList refreshDescriptions();
 
     DecisionSnapshot snapshot(const Suggestion &suggestion) const;
     DecisionSnapshot decided(const Suggestion &suggestion, Suggestion::Status status) const;

@@ -57,6 +57,15 @@ public:
             if (knows(c.target))
                 m_reviewed.insert(c.target);
             break;
+        case Correction::Kind::Describe:
+            if (StableKeys::family(c.target) != QLatin1String("class"))
+                orphan(QStringLiteral("%1 is not a class").arg(c.target));
+            else if (knows(c.target))
+                if (AtomicNode *n = node(m_keys.idOf(c.target))) {
+                    n->description = c.newValue;
+                    n->marks.provenance = Provenance::Corrected;
+                }
+            break;
         }
     }
 

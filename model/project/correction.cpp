@@ -9,7 +9,7 @@ namespace rosarch {
 
 namespace {
 
-constexpr std::array<std::pair<Correction::Kind, const char *>, 9> kKinds = {{
+constexpr std::array<std::pair<Correction::Kind, const char *>, 10> kKinds = {{
     {Correction::Kind::Rename, "rename"},
     {Correction::Kind::SetName, "set-name"},
     {Correction::Kind::SetType, "set-type"},
@@ -19,6 +19,7 @@ constexpr std::array<std::pair<Correction::Kind, const char *>, 9> kKinds = {{
     {Correction::Kind::AddConnection, "add-connection"},
     {Correction::Kind::Group, "group"},
     {Correction::Kind::Review, "review"},
+    {Correction::Kind::Describe, "describe"},
 }};
 
 bool hasPortKind(Correction::Kind kind)
@@ -53,6 +54,7 @@ QString Correction::summary() const
     case Kind::Rename:
     case Kind::SetName:
     case Kind::SetType:
+    case Kind::Describe:
         return oldValue + arrow + newValue;
     case Kind::Remove:
         return port.isEmpty() ? target : target + QLatin1Char(' ') + port;

@@ -24,7 +24,8 @@ struct Correction
         AddPart,       ///< a node instance declared in a launch file
         AddConnection, ///< a port of one node instance on a topic, service or action
         Group,         ///< node instances as a subsystem under a root launch file
-        Review         ///< an element marked as reviewed
+        Review,        ///< an element marked as reviewed
+        Describe       ///< the description of a class
     };
 
     QString id; ///< "c1", ... unique in the project, never reused
@@ -48,7 +49,7 @@ struct Correction
     bool operator==(const Correction &) const = default;
 
     /// "rename", "set-name", "set-type", "remove", "add-port", "add-part", "add-connection",
-    /// "group", "review".
+    /// "group", "review", "describe".
     static QString kindName(Kind kind);
     static bool kindFromName(const QString &name, Kind *kind);
     /// A one-line account for lists: "Rename /scan → /laser".

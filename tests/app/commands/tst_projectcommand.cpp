@@ -64,7 +64,7 @@ private Q_SLOTS:
             {QStringLiteral("recover"), QDir(caseDir()).filePath(QStringLiteral("ws")),
              QStringLiteral("--out"), out.path(), QStringLiteral("--project"), projectFile()});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.contains(QLatin1String("Applied 13 accepted decisions and corrections")),
+        QVERIFY2(run.out.contains(QLatin1String("Applied 14 accepted decisions and corrections")),
                  qPrintable(run.out));
         sameAsExpected(out.path(), QDir(caseDir()).filePath(QStringLiteral("corrected")));
     }
@@ -97,7 +97,7 @@ private Q_SLOTS:
         const test::Run clean = test::runRosarch(
             {QStringLiteral("project"), QStringLiteral("check"), projectFile(), ws.path()});
         QCOMPARE(clean.exitCode, 0);
-        QVERIFY2(clean.out.contains(QLatin1String("1 decisions and 12 corrections; 0 orphaned")),
+        QVERIFY2(clean.out.contains(QLatin1String("1 decisions and 13 corrections; 0 orphaned")),
                  qPrintable(clean.out));
 
         copyTree(QDir(caseDir()).filePath(QStringLiteral("change")), ws.path());

@@ -174,7 +174,7 @@ private Q_SLOTS:
         QSet<Correction::Kind> kinds;
         for (const Correction &c : project.corrections)
             kinds.insert(c.kind);
-        QCOMPARE(kinds.size(), 9); // every kind there is
+        QCOMPARE(kinds.size(), 10); // every kind there is
         const Recovery recovered =
             recoverWorkspace(QDir(caseDir()).filePath(QStringLiteral("ws")), project.launch);
         const CorrectedRecovery corrected = CorrectedModel::apply(recovered, project);
@@ -289,9 +289,9 @@ private Q_SLOTS:
         Project p;
         QString error;
         QVERIFY2(ProjectFile::read(file, &p, &error), qPrintable(error));
-        QCOMPARE(p.corrections.size(), 12);
+        QCOMPARE(p.corrections.size(), 13);
         QCOMPARE(p.launch.rootFile, QStringLiteral("src/cart_base/launch/cart.launch.py"));
-        QCOMPARE(p.nextCorrectionId(), QStringLiteral("c13"));
+        QCOMPARE(p.nextCorrectionId(), QStringLiteral("c14"));
         QTemporaryDir dir;
         const QString copy = dir.filePath(QStringLiteral("p.json"));
         QVERIFY2(ProjectFile::write(copy, p, &error), qPrintable(error));
