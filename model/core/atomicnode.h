@@ -38,7 +38,7 @@ struct AtomicNode
     Evidence evidence; ///< the class definition (or the create_node call)
     QList<Port> ports;
 
-    Marks marks; ///< provenance and review (blueprint §5); set by the corrected model
+    Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     /// The blueprint's `execution`: the first executable, else the first plugin.
     QString execution() const;
     bool isComposable() const { return !plugins.isEmpty(); }

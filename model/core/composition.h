@@ -27,7 +27,7 @@ struct PartPort
     QString guard;      ///< as written ("" = always)
     QString qos;        ///< the QoS argument at the creating call, as written ("" = none)
     Evidence evidence;  ///< the port's creation in code (or the inner port for a boundary)
-    Marks marks;        ///< provenance and review (blueprint §5); set by the corrected model
+    Marks marks = {};   ///< provenance and review (blueprint §5); set by the corrected model
     bool operator==(const PartPort &) const = default;
 };
 
@@ -53,7 +53,7 @@ struct RosNodePart
     QList<PartPort> ports;
     Evidence evidence; ///< the node or include in the launch file
     QString subsystem; ///< accepted subsystem grouping ("" = none)
-    Marks marks;       ///< provenance and review (blueprint §5); set by the corrected model
+    Marks marks = {};  ///< provenance and review (blueprint §5); set by the corrected model
     bool operator==(const RosNodePart &) const = default;
 };
 
@@ -69,9 +69,9 @@ struct Channel
 
     QString id; ///< PlantUML-safe alias: "q_robot_ns_scan", "c_...", "a_..."
     Kind kind = Kind::Topic;
-    QString name; ///< resolved absolute name
-    QString type; ///< the first type seen; conflicts are diagnostics
-    Marks marks;  ///< provenance and review (blueprint §5); set by the corrected model
+    QString name;     ///< resolved absolute name
+    QString type;     ///< the first type seen; conflicts are diagnostics
+    Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     bool operator==(const Channel &) const = default;
 };
 

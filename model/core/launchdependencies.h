@@ -61,9 +61,9 @@ struct NodeInstance
     Evidence evidence;
     /// A person's corrections of this instance (blueprint §5), applied by stage 3: ports added
     /// (absolute names) and port ids removed.
-    QList<Port> addedPorts;
-    QStringList removedPorts;
-    Marks marks; ///< provenance and review (blueprint §5); set by the corrected model
+    QList<Port> addedPorts = {};
+    QStringList removedPorts = {};
+    Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     bool operator==(const NodeInstance &) const = default;
 };
 

@@ -72,7 +72,7 @@ struct Port
     /// setup calls, instantiations ("" via = empty).
     QList<Evidence> viaEvidence;
 
-    Marks marks; ///< provenance and review (blueprint §5); set by the corrected model
+    Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     bool isResolved() const { return nameOrigin != NameOrigin::Expression; }
     bool operator==(const Port &) const = default;
 };
