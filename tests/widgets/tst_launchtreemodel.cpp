@@ -5,6 +5,7 @@
 #include "launchtreemodel.h"
 #include "launchtreetext.h"
 #include "nodefilterproxymodel.h"
+#include "project.h"
 #include "testsupport.h"
 
 #include <QAbstractItemModelTester>
@@ -13,6 +14,7 @@
 #include <QIcon>
 #include <QPalette>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QtTest>
 
 using namespace rosarch;
@@ -518,6 +520,10 @@ private Q_SLOTS:
 
     void relaunchKeepsAtomicNodesAndUndo()
     {
+        // the description below is a correction the document keeps in the project of /ws
+        QStandardPaths::setTestModeEnabled(true);
+        QFile::remove(ProjectFile::locate(QStringLiteral("/ws")));
+        QFile::remove(ProjectFile::autosavePath(ProjectFile::locate(QStringLiteral("/ws"))));
         Document document;
         AtomicNodeList nodes;
         AtomicNode cls;
