@@ -10,6 +10,7 @@
 #include <QIcon>
 #include <QMenu>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QtTest>
 
 using namespace rosarch;
@@ -127,6 +128,12 @@ class TestAtomicNodeModel : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase()
+    {
+        // descriptions edited here are kept in the projects of the workspaces, in test mode
+        QStandardPaths::setTestModeEnabled(true);
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    }
 
     void passesModelTester()
     {
