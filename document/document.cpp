@@ -34,6 +34,7 @@ void Document::setRecovery(Recovery recovery)
     // they cannot be written and the same workspace comes back, they are kept in memory.
     const bool sameWorkspace = recovery.nodes.workspaceRoot == workspaceRoot();
     const QList<SuggestionDecision> keyed = keyedDecisions(); // by the keys of the old model
+    const QList<Suggestion> suggestions = sameWorkspace ? keyedSuggestions() : QList<Suggestion>{};
     const bool saved = saveDecisions();
     DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
     if (hasSuggestionReport())
@@ -52,8 +53,12 @@ void Document::setRecovery(Recovery recovery)
         bindDecisions(keyed); // not on disk: re-bound from memory, by key
     else
         loadDecisions();
-    // The old suggestions were checked against the old model; their ids may mean other things.
-    clearSuggestions();
+    // The suggestions were made on the old model: they stay, by key, where their subject is
+    // still there (its id may be another now), and go where it is gone.
+    if (sameWorkspace)
+        bindSuggestions(suggestions);
+    else
+        clearSuggestions();
     Q_EMIT changed(change);
 }
 
@@ -70,11 +75,12 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     Q_EMIT aboutToChange(change);
     m_corrected.reset();
     const QList<SuggestionDecision> keyed = keyedDecisions(); // launch ids may change
+    const QList<Suggestion> suggestions = keyedSuggestions();
     m_keys.reset();
     m_launch = std::move(launch);
     m_architecture = std::move(architecture);
     bindDecisions(keyed);
-    clearSuggestions(); // groupings and names refer to launch ids that may have changed
+    bindSuggestions(suggestions); // by key: groupings and names refer to launch ids
     Q_EMIT changed(change);
 }
 
@@ -293,6 +299,44 @@ QString Document::keyOf(const QString &id) const
     if (!m_keys)
         m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
     return m_keys->keyOf(id);
+}
+
+QList<Suggestion> Document::keyedSuggestions() const
+{
+    QList<Suggestion> out;
+    for (Suggestion s : m_suggestionReport.suggestions) {
+        s.targetId = keyOf(s.targetId);
+        bool known = !s.targetId.isEmpty();
+        for (QString &m : s.memberIds) {
+            m = keyOf(m);
+            known = known && !m.isEmpty();
+        }
+        if (known)
+            out.append(s);
+    }
+    return out;
+}
+
+void Document::bindSuggestions(const QList<Suggestion> &keyed)
+{
+    if (!m_keys)
+        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
+    QList<Suggestion> bound;
+    for (Suggestion s : keyed) {
+        s.targetId = m_keys->idOf(s.targetId);
+        bool there = !s.targetId.isEmpty();
+        for (QString &m : s.memberIds) {
+            m = m_keys->idOf(m);
+            there = there && !m.isEmpty();
+        }
+        if (!there)
+            continue; // its subject is gone
+        s.memberIds.sort();
+        const auto it = m_decisions.constFind(SuggestionDecision::keyOf(s));
+        s.status = it == m_decisions.cend() ? Suggestion::Status::Pending : it->status;
+        bound.append(s);
+    }
+    m_suggestionReport.suggestions = bound;
 }
 
 QString Document::author()

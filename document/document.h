@@ -167,6 +167,11 @@ private:
     QList<SuggestionDecision> keyedDecisions() const;
     /// Binds decisions stored by key to this model's ids; what matches nothing is kept apart.
     void bindDecisions(const QList<SuggestionDecision> &keyed);
+    /// The suggestions with their subjects as stable keys of this model (unknown ones left out).
+    QList<Suggestion> keyedSuggestions() const;
+    /// Puts back suggestions keyed by keyedSuggestions() on this model's ids, with the status
+    /// the decisions give; those whose subject is gone are dropped.
+    void bindSuggestions(const QList<Suggestion> &keyed);
     /// Applies the accepted descriptions among the decisions to the nodes (no signals).
     void applyStoredDescriptions();
     void markDecisionsChanged();

@@ -151,6 +151,42 @@ private Q_SLOTS:
         QVERIFY(doc.addCorrection(Correction{}).isEmpty()); // no target: nothing pushed
     }
 
+    void pendingSuggestionsSurviveARerunUnlessTheirTargetIsGone()
+    {
+        Document doc;
+        doc.setAutosaveInterval(60000);
+        doc.setRecovery(m_recovered);
+        SuggestionReport report;
+        for (const AtomicNode &n : m_recovered.nodes.nodes) {
+            Suggestion s;
+            s.id = QStringLiteral("s%1").arg(report.suggestions.size() + 1);
+            s.kind = Suggestion::Kind::NodeDescription;
+            s.targetId = n.id;
+            s.value = QStringLiteral("About ") + n.className;
+            report.suggestions.append(s);
+        }
+        doc.setSuggestions(report);
+        QVERIFY(doc.acceptSuggestion(QStringLiteral("s2")));
+        // a class inserted before all others (every id shifts) and one deleted
+        const QString arbiter = m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py"));
+        const QString recorder =
+            m_ws.filePath(QStringLiteral("src/cart_base/cart_base/recorder.py"));
+        const QByteArray recorderSource = test::readFile(recorder);
+        test::writeFile(arbiter, "from rclpy.node import Node\n\n\nclass Arbiter(Node):\n"
+                                 "    def __init__(self):\n        super().__init__('arbiter')\n");
+        QVERIFY(QFile::remove(recorder));
+        doc.setRecovery(recoverWorkspace(m_ws.path()));
+        QFile::remove(arbiter);
+        test::writeFile(recorder, recorderSource);
+        QCOMPARE(doc.suggestions().size(), report.suggestions.size() - 1); // Recorder's went
+        for (const Suggestion &s : doc.suggestions()) {
+            const AtomicNode *n = doc.atomicNodes().node(s.targetId);
+            QVERIFY(n);
+            QCOMPARE(s.value, QStringLiteral("About ") + n->className); // on its own class
+            QCOMPARE(s.status == Suggestion::Status::Accepted, s.id == QLatin1String("s2"));
+        }
+    }
+
     void reRunningTheStagesKeepsTheCorrections()
     {
         const Project project = fixtureCorrections();

@@ -113,7 +113,13 @@ private Q_SLOTS:
         proxy.setKindFilter(Suggestion::Kind::SubsystemGrouping);
         QCOMPARE(proxy.rowCount(), 1);
         doc.setSuggestions(m_report); // a new run
-        doc.setRecovery(m_recovery);  // the stages again: the old suggestions go
+        const Suggestion::Status decided = doc.suggestion(QStringLiteral("s2"))->status;
+        doc.setRecovery(m_recovery); // the stages again: the suggestions stay, by key
+        QCOMPARE(model.rowCount(), 10);
+        QCOMPARE(doc.suggestion(QStringLiteral("s2"))->status, decided);
+        Recovery other = m_recovery;
+        other.nodes.workspaceRoot += QStringLiteral("_elsewhere");
+        doc.setRecovery(other); // another workspace: they go
         QCOMPARE(model.rowCount(), 0);
     }
 
