@@ -347,15 +347,16 @@ void MainWindow::openWorkspace(const QString &path)
     }
     const QString root = info.canonicalFilePath();
     if (root == workspace())
-        runAllStages(); // the same project, run again
+        openWorkspaceNow(root); // the same project, run again
     else
         m_projects->maybeSave([this, root] { openWorkspaceNow(root); });
 }
 
 void MainWindow::openWorkspaceNow(const QString &root)
 {
+    const bool another = root != workspace();
     // Keep the old result only while re-running the same workspace.
-    if (root != workspace() && !workspace().isEmpty())
+    if (another && !workspace().isEmpty())
         saveSession();
     m_stages->setWorkspace(root);
     AppSettings settings;
@@ -363,7 +364,8 @@ void MainWindow::openWorkspaceNow(const QString &root)
     settings.setLastWorkspace(root);
     updateTitle();
     setWindowFilePath(root);
-    m_projects->projectOpened();
+    if (another)
+        m_projects->projectOpened();
     runAllStages();
 }
 

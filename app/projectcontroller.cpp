@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -45,10 +46,9 @@ ProjectController::ProjectController(Document *document, LogView *log, QWidget *
     m_openAction->setStatusTip(tr("Open a rosarch project file and the workspace it belongs to"));
     connect(m_openAction, &QAction::triggered, this, [this] {
         const QString current = m_document->decisionsPath();
-        const QString start = !current.isEmpty() ? QFileInfo(current).path()
-                              : m_document->workspaceRoot().isEmpty()
-                                  ? QDir::homePath()
-                                  : m_document->workspaceRoot();
+        const QString start = !current.isEmpty()                      ? QFileInfo(current).path()
+                              : m_document->workspaceRoot().isEmpty() ? QDir::homePath()
+                                                                      : m_document->workspaceRoot();
         const QString file = m_chooseFile(tr("Open Project"), start, false);
         if (!file.isEmpty())
             openProject(file);
@@ -98,11 +98,11 @@ void ProjectController::maybeSave(const std::function<void()> &proceed)
     const QString name = m_document->isUntitled()
                              ? tr("the new project")
                              : QStringLiteral("“%1”").arg(native(m_document->decisionsPath()));
-    auto *box = new QMessageBox(
-        QMessageBox::Warning, tr("Unsaved changes"),
-        tr("The project of “%1” has changes that are not saved.")
-            .arg(QFileInfo(m_document->workspaceRoot()).fileName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
+    auto *box =
+        new QMessageBox(QMessageBox::Warning, tr("Unsaved changes"),
+                        tr("The project of “%1” has changes that are not saved.")
+                            .arg(QFileInfo(m_document->workspaceRoot()).fileName()),
+                        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_window);
     box->setObjectName(QStringLiteral("unsavedChangesBox"));
     box->setInformativeText(
         tr("Save them to %1, discard them, or cancel and stay with this project?").arg(name));
@@ -139,11 +139,14 @@ void ProjectController::projectOpened()
         QMessageBox::Yes | QMessageBox::Discard, m_window);
     box->setObjectName(QStringLiteral("recoverAutosaveBox"));
     box->button(QMessageBox::Yes)->setText(tr("&Recover"));
-    box->setInformativeText(tr("Recover them (the project shows as modified until you save it), "
-                               "or discard them and keep the project as saved in %1?")
-                                .arg(native(m_document->decisionsPath().isEmpty()
-                                                ? m_document->workspaceRoot()
-                                                : m_document->decisionsPath())));
+    const QString saved = m_document->decisionsPath();
+    box->setInformativeText(
+        QFileInfo::exists(saved)
+            ? tr("Recover them (the project shows as modified until you save it), or discard "
+                 "them and keep the project as saved in %1?")
+                  .arg(native(saved))
+            : tr("Recover them (the project shows as modified until you save it), or discard "
+                 "them (the workspace has no saved project yet)?"));
     box->setDetailedText(tr("Autosave file: %1").arg(native(side)));
     box->setDefaultButton(QMessageBox::Yes);
     box->setAttribute(Qt::WA_DeleteOnClose);

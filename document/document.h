@@ -201,9 +201,9 @@ private:
     QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     QTimer m_autosave;
-    bool m_unsaved = false;        ///< a change is not in the autosave side file
-    bool m_modifiedOutside = false; ///< modified by what the undo stack does not hold
-    bool m_modifiedShown = false;  ///< as last announced by modifiedChanged
+    bool m_unsaved = false;          ///< a change is not in the autosave side file
+    bool m_modifiedOutside = false;  ///< modified by what the undo stack does not hold
+    bool m_modifiedShown = false;    ///< as last announced by modifiedChanged
     bool m_migrationPending = false; ///< old decisions.json waits for a model to key them by
     /// The project file a person chose for a workspace (setProjectFile): workspace → file.
     std::optional<std::pair<QString, QString>> m_chosenProject;

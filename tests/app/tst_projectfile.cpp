@@ -295,9 +295,8 @@ private Q_SLOTS:
             QMessageBox *offer = box(w, QStringLiteral("recoverAutosaveBox"));
             QVERIFY(offer);
             // names when the changes were kept
-            QVERIFY2(offer->text().contains(QString::number(QFileInfo(side).lastModified()
-                                                                .date()
-                                                                .year())),
+            QVERIFY2(offer->text().contains(
+                         QString::number(QFileInfo(side).lastModified().date().year())),
                      qPrintable(offer->text()));
             QVERIFY(w.document()->decisions().isEmpty());
             test::writeFile(side + QStringLiteral(".copy"), test::readFile(side));
