@@ -10,6 +10,7 @@ namespace rosarch {
 namespace {
 const QString kRecent = QStringLiteral("workspaces/recent");
 const QString kLast = QStringLiteral("workspaces/last");
+const QString kRecentProjects = QStringLiteral("projects/recent");
 const QString kExport = QStringLiteral("workspaces/lastExportFolder");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kState = QStringLiteral("window/state");
@@ -83,6 +84,39 @@ void AppSettings::removeRecentWorkspace(const QString &path)
 void AppSettings::clearRecentWorkspaces()
 {
     m_settings->remove(kRecent);
+}
+
+QStringList AppSettings::recentProjects() const
+{
+    QStringList list = m_settings->value(kRecentProjects).toStringList();
+    list.removeDuplicates();
+    if (list.size() > kMaxRecent)
+        list.resize(kMaxRecent);
+    return list;
+}
+
+void AppSettings::addRecentProject(const QString &file)
+{
+    const QString f = normalized(file);
+    QStringList list = m_settings->value(kRecentProjects).toStringList();
+    list.removeAll(f);
+    list.prepend(f);
+    if (list.size() > kMaxRecent)
+        list.resize(kMaxRecent);
+    m_settings->setValue(kRecentProjects, list);
+}
+
+void AppSettings::removeRecentProject(const QString &file)
+{
+    QStringList list = m_settings->value(kRecentProjects).toStringList();
+    list.removeAll(file);
+    list.removeAll(normalized(file));
+    m_settings->setValue(kRecentProjects, list);
+}
+
+void AppSettings::clearRecentProjects()
+{
+    m_settings->remove(kRecentProjects);
 }
 
 QString AppSettings::lastWorkspace() const

@@ -28,6 +28,12 @@ public:
     void removeRecentWorkspace(const QString &path);
     void clearRecentWorkspaces();
 
+    /// Recent project files, newest first (missing ones included: the menu greys them).
+    QStringList recentProjects() const;
+    void addRecentProject(const QString &file);
+    void removeRecentProject(const QString &file);
+    void clearRecentProjects();
+
     QString lastWorkspace() const;
     void setLastWorkspace(const QString &path);
     QString lastExportFolder() const;

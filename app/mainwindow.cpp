@@ -16,6 +16,8 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
+#include "project.h"
+#include "projectcontroller.h"
 #include "rendercontroller.h"
 #include "sourceview.h"
 #include "stagecontroller.h"
@@ -56,7 +58,7 @@ MainWindow::MainWindow(QWidget *parent)
       m_launchModel(new LaunchTreeModel(m_document, this)),
       m_diagnosticModel(new DiagnosticModel(m_document, this))
 {
-    setWindowTitle(tr("rosarch"));
+    setWindowTitle(tr("rosarch[*]"));
     setWindowIcon(Icons::application());
     setAcceptDrops(true);
     setDockNestingEnabled(true);
@@ -84,6 +86,14 @@ MainWindow::MainWindow(QWidget *parent)
         if (c.parts & (DocumentChange::Model | DocumentChange::Launch))
             filesMayHaveChanged();
     });
+
+    connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_document, &Document::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(m_projects, &ProjectController::workspaceRequested, this,
+            &MainWindow::openWorkspaceNow);
+    connect(m_projects, &ProjectController::launchOptionsReplaced, this,
+            &MainWindow::runLaunchStage);
+    connect(m_projects, &ProjectController::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     restoreSession();
     updateCounts();
@@ -283,7 +293,16 @@ void MainWindow::saveSession()
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSession();
-    m_document->saveDecisions(); // the autosave may still be pending
+    if (!m_closeConfirmed && m_document->isModified()) {
+        // Save / Discard / Cancel without blocking: the window closes once it is answered.
+        event->ignore();
+        m_projects->maybeSave([this] {
+            m_closeConfirmed = true;
+            close();
+        });
+        return;
+    }
+    m_closeConfirmed = false;
     m_runner->cancel();
     QMainWindow::closeEvent(event);
 }
@@ -327,16 +346,46 @@ void MainWindow::openWorkspace(const QString &path)
         return;
     }
     const QString root = info.canonicalFilePath();
+    if (root == workspace())
+        openWorkspaceNow(root); // the same project, run again
+    else
+        m_projects->maybeSave([this, root] { openWorkspaceNow(root); });
+}
+
+void MainWindow::openWorkspaceNow(const QString &root)
+{
+    const bool another = root != workspace();
     // Keep the old result only while re-running the same workspace.
-    if (root != workspace() && !workspace().isEmpty())
+    if (another && !workspace().isEmpty())
         saveSession();
     m_stages->setWorkspace(root);
     AppSettings settings;
     settings.addRecentWorkspace(root);
     settings.setLastWorkspace(root);
-    setWindowTitle(tr("%1 — rosarch").arg(QFileInfo(root).fileName()));
+    updateTitle();
     setWindowFilePath(root);
+    if (another)
+        m_projects->projectOpened();
     runAllStages();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString root = m_document->workspaceRoot();
+    if (root.isEmpty()) {
+        setWindowTitle(tr("rosarch[*]"));
+        return;
+    }
+    const QString file = m_document->decisionsPath();
+    const QString ws = QFileInfo(root).fileName();
+    // The project is named when it is not the workspace's own (or the one kept for it).
+    QString title = ws;
+    if (m_document->isUntitled())
+        title = tr("%1 (new project)").arg(ws);
+    else if (file != ProjectFile::defaultPath(root) && file != ProjectFile::appDataPath(root))
+        title = tr("%1 (%2)").arg(ws, QFileInfo(file).fileName());
+    setWindowTitle(tr("%1[*] — rosarch").arg(title));
+    setWindowModified(m_document->isModified());
 }
 
 void MainWindow::runAllStages()

@@ -26,6 +26,7 @@ class Document;
 class LaunchTreeModel;
 class LaunchTreePanel;
 class LogView;
+class ProjectController;
 class SourceView;
 class StageController;
 class StageRunner;
@@ -45,8 +46,9 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    /// Opens a workspace folder and runs stages 1 to 3 on it with the launch options
-    /// remembered for it.
+    /// Opens a workspace folder and its project (asking Save / Discard / Cancel first when
+    /// another project has unsaved changes) and runs stages 1 to 3 on it with the project's
+    /// launch options.
     void openWorkspace(const QString &path);
     /// Runs stages 1 to 3 again (F5).
     void runAllStages();
@@ -80,6 +82,7 @@ public:
     QLabel *countsLabel() const { return m_countsLabel; }
     CompareController *compare() const { return m_compare; }
     RenderController *render() const { return m_render; }
+    ProjectController *projects() const { return m_projects; }
     ArchitectureDiffView *changesView() const { return m_changesView; }
     TalkersPanel *talkersPanel() const { return m_talkersPanel; }
     QDockWidget *talkersDock() const { return m_talkersDock; }
@@ -101,6 +104,8 @@ private:
     void openWorkspaceDialog();
     void exportArtifactsDialog();
     void updateRecentMenu();
+    void openWorkspaceNow(const QString &root);
+    void updateTitle();
     void updateCounts();
     void updateLaunchPlaceholder();
     void showError(const QString &title, const QString &text);
@@ -139,6 +144,7 @@ private:
     TalkersPanel *m_talkersPanel = nullptr;
     CompareController *m_compare = nullptr;
     RenderController *m_render = nullptr;
+    ProjectController *m_projects = nullptr;
     QToolBar *m_toolBar = nullptr;
 
     QAction *m_openAction = nullptr;
@@ -164,6 +170,7 @@ private:
     QToolButton *m_cancelButton = nullptr;
 
     QByteArray m_defaultState;
+    bool m_closeConfirmed = false; ///< the unsaved changes were saved or discarded
     QString m_lastProgressText;
 };
 

@@ -8,6 +8,7 @@
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "projectcontroller.h"
 #include "rendercontroller.h"
 #include "stagerunner.h"
 #include "suggestioncontroller.h"
@@ -24,6 +25,8 @@ namespace rosarch {
 
 void MainWindow::createActions()
 {
+    m_projects = new ProjectController(m_document, m_logView, this);
+
     m_openAction = new QAction(Icons::open(), tr("&Open Workspace…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
     m_openAction->setStatusTip(tr("Open a ROS 2 workspace folder and recover its architecture"));
@@ -137,9 +140,15 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_projects->newAction());
     file->addAction(m_openAction);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
+    file->addAction(m_projects->openAction());
+    file->addMenu(m_projects->recentMenu());
+    file->addSeparator();
+    file->addAction(m_projects->saveAction());
+    file->addAction(m_projects->saveAsAction());
     file->addSeparator();
     file->addAction(m_exportAction);
     file->addAction(m_diagrams->exportSvgAction());

@@ -26,14 +26,17 @@ void StageController::setWorkspace(const QString &root)
     if (root == m_workspace)
         return;
     m_workspace = root;
+    m_log->clearLog(); // before the project loads: what it says about its file stays
     AtomicNodeList empty;
     empty.workspaceRoot = root;
     m_document->setAtomicNodes(empty);
-    m_log->clearLog();
     AppSettings settings;
     settings.selection(root, &m_restoreNodeId, &m_restorePortId);
     m_restoreLaunchId = settings.launchSelection(root);
-    m_document->setLaunchOptions(settings.launchOptions(root));
+    // The project's launch options; a project without any starts from those remembered here
+    // before projects held them.
+    if (m_document->launchOptions() == LaunchOptions())
+        m_document->adoptLaunchOptions(settings.launchOptions(root));
 }
 
 void StageController::runAll()

@@ -24,8 +24,9 @@ public:
     StageController(Document *document, StageRunner *runner, Traceability *traceability,
                     LogView *log, QObject *parent = nullptr);
 
-    /// Switches to another workspace: an empty model, its remembered launch options and the
-    /// selection of its last session (restored when the first result arrives).
+    /// Switches to another workspace: an empty model, its project's launch options (else those
+    /// remembered for it) and the selection of its last session (restored when the first
+    /// result arrives).
     void setWorkspace(const QString &root);
     QString workspace() const { return m_workspace; }
 

@@ -15,12 +15,13 @@ Document::Document(QObject *parent) : QObject(parent)
 {
     m_autosave.setSingleShot(true);
     m_autosave.setInterval(2000);
-    connect(&m_autosave, &QTimer::timeout, this, [this] { saveDecisions(); });
+    connect(&m_autosave, &QTimer::timeout, this, [this] { writeAutosave(); });
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this] { updateModified(); });
 }
 
 Document::~Document()
 {
-    saveDecisions();
+    writeAutosave(); // not a save: the next open offers to recover it
 }
 
 void Document::emitChange(DocumentChange::Parts parts, const QString &id)
@@ -30,18 +31,22 @@ void Document::emitChange(DocumentChange::Parts parts, const QString &id)
 
 void Document::setRecovery(Recovery recovery)
 {
-    // The decisions belong to the workspace shown so far: on disk before it is replaced. If
-    // they cannot be written and the same workspace comes back, they are kept in memory.
+    // A re-run of the same workspace keeps the project in memory, modified or not; another
+    // workspace's project replaces it, its changes kept in the autosave side file first.
     const bool sameWorkspace = recovery.nodes.workspaceRoot == workspaceRoot();
     const QList<SuggestionDecision> keyed = keyedDecisions(); // by the keys of the old model
     const QList<Suggestion> suggestions = sameWorkspace ? keyedSuggestions() : QList<Suggestion>{};
-    const bool saved = saveDecisions();
+    const bool modified = isModified();
+    if (!sameWorkspace)
+        writeAutosave();
+    const LaunchOptions optionsBefore = m_launchOptions;
     DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
     if (hasSuggestionReport())
         change.parts |= DocumentChange::Suggestions;
     Q_EMIT aboutToChange(change);
     m_corrected.reset();
     m_keys.reset();
+    m_modifiedOutside = sameWorkspace && modified; // undo history goes, the changes stay
     m_undoStack.clear();
     m_nodes = std::move(recovery.nodes);
     m_launch = std::move(recovery.launch);
@@ -49,16 +54,22 @@ void Document::setRecovery(Recovery recovery)
     m_analysisDescriptions.clear();
     for (const AtomicNode &n : m_nodes.nodes)
         m_analysisDescriptions.insert(n.id, n.description);
-    if (sameWorkspace && !saved)
-        bindDecisions(keyed); // not on disk: re-bound from memory, by key
-    else
+    if (sameWorkspace && !m_migrationPending) {
+        bindDecisions(keyed); // re-bound from memory, by key
+    } else {
+        if (m_chosenProject && m_chosenProject->first != workspaceRoot())
+            m_chosenProject.reset(); // that project belongs to another workspace
         loadDecisions();
+    }
+    if (m_launchOptions != optionsBefore)
+        change.parts |= DocumentChange::LaunchOptions;
     // The suggestions were made on the old model: they stay, by key, where their subject is
     // still there (its id may be another now), and go where it is gone.
     if (sameWorkspace)
         bindSuggestions(suggestions);
     else
         clearSuggestions();
+    updateModified();
     Q_EMIT changed(change);
 }
 
@@ -85,6 +96,16 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
 }
 
 void Document::setLaunchOptions(const LaunchOptions &options)
+{
+    if (options == m_launchOptions)
+        return;
+    m_launchOptions = options;
+    m_modifiedOutside = true; // not an undo step
+    markDecisionsChanged();
+    emitChange(DocumentChange::LaunchOptions);
+}
+
+void Document::adoptLaunchOptions(const LaunchOptions &options)
 {
     if (options == m_launchOptions)
         return;
@@ -288,6 +309,10 @@ void Document::bindDecisions(const QList<SuggestionDecision> &keyed)
 Project Document::project() const
 {
     Project p = m_project;
+    p.launch = m_launchOptions;
+    p.workspace = m_projectPath.isEmpty()
+                      ? QString()
+                      : ProjectFile::workspaceField(m_projectPath, workspaceRoot());
     p.decisions = keyedDecisions();
     std::sort(p.decisions.begin(), p.decisions.end(),
               [](const auto &a, const auto &b) { return a.key() < b.key(); });
@@ -493,9 +518,14 @@ void Document::loadDecisions()
 {
     m_project = {};
     m_unsaved = false;
-    m_projectPath = ProjectFile::locate(workspaceRoot());
+    m_modifiedOutside = false;
+    m_migrationPending = false;
+    const bool chosen = m_chosenProject && m_chosenProject->first == workspaceRoot();
+    setProjectPath(chosen ? m_chosenProject->second : ProjectFile::locate(workspaceRoot()));
     QList<SuggestionDecision> keyed;
-    if (QFileInfo::exists(m_projectPath)) {
+    const QString legacy =
+        workspaceRoot().isEmpty() || chosen ? QString() : DecisionStore::path(workspaceRoot());
+    if (!m_projectPath.isEmpty() && QFileInfo::exists(m_projectPath)) {
         QString error;
         if (ProjectFile::read(m_projectPath, &m_project, &error)) {
             keyed = m_project.decisions;
@@ -508,22 +538,26 @@ void Document::loadDecisions()
                                                "rosarch::Document", "%1\nThe file was kept as %2.")
                                                .arg(error, kept));
         }
-    } else if (const QString legacy = DecisionStore::path(workspaceRoot());
-               QFileInfo::exists(legacy)) {
+    } else if (!legacy.isEmpty() && QFileInfo::exists(legacy)) {
         // Decisions of an earlier version, by position: taken over once, by the ids of the
-        // model they are opened with, then written as the project and the old file set aside.
-        const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
-        for (const SuggestionDecision &d : DecisionStore::load(legacy)) {
-            SuggestionDecision k;
-            if (CorrectedModel::keyed(d, keys, &k))
-                keyed.append(k);
+        // model they are opened with (not an empty one), then written as the project and the
+        // old file set aside.
+        m_migrationPending = m_nodes.nodes.isEmpty();
+        if (!m_migrationPending) {
+            const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+            for (const SuggestionDecision &d : DecisionStore::load(legacy)) {
+                SuggestionDecision k;
+                if (CorrectedModel::keyed(d, keys, &k))
+                    keyed.append(k);
+            }
+            QFile::rename(legacy, legacy + QStringLiteral(".migrated"));
+            m_modifiedOutside = !keyed.isEmpty();
         }
-        QFile::rename(legacy, legacy + QStringLiteral(".migrated"));
-        m_unsaved = !keyed.isEmpty();
     }
+    m_launchOptions = m_project.launch;
     bindDecisions(keyed);
-    if (m_unsaved)
-        saveDecisions();
+    if (m_modifiedOutside)
+        saveDecisions(); // migrated: on disk as the old file was
 }
 
 void Document::applyStoredDescriptions()
@@ -536,28 +570,166 @@ void Document::markDecisionsChanged()
     m_unsaved = true;
     // Started by the first unsaved change, not restarted by later ones: a burst of decisions,
     // undos and redos is written once, and a person who keeps deciding faster than the
-    // interval still has every decision on disk within one interval (what a crash can lose).
+    // interval still has every change in the side file within one interval (what a crash can
+    // lose).
     if (!m_autosave.isActive())
         m_autosave.start();
+    updateModified();
 }
 
-bool Document::saveDecisions()
+bool Document::isModified() const
+{
+    return m_modifiedOutside || !m_undoStack.isClean();
+}
+
+void Document::updateModified()
+{
+    const bool modified = isModified();
+    if (modified == m_modifiedShown)
+        return;
+    m_modifiedShown = modified;
+    Q_EMIT modifiedChanged(modified);
+}
+
+void Document::setProjectPath(const QString &path)
+{
+    if (path == m_projectPath)
+        return;
+    m_projectPath = path;
+    Q_EMIT projectPathChanged(path);
+}
+
+QString Document::autosaveFile() const
+{
+    if (workspaceRoot().isEmpty())
+        return {};
+    // A new project never saved keeps its changes where the workspace's project would.
+    return ProjectFile::autosavePath(m_projectPath.isEmpty() ? ProjectFile::locate(workspaceRoot())
+                                                             : m_projectPath);
+}
+
+bool Document::writeAutosave()
 {
     m_autosave.stop();
     if (!m_unsaved)
         return true;
-    const QString path = decisionsPath();
-    if (path.isEmpty()) { // no workspace: nothing to keep them with
+    const QString side = autosaveFile();
+    if (side.isEmpty() || !isModified()) { // no workspace, or back to what the file holds
+        if (!side.isEmpty())
+            QFile::remove(side);
         m_unsaved = false;
         return true;
     }
+    Project p = project();
+    p.workspace = ProjectFile::workspaceField(side, workspaceRoot());
     QString error;
-    if (!ProjectFile::write(path, project(), &error)) {
-        Q_EMIT decisionsSaveFailed(error); // kept in memory; the next change or save tries again
+    if (!ProjectFile::write(side, p, &error)) {
+        // kept in memory; the next change, save or close tries again
+        Q_EMIT decisionsSaveFailed(
+            QCoreApplication::translate("rosarch::Document", "autosave: %1").arg(error));
         return false;
     }
     m_unsaved = false;
     return true;
+}
+
+bool Document::saveDecisions()
+{
+    if (workspaceRoot().isEmpty()) { // no workspace: nothing to keep them with
+        m_autosave.stop();
+        m_unsaved = false;
+        return true;
+    }
+    if (m_projectPath.isEmpty())
+        return false; // a new project: saveProjectAs
+    return saveProjectAs(m_projectPath);
+}
+
+bool Document::saveProjectAs(const QString &file)
+{
+    m_autosave.stop();
+    Project p = project();
+    p.workspace = ProjectFile::workspaceField(file, workspaceRoot());
+    QString error;
+    if (!ProjectFile::write(file, p, &error)) {
+        Q_EMIT decisionsSaveFailed(error); // kept in memory and modified
+        if (m_unsaved)
+            m_autosave.start();
+        return false;
+    }
+    if (const QString side = autosaveFile(); !side.isEmpty())
+        QFile::remove(side);
+    if (file != ProjectFile::locate(workspaceRoot()))
+        m_chosenProject = std::make_pair(workspaceRoot(), file);
+    setProjectPath(file);
+    QFile::remove(autosaveFile());
+    m_unsaved = false;
+    m_modifiedOutside = false;
+    m_undoStack.setClean();
+    updateModified();
+    return true;
+}
+
+void Document::discardChanges()
+{
+    m_autosave.stop();
+    discardAutosave();
+    m_unsaved = false;
+    m_modifiedOutside = false;
+    m_undoStack.setClean();
+    updateModified();
+}
+
+void Document::discardAutosave()
+{
+    if (const QString side = autosaveFile(); !side.isEmpty())
+        QFile::remove(side);
+}
+
+bool Document::recoverAutosave(QString *error)
+{
+    const QString side = autosaveFile();
+    Project recovered;
+    if (side.isEmpty() || !ProjectFile::read(side, &recovered, error))
+        return false;
+    reloadWith([this, &recovered] {
+        m_project = recovered;
+        m_project.workspace.clear();
+        m_launchOptions = recovered.launch;
+        bindDecisions(recovered.decisions);
+        m_modifiedOutside = true; // the side file holds it, the project file does not
+        m_unsaved = false;
+    });
+    return true;
+}
+
+void Document::setProjectFile(const QString &workspaceRoot, const QString &file)
+{
+    m_chosenProject = std::make_pair(workspaceRoot, file);
+    if (!workspaceRoot.isEmpty() && workspaceRoot == this->workspaceRoot())
+        reloadWith([this] { loadDecisions(); });
+}
+
+void Document::reloadWith(const std::function<void()> &load)
+{
+    const LaunchOptions before = m_launchOptions;
+    DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
+    Q_EMIT aboutToChange(change);
+    m_autosave.stop();
+    m_corrected.reset();
+    for (AtomicNode &n : m_nodes.nodes)
+        n.description = m_analysisDescriptions.value(n.id, n.description);
+    m_modifiedOutside = false;
+    m_undoStack.clear();
+    load();
+    if (m_launchOptions != before)
+        change.parts |= DocumentChange::LaunchOptions;
+    updateModified();
+    Q_EMIT changed(change);
+    if (hasSuggestionReport()) {
+        SuggestionReport report = m_suggestionReport; // statuses from this project's decisions
+        setSuggestions(std::move(report));
+    }
 }
 
 } // namespace rosarch

@@ -17,15 +17,17 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <functional>
 #include <optional>
 
 namespace rosarch {
 
 /// The open project: the workspace, the recovered model and the undo stack for every
 /// change a person makes to it. Views read from here; edits go through commands. Every change
-/// is announced by one signal, `changed`, saying what changed. A person's decisions are saved
-/// atomically, at most a few seconds after they change (autosave), before another workspace
-/// replaces them, and when the document is destroyed; undo and redo do not write to disk.
+/// is announced by one signal, `changed`, saying what changed. The project file is written when
+/// a person saves; until then the changes are modified state, kept a few seconds after they
+/// happen in the autosave side file (ProjectFile::autosavePath), also before another workspace
+/// replaces them and when the document is destroyed, so a crash loses at most that much.
 class Document : public QObject
 {
     Q_OBJECT
@@ -51,8 +53,12 @@ public:
     /// Replaces only the results of stages 2 and 3 (a re-run of stage 2); the atomic nodes
     /// and their undo history stay.
     void setLaunchDependencies(LaunchDependencies launch, Architecture architecture = {});
-    /// Stores what the next stage 2 run uses; it does not run anything.
+    /// Stores what the next stage 2 run uses (a change of the project); it does not run
+    /// anything.
     void setLaunchOptions(const LaunchOptions &options);
+    /// Launch options a project that has none starts from (remembered in the settings before
+    /// projects held them): used like setLaunchOptions, but not a change of the project.
+    void adoptLaunchOptions(const LaunchOptions &options);
 
     /// Pushes an undoable change of a node's description: a correction (`describe`) kept in
     /// the project, so re-running the stages keeps it.
@@ -85,23 +91,49 @@ public:
     /// The model as accepted (AcceptedModel::apply of the recovery and the decisions): what the
     /// diagram draws and the exports write. Computed once per change of either.
     const Recovery &accepted() const;
-    /// The project file of the workspace ("" without a workspace): its own
-    /// rosarch.project.json, else the one kept for it under the application data.
+    /// The project file ("" without a workspace and for a new project never saved): the one
+    /// opened, else the workspace's own rosarch.project.json, else the one kept for it under
+    /// the application data.
     QString decisionsPath() const;
     /// The project as it would be saved now: decisions by stable key (those that match
     /// nothing in this model kept as they were), corrections, launch options.
     Project project() const;
     /// Decisions and corrections of the project that match nothing in the current model.
     const QList<Orphan> &orphans() const;
-    /// True while a decision is not on disk yet (the autosave is pending).
+    /// True while a change is not in the autosave side file yet (the autosave is pending).
     bool hasUnsavedDecisions() const { return m_unsaved; }
-    /// Writes the decisions now if any are not on disk; false when writing failed (then
-    /// decisionsSaveFailed says why; they stay in memory and the next decision, workspace
-    /// switch or close tries again).
+    /// Saves the project to its file (decisionsPath()) and removes the autosave side file;
+    /// false when writing failed (then decisionsSaveFailed says why; the changes stay in memory
+    /// and modified) or the project has no file yet (a new project: saveProjectAs).
     bool saveDecisions();
-    /// How long after the first unsaved decision the autosave writes (default 2 s): later
-    /// decisions do not postpone it, so a crash loses at most this much.
+    /// Saves the project to `file`, which becomes its file (a `workspace` field says where the
+    /// workspace is when the file is not in it); false as saveDecisions.
+    bool saveProjectAs(const QString &file);
+    /// How long after the first change the autosave writes the side file (default 2 s): later
+    /// changes do not postpone it, so a crash loses at most this much.
     void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
+    /// Writes the autosave side file now if a change is not in it (removes it when the project
+    /// is back to its saved state); false when it could not be written (decisionsSaveFailed).
+    bool writeAutosave();
+
+    /// True while the project differs from its file: a change since the last save or load that
+    /// undo has not taken back.
+    bool isModified() const;
+    /// True for a new project of a workspace that was never saved (Save asks where).
+    bool isUntitled() const { return m_projectPath.isEmpty() && !workspaceRoot().isEmpty(); }
+    /// The autosave side file of this project ("" without a workspace).
+    QString autosaveFile() const;
+    /// Replaces the project with the autosave side file's, as modified state (what a crash left
+    /// behind); false with `error` when it cannot be read (the side file stays).
+    bool recoverAutosave(QString *error);
+    /// Removes the autosave side file (a person chose not to recover it).
+    void discardAutosave();
+    /// Forgets that the project is modified and removes its autosave side file: a person chose
+    /// to discard the changes (the window closes or another project replaces this one).
+    void discardChanges();
+    /// Makes `file` the project of `workspaceRoot` ("" = a new, empty project never saved); read
+    /// now when that workspace is open (its undo history cleared), else when it opens.
+    void setProjectFile(const QString &workspaceRoot, const QString &file);
 
     // Corrections (issue 12, blueprint §5): a person's edits of the model, kept in the project
     // by stable key and applied by CorrectedModel; accepted() shows them.
@@ -146,6 +178,10 @@ Q_SIGNALS:
     /// The project file could not be read; `message` says which file, why, and where the
     /// unreadable file was kept.
     void projectLoadFailed(const QString &message);
+    /// The project became modified or was saved (or its changes undone or discarded).
+    void modifiedChanged(bool modified);
+    /// The project's file changed (saved under another name, another project opened).
+    void projectPathChanged(const QString &path);
 
 private:
     friend class DecideSuggestionCommand;
@@ -175,6 +211,11 @@ private:
     /// Applies the accepted descriptions among the decisions to the nodes (no signals).
     void applyStoredDescriptions();
     void markDecisionsChanged();
+    /// Replaces the project in memory by what `load` puts there (descriptions as analysis
+    /// found them, undo history cleared, the suggestions' statuses from its decisions).
+    void reloadWith(const std::function<void()> &load);
+    void updateModified();
+    void setProjectPath(const QString &path);
     bool hasSuggestionReport() const;
     /// Clears the suggestions (no signals); true when there were any.
     bool clearSuggestions();
@@ -194,7 +235,12 @@ private:
     QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     QTimer m_autosave;
-    bool m_unsaved = false;
+    bool m_unsaved = false;          ///< a change is not in the autosave side file
+    bool m_modifiedOutside = false;  ///< modified by what the undo stack does not hold
+    bool m_modifiedShown = false;    ///< as last announced by modifiedChanged
+    bool m_migrationPending = false; ///< old decisions.json waits for a model to key them by
+    /// The project file a person chose for a workspace (setProjectFile): workspace → file.
+    std::optional<std::pair<QString, QString>> m_chosenProject;
 };
 
 } // namespace rosarch

@@ -53,14 +53,36 @@ QString locate(const QString &workspaceRoot)
     if (workspaceRoot.isEmpty())
         return {};
     const QString own = defaultPath(workspaceRoot);
-    if (QFileInfo::exists(own))
-        return own;
+    return QFileInfo::exists(own) ? own : appDataPath(workspaceRoot);
+}
+
+QString appDataPath(const QString &workspaceRoot)
+{
     const QString absolute = QDir::cleanPath(QFileInfo(workspaceRoot).absoluteFilePath());
     const QByteArray hash =
         QCryptographicHash::hash(absolute.toUtf8(), QCryptographicHash::Sha1).toHex();
     return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
         .filePath(
             QStringLiteral("projects/%1/rosarch.project.json").arg(QString::fromLatin1(hash)));
+}
+
+QString workspaceField(const QString &file, const QString &workspaceRoot)
+{
+    const QString folder = QDir::cleanPath(QFileInfo(file).absolutePath());
+    const QString root = QDir::cleanPath(QFileInfo(workspaceRoot).absoluteFilePath());
+    if (folder == root)
+        return {};
+    if (folder.startsWith(root + QLatin1Char('/')))
+        return QDir::cleanPath(QDir(folder).relativeFilePath(root));
+    return root;
+}
+
+QString workspaceOf(const QString &file, const Project &project)
+{
+    const QDir folder = QFileInfo(file).absoluteDir();
+    if (project.workspace.isEmpty())
+        return QDir::cleanPath(folder.absolutePath());
+    return QDir::cleanPath(folder.absoluteFilePath(project.workspace));
 }
 
 QString autosavePath(const QString &file)
@@ -84,6 +106,8 @@ QByteArray toJson(const Project &project)
     if (!QCoreApplication::applicationVersion().isEmpty())
         o.insert(QLatin1String("generator"),
                  QStringLiteral("rosarch ") + QCoreApplication::applicationVersion());
+    if (!project.workspace.isEmpty())
+        o.insert(QLatin1String("workspace"), project.workspace);
     QJsonObject launch;
     if (!project.launch.rootFile.isEmpty())
         launch.insert(QLatin1String("root"), project.launch.rootFile);
@@ -142,6 +166,7 @@ bool fromJson(const QByteArray &data, Project *project, QString *error)
         return false;
     }
     Project p;
+    p.workspace = o.value(QLatin1String("workspace")).toString();
     const QJsonObject launch = o.value(QLatin1String("launch")).toObject();
     p.launch.rootFile = launch.value(QLatin1String("root")).toString();
     const QJsonObject args = launch.value(QLatin1String("arguments")).toObject();

@@ -19,6 +19,9 @@ struct Project
     static constexpr int kVersion = 1;
 
     LaunchOptions launch;
+    /// Where the workspace is, as the file says it: "" = the file's folder, else a path relative
+    /// to that folder (a project kept inside the workspace) or an absolute one (kept elsewhere).
+    QString workspace;
     /// Decisions on suggestions; targetId and memberIds hold stable keys (StableKeys), sorted by
     /// SuggestionDecision::key.
     QList<SuggestionDecision> decisions;
@@ -43,6 +46,13 @@ QString defaultPath(const QString &workspaceRoot);
 /// The project of a workspace: its own rosarch.project.json when there is one, else the one
 /// kept for it under the application data (`projects/<sha1 of the absolute path>/`).
 QString locate(const QString &workspaceRoot);
+/// Where the project of a workspace without its own file is kept under the application data.
+QString appDataPath(const QString &workspaceRoot);
+/// The `workspace` field for a project of `workspaceRoot` written to `file` ("" when the file
+/// is in the workspace's top folder, relative when inside the workspace, else absolute).
+QString workspaceField(const QString &file, const QString &workspaceRoot);
+/// The workspace of the project `project` read from `file` (the field resolved against it).
+QString workspaceOf(const QString &file, const Project &project);
 /// The autosave side file of `file`: `.<name>.autosave` next to it.
 QString autosavePath(const QString &file);
 /// The schema (JSON Schema subset) every project file is checked against.

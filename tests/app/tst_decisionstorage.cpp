@@ -1,6 +1,7 @@
-// A person's decisions on disk: kept per workspace, written by the autosave (not on every undo
-// and redo), before another workspace replaces them and when the document goes, and kept in
-// memory when the disk refuses them.
+// A person's decisions on disk: kept per workspace in the project file when a person saves;
+// until then in the autosave side file, written by the autosave (not on every undo and redo),
+// before another workspace replaces them and when the document goes; kept in memory when the
+// disk refuses them.
 #include "document.h"
 #include "project.h"
 #include "suggestionfixture.h"
@@ -46,7 +47,11 @@ private:
 
 private Q_SLOTS:
     void initTestCase() { QVERIFY(m_fixture.setUp()); }
-    void init() { QFile::remove(ProjectFile::locate(exampleWorkspace())); }
+    void init()
+    {
+        QFile::remove(ProjectFile::locate(exampleWorkspace()));
+        QFile::remove(ProjectFile::autosavePath(ProjectFile::locate(exampleWorkspace())));
+    }
 
     void decisionsAreKeptWithTheProject()
     {
@@ -66,6 +71,10 @@ private Q_SLOTS:
             acceptedValue = d.value;
             QVERIFY(doc.acceptSuggestion(d.id));
             QVERIFY(doc.rejectSuggestion(first(doc, Suggestion::Kind::SubsystemGrouping).id));
+            QVERIFY(doc.isModified());
+            QVERIFY(!QFileInfo::exists(path)); // written when a person saves
+            QVERIFY(doc.saveDecisions());
+            QVERIFY(!doc.isModified());
         }
         const QByteArray stored = test::readFile(path);
         QVERIFY(stored.contains("\"accepted\""));
@@ -111,6 +120,7 @@ private Q_SLOTS:
             target = doc.atomicNodes().node(d.targetId)->qualifiedName;
             value = d.value;
             QVERIFY(doc.acceptSuggestion(d.id));
+            QVERIFY(doc.saveDecisions());
         }
         Recovery shifted = m_recovery;
         AtomicNode inserted;
@@ -139,8 +149,11 @@ private Q_SLOTS:
     void undoAndRedoDoNotWriteTheAutosaveDoes()
     {
         const QString path = ProjectFile::locate(exampleWorkspace());
+        const QString side = ProjectFile::autosavePath(path);
+        QFile::remove(side);
         Document doc;
         load(doc);
+        QCOMPARE(doc.autosaveFile(), side);
         const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
         QVERIFY(doc.acceptSuggestion(d.id));
         QVERIFY(doc.hasUnsavedDecisions());
@@ -149,51 +162,85 @@ private Q_SLOTS:
             doc.undoStack()->redo();
         }
         QVERIFY(!QFileInfo::exists(path)); // nothing written yet
-        QVERIFY(doc.saveDecisions());
+        QVERIFY(!QFileInfo::exists(side));
+        QVERIFY(doc.writeAutosave());
         QVERIFY(!doc.hasUnsavedDecisions());
+        QCOMPARE(storedDecisions(side), 1);
+        QVERIFY(!QFileInfo::exists(path)); // the autosave never writes the project itself
+        QVERIFY(doc.saveDecisions());
         QCOMPARE(storedDecisions(path), 1);
+        QVERIFY(!QFileInfo::exists(side)); // a save takes the side file's place
 
         // The autosave writes a burst of changes once, an interval after the first one.
         doc.setAutosaveInterval(100);
         doc.undoStack()->undo();
+        QVERIFY(doc.isModified());
+        QVERIFY(!QFileInfo::exists(side));
+        QTRY_VERIFY(QFileInfo::exists(side));
+        QCOMPARE(storedDecisions(side), 0);
         QCOMPARE(storedDecisions(path), 1);
-        QTRY_COMPARE(storedDecisions(path), 0);
         QVERIFY(!doc.hasUnsavedDecisions());
-
-        // Replacing the workspace writes what is pending first; so does closing the document.
-        doc.setAutosaveInterval(60000);
+        // Back at the saved state, the side file goes.
         doc.undoStack()->redo();
+        QVERIFY(!doc.isModified());
+        QTRY_VERIFY(!QFileInfo::exists(side));
+
+        // Replacing the workspace keeps what is pending in the side file first; so does closing
+        // the document. The project file stays as saved.
+        doc.setAutosaveInterval(60000);
+        doc.undoStack()->undo();
         QVERIFY(doc.hasUnsavedDecisions());
         doc.setRecovery({});
+        QCOMPARE(storedDecisions(side), 0);
+        QVERIFY(QFileInfo::exists(side));
         QCOMPARE(storedDecisions(path), 1);
+        QFile::remove(side);
         {
             Document other;
             load(other);
             other.setAutosaveInterval(60000);
             QVERIFY(other.rejectSuggestion(first(other, Suggestion::Kind::SubsystemGrouping).id));
-            QCOMPARE(storedDecisions(path), 1);
+            QVERIFY(!QFileInfo::exists(side));
         }
-        QCOMPARE(storedDecisions(path), 2);
+        QCOMPARE(storedDecisions(side), 2);
+        QCOMPARE(storedDecisions(path), 1);
+
+        // What the side file holds comes back as modified state; discarding removes it.
+        Document recovered;
+        load(recovered);
+        QCOMPARE(recovered.decisions().size(), 1);
+        QString error;
+        QVERIFY2(recovered.recoverAutosave(&error), qPrintable(error));
+        QCOMPARE(recovered.decisions().size(), 2);
+        QVERIFY(recovered.isModified());
+        QCOMPARE(first(recovered, Suggestion::Kind::SubsystemGrouping).status,
+                 Suggestion::Status::Rejected);
+        recovered.discardChanges();
+        QVERIFY(!recovered.isModified());
+        QVERIFY(!QFileInfo::exists(side));
+        QCOMPARE(storedDecisions(path), 1);
     }
 
     void aBurstOfChangesDoesNotPostponeTheAutosave()
     {
         // A crash loses at most one interval of decisions, even while a person keeps deciding,
         // undoing and redoing faster than the interval: later changes do not restart it.
-        const QString path = ProjectFile::locate(exampleWorkspace());
+        const QString side = ProjectFile::autosavePath(ProjectFile::locate(exampleWorkspace()));
+        QFile::remove(side);
         Document doc;
         load(doc);
         doc.setAutosaveInterval(300);
         QVERIFY(doc.acceptSuggestion(first(doc, Suggestion::Kind::NodeDescription).id));
         QElapsedTimer burst;
         burst.start();
-        while (!QFileInfo::exists(path) && burst.elapsed() < 3000) {
+        while (!QFileInfo::exists(side) && burst.elapsed() < 3000) {
             QTest::qWait(50);
             doc.undoStack()->undo();
             doc.undoStack()->redo();
         }
-        QVERIFY2(QFileInfo::exists(path), "nothing written during three seconds of changes");
-        QCOMPARE(storedDecisions(path), 1); // written between a redo and an undo
+        QVERIFY2(QFileInfo::exists(side), "nothing written during three seconds of changes");
+        QCOMPARE(storedDecisions(side), 1); // written between a redo and an undo
+        doc.discardChanges();
     }
 
     void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
@@ -214,6 +261,9 @@ private Q_SLOTS:
         QVERIFY(doc.acceptSuggestion(d.id));
         QVERIFY(!doc.saveDecisions());
         QCOMPARE(failed.size(), 1);
+        QVERIFY(!doc.writeAutosave()); // the side file would go next to it
+        QCOMPARE(failed.size(), 2);
+        QVERIFY(doc.isModified());
         // Running the stages again on the same workspace keeps the decision in memory.
         doc.setRecovery(m_recovery);
         QCOMPARE(doc.decisions().size(), 1);
@@ -222,6 +272,7 @@ private Q_SLOTS:
         QFile::remove(folder);
         QVERIFY(doc.saveDecisions());
         QCOMPARE(storedDecisions(path), 1);
+        QVERIFY(!doc.isModified());
     }
 };
 

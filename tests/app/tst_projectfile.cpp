@@ -1,0 +1,408 @@
+// The project file as a desktop user expects it (issue 12): Save / Save As / Open Project
+// through the window, the modified indicator, recent projects, Save / Discard / Cancel before
+// changes are replaced, the autosave side file and the offer to recover it after a crash, and
+// a broken or newer project file explained and kept.
+#include "appsettings.h"
+#include "document.h"
+#include "logview.h"
+#include "mainwindow.h"
+#include "project.h"
+#include "projectcontroller.h"
+#include "stagerunner.h"
+#include "suggestionengine.h"
+#include "testsupport.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QDirIterator>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+/// A copy of resources/example_ws in `dir`: a workspace the tests may write a project into.
+QString copyExampleWorkspace(const QTemporaryDir &dir)
+{
+    const QString source =
+        QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(QStringLiteral("resources/example_ws"));
+    const QString target = dir.filePath(QStringLiteral("example_ws"));
+    QDirIterator it(source, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString file = it.next();
+        const QString copy = QDir(target).filePath(QDir(source).relativeFilePath(file));
+        QDir().mkpath(QFileInfo(copy).path());
+        QFile::copy(file, copy);
+    }
+    return QFileInfo(target).canonicalFilePath();
+}
+
+/// Opens `workspace` in `w` and waits for stages 1-3.
+bool openAndRun(MainWindow &w, const QString &workspace)
+{
+    QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+    w.openWorkspace(workspace);
+    return finished.wait(60000);
+}
+
+/// The deterministic suggestions of the open model; accepts the first description and returns
+/// its value.
+QString decideOne(MainWindow &w)
+{
+    Document *doc = w.document();
+    const Recovery model{doc->atomicNodes(), doc->launchDependencies(), doc->architecture()};
+    doc->setSuggestions(
+        SuggestionEngine(doc->workspaceRoot(), model, SuggestionEngine::Options()).run());
+    for (const Suggestion &s : doc->suggestions())
+        if (s.kind == Suggestion::Kind::NodeDescription) {
+            doc->acceptSuggestion(s.id);
+            return s.value;
+        }
+    return {};
+}
+
+QMessageBox *box(const QWidget &w, const QString &name)
+{
+    for (QMessageBox *b : w.findChildren<QMessageBox *>(name))
+        if (b->isVisible())
+            return b;
+    return nullptr;
+}
+
+void answer(QMessageBox *b, QMessageBox::StandardButton button)
+{
+    b->button(button)->click();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
+qsizetype storedDecisions(const QString &file)
+{
+    Project p;
+    QString error;
+    return ProjectFile::read(file, &p, &error) ? p.decisions.size() : -1;
+}
+
+} // namespace
+
+class TestProjectFile : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings(QStringLiteral("rosarch"), QCoreApplication::applicationName()).clear();
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    }
+
+    void saveMarksCleanAndOpenProjectRestores()
+    {
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        const QString file = ProjectFile::defaultPath(ws);
+        QString value;
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(openAndRun(w, ws));
+            QVERIFY(w.windowTitle().contains(QStringLiteral("example_ws[*]")));
+            QVERIFY(!w.isWindowModified());
+            QVERIFY(!box(w, QStringLiteral("recoverAutosaveBox")));
+            value = decideOne(w);
+            QVERIFY(!value.isEmpty());
+            QVERIFY(w.isWindowModified());
+            QVERIFY(w.document()->isModified());
+            QVERIFY(!QFileInfo::exists(file)); // nothing written before Save
+
+            w.projects()->saveAction()->trigger();
+            QVERIFY(QFileInfo::exists(file)); // into the workspace, not the application data
+            QVERIFY(test::readFile(file).contains(value.toUtf8()));
+            QCOMPARE(storedDecisions(file), 1);
+            QVERIFY(!w.isWindowModified());
+            QCOMPARE(w.document()->decisionsPath(), file);
+            QVERIFY(!QFileInfo::exists(ProjectFile::autosavePath(file)));
+            QCOMPARE(AppSettings().recentProjects().value(0), file);
+
+            // Undo marks it modified, redo back to the saved state clears it.
+            w.document()->undoStack()->undo();
+            QVERIFY(w.isWindowModified());
+            w.document()->undoStack()->redo();
+            QVERIFY(!w.isWindowModified());
+
+            // The project holds the launch options as well.
+            LaunchOptions options;
+            options.arguments = {{QStringLiteral("robot"), QStringLiteral("r7")}};
+            w.document()->setLaunchOptions(options);
+            QVERIFY(w.isWindowModified());
+            QVERIFY(w.projects()->save());
+            QVERIFY(test::readFile(file).contains("\"r7\""));
+            w.close();
+            QVERIFY(!w.isVisible()); // nothing unsaved: no question
+        }
+        // Open Project on the file opens its workspace with its decisions and launch options.
+        MainWindow again;
+        again.show();
+        QSignalSpy finished(again.runner(), &StageRunner::stageFinished);
+        QVERIFY(again.projects()->openProject(file));
+        QCOMPARE(again.workspace(), ws);
+        QCOMPARE(again.document()->launchOptions().arguments.value(QStringLiteral("robot")),
+                 QStringLiteral("r7"));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(again.document()->decisions().size(), 1);
+        bool described = false;
+        for (const AtomicNode &n : again.document()->atomicNodes().nodes)
+            described |= n.description == value;
+        QVERIFY(described);
+        QVERIFY(!again.isWindowModified());
+    }
+
+    void saveAsElsewhereNamesTheWorkspace()
+    {
+        QTemporaryDir dir;
+        QTemporaryDir elsewhere;
+        const QString ws = copyExampleWorkspace(dir);
+        MainWindow w;
+        QVERIFY(openAndRun(w, ws));
+        const QString value = decideOne(w);
+        // outside the workspace: an absolute path; inside a subfolder: relative
+        const QString outside = elsewhere.filePath(QStringLiteral("review.project.json"));
+        w.projects()->setFileChooser([&](const QString &, const QString &start, bool forSaving) {
+            return forSaving && start == ProjectFile::defaultPath(ws) ? outside : QString();
+        });
+        w.projects()->saveAsAction()->trigger();
+        QVERIFY(!w.isWindowModified());
+        Project saved;
+        QString error;
+        QVERIFY2(ProjectFile::read(outside, &saved, &error), qPrintable(error));
+        QCOMPARE(saved.workspace, ws);
+        QCOMPARE(ProjectFile::workspaceOf(outside, saved), ws);
+        QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
+        QVERIFY(w.windowTitle().contains(QStringLiteral("review.project.json")));
+
+        const QString inside = QDir(ws).filePath(QStringLiteral("docs/arch.project.json"));
+        QVERIFY(w.projects()->saveTo(inside));
+        QVERIFY(ProjectFile::read(inside, &saved, &error));
+        QCOMPARE(saved.workspace, QStringLiteral(".."));
+        QCOMPARE(ProjectFile::workspaceOf(inside, saved), ws);
+
+        // The file saved outside opens in another window with its decision.
+        MainWindow other;
+        QSignalSpy finished(other.runner(), &StageRunner::stageFinished);
+        QVERIFY(other.projects()->openProject(outside));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(other.document()->decisionsPath(), outside);
+        QCOMPARE(other.document()->decisions().size(), 1);
+        QCOMPARE(other.document()->decisions().first().proposal, value);
+
+        // Recent projects, newest first; a file that is gone is greyed.
+        QCOMPARE(AppSettings().recentProjects().mid(0, 2), (QStringList{outside, inside}));
+        QFile::remove(inside);
+        other.projects()->updateRecentMenu();
+        const QList<QAction *> actions = other.projects()->recentMenu()->actions();
+        QVERIFY(actions.size() >= 3);
+        QVERIFY(actions.at(0)->text().contains(QStringLiteral("review.project.json")));
+        QVERIFY(actions.at(0)->isEnabled());
+        QVERIFY(actions.at(1)->text().contains(QStringLiteral("arch.project.json")));
+        QVERIFY(!actions.at(1)->isEnabled());
+    }
+
+    void unsavedChangesAskBeforeClosing()
+    {
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndRun(w, ws));
+        decideOne(w);
+        w.document()->setAutosaveInterval(50);
+        QTRY_VERIFY(QFileInfo::exists(w.document()->autosaveFile()));
+        QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
+
+        // Cancel: the window stays, modified.
+        w.close();
+        QMessageBox *ask = box(w, QStringLiteral("unsavedChangesBox"));
+        QVERIFY(ask);
+        QVERIFY(ask->text().contains(QStringLiteral("example_ws")));
+        QVERIFY(w.isVisible());
+        answer(ask, QMessageBox::Cancel);
+        QVERIFY(w.isVisible());
+        QVERIFY(w.isWindowModified());
+
+        // Opening another workspace asks as well; Cancel keeps this one.
+        QTemporaryDir otherDir;
+        const QString otherWs = copyExampleWorkspace(otherDir);
+        w.openWorkspace(otherWs);
+        ask = box(w, QStringLiteral("unsavedChangesBox"));
+        QVERIFY(ask);
+        answer(ask, QMessageBox::Cancel);
+        QCOMPARE(w.workspace(), ws);
+
+        // Discard: the window closes, nothing is written and the side file goes.
+        w.close();
+        ask = box(w, QStringLiteral("unsavedChangesBox"));
+        QVERIFY(ask);
+        answer(ask, QMessageBox::Discard);
+        QVERIFY(!w.isVisible());
+        QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
+        QVERIFY(!QFileInfo::exists(w.document()->autosaveFile()));
+    }
+
+    void saveFromTheQuestionWritesTheProject()
+    {
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndRun(w, ws));
+        const QString value = decideOne(w);
+        w.close();
+        QMessageBox *ask = box(w, QStringLiteral("unsavedChangesBox"));
+        QVERIFY(ask);
+        answer(ask, QMessageBox::Save);
+        QVERIFY(!w.isVisible());
+        QVERIFY(test::readFile(ProjectFile::defaultPath(ws)).contains(value.toUtf8()));
+    }
+
+    void aCrashLeavesChangesToRecover()
+    {
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        const QString side = ProjectFile::autosavePath(ProjectFile::locate(ws));
+        QString value;
+        {
+            auto *w = new MainWindow;
+            QVERIFY(openAndRun(*w, ws));
+            w->document()->setAutosaveInterval(50);
+            value = decideOne(*w);
+            QTRY_VERIFY(QFileInfo::exists(side)); // the autosave, not the project
+            QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
+            QVERIFY(test::readFile(side).contains(value.toUtf8()));
+            delete w; // gone without Save or Discard: the side file stays
+        }
+        QVERIFY(QFileInfo::exists(side));
+        {
+            // Discard: the side file goes, the project is as saved (empty).
+            MainWindow w;
+            QVERIFY(openAndRun(w, ws));
+            QMessageBox *offer = box(w, QStringLiteral("recoverAutosaveBox"));
+            QVERIFY(offer);
+            // names when the changes were kept
+            QVERIFY2(offer->text().contains(
+                         QString::number(QFileInfo(side).lastModified().date().year())),
+                     qPrintable(offer->text()));
+            QVERIFY(w.document()->decisions().isEmpty());
+            test::writeFile(side + QStringLiteral(".copy"), test::readFile(side));
+            answer(offer, QMessageBox::Discard);
+            QVERIFY(!QFileInfo::exists(side));
+            QVERIFY(w.document()->decisions().isEmpty());
+            QVERIFY(!w.isWindowModified());
+        }
+        QVERIFY(QFile::rename(side + QStringLiteral(".copy"), side));
+        // Recover: the decision is back, as modified state.
+        MainWindow w;
+        w.show();
+        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        w.openWorkspace(ws);
+        QMessageBox *offer = box(w, QStringLiteral("recoverAutosaveBox"));
+        QVERIFY(offer);
+        answer(offer, QMessageBox::Yes); // Recover, before the stages finish
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(w.document()->decisions().size(), 1);
+        bool described = false;
+        for (const AtomicNode &n : w.document()->atomicNodes().nodes)
+            described |= n.description == value;
+        QVERIFY(described);
+        QVERIFY(w.isWindowModified());
+        QVERIFY(w.projects()->save());
+        QCOMPARE(storedDecisions(ProjectFile::defaultPath(ws)), 1);
+        QVERIFY(!QFileInfo::exists(side));
+        QVERIFY(!QFileInfo::exists(ProjectFile::autosavePath(ProjectFile::defaultPath(ws))));
+    }
+
+    void aBrokenProjectIsExplainedAndKept_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("not json") << QByteArray("{ \"version\": 1, ") << QStringLiteral("JSON");
+        QTest::newRow("newer") << QByteArray("{\"version\": 99, \"future\": true}")
+                               << QStringLiteral("newer rosarch");
+    }
+
+    void aBrokenProjectIsExplainedAndKept()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, reason);
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        const QString file = ProjectFile::defaultPath(ws);
+        test::writeFile(file, content);
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndRun(w, ws));
+        QMessageBox *error = box(w, QStringLiteral("projectErrorBox"));
+        QVERIFY(error);
+        QVERIFY2(error->text().contains(file), qPrintable(error->text()));
+        QVERIFY2(error->text().contains(reason), qPrintable(error->text()));
+        QVERIFY2(error->text().contains(QStringLiteral("kept as")), qPrintable(error->text()));
+        QVERIFY(w.logView()->logEdit()->toPlainText().contains(file));
+        const QStringList kept =
+            QDir(ws).entryList({QStringLiteral("rosarch.project.json.unreadable-*")});
+        QCOMPARE(kept.size(), 1);
+        QCOMPARE(test::readFile(QDir(ws).filePath(kept.first())), content);
+        QCOMPARE(test::readFile(file), content); // not written over by opening
+        answer(error, QMessageBox::Ok);
+
+        // Save writes a good project; the unreadable one stays where it was kept.
+        decideOne(w);
+        QVERIFY(w.projects()->save());
+        QCOMPARE(storedDecisions(file), 1);
+        QCOMPARE(test::readFile(QDir(ws).filePath(kept.first())), content);
+
+        // Open Project on a broken file says so and opens nothing.
+        const QString broken = dir.filePath(QStringLiteral("broken.project.json"));
+        test::writeFile(broken, content);
+        QVERIFY(!w.projects()->openProject(broken));
+        error = box(w, QStringLiteral("projectErrorBox"));
+        QVERIFY(error);
+        QVERIFY(error->text().contains(broken));
+        QCOMPARE(w.document()->decisionsPath(), file);
+        QCOMPARE(test::readFile(broken), content);
+        answer(error, QMessageBox::Ok);
+    }
+
+    void newProjectStartsEmptyAndSaveAsks()
+    {
+        QTemporaryDir dir;
+        const QString ws = copyExampleWorkspace(dir);
+        MainWindow w;
+        QVERIFY(openAndRun(w, ws));
+        decideOne(w);
+        QVERIFY(w.projects()->save());
+        w.projects()->newAction()->trigger();
+        QVERIFY(w.document()->isUntitled());
+        QVERIFY(w.document()->decisions().isEmpty());
+        QVERIFY(w.windowTitle().contains(QStringLiteral("new project")));
+        const QString chosen = dir.filePath(QStringLiteral("fresh.project.json"));
+        int asked = 0;
+        w.projects()->setFileChooser([&](const QString &, const QString &start, bool forSaving) {
+            ++asked;
+            return forSaving && start == ProjectFile::defaultPath(ws) ? chosen : QString();
+        });
+        w.projects()->saveAction()->trigger();
+        QCOMPARE(asked, 1);
+        QCOMPARE(storedDecisions(chosen), 0);
+        QCOMPARE(storedDecisions(ProjectFile::defaultPath(ws)), 1); // the old one untouched
+        QCOMPARE(w.document()->decisionsPath(), chosen);
+    }
+};
+
+QTEST_MAIN(TestProjectFile)
+#include "tst_projectfile.moc"
