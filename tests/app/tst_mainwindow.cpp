@@ -60,6 +60,15 @@ private Q_SLOTS:
         QVERIFY(QFileInfo(fixture()).isDir());
     }
 
+    void init()
+    {
+        // every test starts without projects: an edit a test left unsaved would otherwise be
+        // offered for recovery (a dialog) when the next one opens the workspace
+        QDir(QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                 .filePath(QStringLiteral("projects")))
+            .removeRecursively();
+    }
+
     void stageOneOnFixture()
     {
         MainWindow w;
