@@ -15,7 +15,10 @@ enum LayoutFlag
     LayoutUnresolved = 0x2,       ///< italic with "?": a name the analysis could not decide
     LayoutExternal = 0x4,         ///< outside the workspace
     LayoutOpenable = 0x8,         ///< an included launch file whose composite can be opened
-    LayoutParameterDerived = 0x10 ///< a port whose name comes from a parameter
+    LayoutParameterDerived = 0x10, ///< a port whose name comes from a parameter
+    LayoutCorrected = 0x20,        ///< a person's correction changed or added it (dashed tint)
+    LayoutSuggested = 0x40,        ///< an accepted suggestion changed it
+    LayoutReviewed = 0x80          ///< a person marked it reviewed (a small ✓)
 };
 
 /// A port of a node: a row on its left (input) or right (output) side.
