@@ -90,10 +90,9 @@ QString instanceName(const NodeInstance &n)
 } // namespace
 
 CorrectionController::CorrectionController(Document *document, AtomicNodePanel *nodePanel,
-                                           LaunchTreePanel *launchPanel,
-                                           DiagramPanel *diagramPanel, Traceability *traceability,
-                                           InspectorPanel *inspector, CorrectionPanel *corrections,
-                                           QWidget *window)
+                                           LaunchTreePanel *launchPanel, DiagramPanel *diagramPanel,
+                                           Traceability *traceability, InspectorPanel *inspector,
+                                           CorrectionPanel *corrections, QWidget *window)
     : QObject(window), m_document(document), m_nodePanel(nodePanel), m_launchPanel(launchPanel),
       m_diagramPanel(diagramPanel), m_traceability(traceability), m_inspector(inspector),
       m_corrections(corrections), m_window(window)
@@ -299,8 +298,7 @@ CorrectionController::Element CorrectionController::diagramElement(const QString
 
 bool CorrectionController::isRemoved(const Element &element)
 {
-    if (element.kind != Kind::Class && element.kind != Kind::Port &&
-        element.kind != Kind::Instance)
+    if (element.kind != Kind::Class && element.kind != Kind::Port && element.kind != Kind::Instance)
         return false;
     return !index().removedBy(element.id).isEmpty();
 }
@@ -397,7 +395,7 @@ InspectorInfo CorrectionController::describe(const Element &e)
         const Channel *ch = findChannel(now.architecture, e.id);
         info.kind = StableKeys::family(e.id) == QLatin1String("topic")     ? tr("Topic")
                     : StableKeys::family(e.id) == QLatin1String("service") ? tr("Service")
-                                                                          : tr("Action");
+                                                                           : tr("Action");
         info.type = ch ? ch->type : QString();
         if (ch)
             marks = ch->marks;
@@ -423,10 +421,10 @@ InspectorInfo CorrectionController::describe(const Element &e)
         info.provenance = tr("corrected");
     else
         info.provenance = tr("recovered by analysis");
-    info.reviewed = marks.reviewed ||
-                    std::any_of(touching.cbegin(), touching.cend(), [](const Correction &c) {
-                        return c.kind == Correction::Kind::Review;
-                    });
+    info.reviewed =
+        marks.reviewed || std::any_of(touching.cbegin(), touching.cend(), [](const Correction &c) {
+            return c.kind == Correction::Kind::Review;
+        });
     info.corrections = index().summary(e.id);
     return info;
 }
@@ -452,8 +450,7 @@ QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *par
         return actions;
     }
     const QKeySequence review(tr("Ctrl+R"));
-    const QString reviewText =
-        describe(e).reviewed ? tr("Unmark Reviewed") : tr("Mark Re&viewed");
+    const QString reviewText = describe(e).reviewed ? tr("Unmark Reviewed") : tr("Mark Re&viewed");
     switch (e.kind) {
     case Kind::Class:
         add(tr("Add &Port\u2026"), {}, [this](const Element &x) { addPort(x); });
@@ -579,7 +576,8 @@ bool CorrectionController::setType(const Element &e)
     CorrectionDialog dialog(
         tr("Set Type"),
         isCanonicalType(p->type)
-            ? tr("Override the interface type of the %1 %2.").arg(portKindName(p->kind), portName(*p))
+            ? tr("Override the interface type of the %1 %2.")
+                  .arg(portKindName(p->kind), portName(*p))
             : tr("Analysis could not decide the interface type of the %1 %2 (%3).")
                   .arg(portKindName(p->kind), portName(*p),
                        p->type.isEmpty() ? tr("unknown") : p->type),
@@ -620,9 +618,9 @@ bool CorrectionController::remove(const Element &e)
         if (c.port.isEmpty())
             return false;
         const Port *p = findPort(m_document->accepted().nodes, e.port);
-        what = tr("Remove the connection of %1 through its %2 %3.")
-                   .arg(nameOf(e), p ? portKindName(p->kind) : QString(),
-                        p ? portName(*p) : e.port);
+        what =
+            tr("Remove the connection of %1 through its %2 %3.")
+                .arg(nameOf(e), p ? portKindName(p->kind) : QString(), p ? portName(*p) : e.port);
         break;
     }
     default:
@@ -641,11 +639,9 @@ bool CorrectionController::addPort(const Element &e)
 {
     if (e.kind != Kind::Class || isRemoved(e))
         return false;
-    CorrectionDialog dialog(tr("Add Port"),
-                            tr("Add a port analysis missed to the class %1.").arg(nameOf(e)),
-                            CorrectionDialog::Kind | CorrectionDialog::Name |
-                                CorrectionDialog::Type,
-                            m_window);
+    CorrectionDialog dialog(
+        tr("Add Port"), tr("Add a port analysis missed to the class %1.").arg(nameOf(e)),
+        CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
     dialog.setNameLabel(tr("&Name:"));
     dialog.setTypeChoices(knownTypes());
     if (!ask(dialog))
@@ -675,8 +671,7 @@ bool CorrectionController::addPart(const Element &e)
     CorrectionDialog dialog(
         tr("Add Part"),
         tr("Add a node instance that %1 does not declare (started elsewhere).").arg(lf->file),
-        CorrectionDialog::Choice | CorrectionDialog::Name | CorrectionDialog::Namespace,
-        m_window);
+        CorrectionDialog::Choice | CorrectionDialog::Name | CorrectionDialog::Namespace, m_window);
     dialog.setChoices(tr("&Class:"), classes);
     dialog.setNameLabel(tr("Node &name:"));
     if (!ask(dialog))
@@ -797,8 +792,8 @@ bool CorrectionController::retarget(const QString &correctionId)
                 offer(QStringLiteral("%1 (%2)").arg(n.className, n.packageName), keys.keyOf(n.id));
             else
                 for (const Port &p : n.ports)
-                    offer(QStringLiteral("%1: %2 %3").arg(n.className, portKindName(p.kind),
-                                                          portName(p)),
+                    offer(QStringLiteral("%1: %2 %3")
+                              .arg(n.className, portKindName(p.kind), portName(p)),
                           keys.keyOf(n.id + u'/' + p.id));
         }
     } else if (family == QLatin1String("instance") || family == QLatin1String("part")) {
@@ -808,7 +803,7 @@ bool CorrectionController::retarget(const QString &correctionId)
         for (const LaunchFileInstance &lf : now.launch.instances)
             if (!lf.file.isEmpty() && (family == QLatin1String("launch") || lf.parentId.isEmpty()))
                 offer(lf.file, family == QLatin1String("launch") ? StableKeys::launchKey(lf)
-                                                                  : keys.keyOf(lf.id));
+                                                                 : keys.keyOf(lf.id));
     } else {
         for (const Composite &c : now.architecture.composites)
             for (const Channel &ch : c.channels)
@@ -820,11 +815,11 @@ bool CorrectionController::retarget(const QString &correctionId)
         Q_EMIT statusMessage(tr("Nothing in this model can take %1").arg(old->id), 6000);
         return false;
     }
-    CorrectionDialog dialog(tr("Re-target Correction"),
-                            tr("%1 (%2) names %3, which matches nothing now. Point it at:")
-                                .arg(old->id, CorrectionModel::kindText(int(old->kind)),
-                                     old->target),
-                            CorrectionDialog::Choice, m_window);
+    CorrectionDialog dialog(
+        tr("Re-target Correction"),
+        tr("%1 (%2) names %3, which matches nothing now. Point it at:")
+            .arg(old->id, CorrectionModel::kindText(int(old->kind)), old->target),
+        CorrectionDialog::Choice, m_window);
     dialog.setChoices(tr("&Element:"), choices);
     dialog.setReason(old->reason);
     if (!ask(dialog))
@@ -900,8 +895,8 @@ void CorrectionController::installShortcuts()
         make(QKeySequence(tr("Ctrl+R")), [this](const Element &e) { toggleReviewed(e); });
     };
     install(
-        m_nodePanel->treeView(),
-        [this] { return nodeElement(m_nodePanel->currentSourceIndex()); }, false);
+        m_nodePanel->treeView(), [this] { return nodeElement(m_nodePanel->currentSourceIndex()); },
+        false);
     install(
         m_launchPanel->treeView(),
         [this] { return launchElement(m_launchPanel->currentSourceIndex()); }, true);

@@ -1,5 +1,4 @@
 #include "diagramcontroller.h"
-#include "stablekeys.h"
 #include "appsettings.h"
 #include "diagrampanel.h"
 #include "document.h"
@@ -10,6 +9,7 @@
 #include "logview.h"
 #include "recovereddiagrams.h"
 #include "recovery.h"
+#include "stablekeys.h"
 #include "subsystemgrouping.h"
 #include "talkerspanel.h"
 #include "traceability.h"

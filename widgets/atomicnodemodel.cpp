@@ -58,9 +58,8 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
             m_previewNodeId.clear();
             rebuild();
             endResetModel();
-        } else if (change.parts &
-                   (DocumentChange::Corrections | DocumentChange::Decisions |
-                    DocumentChange::Launch)) {
+        } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions |
+                                   DocumentChange::Launch)) {
             onCorrectionsChanged();
         } else if (change.has(DocumentChange::Node)) {
             if (const AtomicNode *n = m_document->atomicNodes().node(change.id))
@@ -174,12 +173,13 @@ QVariant AtomicNodeModel::marksData(const QString &id, const Marks &marks, int c
         return marks.reviewed;
     case Qt::DisplayRole:
         return column == NameColumn && marks.reviewed && !removed ? QStringLiteral(" \u2713")
-                                                                    : QString();
+                                                                  : QString();
     case Qt::ToolTipRole: {
         const QString summary = m_index.summary(id);
-        return summary.isEmpty() ? QString()
-                                 : QStringLiteral("<hr/>") + summary.toHtmlEscaped().replace(
-                                                                 u'\n', QStringLiteral("<br/>"));
+        return summary.isEmpty()
+                   ? QString()
+                   : QStringLiteral("<hr/>") +
+                         summary.toHtmlEscaped().replace(u'\n', QStringLiteral("<br/>"));
     }
     default:
         return {};
@@ -587,8 +587,7 @@ QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int
     case Qt::FontRole: {
         QFont f;
         f.setItalic(column == NameColumn && !port.isResolved());
-        f.setStrikeOut(m_removed.contains(node.id + u'/' + port.id) ||
-                       m_removed.contains(node.id));
+        f.setStrikeOut(m_removed.contains(node.id + u'/' + port.id) || m_removed.contains(node.id));
         return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
     }
     case Qt::ToolTipRole:

@@ -161,7 +161,8 @@ void CorrectionDialog::setPortKinds(const QList<PortKind> &kinds)
         m_kind->addItem(kindText(k), int(k));
 }
 
-void CorrectionDialog::setChoices(const QString &label, const QList<QPair<QString, QString>> &choices)
+void CorrectionDialog::setChoices(const QString &label,
+                                  const QList<QPair<QString, QString>> &choices)
 {
     if (!m_choice)
         return;

@@ -11,17 +11,16 @@ CorrectionIndex::CorrectionIndex(const Document &document) : m_corrections(docum
         return;
     const Recovery &corrected = document.accepted();
     m_corrected = StableKeys(corrected);
-    m_recovered = StableKeys(Recovery{document.atomicNodes(), document.launchDependencies(),
-                                      document.architecture()});
+    m_recovered = StableKeys(
+        Recovery{document.atomicNodes(), document.launchDependencies(), document.architecture()});
     for (int i = 0; i < m_corrections.size(); ++i)
         m_byTarget[m_corrections[i].target].append(i);
     // A port a correction added has no key of its own as recovered: find it by what it says.
     for (const AtomicNode &n : corrected.nodes.nodes) {
         const AtomicNode *was = document.atomicNodes().node(n.id);
         for (const Port &p : n.ports) {
-            const bool added =
-                !was || std::none_of(was->ports.cbegin(), was->ports.cend(),
-                                     [&](const Port &q) { return q.id == p.id; });
+            const bool added = !was || std::none_of(was->ports.cbegin(), was->ports.cend(),
+                                                    [&](const Port &q) { return q.id == p.id; });
             if (added)
                 m_portNames.insert(n.id + u'/' + p.id, portKindName(p.kind) + u'|' + p.name);
         }
@@ -53,8 +52,7 @@ QList<Correction> CorrectionIndex::of(const QString &id) const
             touches = m_portNames.value(id) == portKindName(c.portKind) + u'|' + c.newValue &&
                       m_corrected.keyOf(id.section(u'/', 0, 0)) == c.target;
         else if (c.kind == Correction::Kind::Rename && !family.isEmpty()) // a renamed channel
-            touches = StableKeys::family(c.target) == family &&
-                      family + u':' + c.newValue == id;
+            touches = StableKeys::family(c.target) == family && family + u':' + c.newValue == id;
         if (touches && !found.contains(i))
             found.append(i);
     }
@@ -76,13 +74,12 @@ QString CorrectionIndex::summary(const QString &id) const
 {
     QStringList lines;
     for (const Correction &c : of(id)) {
-        QString line = QCoreApplication::translate("rosarch::CorrectionIndex", "%1 by %2 (%3): %4")
-                           .arg(c.kind == Correction::Kind::Review
-                                    ? QCoreApplication::translate("rosarch::CorrectionIndex",
-                                                                  "Reviewed")
-                                    : QCoreApplication::translate("rosarch::CorrectionIndex",
-                                                                  "Corrected"),
-                                c.id, Correction::kindName(c.kind), c.summary());
+        QString line =
+            QCoreApplication::translate("rosarch::CorrectionIndex", "%1 by %2 (%3): %4")
+                .arg(c.kind == Correction::Kind::Review
+                         ? QCoreApplication::translate("rosarch::CorrectionIndex", "Reviewed")
+                         : QCoreApplication::translate("rosarch::CorrectionIndex", "Corrected"),
+                     c.id, Correction::kindName(c.kind), c.summary());
         if (!c.reason.isEmpty())
             line += QStringLiteral(" (%1)").arg(c.reason);
         lines.append(line);

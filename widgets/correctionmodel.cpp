@@ -135,8 +135,7 @@ QVariant CorrectionModel::data(const QModelIndex &index, int role) const
             return c.time.toString(Qt::ISODate);
         return c.summary();
     case Qt::DecorationRole:
-        return index.column() == KindColumn && !orphan.isEmpty() ? Icons::unresolved()
-                                                                 : QVariant();
+        return index.column() == KindColumn && !orphan.isEmpty() ? Icons::unresolved() : QVariant();
     case Qt::ForegroundRole:
         // quiet: a warm muted tone, not an error red
         if (!orphan.isEmpty())

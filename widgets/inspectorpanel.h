@@ -13,11 +13,11 @@ namespace rosarch {
 /// What the inspector shows of one element.
 struct InspectorInfo
 {
-    QString kind;        ///< "Node class", "Port", "Node instance", ... ("" = nothing selected)
+    QString kind; ///< "Node class", "Port", "Node instance", ... ("" = nothing selected)
     QString name;
     QString type;
-    QString key;         ///< the stable key
-    QString provenance;  ///< "recovered", "corrected by c3", "removed by c6", ...
+    QString key;        ///< the stable key
+    QString provenance; ///< "recovered", "corrected by c3", "removed by c6", ...
     bool reviewed = false;
     QString corrections; ///< one line per correction that touches it
 };

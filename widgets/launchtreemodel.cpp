@@ -65,9 +65,8 @@ LaunchDependencies LaunchTreeModel::merged()
                          [&](const NodeInstance &r) { return r.id == n.id; }))
             out.nodes.append(n);
     for (LaunchFileInstance &lf : out.instances) {
-        const auto was =
-            std::find_if(recovered.instances.cbegin(), recovered.instances.cend(),
-                         [&](const LaunchFileInstance &r) { return r.id == lf.id; });
+        const auto was = std::find_if(recovered.instances.cbegin(), recovered.instances.cend(),
+                                      [&](const LaunchFileInstance &r) { return r.id == lf.id; });
         if (was == recovered.instances.cend())
             continue;
         QStringList nodes = was->nodes;
@@ -306,8 +305,7 @@ QModelIndex LaunchTreeModel::nodeIndex(const QString &nodeId, int column) const
 
 QModelIndex LaunchTreeModel::indexAt(const QString &file, int line, const QModelIndex &near) const
 {
-    return indexOfItem(m_layout.itemAt(m_launch, file, line, itemOf(near)),
-                       0);
+    return indexOfItem(m_layout.itemAt(m_launch, file, line, itemOf(near)), 0);
 }
 
 QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
@@ -338,8 +336,7 @@ QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
             f.setStrikeOut(true);
             return f;
         }
-        if (role == Qt::DisplayRole && index.column() == NameColumn && n.marks.reviewed &&
-            !removed)
+        if (role == Qt::DisplayRole && index.column() == NameColumn && n.marks.reviewed && !removed)
             return nodeData(it, index.column(), role).toString() + QStringLiteral(" \u2713");
         if (role == Qt::ToolTipRole && !m_index.isEmpty()) {
             const QString summary = m_index.summary(n.id);
@@ -478,9 +475,8 @@ QVariant LaunchTreeModel::namespaceData(const Item &item, int column, int role) 
     case Qt::DecorationRole:
         return column == NameColumn ? Icons::nameSpace() : QVariant();
     case Qt::ToolTipRole:
-        return LaunchTreeText::namespaceToolTip(
-            item.nameSpace, m_launch.instances[item.instance],
-            int(item.children.size()));
+        return LaunchTreeText::namespaceToolTip(item.nameSpace, m_launch.instances[item.instance],
+                                                int(item.children.size()));
     default:
         return {};
     }
@@ -589,8 +585,7 @@ QVariant LaunchTreeModel::parameterData(const QModelIndex &index, int role) cons
 
 QVariant LaunchTreeModel::unresolvedData(const Item &item, int column, int role) const
 {
-    const Unresolved &u =
-        m_launch.instances[item.instance].unresolved[item.ref];
+    const Unresolved &u = m_launch.instances[item.instance].unresolved[item.ref];
     switch (role) {
     case Qt::DisplayRole:
         if (column == NameColumn)

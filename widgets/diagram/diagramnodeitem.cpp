@@ -186,9 +186,9 @@ void DiagramNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *,
     if (has(m_node.flags, LayoutReviewed)) { // a small tick in the top-left corner
         painter->setPen(QPen(s.corrected, 1.6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         painter->setBrush(Qt::NoBrush);
-        const QPointF o = m_node.shape == LayoutNode::Shape::Box ? QPointF(7, 7)
-                                                                 : QPointF(rect().width() / 2 - 4,
-                                                                           2);
+        const QPointF o = m_node.shape == LayoutNode::Shape::Box
+                              ? QPointF(7, 7)
+                              : QPointF(rect().width() / 2 - 4, 2);
         painter->drawPolyline(QPolygonF({o + QPointF(0, 4), o + QPointF(3, 7), o + QPointF(8, 0)}));
     }
     painter->restore();
@@ -245,8 +245,7 @@ void DiagramNodeItem::paintPorts(QPainter *painter) const
     for (const LayoutPort &port : m_node.ports) {
         const QPointF anchor = m_node.portAnchor(port.id);
         const bool inactive = has(port.flags, LayoutInactive);
-        const bool corrected =
-            has(port.flags, LayoutCorrected) || has(port.flags, LayoutSuggested);
+        const bool corrected = has(port.flags, LayoutCorrected) || has(port.flags, LayoutSuggested);
         painter->setPen(QPen(corrected ? s.corrected : s.partBorder, corrected ? 1.5 : 1.1,
                              inactive ? Qt::DotLine : Qt::SolidLine));
         painter->setBrush(inactive ? s.paper : corrected ? s.corrected : s.portFill);
