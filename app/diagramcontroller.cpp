@@ -9,6 +9,7 @@
 #include "logview.h"
 #include "recovereddiagrams.h"
 #include "recovery.h"
+#include "stablekeys.h"
 #include "subsystemgrouping.h"
 #include "talkerspanel.h"
 #include "traceability.h"
@@ -82,9 +83,28 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     updateActions();
 }
 
+namespace {
+QString channelFamily(Channel::Kind kind)
+{
+    return kind == Channel::Kind::Topic     ? QStringLiteral("topic")
+           : kind == Channel::Kind::Service ? QStringLiteral("service")
+                                            : QStringLiteral("action");
+}
+} // namespace
+
 void DiagramController::showArchitecture()
 {
-    const Architecture &accepted = m_document->accepted().architecture;
+    Architecture accepted = m_document->accepted().architecture;
+    // A renamed topic, service or action is a person's correction too: drawn as such.
+    for (const Correction &c : m_document->corrections()) {
+        if (c.kind != Correction::Kind::Rename)
+            continue;
+        const QString family = StableKeys::family(c.target);
+        for (Composite &composite : accepted.composites)
+            for (Channel &ch : composite.channels)
+                if (channelFamily(ch.kind) == family && ch.name == c.newValue)
+                    ch.marks.provenance = Provenance::Corrected;
+    }
     if (m_preview.isEmpty()) {
         m_panel->setArchitecture(accepted);
         return;

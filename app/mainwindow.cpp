@@ -147,6 +147,7 @@ void MainWindow::createPanels()
         makeDock(m_changesView, tr("Architecture changes"), QStringLiteral("changesDock"));
     m_talkersPanel = new TalkersPanel(this);
     m_talkersDock = makeDock(m_talkersPanel, tr("Talkers"), QStringLiteral("talkersDock"));
+    createCorrectionDocks();
     resetLayout();
 
     m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
@@ -204,6 +205,7 @@ void MainWindow::createPanels()
     connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
+    createCorrectionController();
 }
 
 void MainWindow::resetLayout()
@@ -236,6 +238,7 @@ void MainWindow::resetLayout()
         tabifyDockWidget(m_logDock, dock);
         dock->hide();
     }
+    placeCorrectionDocks();
     m_logDock->raise();
     if (m_toolBar)
         m_toolBar->show();

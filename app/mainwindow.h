@@ -18,6 +18,10 @@ class AtomicNodeModel;
 class CompareController;
 class RenderController;
 class AtomicNodePanel;
+class CorrectionController;
+class CorrectionModel;
+class CorrectionPanel;
+class InspectorPanel;
 class DiagramController;
 class DiagramLayouter;
 class DiagramPanel;
@@ -86,6 +90,12 @@ public:
     ArchitectureDiffView *changesView() const { return m_changesView; }
     TalkersPanel *talkersPanel() const { return m_talkersPanel; }
     QDockWidget *talkersDock() const { return m_talkersDock; }
+    CorrectionController *corrections() const { return m_correctionController; }
+    CorrectionPanel *correctionPanel() const { return m_correctionPanel; }
+    CorrectionModel *correctionModel() const { return m_correctionModel; }
+    InspectorPanel *inspector() const { return m_inspector; }
+    QDockWidget *correctionsDock() const { return m_correctionsDock; }
+    QDockWidget *inspectorDock() const { return m_inspectorDock; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -94,6 +104,11 @@ protected:
 
 private:
     void createPanels();
+    // Corrections (issue 12), in mainwindowcorrections.cpp.
+    void createCorrectionDocks();
+    void createCorrectionController();
+    void placeCorrectionDocks();
+    void createCorrectionMenu();
     void createActions();
     void createMenus();
     void createStatusBar();
@@ -142,6 +157,12 @@ private:
     ArchitectureDiffView *m_changesView = nullptr;
     QDockWidget *m_talkersDock = nullptr; ///< who talks on a name; shown by a click on one
     TalkersPanel *m_talkersPanel = nullptr;
+    CorrectionModel *m_correctionModel = nullptr;
+    CorrectionPanel *m_correctionPanel = nullptr;
+    InspectorPanel *m_inspector = nullptr;
+    QDockWidget *m_correctionsDock = nullptr;
+    QDockWidget *m_inspectorDock = nullptr;
+    CorrectionController *m_correctionController = nullptr;
     CompareController *m_compare = nullptr;
     RenderController *m_render = nullptr;
     ProjectController *m_projects = nullptr;

@@ -191,10 +191,14 @@ void MainWindow::createMenus()
         view->addAction(dock->toggleViewAction());
     view->addAction(m_changesDock->toggleViewAction());
     view->addAction(m_talkersDock->toggleViewAction());
+    view->addAction(m_correctionsDock->toggleViewAction());
+    view->addAction(m_inspectorDock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
     view->addSeparator();
     view->addAction(m_resetLayoutAction);
+
+    createCorrectionMenu();
 
     QMenu *stages = menuBar()->addMenu(tr("&Stages"));
     stages->addAction(m_runAction);

@@ -58,16 +58,139 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
             m_previewNodeId.clear();
             rebuild();
             endResetModel();
+        } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions |
+                                   DocumentChange::Launch)) {
+            onCorrectionsChanged();
         } else if (change.has(DocumentChange::Node)) {
+            if (const AtomicNode *n = m_document->atomicNodes().node(change.id))
+                for (AtomicNode &here : m_nodes.nodes)
+                    if (here.id == change.id)
+                        here.description = n->description;
             onNodeChanged(change.id);
         }
     });
     rebuild();
 }
 
-void AtomicNodeModel::rebuild()
+// The classes as corrected, with what a correction removed put back where it was (shown
+// struck out): a person sees what they removed, where it was, and can restore it there.
+AtomicNodeList AtomicNodeModel::merged()
 {
-    const AtomicNodeList &list = m_document->atomicNodes();
+    const AtomicNodeList &recovered = m_document->atomicNodes();
+    m_removed.clear();
+    m_index = CorrectionIndex(*m_document);
+    if (m_document->corrections().isEmpty() && m_document->decisions().isEmpty())
+        return recovered;
+    const AtomicNodeList &corrected = m_document->accepted().nodes;
+    AtomicNodeList out = recovered;
+    out.nodes.clear();
+    for (const AtomicNode &was : recovered.nodes) {
+        const AtomicNode *now = corrected.node(was.id);
+        if (!now) {
+            m_removed.insert(was.id);
+            out.nodes.append(was);
+            continue;
+        }
+        AtomicNode n = *now;
+        n.ports.clear();
+        for (const Port &p : was.ports) {
+            const auto it = std::find_if(now->ports.cbegin(), now->ports.cend(),
+                                         [&](const Port &q) { return q.id == p.id; });
+            if (it == now->ports.cend())
+                m_removed.insert(was.id + u'/' + p.id);
+            n.ports.append(it == now->ports.cend() ? p : *it);
+        }
+        for (const Port &p : now->ports) // added by a correction
+            if (std::none_of(was.ports.cbegin(), was.ports.cend(),
+                             [&](const Port &q) { return q.id == p.id; }))
+                n.ports.append(p);
+        n.description = was.description; // the description a person edited last
+        out.nodes.append(n);
+    }
+    return out;
+}
+
+void AtomicNodeModel::onCorrectionsChanged()
+{
+    AtomicNodeList next = merged();
+    bool sameShape = next.nodes.size() == m_nodes.nodes.size();
+    for (int i = 0; sameShape && i < next.nodes.size(); ++i)
+        sameShape = next.nodes[i].ports.size() == m_nodes.nodes[i].ports.size();
+    if (!sameShape) {
+        // an added port appeared or went: the rows change, the current row is kept by place
+        setProperty("rosarch.keepsCurrent", true);
+        beginResetModel();
+        m_nodes = std::move(next);
+        rebuild(false);
+        endResetModel();
+        setProperty("rosarch.keepsCurrent", false);
+        return;
+    }
+    m_nodes = std::move(next);
+    for (int p = 0; p < m_packages.size(); ++p) {
+        const QModelIndex package = index(p, 0);
+        for (int r = 0; r < rowCount(package); ++r) {
+            const QModelIndex node = index(r, 0, package);
+            Q_EMIT dataChanged(node, node.siblingAtColumn(ColumnCount - 1));
+            if (const int ports = rowCount(node); ports > 0)
+                Q_EMIT dataChanged(index(0, 0, node), index(ports - 1, ColumnCount - 1, node));
+        }
+    }
+}
+
+bool AtomicNodeModel::isRemoved(const QModelIndex &index) const
+{
+    if (const Port *p = port(index))
+        return m_removed.contains(node(index)->id + u'/' + p->id) ||
+               m_removed.contains(node(index)->id);
+    const AtomicNode *n = node(index);
+    return n && m_removed.contains(n->id);
+}
+
+QString AtomicNodeModel::elementId(const QModelIndex &index) const
+{
+    if (const Port *p = port(index))
+        return node(index)->id + u'/' + p->id;
+    if (const AtomicNode *n = node(index))
+        return n->id;
+    return {};
+}
+
+QVariant AtomicNodeModel::marksData(const QString &id, const Marks &marks, int column,
+                                    int role) const
+{
+    const bool removed = m_removed.contains(id) || m_removed.contains(id.section(u'/', 0, 0));
+    switch (role) {
+    case Qt::ForegroundRole:
+        if (removed)
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        if (marks.provenance != Provenance::Recovered)
+            return QGuiApplication::palette().brush(QPalette::Link);
+        return {};
+    case ProvenanceRole:
+        return removed ? QStringLiteral("removed") : provenanceName(marks.provenance);
+    case ReviewedRole:
+        return marks.reviewed;
+    case Qt::DisplayRole:
+        return column == NameColumn && marks.reviewed && !removed ? QStringLiteral(" \u2713")
+                                                                  : QString();
+    case Qt::ToolTipRole: {
+        const QString summary = m_index.summary(id);
+        return summary.isEmpty()
+                   ? QString()
+                   : QStringLiteral("<hr/>") +
+                         summary.toHtmlEscaped().replace(u'\n', QStringLiteral("<br/>"));
+    }
+    default:
+        return {};
+    }
+}
+
+void AtomicNodeModel::rebuild(bool merge)
+{
+    if (merge)
+        m_nodes = merged();
+    const AtomicNodeList &list = m_nodes;
     m_packages.clear();
     m_nodeLocations.clear();
     for (int i = 0; i < list.packages.size(); ++i)
@@ -102,7 +225,7 @@ void AtomicNodeModel::onNodeChanged(const QString &nodeId)
 
 const RosPackage *AtomicNodeModel::package(const PackageRow &row) const
 {
-    return row.package >= 0 ? &m_document->atomicNodes().packages.at(row.package) : nullptr;
+    return row.package >= 0 ? &m_nodes.packages.at(row.package) : nullptr;
 }
 
 QModelIndex AtomicNodeModel::index(int row, int column, const QModelIndex &parent) const
@@ -194,7 +317,7 @@ AtomicNodeModel::ItemKind AtomicNodeModel::kind(const QModelIndex &index) const
 const AtomicNode *AtomicNodeModel::node(const QModelIndex &index) const
 {
     const int i = nodeListIndex(index);
-    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    const QList<AtomicNode> &nodes = m_nodes.nodes;
     return i >= 0 && i < nodes.size() ? &nodes[i] : nullptr;
 }
 
@@ -233,7 +356,7 @@ QModelIndex AtomicNodeModel::packageIndex(const QString &name, int column) const
 
 QModelIndex AtomicNodeModel::nodeIndex(const QString &nodeId, int column) const
 {
-    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    const QList<AtomicNode> &nodes = m_nodes.nodes;
     for (int i = 0; i < nodes.size() && i < m_nodeLocations.size(); ++i) {
         if (nodes[i].id == nodeId) {
             const NodeLocation loc = m_nodeLocations[i];
@@ -260,7 +383,7 @@ QModelIndex AtomicNodeModel::indexAt(const QString &file, int line) const
 {
     QModelIndex best;
     int bestSpan = std::numeric_limits<int>::max();
-    const QList<AtomicNode> &nodes = m_document->atomicNodes().nodes;
+    const QList<AtomicNode> &nodes = m_nodes.nodes;
     for (const AtomicNode &n : nodes) {
         int span = 0;
         // Strictly smaller wins, so on equal spans a node's port (checked first) stays.
@@ -401,7 +524,9 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
     case Qt::EditRole:
         switch (column) {
         case NameColumn:
-            return node.className;
+            return role == Qt::DisplayRole
+                       ? node.className + marksData(node.id, node.marks, column, role).toString()
+                       : node.className;
         case TypeColumn:
             if (node.procedural)
                 return tr("procedural node");
@@ -419,15 +544,19 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
         }
     case Qt::DecorationRole:
         return column == NameColumn ? Icons::node() : QVariant();
-    case Qt::FontRole:
-        if (column == DescriptionColumn && node.id == m_previewNodeId) {
-            QFont f;
-            f.setItalic(true);
-            return f;
-        }
-        return {};
+    case Qt::FontRole: {
+        QFont f;
+        f.setItalic(column == DescriptionColumn && node.id == m_previewNodeId);
+        f.setStrikeOut(m_removed.contains(node.id));
+        return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
+    }
     case Qt::ToolTipRole:
-        return AtomicNodeText::nodeToolTip(node);
+        return AtomicNodeText::nodeToolTip(node) +
+               marksData(node.id, node.marks, column, role).toString();
+    case Qt::ForegroundRole:
+    case ProvenanceRole:
+    case ReviewedRole:
+        return marksData(node.id, node.marks, column, role);
     case KindRole:
         return int(ItemKind::Node);
     case NodeIdRole:
@@ -444,7 +573,8 @@ QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int
     case Qt::DisplayRole:
         switch (column) {
         case NameColumn:
-            return port.name.isEmpty() ? port.nameExpression : port.name;
+            return (port.name.isEmpty() ? port.nameExpression : port.name) +
+                   marksData(node.id + u'/' + port.id, port.marks, column, role).toString();
         case TypeColumn:
             return port.type;
         case DetailsColumn:
@@ -454,15 +584,19 @@ QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int
         }
     case Qt::DecorationRole:
         return column == NameColumn ? Icons::port(port.kind) : QVariant();
-    case Qt::FontRole:
-        if (column == NameColumn && !port.isResolved()) {
-            QFont f;
-            f.setItalic(true);
-            return f;
-        }
-        return {};
+    case Qt::FontRole: {
+        QFont f;
+        f.setItalic(column == NameColumn && !port.isResolved());
+        f.setStrikeOut(m_removed.contains(node.id + u'/' + port.id) || m_removed.contains(node.id));
+        return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
+    }
     case Qt::ToolTipRole:
-        return AtomicNodeText::portToolTip(node, port);
+        return AtomicNodeText::portToolTip(node, port) +
+               marksData(node.id + u'/' + port.id, port.marks, column, role).toString();
+    case Qt::ForegroundRole:
+    case ProvenanceRole:
+    case ReviewedRole:
+        return marksData(node.id + u'/' + port.id, port.marks, column, role);
     case KindRole:
         return int(ItemKind::Port);
     case NodeIdRole:

@@ -1,10 +1,13 @@
 #pragma once
 
 #include "atomicnode.h"
+#include "atomicnodelist.h"
+#include "correctionindex.h"
 #include "evidence.h"
 
 #include <QAbstractItemModel>
 #include <QList>
+#include <QSet>
 
 namespace rosarch {
 
@@ -13,6 +16,8 @@ struct RosPackage;
 
 /// The List of Atomic ROS Nodes as a tree: package → node → port. Reads the Document;
 /// editing a node's description pushes an undoable command instead of changing data here.
+/// Shows the classes as corrected (blueprint §5): renamed and added elements in a quiet tint,
+/// reviewed ones with a ✓, removed ones struck out where they were.
 class AtomicNodeModel : public QAbstractItemModel
 {
     Q_OBJECT
@@ -37,6 +42,8 @@ public:
         KindRole = Qt::UserRole + 1, ///< int(ItemKind)
         NodeIdRole,                  ///< "arc_3" for node and port rows
         PortIdRole,                  ///< "p1" for port rows
+        ProvenanceRole, ///< "recovered", "suggested", "corrected" or "removed" (node, port rows)
+        ReviewedRole,   ///< bool: a person marked it reviewed
     };
 
     explicit AtomicNodeModel(Document *document, QObject *parent = nullptr);
@@ -55,6 +62,10 @@ public:
     /// The node of a node row, or the owning node of a port row.
     const AtomicNode *node(const QModelIndex &index) const;
     const Port *port(const QModelIndex &index) const;
+    /// True for a node or port a correction removed (shown struck out).
+    bool isRemoved(const QModelIndex &index) const;
+    /// The id of a node or port row ("arc_3", "arc_3/p1"); "" for a package row.
+    QString elementId(const QModelIndex &index) const;
     /// Where the row's element comes from (invalid for rows without evidence).
     Evidence evidence(const QModelIndex &index) const;
 
@@ -81,7 +92,10 @@ private:
         int row = 0;
     };
 
-    void rebuild();
+    void rebuild(bool merge = true);
+    AtomicNodeList merged();
+    void onCorrectionsChanged();
+    QVariant marksData(const QString &id, const Marks &marks, int column, int role) const;
     void onNodeChanged(const QString &nodeId);
     const RosPackage *package(const PackageRow &row) const;
     int nodeListIndex(const QModelIndex &index) const;
@@ -91,6 +105,9 @@ private:
     QVariant portData(const AtomicNode &node, const Port &port, int column, int role) const;
 
     Document *m_document;
+    AtomicNodeList m_nodes;  ///< as corrected, with removed elements where they were
+    QSet<QString> m_removed; ///< ids of removed nodes and ports ("arc_3", "arc_3/p1")
+    CorrectionIndex m_index;
     QString m_previewNodeId;
     QString m_previewDescription;
     QList<PackageRow> m_packages;

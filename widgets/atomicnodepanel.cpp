@@ -24,6 +24,11 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
     editDescription->setShortcutContext(Qt::WidgetShortcut);
     editDescription->setStatusTip(tr("Describe the node's responsibility (undoable)"));
     connect(editDescription, &QAction::triggered, this, [this] {
+        // on a port, F2 renames it (a correction); on a class it edits the description
+        if (m_model && m_model->kind(currentSourceIndex()) == AtomicNodeModel::ItemKind::Port) {
+            Q_EMIT renameRequested(currentSourceIndex());
+            return;
+        }
         const QModelIndex description =
             m_tree->currentIndex().siblingAtColumn(AtomicNodeModel::DescriptionColumn);
         if (description.flags() & Qt::ItemIsEditable) {
@@ -42,8 +47,13 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
 void AtomicNodePanel::showContextMenu(const QPoint &at)
 {
     QMenu menu(this);
-    menu.addAction(m_editDescription);
-    addChainActions(&menu, m_proxy->mapToSource(m_tree->indexAt(at)));
+    const QModelIndex index = m_proxy->mapToSource(m_tree->indexAt(at));
+    if (!m_model || m_model->kind(index) != AtomicNodeModel::ItemKind::Port)
+        menu.addAction(m_editDescription);
+    Q_EMIT contextMenuRequested(&menu, index);
+    addChainActions(&menu, index);
+    if (menu.isEmpty())
+        return;
     menu.exec(m_tree->viewport()->mapToGlobal(at));
 }
 

@@ -28,6 +28,10 @@ Q_SIGNALS:
     /// The person asked to see a place in the source: a call site on the way from the node to
     /// a port made by a helper, or the call that creates it.
     void evidenceRequested(const Evidence &evidence);
+    /// A context menu is about to open on `sourceIndex` (maybe invalid): add to `menu`.
+    void contextMenuRequested(QMenu *menu, const QModelIndex &sourceIndex);
+    /// F2 on a port: rename it (a correction).
+    void renameRequested(const QModelIndex &sourceIndex);
 
 private:
     void onModelReset();

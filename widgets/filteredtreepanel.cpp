@@ -30,6 +30,28 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
                 Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
             });
 
+    // A model that reshapes its rows for a small edit (a correction) and sets the property
+    // "rosarch.keepsCurrent" during the reset keeps the current row by place (rows from the
+    // root down), so that the person stays where they were.
+    connect(m_proxy, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
+        m_keptRows.clear();
+        if (!m_proxy->sourceModel() ||
+            !m_proxy->sourceModel()->property("rosarch.keepsCurrent").toBool())
+            return;
+        for (QModelIndex i = currentSourceIndex(); i.isValid(); i = i.parent())
+            m_keptRows.prepend(i.row());
+    });
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
+        if (m_keptRows.isEmpty())
+            return;
+        QModelIndex i;
+        for (int row : std::as_const(m_keptRows))
+            i = m_proxy->sourceModel()->index(row, 0, i);
+        m_keptRows.clear();
+        if (i.isValid())
+            selectSourceIndex(i);
+    });
+
     m_layout->setContentsMargins(0, 0, 0, 0);
     m_layout->setSpacing(2);
     m_layout->addWidget(m_filter);

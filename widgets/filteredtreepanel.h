@@ -45,6 +45,8 @@ protected:
 
 private:
     void applyFilter(const QString &text);
+
+    QList<int> m_keptRows; ///< the current row's place, kept across a reshaping reset
 };
 
 } // namespace rosarch

@@ -24,9 +24,11 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             begin();
     });
-    connect(document, &Document::changed, this, [end](const DocumentChange &change) {
+    connect(document, &Document::changed, this, [this, end](const DocumentChange &change) {
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             end();
+        else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions))
+            onCorrectionsChanged();
     });
     // Class names in tooltips come from the atomic nodes; a description edit changes nothing here.
     rebuild();
@@ -34,7 +36,77 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
 
 void LaunchTreeModel::rebuild()
 {
-    m_layout = LaunchTreeLayout(m_document->launchDependencies());
+    m_launch = merged();
+    m_layout = LaunchTreeLayout(m_launch);
+}
+
+// The launch dependencies as corrected, with the node instances a correction removed put back
+// where they were (struck out): the tree keeps the shape of the launch files, so a person sees
+// what they removed in its place and can restore it from there.
+LaunchDependencies LaunchTreeModel::merged()
+{
+    const LaunchDependencies &recovered = m_document->launchDependencies();
+    m_removed.clear();
+    m_index = CorrectionIndex(*m_document);
+    if (m_document->corrections().isEmpty())
+        return recovered;
+    const LaunchDependencies &corrected = m_document->accepted().launch;
+    LaunchDependencies out = corrected;
+    out.nodes.clear();
+    for (const NodeInstance &was : recovered.nodes) {
+        const auto it = std::find_if(corrected.nodes.cbegin(), corrected.nodes.cend(),
+                                     [&](const NodeInstance &n) { return n.id == was.id; });
+        if (it == corrected.nodes.cend())
+            m_removed.insert(was.id);
+        out.nodes.append(it == corrected.nodes.cend() ? was : *it);
+    }
+    for (const NodeInstance &n : corrected.nodes) // added by a correction
+        if (std::none_of(recovered.nodes.cbegin(), recovered.nodes.cend(),
+                         [&](const NodeInstance &r) { return r.id == n.id; }))
+            out.nodes.append(n);
+    for (LaunchFileInstance &lf : out.instances) {
+        const auto was = std::find_if(recovered.instances.cbegin(), recovered.instances.cend(),
+                                      [&](const LaunchFileInstance &r) { return r.id == lf.id; });
+        if (was == recovered.instances.cend())
+            continue;
+        QStringList nodes = was->nodes;
+        for (const QString &id : std::as_const(lf.nodes))
+            if (!nodes.contains(id))
+                nodes.append(id);
+        lf.nodes = nodes;
+    }
+    return out;
+}
+
+void LaunchTreeModel::onCorrectionsChanged()
+{
+    const LaunchDependencies next = merged();
+    if (next.nodes.size() == m_launch.nodes.size()) {
+        m_launch = next;
+        for (int i = 0; i < m_layout.items().size(); ++i)
+            if (m_layout.items()[i].kind == ItemKind::Node ||
+                m_layout.items()[i].kind == ItemKind::LaunchFile)
+                Q_EMIT dataChanged(indexOfItem(i, 0), indexOfItem(i, ColumnCount - 1));
+        return;
+    }
+    // a part was added or its addition undone: the rows change, the current row is kept by place
+    setProperty("rosarch.keepsCurrent", true);
+    beginResetModel();
+    m_launch = next;
+    m_layout = LaunchTreeLayout(m_launch);
+    endResetModel();
+    setProperty("rosarch.keepsCurrent", false);
+}
+
+bool LaunchTreeModel::isRemoved(const QModelIndex &index) const
+{
+    const NodeInstance *n = node(index);
+    return n && m_removed.contains(n->id);
+}
+
+QString LaunchTreeModel::correctionSummary(const QString &id) const
+{
+    return m_index.summary(id);
 }
 
 int LaunchTreeModel::itemOf(const QModelIndex &index) const
@@ -50,7 +122,7 @@ const NodeInstance *LaunchTreeModel::nodeOfItem(int item) const
     const QList<Item> &items = m_layout.items();
     if (item < 0 || item >= items.size() || items[item].kind != ItemKind::Node)
         return nullptr;
-    return &m_document->launchDependencies().nodes[items[item].ref];
+    return &m_launch.nodes[items[item].ref];
 }
 
 int LaunchTreeModel::parameterRowOf(const QModelIndex &index, int *k) const
@@ -165,7 +237,7 @@ const LaunchFileInstance *LaunchTreeModel::launchFile(const QModelIndex &index) 
 {
     const QList<Item> &items = m_layout.items();
     const int item = itemOf(index);
-    const QList<LaunchFileInstance> &all = m_document->launchDependencies().instances;
+    const QList<LaunchFileInstance> &all = m_launch.instances;
     return item < 0 || items[item].instance >= all.size() ? nullptr : &all[items[item].instance];
 }
 
@@ -175,7 +247,7 @@ const NodeInstance *LaunchTreeModel::node(const QModelIndex &index) const
     const int item = itemOf(index);
     if (item < 0 || items[item].kind != ItemKind::Node)
         return nullptr;
-    return &m_document->launchDependencies().nodes[items[item].ref];
+    return &m_launch.nodes[items[item].ref];
 }
 
 const Unresolved *LaunchTreeModel::unresolved(const QModelIndex &index) const
@@ -233,8 +305,7 @@ QModelIndex LaunchTreeModel::nodeIndex(const QString &nodeId, int column) const
 
 QModelIndex LaunchTreeModel::indexAt(const QString &file, int line, const QModelIndex &near) const
 {
-    return indexOfItem(m_layout.itemAt(m_document->launchDependencies(), file, line, itemOf(near)),
-                       0);
+    return indexOfItem(m_layout.itemAt(m_launch, file, line, itemOf(near)), 0);
 }
 
 QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
@@ -249,12 +320,37 @@ QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
     const Item &it = items[item];
     if (role == Qt::ForegroundRole && !it.active)
         return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+    if (it.kind == ItemKind::Node) {
+        const NodeInstance &n = m_launch.nodes[it.ref];
+        const bool removed = m_removed.contains(n.id);
+        if (role == Qt::ForegroundRole && removed)
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        if (role == Qt::ForegroundRole && n.marks.provenance != Provenance::Recovered)
+            return QGuiApplication::palette().brush(QPalette::Link);
+        if (role == ProvenanceRole)
+            return removed ? QStringLiteral("removed") : provenanceName(n.marks.provenance);
+        if (role == ReviewedRole)
+            return n.marks.reviewed;
+        if (role == Qt::FontRole && removed) {
+            QFont f = nodeData(it, index.column(), role).value<QFont>();
+            f.setStrikeOut(true);
+            return f;
+        }
+        if (role == Qt::DisplayRole && index.column() == NameColumn && n.marks.reviewed && !removed)
+            return nodeData(it, index.column(), role).toString() + QStringLiteral(" \u2713");
+        if (role == Qt::ToolTipRole && !m_index.isEmpty()) {
+            const QString summary = m_index.summary(n.id);
+            if (!summary.isEmpty())
+                return nodeData(it, index.column(), role).toString() + QStringLiteral("<hr/>") +
+                       summary.toHtmlEscaped().replace(u'\n', QStringLiteral("<br/>"));
+        }
+    }
     if (role == ActiveRole)
         return it.active;
     if (role == KindRole)
         return int(it.kind);
     if (role == InstanceIdRole && it.kind != ItemKind::Node)
-        return m_document->launchDependencies().instances.value(it.instance).id;
+        return m_launch.instances.value(it.instance).id;
     QVariant value;
     switch (it.kind) {
     case ItemKind::LaunchFile:
@@ -320,7 +416,7 @@ QVariant LaunchTreeModel::headerData(int section, Qt::Orientation orientation, i
 QVariant LaunchTreeModel::launchFileData(const Item &item, int column, int role) const
 {
     const QList<Item> &items = m_layout.items();
-    const LaunchFileInstance &lf = m_document->launchDependencies().instances[item.ref];
+    const LaunchFileInstance &lf = m_launch.instances[item.ref];
     const bool unresolvedInclude = lf.file.isEmpty() && !lf.external;
     switch (role) {
     case Qt::DisplayRole:
@@ -345,7 +441,7 @@ QVariant LaunchTreeModel::launchFileData(const Item &item, int column, int role)
             return lf.parentId.isEmpty() ? Icons::launchFile() : Icons::include();
         }
         if (column == DetailsColumn && !unresolvedInclude &&
-            !LaunchTreeLayout::attributeUnresolved(lf, m_document->launchDependencies()).isEmpty())
+            !LaunchTreeLayout::attributeUnresolved(lf, m_launch).isEmpty())
             return Icons::unresolved();
         return {};
     case Qt::FontRole:
@@ -359,7 +455,7 @@ QVariant LaunchTreeModel::launchFileData(const Item &item, int column, int role)
     case Qt::ToolTipRole: {
         const int parent = item.parent;
         return LaunchTreeText::launchFileToolTip(
-            lf, LaunchTreeLayout::attributeUnresolved(lf, m_document->launchDependencies()),
+            lf, LaunchTreeLayout::attributeUnresolved(lf, m_launch),
             parent < 0 || items[parent].active);
     }
     default:
@@ -379,9 +475,8 @@ QVariant LaunchTreeModel::namespaceData(const Item &item, int column, int role) 
     case Qt::DecorationRole:
         return column == NameColumn ? Icons::nameSpace() : QVariant();
     case Qt::ToolTipRole:
-        return LaunchTreeText::namespaceToolTip(
-            item.nameSpace, m_document->launchDependencies().instances[item.instance],
-            int(item.children.size()));
+        return LaunchTreeText::namespaceToolTip(item.nameSpace, m_launch.instances[item.instance],
+                                                int(item.children.size()));
     default:
         return {};
     }
@@ -390,7 +485,7 @@ QVariant LaunchTreeModel::namespaceData(const Item &item, int column, int role) 
 QVariant LaunchTreeModel::nodeData(const Item &item, int column, int role) const
 {
     const QList<Item> &items = m_layout.items();
-    const NodeInstance &n = m_document->launchDependencies().nodes[item.ref];
+    const NodeInstance &n = m_launch.nodes[item.ref];
     switch (role) {
     case Qt::DisplayRole:
         switch (column) {
@@ -490,8 +585,7 @@ QVariant LaunchTreeModel::parameterData(const QModelIndex &index, int role) cons
 
 QVariant LaunchTreeModel::unresolvedData(const Item &item, int column, int role) const
 {
-    const Unresolved &u =
-        m_document->launchDependencies().instances[item.instance].unresolved[item.ref];
+    const Unresolved &u = m_launch.instances[item.instance].unresolved[item.ref];
     switch (role) {
     case Qt::DisplayRole:
         if (column == NameColumn)

@@ -1,10 +1,12 @@
 #pragma once
 
+#include "correctionindex.h"
 #include "evidence.h"
 #include "launchdependencies.h"
 #include "launchtreelayout.h"
 
 #include <QAbstractItemModel>
+#include <QSet>
 
 namespace rosarch {
 
@@ -12,7 +14,9 @@ class Document;
 
 /// The Launch File Dependency Description as a tree: root launch-file instances → included
 /// instances → node instances, with namespace scopes as intermediate rows, composable nodes
-/// under their container and unresolved actions at the line they stand on. Read-only.
+/// under their container and unresolved actions at the line they stand on. Read-only. Shows
+/// the node instances as corrected (blueprint §5): renamed and added ones in a quiet tint,
+/// reviewed ones with a ✓, removed ones struck out where they were.
 class LaunchTreeModel : public QAbstractItemModel
 {
     Q_OBJECT
@@ -33,6 +37,8 @@ public:
         InstanceIdRole,              ///< "lf2" or "n3"; the owning launch file for other rows
         ClassIdRole,                 ///< node rows: the atomic node's id ("" when unknown)
         ActiveRole,                  ///< false when a condition (here or above) is false
+        ProvenanceRole, ///< node rows: "recovered", "suggested", "corrected" or "removed"
+        ReviewedRole,   ///< node rows: a person marked it reviewed
     };
 
     explicit LaunchTreeModel(Document *document, QObject *parent = nullptr);
@@ -55,6 +61,10 @@ public:
     const ParameterSetting *parameter(const QModelIndex &index) const;
     /// Where the row's element comes from (invalid for namespace rows).
     Evidence evidence(const QModelIndex &index) const;
+    /// True for a node instance a correction removed (shown struck out).
+    bool isRemoved(const QModelIndex &index) const;
+    /// The corrections of an element by id ("n3", "lf2"), one line each ("" for none).
+    QString correctionSummary(const QString &id) const;
     /// Whether the row's condition and those of all its ancestors hold.
     bool isActive(const QModelIndex &index) const;
 
@@ -68,6 +78,8 @@ private:
     using Item = LaunchTreeLayout::Item;
 
     void rebuild();
+    LaunchDependencies merged();
+    void onCorrectionsChanged();
     int itemOf(const QModelIndex &index) const;
     QModelIndex indexOfItem(int item, int column) const;
     /// Whether stage 1 found `package` in the workspace (else its classes are not analysed).
@@ -90,6 +102,9 @@ private:
     QVariant parameterData(const QModelIndex &index, int role) const;
 
     Document *m_document;
+    LaunchDependencies m_launch; ///< as corrected, with removed instances where they were
+    QSet<QString> m_removed;     ///< ids of removed node instances
+    CorrectionIndex m_index;
     LaunchTreeLayout m_layout;
 };
 

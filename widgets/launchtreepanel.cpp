@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -41,7 +42,18 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
     auto *collapseAll = new QAction(tr("&Collapse All"), this);
     connect(collapseAll, &QAction::triggered, m_tree, &QTreeView::collapseAll);
     m_tree->addActions({m_goToClass, separator, expandAll, collapseAll});
-    m_tree->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
+    const QList<QAction *> treeActions{m_goToClass, separator, expandAll, collapseAll};
+    connect(m_tree, &QWidget::customContextMenuRequested, this,
+            [this, treeActions](const QPoint &at) {
+                QMenu menu(this);
+                const QModelIndex index = m_proxy->mapToSource(m_tree->indexAt(at));
+                Q_EMIT contextMenuRequested(&menu, index);
+                if (!menu.isEmpty())
+                    menu.addSeparator();
+                menu.addActions(treeActions);
+                menu.exec(m_tree->viewport()->mapToGlobal(at));
+            });
 
     connect(m_tree, &QTreeView::doubleClicked, this, [this](const QModelIndex &index) {
         const QString classId = index.data(LaunchTreeModel::ClassIdRole).toString();

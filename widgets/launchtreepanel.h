@@ -4,6 +4,7 @@
 
 class QAction;
 class QLabel;
+class QMenu;
 
 namespace rosarch {
 
@@ -29,6 +30,8 @@ Q_SIGNALS:
     /// A person asked to see the atomic node class a node instance runs (double-click,
     /// context menu "Go to Class").
     void classRequested(const QString &classId);
+    /// A context menu is about to open on `sourceIndex` (maybe invalid): add to `menu`.
+    void contextMenuRequested(QMenu *menu, const QModelIndex &sourceIndex);
 
 protected:
     /// Everything but the nodes' "Parameters" rows: a navigation stack has ten thousands.

@@ -80,6 +80,14 @@ QString collapsedAncestor(const QString &nameSpace, const QStringList &collapsed
     return {};
 }
 
+int marksFlags(const Marks &marks)
+{
+    return (marks.provenance == Provenance::Corrected   ? LayoutCorrected
+            : marks.provenance == Provenance::Suggested ? LayoutSuggested
+                                                        : 0) |
+           (marks.reviewed ? LayoutReviewed : 0);
+}
+
 LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const DiagramMetrics &m)
 {
     LayoutNode n;
@@ -99,6 +107,7 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const Di
         n.flags |= LayoutInactive;
     if (part.external)
         n.flags |= LayoutExternal;
+    n.flags |= marksFlags(part.marks);
     n.headerHeight = std::ceil(8 + m.titleHeight + m.smallHeight + 6);
     n.rowHeight = std::ceil(m.smallHeight + 6);
     double inputWidth = 0;
@@ -112,7 +121,7 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const Di
         p.label = portLabel(port);
         p.input = isInputPort(port.kind);
         p.flags = (port.active ? 0 : LayoutInactive) | (port.resolved ? 0 : LayoutUnresolved) |
-                  (port.parameterDerived ? LayoutParameterDerived : 0);
+                  (port.parameterDerived ? LayoutParameterDerived : 0) | marksFlags(port.marks);
         double &side = p.input ? inputWidth : outputWidth;
         side = std::max(side, m.smallWidth(p.label));
         n.ports << p;
@@ -412,6 +421,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
         if (!shown(ch.id))
             continue;
         LayoutNode n = labelledNode(channelKey(ch.id), ch.name, ch.type, channelShape(ch.kind), m);
+        n.flags |= marksFlags(ch.marks);
         // Inside the innermost namespace that holds all its parts: a channel between two
         // parts of one namespace drawn outside that namespace's frame would tangle the layout.
         std::optional<QStringList> common;

@@ -11,11 +11,14 @@ namespace rosarch {
 /// Display flags of a layout graph element; the layout ignores them, the drawing uses them.
 enum LayoutFlag
 {
-    LayoutInactive = 0x1,         ///< greyed: condition or guard false
-    LayoutUnresolved = 0x2,       ///< italic with "?": a name the analysis could not decide
-    LayoutExternal = 0x4,         ///< outside the workspace
-    LayoutOpenable = 0x8,         ///< an included launch file whose composite can be opened
-    LayoutParameterDerived = 0x10 ///< a port whose name comes from a parameter
+    LayoutInactive = 0x1,          ///< greyed: condition or guard false
+    LayoutUnresolved = 0x2,        ///< italic with "?": a name the analysis could not decide
+    LayoutExternal = 0x4,          ///< outside the workspace
+    LayoutOpenable = 0x8,          ///< an included launch file whose composite can be opened
+    LayoutParameterDerived = 0x10, ///< a port whose name comes from a parameter
+    LayoutCorrected = 0x20,        ///< a person's correction changed or added it (dashed tint)
+    LayoutSuggested = 0x40,        ///< an accepted suggestion changed it
+    LayoutReviewed = 0x80          ///< a person marked it reviewed (a small ✓)
 };
 
 /// A port of a node: a row on its left (input) or right (output) side.

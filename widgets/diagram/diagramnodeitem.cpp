@@ -156,6 +156,12 @@ void DiagramNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *,
     QPen border(s.partBorder, m_node.shape == LayoutNode::Shape::Box ? 1.3 : 1.1);
     if (inactive || has(m_node.flags, LayoutExternal))
         border.setStyle(Qt::DashLine);
+    // What a person corrected (or accepted from a suggestion) has a quiet tinted dashed border.
+    if (has(m_node.flags, LayoutCorrected) || has(m_node.flags, LayoutSuggested)) {
+        border.setColor(s.corrected);
+        border.setStyle(has(m_node.flags, LayoutCorrected) ? Qt::DashLine : Qt::DotLine);
+        border.setWidthF(1.6);
+    }
     painter->setPen(border);
     painter->setBrush(fill());
     painter->drawPath(path);
@@ -177,6 +183,14 @@ void DiagramNodeItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *,
     }
     if (has(m_node.flags, LayoutOpenable))
         paintOpenGlyph(painter);
+    if (has(m_node.flags, LayoutReviewed)) { // a small tick in the top-left corner
+        painter->setPen(QPen(s.corrected, 1.6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter->setBrush(Qt::NoBrush);
+        const QPointF o = m_node.shape == LayoutNode::Shape::Box
+                              ? QPointF(7, 7)
+                              : QPointF(rect().width() / 2 - 4, 2);
+        painter->drawPolyline(QPolygonF({o + QPointF(0, 4), o + QPointF(3, 7), o + QPointF(8, 0)}));
+    }
     painter->restore();
     paintDecorations(painter, path);
 }
@@ -231,8 +245,10 @@ void DiagramNodeItem::paintPorts(QPainter *painter) const
     for (const LayoutPort &port : m_node.ports) {
         const QPointF anchor = m_node.portAnchor(port.id);
         const bool inactive = has(port.flags, LayoutInactive);
-        painter->setPen(QPen(s.partBorder, 1.1, inactive ? Qt::DotLine : Qt::SolidLine));
-        painter->setBrush(inactive ? s.paper : s.portFill);
+        const bool corrected = has(port.flags, LayoutCorrected) || has(port.flags, LayoutSuggested);
+        painter->setPen(QPen(corrected ? s.corrected : s.partBorder, corrected ? 1.5 : 1.1,
+                             inactive ? Qt::DotLine : Qt::SolidLine));
+        painter->setBrush(inactive ? s.paper : corrected ? s.corrected : s.portFill);
         painter->drawRect(QRectF(anchor.x() - kPortSquare / 2, anchor.y() - kPortSquare / 2,
                                  kPortSquare, kPortSquare));
         if (has(port.flags, LayoutParameterDerived)) { // the name comes from a parameter

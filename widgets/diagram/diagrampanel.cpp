@@ -464,14 +464,31 @@ QList<QAction *> DiagramPanel::elementActions(const QString &key)
     return actions;
 }
 
+QStringList DiagramPanel::selectedKeys() const
+{
+    QStringList keys;
+    for (QGraphicsItem *item : m_scene->selectedItems())
+        if (auto *d = dynamic_cast<DiagramItem *>(item))
+            keys.append(d->key());
+    keys.sort();
+    return keys;
+}
+
+void DiagramPanel::selectElement(const QString &key)
+{
+    selectKey(key);
+}
+
 void DiagramPanel::onContextMenu(const QString &key, const QPoint &screenPos)
 {
     const QList<QAction *> actions = elementActions(key);
-    if (actions.isEmpty())
-        return;
     QMenu menu(this);
+    Q_EMIT elementMenuRequested(key, &menu);
+    if (!menu.isEmpty() && !actions.isEmpty())
+        menu.addSeparator();
     menu.addActions(actions);
-    menu.exec(screenPos);
+    if (!menu.isEmpty())
+        menu.exec(screenPos);
     qDeleteAll(actions);
 }
 

@@ -11,6 +11,7 @@
 
 class QAction;
 class QLineEdit;
+class QMenu;
 class QToolBar;
 
 namespace rosarch {
@@ -64,6 +65,10 @@ public:
     qint64 lastLayoutMs() const { return m_lastLayoutMs; }
     /// The context-menu actions for an element (collapse/expand a namespace, open an include).
     QList<QAction *> elementActions(const QString &key);
+    /// The keys of the selected elements of the shown composite, sorted.
+    QStringList selectedKeys() const;
+    /// Selects and centres an element of the shown composite by its key.
+    void selectElement(const QString &key);
 
     DiagramScene *scene() const { return m_scene; }
     DiagramView *view() const { return m_view; }
@@ -94,6 +99,8 @@ Q_SIGNALS:
     /// portActivated, before evidenceActivated): its key.
     void elementActivated(const QString &key);
     void compositeShown(const QString &instanceId);
+    /// A context menu is about to open on the element `key` ("" for none): add to `menu`.
+    void elementMenuRequested(const QString &key, QMenu *menu);
     /// A layout finished and the scene shows it (ok), or the message says why not.
     void layoutFinished(bool ok);
 

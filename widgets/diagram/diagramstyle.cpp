@@ -46,6 +46,7 @@ DiagramStyle DiagramStyle::make(bool dark)
         s.selection = QColor(0x19, 0x76, 0xd2);
         s.match = QColor(0xff, 0xa0, 0x00);
         s.extra = QColor(0xd3, 0x2f, 0x2f);
+        s.corrected = QColor(0x00, 0x83, 0x8f);
     } else {
         s.paper = QColor(0x1e, 0x1f, 0x22);
         s.text = QColor(0xe6, 0xe6, 0xe6);
@@ -65,6 +66,7 @@ DiagramStyle DiagramStyle::make(bool dark)
         s.selection = QColor(0x64, 0xb5, 0xf6);
         s.match = QColor(0xff, 0xb3, 0x00);
         s.extra = QColor(0xff, 0x6b, 0x6b);
+        s.corrected = QColor(0x4d, 0xd0, 0xe1);
     }
     // Pixel sizes: the scene is in points, and the layout reserved room for these metrics.
     s.titleFont = QFont(QStringLiteral("Sans Serif"));

@@ -30,6 +30,7 @@ struct DiagramStyle
     QColor selection;
     QColor match;
     QColor extra;
+    QColor corrected; ///< the dashed border of what a person corrected, and the review ✓
     QFont titleFont;
     QFont textFont;
     QFont smallFont;

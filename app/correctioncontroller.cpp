@@ -1,0 +1,912 @@
+#include "correctioncontroller.h"
+#include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
+#include "correctiondialog.h"
+#include "correctionmodel.h"
+#include "correctionpanel.h"
+#include "diagrambuilder.h"
+#include "diagrampanel.h"
+#include "diagramview.h"
+#include "document.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
+#include "traceability.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTreeView>
+#include <QUndoStack>
+
+namespace rosarch {
+
+namespace {
+
+using Kind = CorrectionController::Element::Kind;
+
+QString channelFamily(Channel::Kind kind)
+{
+    return kind == Channel::Kind::Topic     ? QStringLiteral("topic")
+           : kind == Channel::Kind::Service ? QStringLiteral("service")
+                                            : QStringLiteral("action");
+}
+
+/// A port of a node list, by "arc_3/p1".
+const Port *findPort(const AtomicNodeList &nodes, const QString &id)
+{
+    const AtomicNode *n = nodes.node(id.section(u'/', 0, 0));
+    if (!n)
+        return nullptr;
+    for (const Port &p : n->ports)
+        if (p.id == id.section(u'/', 1))
+            return &p;
+    return nullptr;
+}
+
+const NodeInstance *findInstance(const LaunchDependencies &launch, const QString &id)
+{
+    for (const NodeInstance &n : launch.nodes)
+        if (n.id == id)
+            return &n;
+    return nullptr;
+}
+
+const LaunchFileInstance *findLaunchFile(const LaunchDependencies &launch, const QString &id)
+{
+    for (const LaunchFileInstance &lf : launch.instances)
+        if (lf.id == id)
+            return &lf;
+    return nullptr;
+}
+
+const Channel *findChannel(const Architecture &architecture, const QString &key)
+{
+    for (const Composite &c : architecture.composites)
+        for (const Channel &ch : c.channels)
+            if (channelFamily(ch.kind) + u':' + ch.name == key)
+                return &ch;
+    return nullptr;
+}
+
+/// A type as analysis writes a known one: "pkg/msg/T", "pkg/srv/T", "pkg/action/T".
+bool isCanonicalType(const QString &type)
+{
+    static const QRegularExpression canonical(
+        QStringLiteral("^[A-Za-z][A-Za-z0-9_]*/(msg|srv|action)/[A-Za-z][A-Za-z0-9_]*$"));
+    return canonical.match(type).hasMatch();
+}
+
+QString portName(const Port &p)
+{
+    return p.name.isEmpty() ? p.nameExpression : p.name;
+}
+
+QString instanceName(const NodeInstance &n)
+{
+    return n.nodeName.isEmpty() ? n.execName : n.nodeName;
+}
+
+} // namespace
+
+CorrectionController::CorrectionController(Document *document, AtomicNodePanel *nodePanel,
+                                           LaunchTreePanel *launchPanel, DiagramPanel *diagramPanel,
+                                           Traceability *traceability, InspectorPanel *inspector,
+                                           CorrectionPanel *corrections, QWidget *window)
+    : QObject(window), m_document(document), m_nodePanel(nodePanel), m_launchPanel(launchPanel),
+      m_diagramPanel(diagramPanel), m_traceability(traceability), m_inspector(inspector),
+      m_corrections(corrections), m_window(window)
+{
+    connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        m_index.reset();
+        if (change.has(DocumentChange::Model))
+            m_current = {};
+        refreshInspector();
+    });
+    connect(nodePanel, &FilteredTreePanel::currentSourceIndexChanged, this,
+            [this](const QModelIndex &index) { setCurrent(nodeElement(index)); });
+    connect(launchPanel, &FilteredTreePanel::currentSourceIndexChanged, this,
+            [this](const QModelIndex &index) { setCurrent(launchElement(index)); });
+    connect(diagramPanel, &DiagramPanel::elementActivated, this,
+            [this](const QString &key) { setCurrent(diagramElement(key)); });
+    connect(nodePanel, &AtomicNodePanel::contextMenuRequested, this,
+            [this](QMenu *menu, const QModelIndex &index) {
+                addMenuActions(menu, nodeElement(index));
+            });
+    connect(nodePanel, &AtomicNodePanel::renameRequested, this,
+            [this](const QModelIndex &index) { rename(nodeElement(index)); });
+    connect(launchPanel, &LaunchTreePanel::contextMenuRequested, this,
+            [this](QMenu *menu, const QModelIndex &index) {
+                addMenuActions(menu, launchElement(index));
+            });
+    connect(diagramPanel, &DiagramPanel::elementMenuRequested, this,
+            [this](const QString &key, QMenu *menu) {
+                const Element e = diagramElement(key);
+                addMenuActions(menu, e);
+                // several parts of one root: a subsystem
+                QStringList ids;
+                for (const QString &k : m_diagramPanel->selectedKeys() + QStringList{key}) {
+                    const Element part = diagramElement(k);
+                    if (part.kind == Kind::Instance && !ids.contains(part.id) &&
+                        part.rootId == e.rootId)
+                        ids.append(part.id);
+                }
+                if (e.kind == Kind::Instance && ids.size() >= 2) {
+                    menu->addSeparator();
+                    QAction *g = menu->addAction(tr("&Group Selected Parts into Subsystem\u2026"));
+                    connect(g, &QAction::triggered, this,
+                            [this, ids, root = e.rootId] { group(ids, root); });
+                }
+            });
+    connect(corrections, &CorrectionPanel::correctionActivated, this,
+            &CorrectionController::showCorrection);
+    connect(corrections, &CorrectionPanel::removeRequested, this, [this](const QStringList &ids) {
+        if (ids.size() == 1) {
+            m_document->removeCorrection(ids.first());
+            return;
+        }
+        m_document->undoStack()->beginMacro(tr("Remove %1 corrections").arg(ids.size()));
+        for (const QString &id : ids)
+            m_document->removeCorrection(id);
+        m_document->undoStack()->endMacro();
+    });
+    connect(corrections, &CorrectionPanel::retargetRequested, this,
+            &CorrectionController::retarget);
+    installShortcuts();
+    refreshInspector();
+}
+
+void CorrectionController::setDialogHandler(std::function<bool(CorrectionDialog &)> handler)
+{
+    m_dialogHandler = std::move(handler);
+}
+
+const CorrectionIndex &CorrectionController::index()
+{
+    if (!m_index)
+        m_index = CorrectionIndex(*m_document);
+    return *m_index;
+}
+
+QString CorrectionController::keyOf(const QString &id)
+{
+    if (StableKeys::family(id) == QLatin1String("topic") ||
+        StableKeys::family(id) == QLatin1String("service") ||
+        StableKeys::family(id) == QLatin1String("action"))
+        return id;
+    if (index().isEmpty()) // no corrections: the model as recovered is the corrected one
+        return m_document->keyOf(id);
+    return index().keyOf(id);
+}
+
+bool CorrectionController::ask(CorrectionDialog &dialog)
+{
+    if (m_dialogHandler)
+        return m_dialogHandler(dialog) && dialog.isComplete();
+    return dialog.exec() == QDialog::Accepted;
+}
+
+bool CorrectionController::push(Correction c)
+{
+    if (c.target.isEmpty())
+        return false;
+    const QString id = m_document->addCorrection(c);
+    if (id.isEmpty())
+        return false;
+    Q_EMIT statusMessage(tr("%1: %2 (Ctrl+Z undoes it)")
+                             .arg(id, CorrectionModel::kindText(int(c.kind)) + u' ' + c.summary()),
+                         6000);
+    return true;
+}
+
+void CorrectionController::setCurrent(const Element &element)
+{
+    if (element == m_current)
+        return;
+    m_current = element;
+    refreshInspector();
+}
+
+void CorrectionController::refreshInspector()
+{
+    if (!m_inspector)
+        return;
+    m_inspector->setElement(describe(m_current), actionsFor(m_current, m_inspector));
+}
+
+CorrectionController::Element CorrectionController::nodeElement(const QModelIndex &index) const
+{
+    const AtomicNodeModel *model = m_nodePanel->model();
+    if (!model)
+        return {};
+    switch (model->kind(index)) {
+    case AtomicNodeModel::ItemKind::Node:
+        return {Kind::Class, model->elementId(index), {}, {}};
+    case AtomicNodeModel::ItemKind::Port:
+        return {Kind::Port, model->elementId(index), {}, {}};
+    default:
+        return {};
+    }
+}
+
+CorrectionController::Element CorrectionController::launchElement(const QModelIndex &index) const
+{
+    const LaunchTreeModel *model = m_launchPanel->model();
+    if (!model)
+        return {};
+    const auto rootOf = [this](QString lf) {
+        const LaunchDependencies &launch = m_document->accepted().launch;
+        for (const LaunchFileInstance *i = findLaunchFile(launch, lf); i && !i->parentId.isEmpty();
+             i = findLaunchFile(launch, i->parentId))
+            lf = i->parentId;
+        return lf;
+    };
+    switch (model->kind(index)) {
+    case LaunchTreeModel::ItemKind::Node:
+        if (const NodeInstance *n = model->node(index))
+            return {Kind::Instance, n->id, {}, rootOf(n->launchFileId)};
+        return {};
+    case LaunchTreeModel::ItemKind::LaunchFile:
+        if (const LaunchFileInstance *lf = model->launchFile(index))
+            return {Kind::LaunchFile, lf->id, {}, rootOf(lf->id)};
+        return {};
+    default:
+        return {};
+    }
+}
+
+CorrectionController::Element CorrectionController::diagramElement(const QString &key) const
+{
+    const Architecture &architecture = m_diagramPanel->architecture();
+    const Composite *c = architecture.composite(m_diagramPanel->currentComposite());
+    if (!c)
+        return {};
+    QString root = c->instanceId;
+    for (const Composite *p = c; p && !p->parentId.isEmpty(); p = architecture.composite(root))
+        root = p->parentId;
+    const DiagramKey k = DiagramKey::parse(key);
+    switch (k.kind) {
+    case DiagramKey::Kind::Part:
+        if (const RosNodePart *part = c->part(k.id))
+            return {part->kind == RosNodePart::Kind::Node ? Kind::Instance : Kind::LaunchFile,
+                    part->instanceId,
+                    {},
+                    root};
+        return {};
+    case DiagramKey::Kind::Port:
+        if (const RosNodePart *part = c->part(k.id);
+            part && part->kind == RosNodePart::Kind::Node && !part->typeId.isEmpty())
+            return {Kind::Port, part->typeId + u'/' + k.portId, {}, {}};
+        return {};
+    case DiagramKey::Kind::Channel:
+        if (const Channel *ch = c->channel(k.id))
+            return {Kind::Channel, channelFamily(ch->kind) + u':' + ch->name, {}, {}};
+        return {};
+    case DiagramKey::Kind::Connection: {
+        if (k.index() < 0 || k.index() >= c->connections.size())
+            return {};
+        const Connection &w = c->connections[k.index()];
+        const RosNodePart *part = c->part(w.partId);
+        if (!part || part->kind != RosNodePart::Kind::Node)
+            return {};
+        return {Kind::Connection, part->instanceId, part->typeId + u'/' + w.portId, root};
+    }
+    default:
+        return {};
+    }
+}
+
+bool CorrectionController::isRemoved(const Element &element)
+{
+    if (element.kind != Kind::Class && element.kind != Kind::Port && element.kind != Kind::Instance)
+        return false;
+    return !index().removedBy(element.id).isEmpty();
+}
+
+QString CorrectionController::nameOf(const Element &e)
+{
+    const Recovery &now = m_document->accepted();
+    switch (e.kind) {
+    case Kind::Class:
+        if (const AtomicNode *n = now.nodes.node(e.id))
+            return n->className;
+        if (const AtomicNode *n = m_document->atomicNodes().node(e.id))
+            return n->className;
+        return {};
+    case Kind::Port:
+        if (const Port *p = findPort(now.nodes, e.id))
+            return portName(*p);
+        if (const Port *p = findPort(m_document->atomicNodes(), e.id))
+            return portName(*p);
+        return {};
+    case Kind::Instance:
+    case Kind::Connection:
+        if (const NodeInstance *n = findInstance(now.launch, e.id))
+            return instanceName(*n);
+        if (const NodeInstance *n = findInstance(m_document->launchDependencies(), e.id))
+            return instanceName(*n);
+        return {};
+    case Kind::LaunchFile:
+        if (const LaunchFileInstance *lf = findLaunchFile(now.launch, e.id))
+            return lf->file.isEmpty() ? lf->type : lf->file.section(u'/', -1);
+        return {};
+    case Kind::Channel:
+        return e.id.section(u':', 1);
+    case Kind::None:
+        break;
+    }
+    return {};
+}
+
+InspectorInfo CorrectionController::describe(const Element &e)
+{
+    InspectorInfo info;
+    const Recovery &now = m_document->accepted();
+    Marks marks;
+    switch (e.kind) {
+    case Kind::None:
+        return info;
+    case Kind::Class: {
+        const AtomicNode *n = now.nodes.node(e.id);
+        if (!n)
+            n = m_document->atomicNodes().node(e.id);
+        if (!n)
+            return {};
+        info.kind = n->isPlugin() ? tr("Plugin class") : tr("Node class");
+        info.type = n->packageName;
+        marks = n->marks;
+        break;
+    }
+    case Kind::Port: {
+        const Port *p = findPort(now.nodes, e.id);
+        if (!p)
+            p = findPort(m_document->atomicNodes(), e.id);
+        if (!p)
+            return {};
+        info.kind = tr("Port (%1)").arg(portKindName(p->kind));
+        info.type = p->type;
+        marks = p->marks;
+        break;
+    }
+    case Kind::Instance:
+    case Kind::Connection: {
+        const NodeInstance *n = findInstance(now.launch, e.id);
+        if (!n)
+            n = findInstance(m_document->launchDependencies(), e.id);
+        if (!n)
+            return {};
+        info.kind = e.kind == Kind::Instance ? tr("Node instance") : tr("Connection");
+        info.type = n->className.isEmpty() ? n->execName : n->className;
+        if (e.kind == Kind::Connection)
+            if (const Port *p = findPort(now.nodes, e.port))
+                info.type = tr("%1 %2 [%3]").arg(portKindName(p->kind), portName(*p), p->type);
+        marks = n->marks;
+        break;
+    }
+    case Kind::LaunchFile: {
+        const LaunchFileInstance *lf = findLaunchFile(now.launch, e.id);
+        if (!lf)
+            return {};
+        info.kind = tr("Launch file");
+        info.type = lf->file;
+        break;
+    }
+    case Kind::Channel: {
+        const Channel *ch = findChannel(now.architecture, e.id);
+        info.kind = StableKeys::family(e.id) == QLatin1String("topic")     ? tr("Topic")
+                    : StableKeys::family(e.id) == QLatin1String("service") ? tr("Service")
+                                                                           : tr("Action");
+        info.type = ch ? ch->type : QString();
+        if (ch)
+            marks = ch->marks;
+        break;
+    }
+    }
+    info.name = nameOf(e);
+    info.key = keyOf(e.kind == Kind::Connection ? e.port : e.id);
+    if (e.kind == Kind::Connection)
+        info.key = keyOf(e.id) + QStringLiteral(" \u00b7 ") + info.key;
+    QStringList by;
+    const QList<Correction> touching = index().of(e.id);
+    for (const Correction &c : touching)
+        if (c.kind != Correction::Kind::Review)
+            by.append(c.id);
+    if (const QString removed = index().removedBy(e.id); !removed.isEmpty())
+        info.provenance = tr("removed by %1").arg(removed);
+    else if (!by.isEmpty())
+        info.provenance = tr("corrected by %1").arg(by.join(QStringLiteral(", ")));
+    else if (marks.provenance == Provenance::Suggested)
+        info.provenance = tr("suggested (an accepted suggestion)");
+    else if (marks.provenance == Provenance::Corrected)
+        info.provenance = tr("corrected");
+    else
+        info.provenance = tr("recovered by analysis");
+    info.reviewed =
+        marks.reviewed || std::any_of(touching.cbegin(), touching.cend(), [](const Correction &c) {
+            return c.kind == Correction::Kind::Review;
+        });
+    info.corrections = index().summary(e.id);
+    return info;
+}
+
+QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *parent)
+{
+    QList<QAction *> actions;
+    const auto add = [&](const QString &text, const QKeySequence &shortcut, auto fn) {
+        auto *a = new QAction(text, parent);
+        if (!shortcut.isEmpty()) {
+            a->setShortcut(shortcut);
+            a->setShortcutContext(Qt::WidgetShortcut); // shown; the views own the keys
+        }
+        connect(a, &QAction::triggered, this, [this, e, fn] { fn(e); });
+        actions.append(a);
+        return a;
+    };
+    if (e.kind == Kind::None || describe(e).kind.isEmpty())
+        return actions;
+    if (isRemoved(e)) {
+        add(tr("Restore (Revert %1)").arg(index().removedBy(e.id)), {},
+            [this](const Element &x) { restore(x); });
+        return actions;
+    }
+    const QKeySequence review(tr("Ctrl+R"));
+    const QString reviewText = describe(e).reviewed ? tr("Unmark Reviewed") : tr("Mark Re&viewed");
+    switch (e.kind) {
+    case Kind::Class:
+        add(tr("Add &Port\u2026"), {}, [this](const Element &x) { addPort(x); });
+        add(tr("Re&move Class\u2026"), QKeySequence::Delete,
+            [this](const Element &x) { remove(x); });
+        break;
+    case Kind::Port: {
+        const Port *p = findPort(m_document->accepted().nodes, e.id);
+        const bool expression = p && !p->isResolved();
+        add(expression ? tr("Set &Name\u2026") : tr("Re&name\u2026"), Qt::Key_F2,
+            [this](const Element &x) { rename(x); });
+        QAction *type = add(tr("Set &Type\u2026"), {}, [this](const Element &x) { setType(x); });
+        if (p && !isCanonicalType(p->type))
+            type->setText(tr("Set &Type\u2026 (unknown)"));
+        add(tr("Re&move Port\u2026"), QKeySequence::Delete,
+            [this](const Element &x) { remove(x); });
+        break;
+    }
+    case Kind::Instance:
+        add(tr("Re&name\u2026"), Qt::Key_F2, [this](const Element &x) { rename(x); });
+        add(tr("Re&move\u2026"), QKeySequence::Delete, [this](const Element &x) { remove(x); });
+        add(tr("Add &Connection\u2026"), {}, [this](const Element &x) { addConnection(x); });
+        break;
+    case Kind::LaunchFile:
+        add(tr("Add &Part\u2026"), {}, [this](const Element &x) { addPart(x); });
+        return actions; // a launch file is not reviewed on its own
+    case Kind::Channel:
+        add(tr("Re&name\u2026"), Qt::Key_F2, [this](const Element &x) { rename(x); });
+        break;
+    case Kind::Connection:
+        if (!keyOf(e.port).isEmpty())
+            add(tr("Remove &Connection\u2026"), QKeySequence::Delete,
+                [this](const Element &x) { remove(x); });
+        return actions;
+    case Kind::None:
+        break;
+    }
+    add(reviewText, review, [this](const Element &x) { toggleReviewed(x); });
+    return actions;
+}
+
+void CorrectionController::addMenuActions(QMenu *menu, const Element &element)
+{
+    const QList<QAction *> actions = actionsFor(element, menu);
+    if (actions.isEmpty())
+        return;
+    menu->addSection(tr("Correct"));
+    menu->addActions(actions);
+}
+
+QStringList CorrectionController::knownTypes()
+{
+    QSet<QString> types;
+    for (const AtomicNode &n : m_document->accepted().nodes.nodes)
+        for (const Port &p : n.ports)
+            if (isCanonicalType(p.type))
+                types.insert(p.type);
+    QStringList out(types.cbegin(), types.cend());
+    out.sort();
+    return out;
+}
+
+bool CorrectionController::rename(const Element &e)
+{
+    if (isRemoved(e))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Rename;
+    const QString old = nameOf(e);
+    QString title = tr("Rename");
+    QString what;
+    switch (e.kind) {
+    case Kind::Port: {
+        const Port *p = findPort(m_document->accepted().nodes, e.id);
+        if (!p)
+            return false;
+        c.target = keyOf(e.id);
+        if (!p->isResolved()) {
+            c.kind = Correction::Kind::SetName;
+            title = tr("Set Name");
+            what = tr("Analysis left the name of this %1 as an expression: %2. Give the name it "
+                      "has at run time.")
+                       .arg(portKindName(p->kind), old);
+        } else {
+            what = tr("Rename the %1 %2 of this class (every instance uses the new name).")
+                       .arg(portKindName(p->kind), old);
+        }
+        break;
+    }
+    case Kind::Instance:
+        c.target = keyOf(e.id);
+        what = tr("Rename the node instance %1.").arg(old);
+        break;
+    case Kind::Channel: {
+        c.target = e.id;
+        // a renamed one is renamed again from where it came from
+        for (const Correction &earlier : m_document->corrections())
+            if (earlier.kind == Correction::Kind::Rename &&
+                StableKeys::family(earlier.target) == StableKeys::family(e.id) &&
+                StableKeys::family(e.id) + u':' + earlier.newValue == e.id)
+                c.target = earlier.target;
+        what = tr("Rename %1 everywhere it is used.").arg(e.id);
+        break;
+    }
+    default:
+        return false;
+    }
+    CorrectionDialog dialog(title, what, CorrectionDialog::Name, m_window);
+    dialog.setName(old);
+    if (!ask(dialog) || dialog.name() == old)
+        return false;
+    c.oldValue = old;
+    c.newValue = dialog.name();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::setType(const Element &e)
+{
+    const Port *p = e.kind == Kind::Port ? findPort(m_document->accepted().nodes, e.id) : nullptr;
+    if (!p || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Set Type"),
+        isCanonicalType(p->type)
+            ? tr("Override the interface type of the %1 %2.")
+                  .arg(portKindName(p->kind), portName(*p))
+            : tr("Analysis could not decide the interface type of the %1 %2 (%3).")
+                  .arg(portKindName(p->kind), portName(*p),
+                       p->type.isEmpty() ? tr("unknown") : p->type),
+        CorrectionDialog::Type, m_window);
+    dialog.setTypeChoices(knownTypes());
+    dialog.setType(isCanonicalType(p->type) ? p->type : QString());
+    dialog.setTypeRequired(true);
+    if (!ask(dialog) || dialog.type() == p->type)
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::SetType;
+    c.target = keyOf(e.id);
+    c.oldValue = p->type;
+    c.newValue = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::remove(const Element &e)
+{
+    if (isRemoved(e))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Remove;
+    QString what;
+    switch (e.kind) {
+    case Kind::Class:
+        what = tr("Remove the class %1 from the model (analysis got it wrong).").arg(nameOf(e));
+        break;
+    case Kind::Port:
+        what = tr("Remove the port %1 from its class.").arg(nameOf(e));
+        break;
+    case Kind::Instance:
+        what = tr("Remove the node instance %1 (it is not started).").arg(nameOf(e));
+        break;
+    case Kind::Connection: {
+        c.port = keyOf(e.port);
+        if (c.port.isEmpty())
+            return false;
+        const Port *p = findPort(m_document->accepted().nodes, e.port);
+        what =
+            tr("Remove the connection of %1 through its %2 %3.")
+                .arg(nameOf(e), p ? portKindName(p->kind) : QString(), p ? portName(*p) : e.port);
+        break;
+    }
+    default:
+        return false;
+    }
+    c.target = keyOf(e.id);
+    CorrectionDialog dialog(tr("Remove"), what, CorrectionDialog::NoField, m_window);
+    if (!ask(dialog))
+        return false;
+    c.oldValue = nameOf(e);
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addPort(const Element &e)
+{
+    if (e.kind != Kind::Class || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Add Port"), tr("Add a port analysis missed to the class %1.").arg(nameOf(e)),
+        CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
+    dialog.setNameLabel(tr("&Name:"));
+    dialog.setTypeChoices(knownTypes());
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddPort;
+    c.target = keyOf(e.id);
+    c.portKind = dialog.portKind();
+    c.newValue = dialog.name();
+    c.type = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addPart(const Element &e)
+{
+    const LaunchFileInstance *lf =
+        e.kind == Kind::LaunchFile ? findLaunchFile(m_document->accepted().launch, e.id) : nullptr;
+    if (!lf || lf->file.isEmpty())
+        return false;
+    QList<QPair<QString, QString>> classes;
+    for (const AtomicNode &n : m_document->accepted().nodes.nodes)
+        if (!n.isPlugin())
+            classes.append({QStringLiteral("%1 (%2)").arg(n.className, n.packageName),
+                            StableKeys::classKey(n)});
+    std::sort(classes.begin(), classes.end());
+    CorrectionDialog dialog(
+        tr("Add Part"),
+        tr("Add a node instance that %1 does not declare (started elsewhere).").arg(lf->file),
+        CorrectionDialog::Choice | CorrectionDialog::Name | CorrectionDialog::Namespace, m_window);
+    dialog.setChoices(tr("&Class:"), classes);
+    dialog.setNameLabel(tr("Node &name:"));
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddPart;
+    c.target = StableKeys::launchKey(*lf);
+    c.classKey = dialog.choice();
+    c.newValue = dialog.name();
+    c.nameSpace = dialog.nameSpace();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addConnection(const Element &e)
+{
+    if (e.kind != Kind::Instance || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Add Connection"),
+        tr("Connect the node instance %1 to a topic, service or action analysis missed.")
+            .arg(nameOf(e)),
+        CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
+    dialog.setNameLabel(tr("&On (absolute name):"));
+    dialog.setName(QStringLiteral("/"));
+    dialog.setTypeChoices(knownTypes());
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddConnection;
+    c.target = keyOf(e.id);
+    c.portKind = dialog.portKind();
+    c.newValue = dialog.name().startsWith(u'/') ? dialog.name() : u'/' + dialog.name();
+    c.type = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::toggleReviewed(const Element &e)
+{
+    if (e.kind == Kind::None || e.kind == Kind::LaunchFile || e.kind == Kind::Connection ||
+        isRemoved(e))
+        return false;
+    const QString key = keyOf(e.id);
+    if (key.isEmpty())
+        return false;
+    QStringList marks;
+    for (const Correction &c : m_document->corrections())
+        if (c.kind == Correction::Kind::Review && c.target == key)
+            marks.append(c.id);
+    if (!marks.isEmpty()) { // reviewed: the mark goes
+        m_document->undoStack()->beginMacro(tr("Unmark %1 reviewed").arg(nameOf(e)));
+        for (const QString &id : std::as_const(marks))
+            m_document->removeCorrection(id);
+        m_document->undoStack()->endMacro();
+        return true;
+    }
+    Correction c;
+    c.kind = Correction::Kind::Review;
+    c.target = key;
+    return push(c);
+}
+
+bool CorrectionController::group(const QStringList &instanceIds, const QString &rootId)
+{
+    const QString root = keyOf(rootId);
+    if (instanceIds.size() < 2 || StableKeys::family(root) != QLatin1String("include"))
+        return false;
+    QStringList members;
+    QStringList names;
+    for (const QString &id : instanceIds) {
+        const QString key = keyOf(id);
+        if (key.isEmpty())
+            return false;
+        members.append(key);
+        names.append(nameOf({Kind::Instance, id, {}, {}}));
+    }
+    CorrectionDialog dialog(tr("Group into Subsystem"),
+                            tr("Draw %1 as one subsystem.").arg(names.join(QStringLiteral(", "))),
+                            CorrectionDialog::Name, m_window);
+    dialog.setNameLabel(tr("Subsystem &name:"));
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Group;
+    c.target = root;
+    c.members = members;
+    c.newValue = dialog.name();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::restore(const Element &e)
+{
+    const QString id = index().removedBy(e.id);
+    return !id.isEmpty() && m_document->removeCorrection(id);
+}
+
+bool CorrectionController::retarget(const QString &correctionId)
+{
+    const Correction *old = m_document->correction(correctionId);
+    if (!old)
+        return false;
+    const QString family = StableKeys::family(old->target);
+    const Recovery &now = m_document->accepted();
+    const StableKeys keys(now);
+    QList<QPair<QString, QString>> choices;
+    QSet<QString> seen;
+    const auto offer = [&](const QString &text, const QString &key) {
+        if (!key.isEmpty() && !seen.contains(key)) {
+            seen.insert(key);
+            choices.append({text, key});
+        }
+    };
+    if (family == QLatin1String("class") || family == QLatin1String("port")) {
+        for (const AtomicNode &n : now.nodes.nodes) {
+            if (family == QLatin1String("class"))
+                offer(QStringLiteral("%1 (%2)").arg(n.className, n.packageName), keys.keyOf(n.id));
+            else
+                for (const Port &p : n.ports)
+                    offer(QStringLiteral("%1: %2 %3")
+                              .arg(n.className, portKindName(p.kind), portName(p)),
+                          keys.keyOf(n.id + u'/' + p.id));
+        }
+    } else if (family == QLatin1String("instance") || family == QLatin1String("part")) {
+        for (const NodeInstance &n : now.launch.nodes)
+            offer(QStringLiteral("%1 (%2)").arg(instanceName(n), n.nameSpace), keys.keyOf(n.id));
+    } else if (family == QLatin1String("include") || family == QLatin1String("launch")) {
+        for (const LaunchFileInstance &lf : now.launch.instances)
+            if (!lf.file.isEmpty() && (family == QLatin1String("launch") || lf.parentId.isEmpty()))
+                offer(lf.file, family == QLatin1String("launch") ? StableKeys::launchKey(lf)
+                                                                 : keys.keyOf(lf.id));
+    } else {
+        for (const Composite &c : now.architecture.composites)
+            for (const Channel &ch : c.channels)
+                if (channelFamily(ch.kind) == family)
+                    offer(ch.name, family + u':' + ch.name);
+    }
+    std::sort(choices.begin(), choices.end());
+    if (choices.isEmpty()) {
+        Q_EMIT statusMessage(tr("Nothing in this model can take %1").arg(old->id), 6000);
+        return false;
+    }
+    CorrectionDialog dialog(
+        tr("Re-target Correction"),
+        tr("%1 (%2) names %3, which matches nothing now. Point it at:")
+            .arg(old->id, CorrectionModel::kindText(int(old->kind)), old->target),
+        CorrectionDialog::Choice, m_window);
+    dialog.setChoices(tr("&Element:"), choices);
+    dialog.setReason(old->reason);
+    if (!ask(dialog))
+        return false;
+    Correction c = *old;
+    c.target = dialog.choice();
+    c.reason = dialog.reason();
+    m_document->undoStack()->beginMacro(tr("Re-target %1").arg(c.id));
+    m_document->removeCorrection(c.id);
+    const bool ok = !m_document->addCorrection(c).isEmpty();
+    m_document->undoStack()->endMacro();
+    return ok;
+}
+
+void CorrectionController::showCorrection(const QString &id)
+{
+    const Correction *c = m_document->correction(id);
+    if (!c)
+        return;
+    const QString family = StableKeys::family(c->target);
+    QString elementId = index().idOf(c->target);
+    if (c->kind == Correction::Kind::AddPart) // the part it added, in its first launch file
+        for (const NodeInstance &n : m_document->accepted().launch.nodes)
+            if (n.id.startsWith(c->id + u'_')) {
+                elementId = n.id;
+                break;
+            }
+    if (family == QLatin1String("launch"))
+        for (const LaunchFileInstance &lf : m_document->accepted().launch.instances)
+            if (StableKeys::launchKey(lf) == c->target && elementId.isEmpty())
+                elementId = lf.id;
+    if (family == QLatin1String("topic") || family == QLatin1String("service") ||
+        family == QLatin1String("action")) {
+        QString name = c->target.section(u':', 1);
+        if (c->kind == Correction::Kind::Rename)
+            name = c->newValue;
+        const Element e{Kind::Channel, family + u':' + name, {}, {}};
+        if (const Composite *shown =
+                m_diagramPanel->architecture().composite(m_diagramPanel->currentComposite()))
+            for (const Channel &ch : shown->channels)
+                if (channelFamily(ch.kind) == family && ch.name == name)
+                    m_diagramPanel->selectElement(DiagramBuilder::channelKey(ch.id));
+        setCurrent(e);
+        return;
+    }
+    if (elementId.isEmpty())
+        return; // orphaned: nothing to show
+    if (family == QLatin1String("class")) {
+        m_traceability->selectNode(elementId);
+    } else if (family == QLatin1String("port")) {
+        m_traceability->selectNode(elementId.section(u'/', 0, 0), elementId.section(u'/', 1));
+    } else {
+        m_traceability->selectLaunchItem(elementId);
+        m_diagramPanel->selectInstance(elementId);
+    }
+}
+
+void CorrectionController::installShortcuts()
+{
+    // The keys act on the view that has the focus: F2 renames, Delete removes, Ctrl+R marks
+    // reviewed. The node list keeps F2 for a class's description (AtomicNodePanel).
+    const auto install = [this](QWidget *view, std::function<Element()> current, bool f2) {
+        const auto make = [&](const QKeySequence &keys, auto fn) {
+            auto *a = new QAction(view);
+            a->setShortcut(keys);
+            a->setShortcutContext(Qt::WidgetShortcut);
+            connect(a, &QAction::triggered, this, [current, fn] { fn(current()); });
+            view->addAction(a);
+        };
+        if (f2)
+            make(Qt::Key_F2, [this](const Element &e) { rename(e); });
+        make(QKeySequence::Delete, [this](const Element &e) { remove(e); });
+        make(QKeySequence(tr("Ctrl+R")), [this](const Element &e) { toggleReviewed(e); });
+    };
+    install(
+        m_nodePanel->treeView(), [this] { return nodeElement(m_nodePanel->currentSourceIndex()); },
+        false);
+    install(
+        m_launchPanel->treeView(),
+        [this] { return launchElement(m_launchPanel->currentSourceIndex()); }, true);
+    install(
+        m_diagramPanel->view(),
+        [this] {
+            const QStringList keys = m_diagramPanel->selectedKeys();
+            return keys.isEmpty() ? Element{} : diagramElement(keys.first());
+        },
+        true);
+}
+
+} // namespace rosarch
