@@ -440,8 +440,9 @@ void Document::insertCorrection(int index, const Correction &correction)
                                  correction);
     m_corrected.reset();
     markDecisionsChanged();
+    const QStringList described = refreshDescriptions(); // before the views read them
     emitChange(DocumentChange::Corrections, correction.id);
-    for (const QString &id : refreshDescriptions())
+    for (const QString &id : described)
         emitChange(DocumentChange::Node, id);
 }
 
@@ -450,8 +451,9 @@ void Document::takeCorrection(const QString &id)
     m_project.corrections.removeIf([&](const Correction &c) { return c.id == id; });
     m_corrected.reset();
     markDecisionsChanged();
+    const QStringList described = refreshDescriptions(); // before the views read them
     emitChange(DocumentChange::Corrections, id);
-    for (const QString &node : refreshDescriptions())
+    for (const QString &node : described)
         emitChange(DocumentChange::Node, node);
 }
 

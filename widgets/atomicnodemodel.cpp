@@ -62,11 +62,15 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
                                    DocumentChange::Launch)) {
             onCorrectionsChanged();
         } else if (change.has(DocumentChange::Node)) {
+            bool differs = false; // a correction may have shown it already
             if (const AtomicNode *n = m_document->atomicNodes().node(change.id))
                 for (AtomicNode &here : m_nodes.nodes)
-                    if (here.id == change.id)
+                    if (here.id == change.id && here.description != n->description) {
                         here.description = n->description;
-            onNodeChanged(change.id);
+                        differs = true;
+                    }
+            if (differs)
+                onNodeChanged(change.id);
         }
     });
     rebuild();
@@ -112,6 +116,7 @@ AtomicNodeList AtomicNodeModel::merged()
 
 void AtomicNodeModel::onCorrectionsChanged()
 {
+    const QSet<QString> removedBefore = m_removed;
     AtomicNodeList next = merged();
     bool sameShape = next.nodes.size() == m_nodes.nodes.size();
     for (int i = 0; sameShape && i < next.nodes.size(); ++i)
@@ -126,13 +131,31 @@ void AtomicNodeModel::onCorrectionsChanged()
         setProperty("rosarch.keepsCurrent", false);
         return;
     }
-    m_nodes = std::move(next);
+    const AtomicNodeList before = std::exchange(m_nodes, std::move(next));
+    QHash<QString, const AtomicNode *> old;
+    for (const AtomicNode &n : before.nodes)
+        old.insert(n.id, &n);
+    // only the rows whose class or ports read differently now (a large workspace has many)
     for (int p = 0; p < m_packages.size(); ++p) {
         const QModelIndex package = index(p, 0);
         for (int r = 0; r < rowCount(package); ++r) {
             const QModelIndex node = index(r, 0, package);
+            const AtomicNode *now = this->node(node);
+            const AtomicNode *was = now ? old.value(now->id) : nullptr;
+            const auto removedHere = [&](const QSet<QString> &removed) {
+                QStringList ids;
+                for (const QString &id : removed)
+                    if (now && (id == now->id || id.startsWith(now->id + u'/')))
+                        ids << id;
+                ids.sort();
+                return ids;
+            };
+            const bool removedSame = removedHere(removedBefore) == removedHere(m_removed);
+            if (now && was && *now == *was && removedSame)
+                continue;
+            const bool portsSame = now && was && now->ports == was->ports && removedSame;
             Q_EMIT dataChanged(node, node.siblingAtColumn(ColumnCount - 1));
-            if (const int ports = rowCount(node); ports > 0)
+            if (const int ports = rowCount(node); ports > 0 && !portsSame)
                 Q_EMIT dataChanged(index(0, 0, node), index(ports - 1, ColumnCount - 1, node));
         }
     }

@@ -77,6 +77,8 @@ QString CorrectionModel::kindText(int kind)
         return tr("Group");
     case Correction::Kind::Review:
         return tr("Review");
+    case Correction::Kind::Describe:
+        return tr("Describe");
     }
     return {};
 }
@@ -89,6 +91,7 @@ QString change(const Correction &c)
     case Correction::Kind::Rename:
     case Correction::Kind::SetName:
     case Correction::Kind::SetType:
+    case Correction::Kind::Describe:
         return c.oldValue + arrow + c.newValue;
     case Correction::Kind::Remove:
         return c.port.isEmpty() ? c.oldValue : c.oldValue + QStringLiteral(" (%1)").arg(c.port);

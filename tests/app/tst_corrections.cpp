@@ -732,12 +732,12 @@ private Q_SLOTS:
             QDir(ws).filePath(QStringLiteral("rosarch.project.json"))));
         Gui gui;
         gui.document.setRecovery(recover(ws));
-        QCOMPARE(gui.document.corrections().size(), 12);
+        QCOMPARE(gui.document.corrections().size(), 13);
         QAbstractItemModelTester nodes(&gui.nodeModel,
                                        QAbstractItemModelTester::FailureReportingMode::QtTest);
         QAbstractItemModelTester launch(&gui.launchModel,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QCOMPARE(gui.correctionModel.rowCount(), 12);
+        QCOMPARE(gui.correctionModel.rowCount(), 13);
         QVERIFY(gui.launchNodes().contains(QStringLiteral("watchdog")));
         QVERIFY(gui.launchNodes().contains(QStringLiteral("safety")));
         QVERIFY(gui.launchNodes().contains(QStringLiteral("recorder"))); // struck out
