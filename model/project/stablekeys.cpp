@@ -40,8 +40,9 @@ QString fileOf(const LaunchFileInstance &lf)
 StableKeys::StableKeys(const Recovery &recovery)
 {
     addNodes(recovery.nodes);
-    addLaunch(recovery.launch.instances, recovery.launch.nodes);
-    addLaunch(recovery.launch.classifierInstances, recovery.launch.classifierNodes);
+    addLaunch(recovery.launch.instances, recovery.launch.nodes, false);
+    addLaunch(recovery.launch.classifierInstances, recovery.launch.classifierNodes, true);
+    addDeclarations();
     addComposites(recovery.architecture.composites);
     addComposites(recovery.architecture.classifiers);
 }
@@ -106,8 +107,22 @@ void StableKeys::addNodes(const AtomicNodeList &nodes)
     }
 }
 
+void StableKeys::addDeclarations()
+{
+    for (auto it = m_instancesOfKey.begin(); it != m_instancesOfKey.end(); ++it) {
+        if (!it.key().startsWith(QLatin1String("instance:")))
+            continue;
+        QStringList ids = it.value();
+        for (const QString &id : it.value())
+            for (const QString &declared : m_classifierIdsOfPart.value(m_partOfInstance.value(id)))
+                if (!ids.contains(declared))
+                    ids.append(declared);
+        it.value() = ids;
+    }
+}
+
 void StableKeys::addLaunch(const QList<LaunchFileInstance> &instances,
-                           const QList<NodeInstance> &nodes)
+                           const QList<NodeInstance> &nodes, bool classifiers)
 {
     QHash<QString, const LaunchFileInstance *> byId;
     for (const LaunchFileInstance &lf : instances)
@@ -156,6 +171,10 @@ void StableKeys::addLaunch(const QList<LaunchFileInstance> &instances,
             m_instancesOfKey[part].append(n.id);
             if (!m_idOfKey.contains(part))
                 m_idOfKey.insert(part, n.id);
+            if (classifiers)
+                m_classifierIdsOfPart[part].append(n.id);
+            else
+                m_partOfInstance.insert(n.id, part);
         }
     }
 }

@@ -40,7 +40,9 @@ public:
     /// key names the first instance of its declaration; instancesOf has all of them.
     QString idOf(const QString &key) const;
     /// Every node or launch-file instance id `key` designates (an `instance:`, `include:` or
-    /// `part:` key), in model order; empty when it designates none.
+    /// `part:` key), in model order; empty when it designates none. A node instance's key also
+    /// designates its declaration in the CCD of the launch file that declares it, so that a
+    /// correction of an instance shows in that file's diagram too.
     QStringList instancesOf(const QString &key) const;
     /// True when `key` names an element of this recovery.
     bool contains(const QString &key) const;
@@ -57,12 +59,17 @@ public:
 private:
     void add(const QString &id, const QString &key);
     void addNodes(const AtomicNodeList &nodes);
-    void addLaunch(const QList<LaunchFileInstance> &instances, const QList<NodeInstance> &nodes);
+    void addLaunch(const QList<LaunchFileInstance> &instances, const QList<NodeInstance> &nodes,
+                   bool classifiers);
+    /// An instance in a system is also its declaration in the CCD of the file that declares it.
+    void addDeclarations();
     void addComposites(const QList<Composite> &composites);
 
     QHash<QString, QString> m_keyOfId;
     QHash<QString, QString> m_idOfKey;
     QHash<QString, QStringList> m_instancesOfKey;
+    QHash<QString, QString> m_partOfInstance;          ///< node instance id -> part key
+    QHash<QString, QStringList> m_classifierIdsOfPart; ///< part key -> CCD node instance ids
 };
 
 } // namespace rosarch

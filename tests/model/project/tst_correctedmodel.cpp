@@ -144,6 +144,39 @@ private Q_SLOTS:
         QCOMPARE(StableKeys::family(QStringLiteral("arc_1")), QString());
     }
 
+    void anInstanceCorrectionShowsInTheCcdOfItsLaunchFile()
+    {
+        // front_bumper is declared in sensors.launch.xml, included by cart.launch.py: renamed
+        // there, it is renamed in that system and in sensors.launch.xml's own CCD
+        const Recovery r = recoverWorkspace(QDir(caseDir()).filePath(QStringLiteral("ws")));
+        Project p;
+        Correction c;
+        c.id = QStringLiteral("c1");
+        c.kind = Correction::Kind::Rename;
+        c.target = QStringLiteral("instance:src/cart_base/launch/cart.launch.py>"
+                                  "src/cart_base/launch/sensors.launch.xml|front_bumper");
+        c.newValue = QStringLiteral("left_bumper");
+        p.corrections = {c};
+        const CorrectedRecovery corrected = CorrectedModel::apply(r, p);
+        QVERIFY(corrected.orphans.isEmpty());
+        QStringList named;
+        for (const QList<Composite> *list : {&corrected.recovery.architecture.composites,
+                                             &corrected.recovery.architecture.classifiers})
+            for (const Composite &composite : *list)
+                for (const RosNodePart &part : composite.parts)
+                    if (part.name.contains(QLatin1String("bumper")))
+                        named << QStringLiteral("%1 %2").arg(composite.file, part.name);
+        named.sort();
+        QCOMPARE(named, QStringList({QStringLiteral("src/cart_base/launch/sensors.launch.xml "
+                                                    "left_bumper"),
+                                     QStringLiteral("src/cart_base/launch/sensors.launch.xml "
+                                                    "left_bumper"),
+                                     QStringLiteral("src/cart_base/launch/sensors.launch.xml "
+                                                    "rear_bumper"),
+                                     QStringLiteral("src/cart_base/launch/sensors.launch.xml "
+                                                    "rear_bumper")}));
+    }
+
     void identicalSiblingsGetOrdinals()
     {
         Recovery r;
