@@ -438,7 +438,7 @@ QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *par
             a->setShortcut(shortcut);
             a->setShortcutContext(Qt::WidgetShortcut); // shown; the views own the keys
         }
-        connect(a, &QAction::triggered, this, [this, e, fn] { fn(e); });
+        connect(a, &QAction::triggered, this, [e, fn] { fn(e); });
         actions.append(a);
         return a;
     };
