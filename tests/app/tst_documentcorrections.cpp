@@ -64,15 +64,7 @@ private Q_SLOTS:
         QVERIFY(m_home.isValid());
         qputenv("XDG_DATA_HOME", m_home.filePath(QStringLiteral("data")).toUtf8());
         qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral("config")).toUtf8());
-        QDirIterator it(QDir(caseDir()).filePath(QStringLiteral("ws")), QDir::Files,
-                        QDirIterator::Subdirectories);
-        while (it.hasNext()) {
-            const QString file = it.next();
-            const QString target = m_ws.filePath(
-                QDir(QDir(caseDir()).filePath(QStringLiteral("ws"))).relativeFilePath(file));
-            QDir().mkpath(QFileInfo(target).path());
-            QVERIFY(QFile::copy(file, target));
-        }
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), m_ws.path());
         m_recovered = recoverWorkspace(m_ws.path(), fixtureCorrections().launch);
     }
 

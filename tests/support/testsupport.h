@@ -2,6 +2,7 @@
 
 // Shared helpers for the Qt Test executables: fixture paths, files, the real executable.
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
 #include <QMap>
@@ -33,6 +34,44 @@ inline void writeFile(const QString &path, const QByteArray &content)
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(content);
+}
+
+/// Copies every file below `from` to the same place below `to` (replacing what is there).
+inline void copyTree(const QString &from, const QString &to)
+{
+    QDirIterator it(from, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString file = it.next();
+        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
+        QDir().mkpath(QFileInfo(target).path());
+        QFile::remove(target);
+        QVERIFY(QFile::copy(file, target));
+    }
+}
+
+/// Compares `actual` with the expected file, or writes it there when ROSARCH_UPDATE_EXPECTED
+/// is set (after a reviewed change). On a difference the actual output is written next to the
+/// temporary folder's copy for diffing, and the test fails.
+inline void compareOrUpdate(const QByteArray &actual, const QString &expectedPath)
+{
+    if (qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED")) {
+        QDir().mkpath(QFileInfo(expectedPath).path());
+        QFile f(expectedPath);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(actual);
+        return;
+    }
+    QFile in(expectedPath);
+    const QByteArray expected = in.open(QIODevice::ReadOnly) ? in.readAll() : QByteArray();
+    if (actual != expected) {
+        const QString actualPath =
+            QDir::temp().filePath(QFileInfo(expectedPath).fileName() + QStringLiteral(".actual"));
+        QFile f(actualPath);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(actual);
+        QFAIL(qPrintable(QStringLiteral("%1 differs; actual output written to %2 (diff them)")
+                             .arg(expectedPath, actualPath)));
+    }
 }
 
 /// An executable shell script `name` in `dir` running `body` (a stand-in helper program).

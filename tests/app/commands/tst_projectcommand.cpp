@@ -22,18 +22,6 @@ QString projectFile()
     return QDir(caseDir()).filePath(QStringLiteral("rosarch.project.json"));
 }
 
-void copyTree(const QString &from, const QString &to)
-{
-    QDirIterator it(from, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
-        QDir().mkpath(QFileInfo(target).path());
-        QFile::remove(target);
-        QVERIFY(QFile::copy(file, target));
-    }
-}
-
 /// Every file of `expectedDir` is byte-identical in `outDir`.
 void sameAsExpected(const QString &outDir, const QString &expectedDir)
 {
@@ -72,7 +60,7 @@ private Q_SLOTS:
     void recoverAppliesTheWorkspacesOwnProjectUnlessTold()
     {
         QTemporaryDir ws;
-        copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
         QVERIFY(QFile::copy(projectFile(),
                             QDir(ws.path()).filePath(QStringLiteral("rosarch.project.json"))));
         QTemporaryDir out;
@@ -93,14 +81,14 @@ private Q_SLOTS:
     void orphanedEntriesAreReportedByRecoverAndCheck()
     {
         QTemporaryDir ws;
-        copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
         const test::Run clean = test::runRosarch(
             {QStringLiteral("project"), QStringLiteral("check"), projectFile(), ws.path()});
         QCOMPARE(clean.exitCode, 0);
         QVERIFY2(clean.out.contains(QLatin1String("1 decisions and 13 corrections; 0 orphaned")),
                  qPrintable(clean.out));
 
-        copyTree(QDir(caseDir()).filePath(QStringLiteral("change")), ws.path());
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("change")), ws.path());
         const test::Run changed = test::runRosarch(
             {QStringLiteral("project"), QStringLiteral("check"), projectFile(), ws.path()});
         QCOMPARE(changed.exitCode, 1);

@@ -30,27 +30,6 @@ private:
         return QDir(caseDir).filePath(QStringLiteral("ws"));
     }
 
-    static void compareOrUpdate(const QByteArray &actual, const QString &expectedPath)
-    {
-        if (qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED")) {
-            QDir().mkpath(QFileInfo(expectedPath).path());
-            QFile f(expectedPath);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(actual);
-            return;
-        }
-        const QByteArray expected = test::readFile(expectedPath);
-        if (actual != expected) {
-            const QString actualPath = QDir::temp().filePath(QFileInfo(expectedPath).fileName() +
-                                                             QStringLiteral(".actual"));
-            QFile f(actualPath);
-            if (f.open(QIODevice::WriteOnly))
-                f.write(actual);
-            QFAIL(qPrintable(QStringLiteral("%1 differs; actual output written to %2 (diff them)")
-                                 .arg(expectedPath, actualPath)));
-        }
-    }
-
 private Q_SLOTS:
     static void compareDiagrams(const QMap<QString, QByteArray> &produced,
                                 const QString &expectedDir)
@@ -59,7 +38,7 @@ private Q_SLOTS:
         if (!dir.exists())
             return;
         for (auto it = produced.cbegin(); it != produced.cend(); ++it)
-            compareOrUpdate(it.value(), dir.filePath(it.key()));
+            test::compareOrUpdate(it.value(), dir.filePath(it.key()));
         if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED"))
             QCOMPARE(produced.keys(),
                      dir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name));
@@ -89,12 +68,12 @@ private Q_SLOTS:
         const Recovery recovery = recoverWorkspace(ws);
         const AtomicNodeList &list = recovery.nodes;
         QVERIFY(!list.canceled);
-        compareOrUpdate(AtomicNodesJson::write(list),
-                        QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
+        test::compareOrUpdate(AtomicNodesJson::write(list),
+                              QDir(caseDir).filePath(QStringLiteral("expected/atomic_nodes.json")));
         const QString launchExpected =
             QDir(caseDir).filePath(QStringLiteral("expected/launch_dependencies.json"));
         if (QFileInfo::exists(launchExpected))
-            compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
+            test::compareOrUpdate(LaunchDependenciesJson::write(recovery.launch), launchExpected);
 
         // Stage 1's diagnostics, one "code file:line" per line, when the case lists them.
         const QString diagnosticsExpected =
@@ -105,14 +84,15 @@ private Q_SLOTS:
                 lines
                     << QStringLiteral("%1 %2:%3").arg(d.code, d.evidence.file).arg(d.evidence.line);
             lines.sort();
-            compareOrUpdate((lines.join(u'\n') + u'\n').toUtf8(), diagnosticsExpected);
+            test::compareOrUpdate((lines.join(u'\n') + u'\n').toUtf8(), diagnosticsExpected);
         }
 
         const QString archExpected =
             QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
         const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
         if (QFileInfo::exists(archExpected))
-            compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems), archExpected);
+            test::compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems),
+                                  archExpected);
 
         // Expected ACDs and CCDs, when the case has them, must match file by file.
         QMap<QString, QByteArray> acds;

@@ -22,18 +22,6 @@ QString caseDir()
     return test::dataDir(QStringLiteral("project_corrections"));
 }
 
-void copyTree(const QString &from, const QString &to)
-{
-    QDirIterator it(from, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
-        QDir().mkpath(QFileInfo(target).path());
-        QFile::remove(target);
-        QVERIFY(QFile::copy(file, target));
-    }
-}
-
 Project caseProject()
 {
     Project p;
@@ -55,27 +43,6 @@ QString orphansText(const QList<Orphan> &orphans)
     return out;
 }
 
-void compareOrUpdate(const QByteArray &actual, const QString &expectedPath)
-{
-    if (qEnvironmentVariableIsSet("ROSARCH_UPDATE_EXPECTED")) {
-        QDir().mkpath(QFileInfo(expectedPath).path());
-        QFile f(expectedPath);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(actual);
-        return;
-    }
-    const QByteArray expected = test::readFile(expectedPath);
-    if (actual != expected) {
-        const QString actualPath =
-            QDir::temp().filePath(QFileInfo(expectedPath).fileName() + QStringLiteral(".actual"));
-        QFile f(actualPath);
-        if (f.open(QIODevice::WriteOnly))
-            f.write(actual);
-        QFAIL(qPrintable(
-            QStringLiteral("%1 differs; actual written to %2").arg(expectedPath, actualPath)));
-    }
-}
-
 /// The artifacts of `recovery` compared with (or written to) `expectedDir`: the three JSON
 /// artifacts and every ACD and CCD.
 void compareArtifacts(const Recovery &recovery, const QString &expectedDir)
@@ -89,7 +56,7 @@ void compareArtifacts(const Recovery &recovery, const QString &expectedDir)
         if (rel.endsWith(QLatin1String(".puml")) || rel == QLatin1String("atomic_nodes.json") ||
             rel == QLatin1String("launch_dependencies.json") ||
             rel == QLatin1String("architecture.json"))
-            compareOrUpdate(test::readFile(file), QDir(expectedDir).filePath(rel));
+            test::compareOrUpdate(test::readFile(file), QDir(expectedDir).filePath(rel));
     }
 }
 
@@ -239,8 +206,8 @@ private Q_SLOTS:
     void afterTheIdsShiftNothingLandsElsewhere()
     {
         QTemporaryDir ws;
-        copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
-        copyTree(QDir(caseDir()).filePath(QStringLiteral("change")), ws.path());
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("ws")), ws.path());
+        test::copyTree(QDir(caseDir()).filePath(QStringLiteral("change")), ws.path());
         const Project project = caseProject();
         const Recovery before =
             recoverWorkspace(QDir(caseDir()).filePath(QStringLiteral("ws")), project.launch);
@@ -254,8 +221,8 @@ private Q_SLOTS:
 
         const CorrectedRecovery corrected = CorrectedModel::apply(after, project);
         const QString orphans = orphansText(corrected.orphans);
-        compareOrUpdate(orphans.toUtf8(), QDir(caseDir()).filePath(QStringLiteral(
-                                              "corrected_after_change/orphans.txt")));
+        test::compareOrUpdate(orphans.toUtf8(), QDir(caseDir()).filePath(QStringLiteral(
+                                                    "corrected_after_change/orphans.txt")));
         // the rename of safety_monitor and the group that names it by its new name
         QVERIFY2(orphans.contains(QLatin1String("correction c1 rename")), qPrintable(orphans));
         QVERIFY2(orphans.contains(QLatin1String("correction c10 group")), qPrintable(orphans));
