@@ -99,6 +99,7 @@ void CorrectionDialog::setName(const QString &name)
     if (m_name) {
         m_name->setText(name);
         m_name->selectAll();
+        m_name->setFocus(); // F2 and type: the name, not the reason (created first)
     }
 }
 
