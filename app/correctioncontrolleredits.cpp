@@ -1,0 +1,363 @@
+#include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
+#include "correctioncontroller.h"
+#include "correctiondialog.h"
+#include "correctionlookup.h"
+#include "correctionmodel.h"
+#include "correctionpanel.h"
+#include "diagrambuilder.h"
+#include "diagrampanel.h"
+#include "diagramview.h"
+#include "document.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
+#include "traceability.h"
+#include <QAction>
+#include <QMenu>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTreeView>
+#include <QUndoStack>
+
+// The correction controller's edits: each asks what it needs and pushes one correction.
+namespace rosarch {
+
+namespace {
+using Kind = CorrectionController::Element::Kind;
+using namespace CorrectionLookup;
+} // namespace
+
+QStringList CorrectionController::knownTypes()
+{
+    QSet<QString> types;
+    for (const AtomicNode &n : m_document->accepted().nodes.nodes)
+        for (const Port &p : n.ports)
+            if (isCanonicalType(p.type))
+                types.insert(p.type);
+    QStringList out(types.cbegin(), types.cend());
+    out.sort();
+    return out;
+}
+
+bool CorrectionController::rename(const Element &e)
+{
+    if (isRemoved(e))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Rename;
+    const QString old = nameOf(e);
+    QString title = tr("Rename");
+    QString what;
+    switch (e.kind) {
+    case Kind::Port: {
+        const Port *p = findPort(m_document->accepted().nodes, e.id);
+        if (!p)
+            return false;
+        c.target = keyOf(e.id);
+        if (!p->isResolved()) {
+            c.kind = Correction::Kind::SetName;
+            title = tr("Set Name");
+            what = tr("Analysis left the name of this %1 as an expression: %2. Give the name it "
+                      "has at run time.")
+                       .arg(portKindName(p->kind), old);
+        } else {
+            what = tr("Rename the %1 %2 of this class (every instance uses the new name).")
+                       .arg(portKindName(p->kind), old);
+        }
+        break;
+    }
+    case Kind::Instance:
+        c.target = keyOf(e.id);
+        what = tr("Rename the node instance %1.").arg(old);
+        break;
+    case Kind::Channel: {
+        c.target = e.id;
+        // a renamed one is renamed again from where it came from
+        for (const Correction &earlier : m_document->corrections())
+            if (earlier.kind == Correction::Kind::Rename &&
+                StableKeys::family(earlier.target) == StableKeys::family(e.id) &&
+                StableKeys::family(e.id) + u':' + earlier.newValue == e.id)
+                c.target = earlier.target;
+        what = tr("Rename %1 everywhere it is used.").arg(e.id);
+        break;
+    }
+    default:
+        return false;
+    }
+    CorrectionDialog dialog(title, what, CorrectionDialog::Name, m_window);
+    dialog.setName(old);
+    if (!ask(dialog) || dialog.name() == old)
+        return false;
+    c.oldValue = old;
+    c.newValue = dialog.name();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::setType(const Element &e)
+{
+    const Port *p = e.kind == Kind::Port ? findPort(m_document->accepted().nodes, e.id) : nullptr;
+    if (!p || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Set Type"),
+        isCanonicalType(p->type)
+            ? tr("Override the interface type of the %1 %2.")
+                  .arg(portKindName(p->kind), portName(*p))
+            : tr("Analysis could not decide the interface type of the %1 %2 (%3).")
+                  .arg(portKindName(p->kind), portName(*p),
+                       p->type.isEmpty() ? tr("unknown") : p->type),
+        CorrectionDialog::Type, m_window);
+    dialog.setTypeChoices(knownTypes());
+    dialog.setType(isCanonicalType(p->type) ? p->type : QString());
+    dialog.setTypeRequired(true);
+    if (!ask(dialog) || dialog.type() == p->type)
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::SetType;
+    c.target = keyOf(e.id);
+    c.oldValue = p->type;
+    c.newValue = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::remove(const Element &e)
+{
+    if (isRemoved(e))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Remove;
+    QString what;
+    switch (e.kind) {
+    case Kind::Class:
+        what = tr("Remove the class %1 from the model (analysis got it wrong).").arg(nameOf(e));
+        break;
+    case Kind::Port:
+        what = tr("Remove the port %1 from its class.").arg(nameOf(e));
+        break;
+    case Kind::Instance:
+        what = tr("Remove the node instance %1 (it is not started).").arg(nameOf(e));
+        break;
+    case Kind::Connection: {
+        c.port = keyOf(e.port);
+        if (c.port.isEmpty())
+            return false;
+        const Port *p = findPort(m_document->accepted().nodes, e.port);
+        what =
+            tr("Remove the connection of %1 through its %2 %3.")
+                .arg(nameOf(e), p ? portKindName(p->kind) : QString(), p ? portName(*p) : e.port);
+        break;
+    }
+    default:
+        return false;
+    }
+    c.target = keyOf(e.id);
+    CorrectionDialog dialog(tr("Remove"), what, CorrectionDialog::NoField, m_window);
+    if (!ask(dialog))
+        return false;
+    c.oldValue = nameOf(e);
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addPort(const Element &e)
+{
+    if (e.kind != Kind::Class || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Add Port"), tr("Add a port analysis missed to the class %1.").arg(nameOf(e)),
+        CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
+    dialog.setNameLabel(tr("&Name:"));
+    dialog.setTypeChoices(knownTypes());
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddPort;
+    c.target = keyOf(e.id);
+    c.portKind = dialog.portKind();
+    c.newValue = dialog.name();
+    c.type = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addPart(const Element &e)
+{
+    const LaunchFileInstance *lf =
+        e.kind == Kind::LaunchFile ? findLaunchFile(m_document->accepted().launch, e.id) : nullptr;
+    if (!lf || lf->file.isEmpty())
+        return false;
+    QList<QPair<QString, QString>> classes;
+    for (const AtomicNode &n : m_document->accepted().nodes.nodes)
+        if (!n.isPlugin())
+            classes.append({QStringLiteral("%1 (%2)").arg(n.className, n.packageName),
+                            StableKeys::classKey(n)});
+    std::sort(classes.begin(), classes.end());
+    CorrectionDialog dialog(
+        tr("Add Part"),
+        tr("Add a node instance that %1 does not declare (started elsewhere).").arg(lf->file),
+        CorrectionDialog::Choice | CorrectionDialog::Name | CorrectionDialog::Namespace, m_window);
+    dialog.setChoices(tr("&Class:"), classes);
+    dialog.setNameLabel(tr("Node &name:"));
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddPart;
+    c.target = StableKeys::launchKey(*lf);
+    c.classKey = dialog.choice();
+    c.newValue = dialog.name();
+    c.nameSpace = dialog.nameSpace();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::addConnection(const Element &e)
+{
+    if (e.kind != Kind::Instance || isRemoved(e))
+        return false;
+    CorrectionDialog dialog(
+        tr("Add Connection"),
+        tr("Connect the node instance %1 to a topic, service or action analysis missed.")
+            .arg(nameOf(e)),
+        CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
+    dialog.setNameLabel(tr("&On (absolute name):"));
+    dialog.setName(QStringLiteral("/"));
+    dialog.setTypeChoices(knownTypes());
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::AddConnection;
+    c.target = keyOf(e.id);
+    c.portKind = dialog.portKind();
+    c.newValue = dialog.name().startsWith(u'/') ? dialog.name() : u'/' + dialog.name();
+    c.type = dialog.type();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::toggleReviewed(const Element &e)
+{
+    if (e.kind == Kind::None || e.kind == Kind::LaunchFile || e.kind == Kind::Connection ||
+        isRemoved(e))
+        return false;
+    const QString key = keyOf(e.id);
+    if (key.isEmpty())
+        return false;
+    QStringList marks;
+    for (const Correction &c : m_document->corrections())
+        if (c.kind == Correction::Kind::Review && c.target == key)
+            marks.append(c.id);
+    if (!marks.isEmpty()) { // reviewed: the mark goes
+        m_document->undoStack()->beginMacro(tr("Unmark %1 reviewed").arg(nameOf(e)));
+        for (const QString &id : std::as_const(marks))
+            m_document->removeCorrection(id);
+        m_document->undoStack()->endMacro();
+        return true;
+    }
+    Correction c;
+    c.kind = Correction::Kind::Review;
+    c.target = key;
+    return push(c);
+}
+
+bool CorrectionController::group(const QStringList &instanceIds, const QString &rootId)
+{
+    const QString root = keyOf(rootId);
+    if (instanceIds.size() < 2 || StableKeys::family(root) != QLatin1String("include"))
+        return false;
+    QStringList members;
+    QStringList names;
+    for (const QString &id : instanceIds) {
+        const QString key = keyOf(id);
+        if (key.isEmpty())
+            return false;
+        members.append(key);
+        names.append(nameOf({Kind::Instance, id, {}, {}}));
+    }
+    CorrectionDialog dialog(tr("Group into Subsystem"),
+                            tr("Draw %1 as one subsystem.").arg(names.join(QStringLiteral(", "))),
+                            CorrectionDialog::Name, m_window);
+    dialog.setNameLabel(tr("Subsystem &name:"));
+    if (!ask(dialog))
+        return false;
+    Correction c;
+    c.kind = Correction::Kind::Group;
+    c.target = root;
+    c.members = members;
+    c.newValue = dialog.name();
+    c.reason = dialog.reason();
+    return push(c);
+}
+
+bool CorrectionController::restore(const Element &e)
+{
+    const QString id = index().removedBy(e.id);
+    return !id.isEmpty() && m_document->removeCorrection(id);
+}
+
+bool CorrectionController::retarget(const QString &correctionId)
+{
+    const Correction *old = m_document->correction(correctionId);
+    if (!old)
+        return false;
+    const QString family = StableKeys::family(old->target);
+    const Recovery &now = m_document->accepted();
+    const StableKeys keys(now);
+    QList<QPair<QString, QString>> choices;
+    QSet<QString> seen;
+    const auto offer = [&](const QString &text, const QString &key) {
+        if (!key.isEmpty() && !seen.contains(key)) {
+            seen.insert(key);
+            choices.append({text, key});
+        }
+    };
+    if (family == QLatin1String("class") || family == QLatin1String("port")) {
+        for (const AtomicNode &n : now.nodes.nodes) {
+            if (family == QLatin1String("class"))
+                offer(QStringLiteral("%1 (%2)").arg(n.className, n.packageName), keys.keyOf(n.id));
+            else
+                for (const Port &p : n.ports)
+                    offer(QStringLiteral("%1: %2 %3")
+                              .arg(n.className, portKindName(p.kind), portName(p)),
+                          keys.keyOf(n.id + u'/' + p.id));
+        }
+    } else if (family == QLatin1String("instance") || family == QLatin1String("part")) {
+        for (const NodeInstance &n : now.launch.nodes)
+            offer(QStringLiteral("%1 (%2)").arg(instanceName(n), n.nameSpace), keys.keyOf(n.id));
+    } else if (family == QLatin1String("include") || family == QLatin1String("launch")) {
+        for (const LaunchFileInstance &lf : now.launch.instances)
+            if (!lf.file.isEmpty() && (family == QLatin1String("launch") || lf.parentId.isEmpty()))
+                offer(lf.file, family == QLatin1String("launch") ? StableKeys::launchKey(lf)
+                                                                 : keys.keyOf(lf.id));
+    } else {
+        for (const Composite &c : now.architecture.composites)
+            for (const Channel &ch : c.channels)
+                if (channelFamily(ch.kind) == family)
+                    offer(ch.name, family + u':' + ch.name);
+    }
+    std::sort(choices.begin(), choices.end());
+    if (choices.isEmpty()) {
+        Q_EMIT statusMessage(tr("Nothing in this model can take %1").arg(old->id), 6000);
+        return false;
+    }
+    CorrectionDialog dialog(
+        tr("Re-target Correction"),
+        tr("%1 (%2) names %3, which matches nothing now. Point it at:")
+            .arg(old->id, CorrectionModel::kindText(int(old->kind)), old->target),
+        CorrectionDialog::Choice, m_window);
+    dialog.setChoices(tr("&Element:"), choices);
+    dialog.setReason(old->reason);
+    if (!ask(dialog))
+        return false;
+    Correction c = *old;
+    c.target = dialog.choice();
+    c.reason = dialog.reason();
+    m_document->undoStack()->beginMacro(tr("Re-target %1").arg(c.id));
+    m_document->removeCorrection(c.id);
+    const bool ok = !m_document->addCorrection(c).isEmpty();
+    m_document->undoStack()->endMacro();
+    return ok;
+}
+
+} // namespace rosarch
