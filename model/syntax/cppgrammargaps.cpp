@@ -1,4 +1,5 @@
 // Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
+#include "cppcodescan.h"
 #include "cppsyntax.h"
 
 #include <QRegularExpression>
@@ -7,155 +8,7 @@ namespace rosarch::cppsyntax {
 
 namespace {
 
-bool isIdentifierChar(char c)
-{
-    return std::isalnum(uchar(c)) || c == '_';
-}
-
-// The end of the line at `i`, a backslash-continued line included.
-qsizetype endOfLogicalLine(const char *s, qsizetype n, qsizetype i)
-{
-    while (i < n) {
-        if (s[i] == '\n') {
-            const bool continued =
-                (i > 0 && s[i - 1] == '\\') || (i > 1 && s[i - 1] == '\r' && s[i - 2] == '\\');
-            if (!continued)
-                return i;
-        }
-        ++i;
-    }
-    return n;
-}
-
-// The source with comments, preprocessor lines and the contents of string and character
-// literals overwritten by spaces (newlines kept), so that the rewrites below only ever see
-// code: a pattern inside a string or a comment stays as written. One pass, linear.
-QByteArray codeOnly(const QByteArray &source)
-{
-    QByteArray out = source;
-    const char *s = source.constData();
-    char *o = out.data();
-    const qsizetype n = source.size();
-    auto blank = [&](qsizetype from, qsizetype to) {
-        for (qsizetype i = from; i < std::min(to, n); ++i)
-            if (s[i] != '\n' && s[i] != '\r')
-                o[i] = ' ';
-    };
-    bool lineStart = true;
-    qsizetype wordStart = -1;
-    qsizetype wordEnd = -1;
-    for (qsizetype i = 0; i < n;) {
-        const char c = s[i];
-        const char next = i + 1 < n ? s[i + 1] : '\0';
-        if (c == '\n') {
-            lineStart = true;
-            ++i;
-            continue;
-        }
-        if (lineStart && (c == ' ' || c == '\t' || c == '\r')) {
-            ++i;
-            continue;
-        }
-        if (lineStart && c == '#') {
-            const qsizetype end = endOfLogicalLine(s, n, i);
-            blank(i, end);
-            i = end;
-            continue;
-        }
-        lineStart = false;
-        if (c == '/' && next == '/') {
-            const qsizetype end = endOfLogicalLine(s, n, i);
-            blank(i, end);
-            i = end;
-            continue;
-        }
-        if (c == '/' && next == '*') {
-            const qsizetype close = source.indexOf("*/", i + 2);
-            const qsizetype end = close < 0 ? n : close + 2;
-            blank(i, end);
-            i = end;
-            continue;
-        }
-        if (c == '"') {
-            // A raw string's prefix is the identifier right before the quote.
-            const std::string_view prefix =
-                wordEnd == i ? std::string_view(s + wordStart, size_t(i - wordStart))
-                             : std::string_view();
-            const bool raw = prefix == "R" || prefix == "u8R" || prefix == "uR" || prefix == "UR" ||
-                             prefix == "LR";
-            if (raw) {
-                qsizetype open = i + 1; // the delimiter has at most 16 characters
-                while (open < std::min(n, i + 18) && s[open] != '(' && s[open] != '\n')
-                    ++open;
-                if (open < n && s[open] == '(') {
-                    const QByteArray close = ')' + source.mid(i + 1, open - i - 1) + '"';
-                    const qsizetype at = source.indexOf(close, open + 1);
-                    const qsizetype end = at < 0 ? n : at + close.size();
-                    blank(i + 1, end - 1);
-                    i = end;
-                    continue;
-                }
-            }
-            qsizetype j = i + 1;
-            while (j < n && s[j] != '"' && s[j] != '\n')
-                j += s[j] == '\\' ? 2 : 1;
-            blank(i + 1, j);
-            i = j + 1;
-            continue;
-        }
-        if (c == '\'') { // a character literal: digit separators are consumed with their number
-            qsizetype j = i + 1;
-            while (j < n && s[j] != '\'' && s[j] != '\n')
-                j += s[j] == '\\' ? 2 : 1;
-            blank(i + 1, j);
-            i = j + 1;
-            continue;
-        }
-        if (std::isdigit(uchar(c)) || (c == '.' && std::isdigit(uchar(next)))) {
-            qsizetype j = i + 1;
-            while (j < n &&
-                   (isIdentifierChar(s[j]) || s[j] == '.' || s[j] == '\'' ||
-                    ((s[j] == '+' || s[j] == '-') && std::strchr("eEpP", s[j - 1]) != nullptr)))
-                ++j;
-            i = j;
-            continue;
-        }
-        if (isIdentifierChar(c)) {
-            wordStart = i;
-            while (i < n && isIdentifierChar(s[i]))
-                ++i;
-            wordEnd = i;
-            continue;
-        }
-        ++i;
-    }
-    return out;
-}
-
-// The last non-blank offset before `i`, -1 when none.
-qsizetype previousCode(const QByteArray &code, qsizetype i)
-{
-    --i;
-    while (i >= 0 && std::isspace(uchar(code.at(i))))
-        --i;
-    return i;
-}
-
-qsizetype nextCode(const QByteArray &code, qsizetype i)
-{
-    while (i < code.size() && std::isspace(uchar(code.at(i))))
-        ++i;
-    return i;
-}
-
-bool isWordAt(const QByteArray &code, qsizetype i, std::string_view word)
-{
-    const qsizetype end = i + qsizetype(word.size());
-    return i >= 0 && end <= code.size() &&
-           std::string_view(code.constData() + i, word.size()) == word &&
-           (i == 0 || !isIdentifierChar(code.at(i - 1))) &&
-           (end == code.size() || !isIdentifierChar(code.at(end)));
-}
+using namespace scan;
 
 // Explicit instantiations, `template class X<int>;`, `extern template void f<int>(int);`, at
 // the start of a statement: they declare nothing the analysis reads.
@@ -263,14 +116,7 @@ template <typename Blank> void blankMacroArguments(const QByteArray &code, Blank
 {
     const qsizetype n = code.size();
     for (qsizetype i = 0; i < n;) {
-        if (!isIdentifierChar(code.at(i))) {
-            ++i;
-            continue;
-        }
-        const qsizetype start = i;
-        while (i < n && isIdentifierChar(code.at(i)))
-            ++i;
-        const std::string_view word(code.constData() + start, size_t(i - start));
+        const std::string_view word = nextWord(code, &i);
         const bool signature = word == "SIGNAL" || word == "SLOT";
         const bool throws = (word.starts_with("EXPECT_") || word.starts_with("ASSERT_")) &&
                             word.ends_with("_THROW");
@@ -300,26 +146,6 @@ template <typename Blank> void blankMacroArguments(const QByteArray &code, Blank
             continue;
         blank(open + 1, close);
     }
-}
-
-// +1 for an opening bracket, -1 for a closing one, else 0.
-int nesting(char c)
-{
-    return (c == '(' || c == '[' || c == '{') ? 1 : (c == ')' || c == ']' || c == '}') ? -1 : 0;
-}
-
-// The offset of the `)` closing the `(` at `open`, -1 when it does not close before `limit`.
-qsizetype closingParen(const QByteArray &code, qsizetype open, qsizetype limit)
-{
-    limit = std::min(limit, code.size());
-    for (qsizetype i = open, depth = 0; i < limit; ++i) {
-        const char c = code.at(i);
-        if (c == '(' || c == '[' || c == '{')
-            ++depth;
-        else if ((c == ')' || c == ']' || c == '}') && --depth == 0)
-            return c == ')' ? i : -1;
-    }
-    return -1;
 }
 
 // `decltype(a, b)`, the SFINAE idiom `decltype((void)T::header, nullptr)` or `decltype(x,
@@ -532,14 +358,8 @@ template <typename Blank> void blankStandaloneMacros(const QByteArray &code, Bla
     const qsizetype n = code.size();
     qsizetype previousEnd = -1;
     for (qsizetype i = 0; i < n;) {
-        if (!isIdentifierChar(code.at(i))) {
-            ++i;
-            continue;
-        }
-        const qsizetype start = i;
-        while (i < n && isIdentifierChar(code.at(i)))
-            ++i;
-        const std::string_view word(code.constData() + start, size_t(i - start));
+        const std::string_view word = nextWord(code, &i);
+        const qsizetype start = i - qsizetype(word.size());
         // Right after another standalone macro is a statement start too.
         if (!isMacroWord(word) ||
             !(atStatementStart(code, start) || previousCode(code, start) == previousEnd - 1))
