@@ -16,6 +16,7 @@ struct DiagramOptions
     bool showInactive = true;        ///< parts and ports whose condition or guard is false
     bool showExternal = true;        ///< includes of launch files outside the workspace
     QStringList collapsedNamespaces; ///< namespaces drawn as one box ("/robot1")
+    QStringList compactParts;        ///< part ids drawn without port rows, wired by their box
 };
 
 /// Text measures of the drawing, so that boxes fit their labels. The defaults estimate.
