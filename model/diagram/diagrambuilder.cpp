@@ -277,6 +277,10 @@ QString DiagramBuilder::boundaryKey(const QString &boundaryId)
 {
     return QStringLiteral("boundary:") + boundaryId;
 }
+QString DiagramBuilder::collapsedBoundaryKey(bool input)
+{
+    return boundaryKey(input ? QStringLiteral("*in") : QStringLiteral("*out"));
+}
 QString DiagramBuilder::connectionKey(int index)
 {
     return QStringLiteral("connection:%1").arg(index);
@@ -402,13 +406,31 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
                (usedTargets.contains(id) || !connectedTargets.contains(id));
     };
 
-    for (const BoundaryPort &b : c.boundary) {
-        if (!isInputPort(b.kind) || !shown(b.id))
-            continue;
-        LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
-        n.rank = LayoutNode::Rank::Source;
+    // The boundary ports of one side, or one box that stands for them all.
+    const auto addBoundary = [&](bool input) {
+        int count = 0;
+        for (const BoundaryPort &b : c.boundary) {
+            if (isInputPort(b.kind) != input || !shown(b.id))
+                continue;
+            ++count;
+            if (options.collapseBoundary)
+                continue;
+            LayoutNode n =
+                labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
+            n.rank = input ? LayoutNode::Rank::Source : LayoutNode::Rank::Sink;
+            g.nodes << n;
+        }
+        if (!options.collapseBoundary || count == 0)
+            return;
+        const QString label = input
+                                  ? (count == 1 ? tr("1 port in") : tr("%1 ports in").arg(count))
+                                  : (count == 1 ? tr("1 port out") : tr("%1 ports out").arg(count));
+        LayoutNode n = labelledNode(collapsedBoundaryKey(input), label, tr("boundary, collapsed"),
+                                    LayoutNode::Shape::Tag, m);
+        n.rank = input ? LayoutNode::Rank::Source : LayoutNode::Rank::Sink;
         g.nodes << n;
-    }
+    };
+    addBoundary(true);
     QSet<QString> collapsedDone;
     for (const RosNodePart &part : c.parts) {
         if (!visible.parts.contains(part.id))
@@ -478,13 +500,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
             n.cluster = subsystemCluster(g, *member, n.cluster, m);
         g.nodes << n;
     }
-    for (const BoundaryPort &b : c.boundary) {
-        if (isInputPort(b.kind) || !shown(b.id))
-            continue;
-        LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
-        n.rank = LayoutNode::Rank::Sink;
-        g.nodes << n;
-    }
+    addBoundary(false);
     // Boundary ports line up on the frame: one width per side.
     for (const auto rank : {LayoutNode::Rank::Source, LayoutNode::Rank::Sink}) {
         double width = 0;
@@ -499,8 +515,11 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
     QSet<QString> seen;
     for (const Wire &w : std::as_const(wires)) {
         const Connection &conn = *w.connection;
-        const QString target =
-            c.channel(conn.targetId) ? channelKey(conn.targetId) : boundaryKey(conn.targetId);
+        const BoundaryPort *boundary = c.boundaryPort(conn.targetId);
+        const QString target = c.channel(conn.targetId) ? channelKey(conn.targetId)
+                               : boundary && options.collapseBoundary
+                                   ? collapsedBoundaryKey(isInputPort(boundary->kind))
+                                   : boundaryKey(conn.targetId);
         const bool fromPart = conn.kind == Connection::Kind::Publish ||
                               conn.kind == Connection::Kind::Client ||
                               conn.kind == Connection::Kind::DelegationOut;

@@ -31,6 +31,7 @@ DiagramOptions DiagramOverview::options(const Composite &c, DiagramOptions optio
             break;
         }
     }
+    options.collapseBoundary = true;
     options.compactParts.clear();
     for (const RosNodePart *part : std::as_const(parts))
         options.compactParts << part->id;

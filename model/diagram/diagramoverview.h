@@ -8,8 +8,8 @@ namespace rosarch {
 
 /// The overview of a composite too big to read at fit zoom: its outermost namespaces that
 /// split it (the shallowest level with more than one, or with parts beside it) collapsed to
-/// one box each, and every part drawn without its port rows; DiagramBuilder then hides the
-/// channels inside a box and merges the edges between boxes and channels.
+/// one box each, every part drawn without its port rows, and the boundary ports of each side
+/// as one box; DiagramBuilder then hides the channels inside a box and merges the edges.
 class DiagramOverview
 {
 public:

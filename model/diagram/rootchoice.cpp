@@ -17,26 +17,77 @@ const QStringList &entryWords()
     return words;
 }
 
-/// 0 = the stem is an entry word, 1 = it contains one, 2 = neither.
-int nameRank(const QString &stem)
+/// 0 = the stem is an entry word, 1 = it contains one, 2 = a folder on its path does (a
+/// `robot_bringup` package), 3 = none.
+int nameRank(const LaunchRoot &root)
 {
-    const QString lower = stem.toLower();
+    const QString lower = root.stem.toLower();
     if (entryWords().contains(lower))
         return 0;
     for (const QString &w : entryWords())
         if (lower.contains(w))
             return 1;
-    return 2;
+    const QString folder = root.file.section(QLatin1Char('/'), 0, -2).toLower();
+    for (const QString &w : entryWords())
+        if (folder.contains(w))
+            return 2;
+    return 3;
 }
 
-/// Test launch files start a system only to check it; a person rarely wants them first.
-bool isTestFile(const QString &file)
+/// Tests, benchmarks, tools and examples start a system only to check, measure or show it; a
+/// person rarely wants them first.
+bool isAuxiliary(const QString &file)
 {
     for (const QString &segment : file.toLower().split(QLatin1Char('/'), Qt::SkipEmptyParts))
         if (segment == QLatin1String("test") || segment == QLatin1String("tests") ||
-            segment.startsWith(QLatin1String("test_")) || segment.contains(QLatin1String("_test")))
+            segment.startsWith(QLatin1String("test_")) ||
+            segment.contains(QLatin1String("_test")) ||
+            segment.contains(QLatin1String("benchmark")) || segment == QLatin1String("tools") ||
+            segment == QLatin1String("example") || segment == QLatin1String("examples"))
             return true;
     return false;
+}
+
+/// The choice among roots of one kind (auxiliary or not); Ask when none stands out.
+RootChoice chooseAmong(const QList<const LaunchRoot *> &roots)
+{
+    // By name: exact, then contained, each by shallower path, fewer unresolved.
+    const auto byName = [](const LaunchRoot *r) {
+        return std::make_tuple(nameRank(*r), int(r->file.count('/')), r->unresolved, r->file.size(),
+                               r->file);
+    };
+    // In a bringup/robot/system folder: the one that includes the most, as below.
+    const auto byFolder = [](const LaunchRoot *r) {
+        return std::make_tuple(-r->includes, r->unresolved, int(r->file.count('/')), r->file.size(),
+                               r->file);
+    };
+    const LaunchRoot *named = nullptr;
+    const LaunchRoot *inFolder = nullptr;
+    for (const LaunchRoot *r : roots) {
+        const int rank = nameRank(*r);
+        if (rank < 2 && (!named || byName(r) < byName(named)))
+            named = r;
+        else if (rank == 2 && (!inFolder || byFolder(r) < byFolder(inFolder)))
+            inFolder = r;
+    }
+    if (named)
+        return {named->instanceId, RootChoice::Reason::Name};
+    if (inFolder)
+        return {inFolder->instanceId, RootChoice::Reason::Name};
+
+    const LaunchRoot *widest = nullptr;
+    bool tie = false;
+    for (const LaunchRoot *r : roots) {
+        if (!widest || r->includes > widest->includes) {
+            widest = r;
+            tie = false;
+        } else if (r->includes == widest->includes) {
+            tie = true;
+        }
+    }
+    if (widest && widest->includes > 0 && !tie)
+        return {widest->instanceId, RootChoice::Reason::Includes};
+    return {QString(), RootChoice::Reason::Ask};
 }
 
 } // namespace
@@ -90,29 +141,16 @@ RootChoice RootChoice::choose(const QList<LaunchRoot> &roots, const QString &rem
     if (roots.size() == 1)
         return {roots.first().instanceId, Reason::Only};
 
-    const auto order = [](const LaunchRoot &r) {
-        return std::make_tuple(isTestFile(r.file), nameRank(r.stem), int(r.file.count('/')),
-                               r.unresolved, r.file.size(), r.file);
-    };
-    const LaunchRoot *named = nullptr;
-    for (const LaunchRoot &r : roots)
-        if (nameRank(r.stem) < 2 && (!named || order(r) < order(*named)))
-            named = &r;
-    if (named)
-        return {named->instanceId, Reason::Name};
-
-    const LaunchRoot *widest = nullptr;
-    bool tie = false;
-    for (const LaunchRoot &r : roots) {
-        if (!widest || r.includes > widest->includes) {
-            widest = &r;
-            tie = false;
-        } else if (r.includes == widest->includes) {
-            tie = true;
-        }
+    // Systems first; tests, benchmarks, tools and examples only when no system stands out.
+    for (const bool auxiliary : {false, true}) {
+        QList<const LaunchRoot *> pool;
+        for (const LaunchRoot &r : roots)
+            if (isAuxiliary(r.file) == auxiliary)
+                pool << &r;
+        const RootChoice choice = chooseAmong(pool);
+        if (choice.reason != Reason::Ask)
+            return choice;
     }
-    if (widest->includes > 0 && !tie)
-        return {widest->instanceId, Reason::Includes};
     return {QString(), Reason::Ask};
 }
 

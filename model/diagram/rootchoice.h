@@ -28,7 +28,7 @@ struct RootChoice
         None,       ///< no root at all
         Remembered, ///< a person chose it before (or the project's launch root)
         Only,       ///< the only root
-        Name,       ///< its stem is or contains "bringup", "robot" or "system"
+        Name,       ///< its stem (or its folder) is or contains "bringup", "robot" or "system"
         Includes,   ///< it includes the most other launch files
         Ask         ///< several roots and no signal: ask the person (instanceId is "")
     };
@@ -41,10 +41,11 @@ struct RootChoice
     static QList<LaunchRoot> roots(const Architecture &architecture,
                                    const LaunchDependencies &launch);
     /// The root a person most likely wants to see first: the one whose file is `remembered`
-    /// (workspace-relative), else the only one, else one named like a system's entry point
-    /// (files outside tests first, then an exact stem before a stem that contains the word,
-    /// shallower paths, fewer unresolved), else the unique one including the most others,
-    /// else none (Ask). Pure: the same roots always give the same choice.
+    /// (workspace-relative), else the only one; else, among systems before tests, benchmarks,
+    /// tools and examples: one whose stem is or contains "bringup", "robot" or "system" (exact
+    /// before contained, then shallower path, fewer unresolved), else one in a folder named so
+    /// (the one including the most), else the unique one including the most others; else none
+    /// (Ask). Pure: the same roots always give the same choice.
     static RootChoice choose(const QList<LaunchRoot> &roots, const QString &remembered = {});
 };
 

@@ -58,6 +58,9 @@ public:
     /// Draws a part of the current composite without its port rows, or with them again.
     void setPartCompact(const QString &partId, bool compact);
     bool isPartCompact(const QString &partId) const;
+    /// Draws the boundary ports of the current composite as one box per side, or each again.
+    void setBoundaryCollapsed(bool collapsed);
+    bool isBoundaryCollapsed() const { return m_boundaryCollapsed.contains(m_current); }
     /// The current composite as an overview: namespaces collapsed, parts without ports.
     void showOverview();
     /// Every namespace and part of the current composite drawn in full.
@@ -162,6 +165,7 @@ private:
     DiagramOptions m_options;
     QHash<QString, QStringList> m_collapsed; // per composite
     QHash<QString, QStringList> m_compact;   // per composite: parts drawn without ports
+    QSet<QString> m_boundaryCollapsed;       ///< composites whose boundary is one box per side
     QSet<QString> m_sizeChecked;             ///< composites whose size was checked for the overview
     QList<LaunchRoot> m_roots;
     QHash<QString, DiagramMark> m_marks;

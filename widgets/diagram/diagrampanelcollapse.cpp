@@ -47,6 +47,17 @@ bool DiagramPanel::isPartCompact(const QString &partId) const
     return m_compact.value(m_current).contains(partId);
 }
 
+void DiagramPanel::setBoundaryCollapsed(bool collapsed)
+{
+    if (collapsed == isBoundaryCollapsed())
+        return;
+    if (collapsed)
+        m_boundaryCollapsed.insert(m_current);
+    else
+        m_boundaryCollapsed.remove(m_current);
+    relayout();
+}
+
 void DiagramPanel::showOverview()
 {
     const Composite *c = composite();
@@ -55,6 +66,7 @@ void DiagramPanel::showOverview()
     const DiagramOptions overview = DiagramOverview::options(*c, m_options);
     m_collapsed[m_current] = overview.collapsedNamespaces;
     m_compact[m_current] = overview.compactParts;
+    m_boundaryCollapsed.insert(m_current);
     m_sizeChecked.insert(m_current);
     m_fitPending = true;
     relayout();
@@ -64,6 +76,7 @@ void DiagramPanel::expandAll()
 {
     m_collapsed.remove(m_current);
     m_compact.remove(m_current);
+    m_boundaryCollapsed.remove(m_current);
     m_sizeChecked.insert(m_current);
     m_fitPending = true;
     relayout();
@@ -71,7 +84,8 @@ void DiagramPanel::expandAll()
 
 bool DiagramPanel::isCollapsed() const
 {
-    return !m_collapsed.value(m_current).isEmpty() || !m_compact.value(m_current).isEmpty();
+    return !m_collapsed.value(m_current).isEmpty() || !m_compact.value(m_current).isEmpty() ||
+           isBoundaryCollapsed();
 }
 
 qreal DiagramPanel::legibleZoom() const
@@ -88,12 +102,14 @@ DiagramOptions DiagramPanel::currentOptions() const
     DiagramOptions options = m_options;
     options.collapsedNamespaces = m_collapsed.value(m_current);
     options.compactParts = m_compact.value(m_current);
+    options.collapseBoundary = isBoundaryCollapsed();
     return options;
 }
 
 bool DiagramPanel::overviewInstead(const QSizeF &size)
 {
-    if (m_sizeChecked.contains(m_current) || !m_fitPending)
+    // A view not on screen has no size to fit: decide when it is shown and fitted.
+    if (m_sizeChecked.contains(m_current) || !m_fitPending || !m_view->isVisible())
         return false;
     m_sizeChecked.insert(m_current);
     if (m_view->fitZoom(size) >= m_view->legibleZoom())
@@ -103,10 +119,11 @@ bool DiagramPanel::overviewInstead(const QSizeF &size)
         return false;
     const DiagramOptions overview = DiagramOverview::options(*c, m_options);
     if (overview.collapsedNamespaces == m_collapsed.value(m_current) &&
-        overview.compactParts == m_compact.value(m_current))
+        overview.compactParts == m_compact.value(m_current) && isBoundaryCollapsed())
         return false; // already as small as it gets: fit stops at the legible zoom
     m_collapsed[m_current] = overview.collapsedNamespaces;
     m_compact[m_current] = overview.compactParts;
+    m_boundaryCollapsed.insert(m_current);
     return true;
 }
 
@@ -125,6 +142,8 @@ void DiagramPanel::onElementDoubleClicked(const QString &key)
             setPartCompact(part->id, false);
     } else if (k.kind == DiagramKey::Kind::Namespace && isNamespaceCollapsed(k.id)) {
         setNamespaceCollapsed(k.id, false);
+    } else if (k.kind == DiagramKey::Kind::Boundary && isBoundaryCollapsed()) {
+        setBoundaryCollapsed(false);
     }
 }
 
@@ -170,6 +189,14 @@ QList<QAction *> DiagramPanel::elementActions(const QString &key)
                     [this, ns = chain.last()] { setNamespaceCollapsed(ns, true); });
             actions << a;
         }
+    }
+    if (k.kind == DiagramKey::Kind::Boundary) {
+        const bool collapsed = isBoundaryCollapsed();
+        auto *a = new QAction(
+            collapsed ? tr("Show Each Boundary Port") : tr("Collapse Boundary Ports"), this);
+        connect(a, &QAction::triggered, this,
+                [this, collapsed] { setBoundaryCollapsed(!collapsed); });
+        actions << a;
     }
     if (isCollapsed()) {
         auto *a = new QAction(tr("Expand All"), this);

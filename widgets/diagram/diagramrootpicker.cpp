@@ -61,6 +61,7 @@ void DiagramRootPicker::setCurrentRoot(const QString &instanceId)
     setCurrentIndex(index);
     if (index < 0)
         lineEdit()->clear();
+    lineEdit()->setCursorPosition(0); // the name's start, not its end, when it is cut
 }
 
 QString DiagramRootPicker::currentRoot() const
@@ -72,8 +73,10 @@ void DiagramRootPicker::focusOutEvent(QFocusEvent *event)
 {
     QComboBox::focusOutEvent(event);
     // A search typed and left: show the root again rather than a half-typed name.
-    if (currentIndex() >= 0 && lineEdit()->text() != itemText(currentIndex()))
+    if (currentIndex() >= 0 && lineEdit()->text() != itemText(currentIndex())) {
         lineEdit()->setText(itemText(currentIndex()));
+        lineEdit()->setCursorPosition(0);
+    }
 }
 
 } // namespace rosarch

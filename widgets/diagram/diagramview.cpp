@@ -76,8 +76,14 @@ void DiagramView::fitDiagram()
     const QRectF rect = sceneRect();
     if (rect.isEmpty())
         return;
-    setZoom(std::min(std::max(fitZoom(), m_legibleZoom), 1.0));
-    centerOn(rect.center());
+    const qreal fit = fitZoom();
+    setZoom(std::min(std::max(fit, m_legibleZoom), 1.0));
+    if (fit >= zoom()) {
+        centerOn(rect.center());
+    } else { // too big to fit legibly: start where reading starts, at the top left
+        const QSizeF visible = QSizeF(viewport()->size()) / zoom();
+        centerOn(rect.left() + visible.width() / 2, rect.top() + visible.height() / 2);
+    }
     m_minimap->updateVisibility();
 }
 

@@ -49,6 +49,19 @@ void TestDiagramOverview::collapsesRobotNamespacesAndPorts()
         }
     QCOMPARE(nodes, (QStringList{"map_server", "/robot1", "/robot2", "/robot3", "/robot4",
                                  "fleet_monitor"}));
+    // The boundary: one box per side, the robots' goals in, the fleet's status out.
+    QVERIFY(o.collapseBoundary);
+    const LayoutNode *in = g.node(DiagramBuilder::collapsedBoundaryKey(true));
+    const LayoutNode *out = g.node(DiagramBuilder::collapsedBoundaryKey(false));
+    QVERIFY(in && out);
+    QCOMPARE(in->label, QStringLiteral("4 ports in"));
+    QCOMPARE(out->label, QStringLiteral("1 port out"));
+    QCOMPARE(in->rank, LayoutNode::Rank::Source);
+    QCOMPARE(edgesAt(g, in->id), 4); // one per robot box
+    for (const LayoutNode &n : g.nodes)
+        QVERIFY2(n.key == in->key || n.key == out->key ||
+                     !n.key.startsWith(QLatin1String("boundary:")),
+                 qPrintable(n.key));
     QCOMPARE(g.node(QStringLiteral("part:part1"))->detail, QStringLiteral("MapServer · 2 ports"));
     QCOMPARE(g.node(QStringLiteral("part:part18"))->detail,
              QStringLiteral("FleetMonitor · 6 ports"));
@@ -141,6 +154,8 @@ void TestDiagramOverview::expandRestores()
     // Expanding everything gives the full diagram, exactly.
     o.collapsedNamespaces.clear();
     o.compactParts.clear();
+    QVERIFY(DiagramBuilder::build(fleet, o).node(DiagramBuilder::collapsedBoundaryKey(true)));
+    o.collapseBoundary = false;
     QCOMPARE(DiagramBuilder::build(fleet, o), DiagramBuilder::build(fleet));
 }
 

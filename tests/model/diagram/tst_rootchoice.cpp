@@ -74,6 +74,21 @@ void TestRootChoice::choose_data()
         << QList<LaunchRoot>{root("lf1", "sys/test/bringup.launch.py"),
                              root("lf2", "sys/launch/deeper/robot_bringup.launch.py")}
         << QString() << "lf2" << int(R::Name);
+    // nav2: the bringup package's roots have plain names; its benchmarks are named bringup.
+    QTest::newRow("bringup folder")
+        << QList<LaunchRoot>{root("lf1", "tools/bench/planning_benchmark_bringup.py", 1),
+                             root("lf2", "nav_bringup/launch/slam_launch.py", 2),
+                             root("lf3", "nav_bringup/launch/multi_sim_launch.py", 9),
+                             root("lf4", "nav_system_tests/src/test_system_launch.py", 12),
+                             root("lf5", "nav_commander/launch/demo_launch.py", 4)}
+        << QString() << "lf3" << int(R::Name);
+    QTest::newRow("system before a named benchmark")
+        << QList<LaunchRoot>{root("lf1", "tools/bench/planning_benchmark_bringup.py", 1),
+                             root("lf2", "pkg/launch/everything.launch.py", 3)}
+        << QString() << "lf2" << int(R::Includes);
+    QTest::newRow("only auxiliary") << QList<LaunchRoot>{root("lf1", "pkg/test/a_launch.py"),
+                                                         root("lf2", "pkg/test/robot_launch.py")}
+                                    << QString() << "lf2" << int(R::Name);
     QTest::newRow("case-insensitive")
         << QList<LaunchRoot>{root("lf1", "a/launch/talker.launch.py"),
                              root("lf2", "a/launch/MyRobot.launch.xml")}

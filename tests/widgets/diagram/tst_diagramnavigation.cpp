@@ -184,6 +184,11 @@ void TestDiagramNavigation::tooBigStartsAsAnOverview()
             !dynamic_cast<DiagramNodeItem *>(panel.scene()->item("namespace:/robot1")));
     QVERIFY(namePixels(panel) >= legiblePixels(panel) - 0.01);
     QVERIFY(panel.view()->fitZoom() < panel.view()->legibleZoom());
+    // It starts where reading starts: the top left corner.
+    const QRectF shown = panel.view()->mapToScene(panel.view()->viewport()->rect()).boundingRect();
+    QVERIFY(qAbs(shown.top() - panel.scene()->sceneRect().top()) < 2);
+    QVERIFY(qAbs(shown.left() - panel.scene()->sceneRect().left()) < 2);
+    QVERIFY(panel.view()->minimap()->isVisible());
     // And back to the overview.
     QVERIFY(laidOut(panel, [&] { panel.overviewAction()->trigger(); }));
     QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot3")));
