@@ -29,6 +29,7 @@ void DiagramMinimap::refresh()
 {
     QGraphicsScene *scene = m_view->scene();
     m_sceneRect = scene ? scene->sceneRect() : QRectF();
+    m_contentRect = scene ? scene->itemsBoundingRect() : QRectF();
     m_picture = {};
     if (scene && !m_sceneRect.isEmpty()) {
         QSizeF size = m_sceneRect.size();
@@ -48,7 +49,8 @@ void DiagramMinimap::refresh()
 void DiagramMinimap::updateVisibility()
 {
     const QRectF shown = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
-    const bool fits = m_picture.isNull() || shown.adjusted(-1, -1, 1, 1).contains(m_sceneRect);
+    // The drawing, not the margin around it, decides.
+    const bool fits = m_picture.isNull() || shown.adjusted(-1, -1, 1, 1).contains(m_contentRect);
     place();
     setVisible(!fits);
     if (!fits)

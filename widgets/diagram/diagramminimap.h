@@ -41,7 +41,8 @@ private:
 
     QGraphicsView *m_view;
     QPixmap m_picture;
-    QRectF m_sceneRect; ///< what m_picture shows
+    QRectF m_sceneRect;   ///< what m_picture shows
+    QRectF m_contentRect; ///< the drawing inside it, without the scene's margin
 };
 
 } // namespace rosarch

@@ -1,5 +1,6 @@
 #include "diagramrootpicker.h"
 
+#include <QAbstractItemView>
 #include <QCompleter>
 #include <QDir>
 #include <QLineEdit>
@@ -11,8 +12,10 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
     setObjectName(QStringLiteral("diagramRootPicker"));
     setEditable(true);
     setInsertPolicy(QComboBox::NoInsert);
-    setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    setMinimumContentsLength(14);
+    // Long launch-file names (autoware's) would push the breadcrumbs away: the list is wider.
+    setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    setMinimumContentsLength(22);
+    view()->setTextElideMode(Qt::ElideNone);
     setMaxVisibleItems(20);
     completer()->setFilterMode(Qt::MatchContains);
     completer()->setCompletionMode(QCompleter::PopupCompletion);
@@ -51,6 +54,8 @@ void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
                     Qt::ToolTipRole);
     }
     setEnabled(!roots.isEmpty());
+    view()->setMinimumWidth(view()->sizeHintForColumn(0) + 24);
+    completer()->popup()->setMinimumWidth(view()->minimumWidth());
     setCurrentRoot(current);
 }
 
