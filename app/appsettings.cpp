@@ -22,6 +22,8 @@ const QString kSelLaunch = QStringLiteral("session/launchItem");
 const QString kLaunchOptions = QStringLiteral("launch/options");
 const QString kRootKey = QStringLiteral("root");
 const QString kArgumentsKey = QStringLiteral("arguments");
+// The root launch file the composed diagram shows, per workspace (workspace-relative).
+const QString kDiagramRoots = QStringLiteral("diagram/roots");
 // The LLM; the API key has no key here on purpose: it only comes from the environment.
 const QString kLlmEndpoint = QStringLiteral("llm/endpoint");
 const QString kLlmModel = QStringLiteral("llm/model");
@@ -251,6 +253,21 @@ QString AppSettings::plantUmlJar() const
 void AppSettings::setPlantUmlJar(const QString &path)
 {
     m_settings->setValue(QStringLiteral("plantuml/jar"), path);
+}
+
+QString AppSettings::diagramRoot(const QString &workspace) const
+{
+    return m_settings->value(kDiagramRoots).toMap().value(normalized(workspace)).toString();
+}
+
+void AppSettings::setDiagramRoot(const QString &workspace, const QString &rootFile)
+{
+    QVariantMap all = m_settings->value(kDiagramRoots).toMap();
+    if (rootFile.isEmpty())
+        all.remove(normalized(workspace));
+    else
+        all.insert(normalized(workspace), rootFile);
+    m_settings->setValue(kDiagramRoots, all);
 }
 
 } // namespace rosarch

@@ -57,6 +57,11 @@ public:
     LaunchOptions launchOptions(const QString &workspace) const;
     void setLaunchOptions(const QString &workspace, const LaunchOptions &options);
 
+    /// The root launch file (workspace-relative) a person chose for the composed diagram of
+    /// `workspace` ("" when never chosen).
+    QString diagramRoot(const QString &workspace) const;
+    void setDiagramRoot(const QString &workspace, const QString &rootFile);
+
     /// The LLM endpoint, model, temperature and timeouts (never the API key); when nothing
     /// was stored, $ROSARCH_LLM_ENDPOINT / $ROSARCH_LLM_MODEL or the defaults.
     LlmSettings llmSettings() const;

@@ -9,6 +9,7 @@
 #include "logview.h"
 #include "recovereddiagrams.h"
 #include "recovery.h"
+#include "rootchoice.h"
 #include "stablekeys.h"
 #include "subsystemgrouping.h"
 #include "talkerspanel.h"
@@ -72,6 +73,7 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
             &DiagramController::onClassPortSelected);
     connect(m_talkers, &TalkersPanel::talkerSelected, this, &DiagramController::onTalkerSelected);
     connect(m_panel, &DiagramPanel::compositeShown, this, &DiagramController::applyMarks);
+    connect(m_panel, &DiagramPanel::rootChosen, this, &DiagramController::rememberRoot);
     connect(m_panel, &DiagramPanel::layoutFinished, this, [this](bool ok) {
         if (ok && !m_pendingInstance.isEmpty())
             m_panel->selectInstance(m_pendingInstance);
@@ -105,12 +107,24 @@ void DiagramController::showArchitecture()
                 if (channelFamily(ch.kind) == family && ch.name == c.newValue)
                     ch.marks.provenance = Provenance::Corrected;
     }
-    if (m_preview.isEmpty()) {
-        m_panel->setArchitecture(accepted);
+    if (!m_preview.isEmpty()) // the accepted model with the previewed grouping on top
+        accepted = SubsystemGrouping::apply(accepted, m_preview);
+    const QList<LaunchRoot> roots = RootChoice::roots(accepted, m_document->launchDependencies());
+    // Where to start when the composite shown is gone: the project's launch root, else the
+    // root a person chose here before, else the one most likely wanted (or ask).
+    QString remembered = m_document->launchOptions().rootFile;
+    if (remembered.isEmpty() && !m_document->workspaceRoot().isEmpty())
+        remembered = AppSettings().diagramRoot(m_document->workspaceRoot());
+    const RootChoice start = RootChoice::choose(roots, remembered);
+    m_panel->setArchitecture(accepted, roots, start);
+}
+
+void DiagramController::rememberRoot(const QString &instanceId)
+{
+    const Composite *c = m_panel->architecture().composite(instanceId);
+    if (!c || c->file.isEmpty() || m_document->workspaceRoot().isEmpty())
         return;
-    }
-    // The accepted model with the previewed grouping on top.
-    m_panel->setArchitecture(SubsystemGrouping::apply(accepted, m_preview));
+    AppSettings().setDiagramRoot(m_document->workspaceRoot(), c->file);
 }
 
 void DiagramController::previewGrouping(const QString &name, const QStringList &memberIds,

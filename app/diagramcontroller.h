@@ -65,6 +65,8 @@ private:
     void showTalkers(const QString &subject, const QString &scopeId,
                      const QList<TalkerGroup> &groups);
     void showArchitecture();
+    /// Remembers a root a person chose in the diagram for this workspace.
+    void rememberRoot(const QString &instanceId);
     void applyMarks();
     void exportDialog(const QString &suffix);
     void compareDialog();

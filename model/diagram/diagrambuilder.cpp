@@ -88,7 +88,8 @@ int marksFlags(const Marks &marks)
            (marks.reviewed ? LayoutReviewed : 0);
 }
 
-LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const DiagramMetrics &m)
+LayoutNode partNode(const RosNodePart &part, const Visibility &visible, bool compact,
+                    const DiagramMetrics &m)
 {
     LayoutNode n;
     n.id = n.key = DiagramBuilder::partKey(part.id);
@@ -112,8 +113,12 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const Di
     n.rowHeight = std::ceil(m.smallHeight + 6);
     double inputWidth = 0;
     double outputWidth = 0;
+    int portCount = 0;
     for (const PartPort &port : part.ports) {
         if (!visible.ports.contains(part.id + QLatin1Char('/') + port.id))
+            continue;
+        ++portCount;
+        if (compact)
             continue;
         LayoutPort p;
         p.id = port.id;
@@ -126,6 +131,9 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, const Di
         side = std::max(side, m.smallWidth(p.label));
         n.ports << p;
     }
+    if (compact && portCount > 0) // the ports stay countable: "Planner · 12 ports"
+        n.detail = portCount == 1 ? tr("%1 · 1 port").arg(n.detail)
+                                  : tr("%1 · %2 ports").arg(n.detail).arg(portCount);
     const double header = std::max(m.titleWidth(n.label), m.smallWidth(n.detail)) + 2 * kPadding +
                           ((n.flags & LayoutOpenable) ? 24 : 0);
     const double rows = inputWidth + outputWidth + 2 * kPortInset + kColumnGap;
@@ -269,6 +277,10 @@ QString DiagramBuilder::boundaryKey(const QString &boundaryId)
 {
     return QStringLiteral("boundary:") + boundaryId;
 }
+QString DiagramBuilder::collapsedBoundaryKey(bool input)
+{
+    return boundaryKey(input ? QStringLiteral("*in") : QStringLiteral("*out"));
+}
 QString DiagramBuilder::connectionKey(int index)
 {
     return QStringLiteral("connection:%1").arg(index);
@@ -369,22 +381,56 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
             continue;
         const QString ns = collapsedAncestor(part->nameSpace, options.collapsedNamespaces);
         const QStringList chain = namespaceChain(ns);
+        const bool compact = options.compactParts.contains(part->id);
         wires << Wire{i, &conn, ns.isEmpty() ? partKey(part->id) : namespaceKey(ns),
-                      ns.isEmpty() ? conn.portId : QString(),
+                      ns.isEmpty() && !compact ? conn.portId : QString(),
                       ns.isEmpty() ? part->nameSpace : chain.value(chain.size() - 2)};
         usedTargets.insert(conn.targetId);
     }
+    // A channel whose every wire ends in one collapsed namespace is inside that box: counted
+    // there, not drawn (with its edges) outside it.
+    QHash<QString, QSet<QString>> channelEnds;
+    for (const Wire &w : std::as_const(wires))
+        if (c.channel(w.connection->targetId))
+            channelEnds[w.connection->targetId].insert(w.partNode);
+    QSet<QString> innerChannels;
+    QHash<QString, int> innerCounts; // per collapsed namespace
+    for (auto it = channelEnds.cbegin(); it != channelEnds.cend(); ++it)
+        if (it.value().size() == 1 &&
+            DiagramKey::parse(*it.value().cbegin()).kind == DiagramKey::Kind::Namespace) {
+            innerChannels.insert(it.key());
+            innerCounts[DiagramKey::parse(*it.value().cbegin()).id]++;
+        }
     const auto shown = [&](const QString &id) {
-        return usedTargets.contains(id) || !connectedTargets.contains(id);
+        return !innerChannels.contains(id) &&
+               (usedTargets.contains(id) || !connectedTargets.contains(id));
     };
 
-    for (const BoundaryPort &b : c.boundary) {
-        if (!isInputPort(b.kind) || !shown(b.id))
-            continue;
-        LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
-        n.rank = LayoutNode::Rank::Source;
+    // The boundary ports of one side, or one box that stands for them all.
+    const auto addBoundary = [&](bool input) {
+        int count = 0;
+        for (const BoundaryPort &b : c.boundary) {
+            if (isInputPort(b.kind) != input || !shown(b.id))
+                continue;
+            ++count;
+            if (options.collapseBoundary)
+                continue;
+            LayoutNode n =
+                labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
+            n.rank = input ? LayoutNode::Rank::Source : LayoutNode::Rank::Sink;
+            g.nodes << n;
+        }
+        if (!options.collapseBoundary || count == 0)
+            return;
+        const QString label = input
+                                  ? (count == 1 ? tr("1 port in") : tr("%1 ports in").arg(count))
+                                  : (count == 1 ? tr("1 port out") : tr("%1 ports out").arg(count));
+        LayoutNode n = labelledNode(collapsedBoundaryKey(input), label, tr("boundary, collapsed"),
+                                    LayoutNode::Shape::Tag, m);
+        n.rank = input ? LayoutNode::Rank::Source : LayoutNode::Rank::Sink;
         g.nodes << n;
-    }
+    };
+    addBoundary(true);
     QSet<QString> collapsedDone;
     for (const RosNodePart &part : c.parts) {
         if (!visible.parts.contains(part.id))
@@ -395,10 +441,13 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
                 continue;
             collapsedDone.insert(ns);
             const int count = collapsedCounts.value(ns);
-            LayoutNode n = labelledNode(namespaceKey(ns), ns,
-                                        count == 1 ? tr("1 part, collapsed")
-                                                   : tr("%1 parts, collapsed").arg(count),
-                                        LayoutNode::Shape::Folder, m);
+            const int inner = innerCounts.value(ns);
+            const QString parts = count == 1 ? tr("1 part") : tr("%1 parts").arg(count);
+            const QString detail = inner == 0 ? tr("%1, collapsed").arg(parts)
+                                   : inner == 1
+                                       ? tr("%1, 1 channel, collapsed").arg(parts)
+                                       : tr("%1, %2 channels, collapsed").arg(parts).arg(inner);
+            LayoutNode n = labelledNode(namespaceKey(ns), ns, detail, LayoutNode::Shape::Folder, m);
             n.width = even(std::max(m.titleWidth(ns), m.smallWidth(n.detail)) + 2 * kPadding + 8);
             n.height = even(m.titleHeight + m.smallHeight + 24); // + the folder tab
             const QStringList chain = namespaceChain(ns);
@@ -409,7 +458,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
             g.nodes << n;
             continue;
         }
-        LayoutNode n = partNode(part, visible, m);
+        LayoutNode n = partNode(part, visible, options.compactParts.contains(part.id), m);
         addClusters(g, part.nameSpace, m);
         const QStringList chain = namespaceChain(part.nameSpace);
         n.cluster = chain.isEmpty() ? QString() : namespaceKey(chain.last());
@@ -451,13 +500,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
             n.cluster = subsystemCluster(g, *member, n.cluster, m);
         g.nodes << n;
     }
-    for (const BoundaryPort &b : c.boundary) {
-        if (isInputPort(b.kind) || !shown(b.id))
-            continue;
-        LayoutNode n = labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
-        n.rank = LayoutNode::Rank::Sink;
-        g.nodes << n;
-    }
+    addBoundary(false);
     // Boundary ports line up on the frame: one width per side.
     for (const auto rank : {LayoutNode::Rank::Source, LayoutNode::Rank::Sink}) {
         double width = 0;
@@ -472,8 +515,11 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
     QSet<QString> seen;
     for (const Wire &w : std::as_const(wires)) {
         const Connection &conn = *w.connection;
-        const QString target =
-            c.channel(conn.targetId) ? channelKey(conn.targetId) : boundaryKey(conn.targetId);
+        const BoundaryPort *boundary = c.boundaryPort(conn.targetId);
+        const QString target = c.channel(conn.targetId) ? channelKey(conn.targetId)
+                               : boundary && options.collapseBoundary
+                                   ? collapsedBoundaryKey(isInputPort(boundary->kind))
+                                   : boundaryKey(conn.targetId);
         const bool fromPart = conn.kind == Connection::Kind::Publish ||
                               conn.kind == Connection::Kind::Client ||
                               conn.kind == Connection::Kind::DelegationOut;
@@ -490,7 +536,7 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
         const QString signature =
             QStringList{e.tail, e.tailPort, e.head, e.headPort, QString::number(e.category)}.join(
                 QLatin1Char('|'));
-        if (seen.contains(signature))
+        if (seen.contains(signature) || innerChannels.contains(conn.targetId))
             continue;
         seen.insert(signature);
         if (!g.node(e.tail) || !g.node(e.head))

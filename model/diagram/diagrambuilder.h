@@ -16,6 +16,8 @@ struct DiagramOptions
     bool showInactive = true;        ///< parts and ports whose condition or guard is false
     bool showExternal = true;        ///< includes of launch files outside the workspace
     QStringList collapsedNamespaces; ///< namespaces drawn as one box ("/robot1")
+    QStringList compactParts;        ///< part ids drawn without port rows, wired by their box
+    bool collapseBoundary = false;   ///< one box per side for all boundary ports
 };
 
 /// Text measures of the drawing, so that boxes fit their labels. The defaults estimate.
@@ -65,6 +67,8 @@ public:
     static QString portKey(const QString &partId, const QString &portId);
     static QString channelKey(const QString &channelId);
     static QString boundaryKey(const QString &boundaryId);
+    /// The key of the box that stands for all boundary ports of a side (collapseBoundary).
+    static QString collapsedBoundaryKey(bool input);
     static QString connectionKey(int index);
     static QString namespaceKey(const QString &nameSpace);
     /// The key of a subsystem's clusters; one per namespace its parts sit in, all with this key.

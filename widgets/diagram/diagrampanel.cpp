@@ -1,6 +1,10 @@
 #include "diagrampanel.h"
 #include "diagrambreadcrumbbar.h"
 #include "diagramlayouter.h"
+#include "diagramminimap.h"
+#include "diagramoverview.h"
+#include "diagramrootpicker.h"
+#include "diagramrootprompt.h"
 #include "diagramscene.h"
 #include "diagramtext.h"
 #include "diagramview.h"
@@ -9,6 +13,7 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QFontMetricsF>
+#include <QHBoxLayout>
 #include <QLineEdit>
 #include <QMenu>
 #include <QToolBar>
@@ -28,7 +33,8 @@ QAction *toggle(QToolBar *bar, const QString &text, const QString &toolTip)
 } // namespace
 
 DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
-    : QWidget(parent), m_layouter(layouter), m_breadcrumbs(new DiagramBreadcrumbBar(this)),
+    : QWidget(parent), m_layouter(layouter), m_rootPicker(new DiagramRootPicker(this)),
+      m_breadcrumbs(new DiagramBreadcrumbBar(this)), m_rootPrompt(new DiagramRootPrompt(this)),
       m_toolBar(new QToolBar(this)), m_search(new QLineEdit(this)), m_scene(new DiagramScene(this)),
       m_view(new DiagramView(this))
 {
@@ -53,7 +59,13 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     QAction *zoomIn = m_toolBar->addAction(tr("+"), m_view, &DiagramView::zoomIn);
     zoomIn->setToolTip(tr("Zoom in (+, Ctrl+wheel)"));
     QAction *fit = m_toolBar->addAction(tr("Fit"), m_view, &DiagramView::fitDiagram);
-    fit->setToolTip(tr("Fit the whole diagram in the view (0)"));
+    fit->setToolTip(tr("Fit the whole diagram in the view (0); a diagram too big to read "
+                       "whole stops at a legible size, the minimap shows the rest"));
+    m_overviewAction = m_toolBar->addAction(tr("Overview"), this, &DiagramPanel::showOverview);
+    m_overviewAction->setToolTip(tr("Collapse namespaces to one box each and hide the ports of "
+                                    "every part; double-click a box to expand it"));
+    m_expandAllAction = m_toolBar->addAction(tr("Expand All"), this, &DiagramPanel::expandAll);
+    m_expandAllAction->setToolTip(tr("Show every namespace and port of this diagram"));
     m_exportAction = m_toolBar->addAction(tr("Export…"), this, [this] {
         const QString path = QFileDialog::getSaveFileName(
             this, tr("Export Diagram"),
@@ -68,17 +80,29 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
-    layout->addWidget(m_breadcrumbs);
+    auto *header = new QHBoxLayout;
+    header->setContentsMargins(4, 2, 0, 2);
+    header->setSpacing(4);
+    header->addWidget(m_rootPicker);
+    header->addWidget(m_breadcrumbs, 1);
+    layout->addLayout(header);
     layout->addWidget(m_toolBar);
+    layout->addWidget(m_rootPrompt, 1);
     layout->addWidget(m_view, 1);
+    m_rootPrompt->hide();
     m_view->setScene(m_scene);
     m_scene->setDiagramStyle(DiagramStyle::fromPalette(palette()));
+    m_view->setLegibleZoom(legibleZoom());
 
     connect(m_search, &QLineEdit::textChanged, this, [this] { updateSearch(true); });
     connect(m_search, &QLineEdit::returnPressed, this, &DiagramPanel::findNext);
     for (QAction *a : {m_showParameters, m_showInactive, m_showExternal})
         connect(a, &QAction::toggled, this, &DiagramPanel::onFilterToggled);
     connect(m_breadcrumbs, &DiagramBreadcrumbBar::crumbClicked, this, &DiagramPanel::showComposite);
+    connect(m_scene, &QGraphicsScene::sceneRectChanged, m_view->minimap(),
+            &DiagramMinimap::refresh);
+    connect(m_rootPicker, &DiagramRootPicker::rootChosen, this, &DiagramPanel::onRootChosen);
+    connect(m_rootPrompt, &DiagramRootPrompt::rootChosen, this, &DiagramPanel::onRootChosen);
     connect(m_scene, &DiagramScene::elementClicked, this, &DiagramPanel::onElementClicked);
     connect(m_scene, &DiagramScene::elementDoubleClicked, this,
             &DiagramPanel::onElementDoubleClicked);
@@ -93,17 +117,28 @@ DiagramPanel::~DiagramPanel()
         m_layouter->cancel(); // a running helper is killed; its result is dropped
 }
 
-void DiagramPanel::setArchitecture(const Architecture &architecture)
+void DiagramPanel::setArchitecture(const Architecture &architecture, const QList<LaunchRoot> &roots,
+                                   const RootChoice &start)
 {
     m_architecture = architecture;
+    m_roots = roots.isEmpty() ? RootChoice::roots(m_architecture, {}) : roots;
+    m_rootPicker->setRoots(m_roots);
+    m_rootPrompt->setRoots(m_roots);
     QString show = m_current;
     if (!m_architecture.composite(show)) {
         show.clear();
+        if (start.reason == RootChoice::Reason::Ask && m_roots.size() > 1) {
+            m_current.clear();
+            m_scene->clearDiagram();
+            updateBreadcrumbs();
+            askForRoot();
+            return;
+        }
+        if (m_architecture.composite(start.instanceId))
+            show = start.instanceId;
         for (const Composite &c : std::as_const(m_architecture.composites))
-            if (c.parentId.isEmpty()) {
+            if (show.isEmpty() && c.parentId.isEmpty())
                 show = c.instanceId;
-                break;
-            }
         if (show.isEmpty() && !m_architecture.composites.isEmpty())
             show = m_architecture.composites.first().instanceId;
     }
@@ -121,10 +156,33 @@ void DiagramPanel::setArchitecture(const Architecture &architecture)
     showComposite(show);
 }
 
+void DiagramPanel::askForRoot()
+{
+    m_rootPrompt->setRoots(m_roots);
+    m_rootPrompt->show();
+    m_view->hide();
+    m_rootPicker->setCurrentRoot({});
+}
+
+bool DiagramPanel::isAskingForRoot() const
+{
+    return m_rootPrompt->isVisibleTo(this);
+}
+
+void DiagramPanel::onRootChosen(const QString &instanceId)
+{
+    if (!m_architecture.composite(instanceId))
+        return;
+    showComposite(instanceId);
+    Q_EMIT rootChosen(instanceId);
+}
+
 void DiagramPanel::showComposite(const QString &instanceId)
 {
     if (!m_architecture.composite(instanceId))
         return;
+    m_rootPrompt->hide();
+    m_view->show();
     if (instanceId != m_current) {
         m_current = instanceId;
         m_marks.clear();
@@ -167,24 +225,6 @@ void DiagramPanel::onFilterToggled()
     m_options.showInactive = m_showInactive->isChecked();
     m_options.showExternal = m_showExternal->isChecked();
     relayout();
-}
-
-void DiagramPanel::setNamespaceCollapsed(const QString &nameSpace, bool collapsed)
-{
-    QStringList &list = m_collapsed[m_current];
-    if (collapsed == list.contains(nameSpace))
-        return;
-    if (collapsed)
-        list << nameSpace;
-    else
-        list.removeAll(nameSpace);
-    list.sort();
-    relayout();
-}
-
-bool DiagramPanel::isNamespaceCollapsed(const QString &nameSpace) const
-{
-    return m_collapsed.value(m_current).contains(nameSpace);
 }
 
 void DiagramPanel::setMarks(const QHash<QString, DiagramMark> &marks, const QStringList &missing)
@@ -242,9 +282,14 @@ void DiagramPanel::relayout()
                         : tr("This launch file is not part of the architecture."));
         return;
     }
-    DiagramOptions options = m_options;
-    options.collapsedNamespaces = m_collapsed.value(m_current);
-    const LayoutGraph graph = DiagramBuilder::build(*c, options, metrics());
+    LayoutGraph graph = DiagramBuilder::build(*c, currentOptions(), metrics());
+    // Boxes alone that cover more than the view at the legible zoom cannot fit: go straight
+    // to the overview rather than lay out a drawing nobody can read.
+    const double z = m_view->legibleZoom();
+    const QSize viewport = m_view->viewport()->size();
+    if (DiagramOverview::boxArea(graph) * z * z > double(viewport.width()) * viewport.height() &&
+        overviewInstead(QSizeF(1e9, 1e9)))
+        graph = DiagramBuilder::build(*c, currentOptions(), metrics());
     if (graph.nodes.isEmpty()) {
         m_scene->clearDiagram();
         showMessage(c->parts.isEmpty()
@@ -284,6 +329,10 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
         Q_EMIT layoutFinished(false);
         return;
     }
+    if (fit && overviewInstead(DiagramScene::sceneRectFor(result.geometry.bounds).size())) {
+        relayout(); // the overview instead; the drawing too small to read is not shown
+        return;
+    }
     m_lastLayoutMs = result.elapsedMs;
     showMessage({});
     m_scene->setDiagram(graph, result.geometry, c->stem, DiagramText::frameDetail(*c));
@@ -294,6 +343,8 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
         m_view->fitDiagram();
         m_fitPending = false;
     }
+    m_overviewAction->setEnabled(true);
+    m_expandAllAction->setEnabled(isCollapsed());
     Q_EMIT layoutFinished(true);
 }
 
@@ -324,6 +375,7 @@ void DiagramPanel::updateBreadcrumbs()
         tip = tr("The root launch file with the launch arguments of the run.");
     }
     m_breadcrumbs->setPath(path, note, tip);
+    m_rootPicker->setCurrentRoot(path.isEmpty() ? QString() : path.first().id);
 }
 
 void DiagramPanel::updateSearch(bool centre)
@@ -412,58 +464,6 @@ void DiagramPanel::onElementClicked(const QString &key)
         Q_EMIT evidenceActivated(evidence);
 }
 
-void DiagramPanel::onElementDoubleClicked(const QString &key)
-{
-    const Composite *c = composite();
-    const DiagramKey k = DiagramKey::parse(key);
-    if (!c)
-        return;
-    if (k.kind == DiagramKey::Kind::Part) {
-        const RosNodePart *part = c->part(k.id);
-        if (part && part->kind == RosNodePart::Kind::Launch &&
-            m_architecture.composite(part->instanceId))
-            showComposite(part->instanceId);
-    } else if (k.kind == DiagramKey::Kind::Namespace && isNamespaceCollapsed(k.id)) {
-        setNamespaceCollapsed(k.id, false);
-    }
-}
-
-QList<QAction *> DiagramPanel::elementActions(const QString &key)
-{
-    QList<QAction *> actions;
-    const Composite *c = composite();
-    const DiagramKey k = DiagramKey::parse(key);
-    if (!c)
-        return actions;
-    if (k.kind == DiagramKey::Kind::Namespace) {
-        const bool collapsed = isNamespaceCollapsed(k.id);
-        auto *a = new QAction(collapsed ? tr("Expand Namespace %1").arg(k.id)
-                                        : tr("Collapse Namespace %1").arg(k.id),
-                              this);
-        connect(a, &QAction::triggered, this,
-                [this, ns = k.id, collapsed] { setNamespaceCollapsed(ns, !collapsed); });
-        actions << a;
-    } else if (k.kind == DiagramKey::Kind::Part) {
-        const RosNodePart *part = c->part(k.id);
-        if (part && part->kind == RosNodePart::Kind::Launch &&
-            m_architecture.composite(part->instanceId)) {
-            auto *a = new QAction(tr("Open %1").arg(part->typeName), this);
-            connect(a, &QAction::triggered, this,
-                    [this, id = part->instanceId] { showComposite(id); });
-            actions << a;
-        }
-        const QStringList chain =
-            part ? DiagramBuilder::namespaceChain(part->nameSpace) : QStringList();
-        if (!chain.isEmpty()) {
-            auto *a = new QAction(tr("Collapse Namespace %1").arg(chain.last()), this);
-            connect(a, &QAction::triggered, this,
-                    [this, ns = chain.last()] { setNamespaceCollapsed(ns, true); });
-            actions << a;
-        }
-    }
-    return actions;
-}
-
 QStringList DiagramPanel::selectedKeys() const
 {
     QStringList keys;
@@ -479,24 +479,13 @@ void DiagramPanel::selectElement(const QString &key)
     selectKey(key);
 }
 
-void DiagramPanel::onContextMenu(const QString &key, const QPoint &screenPos)
-{
-    const QList<QAction *> actions = elementActions(key);
-    QMenu menu(this);
-    Q_EMIT elementMenuRequested(key, &menu);
-    if (!menu.isEmpty() && !actions.isEmpty())
-        menu.addSeparator();
-    menu.addActions(actions);
-    if (!menu.isEmpty())
-        menu.exec(screenPos);
-    qDeleteAll(actions);
-}
-
 void DiagramPanel::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
-    if (event->type() == QEvent::PaletteChange)
+    if (event->type() == QEvent::PaletteChange) {
         m_scene->setDiagramStyle(DiagramStyle::fromPalette(palette()));
+        m_view->minimap()->refresh();
+    }
 }
 
 } // namespace rosarch

@@ -4,9 +4,11 @@
 #include "diagrambuilder.h"
 #include "diagramitem.h"
 #include "graphlayout.h"
+#include "rootchoice.h"
 
 #include <QHash>
 #include <QPointer>
+#include <QSet>
 #include <QWidget>
 
 class QAction;
@@ -18,6 +20,8 @@ namespace rosarch {
 
 class DiagramBreadcrumbBar;
 class DiagramLayouter;
+class DiagramRootPicker;
+class DiagramRootPrompt;
 class DiagramScene;
 class DiagramView;
 
@@ -34,9 +38,11 @@ public:
     explicit DiagramPanel(DiagramLayouter *layouter, QWidget *parent = nullptr);
     ~DiagramPanel() override;
 
-    /// The architecture to draw (a copy). Keeps the composite shown if it still exists,
-    /// else shows the first root.
-    void setArchitecture(const Architecture &architecture);
+    /// The architecture to draw (a copy) and its roots for the header's picker (computed from
+    /// the architecture when empty). Keeps the composite shown if it still exists, else starts
+    /// on `start`'s root, asks which root when `start` says so, or shows the first root.
+    void setArchitecture(const Architecture &architecture, const QList<LaunchRoot> &roots = {},
+                         const RootChoice &start = {});
     const Architecture &architecture() const { return m_architecture; }
     /// Shows a composite by its launch-file instance id; the breadcrumbs follow its parents.
     void showComposite(const QString &instanceId);
@@ -49,6 +55,25 @@ public:
     /// Draws a namespace of the current composite as one box, or as its parts again.
     void setNamespaceCollapsed(const QString &nameSpace, bool collapsed);
     bool isNamespaceCollapsed(const QString &nameSpace) const;
+    /// Draws a part of the current composite without its port rows, or with them again.
+    void setPartCompact(const QString &partId, bool compact);
+    bool isPartCompact(const QString &partId) const;
+    /// Draws the boundary ports of the current composite as one box per side, or each again.
+    void setBoundaryCollapsed(bool collapsed);
+    bool isBoundaryCollapsed() const { return m_boundaryCollapsed.contains(m_current); }
+    /// The current composite as an overview: namespaces collapsed, parts without ports.
+    void showOverview();
+    /// Every namespace and part of the current composite drawn in full.
+    void expandAll();
+    /// True when something of the current composite is collapsed.
+    bool isCollapsed() const;
+    /// Text on screen is at least this tall at fit zoom (points).
+    static constexpr double kLegiblePoints = 7.0;
+    /// The zoom at which the diagram's names are kLegiblePoints tall.
+    qreal legibleZoom() const;
+    /// Lists the roots instead of a diagram for a person to choose one.
+    void askForRoot();
+    bool isAskingForRoot() const;
 
     /// Marks for a reference comparison of the current composite (cleared when another is
     /// shown), and the reference elements missing from it, listed in a banner.
@@ -73,6 +98,10 @@ public:
     DiagramScene *scene() const { return m_scene; }
     DiagramView *view() const { return m_view; }
     DiagramBreadcrumbBar *breadcrumbBar() const { return m_breadcrumbs; }
+    DiagramRootPicker *rootPicker() const { return m_rootPicker; }
+    DiagramRootPrompt *rootPrompt() const { return m_rootPrompt; }
+    QAction *overviewAction() const { return m_overviewAction; }
+    QAction *expandAllAction() const { return m_expandAllAction; }
     QLineEdit *searchField() const { return m_search; }
     QAction *showParametersAction() const { return m_showParameters; }
     QAction *showInactiveAction() const { return m_showInactive; }
@@ -99,6 +128,8 @@ Q_SIGNALS:
     /// portActivated, before evidenceActivated): its key.
     void elementActivated(const QString &key);
     void compositeShown(const QString &instanceId);
+    /// A person chose the root to show, in the header's picker or when asked.
+    void rootChosen(const QString &instanceId);
     /// A context menu is about to open on the element `key` ("" for none): add to `menu`.
     void elementMenuRequested(const QString &key, QMenu *menu);
     /// A layout finished and the scene shows it (ok), or the message says why not.
@@ -122,11 +153,21 @@ private:
     void onElementDoubleClicked(const QString &key);
     void onContextMenu(const QString &key, const QPoint &screenPos);
     void onFilterToggled();
+    void onRootChosen(const QString &instanceId);
+    /// The options for the current composite: filters, collapsed namespaces, compact parts.
+    DiagramOptions currentOptions() const;
+    /// Switches the current composite to its overview when it is first shown too big to read
+    /// at the legible zoom; true when it did (the caller lays out again).
+    bool overviewInstead(const QSizeF &size);
 
     Architecture m_architecture;
     QString m_current;
     DiagramOptions m_options;
     QHash<QString, QStringList> m_collapsed; // per composite
+    QHash<QString, QStringList> m_compact;   // per composite: parts drawn without ports
+    QSet<QString> m_boundaryCollapsed;       ///< composites whose boundary is one box per side
+    QSet<QString> m_sizeChecked;             ///< composites whose size was checked for the overview
+    QList<LaunchRoot> m_roots;
     QHash<QString, DiagramMark> m_marks;
     QStringList m_missing;
     QStringList m_matches;
@@ -136,7 +177,11 @@ private:
     bool m_fitPending = true;
     qint64 m_lastLayoutMs = 0;
 
+    DiagramRootPicker *m_rootPicker;
     DiagramBreadcrumbBar *m_breadcrumbs;
+    DiagramRootPrompt *m_rootPrompt;
+    QAction *m_overviewAction = nullptr;
+    QAction *m_expandAllAction = nullptr;
     QToolBar *m_toolBar;
     QLineEdit *m_search;
     QAction *m_showParameters;

@@ -86,7 +86,13 @@ void DiagramScene::setDiagram(const LayoutGraph &graph, const LayoutGeometry &ge
         addItem(item);
         m_items.insert(e.key, item);
     }
-    setSceneRect(m_frame.adjusted(-kSceneMargin, -kSceneMargin, kSceneMargin, kSceneMargin));
+    setSceneRect(sceneRectFor(bounds));
+}
+
+QRectF DiagramScene::sceneRectFor(const QRectF &bounds)
+{
+    return bounds.adjusted(-kFrameMargin - kSceneMargin, -kTitleSpace - 8 - kSceneMargin,
+                           kFrameMargin + kSceneMargin, kFrameMargin + kSceneMargin);
 }
 
 QStringList DiagramScene::keys() const

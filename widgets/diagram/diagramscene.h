@@ -24,6 +24,8 @@ public:
     void setDiagram(const LayoutGraph &graph, const LayoutGeometry &geometry, const QString &title,
                     const QString &detail);
     void clearDiagram();
+    /// The scene rectangle setDiagram gives a layout of `bounds`: the frame and a margin.
+    static QRectF sceneRectFor(const QRectF &bounds);
     bool isEmpty() const { return m_items.isEmpty(); }
 
     /// The item drawing an element ("part:part1", ...), or null.

@@ -1,4 +1,5 @@
 #include "diagramview.h"
+#include "diagramminimap.h"
 
 #include <QKeyEvent>
 #include <QLabel>
@@ -32,7 +33,7 @@ QLabel *overlay(QWidget *parent, const QString &objectName)
 DiagramView::DiagramView(QWidget *parent)
     : QGraphicsView(parent), m_busy(overlay(this, QStringLiteral("diagramBusy"))),
       m_message(overlay(this, QStringLiteral("diagramMessage"))),
-      m_banner(overlay(this, QStringLiteral("diagramBanner")))
+      m_banner(overlay(this, QStringLiteral("diagramBanner"))), m_minimap(new DiagramMinimap(this))
 {
     setDragMode(ScrollHandDrag);
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing |
@@ -56,6 +57,7 @@ void DiagramView::setZoom(qreal zoom)
     if (qFuzzyCompare(zoom, this->zoom()))
         return;
     setTransform(QTransform::fromScale(zoom, zoom));
+    m_minimap->updateVisibility();
     Q_EMIT zoomChanged(zoom);
 }
 
@@ -74,11 +76,28 @@ void DiagramView::fitDiagram()
     const QRectF rect = sceneRect();
     if (rect.isEmpty())
         return;
+    const qreal fit = fitZoom();
+    setZoom(std::min(std::max(fit, m_legibleZoom), 1.0));
+    if (fit >= zoom()) {
+        centerOn(rect.center());
+    } else { // too big to fit legibly: start where reading starts, at the top left
+        const QSizeF visible = QSizeF(viewport()->size()) / zoom();
+        centerOn(rect.left() + visible.width() / 2, rect.top() + visible.height() / 2);
+    }
+    m_minimap->updateVisibility();
+}
+
+qreal DiagramView::fitZoom() const
+{
+    return fitZoom(sceneRect().size());
+}
+
+qreal DiagramView::fitZoom(const QSizeF &size) const
+{
+    if (size.isEmpty())
+        return 1.0;
     const QSizeF available = viewport()->size() - QSizeF(4, 4);
-    const qreal fit =
-        std::min(available.width() / rect.width(), available.height() / rect.height());
-    setZoom(std::min(fit, 1.0));
-    centerOn(rect.center());
+    return std::min({available.width() / size.width(), available.height() / size.height(), 1.0});
 }
 
 void DiagramView::setBusyText(const QString &text)

@@ -1,0 +1,239 @@
+// Finding one's way in a big system: the root picker in the diagram's header, the prompt when
+// no root stands out, the overview a diagram too big to read at fit starts in (text never
+// below the legible size), expanding and collapsing its boxes, and the minimap.
+#include "diagramarchitecture.h"
+#include "diagramlayouter.h"
+#include "diagramminimap.h"
+#include "diagramnodeitem.h"
+#include "diagrampanel.h"
+#include "diagramrootpicker.h"
+#include "diagramrootprompt.h"
+#include "diagramscene.h"
+#include "diagramview.h"
+#include "screenshot.h"
+
+#include <QAction>
+#include <QCompleter>
+#include <QListWidget>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace rosarch;
+using rosarch::test::saveScreenshot;
+
+namespace {
+
+template <typename F> bool laidOut(DiagramPanel &panel, F &&trigger)
+{
+    QSignalSpy spy(&panel, &DiagramPanel::layoutFinished);
+    trigger();
+    while (spy.isEmpty() || panel.isLayingOut())
+        if (!spy.wait(30000))
+            return false;
+    return true;
+}
+
+/// Two roots: the demo (including its listener) and a fleet of `robots`.
+Architecture twoRoots(int robots)
+{
+    Architecture arch = test::diagram::architecture();
+    arch.composites << test::diagram::fleet(robots);
+    return arch;
+}
+
+/// The on-screen pixel height of the diagram's name text at the view's zoom.
+double namePixels(DiagramPanel &panel)
+{
+    return panel.scene()->diagramStyle().textFont.pixelSize() * panel.view()->zoom();
+}
+
+double legiblePixels(DiagramPanel &panel)
+{
+    return DiagramPanel::kLegiblePoints * panel.logicalDpiY() / 72.0;
+}
+
+} // namespace
+
+class TestDiagramNavigation : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void pickerListsAndSwitchesRoots();
+    void askingListsTheRoots();
+    void tooBigStartsAsAnOverview();
+    void minimapShowsAndPans();
+};
+
+void TestDiagramNavigation::pickerListsAndSwitchesRoots()
+{
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(1400, 900);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const Architecture arch = twoRoots(2);
+    QVERIFY(laidOut(panel, [&] {
+        panel.setArchitecture(arch, {},
+                              RootChoice{QStringLiteral("lf9"), RootChoice::Reason::Name});
+    }));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf9"));
+    DiagramRootPicker *picker = panel.rootPicker();
+    QCOMPARE(picker->count(), 2);
+    QCOMPARE(picker->itemText(0), QStringLiteral("demo — 1 include"));
+    QCOMPARE(picker->itemText(1), QStringLiteral("fleet — 0 includes"));
+    QCOMPARE(picker->currentRoot(), QStringLiteral("lf9"));
+    QVERIFY(picker->itemData(0, Qt::ToolTipRole).toString().contains("src/demo/launch/demo"));
+    // Typing part of a name narrows the list.
+    picker->completer()->setCompletionPrefix(QStringLiteral("lee"));
+    QCOMPARE(picker->completer()->completionCount(), 1);
+    QCOMPARE(picker->completer()->currentCompletion(), QStringLiteral("fleet — 0 includes"));
+
+    QSignalSpy chosen(&panel, &DiagramPanel::rootChosen);
+    QVERIFY(laidOut(panel, [&] { Q_EMIT picker->activated(0); }));
+    QCOMPARE(chosen.size(), 1);
+    QCOMPARE(chosen.first().first().toString(), QStringLiteral("lf1"));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf1"));
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part1")));
+    // Going down an include keeps the picker on its root; the breadcrumbs say the rest.
+    QVERIFY(laidOut(panel, [&] { panel.showComposite(QStringLiteral("lf2")); }));
+    QCOMPARE(picker->currentRoot(), QStringLiteral("lf1"));
+    QCOMPARE(panel.breadcrumbIds(), (QStringList{"lf1", "lf2"}));
+    QCOMPARE(chosen.size(), 1); // only a person's choice is reported
+}
+
+void TestDiagramNavigation::askingListsTheRoots()
+{
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(900, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.setArchitecture(twoRoots(1), {}, RootChoice{{}, RootChoice::Reason::Ask});
+    QVERIFY(panel.isAskingForRoot());
+    QVERIFY(!panel.view()->isVisible());
+    QVERIFY(panel.currentComposite().isEmpty());
+    QListWidget *list = panel.rootPrompt()->list();
+    QCOMPARE(list->count(), 2);
+    QVERIFY(list->item(1)->text().startsWith(QLatin1String("fleet")));
+    saveScreenshot(panel, QStringLiteral("diagram_root_prompt.png"));
+    // Not modal: the picker in the header works as well; here the list is used.
+    QVERIFY(panel.rootPicker()->isEnabled());
+    QSignalSpy chosen(&panel, &DiagramPanel::rootChosen);
+    QVERIFY(laidOut(panel, [&] {
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
+                          list->visualItemRect(list->item(1)).center());
+    }));
+    QCOMPARE(chosen.size(), 1);
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf9"));
+    QVERIFY(!panel.isAskingForRoot());
+    QVERIFY(panel.view()->isVisible());
+    QCOMPARE(panel.rootPicker()->currentRoot(), QStringLiteral("lf9"));
+}
+
+void TestDiagramNavigation::tooBigStartsAsAnOverview()
+{
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(900, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    Architecture arch;
+    arch.composites << test::diagram::fleet(6);
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(arch); }));
+    // The whole fleet at fit would be unreadable: one box per robot instead.
+    QVERIFY(panel.isCollapsed());
+    QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot1")));
+    QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot6")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part2")));
+    QVERIFY(namePixels(panel) >= legiblePixels(panel) - 0.01);
+    QVERIFY(panel.expandAllAction()->isEnabled());
+    saveScreenshot(panel, QStringLiteral("diagram_overview.png"));
+
+    // Double-click a box: that robot opens, its parts still without port rows.
+    DiagramNodeItem *box =
+        dynamic_cast<DiagramNodeItem *>(panel.scene()->item(QStringLiteral("namespace:/robot1")));
+    QVERIFY(box);
+    panel.view()->centerOn(box);
+    const QPoint at = panel.view()->mapFromScene(box->sceneBoundingRect().center());
+    QVERIFY(laidOut(panel,
+                    [&] { QTest::mouseDClick(panel.view()->viewport(), Qt::LeftButton, {}, at); }));
+    QVERIFY(!panel.isNamespaceCollapsed(QStringLiteral("/robot1")));
+    auto *driver =
+        dynamic_cast<DiagramNodeItem *>(panel.scene()->item(QStringLiteral("part:part2")));
+    QVERIFY(driver);
+    QVERIFY(driver->node().ports.isEmpty());
+    QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot2")));
+    // The context menu collapses it again.
+    bool collapsed = false;
+    QVERIFY(laidOut(panel, [&] {
+        for (QAction *a : panel.elementActions(QStringLiteral("part:part2")))
+            if (a->text() == QLatin1String("Collapse Namespace /robot1")) {
+                a->trigger();
+                collapsed = true;
+            }
+    }));
+    QVERIFY(collapsed);
+    QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot1")));
+
+    // Expand All: every part with its ports; fit stops at the legible size.
+    QVERIFY(laidOut(panel, [&] { panel.expandAllAction()->trigger(); }));
+    QVERIFY(!panel.isCollapsed());
+    QVERIFY(panel.scene()->item(QStringLiteral("part:part2")));
+    QVERIFY(!panel.scene()->item(QStringLiteral("namespace:/robot1")) ||
+            !dynamic_cast<DiagramNodeItem *>(panel.scene()->item("namespace:/robot1")));
+    QVERIFY(namePixels(panel) >= legiblePixels(panel) - 0.01);
+    QVERIFY(panel.view()->fitZoom() < panel.view()->legibleZoom());
+    // It starts where reading starts: the top left corner.
+    const QRectF shown = panel.view()->mapToScene(panel.view()->viewport()->rect()).boundingRect();
+    QVERIFY(qAbs(shown.top() - panel.scene()->sceneRect().top()) < 2);
+    QVERIFY(qAbs(shown.left() - panel.scene()->sceneRect().left()) < 2);
+    QVERIFY(panel.view()->minimap()->isVisible());
+    // And back to the overview.
+    QVERIFY(laidOut(panel, [&] { panel.overviewAction()->trigger(); }));
+    QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot3")));
+}
+
+void TestDiagramNavigation::minimapShowsAndPans()
+{
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(900, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    // A small diagram fits: no minimap.
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(test::diagram::architecture()); }));
+    DiagramMinimap *minimap = panel.view()->minimap();
+    QVERIFY(!minimap->isVisible());
+    // Zoomed in, part of it is out of view: the minimap shows, with the view's rectangle.
+    panel.view()->setZoom(2.5);
+    QVERIFY(minimap->isVisible());
+    const QRectF outline = minimap->viewportRect();
+    QVERIFY(!outline.isEmpty());
+    QVERIFY(outline.width() < minimap->width());
+    // A click on the minimap's bottom-right corner moves the view there.
+    const QRectF before = panel.view()->mapToScene(panel.view()->viewport()->rect()).boundingRect();
+    const QPoint corner(minimap->width() - 6, minimap->height() - 6);
+    QTest::mouseClick(minimap, Qt::LeftButton, {}, corner);
+    const QRectF after = panel.view()->mapToScene(panel.view()->viewport()->rect()).boundingRect();
+    QVERIFY(after.center().x() > before.center().x());
+    QVERIFY(after.center().y() >= before.center().y());
+    QVERIFY(after.adjusted(-2, -2, 2, 2).contains(minimap->toScene(QPointF(corner))) ||
+            after.right() >= panel.scene()->sceneRect().right() - 2);
+    // A drag pans as well.
+    const QPointF centre = panel.view()->mapToScene(panel.view()->viewport()->rect().center());
+    QTest::mousePress(minimap, Qt::LeftButton, {}, QPoint(8, 8));
+    QMouseEvent move(QEvent::MouseMove, QPointF(12, 10), minimap->mapToGlobal(QPointF(12, 10)),
+                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(minimap, &move);
+    QTest::mouseRelease(minimap, Qt::LeftButton, {}, QPoint(12, 10));
+    const QPointF moved = panel.view()->mapToScene(panel.view()->viewport()->rect().center());
+    QVERIFY(moved.x() < centre.x());
+    saveScreenshot(panel, QStringLiteral("diagram_minimap.png"));
+    // Fit again: it all fits, the minimap goes.
+    panel.view()->fitDiagram();
+    QVERIFY(!minimap->isVisible());
+}
+
+QTEST_MAIN(TestDiagramNavigation)
+#include "tst_diagramnavigation.moc"

@@ -1,0 +1,87 @@
+#include "diagramrootpicker.h"
+
+#include <QAbstractItemView>
+#include <QCompleter>
+#include <QDir>
+#include <QLineEdit>
+
+namespace rosarch {
+
+DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
+{
+    setObjectName(QStringLiteral("diagramRootPicker"));
+    setEditable(true);
+    setInsertPolicy(QComboBox::NoInsert);
+    // Long launch-file names (autoware's) would push the breadcrumbs away: the list is wider.
+    setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    setMinimumContentsLength(22);
+    view()->setTextElideMode(Qt::ElideNone);
+    setMaxVisibleItems(20);
+    completer()->setFilterMode(Qt::MatchContains);
+    completer()->setCompletionMode(QCompleter::PopupCompletion);
+    completer()->setCaseSensitivity(Qt::CaseInsensitive);
+    lineEdit()->setPlaceholderText(tr("Root launch file"));
+    setToolTip(tr("The root launch file whose system the diagram shows; type to find one"));
+    connect(this, &QComboBox::activated, this, [this](int index) {
+        const QString id = itemData(index).toString();
+        if (!id.isEmpty())
+            Q_EMIT rootChosen(id);
+    });
+}
+
+QString DiagramRootPicker::entryText(const LaunchRoot &root)
+{
+    return root.includes == 1 ? tr("%1 — 1 include").arg(root.stem)
+                              : tr("%1 — %2 includes").arg(root.stem).arg(root.includes);
+}
+
+void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
+{
+    if (roots == m_roots)
+        return;
+    const QString current = currentRoot();
+    const QSignalBlocker blocker(this);
+    m_roots = roots;
+    clear();
+    for (const LaunchRoot &r : roots) {
+        addItem(entryText(r), r.instanceId);
+        setItemData(count() - 1,
+                    tr("%1\n%2 launch files included, %3 nodes started, %4 unresolved")
+                        .arg(QDir::toNativeSeparators(r.file.isEmpty() ? r.stem : r.file))
+                        .arg(r.includes)
+                        .arg(r.nodes)
+                        .arg(r.unresolved),
+                    Qt::ToolTipRole);
+    }
+    setEnabled(!roots.isEmpty());
+    view()->setMinimumWidth(view()->sizeHintForColumn(0) + 24);
+    completer()->popup()->setMinimumWidth(view()->minimumWidth());
+    setCurrentRoot(current);
+}
+
+void DiagramRootPicker::setCurrentRoot(const QString &instanceId)
+{
+    const QSignalBlocker blocker(this);
+    const int index = findData(instanceId);
+    setCurrentIndex(index);
+    if (index < 0)
+        lineEdit()->clear();
+    lineEdit()->setCursorPosition(0); // the name's start, not its end, when it is cut
+}
+
+QString DiagramRootPicker::currentRoot() const
+{
+    return currentData().toString();
+}
+
+void DiagramRootPicker::focusOutEvent(QFocusEvent *event)
+{
+    QComboBox::focusOutEvent(event);
+    // A search typed and left: show the root again rather than a half-typed name.
+    if (currentIndex() >= 0 && lineEdit()->text() != itemText(currentIndex())) {
+        lineEdit()->setText(itemText(currentIndex()));
+        lineEdit()->setCursorPosition(0);
+    }
+}
+
+} // namespace rosarch

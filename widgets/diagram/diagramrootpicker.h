@@ -1,0 +1,36 @@
+#pragma once
+
+#include "rootchoice.h"
+
+#include <QComboBox>
+
+namespace rosarch {
+
+/// The root launch files in the diagram's header, with how many launch files each includes;
+/// type to filter (any part of the name). Choosing one reports it; the panel shows it.
+class DiagramRootPicker : public QComboBox
+{
+    Q_OBJECT
+public:
+    explicit DiagramRootPicker(QWidget *parent = nullptr);
+
+    void setRoots(const QList<LaunchRoot> &roots);
+    QList<LaunchRoot> roots() const { return m_roots; }
+    /// Shows `instanceId` as the current root without reporting it ("" = none).
+    void setCurrentRoot(const QString &instanceId);
+    QString currentRoot() const;
+    /// The text of a root's entry: "bringup — 12 includes".
+    static QString entryText(const LaunchRoot &root);
+
+Q_SIGNALS:
+    /// A person chose a root (by the list, or by typing and Enter).
+    void rootChosen(const QString &instanceId);
+
+protected:
+    void focusOutEvent(QFocusEvent *event) override;
+
+private:
+    QList<LaunchRoot> m_roots;
+};
+
+} // namespace rosarch
