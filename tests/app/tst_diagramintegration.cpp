@@ -89,6 +89,16 @@ private Q_SLOTS:
         QCOMPARE(doc()->architecture().composites.size(), 3);
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1"));
         QVERIFY2(panel()->message().isEmpty(), qPrintable(panel()->message()));
+        // The diagram dock is too small for the whole system at a legible size: it starts as
+        // the overview, the two cameras' namespaces one box each.
+        QVERIFY(panel()->isCollapsed());
+        QVERIFY(panel()->scene()->item(QStringLiteral("namespace:/front")));
+        QVERIFY(panel()->scene()->item(QStringLiteral("namespace:/rear")));
+        QVERIFY(!panel()->scene()->item(QStringLiteral("part:part1")));
+        test::saveScreenshot(*m_window, QStringLiteral("diagram-window-overview.png"));
+        QSignalSpy laidOut(panel(), &DiagramPanel::layoutFinished);
+        panel()->expandAll();
+        QVERIFY(!laidOut.isEmpty() || laidOut.wait(30000));
         QVERIFY(panel()->scene()->item(QStringLiteral("part:part1")));
         test::saveScreenshot(*m_window, QStringLiteral("diagram-window.png"));
     }

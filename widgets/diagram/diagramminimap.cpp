@@ -18,6 +18,7 @@ DiagramMinimap::DiagramMinimap(QGraphicsView *view) : QWidget(view), m_view(view
     setToolTip(tr("The whole diagram: click or drag to move the view"));
     hide();
     view->installEventFilter(this);
+    view->viewport()->installEventFilter(this); // scroll bars come and go: the viewport resizes
     for (QScrollBar *bar : {view->horizontalScrollBar(), view->verticalScrollBar()})
         connect(bar, &QScrollBar::valueChanged, this, [this] {
             updateVisibility();
@@ -133,7 +134,8 @@ void DiagramMinimap::mouseMoveEvent(QMouseEvent *event)
 
 bool DiagramMinimap::eventFilter(QObject *watched, QEvent *event)
 {
-    if (watched == m_view && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
+    if ((watched == m_view || watched == m_view->viewport()) &&
+        (event->type() == QEvent::Resize || event->type() == QEvent::Show))
         updateVisibility();
     return QWidget::eventFilter(watched, event);
 }
