@@ -38,6 +38,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -554,13 +555,33 @@ void MainWindow::onStageStarted()
     setRunning(true);
 }
 
-void MainWindow::onStageProgressed(int done, int total, const QString &what)
+void MainWindow::onStageProgressed(int done, int total, const QString &what, int stage)
 {
     if (total > 0) {
         m_progressBar->setRange(0, total);
         m_progressBar->setValue(done);
     } else {
         m_progressBar->setRange(0, 0);
+    }
+    if (stage > 0) {
+        // Per stage, with counts; the files themselves would flood the log.
+        const QLocale locale;
+        static const QStringList names{tr("atomic nodes"), tr("launch files"), tr("composition")};
+        const QString name = names.value(stage - 1);
+        QString text;
+        if (total <= 0)
+            text = tr("Stage %1: %2 — %3").arg(stage).arg(name, what);
+        else if (stage == 3)
+            text = tr("Stage %1: %2 — %3/%4 composites")
+                       .arg(stage)
+                       .arg(name, locale.toString(done), locale.toString(total));
+        else
+            text = tr("Stage %1: %2 — %3/%4 files")
+                       .arg(stage)
+                       .arg(name, locale.toString(done), locale.toString(total));
+        m_progressBar->setToolTip(what);
+        statusBar()->showMessage(text);
+        return;
     }
     if (!what.isEmpty() && what != m_lastProgressText) {
         m_lastProgressText = what;

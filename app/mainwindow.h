@@ -126,7 +126,7 @@ private:
     void showError(const QString &title, const QString &text);
 
     void onStageStarted();
-    void onStageProgressed(int done, int total, const QString &what);
+    void onStageProgressed(int done, int total, const QString &what, int stage);
     void setRunning(bool running);
 
     Document *m_document;

@@ -2,6 +2,7 @@
 #include "appsettings.h"
 #include "document.h"
 #include "logview.h"
+#include "stallprobe.h"
 #include "traceability.h"
 
 #include <utility>
@@ -19,6 +20,24 @@ StageController::StageController(Document *document, StageRunner *runner,
             &StageController::onLaunchStageFinished);
     connect(m_runner, &StageRunner::stageCanceled, this, &StageController::onStageCanceled);
     connect(m_runner, &StageRunner::stageFailed, this, &StageController::onStageFailed);
+    connect(m_runner, &StageRunner::stageTimed, this, [this](int stage, qint64 ms) {
+        m_log->appendLog(
+            tr("%1 took %2 s").arg(stageName(stage), QString::number(ms / 1000.0, 'f', 2)));
+    });
+}
+
+QString StageController::stageName(int stage)
+{
+    switch (stage) {
+    case 1:
+        return tr("Stage 1 (atomic nodes)");
+    case 2:
+        return tr("Stage 2 (launch files)");
+    case 3:
+        return tr("Stage 3 (composition)");
+    default:
+        return tr("Stage %1").arg(stage);
+    }
 }
 
 void StageController::setWorkspace(const QString &root)
@@ -44,7 +63,10 @@ void StageController::runAll()
     if (m_workspace.isEmpty())
         return;
     rememberSelection();
-    m_runner->run(m_workspace, m_document->launchOptions());
+    // What is shown, to tell a re-run that found nothing new (compared off the UI thread).
+    const Recovery shown =
+        m_document->workspaceRoot() == m_workspace ? m_document->recovered() : Recovery{};
+    m_runner->run(m_workspace, m_document->launchOptions(), shown);
 }
 
 void StageController::runLaunch()
@@ -111,10 +133,24 @@ void StageController::onStageStarted(const QString &root, StageRunner::Job job)
 
 void StageController::onStageFinished(const Recovery &result)
 {
+    const StallScope scope("StageController::onStageFinished");
+    QElapsedTimer apply;
+    apply.start();
+    if (m_runner->resultUnchanged() && m_document->workspaceRoot() == m_workspace) {
+        // Nothing new: the views, their selection and the undo history stay as they are.
+        m_restoreNodeId.clear();
+        m_restorePortId.clear();
+        m_restoreLaunchId.clear();
+        report(tr("Stages 1–3 finished in %1 s: the result is the same as the one shown")
+                   .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2)));
+        return;
+    }
     Recovery recovery = result;
     if (recovery.nodes.workspaceRoot.isEmpty())
         recovery.nodes.workspaceRoot = m_workspace;
     m_document->setRecovery(recovery);
+    m_log->appendLog(tr("Showing the result in the window took %1 s")
+                         .arg(QString::number(apply.elapsed() / 1000.0, 'f', 2)));
     const RecoveryCounts counts = RecoveryCounts::of(
         {m_document->atomicNodes(), m_document->launchDependencies(), m_document->architecture()});
     report(tr("Stages 1–3 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node "
@@ -132,7 +168,11 @@ void StageController::onStageFinished(const Recovery &result)
 void StageController::onLaunchStageFinished(const LaunchDependencies &result,
                                             const Architecture &architecture)
 {
+    QElapsedTimer apply;
+    apply.start();
     m_document->setLaunchDependencies(result, architecture);
+    m_log->appendLog(tr("Showing the result in the window took %1 s")
+                         .arg(QString::number(apply.elapsed() / 1000.0, 'f', 2)));
     report(tr("Stages 2–3 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node "
               "instances, %5 composites, %6 diagnostics")
                .arg(QString::number(m_runTimer.elapsed() / 1000.0, 'f', 2))

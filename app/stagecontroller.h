@@ -37,6 +37,8 @@ public:
     void runLaunch();
     /// Stores `options` in the Document and the settings and runs stage 2 with them.
     void applyLaunchOptions(const LaunchOptions &options);
+    /// "Stage 1 (atomic nodes)", for a person.
+    static QString stageName(int stage);
 
 Q_SIGNALS:
     /// A line for the status bar (0: until replaced).

@@ -1,5 +1,8 @@
 #include "stagerunner.h"
 #include "composearchitecture.h"
+#include "disposal.h"
+
+#include <QElapsedTimer>
 
 #include <exception>
 
@@ -24,8 +27,8 @@ Diagnostic internalError(int stage, const std::exception &e)
 StageRunner::StageRunner(QObject *parent) : QObject(parent)
 {
     connect(&m_jobs, &JobRunner::progressed, this,
-            [this](qint64 done, qint64 total, const QString &what) {
-                Q_EMIT stageProgressed(int(done), int(total), what);
+            [this](qint64 done, qint64 total, const QString &what, int step) {
+                Q_EMIT stageProgressed(int(done), int(total), what, step);
             });
     // The stage functions turn exceptions into diagnostics; anything else ends the run.
     connect(&m_jobs, &JobRunner::failed, this, [this] { Q_EMIT stageCanceled(m_currentJob); });
@@ -41,11 +44,11 @@ void StageRunner::setLaunchFunction(LaunchFunction stage)
     m_launchStage = std::move(stage);
 }
 
-void StageRunner::run(const QString &root, const LaunchOptions &options)
+void StageRunner::run(const QString &root, const LaunchOptions &options, const Recovery &shown)
 {
     const RecoveryFunction stage = m_stage;
     const StageProcess::Options process = m_process;
-    start(root, Job::Recovery, [stage, root, options, process](const StageControl &control) {
+    start(root, Job::Recovery, [stage, root, options, process, shown](const StageControl &control) {
         Outcome out;
         Recovery &result = out.recovery;
         try {
@@ -66,6 +69,8 @@ void StageRunner::run(const QString &root, const LaunchOptions &options)
         }
         if (result.nodes.workspaceRoot.isEmpty())
             result.nodes.workspaceRoot = root;
+        out.unchanged = !shown.nodes.workspaceRoot.isEmpty() && out.error.isEmpty() &&
+                        !control.isCanceled() && result == shown;
         return out;
     });
 }
@@ -81,10 +86,19 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
               Recovery &result = out.recovery;
               try {
                   if (stage || StageProcess::helperPath(process.helperPath).isEmpty()) {
-                      result.launch = stage ? stage(root, nodes, options, control)
-                                            : analyzeLaunchFiles(root, nodes, options, control);
-                      if (!result.launch.canceled && !control.isCanceled())
-                          result.architecture = composeArchitecture(nodes, result.launch, control);
+                      QElapsedTimer clock;
+                      clock.start();
+                      result.launch =
+                          stage ? stage(root, nodes, options, control.forStage(2))
+                                : analyzeLaunchFiles(root, nodes, options, control.forStage(2));
+                      if (!result.launch.canceled && !control.isCanceled()) {
+                          if (control.stageTimed)
+                              control.stageTimed(2, clock.restart());
+                          result.architecture =
+                              composeArchitecture(nodes, result.launch, control.forStage(3));
+                          if (control.stageTimed && !result.architecture.canceled)
+                              control.stageTimed(3, clock.elapsed());
+                      }
                   } else {
                       StageProcess::Result r =
                           StageProcess::launch(root, nodes, options, control, process);
@@ -104,22 +118,33 @@ void StageRunner::start(const QString &root, Job job,
                         std::function<Outcome(const StageControl &)> work)
 {
     m_currentJob = job;
-    m_jobs.start<Outcome>([work = std::move(work)](
-                              const JobControl &control) { return work(control.stageControl()); },
-                          [this, job](Outcome out, bool canceled) {
-                              const Recovery &result = out.recovery;
-                              canceled = canceled ||
-                                         (job == Job::Recovery ? result.nodes.canceled : false) ||
-                                         result.launch.canceled;
-                              if (canceled)
-                                  Q_EMIT stageCanceled(job);
-                              else if (!out.error.isEmpty())
-                                  Q_EMIT stageFailed(job, out.error);
-                              else if (job == Job::Recovery)
-                                  Q_EMIT stageFinished(result);
-                              else
-                                  Q_EMIT launchStageFinished(result.launch, result.architecture);
-                          });
+    m_jobs.start<Outcome>(
+        [work = std::move(work)](const JobControl &control) {
+            // The stage times arrive on this thread (the worker's frames are read here).
+            QList<QPair<int, qint64>> times;
+            StageControl stages = control.stageControl();
+            stages.stageTimed = [&times](int stage, qint64 ms) { times.append({stage, ms}); };
+            Outcome out = work(stages);
+            out.stageTimes = times;
+            return out;
+        },
+        [this, job](Outcome out, bool canceled) {
+            for (const auto &[stage, ms] : std::as_const(out.stageTimes))
+                Q_EMIT stageTimed(stage, ms);
+            const Recovery &result = out.recovery;
+            m_unchanged = out.unchanged;
+            canceled = canceled || (job == Job::Recovery ? result.nodes.canceled : false) ||
+                       result.launch.canceled;
+            if (canceled)
+                Q_EMIT stageCanceled(job);
+            else if (!out.error.isEmpty())
+                Q_EMIT stageFailed(job, out.error);
+            else if (job == Job::Recovery)
+                Q_EMIT stageFinished(result);
+            else
+                Q_EMIT launchStageFinished(result.launch, result.architecture);
+            disposeInBackground(std::move(out.recovery));
+        });
     Q_EMIT stageStarted(root, job);
 }
 

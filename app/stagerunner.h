@@ -50,8 +50,12 @@ public:
     /// How the worker is run (its path, the per-file time and memory budgets).
     void setProcessOptions(const StageProcess::Options &options) { m_process = options; }
 
-    /// Starts stages 1 to 3 on `root`, superseding any run in progress.
-    void run(const QString &root, const LaunchOptions &options = {});
+    /// Starts stages 1 to 3 on `root`, superseding any run in progress. `shown` is the result
+    /// the window shows now: a result equal to it is reported as unchanged (compared off the
+    /// UI thread), so the views need not be rebuilt.
+    void run(const QString &root, const LaunchOptions &options = {}, const Recovery &shown = {});
+    /// True when the last stageFinished brought the same result as the one `run` was given.
+    bool resultUnchanged() const { return m_unchanged; }
     /// Starts stage 2 alone on `root` against `nodes`, superseding any run in progress.
     void runLaunch(const QString &root, const AtomicNodeList &nodes, const LaunchOptions &options);
     /// Asks the current run to stop; stageCanceled follows once it has.
@@ -64,7 +68,11 @@ public:
 
 Q_SIGNALS:
     void stageStarted(const QString &root, rosarch::StageRunner::Job job);
-    void stageProgressed(int done, int total, const QString &what);
+    /// Progress of `stage` (1 atomic nodes, 2 launch files, 3 composition; 0 = none named):
+    /// `done` of `total` files (composites in stage 3), now on `what`.
+    void stageProgressed(int done, int total, const QString &what, int stage);
+    /// Stage `stage` of the run took `ms` milliseconds in the worker (before the result).
+    void stageTimed(int stage, qint64 ms);
     /// Stages 1 and 2 finished (run()).
     void stageFinished(const rosarch::Recovery &result);
     /// Stage 2 alone finished (runLaunch()).
@@ -81,6 +89,8 @@ private:
     {
         Recovery recovery;
         QString error;
+        QList<QPair<int, qint64>> stageTimes; ///< stage, milliseconds
+        bool unchanged = false;               ///< the result equals the one shown
     };
     void start(const QString &root, Job job, std::function<Outcome(const StageControl &)> work);
 
@@ -88,6 +98,7 @@ private:
     LaunchFunction m_launchStage; ///< in-process stage 2 re-run (empty: the worker)
     StageProcess::Options m_process;
     Job m_currentJob = Job::Recovery;
+    bool m_unchanged = false;
     JobRunner m_jobs; ///< last member: its destructor cancels and waits for the workers
 };
 

@@ -2,12 +2,16 @@
 #include "correctioncommand.h"
 #include "decidesuggestioncommand.h"
 #include "decisionstore.h"
+#include "disposal.h"
 #include "project.h"
+#include "stallprobe.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QSet>
+
+#include <utility>
 
 namespace rosarch {
 
@@ -31,6 +35,7 @@ void Document::emitChange(DocumentChange::Parts parts, const QString &id)
 
 void Document::setRecovery(Recovery recovery)
 {
+    const StallScope scope("Document::setRecovery");
     // A re-run of the same workspace keeps the project in memory, modified or not; another
     // workspace's project replaces it, its changes kept in the autosave side file first.
     const bool sameWorkspace = recovery.nodes.workspaceRoot == workspaceRoot();
@@ -43,14 +48,17 @@ void Document::setRecovery(Recovery recovery)
     DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
     if (hasSuggestionReport())
         change.parts |= DocumentChange::Suggestions;
-    Q_EMIT aboutToChange(change);
-    m_corrected.reset();
-    m_keys.reset();
+    {
+        const StallScope views("Document::aboutToChange (views)");
+        Q_EMIT aboutToChange(change);
+    }
+    disposeInBackground(std::make_pair(std::exchange(m_corrected, std::nullopt),
+                                       std::exchange(m_keys, std::nullopt)));
     m_modifiedOutside = sameWorkspace && modified; // undo history goes, the changes stay
     m_undoStack.clear();
-    m_nodes = std::move(recovery.nodes);
-    m_launch = std::move(recovery.launch);
-    m_architecture = std::move(recovery.architecture);
+    disposeInBackground(Recovery{std::exchange(m_nodes, std::move(recovery.nodes)),
+                                 std::exchange(m_launch, std::move(recovery.launch)),
+                                 std::exchange(m_architecture, std::move(recovery.architecture))});
     m_analysisDescriptions.clear();
     for (const AtomicNode &n : m_nodes.nodes)
         m_analysisDescriptions.insert(n.id, n.description);
@@ -70,7 +78,18 @@ void Document::setRecovery(Recovery recovery)
     else
         clearSuggestions();
     updateModified();
+    const StallScope views("Document::changed (views)");
     Q_EMIT changed(change);
+}
+
+Recovery Document::recovered() const
+{
+    Recovery r{m_nodes, m_launch, m_architecture};
+    for (AtomicNode &n : r.nodes.nodes)
+        if (const auto it = m_analysisDescriptions.constFind(n.id);
+            it != m_analysisDescriptions.cend() && *it != n.description)
+            n.description = *it;
+    return r;
 }
 
 void Document::setAtomicNodes(AtomicNodeList nodes)
@@ -88,8 +107,8 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     const QList<SuggestionDecision> keyed = keyedDecisions(); // launch ids may change
     const QList<Suggestion> suggestions = keyedSuggestions();
     m_keys.reset();
-    m_launch = std::move(launch);
-    m_architecture = std::move(architecture);
+    disposeInBackground(std::make_pair(std::exchange(m_launch, std::move(launch)),
+                                       std::exchange(m_architecture, std::move(architecture))));
     bindDecisions(keyed);
     bindSuggestions(suggestions); // by key: groupings and names refer to launch ids
     Q_EMIT changed(change);

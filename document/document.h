@@ -48,6 +48,9 @@ public:
 
     /// Replaces the whole model with the result of stages 1 and 2 (clears undo history).
     void setRecovery(Recovery recovery);
+    /// The model as the stages recovered it (descriptions as analysis found them): what a
+    /// re-run that found nothing new returns.
+    Recovery recovered() const;
     /// Replaces the whole model with a stage 1 result and no launch dependencies.
     void setAtomicNodes(AtomicNodeList nodes);
     /// Replaces only the results of stages 2 and 3 (a re-run of stage 2); the atomic nodes

@@ -21,7 +21,14 @@ const Recovery &Document::accepted() const
         Recovery recovered{m_nodes, m_launch, m_architecture};
         for (AtomicNode &n : recovered.nodes.nodes)
             n.description = m_analysisDescriptions.value(n.id, n.description);
-        m_corrected = CorrectedModel::apply(recovered, project());
+        const Project p = project();
+        if (p.decisions.isEmpty() && p.corrections.isEmpty()) {
+            // nothing to apply: the model as recovered (without keying a large model)
+            m_corrected = CorrectedRecovery{};
+            m_corrected->recovery = std::move(recovered);
+        } else {
+            m_corrected = CorrectedModel::apply(recovered, p);
+        }
     }
     return m_corrected->recovery;
 }
@@ -35,10 +42,13 @@ const QList<Orphan> &Document::orphans() const
 QList<SuggestionDecision> Document::keyedDecisions() const
 {
     QList<SuggestionDecision> out = m_unboundDecisions;
-    const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+    if (m_decisions.isEmpty())
+        return out;
+    if (!m_keys) // the keys of a large model take a while: made once per model
+        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
     for (const SuggestionDecision &d : m_decisions) {
         SuggestionDecision k;
-        if (CorrectedModel::keyed(d, keys, &k))
+        if (CorrectedModel::keyed(d, *m_keys, &k))
             out.append(k);
     }
     return out;
@@ -48,11 +58,12 @@ void Document::bindDecisions(const QList<SuggestionDecision> &keyed)
 {
     m_decisions.clear();
     m_unboundDecisions.clear();
-    const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+    if (!keyed.isEmpty() && !m_keys)
+        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
     for (const SuggestionDecision &d : keyed) {
         SuggestionDecision b;
         QString reason;
-        if (CorrectedModel::bound(d, keys, &b, &reason))
+        if (CorrectedModel::bound(d, *m_keys, &b, &reason))
             m_decisions.insert(b.key(), b);
         else
             m_unboundDecisions.append(d); // kept, applied to nothing
@@ -99,6 +110,10 @@ QList<Suggestion> Document::keyedSuggestions() const
 
 void Document::bindSuggestions(const QList<Suggestion> &keyed)
 {
+    if (keyed.isEmpty()) {
+        m_suggestionReport.suggestions.clear();
+        return;
+    }
     if (!m_keys)
         m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
     QList<Suggestion> bound;

@@ -2,6 +2,7 @@
 #include "atomicnodetext.h"
 #include "document.h"
 #include "icons.h"
+#include "stallprobe.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -55,6 +56,7 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
     });
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
         if (change.has(DocumentChange::Model)) {
+            const StallScope scope("AtomicNodeModel reset");
             m_previewNodeId.clear();
             rebuild();
             endResetModel();

@@ -2,6 +2,7 @@
 #include "document.h"
 #include "icons.h"
 #include "launchtreetext.h"
+#include "stallprobe.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -17,6 +18,7 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
 {
     const auto begin = [this] { beginResetModel(); };
     const auto end = [this] {
+        const StallScope scope("LaunchTreeModel reset");
         rebuild();
         endResetModel();
     };

@@ -2,6 +2,17 @@
 
 namespace rosarch {
 
+StageControl StageControl::forStage(int stage) const
+{
+    StageControl c = *this;
+    if (stageProgressed)
+        c.progressed = [stageProgressed = stageProgressed, stage](int done, int total,
+                                                                  const QString &what) {
+            stageProgressed(stage, done, total, what);
+        };
+    return c;
+}
+
 FileWork::FileWork(const StageControl &control, const QString &file)
     : m_control(control), m_file(file),
       m_reported(control.fileWork && !control.skipped.contains(file))

@@ -22,6 +22,11 @@ struct StageControl
     /// Files not to analyse, with the reason: an earlier attempt crashed or ran out of its
     /// budget in them. Each skip becomes a `file-skipped` diagnostic.
     QHash<QString, QString> skipped;
+    /// Progress of one stage (1 scan and atomic nodes, 2 launch files, 3 composition): `done`
+    /// of `total` files. Unset: progressed gets it.
+    std::function<void(int stage, int done, int total, const QString &what)> stageProgressed;
+    /// Stage `stage` finished after `ms` milliseconds.
+    std::function<void(int stage, qint64 ms)> stageTimed;
 
     bool isCanceled() const { return canceled && canceled(); }
     void report(int done, int total, const QString &what) const
@@ -29,6 +34,8 @@ struct StageControl
         if (progressed)
             progressed(done, total, what);
     }
+    /// The control stage `stage` runs with: its progress goes to stageProgressed.
+    StageControl forStage(int stage) const;
 };
 
 /// The work on one file, for StageControl::fileWork: construct it before the file is read,

@@ -24,12 +24,17 @@ struct JobRunner::Job
     qint64 doneCount = 0;
     qint64 total = 0;
     QString what;
+    int step = 0;
     QStringList lines;
     QString error;
     int tick = 0; ///< QFuture progress must grow: the future carries a tick, this the numbers
 };
 
-JobRunner::JobRunner(QObject *parent) : QObject(parent) {}
+JobRunner::JobRunner(QObject *parent) : QObject(parent), m_pool(new QThreadPool(this))
+{
+    // the current job and superseded ones still finishing
+    m_pool->setMaxThreadCount(4);
+}
 
 JobRunner::~JobRunner()
 {
@@ -53,8 +58,8 @@ int JobRunner::startErased(ErasedWork work, ErasedDone done)
             [this, job] { deliver(job); });
     connect(job->watcher, &QFutureWatcherBase::finished, this, [this, job] { finish(job); });
 
-    job->watcher->setFuture(
-        QtConcurrent::run([work = std::move(work), job](QPromise<std::shared_ptr<void>> &promise) {
+    job->watcher->setFuture(QtConcurrent::run(
+        m_pool, [work = std::move(work), job](QPromise<std::shared_ptr<void>> &promise) {
             promise.setProgressRange(0, std::numeric_limits<int>::max());
             const auto notify = [&promise, job] {
                 int tick = 0;
@@ -66,13 +71,15 @@ int JobRunner::startErased(ErasedWork work, ErasedDone done)
             };
             JobControl control;
             control.m_cancel = job->cancel;
-            control.m_progress = [job, notify](qint64 done, qint64 total, const QString &what) {
+            control.m_progress = [job, notify](qint64 done, qint64 total, const QString &what,
+                                               int step) {
                 {
                     QMutexLocker lock(&job->mutex);
                     job->hasProgress = true;
                     job->doneCount = done;
                     job->total = total;
                     job->what = what;
+                    job->step = step;
                 }
                 notify();
             };
@@ -113,8 +120,10 @@ void JobRunner::deliver(const std::shared_ptr<Job> &job)
     qint64 done = 0;
     qint64 total = 0;
     QString what;
+    int step = 0;
     {
         QMutexLocker lock(&job->mutex);
+        step = job->step;
         lines.swap(job->lines);
         hasProgress = job->hasProgress;
         job->hasProgress = false;
@@ -125,7 +134,7 @@ void JobRunner::deliver(const std::shared_ptr<Job> &job)
     for (const QString &line : std::as_const(lines))
         Q_EMIT logged(line);
     if (hasProgress)
-        Q_EMIT progressed(done, total, what);
+        Q_EMIT progressed(done, total, what, step);
 }
 
 void JobRunner::finish(const std::shared_ptr<Job> &job)

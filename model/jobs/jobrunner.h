@@ -4,6 +4,7 @@
 
 #include <QList>
 #include <QObject>
+#include <QThreadPool>
 
 #include <functional>
 #include <memory>
@@ -46,8 +47,9 @@ public:
     int generation() const { return m_generation; }
 
 Q_SIGNALS:
-    /// The current job's latest progress (older jobs' progress is dropped).
-    void progressed(qint64 done, qint64 total, const QString &what);
+    /// The current job's latest progress (older jobs' progress is dropped); `step` as the job
+    /// said (JobControl::progress).
+    void progressed(qint64 done, qint64 total, const QString &what, int step);
     /// A log line of the current job.
     void logged(const QString &line);
     /// The current job threw; `message` says what. Its `done` is not called.
@@ -62,6 +64,10 @@ private:
     void deliver(const std::shared_ptr<Job> &job);
     void finish(const std::shared_ptr<Job> &job);
 
+    /// The runner's own threads: a job blocks its thread for as long as it runs (the stages
+    /// wait for the worker process), and on the global pool it would starve what Qt itself
+    /// runs there; QPainter's parallel fills wait for it, so the window froze during a run.
+    QThreadPool *m_pool;
     std::shared_ptr<Job> m_current;
     QList<std::shared_ptr<Job>> m_jobs; ///< every job whose worker has not finished yet
     int m_generation = 0;

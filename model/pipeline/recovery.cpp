@@ -3,6 +3,8 @@
 #include "nodeanalyzer.h"
 #include "workspacescanner.h"
 
+#include <QElapsedTimer>
+
 namespace rosarch {
 
 RecoveryCounts RecoveryCounts::of(const Recovery &r)
@@ -34,16 +36,27 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
                           const StageControl &control)
 {
     Recovery r;
-    const Workspace ws = WorkspaceScanner::scan(root, control);
-    r.nodes = NodeAnalyzer::run(ws, control);
+    QElapsedTimer clock;
+    clock.start();
+    const auto timed = [&](int stage) {
+        if (control.stageTimed)
+            control.stageTimed(stage, clock.restart());
+    };
+    const StageControl stage1 = control.forStage(1);
+    const Workspace ws = WorkspaceScanner::scan(root, stage1);
+    r.nodes = NodeAnalyzer::run(ws, stage1);
     if (r.nodes.canceled || control.isCanceled()) {
         r.launch.canceled = true;
         return r;
     }
-    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, control);
+    timed(1);
+    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, control.forStage(2));
     if (r.launch.canceled || control.isCanceled())
         return r;
-    r.architecture = composeArchitecture(r.nodes, r.launch, control);
+    timed(2);
+    r.architecture = composeArchitecture(r.nodes, r.launch, control.forStage(3));
+    if (!r.architecture.canceled)
+        timed(3);
     return r;
 }
 

@@ -44,13 +44,14 @@ QDataStream &operator>>(QDataStream &s, StageRequest &v);
 namespace stagestream {
 /// The first bytes of a request and of every worker reply: "RSTG" and the format version.
 constexpr quint32 kMagic = 0x52535447;
-constexpr quint32 kVersion = 1;
+constexpr quint32 kVersion = 2;
 /// The QDataStream version both sides use.
 constexpr QDataStream::Version kStreamVersion = QDataStream::Qt_6_4;
 /// The worker's replies on stdout are frames: a type and a payload (QByteArray).
 enum Frame : quint8
 {
-    Progress = 'P', ///< qint32 done, qint32 total, QString what
+    Progress = 'P', ///< qint32 stage (0 = none), qint32 done, qint32 total, QString what
+    Timed = 'T',    ///< qint32 stage, qint64 milliseconds: a stage finished
     Enter = 'E',    ///< quint64 thread, QString file: work on a file begins
     Leave = 'L',    ///< quint64 thread, QString file: and ends
     Result = 'R',   ///< Recovery

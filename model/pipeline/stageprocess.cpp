@@ -106,10 +106,19 @@ public:
                 QDataStream frame(payload);
                 frame.setVersion(stagestream::kStreamVersion);
                 if (type == stagestream::Progress) {
-                    qint32 done = 0, total = 0;
+                    qint32 stage = 0, done = 0, total = 0;
                     QString what;
-                    frame >> done >> total >> what;
-                    m_control.report(done, total, what);
+                    frame >> stage >> done >> total >> what;
+                    if (stage > 0 && m_control.stageProgressed)
+                        m_control.stageProgressed(stage, done, total, what);
+                    else
+                        m_control.report(done, total, what);
+                } else if (type == stagestream::Timed) {
+                    qint32 stage = 0;
+                    qint64 ms = 0;
+                    frame >> stage >> ms;
+                    if (m_control.stageTimed)
+                        m_control.stageTimed(stage, ms);
                 } else if (type == stagestream::Enter || type == stagestream::Leave) {
                     quint64 thread = 0;
                     QString file;

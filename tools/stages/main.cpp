@@ -12,6 +12,7 @@
 #include "recoverystream.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QMutex>
 #include <QThread>
@@ -141,8 +142,12 @@ int main(int argc, char **argv)
     StageControl control;
     control.skipped = request.skipped;
     control.progressed = [](int done, int total, const QString &what) {
-        frame(stagestream::Progress, qint32(done), qint32(total), what);
+        frame(stagestream::Progress, qint32(0), qint32(done), qint32(total), what);
     };
+    control.stageProgressed = [](int stage, int done, int total, const QString &what) {
+        frame(stagestream::Progress, qint32(stage), qint32(done), qint32(total), what);
+    };
+    control.stageTimed = [](int stage, qint64 ms) { frame(stagestream::Timed, qint32(stage), ms); };
     control.fileWork = [](const QString &file, bool entering) {
         const auto thread = quint64(quintptr(QThread::currentThreadId()));
         frame(entering ? stagestream::Enter : stagestream::Leave, thread, file);
@@ -151,9 +156,17 @@ int main(int argc, char **argv)
     };
     Recovery result;
     if (request.job == StageRequest::Job::Launch) {
-        result.launch = analyzeLaunchFiles(request.root, request.nodes, request.options, control);
-        if (!result.launch.canceled)
-            result.architecture = composeArchitecture(request.nodes, result.launch, control);
+        QElapsedTimer clock;
+        clock.start();
+        result.launch =
+            analyzeLaunchFiles(request.root, request.nodes, request.options, control.forStage(2));
+        if (!result.launch.canceled) {
+            control.stageTimed(2, clock.restart());
+            result.architecture =
+                composeArchitecture(request.nodes, result.launch, control.forStage(3));
+            if (!result.architecture.canceled)
+                control.stageTimed(3, clock.elapsed());
+        }
     } else {
         result = recoverWorkspace(request.root, request.options, control);
     }
