@@ -59,10 +59,11 @@ int Document::unmarkFindings(const QStringList &keys)
 void Document::replaceFindingMarks(
     const QList<std::pair<QString, std::optional<FindingMark>>> &marks)
 {
-    for (const auto &[key, mark] : marks) {
+    for (const auto &change : marks) {
+        const QString &key = change.first;
         m_project.findings.removeIf([&](const FindingMark &m) { return m.key == key; });
-        if (mark)
-            m_project.findings.append(*mark);
+        if (change.second)
+            m_project.findings.append(*change.second);
     }
     std::sort(m_project.findings.begin(), m_project.findings.end(),
               [](const FindingMark &a, const FindingMark &b) { return a.key < b.key; });

@@ -39,12 +39,13 @@ DiagnosticFilterBar::DiagnosticFilterBar(DiagnosticModel *model, QWidget *parent
     }
     m_kind->setToolTip(tr("Show only findings of one kind"));
     m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_kind->setMinimumContentsLength(18);
+    m_kind->setMinimumContentsLength(12);
     m_package->setToolTip(tr("Show only findings in one package"));
     m_package->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_package->setMinimumContentsLength(14);
+    m_package->setMinimumContentsLength(10);
     m_search->setPlaceholderText(tr("Search findings"));
     m_search->setClearButtonEnabled(true);
+    m_search->setMinimumWidth(140);
     m_search->setToolTip(tr("Show findings whose message, file, kind or package contains this"));
     m_hidden->setToolTip(tr("Also show findings you hid (drawn grey)"));
     m_accepted->setToolTip(tr("Also show findings you accepted (drawn grey)"));
