@@ -138,6 +138,11 @@ void MainWindow::createPanels()
     m_diagramDock = makeDock(m_diagramPanel, tr("Composed diagram"), QStringLiteral("diagramDock"));
     m_sourceDock = makeDock(m_sourceView, tr("Source"), QStringLiteral("sourceDock"));
     m_logDock = makeDock(m_logView, tr("Log"), QStringLiteral("logDock"));
+    // The title (and its tab) counts the findings; the View menu keeps saying "Log".
+    connect(m_logView, &LogView::titleChanged, m_logDock, [this](const QString &title) {
+        m_logDock->setWindowTitle(title);
+        m_logDock->toggleViewAction()->setText(tr("Log"));
+    });
     m_suggestionModel = new SuggestionModel(m_document, this);
     m_suggestionPanel = new SuggestionPanel(this);
     m_suggestionPanel->setModel(m_suggestionModel);

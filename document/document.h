@@ -159,6 +159,18 @@ public:
     /// Who makes corrections here: $ROSARCH_AUTHOR, else the login name.
     static QString author();
 
+    // Findings (issue 15): diagnostics a person hid or accepted, kept in the project by key.
+
+    /// The marks of the project, sorted by finding key.
+    const QList<FindingMark> &findingMarks() const { return m_project.findings; }
+    /// Pushes one undoable step that gives the findings `keys` the `status` (with `reason`,
+    /// the author and the time); returns how many marks changed.
+    int markFindings(const QStringList &keys, FindingMark::Status status,
+                     const QString &reason = {});
+    /// Pushes one undoable step that removes the marks of `keys` (the findings show again and
+    /// count as new); returns how many marks were removed.
+    int unmarkFindings(const QStringList &keys);
+
     /// What a decision touches, captured for undo: the stored decision of one subject and
     /// proposal and, for a node description, the node's description.
     struct DecisionSnapshot
@@ -189,6 +201,9 @@ Q_SIGNALS:
 private:
     friend class DecideSuggestionCommand;
     friend class CorrectionCommand;
+    friend class FindingMarkCommand;
+    /// Puts `marks` in place of the marks of their keys (a key with no mark: removed).
+    void replaceFindingMarks(const QList<std::pair<QString, std::optional<FindingMark>>> &marks);
     void insertCorrection(int index, const Correction &correction);
     void takeCorrection(const QString &id);
     /// `correction` made ready to push: id, author, time; false when its target is unknown.

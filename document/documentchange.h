@@ -19,6 +19,7 @@ struct DocumentChange
         Suggestion = 1u << 5,    ///< one suggestion's status (`id`)
         Decisions = 1u << 6,     ///< accepted decisions: groupings, names, descriptions
         Corrections = 1u << 7,   ///< the corrections (`id`: the one added or removed)
+        Findings = 1u << 8,      ///< the hidden and accepted findings
     };
     Q_DECLARE_FLAGS(Parts, Part)
 

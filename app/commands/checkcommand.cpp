@@ -52,7 +52,7 @@ int runCheck(const QStringList &arguments)
     const QCommandLineOption baselineOption(
         QStringLiteral("baseline"),
         tr("Findings whose keys are in this file (a JSON report of an earlier check, or one key "
-           "per line) are reported but never fail."),
+           "per line) are reported but never fail; so are those accepted in the project."),
         QStringLiteral("file"));
     const QCommandLineOption writeBaselineOption(
         QStringLiteral("write-baseline"),
@@ -102,6 +102,11 @@ int runCheck(const QStringList &arguments)
             return CheckIoError;
         }
     }
+
+    // Findings a person accepted in the project are known, like those of a baseline.
+    for (const FindingMark &mark : run.project().findings)
+        if (mark.status == FindingMark::Status::Accepted)
+            baseline.insert(mark.key);
 
     QString failure;
     const Recovery recovery = run.recover(nullptr, &failure);

@@ -29,6 +29,8 @@ public:
     Recovery recover(int *applied = nullptr, QString *failure = nullptr,
                      QList<Orphan> *orphans = nullptr) const;
     const QString &workspace() const { return m_workspace; }
+    /// The project applied (empty without one).
+    const Project &project() const { return m_project; }
     /// The project file applied ("" = none).
     const QString &projectFile() const { return m_projectFile; }
 

@@ -227,6 +227,12 @@ QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
                     {{"message", utf8(r.message)}, {"evidence", EvidenceJson::toJson(r.evidence)}});
             j["related"] = related;
         }
+        if (!d.contexts.isEmpty()) {
+            Json contexts = Json::array();
+            for (const QString &c : d.contexts)
+                contexts.push_back(utf8(c));
+            j["contexts"] = contexts;
+        }
         a.push_back(j);
     }
     Json root;

@@ -78,7 +78,7 @@ CheckReport::CheckReport(const QList<Diagnostic> &diagnostics, const QSet<QStrin
         if (seen.contains(f.key + place(d.evidence)))
             continue;
         seen.insert(f.key + place(d.evidence));
-        f.baselined = baseline.contains(f.key);
+        f.baselined = d.isIn(baseline);
         f.failing = !failNever && !f.baselined && rank(d.severity) >= rank(failOn);
         m_findings.append(f);
     }
@@ -115,6 +115,10 @@ QString CheckReport::text() const
                (f.baselined ? QStringLiteral(", baseline]\n") : QStringLiteral("]\n"));
         for (const Diagnostic::Related &r : d.related)
             out += QStringLiteral("  %1: note: %2\n").arg(place(r.evidence), r.message);
+        if (d.contexts.size() > 1)
+            out += QStringLiteral("  seen in %1 systems: %2\n")
+                       .arg(d.contexts.size())
+                       .arg(d.contexts.join(QStringLiteral(", ")));
     }
     out += QStringLiteral("%1 findings (%2 errors, %3 warnings, %4 notes); %5 in the baseline; "
                           "%6 fail the check.\n")
@@ -143,6 +147,12 @@ QByteArray CheckReport::json(const QString &toolVersion) const
             related.push_back(
                 {{"message", utf8(r.message)}, {"evidence", EvidenceJson::toJson(r.evidence)}});
         j["related"] = related;
+        if (!d.contexts.isEmpty()) {
+            Json contexts = Json::array();
+            for (const QString &c : d.contexts)
+                contexts.push_back(utf8(c));
+            j["contexts"] = contexts;
+        }
         j["baselined"] = f.baselined;
         j["failing"] = f.failing;
         findings.push_back(j);

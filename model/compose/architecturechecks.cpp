@@ -43,10 +43,11 @@ public:
         m_order.clear();
         m_named.clear();
         m_nodeOrder.clear();
+        m_current = systemName(root);
         collect(root, 0);
         for (const QString &key : std::as_const(m_order))
-            checkName(key, root);
-        checkNodeNames(root);
+            checkName(key);
+        checkNodeNames();
     }
 
 private:
@@ -80,15 +81,41 @@ private:
         }
     }
 
+    /// Records a finding of the current system. `message` may name the system with "{by}"
+    /// ("started {by} publishes") and "{in}" (" in the system"): the finding itself says
+    /// "alongside it" and lists the system among its contexts, so that one finding seen in N
+    /// systems is reported once with N contexts. The per-system wording it had before is kept
+    /// as an alias key (old baselines and project files still match it).
     void add(Diagnostic::Severity severity, const QString &code, const QString &message,
              const Evidence &evidence, const QList<Diagnostic::Related> &related = {})
     {
-        Diagnostic d{severity, code, message, evidence, related};
-        const QString key = code + message + evidence.file + QString::number(evidence.line);
-        if (m_seen.contains(key))
+        const QString text = QString(message)
+                                 .replace(QLatin1String("{by}"), QLatin1String("alongside it"))
+                                 .replace(QLatin1String("{in}"), QString());
+        const Diagnostic old{severity,
+                             code,
+                             QString(message)
+                                 .replace(QLatin1String("{by}"), QLatin1String("by ") + m_current)
+                                 .replace(QLatin1String("{in}"), QLatin1String(" in ") + m_current),
+                             evidence,
+                             {},
+                             {},
+                             {}};
+        const QString key = code + QLatin1Char('\n') + text + QLatin1Char('\n') + evidence.file +
+                            QLatin1Char(':') + QString::number(evidence.line);
+        if (const auto it = m_seen.constFind(key); it != m_seen.cend()) {
+            Diagnostic &d = (*m_out)[*it];
+            if (!d.contexts.contains(m_current))
+                d.contexts.append(m_current);
+            if (const QString alias = old.key(); !d.aliases.contains(alias))
+                d.aliases.append(alias);
+            for (const Diagnostic::Related &r : related)
+                if (!d.related.contains(r))
+                    d.related.append(r);
             return;
-        m_seen.insert(key);
-        m_out->append(d);
+        }
+        m_seen.insert(key, int(m_out->size()));
+        m_out->append({severity, code, text, evidence, related, {m_current}, {old.key()}});
     }
 
     static QString systemName(const Composite &root)
@@ -148,12 +175,11 @@ private:
         return QStringLiteral(" Did you mean %1?").arg(found);
     }
 
-    void checkName(const QString &key, const Composite &root)
+    void checkName(const QString &key)
     {
         const Family &f = m_system.value(key);
         const QString kind = key.section(QLatin1Char(' '), 0, 0);
         const QString name = key.section(QLatin1Char(' '), 1);
-        const QString system = systemName(root);
         QStringList types;
         for (const QList<Use> *list : {&f.providers, &f.users})
             for (const Use &u : *list)
@@ -169,38 +195,38 @@ private:
                                                  ? QStringLiteral("provides")
                                                  : QStringLiteral("uses"));
             add(Diagnostic::Severity::Warning, QStringLiteral("type-mismatch"),
-                QStringLiteral("The %1 %2 is used with different types in %3: %4.")
-                    .arg(kind, name, system, types.join(QStringLiteral(", "))),
+                QStringLiteral("The %1 %2 is used with different types{in}: %3.")
+                    .arg(kind, name, types.join(QStringLiteral(", "))),
                 u.port->evidence, others);
         }
         if (kind == QLatin1String("topic")) {
-            checkQos(name, f, system);
+            checkQos(name, f);
             if (f.providers.isEmpty())
                 for (const Use &u : f.users) {
                     if (u.port->remapped) {
-                        remapTargetUnused(u, name, system, QStringLiteral("publishes"));
+                        remapTargetUnused(u, name, QStringLiteral("publishes"));
                         continue;
                     }
                     QList<Diagnostic::Related> rel;
                     const QString h = hint(kind, name, true, &rel);
                     add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
                         QStringLiteral(
-                            "%1 subscribes to %2, which no node started by %3 publishes.%4")
-                            .arg(who(*u.part), name, system, h),
+                            "%1 subscribes to %2, which no node started {by} publishes.%3")
+                            .arg(who(*u.part), name, h),
                         u.port->evidence, rel);
                 }
             if (f.users.isEmpty())
                 for (const Use &u : f.providers) {
                     if (u.port->remapped) {
-                        remapTargetUnused(u, name, system, QStringLiteral("subscribes to"));
+                        remapTargetUnused(u, name, QStringLiteral("subscribes to"));
                         continue;
                     }
                     QList<Diagnostic::Related> rel;
                     const QString h = hint(kind, name, false, &rel);
                     add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
                         QStringLiteral(
-                            "%1 publishes %2, which no node started by %3 subscribes to.%4")
-                            .arg(who(*u.part), name, system, h),
+                            "%1 publishes %2, which no node started {by} subscribes to.%3")
+                            .arg(who(*u.part), name, h),
                         u.port->evidence, rel);
                 }
             return;
@@ -214,31 +240,30 @@ private:
                     rel << related(u, QStringLiteral("serves"));
             }
             add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-server"),
-                QStringLiteral("The %1 %2 has %3 servers in %4: %5.")
+                QStringLiteral("The %1 %2 has %3 servers{in}: %4.")
                     .arg(kind, name)
                     .arg(f.providers.size())
-                    .arg(system, servers.join(QStringLiteral(", "))),
+                    .arg(servers.join(QStringLiteral(", "))),
                 f.providers.at(1).port->evidence, rel);
         }
         if (f.providers.isEmpty())
             for (const Use &u : f.users) {
                 if (u.port->remapped) {
-                    remapTargetUnused(u, name, system, QStringLiteral("serves"));
+                    remapTargetUnused(u, name, QStringLiteral("serves"));
                     continue;
                 }
                 QList<Diagnostic::Related> rel;
                 const QString h = hint(kind, name, true, &rel);
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
-                    QStringLiteral("%1 calls the %2 %3, which no node started by %4 serves.%5")
-                        .arg(who(*u.part), kind, name, system, h),
+                    QStringLiteral("%1 calls the %2 %3, which no node started {by} serves.%4")
+                        .arg(who(*u.part), kind, name, h),
                     u.port->evidence, rel);
             }
     }
 
     /// A port a remap rule renamed, to a name nobody on the other side uses: the finding is
     /// the rule (at the launch line), with the port's creation as the related place.
-    void remapTargetUnused(const Use &u, const QString &name, const QString &system,
-                           const QString &counterpart)
+    void remapTargetUnused(const Use &u, const QString &name, const QString &counterpart)
     {
         QList<Diagnostic::Related> rel{{QStringLiteral("%1 %2 as written in the code")
                                             .arg(portKindName(u.port->kind), u.port->nameAsWritten),
@@ -250,15 +275,15 @@ private:
         add(isProvidingPort(u.port->kind) ? Diagnostic::Severity::Info
                                           : Diagnostic::Severity::Warning,
             QStringLiteral("remap-target-unused"),
-            QStringLiteral("%1 remaps its %2 %3 to %4, which no node started by %5 %6.%7")
-                .arg(who(*u.part), portKindName(u.port->kind), u.port->nameAsWritten, name, system,
+            QStringLiteral("%1 remaps its %2 %3 to %4, which no node started {by} %5.%6")
+                .arg(who(*u.part), portKindName(u.port->kind), u.port->nameAsWritten, name,
                      counterpart, h),
             u.part->evidence, rel);
     }
 
     /// Publisher and subscription pairs whose literal QoS cannot match (ROS 2's request/offer
     /// rules for reliability and durability); a side whose QoS is not written out is skipped.
-    void checkQos(const QString &name, const Family &f, const QString &system)
+    void checkQos(const QString &name, const Family &f)
     {
         for (const Use &sub : f.users) {
             const QosProfile requested = QosProfile::fromWritten(sub.port->qos);
@@ -268,9 +293,8 @@ private:
                 if (why.isEmpty())
                     continue;
                 add(Diagnostic::Severity::Warning, QStringLiteral("qos-incompatible"),
-                    QStringLiteral("%1 will not receive %2 from %3 in %4: %5 (QoS %6 against "
-                                   "%7).")
-                        .arg(who(*sub.part), name, who(*pub.part), system, why, sub.port->qos,
+                    QStringLiteral("%1 will not receive %2 from %3{in}: %4 (QoS %5 against %6).")
+                        .arg(who(*sub.part), name, who(*pub.part), why, sub.port->qos,
                              pub.port->qos),
                     sub.port->evidence,
                     {related(pub, QStringLiteral("publishes with QoS %1 on").arg(pub.port->qos))});
@@ -280,7 +304,7 @@ private:
 
     /// Two nodes with one fully qualified name in a system: ROS 2 lets both start, and then
     /// parameters, services and tools reach either one.
-    void checkNodeNames(const Composite &root)
+    void checkNodeNames()
     {
         for (const QString &fq : std::as_const(m_nodeOrder)) {
             const QList<const RosNodePart *> &parts = m_named[fq];
@@ -291,9 +315,7 @@ private:
                 rel << Diagnostic::Related{
                     QStringLiteral("another %1 named %2").arg(p->typeName, fq), p->evidence};
             add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-node-name"),
-                QStringLiteral("%1 nodes are named %2 in %3.")
-                    .arg(parts.size())
-                    .arg(fq, systemName(root)),
+                QStringLiteral("%1 nodes are named %2{in}.").arg(parts.size()).arg(fq),
                 parts.first()->evidence, rel);
         }
     }
@@ -319,7 +341,8 @@ private:
     QStringList m_order;
     QHash<QString, QList<const RosNodePart *>> m_named; ///< fully qualified name -> parts
     QStringList m_nodeOrder;
-    QSet<QString> m_seen;
+    QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out
+    QString m_current;          ///< the system being checked
 };
 
 /// A remap rule is reported when no instance carrying it has a port it renames; the

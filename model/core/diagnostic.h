@@ -4,6 +4,7 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 
 namespace rosarch {
 
@@ -31,12 +32,29 @@ struct Diagnostic
     QString message; ///< one sentence for a person
     Evidence evidence;
     QList<Related> related;
+    /// The systems (root launch files) the finding was seen in, in the order they were checked;
+    /// empty for a finding that belongs to no one system (a file, a launch line).
+    QStringList contexts = {};
+    /// Other keys the finding answers to: those the per-system findings merged into it had
+    /// (their messages named the system), so baselines and project files written before the
+    /// merge still recognise it.
+    QStringList aliases = {};
 
     static QString severityName(Severity s);
     /// The finding's stable key (blueprint §5): its code, file and message, with no line or
     /// column, so that it survives edits elsewhere in the file. Baselines remember findings by
     /// it: "topic-unpublished:3f2a9c0e51b7d4a8".
     QString key() const;
+    /// True when `keys` holds the key() or one of the aliases.
+    template <typename Set> bool isIn(const Set &keys) const
+    {
+        if (keys.contains(key()))
+            return true;
+        for (const QString &alias : aliases)
+            if (keys.contains(alias))
+                return true;
+        return false;
+    }
     bool operator==(const Diagnostic &) const = default;
 };
 

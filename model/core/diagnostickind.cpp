@@ -97,6 +97,13 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "stages ran inside it: a crash in analysis would close the window. Reinstall, or "
              "set ROSARCH_STAGES to the worker's path.",
              "warning"),
+        kind("stage-failed", "Stage stopped by an internal error",
+             "A stage ended with an internal error (an exception) instead of a result, so the "
+             "model shown is incomplete: what the stage would have found is missing. The "
+             "message names the stage and the error. Run the stage again (F5); if it fails "
+             "again, please report it with the message: it is a bug in rosarch, not in the "
+             "workspace.",
+             "error"),
         kind("file-too-large", "File too large",
              "A file above the size limit was skipped; nothing in it was analysed.", "warning"),
         kind("binary-file", "Binary file", "A file that looks binary was skipped.", "note"),

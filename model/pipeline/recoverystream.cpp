@@ -15,7 +15,7 @@ template <class F> void fields(Diagnostic::Related &v, F f)
 }
 template <class F> void fields(Diagnostic &v, F f)
 {
-    f(v.severity, v.code, v.message, v.evidence, v.related);
+    f(v.severity, v.code, v.message, v.evidence, v.related, v.contexts, v.aliases);
 }
 template <class F> void fields(Port &v, F f)
 {

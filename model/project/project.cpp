@@ -41,6 +41,14 @@ const Correction *Project::correction(const QString &id) const
     return nullptr;
 }
 
+const FindingMark *Project::finding(const QString &key) const
+{
+    for (const FindingMark &m : findings)
+        if (m.key == key)
+            return &m;
+    return nullptr;
+}
+
 namespace ProjectFile {
 
 QString defaultPath(const QString &workspaceRoot)
@@ -102,7 +110,7 @@ QJsonObject schema()
 
 QByteArray toJson(const Project &project)
 {
-    QJsonObject o{{QLatin1String("version"), Project::kVersion}};
+    QJsonObject o{{QLatin1String("version"), project.version()}};
     if (!QCoreApplication::applicationVersion().isEmpty())
         o.insert(QLatin1String("generator"),
                  QStringLiteral("rosarch ") + QCoreApplication::applicationVersion());
@@ -133,6 +141,14 @@ QByteArray toJson(const Project &project)
         c.append(correction.toJson());
     if (!c.isEmpty())
         o.insert(QLatin1String("corrections"), c);
+    QList<FindingMark> marks = project.findings;
+    std::sort(marks.begin(), marks.end(),
+              [](const FindingMark &a, const FindingMark &b) { return a.key < b.key; });
+    QJsonArray f;
+    for (const FindingMark &mark : marks)
+        f.append(mark.toJson());
+    if (!f.isEmpty())
+        o.insert(QLatin1String("findings"), f);
     // QJsonObject keeps its keys sorted: the file diffs line by line
     return QJsonDocument(o).toJson(QJsonDocument::Indented);
 }
@@ -192,6 +208,18 @@ bool fromJson(const QByteArray &data, Project *project, QString *error)
         }
         p.corrections.append(c);
     }
+    for (const QJsonValue &v : o.value(QLatin1String("findings")).toArray()) {
+        FindingMark m;
+        if (!FindingMark::fromJson(v.toObject(), &m, error))
+            return false;
+        if (p.finding(m.key)) {
+            *error = QStringLiteral("two findings have the key %1").arg(m.key);
+            return false;
+        }
+        p.findings.append(m);
+    }
+    std::sort(p.findings.begin(), p.findings.end(),
+              [](const FindingMark &a, const FindingMark &b) { return a.key < b.key; });
     *project = p;
     return true;
 }

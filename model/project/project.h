@@ -1,6 +1,7 @@
 #pragma once
 
 #include "correction.h"
+#include "findingmark.h"
 #include "launchanalyzer.h"
 #include "suggestiondecision.h"
 
@@ -15,8 +16,10 @@ namespace rosarch {
 /// them). Every target is a stable key, every path workspace-relative. It never holds a secret.
 struct Project
 {
-    /// The version this build writes; files of a newer version are refused, not guessed at.
-    static constexpr int kVersion = 1;
+    /// The newest version this build reads and writes; files of a newer version are refused,
+    /// not guessed at. A project is written as version 1 unless it uses what version 2 added
+    /// (findings), so that older builds still read it.
+    static constexpr int kVersion = 2;
 
     LaunchOptions launch;
     /// Where the workspace is, as the file says it: "" = the file's folder, else a path relative
@@ -26,15 +29,22 @@ struct Project
     /// SuggestionDecision::key.
     QList<SuggestionDecision> decisions;
     QList<Correction> corrections; ///< in the order they were made
+    /// Findings hidden or accepted (version 2), sorted by key; one mark per key.
+    QList<FindingMark> findings;
 
     bool isEmpty() const
     {
-        return launch == LaunchOptions{} && decisions.isEmpty() && corrections.isEmpty();
+        return launch == LaunchOptions{} && decisions.isEmpty() && corrections.isEmpty() &&
+               findings.isEmpty();
     }
     /// "c<n>" one past the highest correction id in the project.
     QString nextCorrectionId() const;
     /// The correction with `id`, or null.
     const Correction *correction(const QString &id) const;
+    /// The mark of the finding with `key`, or null.
+    const FindingMark *finding(const QString &key) const;
+    /// The version the file of this project needs: 2 when it marks findings, else 1.
+    int version() const { return findings.isEmpty() ? 1 : 2; }
     bool operator==(const Project &) const = default;
 };
 

@@ -1,6 +1,7 @@
 #include "appsettings.h"
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
+#include "diagnosticmodel.h"
 #include "document.h"
 #include "guifixture.h"
 #include "launchargumentsdialog.h"
@@ -169,9 +170,13 @@ private Q_SLOTS:
         // stage 2's note about the external include is in the log
         bool external = false;
         for (int r = 0; r < w.logView()->diagnosticsView()->model()->rowCount(); ++r)
-            external |=
-                w.logView()->diagnosticsView()->model()->index(r, 0).data().toString().contains(
-                    QStringLiteral("demo_nodes_cpp"));
+            external |= w.logView()
+                            ->diagnosticsView()
+                            ->model()
+                            ->index(r, DiagnosticModel::MessageColumn)
+                            .data()
+                            .toString()
+                            .contains(QStringLiteral("demo_nodes_cpp"));
         QVERIFY(external);
 
         // selecting the node instance shows its launch line and selects its class

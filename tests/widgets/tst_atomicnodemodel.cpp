@@ -494,11 +494,15 @@ private Q_SLOTS:
         const QModelIndex message = model.index(0, DiagnosticModel::MessageColumn);
         QCOMPARE(message.data().toString(),
                  QStringLiteral("The topic name of a publisher is not a literal."));
-        QCOMPARE(model.index(0, DiagnosticModel::LocationColumn).data().toString(),
+        QCOMPARE(model.index(0, DiagnosticModel::FileColumn).data().toString(),
                  QStringLiteral("src/beta_cpp/src/listener.cpp:22"));
-        QCOMPARE(model.index(0, DiagnosticModel::CodeColumn).data().toString(),
-                 QStringLiteral("unresolved-name"));
-        QVERIFY(hasOpaquePixels(imageOf(message.data(Qt::DecorationRole))));
+        QVERIFY(model.index(0, DiagnosticModel::KindColumn)
+                    .data()
+                    .toString()
+                    .startsWith(QStringLiteral("unresolved-name")));
+        const QModelIndex severity = model.index(0, DiagnosticModel::SeverityColumn);
+        QCOMPARE(severity.data().toString(), QStringLiteral("Warning"));
+        QVERIFY(hasOpaquePixels(imageOf(severity.data(Qt::DecorationRole))));
         QVERIFY(message.data(Qt::ToolTipRole).toString().contains(QStringLiteral("Warning")));
     }
 };

@@ -3,6 +3,7 @@
 // validator (scripts/fetch-sarif-schema.sh puts both in the build tree).
 #include "testsupport.h"
 
+#include <QCryptographicHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -113,6 +114,66 @@ private Q_SLOTS:
                         QStringLiteral("--fail-on"), QStringLiteral("warning"),
                         QStringLiteral("--baseline"), baseline});
         QCOMPARE(r.exitCode, 1);
+    }
+
+    void acceptedFindingsAndPerSystemKeysAreKnown()
+    {
+        // check_roots: the planner's unpublished /map is one finding seen in two systems.
+        QTemporaryDir dir;
+        const QString ws = workspace(QStringLiteral("check_roots/ws"));
+        const QString report = dir.filePath(QStringLiteral("report.json"));
+        Run r = runRosarch({QStringLiteral("check"), ws, QStringLiteral("--no-decisions"),
+                            QStringLiteral("--fail-on"), QStringLiteral("warning"),
+                            QStringLiteral("--format"), QStringLiteral("json"),
+                            QStringLiteral("--output"), report});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QLatin1String("4 findings; 0 in the baseline; 3 fail")),
+                 qPrintable(r.err));
+        const QJsonArray findings = QJsonDocument::fromJson(rosarch::test::readFile(report))
+                                        .object()[QLatin1String("findings")]
+                                        .toArray();
+        QJsonArray accepted;
+        for (const QJsonValue &f : findings) {
+            const QJsonObject o = f.toObject();
+            if (o[QLatin1String("message")].toString().startsWith(QLatin1String("/planner")))
+                QCOMPARE(o[QLatin1String("contexts")].toArray().size(), 2);
+            if (o[QLatin1String("severity")].toString() == QLatin1String("warning"))
+                accepted.append(QJsonObject{{QStringLiteral("key"), o[QLatin1String("key")]},
+                                            {QStringLiteral("status"), QStringLiteral("accepted")},
+                                            {QStringLiteral("reason"), QStringLiteral("a bag")}});
+        }
+        QCOMPARE(accepted.size(), 3);
+        // Accepted in the project: known, reported, never failing.
+        const QString project = dir.filePath(QStringLiteral("rosarch.project.json"));
+        rosarch::test::writeFile(project,
+                                 QJsonDocument(QJsonObject{{QStringLiteral("version"), 2},
+                                                           {QStringLiteral("workspace"), ws},
+                                                           {QStringLiteral("findings"), accepted}})
+                                     .toJson());
+        r = runRosarch({QStringLiteral("check"), ws, QStringLiteral("--project"), project,
+                        QStringLiteral("--fail-on"), QStringLiteral("warning")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QLatin1String("3 in the baseline; 0 fail the check")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QLatin1String("seen in 2 systems")));
+        // A baseline written before the merge names the finding by one system's key.
+        const QString code = QStringLiteral("topic-unpublished");
+        const QString old =
+            code + QStringLiteral(":") +
+            QString::fromLatin1(
+                QCryptographicHash::hash(
+                    (code + QStringLiteral("\nsrc/rover/rover/planner.py\n/planner "
+                                           "subscribes to /map, which no node started by "
+                                           "src/rover/launch/sim.launch.py publishes."))
+                        .toUtf8(),
+                    QCryptographicHash::Sha1)
+                    .toHex()
+                    .left(16));
+        const QString baseline = dir.filePath(QStringLiteral("old-baseline.txt"));
+        rosarch::test::writeFile(baseline, old.toUtf8() + '\n');
+        r = runRosarch({QStringLiteral("check"), ws, QStringLiteral("--no-decisions"),
+                        QStringLiteral("--baseline"), baseline});
+        QVERIFY2(r.out.contains(QLatin1String("1 in the baseline")), qPrintable(r.out));
     }
 
     void jsonAndJunit()

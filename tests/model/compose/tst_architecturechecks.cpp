@@ -220,6 +220,51 @@ private Q_SLOTS:
         QCOMPARE(keys.size(), m_diagnostics.size());
     }
 
+    void oneFindingPerSystemWithItsContexts()
+    {
+        // rover's planner is started by sim and field (both with the odometry) and, under the
+        // namespace robot1, by fleet: its unpublished /map is one finding seen in two systems
+        // (the same node, the same name), and another one in the third (another name).
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("check_roots/ws")));
+        QStringList found;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            found << QStringLiteral("%1 | %2 | %3")
+                         .arg(d.code, d.message, d.contexts.join(QLatin1Char(',')));
+        found.sort();
+        const QString launch = QStringLiteral("src/rover/launch/");
+        QCOMPARE(
+            found,
+            (QStringList{
+                QStringLiteral("topic-unheard | /odometry publishes /odom_debug, which no node "
+                               "started alongside it subscribes to. | %1field.launch.py,%1sim."
+                               "launch.py")
+                    .arg(launch),
+                QStringLiteral("topic-unpublished | /planner subscribes to /map, which no "
+                               "node started alongside it publishes. | %1field.launch.py,%1sim."
+                               "launch.py")
+                    .arg(launch),
+                QStringLiteral("topic-unpublished | /robot1/planner subscribes to /robot1/map, "
+                               "which no node started alongside it publishes. | "
+                               "%1fleet.launch.py")
+                    .arg(launch),
+                QStringLiteral("topic-unpublished | /robot1/planner subscribes to "
+                               "/robot1/odom, which no node started alongside it publishes. "
+                               "| %1fleet.launch.py")
+                    .arg(launch)}));
+        // Each system's own wording stays an alias key: baselines written before still match.
+        for (const Diagnostic &d : r.architecture.diagnostics) {
+            QCOMPARE(d.aliases.size(), d.contexts.size());
+            for (qsizetype i = 0; i < d.contexts.size(); ++i) {
+                Diagnostic old = d;
+                old.message.replace(QStringLiteral("started alongside it"),
+                                    QStringLiteral("started by ") + d.contexts.at(i));
+                QCOMPARE(d.aliases.at(i), old.key());
+                QVERIFY(old.key() != d.key());
+                QVERIFY(d.isIn(QSet<QString>{old.key()}));
+            }
+        }
+    }
+
 private:
     Recovery m_recovery;
     QList<Diagnostic> m_diagnostics;
