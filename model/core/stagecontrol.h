@@ -10,6 +10,8 @@
 
 namespace rosarch {
 
+class AnalysisCache;
+
 /// Lets a caller watch and cancel a stage without the stage knowing about threads or UI.
 struct StageControl
 {
@@ -22,6 +24,9 @@ struct StageControl
     /// Files not to analyse, with the reason: an earlier attempt crashed or ran out of its
     /// budget in them. Each skip becomes a `file-skipped` diagnostic.
     QHash<QString, QString> skipped;
+    /// The per-file analysis cache to use; null = AnalysisCache::shared() (off with
+    /// ROSARCH_NO_CACHE=1).
+    AnalysisCache *cache = nullptr;
 
     bool isCanceled() const { return canceled && canceled(); }
     void report(int done, int total, const QString &what) const
