@@ -5,11 +5,14 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
+#include <QTemporaryFile>
 #include <QtEndian>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace rosarch {
@@ -123,10 +126,20 @@ void AnalysisCache::store(const QString &kind, const QByteArray &key, const QByt
     }
     QByteArray bytes = header(key) + payload;
     bytes += checksum(bytes);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+    // A temporary file renamed over the entry: readers see the old entry or the whole new one.
+    // Not synced to disk (QSaveFile would, thousands of times in a cold run): an entry a crash
+    // leaves incomplete fails its checksum and is analysed again.
+    QTemporaryFile file(path + QStringLiteral(".XXXXXX"));
+    file.setAutoRemove(false);
+    const bool written = file.open() && file.write(bytes) == bytes.size() && file.flush();
+    const QString temporary = file.fileName();
+    const QString error = file.errorString();
+    file.close();
+    if (!written || std::rename(QFile::encodeName(temporary).constData(),
+                                QFile::encodeName(path).constData()) != 0) {
+        QFile::remove(temporary);
         fail(QStringLiteral("An entry of the analysis cache could not be written to %1 (%2)")
-                 .arg(path, file.errorString()));
+                 .arg(path, written ? QString::fromLocal8Bit(std::strerror(errno)) : error));
         return;
     }
     ++m_stores;

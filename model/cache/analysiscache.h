@@ -16,7 +16,8 @@ namespace rosarch {
 /// Per-file analysis results on disk, keyed by a hash of everything a result depends on (the
 /// file's content, its path, its package, ...; see key()). Lives in the user's cache folder
 /// (`<cache>/rosarch/analysis/<version>-f<format>/<kind>/<xx>/<key>`), one file per entry.
-/// - an entry is written atomically (QSaveFile) and carries a checksum: a truncated, damaged
+/// - an entry is written atomically (a temporary file renamed) and carries a checksum: a truncated,
+/// damaged
 ///   or foreign entry is a miss and is analysed again;
 /// - a folder that cannot be created or written, or a full disk, turns the cache off for the
 ///   rest of the run, with one `cache-unavailable` diagnostic (takeProblem());
