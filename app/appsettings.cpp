@@ -31,6 +31,7 @@ const QString kLlmTemperature = QStringLiteral("llm/temperature");
 const QString kLlmConnectTimeout = QStringLiteral("llm/connectTimeoutMs");
 const QString kLlmRequestTimeout = QStringLiteral("llm/requestTimeoutMs");
 const QString kLlmUse = QStringLiteral("llm/use");
+const QString kWatchWorkspace = QStringLiteral("workspace/watch");
 
 QString normalized(const QString &path)
 {
@@ -243,6 +244,16 @@ bool AppSettings::useLlm() const
 void AppSettings::setUseLlm(bool use)
 {
     m_settings->setValue(kLlmUse, use);
+}
+
+bool AppSettings::watchWorkspace() const
+{
+    return m_settings->value(kWatchWorkspace, true).toBool();
+}
+
+void AppSettings::setWatchWorkspace(bool watch)
+{
+    m_settings->setValue(kWatchWorkspace, watch);
 }
 
 QString AppSettings::plantUmlJar() const

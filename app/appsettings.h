@@ -72,6 +72,9 @@ public:
     /// Whether suggestion runs ask the LLM (off until a person turns it on).
     bool useLlm() const;
     void setUseLlm(bool use);
+    /// Whether the open workspace is watched and re-run on changes (default on).
+    bool watchWorkspace() const;
+    void setWatchWorkspace(bool watch);
 
 private:
     std::unique_ptr<QSettings> m_settings;

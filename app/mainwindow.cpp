@@ -27,6 +27,7 @@
 #include "suggestionpanel.h"
 #include "talkerspanel.h"
 #include "traceability.h"
+#include "workspacewatcher.h"
 
 #include <Qsci/qsciscintilla.h>
 
@@ -66,6 +67,19 @@ MainWindow::MainWindow(QWidget *parent)
 
     createPanels();
     m_stages = new StageController(m_document, m_runner, m_traceability, m_logView, this);
+    m_watcher = new WorkspaceWatcher(this);
+    m_watcher->setEnabled(AppSettings().watchWorkspace());
+    connect(m_watcher, &WorkspaceWatcher::rerunRequested, this,
+            [this](WorkspaceWatcher::Rerun rerun, const QStringList &files) {
+                statusBar()->showMessage(tr("%n file(s) changed on disk (%1); analysing again",
+                                            nullptr, int(files.size()))
+                                             .arg(files.mid(0, 3).join(QLatin1String(", "))),
+                                         5000);
+                if (rerun == WorkspaceWatcher::Rerun::Launch)
+                    m_stages->runLaunch();
+                else
+                    m_stages->runAll();
+            });
     createActions();
     createMenus();
     createStatusBar();
@@ -368,6 +382,7 @@ void MainWindow::openWorkspaceNow(const QString &root)
     if (another && !workspace().isEmpty())
         saveSession();
     m_stages->setWorkspace(root);
+    m_watcher->setWorkspace(root);
     AppSettings settings;
     settings.addRecentWorkspace(root);
     settings.setLastWorkspace(root);

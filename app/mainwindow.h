@@ -33,6 +33,7 @@ class LogView;
 class ProjectController;
 class SourceView;
 class StageController;
+class WorkspaceWatcher;
 class StageRunner;
 class SuggestionController;
 class SuggestionModel;
@@ -182,6 +183,8 @@ private:
     QAction *m_cancelAction = nullptr;
     QAction *m_suggestAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
+    QAction *m_watchAction = nullptr;
+    WorkspaceWatcher *m_watcher = nullptr;
     QAction *m_aboutAction = nullptr;
     QAction *m_aboutQtAction = nullptr;
     QMenu *m_recentMenu = nullptr;

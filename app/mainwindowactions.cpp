@@ -1,5 +1,6 @@
 // MainWindow's actions, menus and toolbar (the rest of the class is in mainwindow.cpp).
 #include "aboutdialog.h"
+#include "appsettings.h"
 #include "atomicnodepanel.h"
 #include "comparecontroller.h"
 #include "diagramcontroller.h"
@@ -12,6 +13,7 @@
 #include "rendercontroller.h"
 #include "stagerunner.h"
 #include "suggestioncontroller.h"
+#include "workspacewatcher.h"
 
 #include <QAction>
 #include <QApplication>
@@ -123,6 +125,15 @@ void MainWindow::createActions()
     connect(m_suggestions, &SuggestionController::runningChanged, m_suggestAction,
             [this](bool running) { m_suggestAction->setEnabled(!running); });
 
+    m_watchAction = new QAction(tr("&Watch Workspace for Changes"), this);
+    m_watchAction->setCheckable(true);
+    m_watchAction->setChecked(m_watcher->isEnabled());
+    m_watchAction->setToolTip(tr("Analyse again when a source, build, launch or parameter file "
+                                 "of the workspace changes on disk"));
+    connect(m_watchAction, &QAction::toggled, this, [this](bool on) {
+        AppSettings().setWatchWorkspace(on);
+        m_watcher->setEnabled(on);
+    });
     m_resetLayoutAction = new QAction(tr("&Reset Layout"), this);
     connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
 
@@ -196,6 +207,7 @@ void MainWindow::createMenus()
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
     view->addSeparator();
+    view->addAction(m_watchAction);
     view->addAction(m_resetLayoutAction);
 
     createCorrectionMenu();

@@ -37,6 +37,7 @@ QString usageText()
         "<file>]\n"
         "                  [--no-decisions | --project <file>] [--render svg|png "
         "[--plantuml-jar <file>]]\n"
+        "                  [--in-process] [--no-cache]\n"
         "                                            run the stages headless and write the "
         "artifacts, with\n"
         "                                            the project applied (default: the "
@@ -76,6 +77,9 @@ QString usageText()
         "to each .puml with --render)\n"
         "recover and check run the stages in the analysis worker (rosarch-stages), which skips\n"
         "a file that crashes it or overruns its budget; --in-process runs them in the command.\n"
+        "Per-file results are kept in the analysis cache (the user's cache folder, "
+        "rosarch/analysis);\n"
+        "--no-cache (or ROSARCH_NO_CACHE=1) analyses every file again.\n"
         "Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.\n");
 }
 

@@ -14,6 +14,7 @@ void WorkspaceRun::addOptions(QCommandLineParser &parser) const
     parser.addOption(m_noDecisionsOption);
     parser.addOption(m_projectOption);
     parser.addOption(m_inProcessOption);
+    parser.addOption(m_noCacheOption);
 }
 
 bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command, QString *error)
@@ -32,6 +33,8 @@ bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command
         return false;
     }
     m_inProcess = parser.isSet(m_inProcessOption);
+    if (parser.isSet(m_noCacheOption)) // read by this process's cache and the worker's
+        qputenv("ROSARCH_NO_CACHE", "1");
     m_launch = {};
     m_launch.rootFile = parser.value(m_rootOption);
     for (const QString &arg : parser.values(m_argOption)) {

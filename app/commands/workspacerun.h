@@ -63,6 +63,10 @@ private:
         QStringLiteral("Run the stages in this process instead of the analysis worker "
                        "(rosarch-stages): faster to debug, but a crash in analysis ends the "
                        "command and the per-file time and memory budgets do not apply.")};
+    QCommandLineOption m_noCacheOption{
+        QStringLiteral("no-cache"),
+        QStringLiteral("Analyse every file again, without reading or writing the analysis cache "
+                       "(as ROSARCH_NO_CACHE=1 does).")};
     QString m_workspace;
     LaunchOptions m_launch;
     bool m_inProcess = false;

@@ -10,6 +10,8 @@
 
 namespace rosarch {
 
+class AnalysisCache;
+
 /// Lets a caller watch and cancel a stage without the stage knowing about threads or UI.
 struct StageControl
 {
@@ -27,6 +29,9 @@ struct StageControl
     std::function<void(int stage, int done, int total, const QString &what)> stageProgressed;
     /// Stage `stage` finished after `ms` milliseconds.
     std::function<void(int stage, qint64 ms)> stageTimed;
+    /// The per-file analysis cache to use; null = AnalysisCache::shared() (off with
+    /// ROSARCH_NO_CACHE=1).
+    AnalysisCache *cache = nullptr;
 
     bool isCanceled() const { return canceled && canceled(); }
     void report(int done, int total, const QString &what) const

@@ -1,5 +1,7 @@
 #include "launchanalyzer.h"
+#include "analysiscache.h"
 #include "launchexecutor.h"
+#include "launchfileindex.h"
 #include "pythonlaunchreader.h"
 #include "rosnames.h"
 #include "sourcereader.h"
@@ -15,67 +17,6 @@
 namespace rosarch {
 
 namespace {
-
-/// Finds launch files by content and reads each once.
-class LaunchFileIndex
-{
-public:
-    LaunchFileIndex(const Workspace &ws, const StageControl &control,
-                    QList<Diagnostic> *diagnostics)
-    {
-        const SourceReader reader(ws.root);
-        int done = 0;
-        for (const SourceFile &f : ws.files) {
-            ++done;
-            if (control.isCanceled())
-                return;
-            const bool candidate = f.language == SourceFile::Language::Python ||
-                                   f.language == SourceFile::Language::Xml ||
-                                   f.language == SourceFile::Language::Yaml;
-            if (!candidate)
-                continue;
-            const FileWork work(control, f.path);
-            QByteArray content;
-            QList<Diagnostic> readProblems; // already reported by the node analyzers for .py
-            if (work.skip(&readProblems) || !reader.read(f.path, &content, &readProblems)) {
-                if (f.language != SourceFile::Language::Python)
-                    diagnostics->append(readProblems);
-                continue;
-            }
-            std::optional<LaunchFileDescription> read = LaunchAnalyzer::read(f, content);
-            if (!read)
-                continue;
-            if (f.language != SourceFile::Language::Python)
-                diagnostics->append(readProblems); // how it was read (an encoding note)
-            LaunchFileDescription &d = *read;
-            control.report(done, int(ws.files.size()), f.path);
-            if (f.language !=
-                SourceFile::Language::Python) // Python syntax errors come from stage 1
-                diagnostics->append(d.diagnostics);
-            else
-                for (const Diagnostic &diag : d.diagnostics)
-                    if (diag.code != QLatin1String("syntax-error"))
-                        diagnostics->append(diag);
-            m_files.emplace(f.path, std::move(d));
-        }
-    }
-
-    const LaunchFileDescription *find(const QString &file) const
-    {
-        const auto it = m_files.find(file);
-        return it == m_files.end() ? nullptr : &it->second;
-    }
-    QStringList files() const
-    {
-        QStringList out;
-        for (const auto &[file, d] : m_files)
-            out.append(file);
-        return out; // std::map keeps them sorted
-    }
-
-private:
-    std::map<QString, LaunchFileDescription> m_files;
-};
 
 /// Each launch file of the system analysed on its own, with its declared defaults, in the
 /// classifier scope: what its CCD shows (blueprint §1). What these runs find was found by the
@@ -127,6 +68,10 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         out.canceled = true;
         return out;
     }
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    if (const std::optional<Diagnostic> problem = cache.takeProblem())
+        out.diagnostics.append(*problem);
+    cache.trim();
     out.launchFiles = index.files();
     LaunchExecutor executor(
         workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);

@@ -1,4 +1,5 @@
 #include "nodeanalyzer.h"
+#include "analysiscache.h"
 #include "cppnodeanalyzer.h"
 #include "pythonnodeanalyzer.h"
 #include "workspacescanner.h"
@@ -203,6 +204,10 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
         list.canceled = true;
         return list;
     }
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    if (const std::optional<Diagnostic> problem = cache.takeProblem())
+        list.diagnostics.append(*problem);
+    cache.trim();
 
     Linker linker(workspace, &list.nodes, entryPoints, &list.diagnostics);
     for (const ComponentRegistration &r : std::as_const(registrations))

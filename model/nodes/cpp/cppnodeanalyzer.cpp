@@ -1,6 +1,8 @@
 #include "cppnodeanalyzer.h"
 
+#include "analysiscache.h"
 #include "cpperrorrecovery.h"
+#include "cppfactscodec.h"
 #include "cppfileextractor.h"
 #include "cppmacroindex.h"
 #include "cppnodelinker.h"
@@ -44,6 +46,7 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
     const CppMacroIndex macroIndex(m_workspace, reader, control);
     if (control.isCanceled())
         return {};
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     const int total = int(sources.size());
     int done = 0;
     QMutex reportMutex;
@@ -60,14 +63,24 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                 CppPreprocessor::Result preprocessed = CppPreprocessor::run(
                     &bytes, file->path, macroIndex.initialMacros(file->package),
                     macroIndex.lookup(file->path));
-                cppsyntax::blankExportMacros(&bytes);
-                cppsyntax::blankQtKeywords(&bytes);
-                cppsyntax::blankGrammarGaps(&bytes);
-                QList<Diagnostic> isolated;
-                const SyntaxTree tree =
-                    CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
-                facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
-                facts.diagnostics = preprocessed.diagnostics + isolated + facts.diagnostics;
+                // The facts depend on the text the preprocessor leaves and the macros in
+                // effect at its end, so those (and where the file is) are the key.
+                const QByteArray key =
+                    AnalysisCache::key({"cpp", file->path.toUtf8(), file->package.toUtf8(), bytes,
+                                        CppFactsCodec::digest(preprocessed.macros)});
+                const std::optional<QByteArray> cached = cache.load(QStringLiteral("cpp"), key);
+                if (!cached || !CppFactsCodec::decode(*cached, &facts)) {
+                    cppsyntax::blankExportMacros(&bytes);
+                    cppsyntax::blankQtKeywords(&bytes);
+                    cppsyntax::blankGrammarGaps(&bytes);
+                    QList<Diagnostic> isolated;
+                    const SyntaxTree tree =
+                        CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
+                    facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
+                    facts.diagnostics = isolated + facts.diagnostics;
+                    cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
+                }
+                facts.diagnostics = preprocessed.diagnostics + facts.diagnostics;
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();
                 facts.path = file->path;

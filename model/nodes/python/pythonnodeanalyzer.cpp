@@ -1,12 +1,16 @@
 #include "pythonnodeanalyzer.h"
 
+#include "analysiscache.h"
 #include "pythonerrorrecovery.h"
+#include "pythonfactscodec.h"
 #include "pythonmodulereader.h"
 #include "pythonnodelinker.h"
 #include "sourcereader.h"
 #include "syntaxtree.h"
 
+#include <QMutex>
 #include <QSet>
+#include <QtConcurrent/QtConcurrentMap>
 
 namespace rosarch {
 
@@ -52,39 +56,75 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         pythonFiles.insert(f.path);
     }
 
+    // Each file on its own, in parallel; the results keep the files' order.
     const SourceReader reader(m_workspace.root);
-    QList<PythonModuleFacts> modules;
-    modules.reserve(files.size());
-    for (int i = 0; i < files.size(); ++i) {
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const int total = int(files.size());
+    int done = 0;
+    QMutex reportMutex;
+    auto analyzeFile = [&](const SourceFile *file) {
+        PythonFileResult r;
         if (control.isCanceled())
-            return result;
-        const SourceFile &file = *files.at(i);
-        control.report(i, int(files.size()), file.path);
-        const FileWork work(control, file.path);
-        QByteArray content;
-        if (work.skip(&result.diagnostics) ||
-            !reader.read(file.path, &content, &result.diagnostics))
-            continue;
-        SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file.path);
-        if (!ts::isNull(tree.root()) && ts_node_has_error(tree.root())) {
-            QList<Diagnostic> isolated;
-            const QByteArray repaired = PythonErrorRecovery::isolate(content, file.path, &isolated);
-            if (!isolated.isEmpty()) {
-                result.diagnostics.append(isolated);
-                tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, repaired, file.path);
-            }
+            return r;
+        {
+            QMutexLocker lock(&reportMutex);
+            control.report(done++, total, file->path);
         }
-        result.diagnostics.append(tree.syntaxErrors());
-        if (ts::isNull(tree.root()))
-            continue;
-        const RosPackage *package = m_workspace.package(file.package);
+        const FileWork work(control, file->path);
+        QByteArray content;
+        if (work.skip(&r.diagnostics) || !reader.read(file->path, &content, &r.diagnostics))
+            return r;
+        const RosPackage *package = m_workspace.package(file->package);
         const QString module =
-            modulePath(file.path, package ? package->path : QString(), pythonFiles);
-        modules.append(PythonModuleReader(tree, module).read(file.package));
+            modulePath(file->path, package ? package->path : QString(), pythonFiles);
+        const QByteArray key = AnalysisCache::key(
+            {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), content});
+        PythonFileResult analysed;
+        if (const std::optional<QByteArray> cached = cache.load(QStringLiteral("python"), key);
+            cached && PythonFactsCodec::decode(*cached, &analysed)) {
+            r.module = std::move(analysed.module);
+            r.diagnostics += analysed.diagnostics;
+            return r;
+        }
+        analysed = analyzeContent(content, file->path, file->package, module);
+        cache.store(QStringLiteral("python"), key, PythonFactsCodec::encode(analysed));
+        r.module = std::move(analysed.module);
+        r.diagnostics += analysed.diagnostics;
+        return r;
+    };
+    const QList<PythonFileResult> analysed = QtConcurrent::blockingMapped<QList<PythonFileResult>>(
+        files, std::function<PythonFileResult(const SourceFile *)>(analyzeFile));
+    if (control.isCanceled())
+        return result;
+    control.report(total, total, QString());
+    QList<PythonModuleFacts> modules;
+    modules.reserve(analysed.size());
+    for (const PythonFileResult &r : analysed) {
+        result.diagnostics.append(r.diagnostics);
+        if (r.module)
+            modules.append(*r.module);
     }
-    control.report(int(files.size()), int(files.size()), QString());
     PythonNodeLinker(modules).link(&result);
     return result;
+}
+
+PythonFileResult PythonNodeAnalyzer::analyzeContent(const QByteArray &content, const QString &file,
+                                                    const QString &package, const QString &module)
+{
+    PythonFileResult r;
+    SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    if (!ts::isNull(tree.root()) && ts_node_has_error(tree.root())) {
+        QList<Diagnostic> isolated;
+        const QByteArray repaired = PythonErrorRecovery::isolate(content, file, &isolated);
+        if (!isolated.isEmpty()) {
+            r.diagnostics.append(isolated);
+            tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, repaired, file);
+        }
+    }
+    r.diagnostics.append(tree.syntaxErrors());
+    if (!ts::isNull(tree.root()))
+        r.module = PythonModuleReader(tree, module).read(package);
+    return r;
 }
 
 } // namespace rosarch

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "languageanalysis.h"
+#include "pythonfactscodec.h"
 #include "stagecontrol.h"
 #include "workspace.h"
 
@@ -14,6 +15,10 @@ public:
 
     /// Analyses every Python file of the workspace.
     LanguageAnalysis analyze(const StageControl &control = {}) const;
+
+    /// Parses one file's `content` and reads its module facts (`module` is its dotted path).
+    static PythonFileResult analyzeContent(const QByteArray &content, const QString &file,
+                                           const QString &package, const QString &module);
 
 private:
     const Workspace &m_workspace;

@@ -6,6 +6,8 @@
 
 #include <QtTest>
 
+#include <atomic>
+
 using namespace rosarch;
 using namespace rosarch::test::python;
 using rosarch::test::dataDir;
@@ -431,13 +433,16 @@ private Q_SLOTS:
         PythonNodeAnalyzer(ws).analyze(control);
         QCOMPARE(done, (QList<int>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
 
-        int polls = 0;
+        // Files are analysed in parallel: each polls once before it starts, and the result is
+        // dropped once the run is canceled.
+        std::atomic<int> polls = 0;
         control.progressed = {};
         control.canceled = [&] { return ++polls > 2; };
         const LanguageAnalysis canceled = PythonNodeAnalyzer(ws).analyze(control);
         QVERIFY(canceled.nodes.isEmpty());
         QVERIFY(canceled.entryPoints.isEmpty());
-        QCOMPARE(polls, 3);
+        QVERIFY(canceled.diagnostics.isEmpty());
+        QVERIFY2(polls > 2 && polls <= pythonFiles + 1, qPrintable(QString::number(polls)));
     }
 
     void deterministic()

@@ -1,0 +1,195 @@
+#include "workspacewatcher.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QFileSystemWatcher>
+
+namespace rosarch {
+
+namespace {
+
+bool isSkippedFolder(const QString &name)
+{
+    // As the workspace scanner: build output, hidden folders and caches are not read.
+    return name.startsWith(QLatin1Char('.')) || name == QLatin1String("build") ||
+           name == QLatin1String("install") || name == QLatin1String("log") ||
+           name == QLatin1String("node_modules") || name == QLatin1String("__pycache__");
+}
+
+bool isLaunchName(const QString &name)
+{
+    return name.endsWith(QLatin1String(".launch.py")) ||
+           name.endsWith(QLatin1String("_launch.py")) ||
+           name.endsWith(QLatin1String(".launch.xml")) ||
+           name.endsWith(QLatin1String(".launch.yaml")) || name.endsWith(QLatin1String(".launch"));
+}
+
+} // namespace
+
+WorkspaceWatcher::WorkspaceWatcher(QObject *parent) : QObject(parent)
+{
+    m_debounce.setSingleShot(true);
+    m_debounce.setInterval(kDebounceMs);
+    connect(&m_debounce, &QTimer::timeout, this, &WorkspaceWatcher::settle);
+}
+
+std::optional<WorkspaceWatcher::Rerun> WorkspaceWatcher::rerunFor(const QString &relativePath)
+{
+    const QStringList parts = relativePath.split(QLatin1Char('/'), Qt::SkipEmptyParts);
+    if (parts.isEmpty())
+        return std::nullopt;
+    for (qsizetype i = 0; i + 1 < parts.size(); ++i)
+        if (isSkippedFolder(parts.at(i)))
+            return std::nullopt;
+    const QString &name = parts.last();
+    // The tool's own files: the project, its autosave and anything else it keeps there.
+    if (name == QLatin1String("rosarch.project.json") || name.startsWith(QLatin1String(".rosarch")))
+        return std::nullopt;
+    if (name == QLatin1String("package.xml") || name == QLatin1String("setup.py") ||
+        name == QLatin1String("setup.cfg") || name == QLatin1String("CMakeLists.txt"))
+        return Rerun::All;
+    const QString suffix = QFileInfo(name).suffix().toLower();
+    if (isLaunchName(name) || suffix == QLatin1String("xml") || suffix == QLatin1String("yaml") ||
+        suffix == QLatin1String("yml"))
+        return Rerun::Launch;
+    static const QSet<QString> sources{
+        QStringLiteral("py"),  QStringLiteral("cpp"), QStringLiteral("cc"),
+        QStringLiteral("cxx"), QStringLiteral("hpp"), QStringLiteral("h"),
+        QStringLiteral("hh"),  QStringLiteral("hxx"), QStringLiteral("ipp")};
+    if (sources.contains(suffix))
+        return Rerun::All;
+    return std::nullopt;
+}
+
+void WorkspaceWatcher::setWorkspace(const QString &root)
+{
+    m_root = root.isEmpty() ? QString() : QFileInfo(root).absoluteFilePath();
+    rebuild();
+}
+
+void WorkspaceWatcher::setEnabled(bool enabled)
+{
+    if (enabled == m_enabled)
+        return;
+    m_enabled = enabled;
+    rebuild();
+}
+
+QHash<QString, qint64> WorkspaceWatcher::listing(const QString &folder) const
+{
+    QHash<QString, qint64> out;
+    const QFileInfoList entries = QDir(folder).entryInfoList(QDir::Files | QDir::Hidden);
+    for (const QFileInfo &e : entries)
+        if (rerunFor(QDir(m_root).relativeFilePath(e.absoluteFilePath())))
+            out.insert(e.fileName(), e.lastModified().toMSecsSinceEpoch());
+    return out;
+}
+
+void WorkspaceWatcher::watchFolder(const QString &folder, QStringList *files,
+                                   QStringList *folders) const
+{
+    folders->append(folder);
+    const QFileInfoList entries = QDir(folder).entryInfoList(
+        QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden, QDir::Name);
+    for (const QFileInfo &e : entries) {
+        if (e.isDir()) {
+            if (!e.isSymLink() && !isSkippedFolder(e.fileName()) &&
+                folders->size() + files->size() < kMaxWatchedPaths * 4)
+                watchFolder(e.absoluteFilePath(), files, folders);
+        } else if (rerunFor(QDir(m_root).relativeFilePath(e.absoluteFilePath()))) {
+            files->append(e.absoluteFilePath());
+        }
+    }
+}
+
+void WorkspaceWatcher::rebuild()
+{
+    delete m_watcher;
+    m_watcher = nullptr;
+    m_listings.clear();
+    m_changed.clear();
+    m_debounce.stop();
+    if (!m_enabled || m_root.isEmpty() || !QFileInfo(m_root).isDir())
+        return;
+    QStringList files, folders;
+    watchFolder(m_root, &files, &folders);
+    m_watcher = new QFileSystemWatcher(this);
+    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &WorkspaceWatcher::onFileChanged);
+    connect(m_watcher, &QFileSystemWatcher::directoryChanged, this,
+            &WorkspaceWatcher::onFolderChanged);
+    if (folders.size() > kMaxWatchedPaths)
+        folders = folders.mid(0, kMaxWatchedPaths); // the outer folders, found first
+    m_watchesFiles = folders.size() + files.size() <= kMaxWatchedPaths;
+    m_watcher->addPaths(folders);
+    if (m_watchesFiles && !files.isEmpty())
+        m_watcher->addPaths(files);
+    for (const QString &folder : std::as_const(folders))
+        m_listings.insert(folder, listing(folder));
+}
+
+void WorkspaceWatcher::note(const QString &absolutePath)
+{
+    const QString relative = QDir(m_root).relativeFilePath(absolutePath);
+    if (!rerunFor(relative))
+        return;
+    m_changed.insert(relative);
+    m_debounce.start(); // again: a burst of saves is one re-run
+}
+
+void WorkspaceWatcher::onFileChanged(const QString &path)
+{
+    note(path);
+    // A file replaced by a rename (as many editors save) is no longer watched: watch it again.
+    if (m_watcher && m_watchesFiles && QFileInfo::exists(path) &&
+        !m_watcher->files().contains(path))
+        m_watcher->addPath(path);
+}
+
+void WorkspaceWatcher::onFolderChanged(const QString &path)
+{
+    // What changed in the folder: files added, removed, or replaced with a new time.
+    const QHash<QString, qint64> before = m_listings.value(path);
+    const QHash<QString, qint64> after = listing(path);
+    for (auto it = after.cbegin(); it != after.cend(); ++it) {
+        if (before.value(it.key(), -1) != it.value()) {
+            const QString file = QDir(path).filePath(it.key());
+            note(file);
+            if (m_watcher && m_watchesFiles && !m_watcher->files().contains(file))
+                m_watcher->addPath(file);
+        }
+    }
+    for (auto it = before.cbegin(); it != before.cend(); ++it)
+        if (!after.contains(it.key()))
+            note(QDir(path).filePath(it.key()));
+    m_listings.insert(path, after);
+    // A new sub-folder (a new package, say) is watched too.
+    const QFileInfoList subfolders =
+        QDir(path).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot | QDir::Hidden);
+    for (const QFileInfo &d : subfolders) {
+        if (!m_watcher || isSkippedFolder(d.fileName()) ||
+            m_listings.contains(d.absoluteFilePath()) ||
+            m_watcher->directories().size() >= kMaxWatchedPaths)
+            continue;
+        m_watcher->addPath(d.absoluteFilePath());
+        m_listings.insert(d.absoluteFilePath(), listing(d.absoluteFilePath()));
+        for (const QString &name : m_listings.value(d.absoluteFilePath()).keys())
+            note(QDir(d.absoluteFilePath()).filePath(name));
+    }
+}
+
+void WorkspaceWatcher::settle()
+{
+    if (m_changed.isEmpty())
+        return;
+    QStringList files(m_changed.cbegin(), m_changed.cend());
+    files.sort();
+    m_changed.clear();
+    Rerun rerun = Rerun::Launch;
+    for (const QString &f : std::as_const(files))
+        if (rerunFor(f) == Rerun::All)
+            rerun = Rerun::All;
+    Q_EMIT rerunRequested(rerun, files);
+}
+
+} // namespace rosarch

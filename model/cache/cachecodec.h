@@ -1,0 +1,235 @@
+#pragma once
+
+#include "diagnostic.h"
+#include "evidence.h"
+#include "languageanalysis.h"
+#include "launchaction.h"
+#include "port.h"
+#include "substitution.h"
+
+#include <QByteArray>
+#include <QDataStream>
+#include <QHash>
+#include <QIODevice>
+#include <QList>
+#include <QMap>
+#include <QString>
+
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+// The binary form of per-file analysis results in the analysis cache. One field list per type
+// (`cacheFields`), used both ways by `io`. A module adds the types it caches by defining
+// `cacheFields(Tag, T &, F)` overloads in this namespace before it calls encode()/decode().
+// Changing any field list of a cached type means bumping AnalysisCache::kFormatVersion.
+
+namespace rosarch::cachecodec {
+
+/// Brings this namespace into argument-dependent lookup of `cacheFields`.
+struct Tag
+{
+};
+
+struct Writer
+{
+    static constexpr bool reading = false;
+    QDataStream &s;
+};
+
+struct Reader
+{
+    static constexpr bool reading = true;
+    QDataStream &s;
+};
+
+/// Refuses sizes no honest entry has, so that a damaged entry cannot ask for gigabytes.
+constexpr quint32 kMaxElements = 1u << 22;
+
+template <class A, class T> void io(A &a, T &v);
+template <class A, class T> void io(A &a, QList<T> &v);
+template <class A, class T> void io(A &a, std::vector<T> &v);
+template <class A, class K, class V> void io(A &a, QHash<K, V> &v);
+template <class A, class K, class V> void io(A &a, QMap<K, V> &v);
+template <class A, class X, class Y> void io(A &a, std::pair<X, Y> &v);
+template <class A, class T> void io(A &a, std::optional<T> &v);
+
+template <class A> bool size(A &a, quint32 *n)
+{
+    if constexpr (A::reading) {
+        a.s >> *n;
+        if (a.s.status() != QDataStream::Ok || *n > kMaxElements) {
+            a.s.setStatus(QDataStream::ReadCorruptData);
+            return false;
+        }
+    } else {
+        a.s << *n;
+    }
+    return true;
+}
+
+template <class A, class T> void io(A &a, T &v)
+{
+    if constexpr (std::is_same_v<T, QString> || std::is_same_v<T, QByteArray> ||
+                  std::is_same_v<T, bool> || std::is_integral_v<T>) {
+        if constexpr (A::reading)
+            a.s >> v;
+        else
+            a.s << v;
+    } else if constexpr (std::is_enum_v<T>) {
+        auto raw = qint32(v);
+        io(a, raw);
+        v = T(raw);
+    } else {
+        cacheFields(Tag{}, v, [&a](auto &...x) { (io(a, x), ...); });
+    }
+}
+
+template <class A, class T> void io(A &a, QList<T> &v)
+{
+    auto n = quint32(v.size());
+    if (!size(a, &n))
+        return;
+    if constexpr (A::reading) {
+        v.clear();
+        v.reserve(n);
+        for (quint32 i = 0; i < n && a.s.status() == QDataStream::Ok; ++i)
+            io(a, v.emplace_back());
+    } else {
+        for (T &x : v)
+            io(a, x);
+    }
+}
+
+template <class A, class T> void io(A &a, std::vector<T> &v)
+{
+    auto n = quint32(v.size());
+    if (!size(a, &n))
+        return;
+    if constexpr (A::reading) {
+        v.clear();
+        v.reserve(n);
+        for (quint32 i = 0; i < n && a.s.status() == QDataStream::Ok; ++i)
+            io(a, v.emplace_back());
+    } else {
+        for (T &x : v)
+            io(a, x);
+    }
+}
+
+template <class A, class K, class V> void io(A &a, QHash<K, V> &v)
+{
+    auto n = quint32(v.size());
+    if (!size(a, &n))
+        return;
+    if constexpr (A::reading) {
+        v.clear();
+        for (quint32 i = 0; i < n && a.s.status() == QDataStream::Ok; ++i) {
+            K key;
+            V value;
+            io(a, key);
+            io(a, value);
+            v.insert(key, value);
+        }
+    } else {
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            K key = it.key();
+            io(a, key);
+            io(a, it.value());
+        }
+    }
+}
+
+template <class A, class K, class V> void io(A &a, QMap<K, V> &v)
+{
+    auto n = quint32(v.size());
+    if (!size(a, &n))
+        return;
+    if constexpr (A::reading) {
+        v.clear();
+        for (quint32 i = 0; i < n && a.s.status() == QDataStream::Ok; ++i) {
+            K key;
+            V value;
+            io(a, key);
+            io(a, value);
+            v.insert(key, value);
+        }
+    } else {
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            K key = it.key();
+            io(a, key);
+            io(a, it.value());
+        }
+    }
+}
+
+template <class A, class X, class Y> void io(A &a, std::pair<X, Y> &v)
+{
+    io(a, v.first);
+    io(a, v.second);
+}
+
+template <class A, class T> void io(A &a, std::optional<T> &v)
+{
+    bool has = v.has_value();
+    io(a, has);
+    if (!has) {
+        v.reset();
+        return;
+    }
+    if constexpr (A::reading)
+        v.emplace();
+    io(a, *v);
+}
+
+// The core value types that per-file results contain.
+template <class F> void cacheFields(Tag, Evidence &v, F f)
+{
+    f(v.file, v.line, v.column, v.endLine, v.endColumn);
+}
+template <class F> void cacheFields(Tag, Diagnostic::Related &v, F f)
+{
+    f(v.message, v.evidence);
+}
+template <class F> void cacheFields(Tag, Diagnostic &v, F f)
+{
+    f(v.severity, v.code, v.message, v.evidence, v.related);
+}
+template <class F> void cacheFields(Tag, Port &v, F f)
+{
+    // `marks` is left out: analysis never sets them (the corrected model does).
+    f(v.id, v.kind, v.name, v.type, v.callback, v.nameOrigin, v.nameExpression, v.parameter,
+      v.parameterPrefix, v.parameterSuffix, v.guard, v.guardParameter, v.guardDefault, v.via, v.qos,
+      v.inherited, v.evidence, v.viaEvidence);
+}
+template <class F> void cacheFields(Tag, ComponentRegistration &v, F f)
+{
+    f(v.file, v.pluginClass, v.evidence);
+}
+template <class F> void cacheFields(Tag, Substitution &v, F f)
+{
+    f(v.kind, v.text, v.parts);
+}
+
+/// `value` as bytes.
+template <class T> QByteArray encode(const T &value)
+{
+    QByteArray bytes;
+    QDataStream s(&bytes, QIODevice::WriteOnly);
+    s.setVersion(QDataStream::Qt_6_4);
+    Writer w{s};
+    io(w, const_cast<T &>(value));
+    return bytes;
+}
+
+/// Reads `bytes` into `value`; false when they are not a whole, well-formed `T`.
+template <class T> bool decode(const QByteArray &bytes, T *value)
+{
+    QDataStream s(bytes);
+    s.setVersion(QDataStream::Qt_6_4);
+    Reader r{s};
+    io(r, *value);
+    return s.status() == QDataStream::Ok && s.atEnd();
+}
+
+} // namespace rosarch::cachecodec

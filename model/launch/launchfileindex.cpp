@@ -1,0 +1,108 @@
+#include "launchfileindex.h"
+
+#include "analysiscache.h"
+#include "launchanalyzer.h"
+#include "launchfilecodec.h"
+#include "sourcereader.h"
+
+#include <QMutex>
+#include <QtConcurrent/QtConcurrentMap>
+
+namespace rosarch {
+
+namespace {
+
+/// One candidate file, read.
+struct Read
+{
+    bool readable = false;
+    QList<Diagnostic> readProblems; ///< already reported by the node analyzers for .py
+    std::optional<LaunchFileDescription> description;
+};
+
+bool isCandidate(const SourceFile &f)
+{
+    return f.language == SourceFile::Language::Python || f.language == SourceFile::Language::Xml ||
+           f.language == SourceFile::Language::Yaml;
+}
+
+} // namespace
+
+LaunchFileIndex::LaunchFileIndex(const Workspace &ws, const StageControl &control,
+                                 QList<Diagnostic> *diagnostics)
+{
+    const SourceReader reader(ws.root);
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    QList<const SourceFile *> candidates;
+    QList<int> positions; // in ws.files, for the progress reports
+    for (qsizetype i = 0; i < ws.files.size(); ++i)
+        if (isCandidate(ws.files.at(i))) {
+            candidates.append(&ws.files.at(i));
+            positions.append(int(i + 1));
+        }
+    auto readFile = [&](const SourceFile *f) {
+        Read r;
+        if (control.isCanceled())
+            return r;
+        const FileWork work(control, f->path);
+        QByteArray content;
+        if (work.skip(&r.readProblems) || !reader.read(f->path, &content, &r.readProblems))
+            return r;
+        r.readable = true;
+        // Only a Python file that names the launch function can be one; the test is cheap.
+        if (f->language == SourceFile::Language::Python &&
+            !content.contains("generate_launch_description"))
+            return r;
+        const QByteArray key = AnalysisCache::key(
+            {"launch", f->path.toUtf8(), QByteArray::number(int(f->language)), content});
+        if (const std::optional<QByteArray> cached = cache.load(QStringLiteral("launch"), key);
+            cached && LaunchFileCodec::decode(*cached, &r.description))
+            return r;
+        r.description = LaunchAnalyzer::read(*f, content);
+        cache.store(QStringLiteral("launch"), key, LaunchFileCodec::encode(r.description));
+        return r;
+    };
+    QList<Read> reads = QtConcurrent::blockingMapped<QList<Read>>(
+        candidates, std::function<Read(const SourceFile *)>(readFile));
+    if (control.isCanceled())
+        return;
+    for (qsizetype i = 0; i < candidates.size(); ++i) {
+        const SourceFile &f = *candidates.at(i);
+        Read &r = reads[i];
+        const bool python = f.language == SourceFile::Language::Python;
+        if (!r.readable) {
+            if (!python)
+                diagnostics->append(r.readProblems);
+            continue;
+        }
+        if (!r.description)
+            continue;
+        if (!python)
+            diagnostics->append(r.readProblems); // how it was read (an encoding note)
+        LaunchFileDescription &d = *r.description;
+        control.report(positions.at(i), int(ws.files.size()), f.path);
+        if (!python)
+            diagnostics->append(d.diagnostics);
+        else // Python syntax errors come from stage 1
+            for (const Diagnostic &diag : std::as_const(d.diagnostics))
+                if (diag.code != QLatin1String("syntax-error"))
+                    diagnostics->append(diag);
+        m_files.emplace(f.path, std::move(d));
+    }
+}
+
+const LaunchFileDescription *LaunchFileIndex::find(const QString &file) const
+{
+    const auto it = m_files.find(file);
+    return it == m_files.end() ? nullptr : &it->second;
+}
+
+QStringList LaunchFileIndex::files() const
+{
+    QStringList out;
+    for (const auto &[file, d] : m_files)
+        out.append(file);
+    return out; // std::map keeps them sorted
+}
+
+} // namespace rosarch

@@ -1,0 +1,163 @@
+#include "benchsteps.h"
+
+#include "recovery.h"
+#include "sourcereader.h"
+#include "stageprocess.h"
+#include "syntaxtree.h"
+#include "workspacescanner.h"
+
+#include <QDirIterator>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QTextStream>
+
+#include <sys/resource.h>
+
+namespace rosarch::perfbench {
+
+namespace {
+
+qint64 maxRssKb(int who)
+{
+    rusage usage{};
+    getrusage(who, &usage);
+    return usage.ru_maxrss; // kilobytes on Linux
+}
+
+} // namespace
+
+ParseBaseline parseBaseline(const QString &root)
+{
+    const Workspace ws = WorkspaceScanner::scan(root);
+    const SourceReader reader(ws.root);
+    // Read first, so that the figure is parsing alone.
+    QList<QPair<SyntaxTree::Grammar, QByteArray>> sources;
+    ParseBaseline b;
+    for (const SourceFile &f : ws.files) {
+        const bool python = f.language == SourceFile::Language::Python;
+        if (!python && f.language != SourceFile::Language::Cpp)
+            continue;
+        QByteArray content;
+        QList<Diagnostic> ignored;
+        if (!reader.read(f.path, &content, &ignored))
+            continue;
+        (python ? b.pythonFiles : b.cppFiles) += 1;
+        b.bytes += content.size();
+        sources.append({python ? SyntaxTree::Grammar::Python : SyntaxTree::Grammar::Cpp, content});
+    }
+    QElapsedTimer timer;
+    timer.start();
+    for (const auto &[grammar, content] : std::as_const(sources))
+        SyntaxTree::parse(grammar, content, QString());
+    b.ms = timer.elapsed();
+    return b;
+}
+
+RunResult runChild(const QString &program, Path path, const QString &root, const QString &cacheDir)
+{
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("ROSARCH_NO_CACHE"));
+    env.remove(QStringLiteral("ROSARCH_CACHE_DIR"));
+    if (cacheDir.isEmpty())
+        env.insert(QStringLiteral("ROSARCH_NO_CACHE"), QStringLiteral("1"));
+    else
+        env.insert(QStringLiteral("ROSARCH_CACHE_DIR"), cacheDir);
+    child.setProcessEnvironment(env);
+    child.start(program,
+                {QStringLiteral("--child"),
+                 path == Path::Worker ? QStringLiteral("worker") : QStringLiteral("inprocess"),
+                 root});
+    RunResult r;
+    if (!child.waitForFinished(30 * 60 * 1000) || child.exitStatus() != QProcess::NormalExit ||
+        child.exitCode() != 0) {
+        r.error = QString::fromLocal8Bit(child.readAllStandardError()).trimmed();
+        if (r.error.isEmpty())
+            r.error = QStringLiteral("the measuring child failed (%1)").arg(child.errorString());
+        return r;
+    }
+    const QStringList fields =
+        QString::fromLatin1(child.readAllStandardOutput()).simplified().split(QLatin1Char(' '));
+    if (fields.size() != 2) {
+        r.error = QStringLiteral("the measuring child printed no figures");
+        return r;
+    }
+    r.ms = fields.at(0).toLongLong();
+    r.peakRssKb = fields.at(1).toLongLong();
+    r.ok = true;
+    return r;
+}
+
+int childMain(const QString &path, const QString &root)
+{
+    QElapsedTimer timer;
+    timer.start();
+    qint64 rss = 0;
+    if (path == QLatin1String("worker")) {
+        const StageProcess::Result r = StageProcess::recover(root, {}, {}, {});
+        if (!r.error.isEmpty()) {
+            QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << r.error << '\n';
+            return 1;
+        }
+        rss = maxRssKb(RUSAGE_CHILDREN); // the worker, which did the analysis
+    } else {
+        const Recovery r = recoverWorkspace(root);
+        Q_UNUSED(r);
+        rss = maxRssKb(RUSAGE_SELF);
+    }
+    const qint64 ms = timer.elapsed();
+    QTextStream(stdout) << ms << ' ' << rss << '\n';
+    return 0;
+}
+
+bool copyWorkspace(const QString &from, const QString &to, QString *error)
+{
+    QProcess cp;
+    cp.start(QStringLiteral("cp"), {QStringLiteral("-a"), from + QStringLiteral("/."), to});
+    if (!cp.waitForFinished(10 * 60 * 1000) || cp.exitCode() != 0) {
+        *error = QStringLiteral("copying %1 failed: %2")
+                     .arg(from, QString::fromLocal8Bit(cp.readAllStandardError()).trimmed());
+        return false;
+    }
+    return true;
+}
+
+QString pickEditTarget(const QString &root, const QString &wanted)
+{
+    if (!wanted.isEmpty())
+        return QFileInfo(QDir(root), wanted).absoluteFilePath();
+    QString best;
+    qint64 bestSize = -1;
+    const Workspace ws = WorkspaceScanner::scan(root);
+    for (const SourceFile &f : ws.files) {
+        if (f.language != SourceFile::Language::Cpp || !f.path.endsWith(QLatin1String(".cpp")) ||
+            f.size <= bestSize)
+            continue;
+        QFile file(ws.absolutePath(f.path));
+        if (file.open(QIODevice::ReadOnly) && file.readAll().contains("create_publisher")) {
+            best = ws.absolutePath(f.path);
+            bestSize = f.size;
+        }
+    }
+    return best;
+}
+
+bool editFile(const QString &file, int n)
+{
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    QByteArray content = f.readAll();
+    f.close();
+    if (content.startsWith("// rosarch-perfbench edit"))
+        content.remove(0, content.indexOf('\n') + 1);
+    content.prepend("// rosarch-perfbench edit " + QByteArray::number(n) + '\n');
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return false;
+    return f.write(content) == content.size();
+}
+
+} // namespace rosarch::perfbench

@@ -1,0 +1,158 @@
+// rosarch-perfbench: how fast recovery is, in one run on one workspace.
+//
+//   rosarch-perfbench <workspace> [--runs N] [--edit <file>] [--json]
+//
+// The workspace is copied to a temporary folder first (nothing is written into it). Reported:
+// the baseline (a single-core tree-sitter parse of every Python and C++ file the stages
+// read), then stages 1-3 through the analysis worker (as the GUI runs them) and in-process:
+// without the analysis cache, cold (empty cache), warm (nothing changed) and with one C++
+// source file edited; each as a ratio to the baseline, with the peak memory of the process
+// that did the analysis. Every recovery runs in a child process of its own.
+#include "benchreport.h"
+#include "benchsteps.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <QThread>
+
+using namespace rosarch::perfbench;
+
+namespace {
+
+struct Plan
+{
+    QString name;
+    Path path;
+    bool cache;
+    enum Kind
+    {
+        Cold,
+        Warm,
+        Edit
+    } kind;
+    QString target;
+    double targetRatio;
+    qint64 targetMs;
+};
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("rosarch-perfbench"));
+    const QStringList args = app.arguments();
+    if (args.size() == 4 && args.at(1) == QLatin1String("--child"))
+        return childMain(args.at(2), args.at(3));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("How fast rosarch recovers a workspace: cold, warm and after editing one "
+                       "file, against a single-core tree-sitter parse of the same files."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("workspace"), QStringLiteral("the folder"));
+    const QCommandLineOption runsOption(QStringLiteral("runs"),
+                                        QStringLiteral("Runs per case (median reported)."),
+                                        QStringLiteral("N"), QStringLiteral("3"));
+    const QCommandLineOption editOption(
+        QStringLiteral("edit"),
+        QStringLiteral("The C++ file to edit, relative to the workspace (default: the largest "
+                       ".cpp file creating a publisher)."),
+        QStringLiteral("file"));
+    const QCommandLineOption jsonOption(QStringLiteral("json"),
+                                        QStringLiteral("Print the report as JSON."));
+    parser.addOptions({runsOption, editOption, jsonOption});
+    parser.process(app);
+    QTextStream err(stderr);
+    QTextStream out(stdout);
+    if (parser.positionalArguments().size() != 1) {
+        err << parser.helpText();
+        return 2;
+    }
+    const QString source = QFileInfo(parser.positionalArguments().first()).absoluteFilePath();
+    if (!QFileInfo(source).isDir()) {
+        err << "Not a folder: " << source << '\n';
+        return 2;
+    }
+    bool ok = false;
+    const int runs = parser.value(runsOption).toInt(&ok);
+    if (!ok || runs < 1) {
+        err << "--runs needs a positive number\n";
+        return 2;
+    }
+
+    QTemporaryDir temp;
+    const QString root = temp.filePath(QStringLiteral("ws"));
+    const QString cacheDir = temp.filePath(QStringLiteral("cache"));
+    QString error;
+    if (!temp.isValid() || !QDir().mkpath(root) || !copyWorkspace(source, root, &error)) {
+        err << "rosarch-perfbench: " << (error.isEmpty() ? temp.errorString() : error) << '\n';
+        return 3;
+    }
+    Report report;
+    report.workspace = source;
+    report.cores = QThread::idealThreadCount();
+    const QString edited = pickEditTarget(root, parser.value(editOption));
+    if (!edited.isEmpty())
+        report.editedFile = QDir(root).relativeFilePath(edited);
+
+    err << "baseline parse...\n";
+    QList<qint64> baselineRuns;
+    for (int i = 0; i < runs; ++i) {
+        report.baseline = parseBaseline(root);
+        baselineRuns << report.baseline.ms;
+    }
+    std::sort(baselineRuns.begin(), baselineRuns.end());
+    report.baseline.ms = baselineRuns.at(baselineRuns.size() / 2);
+
+    const QList<Plan> plans = {
+        {QStringLiteral("no-cache"), Path::Worker, false, Plan::Cold, {}, 0, 0},
+        {QStringLiteral("no-cache"), Path::InProcess, false, Plan::Cold, {}, 0, 0},
+        {QStringLiteral("cold"), Path::Worker, true, Plan::Cold, QStringLiteral("<= 1.0x"), 1.0, 0},
+        {QStringLiteral("cold"), Path::InProcess, true, Plan::Cold, QStringLiteral("<= 1.0x"), 1.0,
+         0},
+        {QStringLiteral("warm"), Path::Worker, true, Plan::Warm, QStringLiteral("<= 0.2x"), 0.2, 0},
+        {QStringLiteral("warm"), Path::InProcess, true, Plan::Warm, QStringLiteral("<= 0.2x"), 0.2,
+         0},
+        {QStringLiteral("one-file-edit"), Path::Worker, true, Plan::Edit,
+         QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
+        {QStringLiteral("one-file-edit"), Path::InProcess, true, Plan::Edit,
+         QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
+    };
+    int edits = 0;
+    for (const Plan &plan : plans) {
+        if (plan.kind == Plan::Edit && edited.isEmpty())
+            continue;
+        Case c{plan.name, plan.path, {}, 0, plan.target, plan.targetRatio, plan.targetMs};
+        err << plan.name << (plan.path == Path::Worker ? " (worker)" : " (in-process)") << "...\n";
+        if (plan.kind != Plan::Cold) // a populated cache to start from
+            runChild(app.applicationFilePath(), plan.path, root, cacheDir);
+        for (int i = 0; i < runs; ++i) {
+            if (plan.kind == Plan::Cold)
+                QDir(cacheDir).removeRecursively();
+            if (plan.kind == Plan::Edit && !editFile(edited, ++edits)) {
+                err << "rosarch-perfbench: cannot edit " << edited << '\n';
+                return 3;
+            }
+            const RunResult r = runChild(app.applicationFilePath(), plan.path, root,
+                                         plan.cache ? cacheDir : QString());
+            if (!r.ok) {
+                err << "rosarch-perfbench: " << r.error << '\n';
+                return 1;
+            }
+            c.ms << r.ms;
+            c.peakRssKb = std::max(c.peakRssKb, r.peakRssKb);
+        }
+        report.peakRssKb = std::max(report.peakRssKb, c.peakRssKb);
+        report.cases << c;
+    }
+    if (parser.isSet(jsonOption))
+        out << reportJson(report);
+    else
+        out << reportText(report);
+    return 0;
+}
