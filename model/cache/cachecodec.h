@@ -117,7 +117,9 @@ template <class A, class T> void io(A &a, std::vector<T> &v)
     }
 }
 
-template <class A, class K, class V> void io(A &a, QHash<K, V> &v)
+// A QHash or a QMap: its size, then each key and value.
+template <class A, template <class, class> class Map, class K, class V>
+void ioMap(A &a, Map<K, V> &v)
 {
     auto n = quint32(v.size());
     if (!size(a, &n))
@@ -140,27 +142,14 @@ template <class A, class K, class V> void io(A &a, QHash<K, V> &v)
     }
 }
 
+template <class A, class K, class V> void io(A &a, QHash<K, V> &v)
+{
+    ioMap(a, v);
+}
+
 template <class A, class K, class V> void io(A &a, QMap<K, V> &v)
 {
-    auto n = quint32(v.size());
-    if (!size(a, &n))
-        return;
-    if constexpr (A::reading) {
-        v.clear();
-        for (quint32 i = 0; i < n && a.s.status() == QDataStream::Ok; ++i) {
-            K key;
-            V value;
-            io(a, key);
-            io(a, value);
-            v.insert(key, value);
-        }
-    } else {
-        for (auto it = v.begin(); it != v.end(); ++it) {
-            K key = it.key();
-            io(a, key);
-            io(a, it.value());
-        }
-    }
+    ioMap(a, v);
 }
 
 template <class A, class X, class Y> void io(A &a, std::pair<X, Y> &v)

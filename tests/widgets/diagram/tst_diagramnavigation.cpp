@@ -10,6 +10,7 @@
 #include "diagramrootprompt.h"
 #include "diagramscene.h"
 #include "diagramview.h"
+#include "diagramwait.h"
 #include "screenshot.h"
 
 #include <QAction>
@@ -20,19 +21,10 @@
 #include <QtTest>
 
 using namespace rosarch;
+using rosarch::test::laidOut;
 using rosarch::test::saveScreenshot;
 
 namespace {
-
-template <typename F> bool laidOut(DiagramPanel &panel, F &&trigger)
-{
-    QSignalSpy spy(&panel, &DiagramPanel::layoutFinished);
-    trigger();
-    while (spy.isEmpty() || panel.isLayingOut())
-        if (!spy.wait(30000))
-            return false;
-    return true;
-}
 
 /// Two roots: the demo (including its listener) and a fleet of `robots`.
 Architecture twoRoots(int robots)

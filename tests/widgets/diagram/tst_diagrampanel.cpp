@@ -7,6 +7,7 @@
 #include "diagrampanel.h"
 #include "diagramscene.h"
 #include "diagramview.h"
+#include "diagramwait.h"
 #include "screenshot.h"
 #include "testsupport.h"
 
@@ -20,20 +21,10 @@
 #include <QtTest>
 
 using namespace rosarch;
+using rosarch::test::laidOut;
 using rosarch::test::saveScreenshot;
 
 namespace {
-
-/// Runs `trigger` and waits until the panel has drawn (or failed to draw) its result.
-template <typename F> bool laidOut(DiagramPanel &panel, F &&trigger)
-{
-    QSignalSpy spy(&panel, &DiagramPanel::layoutFinished);
-    trigger();
-    while (spy.isEmpty() || panel.isLayingOut())
-        if (!spy.wait(30000))
-            return false;
-    return true;
-}
 
 DiagramNodeItem *nodeItem(DiagramPanel &panel, const QString &key)
 {
