@@ -4,6 +4,8 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
+#include <QFutureWatcher>
+#include <QtConcurrent>
 
 namespace rosarch {
 
@@ -76,35 +78,51 @@ void WorkspaceWatcher::setEnabled(bool enabled)
     rebuild();
 }
 
-QHash<QString, qint64> WorkspaceWatcher::listing(const QString &folder) const
+QHash<QString, qint64> WorkspaceWatcher::listingOf(const QString &root, const QString &folder)
 {
     QHash<QString, qint64> out;
     const QFileInfoList entries = QDir(folder).entryInfoList(QDir::Files | QDir::Hidden);
     for (const QFileInfo &e : entries)
-        if (rerunFor(QDir(m_root).relativeFilePath(e.absoluteFilePath())))
+        if (rerunFor(QDir(root).relativeFilePath(e.absoluteFilePath())))
             out.insert(e.fileName(), e.lastModified().toMSecsSinceEpoch());
     return out;
 }
 
-void WorkspaceWatcher::watchFolder(const QString &folder, QStringList *files,
-                                   QStringList *folders) const
+QHash<QString, qint64> WorkspaceWatcher::listing(const QString &folder) const
 {
-    folders->append(folder);
+    return listingOf(m_root, folder);
+}
+
+void WorkspaceWatcher::watchFolder(const QString &root, const QString &folder, Walk *walk)
+{
+    walk->folders.append(folder);
     const QFileInfoList entries = QDir(folder).entryInfoList(
         QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden, QDir::Name);
     for (const QFileInfo &e : entries) {
         if (e.isDir()) {
             if (!e.isSymLink() && !isSkippedFolder(e.fileName()) &&
-                folders->size() + files->size() < kMaxWatchedPaths * 4)
-                watchFolder(e.absoluteFilePath(), files, folders);
-        } else if (rerunFor(QDir(m_root).relativeFilePath(e.absoluteFilePath()))) {
-            files->append(e.absoluteFilePath());
+                walk->folders.size() + walk->files.size() < kMaxWatchedPaths * 4)
+                watchFolder(root, e.absoluteFilePath(), walk);
+        } else if (rerunFor(QDir(root).relativeFilePath(e.absoluteFilePath()))) {
+            walk->files.append(e.absoluteFilePath());
         }
     }
 }
 
+WorkspaceWatcher::Walk WorkspaceWatcher::walk(const QString &root)
+{
+    Walk w;
+    watchFolder(root, root, &w);
+    if (w.folders.size() > kMaxWatchedPaths)
+        w.folders = w.folders.mid(0, kMaxWatchedPaths); // the outer folders, found first
+    for (const QString &folder : std::as_const(w.folders))
+        w.listings.insert(folder, listingOf(root, folder));
+    return w;
+}
+
 void WorkspaceWatcher::rebuild()
 {
+    ++m_generation;
     delete m_watcher;
     m_watcher = nullptr;
     m_listings.clear();
@@ -112,20 +130,30 @@ void WorkspaceWatcher::rebuild()
     m_debounce.stop();
     if (!m_enabled || m_root.isEmpty() || !QFileInfo(m_root).isDir())
         return;
-    QStringList files, folders;
-    watchFolder(m_root, &files, &folders);
+    // Walking a large workspace (every folder listed) takes long enough to stall the window:
+    // it runs off the UI thread, and the watch is put in place when it is done.
+    const int generation = m_generation;
+    auto *done = new QFutureWatcher<Walk>(this);
+    connect(done, &QFutureWatcherBase::finished, this, [this, done, generation] {
+        done->deleteLater();
+        if (generation == m_generation)
+            install(done->result());
+    });
+    done->setFuture(QtConcurrent::run(&WorkspaceWatcher::walk, m_root));
+}
+
+void WorkspaceWatcher::install(Walk walk)
+{
     m_watcher = new QFileSystemWatcher(this);
     connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &WorkspaceWatcher::onFileChanged);
     connect(m_watcher, &QFileSystemWatcher::directoryChanged, this,
             &WorkspaceWatcher::onFolderChanged);
-    if (folders.size() > kMaxWatchedPaths)
-        folders = folders.mid(0, kMaxWatchedPaths); // the outer folders, found first
-    m_watchesFiles = folders.size() + files.size() <= kMaxWatchedPaths;
-    m_watcher->addPaths(folders);
-    if (m_watchesFiles && !files.isEmpty())
-        m_watcher->addPaths(files);
-    for (const QString &folder : std::as_const(folders))
-        m_listings.insert(folder, listing(folder));
+    m_watchesFiles = walk.folders.size() + walk.files.size() <= kMaxWatchedPaths;
+    m_watcher->addPaths(walk.folders);
+    if (m_watchesFiles && !walk.files.isEmpty())
+        m_watcher->addPaths(walk.files);
+    m_listings = std::move(walk.listings);
+    Q_EMIT watching();
 }
 
 void WorkspaceWatcher::note(const QString &absolutePath)

@@ -44,6 +44,9 @@ public:
     bool isEnabled() const { return m_enabled; }
     /// Whether files are watched one by one (false: the folders only, past the bound).
     bool watchesFiles() const { return m_watchesFiles; }
+    /// Whether the watch is in place: the workspace is walked off the UI thread first, which
+    /// takes a moment in a large one (`watching` follows).
+    bool isWatching() const { return m_watcher != nullptr; }
 
     /// What a change of `relativePath` asks for; none for files the stages do not read.
     static std::optional<Rerun> rerunFor(const QString &relativePath);
@@ -51,10 +54,24 @@ public:
 Q_SIGNALS:
     /// The changes settled: re-run `rerun` for `files` (workspace-relative, sorted).
     void rerunRequested(rosarch::WorkspaceWatcher::Rerun rerun, const QStringList &files);
+    /// The watch of the workspace is in place.
+    void watching();
 
 private:
+    /// What to watch in a workspace: its folders, the files the stages read, and each
+    /// folder's listing of those files.
+    struct Walk
+    {
+        QStringList files;
+        QStringList folders;
+        QHash<QString, QHash<QString, qint64>> listings;
+    };
+    static Walk walk(const QString &root);
+    static void watchFolder(const QString &root, const QString &folder, Walk *walk);
+    static QHash<QString, qint64> listingOf(const QString &root, const QString &folder);
+
     void rebuild();
-    void watchFolder(const QString &folder, QStringList *files, QStringList *folders) const;
+    void install(Walk walk);
     void onFileChanged(const QString &path);
     void onFolderChanged(const QString &path);
     void note(const QString &absolutePath);
@@ -67,7 +84,8 @@ private:
     bool m_enabled = true;
     bool m_watchesFiles = true;
     QHash<QString, QHash<QString, qint64>> m_listings; ///< folder -> relevant file -> mtime
-    QSet<QString> m_changed;                           ///< relative paths since the last ask
+    int m_generation = 0;    ///< bumped by every rebuild; a walk of an older one is dropped
+    QSet<QString> m_changed; ///< relative paths since the last ask
 };
 
 } // namespace rosarch

@@ -97,6 +97,7 @@ private Q_SLOTS:
     {
         WorkspaceWatcher watcher;
         watcher.setWorkspace(m_ws);
+        QTRY_VERIFY(watcher.isWatching());
         QVERIFY(watcher.watchesFiles());
         QSignalSpy asked(&watcher, &WorkspaceWatcher::rerunRequested);
         edit(m_ws + QLatin1Char('/') + kListener, "chatter", "chatter2");
@@ -110,6 +111,7 @@ private Q_SLOTS:
     {
         WorkspaceWatcher watcher;
         watcher.setWorkspace(m_ws);
+        QTRY_VERIFY(watcher.isWatching());
         QSignalSpy asked(&watcher, &WorkspaceWatcher::rerunRequested);
         // A burst: the tool's own files, then two launch files; one request for the two.
         test::writeFile(m_ws + QStringLiteral("/rosarch.project.json"), "{}");
@@ -126,6 +128,7 @@ private Q_SLOTS:
     {
         WorkspaceWatcher watcher;
         watcher.setWorkspace(m_ws);
+        QTRY_VERIFY(watcher.isWatching());
         QSignalSpy asked(&watcher, &WorkspaceWatcher::rerunRequested);
         const QString added = QStringLiteral("src/py_talker/py_talker/extra.py");
         test::writeFile(m_ws + QLatin1Char('/') + added, "x = 1\n");
@@ -141,10 +144,12 @@ private Q_SLOTS:
     {
         WorkspaceWatcher watcher;
         watcher.setWorkspace(m_ws);
+        QTRY_VERIFY(watcher.isWatching());
         watcher.setEnabled(false);
         QSignalSpy asked(&watcher, &WorkspaceWatcher::rerunRequested);
         edit(m_ws + QLatin1Char('/') + kListener, "chatter", "chatter2");
         watcher.setEnabled(true); // watching anew: what changed before is not asked for
+        QTRY_VERIFY(watcher.isWatching());
         edit(m_ws + QLatin1Char('/') + kTalker, "chatter", "chatter3");
         QVERIFY(asked.wait(10000));
         QCOMPARE(asked.count(), 1);
