@@ -11,6 +11,7 @@
 #include "document.h"
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
+#include "stallprobe.h"
 #include "traceability.h"
 
 #include <QAction>
@@ -38,6 +39,7 @@ CorrectionController::CorrectionController(Document *document, AtomicNodePanel *
       m_corrections(corrections), m_window(window)
 {
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        const StallScope scope("CorrectionController (document changed)");
         m_index.reset();
         if (change.has(DocumentChange::Model))
             m_current = {};

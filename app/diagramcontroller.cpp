@@ -11,6 +11,7 @@
 #include "recovery.h"
 #include "rootchoice.h"
 #include "stablekeys.h"
+#include "stallprobe.h"
 #include "subsystemgrouping.h"
 #include "talkerspanel.h"
 #include "traceability.h"
@@ -56,6 +57,7 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     });
 
     connect(m_document, &Document::changed, this, [this](const DocumentChange &change) {
+        const StallScope scope("DiagramController (document changed)");
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             onModelReset();
         else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections))

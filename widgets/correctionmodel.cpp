@@ -1,6 +1,7 @@
 #include "correctionmodel.h"
 #include "document.h"
 #include "icons.h"
+#include "stallprobe.h"
 
 #include <QColor>
 #include <QGuiApplication>
@@ -13,6 +14,7 @@ CorrectionModel::CorrectionModel(Document *document, QObject *parent)
     : QAbstractTableModel(parent), m_document(document)
 {
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        const StallScope scope("CorrectionModel (document changed)");
         // a re-run can orphan a correction or find its target again
         if (change.parts & (DocumentChange::Corrections | DocumentChange::Model |
                             DocumentChange::Launch | DocumentChange::Decisions))

@@ -2,6 +2,7 @@
 #include "diagnostickind.h"
 #include "document.h"
 #include "icons.h"
+#include "stallprobe.h"
 
 #include <QColor>
 #include <QFont>
@@ -31,6 +32,7 @@ DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
             beginResetModel();
     });
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        const StallScope scope("DiagnosticModel (document changed)");
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch)) {
             reload();
             endResetModel();

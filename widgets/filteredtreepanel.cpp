@@ -24,6 +24,9 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     m_tree->setAllColumnsShowFocus(true);
     m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
     m_tree->header()->setStretchLastSection(true);
+    // Fitting a column to its content measures the rows around the visible area, not the
+    // thousands a large workspace has: the fit runs on every re-run, on the UI thread.
+    m_tree->header()->setResizeContentsPrecision(0);
     m_tree->setFrameShape(QFrame::NoFrame);
     connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {

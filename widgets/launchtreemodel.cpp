@@ -38,7 +38,11 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
 
 void LaunchTreeModel::rebuild()
 {
-    m_launch = merged();
+    {
+        const StallScope scope("LaunchTreeModel merged");
+        m_launch = merged();
+    }
+    const StallScope scope("LaunchTreeModel layout");
     m_layout = LaunchTreeLayout(m_launch);
 }
 
@@ -49,7 +53,10 @@ LaunchDependencies LaunchTreeModel::merged()
 {
     const LaunchDependencies &recovered = m_document->launchDependencies();
     m_removed.clear();
-    m_index = CorrectionIndex(*m_document);
+    {
+        const StallScope scope("LaunchTreeModel CorrectionIndex");
+        m_index = CorrectionIndex(*m_document);
+    }
     if (m_document->corrections().isEmpty())
         return recovered;
     const LaunchDependencies &corrected = m_document->accepted().launch;

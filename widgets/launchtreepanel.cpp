@@ -1,6 +1,7 @@
 #include "launchtreepanel.h"
 #include "launchtreemodel.h"
 #include "nodefilterproxymodel.h"
+#include "stallprobe.h"
 
 #include <QAction>
 #include <QHeaderView>
@@ -94,6 +95,7 @@ void LaunchTreePanel::setPlaceholderText(const QString &text)
 
 void LaunchTreePanel::expandRows()
 {
+    const StallScope scope("LaunchTreePanel::expandRows");
     const auto parameters = int(LaunchTreeModel::ItemKind::Parameters);
     std::function<void(const QModelIndex &)> expand = [&](const QModelIndex &parent) {
         const QAbstractItemModel *model = m_tree->model();

@@ -1,5 +1,6 @@
 #include "suggestionmodel.h"
 #include "document.h"
+#include "stallprobe.h"
 
 #include <QFileInfo>
 #include <QFont>
@@ -20,6 +21,7 @@ SuggestionModel::SuggestionModel(Document *document, QObject *parent)
             beginResetModel();
     });
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
+        const StallScope scope("SuggestionModel (document changed)");
         if (change.has(DocumentChange::Suggestions)) {
             rebuildItems();
             endResetModel();

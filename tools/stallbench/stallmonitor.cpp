@@ -44,7 +44,7 @@ StallMonitor::StallMonitor(int &argc, char **argv) : QApplication(argc, argv)
 
 void StallMonitor::scopeFinished(const char *name, qint64 nanoseconds, int depth)
 {
-    if (QThread::currentThread() != qApp->thread() || depth > 2)
+    if (QThread::currentThread() != qApp->thread() || depth > 4)
         return;
     QString key = QString::fromLatin1(name);
     if (depth > 0)
@@ -86,7 +86,7 @@ bool StallMonitor::notify(QObject *receiver, QEvent *event)
         QString line = QStringLiteral("    %1 ms: %2").arg(ns / 1000000).arg(what);
         std::vector<std::pair<qint64, QString>> scopes;
         for (const auto &[name, time] : scopeTimes())
-            if (time >= kRecordDispatchNs / 3)
+            if (time >= kRecordDispatchNs / 10)
                 scopes.emplace_back(time, name);
         std::sort(scopes.begin(), scopes.end(), std::greater<>());
         for (const auto &[time, name] : scopes)
