@@ -11,7 +11,8 @@
 
 namespace rosarch {
 
-DiagramMinimap::DiagramMinimap(QGraphicsView *view) : QWidget(view), m_view(view)
+DiagramMinimap::DiagramMinimap(QGraphicsView *view)
+    : QWidget(view), m_view(view), m_viewport(view->viewport())
 {
     setObjectName(QStringLiteral("diagramMinimap"));
     setCursor(Qt::PointingHandCursor);
@@ -134,8 +135,10 @@ void DiagramMinimap::mouseMoveEvent(QMouseEvent *event)
 
 bool DiagramMinimap::eventFilter(QObject *watched, QEvent *event)
 {
-    if ((watched == m_view || watched == m_view->viewport()) &&
-        (event->type() == QEvent::Resize || event->type() == QEvent::Show))
+    // The type first, and the viewport as it was: while the view is being destroyed its
+    // children still send events here, and it is no longer a QGraphicsView to ask.
+    if ((event->type() == QEvent::Resize || event->type() == QEvent::Show) &&
+        (watched == m_view || watched == m_viewport))
         updateVisibility();
     return QWidget::eventFilter(watched, event);
 }

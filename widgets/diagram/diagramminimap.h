@@ -40,6 +40,7 @@ private:
     void centreAt(const QPointF &pos);
 
     QGraphicsView *m_view;
+    QWidget *m_viewport; ///< the view's, kept: the filter must not ask a view being destroyed
     QPixmap m_picture;
     QRectF m_sceneRect;   ///< what m_picture shows
     QRectF m_contentRect; ///< the drawing inside it, without the scene's margin
