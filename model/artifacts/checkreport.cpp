@@ -224,6 +224,14 @@ QByteArray CheckReport::sarif(const QString &workspace, const QString &toolVersi
         if (!related.empty())
             r["relatedLocations"] = related;
         r["partialFingerprints"] = {{"rosarchKey/v1", utf8(f.key)}};
+        // The systems (root launch files) a merged finding was reached through, in SARIF's
+        // property bag, so that code scanning shows one result with its contexts.
+        if (!d.contexts.isEmpty()) {
+            Json contexts = Json::array();
+            for (const QString &c : d.contexts)
+                contexts.push_back(utf8(c));
+            r["properties"] = {{"contexts", contexts}};
+        }
         if (f.baselined)
             r["suppressions"] = Json::array(
                 {{{"kind", "external"}, {"justification", "in the rosarch check baseline"}}});

@@ -19,8 +19,9 @@ QString workspace(const QString &name)
     return rosarch::test::dataDir(name);
 }
 
-/// Runs the schema validator on `files`; its exit code (0 valid) and output.
-int validate(const QStringList &files, QString *output)
+/// Runs the schema validator on `files` against `schema` (default: SARIF 2.1.0); its exit code
+/// (0 valid) and output.
+int validate(const QStringList &files, QString *output, const QString &schema = {})
 {
     const QDir sarif(QStringLiteral(ROSARCH_SARIF_DIR));
     QProcess node;
@@ -28,7 +29,9 @@ int validate(const QStringList &files, QString *output)
                QStringList{QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
                                .filePath(QStringLiteral("tests/support/validate-json-schema.cjs")),
                            sarif.filePath(QStringLiteral("json-schema")),
-                           sarif.filePath(QStringLiteral("schema/sarif-2.1.0.json"))} +
+                           schema.isEmpty()
+                               ? sarif.filePath(QStringLiteral("schema/sarif-2.1.0.json"))
+                               : schema} +
                    files);
     if (!node.waitForFinished(60000))
         return -1;
@@ -216,6 +219,8 @@ private Q_SLOTS:
             QCOMPARE(r.exitCode, 0);
             files << file;
         }
+        // Findings merged across roots carry their systems, and the schema checks those too.
+        QVERIFY(rosarch::test::readFile(files.first()).contains("\"contexts\""));
         QString output;
         QCOMPARE(validate(files, &output), 0);
         // The validator is not a yes-man: a wrong level is caught.
@@ -225,6 +230,37 @@ private Q_SLOTS:
         rosarch::test::writeFile(badFile, bad);
         QCOMPARE(validate({badFile}, &output), 1);
         QVERIFY2(output.contains(QLatin1String("level")), qPrintable(output));
+    }
+
+    void diagnosticsJsonValidatesAgainstItsSchema()
+    {
+        QTemporaryDir dir;
+        QStringList files;
+        for (const QString &ws :
+             {QStringLiteral("check_system/ws"), QStringLiteral("compose_system/ws"),
+              QStringLiteral("cpp_syntax_error")}) {
+            const QString out =
+                dir.filePath(QString(ws).replace(QLatin1Char('/'), QLatin1Char('_')));
+            const Run r =
+                runRosarch({QStringLiteral("recover"), workspace(ws), QStringLiteral("--out"), out,
+                            QStringLiteral("--no-decisions")});
+            QVERIFY2(r.exitCode == 0 || r.exitCode == 1, qPrintable(r.err));
+            files << QDir(out).filePath(QStringLiteral("diagnostics.json"));
+        }
+        // The sample covers merged findings (contexts) and related places.
+        const QByteArray first = rosarch::test::readFile(files.first());
+        QVERIFY(first.contains("\"contexts\""));
+        QVERIFY(first.contains("\"related\""));
+        const QString schema = QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                                   .filePath(QStringLiteral("schemas/diagnostics.schema.json"));
+        QString output;
+        QVERIFY2(validate(files, &output, schema) == 0, qPrintable(output));
+        // A finding with an unknown severity is caught.
+        QByteArray bad = first;
+        bad.replace("\"severity\": \"warning\"", "\"severity\": \"severe\"");
+        const QString badFile = dir.filePath(QStringLiteral("bad.json"));
+        rosarch::test::writeFile(badFile, bad);
+        QCOMPARE(validate({badFile}, &output, schema), 1);
     }
 };
 

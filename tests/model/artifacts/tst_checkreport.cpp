@@ -197,6 +197,33 @@ private Q_SLOTS:
                  QStringLiteral("external"));
         // A finding without a file has no location rather than a made-up one.
         QVERIFY(results.at(3).toObject().value(QStringLiteral("locations")).toArray().isEmpty());
+        // Only a merged finding carries its systems, in the property bag.
+        QVERIFY(!mismatch.contains(QStringLiteral("properties")));
+    }
+
+    void sarifContexts()
+    {
+        QList<Diagnostic> merged = sample();
+        merged.first().contexts = {QStringLiteral("a/launch/robot.launch.py"),
+                                   QStringLiteral("b/launch/sim.launch.xml")};
+        const QByteArray data = CheckReport(merged, {}, Diagnostic::Severity::Warning)
+                                    .sarif(QStringLiteral("/tmp/ws"), QStringLiteral("0.1.0"));
+        const QJsonObject result = QJsonDocument::fromJson(data)
+                                       .object()
+                                       .value(QStringLiteral("runs"))
+                                       .toArray()
+                                       .at(0)
+                                       .toObject()
+                                       .value(QStringLiteral("results"))
+                                       .toArray()
+                                       .at(0)
+                                       .toObject();
+        const QJsonArray contexts = result.value(QStringLiteral("properties"))
+                                        .toObject()
+                                        .value(QStringLiteral("contexts"))
+                                        .toArray();
+        QCOMPARE(contexts.size(), 2);
+        QCOMPARE(contexts.at(1).toString(), QStringLiteral("b/launch/sim.launch.xml"));
         // The catalogue's help, and a generic one for an unknown code.
         QVERIFY(DiagnosticKind::of(QStringLiteral("qos-incompatible"))
                     .help.contains(QLatin1String("best-effort")));
