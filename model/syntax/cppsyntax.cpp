@@ -1,4 +1,5 @@
 #include "cppsyntax.h"
+#include "cppcodescan.h"
 
 #include <QRegularExpression>
 
@@ -384,8 +385,9 @@ void blankExportMacros(QByteArray *source)
 
 void blankQtKeywords(QByteArray *source)
 {
-    if (!source->contains("Q_OBJECT") && !source->contains("Q_GADGET") &&
-        !source->contains("slots") && !source->contains("signals") && !source->contains("Q_S"))
+    if (!scan::contains(*source, "Q_OBJECT") && !scan::contains(*source, "Q_GADGET") &&
+        !scan::contains(*source, "slots") && !scan::contains(*source, "signals") &&
+        !scan::contains(*source, "Q_S"))
         return;
     char *data = source->data();
     const qsizetype size = source->size();
