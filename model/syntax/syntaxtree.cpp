@@ -191,6 +191,34 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
 namespace ts {
 namespace {
 
+// A grammar's symbol names as views: ts_node_type gives a C string, and the view of it
+// measured its length on every call (the analyzers ask for the type of nearly every node).
+class SymbolNames
+{
+public:
+    explicit SymbolNames(const TSLanguage *language) : m_language(language)
+    {
+        const uint32_t count = ts_language_symbol_count(language);
+        m_names.reserve(count);
+        for (uint32_t s = 0; s < count; ++s) {
+            const char *name = ts_language_symbol_name(language, TSSymbol(s));
+            m_names.emplace_back(name ? std::string_view(name) : std::string_view());
+        }
+    }
+    const TSLanguage *language() const { return m_language; }
+    // ts_node_symbol is the public symbol of the node's (alias) symbol, which has the name
+    // ts_node_type gives; the error symbols lie outside the table.
+    std::string_view name(TSNode n) const
+    {
+        const TSSymbol symbol = ts_node_symbol(n);
+        return symbol < m_names.size() ? m_names[symbol] : std::string_view(ts_node_type(n));
+    }
+
+private:
+    const TSLanguage *m_language;
+    std::vector<std::string_view> m_names;
+};
+
 // A grammar's field ids by name. ts_node_child_by_field_name looks the name up by comparing it
 // with every field name of the grammar on each call; field() runs on most nodes the analyzers
 // visit, so each grammar's names are hashed once.
@@ -219,6 +247,20 @@ private:
 };
 
 } // namespace
+
+std::string_view type(TSNode n)
+{
+    if (ts_node_is_null(n))
+        return {};
+    static const SymbolNames cpp(tree_sitter_cpp());
+    static const SymbolNames python(tree_sitter_python());
+    const TSLanguage *language = ts_tree_language(n.tree);
+    if (language == cpp.language())
+        return cpp.name(n);
+    if (language == python.language())
+        return python.name(n);
+    return ts_node_type(n);
+}
 
 TSNode field(TSNode n, const char *name)
 {
