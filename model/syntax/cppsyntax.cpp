@@ -349,14 +349,15 @@ void blankExportMacros(QByteArray *source)
             ++i;
             continue;
         }
-        if (!(std::isalpha(uchar(c)) || c == '_')) {
+        // ASCII tests, not the locale's: this loop runs on every byte of every file.
+        if (!scan::isIdentifierChar(c) || (c >= '0' && c <= '9')) {
             ++i;
             continue;
         }
         qsizetype end = i;
         bool upper = true;
-        while (end < size && (std::isalnum(uchar(data[end])) || data[end] == '_')) {
-            upper = upper && !std::islower(uchar(data[end]));
+        while (end < size && scan::isIdentifierChar(data[end])) {
+            upper = upper && !(data[end] >= 'a' && data[end] <= 'z');
             ++end;
         }
         // A value (`durability = RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL`, an argument) is an
