@@ -69,10 +69,20 @@ QString firstTemplateArgument(const SyntaxTree &tree, TSNode templateArguments)
 
 std::vector<TSNode> arguments(TSNode list)
 {
+    // One pass with a cursor into one list: this runs for every call the analysis reads.
     std::vector<TSNode> out;
-    for (TSNode a : ts::namedChildren(list))
-        if (!ts::is(a, "comment"))
-            out.push_back(a);
+    if (ts::isNull(list))
+        return out;
+    out.reserve(ts_node_named_child_count(list));
+    TSTreeCursor cursor = ts_tree_cursor_new(list);
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+        do {
+            const TSNode a = ts_tree_cursor_current_node(&cursor);
+            if (ts_node_is_named(a) && !ts::is(a, "comment"))
+                out.push_back(a);
+        } while (ts_tree_cursor_goto_next_sibling(&cursor));
+    }
+    ts_tree_cursor_delete(&cursor);
     return out;
 }
 
