@@ -25,11 +25,6 @@ qsizetype endOfLogicalLine(const char *s, qsizetype n, qsizetype i)
 
 } // namespace
 
-bool isIdentifierChar(char c)
-{
-    return std::isalnum(uchar(c)) || c == '_';
-}
-
 QByteArray codeOnly(const QByteArray &source)
 {
     QByteArray out = source;
@@ -172,6 +167,11 @@ qsizetype closingParen(const QByteArray &code, qsizetype open, qsizetype limit)
             return c == ')' ? i : -1;
     }
     return -1;
+}
+
+bool contains(const QByteArray &code, std::string_view text)
+{
+    return memmem(code.constData(), size_t(code.size()), text.data(), text.size()) != nullptr;
 }
 
 std::string_view nextWord(const QByteArray &code, qsizetype *i)

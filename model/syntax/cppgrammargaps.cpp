@@ -415,11 +415,12 @@ void blankGrammarGaps(QByteArray *source)
         for (auto it = re.globalMatch(text); it.hasNext();)
             apply(it.next());
     };
-    const bool news = code.contains("new ");
-    const bool typenames = code.contains("typename ");
-    const bool templates = code.contains("template");
+    const bool news = contains(code, "new ");
+    const bool typenames = contains(code, "typename ");
+    const bool templates = contains(code, "template");
     const bool braces = code.contains('{');
-    const bool macros = code.contains("_THROW") || code.contains("SIGNAL") || code.contains("SLOT");
+    const bool macros =
+        contains(code, "_THROW") || contains(code, "SIGNAL") || contains(code, "SLOT");
     if (news) {
         static const QRegularExpression pointerArray(
             QStringLiteral("\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*\\s*(\\*+)\\s*\\["));
@@ -457,18 +458,18 @@ void blankGrammarGaps(QByteArray *source)
     }
     if (macros)
         blankMacroArguments(code, blank);
-    if (code.contains("decltype"))
+    if (contains(code, "decltype"))
         blankDecltypeCommas(code, blank);
-    if (code.contains("operator")) {
+    if (contains(code, "operator")) {
         renameOperatorCalls(code, text, [&](qsizetype from, qsizetype to) {
             std::fill(data + from, data + to, '_');
         });
     }
-    if (code.contains("::*") || code.contains("->*"))
+    if (contains(code, "::*") || contains(code, "->*"))
         blankPointerToMembers(text, blank);
-    if (code.contains("..."))
+    if (contains(code, "..."))
         blankUsingPackExpansions(text, blank);
-    if (code.contains("typeid"))
+    if (contains(code, "typeid"))
         blankTypeidTypes(text, blank);
     if (code.contains('&')) {
         bracedReferenceInitialisers(code, text, [&](qsizetype open, qsizetype close) {
@@ -476,7 +477,7 @@ void blankGrammarGaps(QByteArray *source)
             data[close] = '}';
         });
     }
-    if (code.contains("for") || code.contains("while") || code.contains("if"))
+    if (contains(code, "for") || contains(code, "while") || contains(code, "if"))
         blankDeclarationBodies(code, text, blank);
 }
 

@@ -1,4 +1,5 @@
 #include "cppsyntax.h"
+#include "cppcodescan.h"
 
 #include <QRegularExpression>
 
@@ -68,10 +69,20 @@ QString firstTemplateArgument(const SyntaxTree &tree, TSNode templateArguments)
 
 std::vector<TSNode> arguments(TSNode list)
 {
+    // One pass with a cursor into one list: this runs for every call the analysis reads.
     std::vector<TSNode> out;
-    for (TSNode a : ts::namedChildren(list))
-        if (!ts::is(a, "comment"))
-            out.push_back(a);
+    if (ts::isNull(list))
+        return out;
+    out.reserve(ts_node_named_child_count(list));
+    TSTreeCursor cursor = ts_tree_cursor_new(list);
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+        do {
+            const TSNode a = ts_tree_cursor_current_node(&cursor);
+            if (ts_node_is_named(a) && !ts::is(a, "comment"))
+                out.push_back(a);
+        } while (ts_tree_cursor_goto_next_sibling(&cursor));
+    }
+    ts_tree_cursor_delete(&cursor);
     return out;
 }
 
@@ -348,14 +359,15 @@ void blankExportMacros(QByteArray *source)
             ++i;
             continue;
         }
-        if (!(std::isalpha(uchar(c)) || c == '_')) {
+        // ASCII tests, not the locale's: this loop runs on every byte of every file.
+        if (!scan::isIdentifierChar(c) || (c >= '0' && c <= '9')) {
             ++i;
             continue;
         }
         qsizetype end = i;
         bool upper = true;
-        while (end < size && (std::isalnum(uchar(data[end])) || data[end] == '_')) {
-            upper = upper && !std::islower(uchar(data[end]));
+        while (end < size && scan::isIdentifierChar(data[end])) {
+            upper = upper && !(data[end] >= 'a' && data[end] <= 'z');
             ++end;
         }
         // A value (`durability = RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL`, an argument) is an
@@ -384,8 +396,9 @@ void blankExportMacros(QByteArray *source)
 
 void blankQtKeywords(QByteArray *source)
 {
-    if (!source->contains("Q_OBJECT") && !source->contains("Q_GADGET") &&
-        !source->contains("slots") && !source->contains("signals") && !source->contains("Q_S"))
+    if (!scan::contains(*source, "Q_OBJECT") && !scan::contains(*source, "Q_GADGET") &&
+        !scan::contains(*source, "slots") && !scan::contains(*source, "signals") &&
+        !scan::contains(*source, "Q_S"))
         return;
     char *data = source->data();
     const qsizetype size = source->size();

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
+#include <unordered_map>
 
 extern "C" {
 const TSLanguage *tree_sitter_python();
@@ -187,10 +189,90 @@ QList<Diagnostic> SyntaxTree::syntaxErrors(int limit) const
 }
 
 namespace ts {
+namespace {
+
+// A grammar's symbol names as views: ts_node_type gives a C string, and the view of it
+// measured its length on every call (the analyzers ask for the type of nearly every node).
+class SymbolNames
+{
+public:
+    explicit SymbolNames(const TSLanguage *language) : m_language(language)
+    {
+        const uint32_t count = ts_language_symbol_count(language);
+        m_names.reserve(count);
+        for (uint32_t s = 0; s < count; ++s) {
+            const char *name = ts_language_symbol_name(language, TSSymbol(s));
+            m_names.emplace_back(name ? std::string_view(name) : std::string_view());
+        }
+    }
+    const TSLanguage *language() const { return m_language; }
+    // ts_node_symbol is the public symbol of the node's (alias) symbol, which has the name
+    // ts_node_type gives; the error symbols lie outside the table.
+    std::string_view name(TSNode n) const
+    {
+        const TSSymbol symbol = ts_node_symbol(n);
+        return symbol < m_names.size() ? m_names[symbol] : std::string_view(ts_node_type(n));
+    }
+
+private:
+    const TSLanguage *m_language;
+    std::vector<std::string_view> m_names;
+};
+
+// A grammar's field ids by name. ts_node_child_by_field_name looks the name up by comparing it
+// with every field name of the grammar on each call; field() runs on most nodes the analyzers
+// visit, so each grammar's names are hashed once.
+class FieldIds
+{
+public:
+    explicit FieldIds(const TSLanguage *language) : m_language(language)
+    {
+        const uint32_t count = ts_language_field_count(language);
+        for (TSFieldId id = 1; id <= count; ++id) {
+            const char *name = ts_language_field_name_for_id(language, id);
+            if (name)
+                m_ids.emplace(std::string_view(name), id);
+        }
+    }
+    const TSLanguage *language() const { return m_language; }
+    TSFieldId id(std::string_view name) const
+    {
+        const auto it = m_ids.find(name);
+        return it == m_ids.end() ? TSFieldId(0) : it->second;
+    }
+
+private:
+    const TSLanguage *m_language;
+    std::unordered_map<std::string_view, TSFieldId> m_ids;
+};
+
+} // namespace
+
+std::string_view type(TSNode n)
+{
+    if (ts_node_is_null(n))
+        return {};
+    static const SymbolNames cpp(tree_sitter_cpp());
+    static const SymbolNames python(tree_sitter_python());
+    const TSLanguage *language = ts_tree_language(n.tree);
+    if (language == cpp.language())
+        return cpp.name(n);
+    if (language == python.language())
+        return python.name(n);
+    return ts_node_type(n);
+}
+
 TSNode field(TSNode n, const char *name)
 {
     if (ts_node_is_null(n))
         return n;
+    static const FieldIds cpp(tree_sitter_cpp());
+    static const FieldIds python(tree_sitter_python());
+    const TSLanguage *language = ts_tree_language(n.tree);
+    if (language == cpp.language())
+        return ts_node_child_by_field_id(n, cpp.id(name));
+    if (language == python.language())
+        return ts_node_child_by_field_id(n, python.id(name));
     return ts_node_child_by_field_name(n, name, uint32_t(strlen(name)));
 }
 

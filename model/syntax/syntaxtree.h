@@ -79,10 +79,8 @@ inline bool isNull(TSNode n)
 {
     return ts_node_is_null(n);
 }
-inline std::string_view type(TSNode n)
-{
-    return isNull(n) ? std::string_view() : ts_node_type(n);
-}
+/// The node's type name ("" for a null node).
+std::string_view type(TSNode n);
 inline bool is(TSNode n, std::string_view t)
 {
     return type(n) == t;

@@ -217,9 +217,9 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
                     addInstantiation(type, args, declaration);
                 }
                 if (args.size() == 1) // std::string topic("chatter");
-                    local.value = args.front();
+                    local.setValue(args.front());
             } else {
-                local.value = value;
+                local.setValue(value);
             }
             if (!name.isEmpty())
                 m_locals.insert(name, local);
@@ -258,7 +258,7 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
         const QString name = m_tree.text(left);
         auto it = m_locals.find(name);
         if (it != m_locals.end()) {
-            it->value = value;
+            it->setValue(value);
             return;
         }
         if (m_function.parameterNames.contains(name))

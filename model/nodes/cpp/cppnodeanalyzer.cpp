@@ -11,6 +11,7 @@
 #include "syntaxtree.h"
 
 #include <QMutex>
+#include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
 namespace rosarch {
@@ -92,15 +93,18 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         control.report(++done, total, file->path);
         return facts;
     };
-    const QList<CppFileFacts> files = QtConcurrent::blockingMapped<QList<CppFileFacts>>(
+    QList<CppFileFacts> files = QtConcurrent::blockingMapped<QList<CppFileFacts>>(
         sources, std::function<CppFileFacts(const SourceFile *)>(extract));
     if (control.isCanceled())
         return {};
 
     // Phase 2: link across files (out-of-line members, base classes, helpers).
     LanguageAnalysis analysis = CppNodeLinker(files).link();
-    for (const CppFileFacts &facts : files)
+    for (const CppFileFacts &facts : std::as_const(files))
         analysis.diagnostics += facts.diagnostics;
+    // Freeing every file's facts takes tens of milliseconds on a large workspace (nav2: ~20 ms,
+    // serial): a pool thread does it while the caller goes on with the next stage.
+    QThreadPool::globalInstance()->start([facts = std::move(files)]() mutable { facts.clear(); });
     return analysis;
 }
 

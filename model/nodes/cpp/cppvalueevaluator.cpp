@@ -88,6 +88,12 @@ bool isLoopVariable(TSNode value)
 
 } // namespace
 
+void CppLocal::setValue(TSNode v)
+{
+    value = v;
+    loopInitial = !ts::isNull(v) && isLoopVariable(v);
+}
+
 CppValueEvaluator::CppValueEvaluator(const SyntaxTree &tree, const QHash<QString, CppLocal> &locals,
                                      const CppFunction &function, const CppMacros *macros)
     : m_tree(tree), m_locals(locals), m_function(function), m_macros(macros)
@@ -264,7 +270,7 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             v.parameter = it->parameter;
             return v;
         }
-        if (!ts::isNull(it->value) && depth < 6 && !isLoopVariable(it->value)) {
+        if (!ts::isNull(it->value) && depth < 6 && !it->loopInitial) {
             const CppValue inner = evaluate(it->value, depth + 1);
             switch (inner.kind) {
             case CppValue::Kind::Literal:

@@ -18,6 +18,11 @@ struct CppLocal
     QString type;
     TSNode value{};    ///< latest value (initializer or assignment)
     QString parameter; ///< bound through get_parameter("p", local)
+    /// `value` is a for loop's initial value, no value of the variable in the body. Kept with
+    /// the value: finding it walks up the tree, and a local is read far more often than set.
+    bool loopInitial = false;
+
+    void setValue(TSNode v);
 };
 
 /// What an expression refers to, seen from inside its function: a literal, a local holding
