@@ -2,13 +2,13 @@
 
 #include <QCryptographicHash>
 #include <QDataStream>
-#include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryFile>
 #include <QtConcurrent/QtConcurrentMap>
 
 #include <sys/stat.h>
+#include <time.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -66,11 +66,13 @@ QByteArray FileDigests::digest(const QString &absolutePath)
         return {};
     const QByteArray digest = digestOf(content);
     Stat after;
-    const qint64 now = QDateTime::currentMSecsSinceEpoch() * 1'000'000;
+    timespec clock = {};
+    ::clock_gettime(CLOCK_REALTIME, &clock);
+    const qint64 now = qint64(clock.tv_sec) * 1'000'000'000 + clock.tv_nsec;
     // Memoised only when the file did not change while it was read, and not just now.
     const bool steady = statOf(absolutePath, &after) && after == before &&
-                        before.mtimeNs < now - m_racyWindowNs &&
-                        before.ctimeNs < now - m_racyWindowNs;
+                        before.mtimeNs <= now - m_racyWindowNs &&
+                        before.ctimeNs <= now - m_racyWindowNs;
     QMutexLocker lock(&m_mutex);
     ++m_hashed;
     if (steady) {
