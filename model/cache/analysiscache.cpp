@@ -160,7 +160,7 @@ void AnalysisCache::openPacks()
     QStringList names =
         QDir(m_directory).entryList({QStringLiteral("*.pack")}, QDir::Files, QDir::Name);
     for (const QString &name : std::as_const(names)) { // oldest first: newer entries win
-        auto pack = std::make_unique<Pack>();
+        auto pack = std::make_shared<Pack>();
         pack->path = m_directory + QLatin1Char('/') + name;
         pack->file.setFileName(pack->path);
         if (!pack->file.open(QIODevice::ReadOnly))
@@ -208,12 +208,10 @@ void AnalysisCache::openPacks()
     }
 }
 
-std::optional<QByteArray> AnalysisCache::read(const Location &where) const
+std::optional<QByteArray> AnalysisCache::read(Pack &pack, const Location &where)
 {
-    QByteArray bytes =
-        where.pack < 0 ? m_pending.at(size_t(where.offset)).second
-                       : readAt(m_packs.at(size_t(where.pack))->file, where.offset, where.length);
-    if (where.pack >= 0 && (bytes.size() != where.length || checksum(bytes) != where.checksum))
+    QByteArray bytes = readAt(pack.file, where.offset, where.length);
+    if (bytes.size() != where.length || checksum(bytes) != where.checksum)
         return std::nullopt;
     return bytes;
 }
@@ -224,6 +222,7 @@ std::optional<QByteArray> AnalysisCache::load(const QString &kind, const QByteAr
         return std::nullopt;
     const QByteArray id = entryId(kind, key);
     Location where;
+    std::shared_ptr<Pack> pack;
     {
         QMutexLocker lock(&m_mutex);
         if (const auto pending = m_pendingAt.constFind(id); pending != m_pendingAt.constEnd()) {
@@ -237,10 +236,11 @@ std::optional<QByteArray> AnalysisCache::load(const QString &kind, const QByteAr
             return std::nullopt;
         }
         where = *it;
+        pack = m_packs.at(size_t(where.pack));
     }
     // Packs are only ever added and removed, never changed in place: reading outside the lock
     // is safe, and a pack removed by another process stays readable through the open handle.
-    std::optional<QByteArray> payload = read(where);
+    std::optional<QByteArray> payload = read(*pack, where);
     if (!payload) {
         ++m_rejected;
         ++m_misses;
@@ -321,7 +321,7 @@ void AnalysisCache::compact()
     for (auto it = m_index.cbegin(); it != m_index.cend(); ++it) {
         if (size_t(it->pack) == largest || m_pendingAt.contains(it.key()))
             continue;
-        if (std::optional<QByteArray> payload = read(*it))
+        if (std::optional<QByteArray> payload = read(*m_packs.at(size_t(it->pack)), *it))
             merged.emplace_back(it.key(), std::move(*payload));
     }
     for (auto &entry : m_pending)

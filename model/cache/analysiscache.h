@@ -98,7 +98,7 @@ private:
     struct Pack;
     struct Location
     {
-        int pack = -1; ///< in m_packs; -1 = in m_pending
+        int pack = -1; ///< in m_packs
         qint64 offset = 0;
         qint64 length = 0;
         QByteArray checksum;
@@ -106,7 +106,7 @@ private:
     static QByteArray entryId(const QString &kind, const QByteArray &key);
     void openPacks();
     void rejectPack(const QString &path);
-    std::optional<QByteArray> read(const Location &where) const;
+    static std::optional<QByteArray> read(Pack &pack, const Location &where);
     bool writePack(const std::vector<std::pair<QByteArray, QByteArray>> &entries,
                    QString *error) const;
     void compact();
@@ -122,8 +122,8 @@ private:
 
     mutable QMutex m_mutex; ///< guards everything below
     bool m_opened = false;
-    std::vector<std::unique_ptr<Pack>> m_packs;
-    QHash<QByteArray, Location> m_index;                      ///< entryId -> where
+    std::vector<std::shared_ptr<Pack>> m_packs; ///< shared with loads reading outside the lock
+    QHash<QByteArray, Location> m_index;        ///< entryId -> where
     std::vector<std::pair<QByteArray, QByteArray>> m_pending; ///< entryId, payload
     QHash<QByteArray, qsizetype> m_pendingAt;                 ///< entryId -> in m_pending
     QSet<QString> m_rejectedPacks;
