@@ -1,63 +1,110 @@
 #include "analysiscache.h"
 
+#include <QCoreApplication>
 #include <QCryptographicHash>
+#include <QDataStream>
+#include <QDateTime>
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
+#include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QTemporaryFile>
 #include <QtEndian>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <vector>
 
 namespace rosarch {
 
+// A pack: "RACP", the format (u32), the payloads one after another, the index (QDataStream:
+// count, then id, offset, length, checksum of each payload), and a footer: the index's offset
+// (u64), its SHA-1, "RACX". Written whole by one process under a name of its own.
+struct AnalysisCache::Pack
+{
+    QString path;
+    QFile file;
+};
+
 namespace {
 
-constexpr char kMagic[4] = {'R', 'A', 'C', 'E'};
+constexpr char kMagic[4] = {'R', 'A', 'C', 'P'};
+constexpr char kFooterMagic[4] = {'R', 'A', 'C', 'X'};
 constexpr qsizetype kHashSize = 20; // SHA-1
-constexpr qsizetype kHeaderSize = 4 + 4 + kHashSize;
+constexpr qsizetype kHeaderSize = 8;
+constexpr qsizetype kFooterSize = 8 + kHashSize + 4;
+constexpr quint32 kMaxIndexEntries = 1u << 22;
 
 QByteArray checksum(QByteArrayView bytes)
 {
     return QCryptographicHash::hash(bytes, QCryptographicHash::Sha1);
 }
 
-QByteArray header(const QByteArray &key)
+QByteArray readAt(QFile &file, qint64 offset, qint64 length)
 {
-    QByteArray h(kMagic, 4);
-    const quint32 format = qToBigEndian(quint32(AnalysisCache::kFormatVersion));
-    h.append(reinterpret_cast<const char *>(&format), 4);
-    h.append(key);
-    return h;
+    QByteArray bytes(length, Qt::Uninitialized);
+    qint64 done = 0;
+    while (done < length) {
+        const ssize_t n = ::pread(file.handle(), bytes.data() + done, size_t(length - done),
+                                  off_t(offset + done));
+        if (n <= 0) {
+            if (n < 0 && errno == EINTR)
+                continue;
+            return {};
+        }
+        done += n;
+    }
+    return bytes;
+}
+
+QString packName()
+{
+    // In the order written (by name, then by the files' times): the time, the process, a
+    // counter, and a random part in case another process reuses the id.
+    static std::atomic<int> counter{0};
+    return QStringLiteral("%1-%2-%3-%4.pack")
+        .arg(QDateTime::currentMSecsSinceEpoch(), 13, 10, QLatin1Char('0'))
+        .arg(QCoreApplication::applicationPid())
+        .arg(++counter, 6, 10, QLatin1Char('0'))
+        .arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0'));
 }
 
 } // namespace
 
-AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes)
+AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWindowNs)
     : m_root(root.isEmpty() ? QString() : root + QStringLiteral("/analysis")), m_maxBytes(maxBytes)
 {
-    if (root.isEmpty())
+    if (root.isEmpty()) {
+        m_digests = std::make_unique<FileDigests>();
         return;
+    }
     m_directory =
         m_root + QStringLiteral("/%1-f%2").arg(QStringLiteral(ROSARCH_VERSION)).arg(kFormatVersion);
     if (!QDir().mkpath(m_directory) || !QFileInfo(m_directory).isWritable()) {
+        m_digests = std::make_unique<FileDigests>();
         m_problem = QStringLiteral("The analysis cache folder %1 cannot be created or written; "
                                    "this run analyses every file without the cache.")
                         .arg(m_directory);
         return;
     }
+    m_digests =
+        std::make_unique<FileDigests>(m_directory + QStringLiteral("/digests"), racyWindowNs);
     m_enabled = true;
+}
+
+AnalysisCache::~AnalysisCache()
+{
+    flush();
 }
 
 AnalysisCache &AnalysisCache::shared()
 {
-    static AnalysisCache cache(defaultRoot());
+    static AnalysisCache cache(defaultRoot(), defaultMaxBytes());
     return cache;
 }
 
@@ -72,6 +119,13 @@ QString AnalysisCache::defaultRoot()
     return generic.isEmpty() ? QString() : generic + QStringLiteral("/rosarch");
 }
 
+qint64 AnalysisCache::defaultMaxBytes()
+{
+    bool ok = false;
+    const qint64 mb = qEnvironmentVariable("ROSARCH_CACHE_MAX_MB").toLongLong(&ok);
+    return ok && mb > 0 ? mb * 1024 * 1024 : kDefaultMaxBytes;
+}
+
 QByteArray AnalysisCache::key(std::initializer_list<QByteArrayView> parts)
 {
     QCryptographicHash hash(QCryptographicHash::Sha1);
@@ -84,66 +138,237 @@ QByteArray AnalysisCache::key(std::initializer_list<QByteArrayView> parts)
     return hash.result();
 }
 
-QString AnalysisCache::entryPath(const QString &kind, const QByteArray &key) const
+QByteArray AnalysisCache::entryId(const QString &kind, const QByteArray &key)
 {
-    const QString hex = QString::fromLatin1(key.toHex());
-    return m_directory + QLatin1Char('/') + kind + QLatin1Char('/') + hex.left(2) +
-           QLatin1Char('/') + hex;
+    return kind.toLatin1() + '\0' + key;
+}
+
+void AnalysisCache::rejectPack(const QString &path)
+{
+    // Counted once: the folder is read again after each flush.
+    if (!m_rejectedPacks.contains(path)) {
+        m_rejectedPacks.insert(path);
+        ++m_rejected;
+    }
+}
+
+void AnalysisCache::openPacks()
+{
+    if (m_opened)
+        return;
+    m_opened = true;
+    QStringList names =
+        QDir(m_directory).entryList({QStringLiteral("*.pack")}, QDir::Files, QDir::Name);
+    for (const QString &name : std::as_const(names)) { // oldest first: newer entries win
+        auto pack = std::make_shared<Pack>();
+        pack->path = m_directory + QLatin1Char('/') + name;
+        pack->file.setFileName(pack->path);
+        if (!pack->file.open(QIODevice::ReadOnly))
+            continue; // removed by another process meanwhile
+        const qint64 size = pack->file.size();
+        const QByteArray header = readAt(pack->file, 0, kHeaderSize);
+        const QByteArray footer = readAt(pack->file, size - kFooterSize, kFooterSize);
+        QByteArray expected(kMagic, 4);
+        const quint32 format = qToBigEndian(quint32(kFormatVersion));
+        expected.append(reinterpret_cast<const char *>(&format), 4);
+        if (size < kHeaderSize + kFooterSize || header != expected ||
+            !footer.endsWith(QByteArrayView(kFooterMagic, 4))) {
+            rejectPack(pack->path);
+            continue;
+        }
+        const qint64 indexAt = qFromBigEndian<qint64>(footer.constData());
+        if (indexAt < kHeaderSize || indexAt > size - kFooterSize) {
+            rejectPack(pack->path);
+            continue;
+        }
+        const QByteArray index = readAt(pack->file, indexAt, size - kFooterSize - indexAt);
+        if (checksum(index) != QByteArrayView(footer).sliced(8, kHashSize)) {
+            rejectPack(pack->path);
+            continue;
+        }
+        QDataStream s(index);
+        s.setVersion(QDataStream::Qt_6_4);
+        quint32 count = 0;
+        s >> count;
+        if (count > kMaxIndexEntries) {
+            rejectPack(pack->path);
+            continue;
+        }
+        const int packIndex = int(m_packs.size());
+        for (quint32 i = 0; i < count && s.status() == QDataStream::Ok; ++i) {
+            QByteArray id;
+            Location where;
+            where.pack = packIndex;
+            s >> id >> where.offset >> where.length >> where.checksum;
+            if (s.status() == QDataStream::Ok && where.offset >= kHeaderSize && where.length >= 0 &&
+                where.offset + where.length <= indexAt)
+                m_index.insert(id, where);
+        }
+        m_packs.push_back(std::move(pack));
+    }
+}
+
+std::optional<QByteArray> AnalysisCache::read(Pack &pack, const Location &where)
+{
+    QByteArray bytes = readAt(pack.file, where.offset, where.length);
+    if (bytes.size() != where.length || checksum(bytes) != where.checksum)
+        return std::nullopt;
+    return bytes;
 }
 
 std::optional<QByteArray> AnalysisCache::load(const QString &kind, const QByteArray &key)
 {
     if (!m_enabled)
         return std::nullopt;
-    QFile file(entryPath(kind, key));
-    if (!file.open(QIODevice::ReadOnly)) {
-        ++m_misses;
-        return std::nullopt;
+    const QByteArray id = entryId(kind, key);
+    Location where;
+    std::shared_ptr<Pack> pack;
+    {
+        QMutexLocker lock(&m_mutex);
+        if (const auto pending = m_pendingAt.constFind(id); pending != m_pendingAt.constEnd()) {
+            ++m_hits;
+            return m_pending.at(size_t(*pending)).second;
+        }
+        openPacks();
+        const auto it = m_index.constFind(id);
+        if (it == m_index.constEnd()) {
+            ++m_misses;
+            return std::nullopt;
+        }
+        where = *it;
+        pack = m_packs.at(size_t(where.pack));
     }
-    const QByteArray bytes = file.readAll();
-    const QByteArray expected = header(key);
-    const bool whole =
-        bytes.size() >= kHeaderSize + kHashSize && bytes.startsWith(expected) &&
-        checksum(QByteArrayView(bytes).chopped(kHashSize)) == QByteArrayView(bytes).last(kHashSize);
-    if (!whole) {
+    // Packs are only ever added and removed, never changed in place: reading outside the lock
+    // is safe, and a pack removed by another process stays readable through the open handle.
+    std::optional<QByteArray> payload = read(*pack, where);
+    if (!payload) {
         ++m_rejected;
         ++m_misses;
         return std::nullopt;
     }
     ++m_hits;
-    return bytes.mid(kHeaderSize, bytes.size() - kHeaderSize - kHashSize);
+    return payload;
 }
 
 void AnalysisCache::store(const QString &kind, const QByteArray &key, const QByteArray &payload)
 {
     if (!m_enabled)
         return;
-    const QString path = entryPath(kind, key);
-    if (!QDir().mkpath(QFileInfo(path).path())) {
-        fail(QStringLiteral("The analysis cache folder %1 cannot be created")
-                 .arg(QFileInfo(path).path()));
-        return;
+    const QByteArray id = entryId(kind, key);
+    QMutexLocker lock(&m_mutex);
+    if (const auto it = m_pendingAt.constFind(id); it != m_pendingAt.constEnd()) {
+        m_pending[size_t(*it)].second = payload;
+    } else {
+        m_pendingAt.insert(id, qsizetype(m_pending.size()));
+        m_pending.emplace_back(id, payload);
     }
-    QByteArray bytes = header(key) + payload;
-    bytes += checksum(bytes);
-    // A temporary file renamed over the entry: readers see the old entry or the whole new one.
-    // Not synced to disk (QSaveFile would, thousands of times in a cold run): an entry a crash
-    // leaves incomplete fails its checksum and is analysed again.
-    QTemporaryFile file(path + QStringLiteral(".XXXXXX"));
+    ++m_stores;
+}
+
+bool AnalysisCache::writePack(const std::vector<std::pair<QByteArray, QByteArray>> &entries,
+                              QString *error) const
+{
+    qint64 total = kHeaderSize + kFooterSize;
+    for (const auto &[id, payload] : entries)
+        total += payload.size() + id.size() + 64;
+    QByteArray bytes;
+    bytes.reserve(total);
+    bytes.append(kMagic, 4);
+    const quint32 format = qToBigEndian(quint32(kFormatVersion));
+    bytes.append(reinterpret_cast<const char *>(&format), 4);
+    QByteArray index;
+    QDataStream s(&index, QIODevice::WriteOnly);
+    s.setVersion(QDataStream::Qt_6_4);
+    s << quint32(entries.size());
+    for (const auto &[id, payload] : entries) {
+        s << id << qint64(bytes.size()) << qint64(payload.size()) << checksum(payload);
+        bytes.append(payload);
+    }
+    const quint64 indexAt = qToBigEndian(quint64(bytes.size()));
+    bytes.append(index);
+    bytes.append(reinterpret_cast<const char *>(&indexAt), 8);
+    bytes.append(checksum(index));
+    bytes.append(kFooterMagic, 4);
+
+    // A temporary file renamed into place: readers see no pack or the whole pack. Not synced
+    // to disk: a pack a crash leaves incomplete fails its footer and is analysed again.
+    QTemporaryFile file(m_directory + QStringLiteral("/.tmp-XXXXXX"));
     file.setAutoRemove(false);
     const bool written = file.open() && file.write(bytes) == bytes.size() && file.flush();
     const QString temporary = file.fileName();
-    const QString error = file.errorString();
+    const QString why = file.errorString();
     file.close();
+    const QString path = m_directory + QLatin1Char('/') + packName();
     if (!written || std::rename(QFile::encodeName(temporary).constData(),
                                 QFile::encodeName(path).constData()) != 0) {
-        QFile::remove(temporary);
-        fail(QStringLiteral("An entry of the analysis cache could not be written to %1 (%2)")
-                 .arg(path, written ? QString::fromLocal8Bit(std::strerror(errno)) : error));
+        if (!temporary.isEmpty())
+            QFile::remove(temporary);
+        *error = written ? QString::fromLocal8Bit(std::strerror(errno)) : why;
+        return false;
+    }
+    return true;
+}
+
+void AnalysisCache::compact()
+{
+    // The largest pack stays as it is (rewriting it each time would cost what the cache
+    // saves); the others and this run's entries become one.
+    size_t largest = 0;
+    for (size_t i = 1; i < m_packs.size(); ++i)
+        if (m_packs[i]->file.size() > m_packs[largest]->file.size())
+            largest = i;
+    std::vector<std::pair<QByteArray, QByteArray>> merged;
+    for (auto it = m_index.cbegin(); it != m_index.cend(); ++it) {
+        if (size_t(it->pack) == largest || m_pendingAt.contains(it.key()))
+            continue;
+        if (std::optional<QByteArray> payload = read(*m_packs.at(size_t(it->pack)), *it))
+            merged.emplace_back(it.key(), std::move(*payload));
+    }
+    for (auto &entry : m_pending)
+        merged.push_back(std::move(entry));
+    QString error;
+    if (!writePack(merged, &error)) {
+        fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
+                 .arg(m_directory, error));
         return;
     }
-    ++m_stores;
-    m_storedSinceTrim = true;
+    for (size_t i = 0; i < m_packs.size(); ++i)
+        if (i != largest)
+            QFile::remove(m_packs[i]->path); // another process may have removed it already
+}
+
+void AnalysisCache::flush()
+{
+    if (!m_enabled)
+        return;
+    QString error;
+    if (!m_digests->save(&error)) {
+        fail(QStringLiteral("The analysis cache could not write its file digests to %1 (%2)")
+                 .arg(m_directory, error));
+        return;
+    }
+    {
+        QMutexLocker lock(&m_mutex);
+        if (m_pending.empty())
+            return;
+        openPacks();
+        if (int(m_packs.size()) + 1 > kMaxPacks) {
+            compact();
+        } else if (!writePack(m_pending, &error)) {
+            lock.unlock();
+            fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
+                     .arg(m_directory, error));
+            return;
+        }
+        m_pending.clear();
+        m_pendingAt.clear();
+        // The next load reads the folder again, with this run's pack and other processes'.
+        m_packs.clear();
+        m_index.clear();
+        m_opened = false;
+        m_storedSinceTrim = true;
+    }
+    trim();
 }
 
 void AnalysisCache::fail(const QString &why)
@@ -169,6 +394,8 @@ std::optional<Diagnostic> AnalysisCache::takeProblem()
     d.severity = Diagnostic::Severity::Warning;
     d.code = QStringLiteral("cache-unavailable");
     d.message = m_problem;
+    const QString folder = m_directory.isEmpty() ? m_root : m_directory;
+    d.related.append({QStringLiteral("the analysis cache folder"), Evidence::startOf(folder)});
     return d;
 }
 
@@ -184,12 +411,19 @@ void AnalysisCache::trim()
     };
     std::vector<Entry> entries;
     qint64 total = 0;
-    QDirIterator it(m_root, QDir::Files, QDirIterator::Subdirectories);
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    QDirIterator it(m_root, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
     while (it.hasNext()) {
         it.next();
         const QFileInfo info = it.fileInfo();
-        entries.push_back({info.lastModified().toMSecsSinceEpoch(), info.size(), info.filePath()});
+        const qint64 modified = info.lastModified().toMSecsSinceEpoch();
         total += info.size();
+        // Another process's pack being written, or its digest memo: left alone unless stale.
+        const bool inUse = (info.fileName().startsWith(QLatin1String(".tmp-")) ||
+                            info.fileName().startsWith(QLatin1String("digests."))) &&
+                           now - modified < 3600 * 1000;
+        if (!inUse)
+            entries.push_back({modified, info.size(), info.filePath()});
     }
     if (total <= m_maxBytes)
         return;

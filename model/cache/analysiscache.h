@@ -1,34 +1,46 @@
 #pragma once
 
 #include "diagnostic.h"
+#include "filedigests.h"
 
 #include <QByteArray>
 #include <QByteArrayView>
+#include <QHash>
 #include <QMutex>
+#include <QSet>
 #include <QString>
 
 #include <atomic>
 #include <initializer_list>
+#include <memory>
 #include <optional>
+#include <vector>
+
+class QFile;
 
 namespace rosarch {
 
-/// Per-file analysis results on disk, keyed by a hash of everything a result depends on (the
-/// file's content, its path, its package, ...; see key()). Lives in the user's cache folder
-/// (`<cache>/rosarch/analysis/<version>-f<format>/<kind>/<xx>/<key>`), one file per entry.
-/// - an entry is written atomically (a temporary file renamed) and carries a checksum: a truncated,
-/// damaged
-///   or foreign entry is a miss and is analysed again;
+/// Analysis results on disk, keyed by a hash of everything a result depends on (see key()).
+/// Lives in the user's cache folder (`<cache>/rosarch/analysis/<version>-f<format>/`) as pack
+/// files: the entries a run stores are written at its end (flush()) as one pack, a temporary
+/// file renamed into place, with an index at its end that a later run reads once.
+/// - every entry carries a checksum: a truncated, damaged or foreign entry or pack is a miss
+///   and is analysed again; a pack that another process removes meanwhile is a miss too;
 /// - a folder that cannot be created or written, or a full disk, turns the cache off for the
 ///   rest of the run, with one `cache-unavailable` diagnostic (takeProblem());
-/// - the cache is bounded: trim() removes the oldest entries past the size bound.
-/// Thread-safe: the analyzers load and store from their worker threads.
+/// - the cache is bounded (ROSARCH_CACHE_MAX_MB, default 256): trim() removes the oldest packs
+///   past the bound, and flush() merges the packs when there are many;
+/// - it also keeps the file digests memo (digests()), so that unchanged files need no reading.
+/// Thread-safe: the analyzers load and store from their worker threads; two processes may use
+/// one folder at once (each writes its own packs, under unique names).
 class AnalysisCache
 {
 public:
     /// Bump when the serialised form of any cached result changes.
-    static constexpr int kFormatVersion = 1;
+    static constexpr int kFormatVersion = 2;
     static constexpr qint64 kDefaultMaxBytes = 256LL * 1024 * 1024;
+    /// More packs than this in the folder are merged into one at flush().
+    static constexpr int kMaxPacks = 8;
 
     /// What happened in this cache since it was opened.
     struct Statistics
@@ -40,18 +52,23 @@ public:
     };
 
     /// A cache in `root` (entries below `root`/analysis/); "" gives a cache that is off.
-    explicit AnalysisCache(const QString &root, qint64 maxBytes = kDefaultMaxBytes);
+    /// `racyWindowNs` is its file digests' (FileDigests); tests pass 0.
+    explicit AnalysisCache(const QString &root, qint64 maxBytes = kDefaultMaxBytes,
+                           qint64 racyWindowNs = FileDigests::kDefaultRacyWindowNs);
+    ~AnalysisCache();
     AnalysisCache(const AnalysisCache &) = delete;
     AnalysisCache &operator=(const AnalysisCache &) = delete;
 
     /// The cache of this process: off with ROSARCH_NO_CACHE=1, else in $ROSARCH_CACHE_DIR,
-    /// else in `<GenericCacheLocation>/rosarch`.
+    /// else in `<GenericCacheLocation>/rosarch`; bounded by $ROSARCH_CACHE_MAX_MB.
     static AnalysisCache &shared();
     /// The root shared() uses ("" when the cache is off).
     static QString defaultRoot();
+    /// The size bound shared() uses: $ROSARCH_CACHE_MAX_MB megabytes, else kDefaultMaxBytes.
+    static qint64 defaultMaxBytes();
 
     bool isEnabled() const { return m_enabled.load(); }
-    /// The folder of this build's entries.
+    /// The folder of this build's packs.
     QString directory() const { return m_directory; }
 
     /// The key of a result that depends on exactly `parts` (each given in full).
@@ -59,19 +76,40 @@ public:
 
     /// The entry of `kind` ("cpp", "python", "launch", ...) for `key`, if there is a good one.
     std::optional<QByteArray> load(const QString &kind, const QByteArray &key);
-    /// Stores an entry; a failure turns the cache off (see takeProblem()).
+    /// Stores an entry (on disk at the next flush()).
     void store(const QString &kind, const QByteArray &key, const QByteArray &payload);
+
+    /// The digests of files, memoised in this cache's folder (not kept when the cache is off).
+    FileDigests &digests() { return *m_digests; }
+
+    /// Writes the entries stored since the last flush as one pack and the digest memo, then
+    /// trims; a failure turns the cache off (see takeProblem()).
+    void flush();
 
     Statistics statistics() const;
     /// The diagnostic for the problem that turned the cache off, once; none otherwise.
     std::optional<Diagnostic> takeProblem();
 
-    /// Removes the oldest entries (of every version) while all of them exceed the size bound,
+    /// Removes the oldest packs (of every version) while all of them exceed the size bound,
     /// when anything was stored since the last trim.
     void trim();
 
 private:
-    QString entryPath(const QString &kind, const QByteArray &key) const;
+    struct Pack;
+    struct Location
+    {
+        int pack = -1; ///< in m_packs
+        qint64 offset = 0;
+        qint64 length = 0;
+        QByteArray checksum;
+    };
+    static QByteArray entryId(const QString &kind, const QByteArray &key);
+    void openPacks();
+    void rejectPack(const QString &path);
+    static std::optional<QByteArray> read(Pack &pack, const Location &where);
+    bool writePack(const std::vector<std::pair<QByteArray, QByteArray>> &entries,
+                   QString *error) const;
+    void compact();
     void fail(const QString &why);
 
     QString m_root;
@@ -80,7 +118,15 @@ private:
     std::atomic<bool> m_enabled{false};
     std::atomic<int> m_hits{0}, m_misses{0}, m_rejected{0}, m_stores{0};
     std::atomic<bool> m_storedSinceTrim{false};
-    QMutex m_mutex; ///< guards the problem
+    std::unique_ptr<FileDigests> m_digests;
+
+    mutable QMutex m_mutex; ///< guards everything below
+    bool m_opened = false;
+    std::vector<std::shared_ptr<Pack>> m_packs; ///< shared with loads reading outside the lock
+    QHash<QByteArray, Location> m_index;        ///< entryId -> where
+    std::vector<std::pair<QByteArray, QByteArray>> m_pending; ///< entryId, payload
+    QHash<QByteArray, qsizetype> m_pendingAt;                 ///< entryId -> in m_pending
+    QSet<QString> m_rejectedPacks;
     QString m_problem;
     bool m_problemTaken = false;
 };

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "diagnostic.h"
-#include "evidence.h"
 #include "languageanalysis.h"
 #include "launchaction.h"
+#include "modelfields.h"
 #include "port.h"
 #include "substitution.h"
 
@@ -171,25 +171,11 @@ template <class A, class T> void io(A &a, std::optional<T> &v)
     io(a, *v);
 }
 
-// The core value types that per-file results contain.
-template <class F> void cacheFields(Tag, Evidence &v, F f)
+// The model value types (Evidence, Diagnostic, Port, AtomicNodeList, LaunchDependencies, ...):
+// their one field list in modelfields.h. A module's own overload for a type is preferred.
+template <class T, class F> auto cacheFields(Tag, T &v, F f) -> decltype(fields(v, f))
 {
-    f(v.file, v.line, v.column, v.endLine, v.endColumn);
-}
-template <class F> void cacheFields(Tag, Diagnostic::Related &v, F f)
-{
-    f(v.message, v.evidence);
-}
-template <class F> void cacheFields(Tag, Diagnostic &v, F f)
-{
-    f(v.severity, v.code, v.message, v.evidence, v.related);
-}
-template <class F> void cacheFields(Tag, Port &v, F f)
-{
-    // `marks` is left out: analysis never sets them (the corrected model does).
-    f(v.id, v.kind, v.name, v.type, v.callback, v.nameOrigin, v.nameExpression, v.parameter,
-      v.parameterPrefix, v.parameterSuffix, v.guard, v.guardParameter, v.guardDefault, v.via, v.qos,
-      v.inherited, v.evidence, v.viaEvidence);
+    return fields(v, f);
 }
 template <class F> void cacheFields(Tag, ComponentRegistration &v, F f)
 {

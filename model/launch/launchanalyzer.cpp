@@ -5,6 +5,7 @@
 #include "pythonlaunchreader.h"
 #include "rosnames.h"
 #include "sourcereader.h"
+#include "stagememo.h"
 #include "workspacescanner.h"
 #include "xmllaunchreader.h"
 #include "yamllaunchreader.h"
@@ -12,6 +13,7 @@
 #include <QHash>
 #include <QSet>
 
+#include <algorithm>
 #include <map>
 
 namespace rosarch {
@@ -57,10 +59,8 @@ void runClassifiers(const Workspace &workspace, const AtomicNodeList &nodes,
     out->classifierNodes = std::move(alone.nodes);
 }
 
-} // namespace
-
-LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
-                                       const LaunchOptions &options, const StageControl &control)
+LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nodes,
+                           const LaunchOptions &options, const StageControl &control)
 {
     LaunchDependencies out;
     const LaunchFileIndex index(workspace, control, &out.diagnostics);
@@ -71,7 +71,6 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.append(*problem);
-    cache.trim();
     out.launchFiles = index.files();
     LaunchExecutor executor(
         workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);
@@ -161,6 +160,100 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             d.evidence = i.evidence;
             out.diagnostics.append(d);
         }
+    return out;
+}
+
+/// Exactly what the launch executor uses of stage 1's result (LaunchExecutor::resolveClasses,
+/// resolveElsewhere, executeNode, effectiveParameters): each class's id, name, package,
+/// executables, plugins, lifecycle, compile type, node name, and the ports whose parameters
+/// give defaults, with their evidence. No other source location: an edit that moves lines of
+/// a node's file and changes none of this leaves stage 2's result as it was.
+QByteArray nodesPart(const AtomicNodeList &nodes)
+{
+    QByteArray bytes;
+    QDataStream s(&bytes, QIODevice::WriteOnly);
+    s.setVersion(QDataStream::Qt_6_4);
+    cachecodec::Writer w{s};
+    s << quint32(nodes.nodes.size());
+    for (const AtomicNode &n : nodes.nodes) {
+        s << n.id << n.className << n.packageName << n.executables << n.plugins << n.lifecycle
+          << qint32(n.compileType) << n.nodeName;
+        for (const Port &p : n.ports) {
+            Evidence at = p.evidence;
+            if (p.nameOrigin == NameOrigin::Parameter && !p.parameter.isEmpty()) {
+                s << quint8(1) << p.parameter << p.name;
+                cachecodec::io(w, at);
+            }
+            if (!p.guardParameter.isEmpty()) {
+                s << quint8(2) << p.guardParameter << p.guardDefault;
+                cachecodec::io(w, at);
+            }
+        }
+        s << quint8(0);
+    }
+    return bytes;
+}
+
+/// The files the result read that are not files of the scan (a parameter file of another
+/// extension), each with its digest: checked before a memo is used.
+using ExtraFiles = QList<std::pair<QString, QByteArray>>;
+
+ExtraFiles extraFiles(const Workspace &workspace, const LaunchDependencies &out,
+                      FileDigests &digests)
+{
+    QSet<QString> scanned;
+    for (const SourceFile &f : workspace.files)
+        scanned.insert(f.path);
+    QSet<QString> seen;
+    ExtraFiles extra;
+    for (const QList<NodeInstance> *list : {&out.nodes, &out.classifierNodes})
+        for (const NodeInstance &n : *list)
+            for (const ParameterSetting &p : n.effectiveParameters)
+                if (!p.file.isEmpty() && !scanned.contains(p.file) && !seen.contains(p.file)) {
+                    seen.insert(p.file);
+                    extra.append({p.file, digests.digest(workspace.absolutePath(p.file))});
+                }
+    std::sort(extra.begin(), extra.end());
+    return extra;
+}
+
+} // namespace
+
+LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
+                                       const LaunchOptions &options, const StageControl &control)
+{
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    QByteArray key;
+    if (cache.isEnabled()) {
+        // Every file but C++ sources and headers, which stage 2 never reads (their facts reach
+        // it through `nodes`).
+        QStringList paths;
+        for (const SourceFile &f : workspace.files)
+            if (f.language != SourceFile::Language::Cpp)
+                paths.append(f.path);
+        QByteArray optionsPart;
+        QDataStream s(&optionsPart, QIODevice::WriteOnly);
+        s << options.rootFile << options.arguments;
+        key = AnalysisCache::key({"stage2", stagememo::workspacePart(workspace, control, false),
+                                  cache.digests().digestAll(workspace.root, paths), optionsPart,
+                                  nodesPart(nodes)});
+    }
+    using Memo = std::pair<ExtraFiles, LaunchDependencies>;
+    if (!key.isEmpty())
+        if (std::optional<Memo> memo = stagememo::load<Memo>(cache, QStringLiteral("stage2"), key);
+            memo && memo->first == extraFiles(workspace, memo->second, cache.digests())) {
+            cache.flush();
+            if (const std::optional<Diagnostic> problem = cache.takeProblem())
+                memo->second.diagnostics.prepend(*problem);
+            return std::move(memo->second);
+        }
+    LaunchDependencies out = analyse(workspace, nodes, options, control);
+    if (!key.isEmpty() && !out.canceled && cache.isEnabled())
+        cache.store(QStringLiteral("stage2"), key,
+                    cachecodec::encode(Memo{extraFiles(workspace, out, cache.digests()), out}));
+    cache.flush();
+    if (const std::optional<Diagnostic> problem = cache.takeProblem())
+        out.diagnostics.prepend(*problem);
     return out;
 }
 

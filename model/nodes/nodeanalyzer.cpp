@@ -2,6 +2,7 @@
 #include "analysiscache.h"
 #include "cppnodeanalyzer.h"
 #include "pythonnodeanalyzer.h"
+#include "stagememo.h"
 #include "workspacescanner.h"
 
 #include <QHash>
@@ -175,15 +176,19 @@ private:
     QMultiHash<QString, EntryPoint> m_entryPoints;
 };
 
+bool diagnosticLess(const Diagnostic &a, const Diagnostic &b)
+{
+    return std::tie(a.evidence.file, a.evidence.line, a.code) <
+           std::tie(b.evidence.file, b.evidence.line, b.code);
+}
+
 bool portLess(const Port &a, const Port &b)
 {
     return std::tie(a.evidence.file, a.evidence.line, a.evidence.column) <
            std::tie(b.evidence.file, b.evidence.line, b.evidence.column);
 }
 
-} // namespace
-
-AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control)
+AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
 {
     AtomicNodeList list;
     list.workspaceRoot = workspace.root;
@@ -204,11 +209,6 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
         list.canceled = true;
         return list;
     }
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    if (const std::optional<Diagnostic> problem = cache.takeProblem())
-        list.diagnostics.append(*problem);
-    cache.trim();
-
     Linker linker(workspace, &list.nodes, entryPoints, &list.diagnostics);
     for (const ComponentRegistration &r : std::as_const(registrations))
         linker.linkRegistration(r);
@@ -230,12 +230,43 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
         for (Port &p : n.ports)
             p.id = portIdPrefix(p.kind) + QString::number(++counters[p.kind]);
     }
-    std::stable_sort(list.diagnostics.begin(), list.diagnostics.end(),
-                     [](const Diagnostic &a, const Diagnostic &b) {
-                         return std::tie(a.evidence.file, a.evidence.line, a.code) <
-                                std::tie(b.evidence.file, b.evidence.line, b.code);
-                     });
+    std::stable_sort(list.diagnostics.begin(), list.diagnostics.end(), diagnosticLess);
     return list;
+}
+
+/// The key of stage 1's result: the scan, and every file of it with its content (the stage
+/// reads the C++ and Python files, and the headers and CMakeLists.txt files for macros; all of
+/// them are there, so a change to any file of the workspace is a new key).
+QByteArray memoKey(const Workspace &workspace, const StageControl &control, AnalysisCache &cache)
+{
+    QStringList paths;
+    paths.reserve(workspace.files.size());
+    for (const SourceFile &f : workspace.files)
+        paths.append(f.path);
+    return AnalysisCache::key({"stage1", stagememo::workspacePart(workspace, control, true),
+                               cache.digests().digestAll(workspace.root, paths)});
+}
+
+} // namespace
+
+AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control)
+{
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const QByteArray key = cache.isEnabled() ? memoKey(workspace, control, cache) : QByteArray();
+    std::optional<AtomicNodeList> list;
+    if (!key.isEmpty())
+        list = stagememo::load<AtomicNodeList>(cache, QStringLiteral("stage1"), key);
+    if (!list) {
+        list = analyse(workspace, control);
+        if (!key.isEmpty() && !list->canceled)
+            cache.store(QStringLiteral("stage1"), key, cachecodec::encode(*list));
+    }
+    cache.flush();
+    if (const std::optional<Diagnostic> problem = cache.takeProblem()) {
+        list->diagnostics.append(*problem);
+        std::stable_sort(list->diagnostics.begin(), list->diagnostics.end(), diagnosticLess);
+    }
+    return std::move(*list);
 }
 
 AtomicNodeList recoverAtomicNodes(const QString &root, const StageControl &control)

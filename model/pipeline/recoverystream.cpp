@@ -1,106 +1,11 @@
 #include "recoverystream.h"
 
+#include "modelfields.h"
+
 namespace rosarch {
 
 namespace {
 
-// One field list per type, used both ways: `f` streams every field in or out.
-template <class F> void fields(Evidence &v, F f)
-{
-    f(v.file, v.line, v.column, v.endLine, v.endColumn);
-}
-template <class F> void fields(Diagnostic::Related &v, F f)
-{
-    f(v.message, v.evidence);
-}
-template <class F> void fields(Diagnostic &v, F f)
-{
-    f(v.severity, v.code, v.message, v.evidence, v.related, v.contexts, v.aliases);
-}
-template <class F> void fields(Port &v, F f)
-{
-    f(v.id, v.kind, v.name, v.type, v.callback, v.nameOrigin, v.nameExpression, v.parameter,
-      v.parameterPrefix, v.parameterSuffix, v.guard, v.guardParameter, v.guardDefault, v.via, v.qos,
-      v.inherited, v.evidence, v.viaEvidence);
-}
-template <class F> void fields(AtomicNode &v, F f)
-{
-    f(v.id, v.className, v.qualifiedName, v.nodeName, v.packageName, v.headerFiles, v.sourceFiles,
-      v.description, v.compileType, v.baseClasses, v.lifecycle, v.procedural, v.executables,
-      v.plugins, v.pluginInterface, v.evidence, v.ports);
-}
-template <class F> void fields(Executable &v, F f)
-{
-    f(v.kind, v.name, v.target, v.plugin, v.sources, v.evidence);
-}
-template <class F> void fields(RosPackage &v, F f)
-{
-    f(v.name, v.buildType, v.path, v.evidence, v.executables);
-}
-template <class F> void fields(AtomicNodeList &v, F f)
-{
-    f(v.workspaceRoot, v.packages, v.nodes, v.diagnostics, v.canceled);
-}
-template <class F> void fields(Unresolved &v, F f)
-{
-    f(v.kind, v.expression, v.guess, v.evidence);
-}
-template <class F> void fields(ParameterSetting &v, F f)
-{
-    f(v.name, v.value, v.source, v.file, v.evidence);
-}
-template <class F> void fields(NodeInstance &v, F f)
-{
-    f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
-      v.nameSpace, v.container, v.lifecycle, v.remaps, v.parameters, v.effectiveParameters,
-      v.plugins, v.condition, v.active, v.unresolved, v.evidence);
-}
-template <class F> void fields(LaunchFileInstance &v, F f)
-{
-    f(v.id, v.type, v.file, v.package, v.format, v.parentId, v.external, v.nodes,
-      v.includedLaunchFiles, v.namespaces, v.arguments, v.condition, v.active, v.unresolved,
-      v.evidence);
-}
-template <class F> void fields(LaunchArgument &v, F f)
-{
-    f(v.name, v.defaultValue, v.hasDefault, v.description, v.launchFile, v.evidence);
-}
-template <class F> void fields(LaunchDependencies &v, F f)
-{
-    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.classifierInstances, v.classifierNodes,
-      v.diagnostics, v.canceled);
-}
-template <class F> void fields(PartPort &v, F f)
-{
-    f(v.id, v.kind, v.nameAsWritten, v.name, v.type, v.resolved, v.parameterDerived, v.remapped,
-      v.active, v.guard, v.qos, v.evidence);
-}
-template <class F> void fields(RosNodePart &v, F f)
-{
-    f(v.id, v.kind, v.instanceId, v.name, v.typeName, v.typeId, v.nameSpace, v.active, v.external,
-      v.typed, v.ports, v.evidence, v.subsystem);
-}
-template <class F> void fields(Channel &v, F f)
-{
-    f(v.id, v.kind, v.name, v.type);
-}
-template <class F> void fields(BoundaryPort &v, F f)
-{
-    f(v.id, v.kind, v.name, v.type);
-}
-template <class F> void fields(Connection &v, F f)
-{
-    f(v.kind, v.partId, v.portId, v.targetId);
-}
-template <class F> void fields(Composite &v, F f)
-{
-    f(v.instanceId, v.stem, v.file, v.package, v.parentId, v.parts, v.channels, v.boundary,
-      v.connections);
-}
-template <class F> void fields(Architecture &v, F f)
-{
-    f(v.composites, v.classifiers, v.diagnostics, v.canceled);
-}
 template <class F> void fields(Recovery &v, F f)
 {
     f(v.nodes, v.launch, v.architecture);

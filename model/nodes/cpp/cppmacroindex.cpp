@@ -43,6 +43,26 @@ CppMacroIndex::CppMacroIndex(const Workspace &workspace, const SourceReader &rea
                              const StageControl &control)
     : m_workspace(&workspace), m_reader(&reader), m_control(&control)
 {
+    indexFiles(workspace, reader);
+    for (const SourceFile &file : workspace.files) {
+        if (control.isCanceled())
+            break;
+        if (file.language == SourceFile::Language::Cpp && cppsyntax::isHeaderPath(file.path))
+            exportsOf(file.path, 0);
+    }
+    m_visiting.clear();
+    m_control = nullptr;
+}
+
+CppMacroIndex::CppMacroIndex(const Workspace &workspace, const SourceReader &reader,
+                             QHash<QString, CppMacros> exports)
+    : m_workspace(&workspace), m_reader(&reader), m_exports(std::move(exports))
+{
+    indexFiles(workspace, reader);
+}
+
+void CppMacroIndex::indexFiles(const Workspace &workspace, const SourceReader &reader)
+{
     for (const SourceFile &file : workspace.files) {
         if (file.language != SourceFile::Language::Cpp)
             continue;
@@ -67,14 +87,6 @@ CppMacroIndex::CppMacroIndex(const Workspace &workspace, const SourceReader &rea
             reader.read(cmake, &content, &ignored))
             m_packageDefinitions.insert(package.name, compileDefinitions(content));
     }
-    for (const SourceFile &file : workspace.files) {
-        if (control.isCanceled())
-            break;
-        if (file.language == SourceFile::Language::Cpp && cppsyntax::isHeaderPath(file.path))
-            exportsOf(file.path, 0);
-    }
-    m_visiting.clear();
-    m_control = nullptr;
 }
 
 CppMacros CppMacroIndex::initialMacros(const QString &package) const

@@ -26,6 +26,13 @@ public:
     CppMacroIndex() = default;
     CppMacroIndex(const Workspace &workspace, const SourceReader &reader,
                   const StageControl &control = {});
+    /// The index with the headers' exports given, as exports() gave them for the same headers
+    /// (the analysis cache's memo): no header is read.
+    CppMacroIndex(const Workspace &workspace, const SourceReader &reader,
+                  QHash<QString, CppMacros> exports);
+
+    /// The macros each workspace header exports.
+    const QHash<QString, CppMacros> &exports() const { return m_exports; }
 
     /// The macros a file of `package` starts with: a few the compiler predefines
     /// (`__cplusplus`, `__linux__`, `__GNUC__`) and the package's compile definitions.
@@ -41,6 +48,7 @@ public:
     static CppMacros compileDefinitions(const QByteArray &cmakeLists);
 
 private:
+    void indexFiles(const Workspace &workspace, const SourceReader &reader);
     const CppMacros *exportsOf(const QString &header, int depth);
 
     const Workspace *m_workspace = nullptr;

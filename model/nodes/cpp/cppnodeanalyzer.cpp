@@ -8,15 +8,72 @@
 #include "cppnodelinker.h"
 #include "cppsyntax.h"
 #include "sourcereader.h"
+#include "stagememo.h"
 #include "syntaxtree.h"
 
 #include <QMutex>
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
+#include <memory>
+
 namespace rosarch {
 
 namespace {
+
+/// What a C++ file's preprocessing depended on besides its text and initial macros: each
+/// `#include` it looked up with the digest of the exports it got (ccache's direct mode).
+/// When every lookup gives the same again, the preprocessing would too: `key` is the key of
+/// the file's facts, and `diagnostics` the preprocessor's, without preprocessing.
+struct CppManifest
+{
+    QList<QByteArray> written;
+    QList<bool> angled;
+    QList<QByteArray> exports;
+    QList<Diagnostic> diagnostics;
+    QByteArray key;
+};
+
+} // namespace
+
+namespace cachecodec {
+template <class F> void cacheFields(Tag, CppMacro &v, F f)
+{
+    f(v.body, v.parameters, v.functionLike);
+}
+template <class F> void cacheFields(Tag, CppManifest &v, F f)
+{
+    f(v.written, v.angled, v.exports, v.diagnostics, v.key);
+}
+} // namespace cachecodec
+
+namespace {
+
+/// The macro index, from the cache when no header and no CMakeLists.txt changed.
+std::unique_ptr<CppMacroIndex> macroIndexOf(const Workspace &ws, const SourceReader &reader,
+                                            const StageControl &control, AnalysisCache &cache)
+{
+    if (!cache.isEnabled())
+        return std::make_unique<CppMacroIndex>(ws, reader, control);
+    QStringList read; // every file the index may read
+    for (const SourceFile &f : ws.files)
+        if (f.language == SourceFile::Language::Cpp && cppsyntax::isHeaderPath(f.path))
+            read.append(f.path);
+    for (const RosPackage &p : ws.packages)
+        read.append(p.path.isEmpty() ? QStringLiteral("CMakeLists.txt")
+                                     : p.path + QStringLiteral("/CMakeLists.txt"));
+    const QByteArray key =
+        AnalysisCache::key({"cppmacros", stagememo::workspacePart(ws, control, false),
+                            cache.digests().digestAll(ws.root, read)});
+    using Exports = QHash<QString, CppMacros>;
+    if (std::optional<Exports> exports =
+            stagememo::load<Exports>(cache, QStringLiteral("cppmacros"), key))
+        return std::make_unique<CppMacroIndex>(ws, reader, std::move(*exports));
+    auto index = std::make_unique<CppMacroIndex>(ws, reader, control);
+    if (!control.isCanceled())
+        cache.store(QStringLiteral("cppmacros"), key, cachecodec::encode(index->exports()));
+    return index;
+}
 
 Diagnostic analysisFailed(const QString &file, const std::exception &e)
 {
@@ -44,10 +101,23 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
     const SourceReader reader(m_workspace.root);
     // Before any file is parsed: the macros the packages and the workspace headers define, so
     // that conditional compilation is decided as the build decides it.
-    const CppMacroIndex macroIndex(m_workspace, reader, control);
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const std::unique_ptr<CppMacroIndex> index = macroIndexOf(m_workspace, reader, control, cache);
+    const CppMacroIndex &macroIndex = *index;
     if (control.isCanceled())
         return {};
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    // Digests of each header's exports and of each package's initial macros, for the manifests.
+    QHash<const CppMacros *, QByteArray> exportDigests;
+    for (auto it = macroIndex.exports().cbegin(); it != macroIndex.exports().cend(); ++it)
+        exportDigests.insert(&it.value(), CppFactsCodec::digest(it.value()));
+    QHash<QString, QByteArray> initialDigests;
+    for (const SourceFile *file : std::as_const(sources))
+        if (!initialDigests.contains(file->package))
+            initialDigests.insert(file->package,
+                                  CppFactsCodec::digest(macroIndex.initialMacros(file->package)));
+    auto digestOf = [&](const CppMacros *exports) {
+        return exports ? exportDigests.value(exports) : QByteArray();
+    };
     const int total = int(sources.size());
     int done = 0;
     QMutex reportMutex;
@@ -61,9 +131,40 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         QByteArray bytes;
         if (!work.skip(&facts.diagnostics) && reader.read(file->path, &bytes, &facts.diagnostics)) {
             try {
+                const CppPreprocessor::IncludeLookup lookup = macroIndex.lookup(file->path);
+                const QByteArray manifestKey = AnalysisCache::key(
+                    {"cppmanifest", file->path.toUtf8(), file->package.toUtf8(),
+                     FileDigests::digestOf(bytes), initialDigests.value(file->package)});
+                if (std::optional<CppManifest> manifest = stagememo::load<CppManifest>(
+                        cache, QStringLiteral("cppmanifest"), manifestKey);
+                    manifest && manifest->written.size() == manifest->angled.size() &&
+                    manifest->written.size() == manifest->exports.size()) {
+                    bool same = true;
+                    for (qsizetype i = 0; same && i < manifest->written.size(); ++i)
+                        same = digestOf(lookup(manifest->written.at(i), manifest->angled.at(i))) ==
+                               manifest->exports.at(i);
+                    const std::optional<QByteArray> cached =
+                        same ? cache.load(QStringLiteral("cpp"), manifest->key) : std::nullopt;
+                    if (cached && CppFactsCodec::decode(*cached, &facts)) {
+                        facts.diagnostics = manifest->diagnostics + facts.diagnostics;
+                        QMutexLocker lock(&reportMutex);
+                        control.report(++done, total, file->path);
+                        return facts;
+                    }
+                    facts = CppFileFacts();
+                    facts.path = file->path;
+                    facts.package = file->package;
+                }
+                CppManifest manifest;
+                auto recording = [&](const QByteArray &written, bool angled) {
+                    const CppMacros *exports = lookup(written, angled);
+                    manifest.written.append(written);
+                    manifest.angled.append(angled);
+                    manifest.exports.append(digestOf(exports));
+                    return exports;
+                };
                 CppPreprocessor::Result preprocessed = CppPreprocessor::run(
-                    &bytes, file->path, macroIndex.initialMacros(file->package),
-                    macroIndex.lookup(file->path));
+                    &bytes, file->path, macroIndex.initialMacros(file->package), recording);
                 // The facts depend on the text the preprocessor leaves and the macros in
                 // effect at its end, so those (and where the file is) are the key.
                 const QByteArray key =
@@ -81,6 +182,10 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     facts.diagnostics = isolated + facts.diagnostics;
                     cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
                 }
+                manifest.diagnostics = preprocessed.diagnostics;
+                manifest.key = key;
+                cache.store(QStringLiteral("cppmanifest"), manifestKey,
+                            cachecodec::encode(manifest));
                 facts.diagnostics = preprocessed.diagnostics + facts.diagnostics;
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();

@@ -1,7 +1,8 @@
-// The analysis cache: a second run reads every file from it and gives the same recovery; an
-// edit re-analyses exactly the edited file (and a header's macros reach the files including
-// it); damaged entries and an unusable folder cost the cache, never the result; the size bound
-// evicts the oldest entries. Every cache lives in a temporary folder.
+// The analysis cache: a second run reads its stages from the cache and gives the same
+// recovery; an edit re-analyses exactly the edited file (and a header's macros reach the files
+// including it); damaged and vanished packs cost the cache, never the result; two caches share
+// a folder; an unusable folder means one diagnostic; the size bound evicts the oldest packs.
+// Every cache lives in a temporary folder.
 #include "analysiscache.h"
 #include "recovery.h"
 #include "testsupport.h"
@@ -14,7 +15,7 @@ using namespace rosarch;
 
 namespace {
 
-/// Stages 1-3 on `root` with `cache`; the cache's statistics of that run only.
+/// Stages 1-3 on `root` with `cache`.
 Recovery recoverWith(const QString &root, AnalysisCache *cache)
 {
     StageControl control;
@@ -28,10 +29,11 @@ Recovery recoverUncached(const QString &root)
     return recoverWith(root, &off);
 }
 
-QStringList entries(const QString &cacheRoot)
+QStringList packs(const QString &cacheRoot)
 {
     QStringList out;
-    QDirIterator it(cacheRoot, QDir::Files, QDirIterator::Subdirectories);
+    QDirIterator it(cacheRoot, {QStringLiteral("*.pack")}, QDir::Files,
+                    QDirIterator::Subdirectories);
     while (it.hasNext())
         out << it.next();
     out.sort();
@@ -48,14 +50,20 @@ QStringList portNames(const Recovery &r, const QString &className)
     return names;
 }
 
-int countCode(const Recovery &r, const QString &code)
+QList<Diagnostic> withCode(const Recovery &r, const QString &code)
 {
-    int n = 0;
+    QList<Diagnostic> out;
     for (const QList<Diagnostic> *list :
          {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
         for (const Diagnostic &d : *list)
-            n += d.code == code ? 1 : 0;
-    return n;
+            if (d.code == code)
+                out.append(d);
+    return out;
+}
+
+QByteArray keyOf(int i)
+{
+    return AnalysisCache::key({QByteArray::number(i)});
 }
 
 } // namespace
@@ -77,30 +85,32 @@ private Q_SLOTS:
         test::copyTree(test::dataDir(QStringLiteral("compose_system/ws")), m_ws);
     }
 
-    void secondRunReadsEveryFileFromCache()
+    void secondRunReadsBothStagesFromTheCache()
     {
-        AnalysisCache first(m_cache);
+        AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         QVERIFY(first.isEnabled());
         const Recovery cold = recoverWith(m_ws, &first);
-        // 3 C++ files, 4 Python files (the launch file among them), 2 launch files.
-        QCOMPARE(first.statistics().stores, 9);
+        // 3 C++ files, 4 Python files (the launch file among them), 2 launch files; the
+        // memos of stages 1 and 2, the macro index and the 3 C++ manifests.
+        QCOMPARE(first.statistics().stores, 15);
         QCOMPARE(first.statistics().hits, 0);
-        QCOMPARE(entries(m_cache).size(), 9);
+        QCOMPARE(packs(m_cache).size(), 2); // one per stage's flush
         QVERIFY(!cold.nodes.nodes.isEmpty());
         QVERIFY(!cold.architecture.composites.isEmpty());
 
-        AnalysisCache second(m_cache);
+        AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         const Recovery warm = recoverWith(m_ws, &second);
-        QCOMPARE(second.statistics().hits, 9);
+        QCOMPARE(second.statistics().hits, 2); // the two memos, nothing per file
         QCOMPARE(second.statistics().misses, 0);
         QCOMPARE(second.statistics().stores, 0);
+        QCOMPARE(second.digests().hashed(), 0); // every file known by its stat
         QVERIFY(warm == cold);
         QVERIFY(warm == recoverUncached(m_ws));
     }
 
     void editingOneFileReanalysesExactlyThatFile()
     {
-        AnalysisCache first(m_cache);
+        AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         recoverWith(m_ws, &first);
         const QString camera = m_ws + QStringLiteral("/src/vision/src/camera.cpp");
         QByteArray source = test::readFile(camera);
@@ -109,11 +119,11 @@ private Q_SLOTS:
         source.replace(at, 11, "\"image_edited\"");
         test::writeFile(camera, source);
 
-        AnalysisCache second(m_cache);
+        AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         const Recovery edited = recoverWith(m_ws, &second);
-        QCOMPARE(second.statistics().misses, 1);
-        QCOMPARE(second.statistics().stores, 1);
-        QCOMPARE(second.statistics().hits, 8);
+        QCOMPARE(second.statistics().misses, 3); // the stage 1 memo, camera.cpp, its manifest
+        QCOMPARE(second.statistics().stores, 3);
+        QCOMPARE(second.digests().hashed(), 1);
         QVERIFY(edited == recoverUncached(m_ws));
         bool found = false;
         for (const AtomicNode &n : edited.nodes.nodes)
@@ -140,36 +150,90 @@ private Q_SLOTS:
         QVERIFY(
             portNames(after, QStringLiteral("RoverDriver")).contains(QStringLiteral("odometry")));
         QVERIFY(after == recoverUncached(ws));
-        QVERIFY(second.statistics().misses >= 2); // the header and the driver that includes it
+        QVERIFY(second.statistics().misses >= 3); // the memo, the header, the driver
     }
 
-    void damagedEntriesAreAnalysedAgain()
+    void damagedPacksAreAnalysedAgain()
     {
         AnalysisCache first(m_cache);
         const Recovery cold = recoverWith(m_ws, &first);
-        const QStringList files = entries(m_cache);
-        QCOMPARE(files.size(), 9);
-        // Truncated, a flipped byte, another entry's bytes (foreign), garbage, empty.
-        const QByteArray other = test::readFile(files.at(1));
-        QFile truncated(files.at(0));
+        const QStringList files = packs(m_cache);
+        QCOMPARE(files.size(), 2);
+        // A flipped byte inside the first pack's entries; the second pack truncated; a
+        // foreign file named like a pack.
+        // (the last entry before the index, the stage 1 memo)
+        QByteArray flipped = test::readFile(files.at(0));
+        const qint64 indexAt = qFromBigEndian<qint64>(flipped.constData() + flipped.size() - 32);
+        flipped[indexAt - 10] = char(flipped.at(indexAt - 10) ^ 0x5a);
+        test::writeFile(files.at(0), flipped);
+        QFile truncated(files.at(1));
         QVERIFY(truncated.resize(truncated.size() / 2));
-        QByteArray flipped = test::readFile(files.at(2));
-        flipped[flipped.size() / 2] = char(flipped.at(flipped.size() / 2) ^ 0x5a);
-        test::writeFile(files.at(2), flipped);
-        test::writeFile(files.at(3), other);
-        test::writeFile(files.at(4), QByteArray(4096, '\xff'));
-        test::writeFile(files.at(5), QByteArray());
+        test::writeFile(QFileInfo(files.at(0)).path() + QStringLiteral("/0-garbage.pack"),
+                        QByteArray(4096, '\xff'));
 
         AnalysisCache second(m_cache);
         const Recovery again = recoverWith(m_ws, &second);
-        QCOMPARE(second.statistics().rejected, 5);
-        QCOMPARE(second.statistics().hits, 4);
-        QCOMPARE(second.statistics().stores, 5); // written anew
+        QCOMPARE(second.statistics().rejected, 3);
         QVERIFY(again == cold);
 
         AnalysisCache third(m_cache);
         QVERIFY(recoverWith(m_ws, &third) == cold);
-        QCOMPARE(third.statistics().hits, 9);
+        QCOMPARE(third.statistics().misses, 0);
+    }
+
+    void aVanishedPackIsAMiss()
+    {
+        {
+            AnalysisCache writer(m_cache);
+            writer.store(QStringLiteral("cpp"), keyOf(1), "one");
+            writer.store(QStringLiteral("cpp"), keyOf(2), "two");
+        } // flushed when destroyed
+        AnalysisCache opened(m_cache);
+        QCOMPARE(opened.load(QStringLiteral("cpp"), keyOf(1)), std::optional<QByteArray>("one"));
+        AnalysisCache notYetOpened(m_cache);
+        for (const QString &pack : packs(m_cache)) // as another process's trim would
+            QVERIFY(QFile::remove(pack));
+        // A pack already open stays readable; one gone before it was opened is a miss.
+        QCOMPARE(opened.load(QStringLiteral("cpp"), keyOf(2)), std::optional<QByteArray>("two"));
+        QVERIFY(!notYetOpened.load(QStringLiteral("cpp"), keyOf(2)));
+        QCOMPARE(notYetOpened.statistics().misses, 1);
+        QVERIFY(recoverWith(m_ws, &notYetOpened) == recoverUncached(m_ws));
+    }
+
+    void twoCachesShareAFolder()
+    {
+        AnalysisCache a(m_cache);
+        AnalysisCache b(m_cache);
+        const Recovery ra = recoverWith(m_ws, &a);
+        const Recovery rb = recoverWith(m_ws, &b);
+        a.store(QStringLiteral("cpp"), keyOf(1), "from a");
+        b.store(QStringLiteral("cpp"), keyOf(2), "from b");
+        b.flush();
+        a.flush();
+        QVERIFY(ra == rb);
+        AnalysisCache c(m_cache);
+        QCOMPARE(c.load(QStringLiteral("cpp"), keyOf(1)), std::optional<QByteArray>("from a"));
+        QCOMPARE(c.load(QStringLiteral("cpp"), keyOf(2)), std::optional<QByteArray>("from b"));
+        QVERIFY(recoverWith(m_ws, &c) == ra);
+        QCOMPARE(c.statistics().rejected, 0);
+        // No temporary file is left behind.
+        QDirIterator it(m_cache, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
+        while (it.hasNext())
+            QVERIFY2(!it.next().contains(QLatin1String(".tmp-")), qPrintable(it.filePath()));
+    }
+
+    void manyPacksAreMerged()
+    {
+        AnalysisCache cache(m_cache);
+        for (int i = 0; i < 3 * AnalysisCache::kMaxPacks; ++i) {
+            cache.store(QStringLiteral("cpp"), keyOf(i), QByteArray::number(i));
+            cache.flush();
+        }
+        QVERIFY(packs(m_cache).size() <= AnalysisCache::kMaxPacks);
+        AnalysisCache reader(m_cache);
+        for (int i = 0; i < 3 * AnalysisCache::kMaxPacks; ++i)
+            QCOMPARE(reader.load(QStringLiteral("cpp"), keyOf(i)),
+                     std::optional<QByteArray>(QByteArray::number(i)));
     }
 
     void anUnusableFolderMeansNoCacheAndOneDiagnostic()
@@ -179,53 +243,53 @@ private Q_SLOTS:
         AnalysisCache blocked(m_cache + QStringLiteral("/below"));
         QVERIFY(!blocked.isEnabled());
         const Recovery r = recoverWith(m_ws, &blocked);
-        QCOMPARE(countCode(r, QStringLiteral("cache-unavailable")), 1);
+        const QList<Diagnostic> problems = withCode(r, QStringLiteral("cache-unavailable"));
+        QCOMPARE(problems.size(), 1);
+        QVERIFY(problems.at(0).message.contains(m_cache + QStringLiteral("/below")));
+        QCOMPARE(problems.at(0).related.size(), 1);
+        QVERIFY(problems.at(0).related.at(0).evidence.file.startsWith(m_cache));
         QCOMPARE(r.nodes.nodes, recoverUncached(m_ws).nodes.nodes);
         QCOMPARE(r.architecture, recoverUncached(m_ws).architecture);
     }
 
     void aFailedWriteTurnsTheCacheOffForTheRun()
     {
-        // The C++ entries cannot be written (as on a full disk); the run goes on without them.
+        // The folder is replaced by a file after the cache opened it (as a full disk would
+        // refuse the pack); the run goes on without the cache.
         AnalysisCache cache(m_cache);
         QVERIFY(cache.isEnabled());
-        test::writeFile(cache.directory() + QStringLiteral("/cpp"), "in the way");
+        QVERIFY(QDir(cache.directory()).removeRecursively());
+        test::writeFile(cache.directory(), "in the way");
         const Recovery r = recoverWith(m_ws, &cache);
         QVERIFY(!cache.isEnabled());
-        QCOMPARE(countCode(r, QStringLiteral("cache-unavailable")), 1);
+        const QList<Diagnostic> problems = withCode(r, QStringLiteral("cache-unavailable"));
+        QCOMPARE(problems.size(), 1);
+        QVERIFY(problems.at(0).message.contains(cache.directory()));
         Recovery uncached = recoverUncached(m_ws);
         QCOMPARE(r.nodes.nodes, uncached.nodes.nodes);
         QCOMPARE(r.launch.nodes, uncached.launch.nodes);
     }
 
-    void theSizeBoundEvictsTheOldestEntries()
+    void theSizeBoundEvictsTheOldestPacks()
     {
         AnalysisCache cache(m_cache, 10 * 1024);
-        const QByteArray payload(3000, 'x');
-        for (int i = 0; i < 6; ++i)
-            cache.store(QStringLiteral("cpp"), AnalysisCache::key({QByteArray::number(i)}),
-                        payload);
-        QStringList files = entries(m_cache);
-        QCOMPARE(files.size(), 6);
-        // Entry i was written i hours ago: the oldest are the highest numbers.
-        for (int i = 0; i < 6; ++i) {
-            const QString path =
-                cache.directory() + QStringLiteral("/cpp/") +
-                QString::fromLatin1(AnalysisCache::key({QByteArray::number(i)}).toHex().left(2)) +
-                QLatin1Char('/') +
-                QString::fromLatin1(AnalysisCache::key({QByteArray::number(i)}).toHex());
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::ReadWrite));
-            QVERIFY(f.setFileTime(QDateTime::currentDateTime().addSecs(-3600 * i),
-                                  QFileDevice::FileModificationTime));
+        const QByteArray payload(2900, 'x');
+        for (int i = 0; i < 6; ++i) { // one pack each, written in order
+            cache.store(QStringLiteral("cpp"), keyOf(i), payload);
+            cache.flush();
         }
-        cache.trim();
-        files = entries(m_cache);
-        QCOMPARE(files.size(), 3); // 3 entries of ~3 KB fit in 90% of 10 KB, 4 do not
+        QCOMPARE(packs(m_cache).size(), 3); // 3 packs of ~3 KB fit in 90% of 10 KB, 4 do not
         for (int i = 0; i < 6; ++i)
-            QCOMPARE(bool(cache.load(QStringLiteral("cpp"),
-                                     AnalysisCache::key({QByteArray::number(i)}))),
-                     i < 3);
+            QCOMPARE(bool(cache.load(QStringLiteral("cpp"), keyOf(i))), i >= 3);
+    }
+
+    void theBoundComesFromTheEnvironment()
+    {
+        qputenv("ROSARCH_CACHE_MAX_MB", "12");
+        QCOMPARE(AnalysisCache::defaultMaxBytes(), 12LL * 1024 * 1024);
+        qputenv("ROSARCH_CACHE_MAX_MB", "none");
+        QCOMPARE(AnalysisCache::defaultMaxBytes(), AnalysisCache::kDefaultMaxBytes);
+        qunsetenv("ROSARCH_CACHE_MAX_MB");
     }
 };
 

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "analysiscache.h"
+#include "cachecodec.h"
+
+#include <QMap>
+
+// Whole-stage memos: a stage's result in the analysis cache, under a key made of everything the
+// stage reads. Templates over the workspace and control types, so that the cache library does
+// not depend on the workspace scanner's.
+
+namespace rosarch::stagememo {
+
+/// What a stage knows of a scanned workspace besides the files' contents: its root, packages,
+/// files (path, package, language, and the size when `sizes`), the scan's diagnostics, and the
+/// files the control says to skip.
+template <class Workspace, class Control>
+QByteArray workspacePart(const Workspace &ws, const Control &control, bool sizes)
+{
+    QByteArray bytes;
+    QDataStream s(&bytes, QIODevice::WriteOnly);
+    s.setVersion(QDataStream::Qt_6_4);
+    cachecodec::Writer w{s};
+    auto root = ws.root;
+    auto packages = ws.packages;
+    auto diagnostics = ws.diagnostics;
+    QMap<QString, QString> skipped; // sorted: a QHash's order differs between processes
+    for (auto it = control.skipped.cbegin(); it != control.skipped.cend(); ++it)
+        skipped.insert(it.key(), it.value());
+    cachecodec::io(w, root);
+    cachecodec::io(w, packages);
+    cachecodec::io(w, diagnostics);
+    cachecodec::io(w, skipped);
+    s << quint32(ws.files.size());
+    for (const auto &f : ws.files)
+        s << f.path << f.package << qint32(f.language) << qint64(sizes ? f.size : 0);
+    return bytes;
+}
+
+/// The memo of `kind` under `key`, when there is a good one.
+template <class T>
+std::optional<T> load(AnalysisCache &cache, const QString &kind, const QByteArray &key)
+{
+    const std::optional<QByteArray> bytes = cache.load(kind, key);
+    T value;
+    if (!bytes || !cachecodec::decode(*bytes, &value))
+        return std::nullopt;
+    return value;
+}
+
+} // namespace rosarch::stagememo

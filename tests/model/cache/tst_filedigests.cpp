@@ -1,0 +1,127 @@
+// File digests: known by stat when nothing changed, and read again when anything stat shows
+// changed, even a rewrite of the same size with the mtime set back; the memo survives a
+// process and a damaged memo is no memo.
+#include "filedigests.h"
+#include "testsupport.h"
+
+#include <QCryptographicHash>
+#include <QDateTime>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <sys/stat.h>
+
+using namespace rosarch;
+
+namespace {
+
+QByteArray sha1(const QByteArray &bytes)
+{
+    return QCryptographicHash::hash(bytes, QCryptographicHash::Sha1);
+}
+
+qint64 ctimeNs(const QString &path)
+{
+    struct stat st = {};
+    ::stat(QFile::encodeName(path).constData(), &st);
+    return qint64(st.st_ctim.tv_sec) * 1'000'000'000 + st.st_ctim.tv_nsec;
+}
+
+} // namespace
+
+class TestFileDigests : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_temp;
+
+private Q_SLOTS:
+    void unchangedFilesAreNotReadAgain()
+    {
+        const QString file = m_temp.filePath(QStringLiteral("a.cpp"));
+        test::writeFile(file, "int a;\n");
+        FileDigests digests(QString(), 0);
+        QCOMPARE(digests.digest(file), sha1("int a;\n"));
+        QCOMPARE(digests.digest(file), sha1("int a;\n"));
+        QCOMPARE(digests.hashed(), 1);
+        QVERIFY(digests.digest(m_temp.filePath(QStringLiteral("missing"))).isEmpty());
+    }
+
+    void sameSizeAndRewoundMtimeIsStillSeen()
+    {
+        const QString file = m_temp.filePath(QStringLiteral("b.cpp"));
+        test::writeFile(file, "int b = 1;\n");
+        FileDigests digests(QString(), 0);
+        QCOMPARE(digests.digest(file), sha1("int b = 1;\n"));
+        const QDateTime mtime = QFileInfo(file).lastModified();
+        const qint64 ctime = ctimeNs(file);
+        // ctime moves with the clock's tick: wait for a tick, so that the rewrite's differs.
+        QTRY_VERIFY_WITH_TIMEOUT((test::writeFile(m_temp.filePath(QStringLiteral("tick")), "t"),
+                                  ctimeNs(m_temp.filePath(QStringLiteral("tick"))) > ctime),
+                                 5000);
+        // The same size, in place (same inode), the mtime set back: only ctime tells.
+        test::writeFile(file, "int b = 2;\n");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        QVERIFY(f.setFileTime(mtime, QFileDevice::FileModificationTime));
+        f.close();
+        QCOMPARE(QFileInfo(file).size(), qint64(11));
+        QCOMPARE(digests.digest(file), sha1("int b = 2;\n"));
+        // Replaced by another file (a new inode), as editors save.
+        const QString other = m_temp.filePath(QStringLiteral("b.new"));
+        test::writeFile(other, "int b = 3;\n");
+        QVERIFY(QFile::remove(file));
+        QVERIFY(QFile::rename(other, file));
+        QCOMPARE(digests.digest(file), sha1("int b = 3;\n"));
+        QCOMPARE(digests.hashed(), 3);
+    }
+
+    void aFileChangedJustNowIsNotMemoised()
+    {
+        // Within the racy window a second write could keep every stat field: read each time.
+        const QString file = m_temp.filePath(QStringLiteral("c.cpp"));
+        test::writeFile(file, "int c;\n");
+        FileDigests digests;
+        digests.digest(file);
+        digests.digest(file);
+        QCOMPARE(digests.hashed(), 2);
+    }
+
+    void theMemoSurvivesAndADamagedOneIsIgnored()
+    {
+        const QString file = m_temp.filePath(QStringLiteral("d.cpp"));
+        const QString memo = m_temp.filePath(QStringLiteral("digests"));
+        test::writeFile(file, "int d;\n");
+        {
+            FileDigests first(memo, 0);
+            first.digest(file);
+            QString error;
+            QVERIFY2(first.save(&error), qPrintable(error));
+        }
+        FileDigests second(memo, 0);
+        QCOMPARE(second.digest(file), sha1("int d;\n"));
+        QCOMPARE(second.hashed(), 0);
+
+        QByteArray bytes = test::readFile(memo);
+        bytes[bytes.size() / 2] = char(bytes.at(bytes.size() / 2) ^ 0x21);
+        test::writeFile(memo, bytes);
+        FileDigests third(memo, 0);
+        QCOMPARE(third.digest(file), sha1("int d;\n"));
+        QCOMPARE(third.hashed(), 1);
+    }
+
+    void digestAllListsEachFile()
+    {
+        test::writeFile(m_temp.filePath(QStringLiteral("e/x.py")), "x = 1\n");
+        test::writeFile(m_temp.filePath(QStringLiteral("e/y.py")), "y = 2\n");
+        FileDigests digests(QString(), 0);
+        const QByteArray all = digests.digestAll(m_temp.filePath(QStringLiteral("e")),
+                                                 {QStringLiteral("x.py"), QStringLiteral("y.py")});
+        QCOMPARE(all, QByteArray("x.py") + '\0' + sha1("x = 1\n").toHex() + '\n' + "y.py" + '\0' +
+                          sha1("y = 2\n").toHex() + '\n');
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFileDigests)
+#include "tst_filedigests.moc"
