@@ -32,6 +32,7 @@ const QString kLlmConnectTimeout = QStringLiteral("llm/connectTimeoutMs");
 const QString kLlmRequestTimeout = QStringLiteral("llm/requestTimeoutMs");
 const QString kLlmUse = QStringLiteral("llm/use");
 const QString kWatchWorkspace = QStringLiteral("workspace/watch");
+const QString kLogFilter = QStringLiteral("log/filter");
 
 QString normalized(const QString &path)
 {
@@ -279,6 +280,16 @@ void AppSettings::setDiagramRoot(const QString &workspace, const QString &rootFi
     else
         all.insert(normalized(workspace), rootFile);
     m_settings->setValue(kDiagramRoots, all);
+}
+
+QVariantMap AppSettings::logFilter() const
+{
+    return m_settings->value(kLogFilter).toMap();
+}
+
+void AppSettings::setLogFilter(const QVariantMap &filter)
+{
+    m_settings->setValue(kLogFilter, filter);
 }
 
 } // namespace rosarch

@@ -5,6 +5,7 @@
 
 #include <QByteArray>
 #include <QStringList>
+#include <QVariantMap>
 
 #include <memory>
 
@@ -60,6 +61,9 @@ public:
     /// The root launch file (workspace-relative) a person chose for the composed diagram of
     /// `workspace` ("" when never chosen).
     QString diagramRoot(const QString &workspace) const;
+    /// The Log's filter and grouping (DiagnosticFilterBar::state), for every workspace.
+    QVariantMap logFilter() const;
+    void setLogFilter(const QVariantMap &filter);
     void setDiagramRoot(const QString &workspace, const QString &rootFile);
 
     /// The LLM endpoint, model, temperature and timeouts (never the API key); when nothing

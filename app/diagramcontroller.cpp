@@ -60,8 +60,10 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
         const StallScope scope("DiagramController (document changed)");
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             onModelReset();
-        else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections))
+        else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections)) {
             showArchitecture(); // accepted decisions and corrections change what is drawn
+            refreshTalkers();   // and who talks where
+        }
     });
     connect(m_launchPanel, &LaunchTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) {
@@ -98,7 +100,10 @@ QString channelFamily(Channel::Kind kind)
 
 void DiagramController::showArchitecture()
 {
-    Architecture accepted = m_document->accepted().architecture;
+    Architecture accepted = [this] {
+        const StallScope scope("DiagramController accepted model");
+        return m_document->accepted().architecture;
+    }();
     // A renamed topic, service or action is a person's correction too: drawn as such.
     for (const Correction &c : m_document->corrections()) {
         if (c.kind != Correction::Kind::Rename)
@@ -111,13 +116,17 @@ void DiagramController::showArchitecture()
     }
     if (!m_preview.isEmpty()) // the accepted model with the previewed grouping on top
         accepted = SubsystemGrouping::apply(accepted, m_preview);
-    const QList<LaunchRoot> roots = RootChoice::roots(accepted, m_document->launchDependencies());
+    const QList<LaunchRoot> roots = [&] {
+        const StallScope scope("DiagramController RootChoice::roots");
+        return RootChoice::roots(accepted, m_document->launchDependencies());
+    }();
     // Where to start when the composite shown is gone: the project's launch root, else the
     // root a person chose here before, else the one most likely wanted (or ask).
     QString remembered = m_document->launchOptions().rootFile;
     if (remembered.isEmpty() && !m_document->workspaceRoot().isEmpty())
         remembered = AppSettings().diagramRoot(m_document->workspaceRoot());
     const RootChoice start = RootChoice::choose(roots, remembered);
+    const StallScope scope("DiagramPanel::setArchitecture");
     m_panel->setArchitecture(accepted, roots, start);
 }
 
@@ -142,8 +151,23 @@ void DiagramController::previewGrouping(const QString &name, const QStringList &
         onLaunchItemSelected(memberIds.first());
 }
 
+void DiagramController::refreshTalkers()
+{
+    if (!m_talkersQuery)
+        return;
+    const QScopedValueRollback guard(m_refreshingTalkers, true);
+    const std::function<void()> query = m_talkersQuery;
+    m_talkersQuery = {};
+    query(); // sets m_talkersQuery again when it still finds its subject
+    if (!m_talkersQuery)
+        m_talkers->setMessage(tr("What the talkers were listed for changed with the model. Click "
+                                 "a topic, service or action in the composed diagram, or a port "
+                                 "in the node list, to see who talks on it."));
+}
+
 void DiagramController::onModelReset()
 {
+    m_talkersQuery = {};
     m_preview.clear();
     m_talkers->setMessage(tr("Click a topic, service or action in the composed diagram, or a "
                              "port in the node list, to see who talks on it."));
@@ -195,6 +219,7 @@ void DiagramController::onPortActivated(const QString &instanceId, const QString
 
 void DiagramController::onElementActivated(const QString &key)
 {
+    const auto query = [this, key] { onElementActivated(key); };
     const Architecture &architecture = m_panel->architecture();
     const QString scope = m_panel->currentComposite();
     const Composite *c = architecture.composite(scope);
@@ -207,6 +232,7 @@ void DiagramController::onElementActivated(const QString &key)
             const QString family = channelKindName(channel->kind);
             showTalkers(tr("%1 %2").arg(family, channel->name), scope,
                         {TalkerSearch::find(architecture, scope, family, channel->name)});
+            m_talkersQuery = query;
         }
         break;
     case DiagramKey::Kind::Boundary:
@@ -214,6 +240,7 @@ void DiagramController::onElementActivated(const QString &key)
             const QString family = portFamilyName(b->kind);
             showTalkers(tr("%1 %2").arg(family, b->name), scope,
                         {TalkerSearch::find(architecture, scope, family, b->name)});
+            m_talkersQuery = query;
         }
         break;
     case DiagramKey::Kind::Port:
@@ -227,8 +254,10 @@ void DiagramController::onElementActivated(const QString &key)
             portId = c->connections.at(k.index()).portId;
         }
         const TalkerGroup group = TalkerSearch::ofPartPort(architecture, scope, partId, portId);
-        if (!group.name.isEmpty())
+        if (!group.name.isEmpty()) {
             showTalkers(tr("%1 %2").arg(group.family, group.name), scope, {group});
+            m_talkersQuery = query;
+        }
         break;
     }
     default:
@@ -254,6 +283,7 @@ void DiagramController::onClassPortSelected(const QString &classId, const QStrin
         return;
     }
     showTalkers(subject, scope, TalkerSearch::ofClassPort(architecture, scope, classId, portId));
+    m_talkersQuery = [this, classId, portId] { onClassPortSelected(classId, portId); };
 }
 
 void DiagramController::showTalkers(const QString &subject, const QString &scopeId,
@@ -274,7 +304,8 @@ void DiagramController::showTalkers(const QString &subject, const QString &scope
                  "have more talkers.")
                   .arg(leaving.join(QStringLiteral(", ")), c->stem);
     m_talkers->showTalkers(subject, c ? c->stem : scopeId, groups, note);
-    Q_EMIT talkersShown();
+    if (!m_refreshingTalkers)
+        Q_EMIT talkersShown();
 }
 
 void DiagramController::onTalkerSelected(const QString &instanceId, const QString &portId)

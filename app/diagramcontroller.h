@@ -6,7 +6,9 @@
 #include "talkersearch.h"
 
 #include <QObject>
+
 #include <QPointer>
+#include <functional>
 
 class QAction;
 class QWidget;
@@ -56,6 +58,10 @@ Q_SIGNALS:
 
 private:
     void onModelReset();
+    /// Asks the talkers shown again of the model as it is now (after a correction).
+    void refreshTalkers();
+    std::function<void()> m_talkersQuery; ///< what the talkers shown answer, to ask again
+    bool m_refreshingTalkers = false;
     void onLaunchItemSelected(const QString &instanceId);
     void onPartActivated(const QString &instanceId);
     void onPortActivated(const QString &instanceId, const QString &portId);

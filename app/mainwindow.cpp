@@ -6,6 +6,7 @@
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
 #include "comparecontroller.h"
+#include "diagnosticfilterbar.h"
 #include "diagnosticmodel.h"
 #include "diagramcontroller.h"
 #include "diagramlayouter.h"
@@ -80,6 +81,18 @@ MainWindow::MainWindow(QWidget *parent)
                 else
                     m_stages->runAll();
             });
+    // Past the bound only folders are watched: edits in place go unseen, so say it once.
+    connect(m_watcher, &WorkspaceWatcher::watching, this, [this] {
+        if (m_watcher->watchesFiles() || m_foldersOnlyNoted == m_watcher->workspace())
+            return;
+        m_foldersOnlyNoted = m_watcher->workspace();
+        m_logView->appendLog(
+            tr("This workspace has more than %L1 files and folders to watch, so only its "
+               "folders are watched: files added, removed or replaced (as most editors save) "
+               "start a new analysis, a file edited in place does not. Press F5 after such an "
+               "edit.")
+                .arg(WorkspaceWatcher::kMaxWatchedPaths));
+    });
     createActions();
     createMenus();
     createStatusBar();
@@ -270,22 +283,6 @@ void MainWindow::resetLayout()
     resizeDocks({m_suggestionDock, m_logDock}, {w / 2, w / 2}, Qt::Horizontal);
 }
 
-void MainWindow::createStatusBar()
-{
-    m_countsLabel = new QLabel(this);
-    m_progressBar = new QProgressBar(this);
-    m_progressBar->setFixedWidth(220);
-    m_progressBar->setMaximumHeight(16);
-    m_progressBar->setTextVisible(false);
-    m_cancelButton = new QToolButton(this);
-    m_cancelButton->setDefaultAction(m_cancelAction);
-    m_cancelButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_cancelButton->setAutoRaise(true);
-    statusBar()->addPermanentWidget(m_countsLabel);
-    statusBar()->addPermanentWidget(m_progressBar);
-    statusBar()->addPermanentWidget(m_cancelButton);
-}
-
 void MainWindow::restoreSession()
 {
     m_defaultState = saveState();
@@ -299,6 +296,7 @@ void MainWindow::restoreSession()
         m_defaultState = saveState();
     }
     restoreState(settings.windowState());
+    m_logView->filterBar()->restoreState(settings.logFilter());
 }
 
 void MainWindow::saveSession()
@@ -306,6 +304,7 @@ void MainWindow::saveSession()
     AppSettings settings;
     settings.setWindowGeometry(saveGeometry());
     settings.setWindowState(saveState());
+    settings.setLogFilter(m_logView->filterBar()->state());
     if (!workspace().isEmpty()) {
         settings.setSelection(workspace(), m_traceability->currentNodeId(),
                               m_traceability->currentPortId());
@@ -508,106 +507,6 @@ void MainWindow::showError(const QString &title, const QString &text)
     auto *box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
-}
-
-void MainWindow::updateCounts()
-{
-    const AtomicNodeList &list = m_document->atomicNodes();
-    const RecoveryCounts counts =
-        RecoveryCounts::of({list, m_document->launchDependencies(), m_document->architecture()});
-    const qsizetype diagnostics = counts.diagnostics;
-    // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
-    const auto count = [](qsizetype n, const QString &one, const QString &many) {
-        return n == 1 ? one : many.arg(n);
-    };
-    QStringList parts{count(counts.packages, tr("1 package"), tr("%1 packages")),
-                      count(counts.nodes, tr("1 node"), tr("%1 nodes"))};
-    if (counts.plugins > 0)
-        parts << count(counts.plugins, tr("1 plugin"), tr("%1 plugins"));
-    parts << QStringList{count(counts.ports, tr("1 port"), tr("%1 ports")),
-                         count(counts.launchFiles, tr("1 launch file"), tr("%1 launch files")),
-                         count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
-                         count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
-                         count(counts.composites, tr("1 composite"), tr("%1 composites")),
-                         count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
-    m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
-    m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
-                                 "Stage 2: launch files found, node instances they start and "
-                                 "expressions that could not be resolved statically.\n"
-                                 "Stage 3: composites, one per launch-file instance."));
-    m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
-    m_nextDiagnosticAction->setEnabled(diagnostics > 0);
-    m_previousDiagnosticAction->setEnabled(diagnostics > 0);
-    updateLaunchPlaceholder();
-}
-
-void MainWindow::updateLaunchPlaceholder()
-{
-    const LaunchDependencies &launch = m_document->launchDependencies();
-    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty())
-        m_launchPanel->setPlaceholderText(
-            tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree."));
-    else if (m_runner->isRunning())
-        m_launchPanel->setPlaceholderText(tr("Reading the launch files…"));
-    else if (launch.launchFiles.isEmpty())
-        m_launchPanel->setPlaceholderText(
-            tr("No launch files found in this workspace.\n\nStage 2 reads *.launch.py, "
-               "*.launch.xml and *.launch.yaml files and any file holding a launch "
-               "description."));
-    else
-        m_launchPanel->setPlaceholderText(
-            tr("No launch file was analysed as a root.\n\nChoose one in Stages → Launch "
-               "Arguments…"));
-}
-
-void MainWindow::setRunning(bool running)
-{
-    m_progressBar->setVisible(running);
-    m_cancelButton->setVisible(running);
-    m_cancelAction->setEnabled(running);
-    updateLaunchPlaceholder();
-}
-
-void MainWindow::onStageStarted()
-{
-    m_lastProgressText.clear();
-    m_progressBar->setRange(0, 0);
-    setRunning(true);
-}
-
-void MainWindow::onStageProgressed(int done, int total, const QString &what, int stage)
-{
-    if (total > 0) {
-        m_progressBar->setRange(0, total);
-        m_progressBar->setValue(done);
-    } else {
-        m_progressBar->setRange(0, 0);
-    }
-    if (stage > 0) {
-        // Per stage, with counts; the files themselves would flood the log.
-        const QLocale locale;
-        static const QStringList names{tr("atomic nodes"), tr("launch files"), tr("composition")};
-        const QString name = names.value(stage - 1);
-        QString text;
-        if (total <= 0)
-            text = tr("Stage %1: %2 — %3").arg(stage).arg(name, what);
-        else if (stage == 3)
-            text = tr("Stage %1: %2 — %3/%4 composites")
-                       .arg(stage)
-                       .arg(name, locale.toString(done), locale.toString(total));
-        else
-            text = tr("Stage %1: %2 — %3/%4 files")
-                       .arg(stage)
-                       .arg(name, locale.toString(done), locale.toString(total));
-        m_progressBar->setToolTip(what);
-        statusBar()->showMessage(text);
-        return;
-    }
-    if (!what.isEmpty() && what != m_lastProgressText) {
-        m_lastProgressText = what;
-        statusBar()->showMessage(what);
-        m_logView->appendLog(total > 0 ? tr("[%1/%2] %3").arg(done).arg(total).arg(what) : what);
-    }
 }
 
 } // namespace rosarch

@@ -131,6 +131,7 @@ private:
     void setRunning(bool running);
 
     Document *m_document;
+    QString m_foldersOnlyNoted; ///< the workspace the Log said is watched by folders only
     StageRunner *m_runner;
     AtomicNodeModel *m_nodeModel;
     LaunchTreeModel *m_launchModel;

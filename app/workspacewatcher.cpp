@@ -1,11 +1,15 @@
 #include "workspacewatcher.h"
+#include "stallprobe.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
 #include <QFutureWatcher>
+#include <QTimer>
 #include <QtConcurrent>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -125,6 +129,7 @@ void WorkspaceWatcher::rebuild()
     ++m_generation;
     delete m_watcher;
     m_watcher = nullptr;
+    m_unwatched.clear();
     m_listings.clear();
     m_changed.clear();
     m_debounce.stop();
@@ -149,10 +154,27 @@ void WorkspaceWatcher::install(Walk walk)
     connect(m_watcher, &QFileSystemWatcher::directoryChanged, this,
             &WorkspaceWatcher::onFolderChanged);
     m_watchesFiles = walk.folders.size() + walk.files.size() <= kMaxWatchedPaths;
-    m_watcher->addPaths(walk.folders);
-    if (m_watchesFiles && !walk.files.isEmpty())
-        m_watcher->addPaths(walk.files);
+    m_unwatched = walk.folders;
+    if (m_watchesFiles)
+        m_unwatched += walk.files;
     m_listings = std::move(walk.listings);
+    addSome(m_generation);
+}
+
+// Each path costs a system call on the UI thread (thousands in a large workspace): a few
+// hundred per turn of the event loop, so that the window keeps answering meanwhile.
+void WorkspaceWatcher::addSome(int generation)
+{
+    if (generation != m_generation || !m_watcher)
+        return;
+    const StallScope scope("WorkspaceWatcher adds paths");
+    constexpr qsizetype kPerTurn = 400;
+    m_watcher->addPaths(m_unwatched.mid(0, kPerTurn));
+    m_unwatched.remove(0, std::min(kPerTurn, m_unwatched.size()));
+    if (!m_unwatched.isEmpty()) {
+        QTimer::singleShot(0, this, [this, generation] { addSome(generation); });
+        return;
+    }
     Q_EMIT watching();
 }
 

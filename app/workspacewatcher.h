@@ -46,7 +46,7 @@ public:
     bool watchesFiles() const { return m_watchesFiles; }
     /// Whether the watch is in place: the workspace is walked off the UI thread first, which
     /// takes a moment in a large one (`watching` follows).
-    bool isWatching() const { return m_watcher != nullptr; }
+    bool isWatching() const { return m_watcher != nullptr && m_unwatched.isEmpty(); }
 
     /// What a change of `relativePath` asks for; none for files the stages do not read.
     static std::optional<Rerun> rerunFor(const QString &relativePath);
@@ -54,7 +54,7 @@ public:
 Q_SIGNALS:
     /// The changes settled: re-run `rerun` for `files` (workspace-relative, sorted).
     void rerunRequested(rosarch::WorkspaceWatcher::Rerun rerun, const QStringList &files);
-    /// The watch of the workspace is in place.
+    /// The watch of the workspace is in place (watchesFiles() says how).
     void watching();
 
 private:
@@ -72,6 +72,7 @@ private:
 
     void rebuild();
     void install(Walk walk);
+    void addSome(int generation);
     void onFileChanged(const QString &path);
     void onFolderChanged(const QString &path);
     void note(const QString &absolutePath);
@@ -84,6 +85,7 @@ private:
     bool m_enabled = true;
     bool m_watchesFiles = true;
     QHash<QString, QHash<QString, qint64>> m_listings; ///< folder -> relevant file -> mtime
+    QStringList m_unwatched; ///< paths still to add, a few per turn of the event loop
     int m_generation = 0;    ///< bumped by every rebuild; a walk of an older one is dropped
     QSet<QString> m_changed; ///< relative paths since the last ask
 };

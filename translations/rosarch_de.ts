@@ -2,6 +2,155 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>rosarch</name>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="25"/>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="38"/>
+        <source>Recover a ROS 2 workspace and report the diagnostics and architecture checks, for CI.
+Exit codes: 0 nothing new at or above --fail-on, 1 new findings at or above it, 2 usage error, 3 a file could not be read or written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="44"/>
+        <source>The workspace folder to analyse.</source>
+        <translation type="unfinished">Der zu analysierende Workspace-Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="47"/>
+        <source>text (default), json, sarif or junit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="51"/>
+        <location filename="../app/commands/diffcommand.cpp" line="69"/>
+        <source>Write the report to this file instead of stdout.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="54"/>
+        <source>Findings whose keys are in this file (a JSON report of an earlier check, or one key per line) are reported but never fail; so are those accepted in the project.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="59"/>
+        <source>Also write every current finding&apos;s key to this file, as a JSON report.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="63"/>
+        <source>The lowest severity of a new finding that fails: error (default), warning, info, or never.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="82"/>
+        <source>--format must be text, json, sarif or junit, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="84"/>
+        <source>--fail-on must be error, warning, info or never, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="86"/>
+        <source>See rosarch check --help.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="95"/>
+        <source>Cannot read the baseline %1: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="100"/>
+        <source>The baseline %1 cannot be used: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="145"/>
+        <source>Cannot write the report to the standard output.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/checkcommand.cpp" line="155"/>
+        <source>%1 findings; %2 in the baseline; %3 fail the check (--fail-on %4).
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="49"/>
+        <source>Show what changed between two recoveries: node classes and ports, and per launch file its parts, topics, services, actions and connections.
+Each side is a folder `rosarch recover` wrote, or a workspace to recover; --rev A --rev B compares two git revisions of one workspace.
+Exit codes: 0 no change, 1 changes, 2 usage, 3 an input could not be read.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="58"/>
+        <source>Artifact folder or workspace (or, with --rev, the workspace).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="59"/>
+        <source>Artifact folder or workspace.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="62"/>
+        <source>A git revision of the workspace; give it twice.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="65"/>
+        <source>text (default) or json.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="80"/>
+        <source>--format must be text or json, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="82"/>
+        <source>--rev takes one workspace and exactly two revisions: rosarch diff &lt;ws&gt; --rev A --rev B.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="85"/>
+        <source>diff needs two folders (artifact folders or workspaces), or one workspace and --rev A --rev B.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="89"/>
+        <source>Not a folder: %1</source>
+        <translation type="unfinished">Kein Ordner: %1
+ {1?}</translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="91"/>
+        <source>See rosarch diff --help.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="106"/>
+        <source>Cannot create a temporary folder.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/diffcommand.cpp" line="124"/>
+        <source>Cannot write %1: %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rosarch::AboutDialog</name>
     <message>
         <location filename="../app/aboutdialog.cpp" line="16"/>
@@ -45,46 +194,105 @@
     </message>
 </context>
 <context>
+    <name>rosarch::ArchitectureDiffView</name>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="51"/>
+        <source>Change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="51"/>
+        <source>Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="51"/>
+        <source>What</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="60"/>
+        <source>Compare the recovered architecture with an earlier recovery (an artifact folder or a workspace) or a git revision: File › Compare Architecture.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="104"/>
+        <source>Added: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="106"/>
+        <source>Removed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="107"/>
+        <source>Before: %1
+After: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="112"/>
+        <source>No architecture changes from %1 to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/architecturediffview.cpp" line="113"/>
+        <source>%1 changes from %2 to %3: %4 added, %5 removed, %6 changed, %7 renamed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rosarch::AtomicNodeModel</name>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="328"/>
+        <location filename="../widgets/atomicnodemodel.cpp" line="457"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="330"/>
+        <location filename="../widgets/atomicnodemodel.cpp" line="459"/>
         <source>Type</source>
         <translation>Typ</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="332"/>
+        <location filename="../widgets/atomicnodemodel.cpp" line="461"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="334"/>
+        <location filename="../widgets/atomicnodemodel.cpp" line="463"/>
         <source>Description</source>
         <translation>Beschreibung</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="347"/>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="50"/>
         <source>(outside any package)</source>
         <translation>(keinem Paket zugeordnet)</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="352"/>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="55"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="352"/>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="55"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodemodel.cpp" line="386"/>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="105"/>
         <source>procedural node</source>
         <translation>prozeduraler Knoten</translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="107"/>
+        <source>plugin: %1</source>
+        <translation type="unfinished">Plugin: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodemodeldata.cpp" line="113"/>
+        <source>%1 (suggested)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -108,6 +316,21 @@
         <location filename="../widgets/atomicnodepanel.cpp" line="25"/>
         <source>Describe the node&apos;s responsibility (undoable)</source>
         <translation>Die Aufgabe des Knotens beschreiben (kann rückgängig gemacht werden)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodepanel.cpp" line="64"/>
+        <source>How the node reaches this port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodepanel.cpp" line="70"/>
+        <source>%1. Handed over at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodepanel.cpp" line="75"/>
+        <source>%1. Created in %2 at %3</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -159,13 +382,13 @@
     </message>
     <message>
         <location filename="../widgets/atomicnodetext.cpp" line="47"/>
-        <location filename="../widgets/atomicnodetext.cpp" line="117"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="122"/>
         <source>Python</source>
         <translation>Python</translation>
     </message>
     <message>
         <location filename="../widgets/atomicnodetext.cpp" line="47"/>
-        <location filename="../widgets/atomicnodetext.cpp" line="117"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="122"/>
         <source>C++</source>
         <translation>C++</translation>
     </message>
@@ -246,121 +469,136 @@
     </message>
     <message>
         <location filename="../widgets/atomicnodetext.cpp" line="100"/>
+        <source>pluginlib plugin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodetext.cpp" line="101"/>
         <source>Lifecycle node class</source>
         <translation>Lifecycle-Knotenklasse</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="101"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="102"/>
         <source>Procedurally built node</source>
         <translation>Prozedural aufgebauter Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="102"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="103"/>
         <source>Atomic ROS node class</source>
         <translation>Atomare ROS-Knotenklasse</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="108"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="109"/>
         <source>Node name in code: %1</source>
         <translation>Knotenname im Code: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="110"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="111"/>
         <source>Derives from: %1</source>
         <translation>Abgeleitet von: %1</translation>
     </message>
     <message>
         <location filename="../widgets/atomicnodetext.cpp" line="113"/>
+        <source>Exported as a %1 plugin: a node that loads it (by its parameters) gets these ports; {plugin} in a name is the name it is loaded under</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodetext.cpp" line="118"/>
         <source>Started by executable: %1</source>
         <translation>Gestartet durch Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="115"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="120"/>
         <source>Component plugin: %1</source>
         <translation>Komponenten-Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="116"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="121"/>
         <source>Compile type: %1</source>
         <translation>Kompilierungsart: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="118"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="123"/>
         <source>1 port</source>
         <translation>1 Port</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="118"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="123"/>
         <source>%1 ports</source>
         <translation>%1 Ports</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="120"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="125"/>
         <source>Description: %1</source>
         <translation>Beschreibung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="122"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="127"/>
         <source>Defined at %1</source>
         <translation>Definiert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="132"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="137"/>
         <source>Of node %1</source>
         <translation>Gehört zu Knoten %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="134"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="139"/>
         <source>Interface type: %1</source>
         <translation>Interface-Typ: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="136"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="141"/>
         <source>Callback: %1</source>
         <translation>Callback: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="139"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="144"/>
         <source>Name written as a literal</source>
         <translation>Name als Literal angegeben</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="142"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="147"/>
         <source>Name taken from a member variable</source>
         <translation>Name aus einer Membervariable übernommen</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="145"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="150"/>
         <source>Name taken from a local variable</source>
         <translation>Name aus einer lokalen Variable übernommen</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="148"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="153"/>
         <source>Name is the default of parameter &apos;%1&apos;</source>
         <translation>Name ist der Standardwert des Parameters „%1“</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="151"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="156"/>
         <source>Name could not be resolved statically: %1</source>
         <translation>Name konnte nicht statisch aufgelöst werden: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="155"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="160"/>
         <source>Exists only if: %1</source>
         <translation>Existiert nur, wenn: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="157"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="162"/>
         <source>Created through: %1</source>
         <translation>Erzeugt über: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="159"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="167"/>
+        <source>Reached from the node through %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/atomicnodetext.cpp" line="170"/>
         <source>Declared in a base class</source>
         <translation>In einer Basisklasse deklariert</translation>
     </message>
     <message>
-        <location filename="../widgets/atomicnodetext.cpp" line="161"/>
+        <location filename="../widgets/atomicnodetext.cpp" line="172"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
@@ -368,11 +606,26 @@
 <context>
     <name>rosarch::CommandLine</name>
     <message>
-        <location filename="../app/commandline.cpp" line="24"/>
+        <location filename="../app/commands/commandline.cpp" line="31"/>
         <source>Usage:
   rosarch [workspace]                       open the GUI (on the example workspace by default)
   rosarch recover &lt;workspace&gt; --out &lt;dir&gt; [--launch-arg name:=value]... [--launch-root &lt;file&gt;]
-                                            run the stages headless and write the artifacts
+                  [--no-decisions | --project &lt;file&gt;] [--render svg|png [--plantuml-jar &lt;file&gt;]]
+                  [--in-process] [--no-cache]
+                                            run the stages headless and write the artifacts, with
+                                            the project applied (default: the workspace&apos;s
+                                            rosarch.project.json, when there is one)
+  rosarch project check &lt;project file&gt; &lt;workspace&gt; [--in-process]
+                                            list the decisions and corrections that no longer
+                                            match anything (exit 0 none, 1 orphaned, 2 usage,
+                                            3 the project cannot be read)
+  rosarch check &lt;workspace&gt; [--format text|json|sarif|junit] [--output &lt;file&gt;]
+                [--baseline &lt;file&gt;] [--write-baseline &lt;file&gt;] [--fail-on error|warning|info|never]
+                                            report diagnostics and architecture checks for CI
+                                            (exit 0 pass, 1 new findings, 2 usage, 3 file error)
+  rosarch diff &lt;before&gt; &lt;after&gt; | &lt;workspace&gt; --rev A --rev B [--format text|json]
+                                            what changed between two recoveries (artifact
+                                            folders, workspaces or git revisions)
   rosarch eval --reference &lt;dir|file&gt; --recovered &lt;dir|file&gt; [--level acd|ccd] [--json]
                                             score recovered PlantUML diagrams against a reference
   rosarch suggest &lt;workspace&gt; --out &lt;dir&gt; [--llm-endpoint URL] [--llm-model NAME] [--llm-timeout S]
@@ -381,80 +634,161 @@
   rosarch --help | --version
 
 Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, architecture.json,
-diagnostics.json, acd/&lt;ClassName&gt;.puml, ccd/&lt;launch file stem&gt;.puml
+diagnostics.json, acd/&lt;ClassName&gt;.puml, ccd/&lt;launch file stem&gt;.puml,
+mermaid/&lt;launch file stem&gt;.md, graph/&lt;root launch file stem&gt;.dot (and .svg/.png next to each .puml with --render)
+recover and check run the stages in the analysis worker (rosarch-stages), which skips
+a file that crashes it or overruns its budget; --in-process runs them in the command.
+Per-file results are kept in the analysis cache (the user&apos;s cache folder, rosarch/analysis);
+--no-cache (or ROSARCH_NO_CACHE=1) analyses every file again.
 Exit codes: 0 ok, 1 analysis finished with errors reported, 2 usage error.
 </source>
-        <translation>Aufruf:
-  rosarch [workspace]                       die GUI öffnen (standardmäßig mit dem Beispiel-Workspace)
-  rosarch recover &lt;workspace&gt; --out &lt;dir&gt; [--launch-arg name:=value]... [--launch-root &lt;file&gt;]
-                                            die Stufen ohne GUI ausführen und die Artefakte schreiben
-  rosarch eval --reference &lt;dir|file&gt; --recovered &lt;dir|file&gt; [--level acd|ccd] [--json]
-                                            rekonstruierte PlantUML-Diagramme gegen eine Referenz bewerten
-  rosarch suggest &lt;workspace&gt; --out &lt;dir&gt; [--llm-endpoint URL] [--llm-model NAME] [--llm-timeout S]
-                                            geprüfte Vorschläge nach suggestions.json schreiben
-                                            (ohne Endpunkt nur deterministische)
-  rosarch --help | --version
-
-Von recover geschriebene Artefakte: atomic_nodes.json, launch_dependencies.json, architecture.json,
-diagnostics.json, acd/&lt;Klassenname&gt;.puml, ccd/&lt;Launch-File-Name ohne Endung&gt;.puml
-Exit-Codes: 0 OK, 1 Analyse mit gemeldeten Fehlern beendet, 2 Aufruffehler.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="57"/>
+        <location filename="../app/commands/commandline.cpp" line="91"/>
         <source>Recover the architecture of a ROS 2 workspace and write the artifacts.</source>
         <translation>Die Architektur eines ROS-2-Workspaces rekonstruieren und die Artefakte schreiben.</translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="62"/>
+        <location filename="../app/commands/commandline.cpp" line="98"/>
         <source>The workspace folder to analyse.</source>
         <translation>Der zu analysierende Workspace-Ordner.</translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="64"/>
+        <location filename="../app/commands/commandline.cpp" line="101"/>
         <source>Folder for the artifacts.</source>
         <translation>Ordner für die Artefakte.</translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="67"/>
+        <location filename="../app/commands/commandline.cpp" line="105"/>
         <source>Print only errors.</source>
         <translation>Nur Fehler ausgeben.</translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="69"/>
-        <source>Set a launch argument (repeatable).</source>
-        <translation>Ein Launch-Argument setzen (wiederholbar).</translation>
+        <location filename="../app/commands/commandline.cpp" line="108"/>
+        <source>Also render every ACD and CCD with PlantUML, as svg or png (needs Java and a PlantUML jar).</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="72"/>
-        <source>Analyse only this launch file (relative to the workspace) as the root.</source>
-        <translation>Nur dieses Launch-File (relativ zum Workspace) als Wurzel analysieren.</translation>
+        <location filename="../app/commands/commandline.cpp" line="114"/>
+        <source>The PlantUML jar for --render (default $ROSARCH_PLANTUML_JAR, or one installed with rosarch).</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="89"/>
-        <source>recover needs a workspace folder and --out &lt;dir&gt;.
-
+        <location filename="../app/commands/commandline.cpp" line="128"/>
+        <source>recover needs --out &lt;dir&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="132"/>
+        <source>--render takes svg or png, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="161"/>
+        <source>Nothing was written; earlier artifacts are unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="195"/>
+        <source>Rendering with PlantUML failed:
+%1
 </source>
-        <translation>recover benötigt einen Workspace-Ordner und --out &lt;dir&gt;.
-
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="95"/>
+        <location filename="../app/commands/commandline.cpp" line="205"/>
+        <source>Rendered %1 diagrams as %2 with PlantUML.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="210"/>
+        <source>Applied %1 accepted decisions and corrections of %2 (--no-decisions writes the model as recovered).
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="323"/>
+        <source>Not a folder: %1
+rosarch opens a workspace folder; see rosarch --help.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="329"/>
+        <source>Unknown command: %1
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/commandline.cpp" line="331"/>
+        <source>Did you mean: rosarch %1?
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="18"/>
+        <source>Usage: rosarch project check &lt;project file&gt; &lt;workspace&gt; [--in-process]
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="29"/>
+        <source>correction %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="31"/>
+        <source>decision (%1) on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="33"/>
+        <source>%1: warning: orphaned %2: %3; it said: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="43"/>
+        <source>List the decisions and corrections of a project that no longer match the workspace.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="51"/>
+        <source>The project file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="54"/>
+        <source>The workspace folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="57"/>
+        <source>Run the stages in this process instead of the analysis worker.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="65"/>
+        <source>project takes one subcommand, check, with a project file and a workspace.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/projectcommand.cpp" line="74"/>
         <source>Not a folder: %1
 </source>
         <translation>Kein Ordner: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="104"/>
-        <source>--launch-arg expects name:=value, got &apos;%1&apos;.
+        <location filename="../app/commands/projectcommand.cpp" line="95"/>
+        <source>%1 decisions and %2 corrections; %3 orphaned.
 </source>
-        <translation>--launch-arg erwartet name:=value, erhalten: „%1“.
-</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="141"/>
+        <location filename="../app/commands/commandline.cpp" line="216"/>
         <source>Recovered %1 node classes with %2 ports in %3 packages; %4 launch files, %5 launch-file instances, %6 node instances, %7 unresolved items, %8 composites; in %9 ms; %10 diagnostics (%11 errors).
 Wrote %12 files to %13
 </source>
@@ -463,281 +797,1251 @@ Wrote %12 files to %13
 </translation>
     </message>
     <message>
-        <location filename="../app/commandline.cpp" line="191"/>
-        <source>Unknown command: %1
-
-</source>
-        <translation>Unbekannter Befehl: %1
-
-</translation>
+        <location filename="../app/commands/workspacerun.cpp" line="25"/>
+        <source>%1 needs one workspace folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/workspacerun.cpp" line="31"/>
+        <source>Not a folder: %1</source>
+        <translation type="unfinished">Kein Ordner: %1
+ {1?}</translation>
+    </message>
+    <message>
+        <location filename="../app/commands/workspacerun.cpp" line="43"/>
+        <source>--launch-arg expects name:=value, got &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/workspacerun.cpp" line="51"/>
+        <source>--no-decisions and --project exclude each other.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/workspacerun.cpp" line="59"/>
+        <source>No such file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/commands/workspacerun.cpp" line="85"/>
+        <source>The project cannot be used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CompareController</name>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="23"/>
+        <source>Compare Architecture with &amp;Folder…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="25"/>
+        <source>Show what changed against an earlier recovery: a folder rosarch exported or `rosarch recover` wrote, or another workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="28"/>
+        <source>Compare Architecture with &amp;Git Revision…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="30"/>
+        <source>Show what changed against the open workspace at a git revision (a branch, a tag, HEAD~1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="34"/>
+        <source>The comparison failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="42"/>
+        <source>Compare with an Artifact Folder or a Workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="53"/>
+        <source>Compare with Git Revision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="54"/>
+        <source>Revision of %1 to compare the current model with (a branch, a tag, a commit, HEAD~1):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="82"/>
+        <source>revision %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="103"/>
+        <source>Open a workspace and run the stages first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="110"/>
+        <source>Comparing with %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="123"/>
+        <source>The comparison with %1 was canceled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="125"/>
+        <source>Cannot compare with %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="126"/>
+        <source>Comparing with %1 failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/comparecontroller.cpp" line="129"/>
+        <source>the current model</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CorrectionController</name>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="78"/>
+        <source>&amp;Group Selected Parts into Subsystem…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="90"/>
+        <source>Remove %1 corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="138"/>
+        <source>%1: %2 (Ctrl+Z undoes it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="297"/>
+        <source>Plugin class</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="297"/>
+        <source>Node class</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="308"/>
+        <source>Port (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="320"/>
+        <source>Node instance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="320"/>
+        <source>Connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="324"/>
+        <source>%1 %2 [%3]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="332"/>
+        <source>Launch file</source>
+        <translation type="unfinished">Launch-File</translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="338"/>
+        <source>Topic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="339"/>
+        <source>Service</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="340"/>
+        <source>Action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="357"/>
+        <source>removed by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="359"/>
+        <source>corrected by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="361"/>
+        <source>suggested (an accepted suggestion)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="363"/>
+        <source>corrected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="365"/>
+        <source>recovered by analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="390"/>
+        <source>Restore (Revert %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="394"/>
+        <location filename="../app/correctioncontroller.cpp" line="504"/>
+        <source>Ctrl+R</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="395"/>
+        <source>Unmark Reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="395"/>
+        <source>Mark Re&amp;viewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="398"/>
+        <source>Add &amp;Port…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="399"/>
+        <source>Re&amp;move Class…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="405"/>
+        <source>Set &amp;Name…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="405"/>
+        <location filename="../app/correctioncontroller.cpp" line="415"/>
+        <location filename="../app/correctioncontroller.cpp" line="423"/>
+        <source>Re&amp;name…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="407"/>
+        <source>Set &amp;Type…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="409"/>
+        <source>Set &amp;Type… (unknown)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="410"/>
+        <source>Re&amp;move Port…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="416"/>
+        <source>Re&amp;move…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="417"/>
+        <source>Add &amp;Connection…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="420"/>
+        <source>Add &amp;Part…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="427"/>
+        <source>Remove &amp;Connection…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="442"/>
+        <source>Correct</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="49"/>
+        <source>Rename</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="59"/>
+        <source>Set Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="60"/>
+        <source>Analysis left the name of this %1 as an expression: %2. Give the name it has at run time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="64"/>
+        <source>Rename the %1 %2 of this class (every instance uses the new name).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="71"/>
+        <source>Rename the node instance %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="81"/>
+        <source>Rename %1 everywhere it is used.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="103"/>
+        <source>Set Type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="105"/>
+        <source>Override the interface type of the %1 %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="107"/>
+        <source>Analysis could not decide the interface type of the %1 %2 (%3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="109"/>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="134"/>
+        <source>Remove the class %1 from the model (analysis got it wrong).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="137"/>
+        <source>Remove the port %1 from its class.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="140"/>
+        <source>Remove the node instance %1 (it is not started).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="148"/>
+        <source>Remove the connection of %1 through its %2 %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="156"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="169"/>
+        <source>Add Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="169"/>
+        <source>Add a port analysis missed to the class %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="171"/>
+        <source>&amp;Name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="198"/>
+        <source>Add Part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="199"/>
+        <source>Add a node instance that %1 does not declare (started elsewhere).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="201"/>
+        <source>&amp;Class:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="202"/>
+        <source>Node &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="220"/>
+        <source>Add Connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="221"/>
+        <source>Connect the node instance %1 to a topic, service or action analysis missed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="224"/>
+        <source>&amp;On (absolute name):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="252"/>
+        <source>Unmark %1 reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="278"/>
+        <source>Group into Subsystem</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="279"/>
+        <source>Draw %1 as one subsystem.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="281"/>
+        <source>Subsystem &amp;name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="341"/>
+        <source>Nothing in this model can take %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="345"/>
+        <source>Re-target Correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="346"/>
+        <source>%1 (%2) names %3, which matches nothing now. Point it at:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="349"/>
+        <source>&amp;Element:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontrolleredits.cpp" line="356"/>
+        <source>Re-target %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CorrectionDialog</name>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="19"/>
+        <source>Publisher</source>
+        <translation type="unfinished">Publisher</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="21"/>
+        <source>Subscriber</source>
+        <translation type="unfinished">Subscriber</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="23"/>
+        <source>Service server</source>
+        <translation type="unfinished">Service-Server</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="25"/>
+        <source>Service client</source>
+        <translation type="unfinished">Service-Client</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="27"/>
+        <source>Action server</source>
+        <translation type="unfinished">Action-Server</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="29"/>
+        <source>Action client</source>
+        <translation type="unfinished">Action-Client</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="49"/>
+        <source>&amp;Name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="56"/>
+        <source>&amp;Kind:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="62"/>
+        <source>package/msg/Type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="65"/>
+        <source>&amp;Type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="75"/>
+        <source>&amp;Element:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="80"/>
+        <source>as the launch file&apos;s other nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="81"/>
+        <source>Name&amp;space:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="83"/>
+        <source>optional: why (kept in the project)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctiondialog.cpp" line="84"/>
+        <source>&amp;Reason:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CorrectionIndex</name>
+    <message>
+        <location filename="../widgets/correctionindex.cpp" line="78"/>
+        <source>%1 by %2 (%3): %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionindex.cpp" line="80"/>
+        <source>Reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionindex.cpp" line="81"/>
+        <source>Corrected</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CorrectionModel</name>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="65"/>
+        <source>Rename</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="67"/>
+        <source>Set name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="69"/>
+        <source>Set type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="71"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="73"/>
+        <source>Add port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="75"/>
+        <source>Add part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="77"/>
+        <source>Add connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="79"/>
+        <source>Group</source>
+        <translation type="unfinished">Gruppe</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="81"/>
+        <source>Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="83"/>
+        <source>Describe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="130"/>
+        <source>applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="130"/>
+        <source>orphaned: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="136"/>
+        <source>%1 matches nothing in this model and changes nothing: %2. Re-target it to another element, or remove it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="168"/>
+        <source>Correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="170"/>
+        <source>Target</source>
+        <translation type="unfinished">Ziel</translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="172"/>
+        <source>Old → new</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="174"/>
+        <source>Reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="176"/>
+        <source>Author</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="178"/>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionmodel.cpp" line="180"/>
+        <source>Status</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::CorrectionPanel</name>
+    <message>
+        <location filename="../widgets/correctionpanel.cpp" line="15"/>
+        <source>&amp;Remove Correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionpanel.cpp" line="16"/>
+        <source>Re-&amp;target…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionpanel.cpp" line="20"/>
+        <source>Revert what the selected corrections changed (undoable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionpanel.cpp" line="22"/>
+        <source>Point an orphaned correction at another element of the same kind (undoable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/correctionpanel.cpp" line="55"/>
+        <source>No corrections yet. Right-click an element in the node list, the launch tree or the diagram to rename, retype, remove, add or review it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::DiagnosticDetail</name>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="26"/>
+        <source>Select a finding to see what it means and how to fix it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="53"/>
+        <source>package %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="56"/>
+        <source>At %1</source>
+        <translation type="unfinished">In %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="58"/>
+        <source>Related places</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="68"/>
+        <source>Seen in 1 system (root launch file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="69"/>
+        <source>Seen in %1 systems (root launch files)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="75"/>
+        <source>What this means</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="77"/>
+        <source>someone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="80"/>
+        <source>Accepted by %1 on %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="81"/>
+        <source>Hidden by %1 on %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="83"/>
+        <source>Reason: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticdetail.cpp" line="87"/>
+        <source>Key: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::DiagnosticFilterBar</name>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="21"/>
+        <source>Hidden</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="21"/>
+        <source>Accepted</source>
+        <translation type="unfinished">Angenommen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="36"/>
+        <source>Show or hide findings of this severity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="40"/>
+        <source>Show only findings of one kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="43"/>
+        <source>Show only findings in one package</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="46"/>
+        <source>Search findings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="49"/>
+        <source>Show findings whose message, file, kind or package contains this</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="50"/>
+        <source>Also show findings you hid (drawn grey)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="51"/>
+        <source>Also show findings you accepted (drawn grey)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="52"/>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="53"/>
+        <source>Kind</source>
+        <translation type="unfinished">Art</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="54"/>
+        <source>Package</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="55"/>
+        <source>Group the findings by kind or by package</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="61"/>
+        <source>Group by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="149"/>
+        <source>Errors %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="151"/>
+        <source>Warnings %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="154"/>
+        <source>Info %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="171"/>
+        <source>(no package)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="180"/>
+        <source>All kinds</source>
+        <translation type="unfinished">Alle Arten</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="181"/>
+        <source>All packages</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::DiagnosticModel</name>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="50"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="251"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="52"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="253"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="54"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="255"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="86"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="271"/>
+        <source>(no package)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="277"/>
+        <source>%1 (1 finding)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="278"/>
+        <source>%1 (%2 findings)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="305"/>
+        <source>%1 (accepted)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="306"/>
+        <source>%1 (hidden)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="354"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="100"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="356"/>
+        <source>Seen in %1 systems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="369"/>
+        <source>The number of systems (root launch files) the finding was seen in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="374"/>
+        <source>Severity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="376"/>
+        <source>Kind</source>
+        <translation type="unfinished">Art</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="378"/>
+        <source>Package</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="380"/>
+        <source>File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="382"/>
         <source>Message</source>
         <translation>Meldung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="102"/>
-        <source>Location</source>
-        <translation>Ort</translation>
-    </message>
-    <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="104"/>
-        <source>Code</source>
-        <translation>Code</translation>
+        <location filename="../widgets/diagnosticmodel.cpp" line="384"/>
+        <source>Systems</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::DiagramController</name>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="96"/>
+        <location filename="../app/diagramcontroller.cpp" line="39"/>
         <source>Export Diagram as &amp;SVG…</source>
         <translation>Diagramm als &amp;SVG exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="97"/>
+        <location filename="../app/diagramcontroller.cpp" line="40"/>
         <source>Write the composed diagram shown as an SVG drawing</source>
         <translation>Das angezeigte Kompositionsdiagramm als SVG-Zeichnung speichern</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="99"/>
+        <location filename="../app/diagramcontroller.cpp" line="43"/>
         <source>Export Diagram as &amp;PNG…</source>
         <translation>Diagramm als &amp;PNG exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="100"/>
+        <location filename="../app/diagramcontroller.cpp" line="44"/>
         <source>Write the composed diagram shown as a PNG image</source>
         <translation>Das angezeigte Kompositionsdiagramm als PNG-Bild speichern</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="102"/>
+        <location filename="../app/diagramcontroller.cpp" line="47"/>
         <source>&amp;Compare with Reference Model…</source>
         <translation>Mit &amp;Referenzmodell vergleichen…</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="103"/>
+        <location filename="../app/diagramcontroller.cpp" line="48"/>
         <source>Score the recovered model against hand-written PlantUML diagrams and mark the differences in the composed diagram</source>
         <translation>Das rekonstruierte Modell gegen handgeschriebene PlantUML-Diagramme bewerten und die Unterschiede im Kompositionsdiagramm markieren</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="106"/>
+        <location filename="../app/diagramcontroller.cpp" line="51"/>
         <source>C&amp;lear Comparison</source>
         <translation>&amp;Vergleich aufheben</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="132"/>
+        <location filename="../app/diagramcontroller.cpp" line="86"/>
         <source>Composed diagram: %1</source>
         <translation>Kompositionsdiagramm: %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="230"/>
+        <location filename="../app/diagramcontroller.cpp" line="163"/>
+        <source>What the talkers were listed for changed with the model. Click a topic, service or action in the composed diagram, or a port in the node list, to see who talks on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="172"/>
+        <source>Click a topic, service or action in the composed diagram, or a port in the node list, to see who talks on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="233"/>
+        <location filename="../app/diagramcontroller.cpp" line="241"/>
+        <location filename="../app/diagramcontroller.cpp" line="258"/>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="277"/>
+        <source>port %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="280"/>
+        <source>No launch file starts %1, so its port %2 talks on nothing in the composed architecture.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="303"/>
+        <source>%1 leaves %2 through its boundary: the launch files that include %2 may have more talkers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/diagramcontroller.cpp" line="342"/>
         <source>the reference has no diagram for %1</source>
         <translation>die Referenz enthält kein Diagramm für %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="258"/>
+        <location filename="../app/diagramcontroller.cpp" line="371"/>
         <source>No ACD or CCD diagram could be read in %1.</source>
         <translation>In %1 konnte kein ACD- oder CCD-Diagramm gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="270"/>
+        <location filename="../app/diagramcontroller.cpp" line="383"/>
         <source>Compared with %1 (%2): micro F1 %3, macro F1 %4</source>
         <translation>Verglichen mit %1 (%2): Mikro-F1 %3, Makro-F1 %4</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="288"/>
+        <location filename="../app/diagramcontroller.cpp" line="401"/>
         <source>Reference Model (folder of PlantUML diagrams)</source>
         <translation>Referenzmodell (Ordner mit PlantUML-Diagrammen)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="294"/>
+        <location filename="../app/diagramcontroller.cpp" line="407"/>
         <source>Comparison failed: %1</source>
         <translation>Vergleich fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="300"/>
+        <location filename="../app/diagramcontroller.cpp" line="413"/>
         <source>Comparison with %1</source>
         <translation>Vergleich mit %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="319"/>
+        <location filename="../app/diagramcontroller.cpp" line="432"/>
         <source>Exported the composed diagram to %1</source>
         <translation>Kompositionsdiagramm nach %1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="320"/>
+        <location filename="../app/diagramcontroller.cpp" line="433"/>
         <source>Could not write the composed diagram to %1</source>
         <translation>Das Kompositionsdiagramm konnte nicht nach %1 geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="321"/>
+        <location filename="../app/diagramcontroller.cpp" line="434"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="321"/>
+        <location filename="../app/diagramcontroller.cpp" line="434"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="333"/>
+        <location filename="../app/diagramcontroller.cpp" line="448"/>
         <source>SVG drawing (*.svg)</source>
         <translation>SVG-Zeichnung (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="333"/>
+        <location filename="../app/diagramcontroller.cpp" line="448"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="334"/>
+        <location filename="../app/diagramcontroller.cpp" line="450"/>
         <source>Export Composed Diagram</source>
         <translation>Kompositionsdiagramm exportieren</translation>
     </message>
 </context>
 <context>
+    <name>rosarch::DiagramMinimap</name>
+    <message>
+        <location filename="../widgets/diagram/diagramminimap.cpp" line="19"/>
+        <source>The whole diagram: click or drag to move the view</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rosarch::DiagramPanel</name>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="37"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="42"/>
         <source>Find in diagram</source>
         <translation>Im Diagramm suchen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="38"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="43"/>
         <source>Highlights the parts, topics, services and namespaces whose name contains this text. Enter goes to the next match.</source>
         <translation>Hebt die Teile, Topics, Services und Namespaces hervor, deren Name diesen Text enthält. Enter springt zum nächsten Treffer.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="47"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="52"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="47"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="52"/>
         <source>Show ports whose name comes from a parameter</source>
         <translation>Ports anzeigen, deren Name aus einem Parameter stammt</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="48"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="53"/>
         <source>Inactive</source>
         <translation>Inaktiv</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="49"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="54"/>
         <source>Show parts and ports whose launch condition or guard is false</source>
         <translation>Teile und Ports anzeigen, deren Launch-Bedingung oder Bedingung im Code falsch ist</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="50"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="55"/>
         <source>External</source>
         <translation>Extern</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="51"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="56"/>
         <source>Show includes of launch files outside the workspace</source>
         <translation>Includes von Launch-Files außerhalb des Workspaces anzeigen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="53"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="58"/>
         <source>−</source>
         <translation>−</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="54"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="59"/>
         <source>Zoom out (-, Ctrl+wheel)</source>
         <translation>Verkleinern (-, Ctrl+Mausrad)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="55"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="60"/>
         <source>+</source>
         <translation>+</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="56"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="61"/>
         <source>Zoom in (+, Ctrl+wheel)</source>
         <translation>Vergrößern (+, Ctrl+Mausrad)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="57"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="62"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="58"/>
-        <source>Fit the whole diagram in the view (0)</source>
-        <translation>Das ganze Diagramm in die Ansicht einpassen (0)</translation>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="63"/>
+        <source>Fit the whole diagram in the view (0); a diagram too big to read whole stops at a legible size, the minimap shows the rest</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="59"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="65"/>
+        <source>Overview</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="66"/>
+        <source>Collapse namespaces to one box each and hide the ports of every part; double-click a box to expand it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="68"/>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="202"/>
+        <source>Expand All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="69"/>
+        <source>Show every namespace and port of this diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="373"/>
+        <source>as included by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="374"/>
+        <source>Names, namespaces and arguments are resolved for this include of %1. The exported CCD of %1 is the file on its own, with its declared defaults.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="378"/>
+        <source>as launched</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="379"/>
+        <source>The root launch file with the launch arguments of the run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="70"/>
         <source>Export…</source>
         <translation>Exportieren…</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="61"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="72"/>
         <source>Export Diagram</source>
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="63"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="74"/>
         <source>SVG image (*.svg);;PNG image (*.png)</source>
         <translation>SVG-Bild (*.svg);;PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="68"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="79"/>
         <source>Save the whole diagram as SVG or PNG</source>
         <translation>Das ganze Diagramm als SVG oder PNG speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="89"/>
-        <location filename="../widgets/diagrampanel.cpp" line="245"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="112"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="285"/>
         <source>No composed diagram yet. Run stage 3 to compose the launch files.</source>
         <translation>Noch kein Kompositionsdiagramm. Führen Sie Stufe 3 aus, um die Launch-Files zusammenzusetzen.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="246"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="286"/>
         <source>This launch file is not part of the architecture.</source>
         <translation>Dieses Launch-File ist nicht Teil der Architektur.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="255"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="300"/>
         <source>%1 starts no nodes and includes no launch files.</source>
         <translation>%1 startet keine Knoten und bindet keine Launch-Files ein.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="256"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="301"/>
         <source>Every element of %1 is hidden by the filters.</source>
         <translation>Alle Elemente von %1 sind durch die Filter ausgeblendet.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="274"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="315"/>
         <source>Laying out…</source>
         <translation>Layout wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="302"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="330"/>
         <source>%1
 
 Collapse namespaces or hide elements to make the diagram smaller, then try again.</source>
@@ -746,26 +2050,88 @@ Collapse namespaces or hide elements to make the diagram smaller, then try again
 Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu verkleinern, und versuchen Sie es dann erneut.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="437"/>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="159"/>
         <source>Expand Namespace %1</source>
         <translation>Namespace %1 ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="438"/>
-        <location filename="../widgets/diagrampanel.cpp" line="455"/>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="160"/>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="187"/>
         <source>Collapse Namespace %1</source>
         <translation>Namespace %1 einklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagrampanel.cpp" line="447"/>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="169"/>
         <source>Open %1</source>
         <translation>%1 öffnen</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="177"/>
+        <source>Show Ports of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="178"/>
+        <source>Hide Ports of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="196"/>
+        <source>Show Each Boundary Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="196"/>
+        <source>Collapse Boundary Ports</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::DiagramRootPicker</name>
+    <message>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="23"/>
+        <source>Root launch file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="24"/>
+        <source>The root launch file whose system the diagram shows; type to find one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="34"/>
+        <source>%1 — 1 include</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="35"/>
+        <source>%1 — %2 includes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="49"/>
+        <source>%1
+%2 launch files included, %3 nodes started, %4 unresolved</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::DiagramRootPrompt</name>
+    <message>
+        <location filename="../widgets/diagram/diagramrootprompt.cpp" line="16"/>
+        <source>&lt;b&gt;Which system do you want to see?&lt;/b&gt;&lt;br&gt;This workspace has several root launch files and none is named like a bringup. Choose one; the header&apos;s list switches later, and the choice is remembered.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramrootprompt.cpp" line="38"/>
+        <source>%1    %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::DiagramScene</name>
     <message>
-        <location filename="../widgets/diagramscene.cpp" line="207"/>
+        <location filename="../widgets/diagram/diagramscene.cpp" line="236"/>
         <source>Composed diagram exported by rosarch</source>
         <translation>Von rosarch exportiertes Kompositionsdiagramm</translation>
     </message>
@@ -773,182 +2139,182 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::DiagramText</name>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="17"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="17"/>
         <source>Publisher</source>
         <translation>Publisher</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="19"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="19"/>
         <source>Subscriber</source>
         <translation>Subscriber</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="21"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="21"/>
         <source>Service server</source>
         <translation>Service-Server</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="23"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="23"/>
         <source>Service client</source>
         <translation>Service-Client</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="25"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="25"/>
         <source>Action server</source>
         <translation>Action-Server</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="27"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="27"/>
         <source>Action client</source>
         <translation>Action-Client</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="36"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="36"/>
         <source>publishes to</source>
         <translation>publiziert auf</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="38"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="38"/>
         <source>subscribes to</source>
         <translation>abonniert</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="40"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="40"/>
         <source>calls</source>
         <translation>ruft auf</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="42"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="42"/>
         <source>serves</source>
         <translation>bedient</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="45"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="45"/>
         <source>is delegated to the boundary port</source>
         <translation>wird an den Randport delegiert</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="60"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="60"/>
         <source>Included launch file %1 (outside the workspace)</source>
         <translation>Eingebundenes Launch-File %1 (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="61"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="61"/>
         <source>Included launch file %1 — double-click to open</source>
         <translation>Eingebundenes Launch-File %1 – Doppelklick zum Öffnen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="64"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="64"/>
         <source>Node %1 : %2</source>
         <translation>Knoten %1 : %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="66"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="66"/>
         <source>The class was not found; its ports are unknown.</source>
         <translation>Die Klasse wurde nicht gefunden; ihre Ports sind unbekannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="68"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="68"/>
         <source>Namespace: %1</source>
         <translation>Namespace: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="71"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="71"/>
         <source>Inactive: its launch condition is false.</source>
         <translation>Inaktiv: Die Launch-Bedingung ist falsch.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="72"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="72"/>
         <source>Started at %1</source>
         <translation>Gestartet in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="82"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="82"/>
         <source>Written as: %1</source>
         <translation>Geschrieben als: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="84"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="84"/>
         <source>The name could not be resolved statically; this is a guess.</source>
         <translation>Der Name konnte nicht statisch aufgelöst werden; dies ist eine Annahme.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="86"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="86"/>
         <source>The name comes from a parameter.</source>
         <translation>Der Name stammt aus einem Parameter.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="88"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="88"/>
         <source>Remapped by the launch file.</source>
         <translation>Vom Launch-File per Remap umbenannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="90"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="90"/>
         <source>Guard: %1</source>
         <translation>Bedingung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="91"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
         <source>Guard (false here): %1</source>
         <translation>Bedingung (hier falsch): %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="93"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="108"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="108"/>
         <source>Namespace %1 — right-click to collapse or expand</source>
         <translation>Namespace %1 – Rechtsklick zum Ein- oder Ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="111"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="111"/>
         <source>Topic %1</source>
         <translation>Topic %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="112"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="112"/>
         <source>Service %1</source>
         <translation>Service %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="113"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="113"/>
         <source>Action %1</source>
         <translation>Action %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="119"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="119"/>
         <source>Boundary port %1: %2 %3</source>
         <translation>Randport %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="120"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="120"/>
         <source>Promoted: nothing inside this launch file is on the other side.</source>
         <translation>Nach außen geführt: Innerhalb dieses Launch-Files gibt es keine Gegenseite.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="129"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="129"/>
         <source>%1 (%2) %3 %4 — click to see the code</source>
         <translation>%1 (%2) %3 %4 – Klicken, um den Code zu sehen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="144"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="144"/>
         <source>1 element of the reference is missing: %1</source>
         <translation>1 Element der Referenz fehlt: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="145"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="145"/>
         <source>%1 elements of the reference are missing: %2</source>
         <translation>%1 Elemente der Referenz fehlen: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="150"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="150"/>
         <source>launch file (outside the workspace)</source>
         <translation>Launch-File (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagramtext.cpp" line="151"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="151"/>
         <source>launch file %1</source>
         <translation>Launch-File %1</translation>
     </message>
@@ -956,9 +2322,59 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::Document</name>
     <message>
-        <location filename="../document/setnodedescriptioncommand.cpp" line="13"/>
+        <location filename="../document/correctioncommand.cpp" line="14"/>
+        <source>Rename to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="16"/>
+        <source>Set name %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="18"/>
+        <source>Set type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="20"/>
+        <source>Remove %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="22"/>
+        <source>Add port %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="24"/>
+        <source>Add part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="26"/>
+        <source>Add connection to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="29"/>
+        <source>Group as %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="31"/>
+        <source>Mark reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="33"/>
         <source>Edit description</source>
         <translation>Beschreibung bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../document/correctioncommand.cpp" line="46"/>
+        <source>Revert: %1</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../document/decidesuggestioncommand.cpp" line="13"/>
@@ -971,64 +2387,90 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
         <translation>Vorschlag ablehnen</translation>
     </message>
     <message>
-        <location filename="../document/document.cpp" line="149"/>
+        <location filename="../document/document.cpp" line="261"/>
         <source>Accept %1 suggestions</source>
         <translation>%1 Vorschläge annehmen</translation>
+    </message>
+    <message>
+        <location filename="../document/documentfindings.cpp" line="30"/>
+        <source>Accept Findings (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/documentfindings.cpp" line="32"/>
+        <source>Hide Findings (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/documentfindings.cpp" line="54"/>
+        <source>Restore Findings (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/documentproject.cpp" line="35"/>
+        <source>%1
+The file was kept as %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../document/documentproject.cpp" line="127"/>
+        <source>autosave: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::EvalCommand</name>
     <message>
-        <location filename="../app/evalcommand.cpp" line="30"/>
+        <location filename="../app/commands/evalcommand.cpp" line="30"/>
         <source>error: %1
 </source>
         <translation>Fehler: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="33"/>
+        <location filename="../app/commands/evalcommand.cpp" line="33"/>
         <source>note: </source>
         <translation>Hinweis: </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="35"/>
+        <location filename="../app/commands/evalcommand.cpp" line="35"/>
         <source>warning: </source>
         <translation>Warnung: </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="47"/>
+        <location filename="../app/commands/evalcommand.cpp" line="47"/>
         <source>Score a recovered PlantUML model against a reference model.</source>
         <translation>Ein rekonstruiertes PlantUML-Modell gegen ein Referenzmodell bewerten.</translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="52"/>
+        <location filename="../app/commands/evalcommand.cpp" line="52"/>
         <source>The reference model: a .puml file or a folder of them (searched recursively).</source>
         <translation>Das Referenzmodell: eine .puml-Datei oder ein Ordner mit solchen Dateien (rekursiv durchsucht).</translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="57"/>
+        <location filename="../app/commands/evalcommand.cpp" line="57"/>
         <source>The recovered model: a .puml file or a folder of them.</source>
         <translation>Das rekonstruierte Modell: eine .puml-Datei oder ein Ordner mit solchen Dateien.</translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="61"/>
+        <location filename="../app/commands/evalcommand.cpp" line="61"/>
         <source>Evaluate only ACDs or only CCDs (default: every level present).</source>
         <translation>Nur ACDs oder nur CCDs bewerten (Standard: jede vorhandene Ebene).</translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="64"/>
+        <location filename="../app/commands/evalcommand.cpp" line="64"/>
         <source>Print the result as JSON.</source>
         <translation>Das Ergebnis als JSON ausgeben.</translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="70"/>
+        <location filename="../app/commands/evalcommand.cpp" line="70"/>
         <source>Usage: rosarch eval --reference &lt;dir|file&gt; --recovered &lt;dir|file&gt; [--level acd|ccd] [--json]
 </source>
         <translation>Aufruf: rosarch eval --reference &lt;dir|file&gt; --recovered &lt;dir|file&gt; [--level acd|ccd] [--json]
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="82"/>
+        <location filename="../app/commands/evalcommand.cpp" line="76"/>
         <source>eval needs --reference and --recovered, and no other arguments.
 
 </source>
@@ -1037,110 +2479,163 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="90"/>
+        <location filename="../app/commands/evalcommand.cpp" line="84"/>
         <source>--level expects acd or ccd, got &apos;%1&apos;.
 </source>
         <translation>--level erwartet acd oder ccd, erhalten: „%1“.
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="100"/>
+        <location filename="../app/commands/evalcommand.cpp" line="94"/>
         <source>eval: %1
 </source>
         <translation>eval: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="116"/>
+        <location filename="../app/commands/evalcommand.cpp" line="110"/>
         <source>Nothing to evaluate: no ACD or CCD found in either input.
 </source>
         <translation>Nichts zu bewerten: In keiner der Eingaben wurde ein ACD oder CCD gefunden.
 </translation>
     </message>
     <message>
-        <location filename="../app/evalcommand.cpp" line="123"/>
+        <location filename="../app/commands/evalcommand.cpp" line="117"/>
         <source>eval: %1 is neither an ACD nor a CCD
 </source>
         <translation>eval: %1 ist weder ein ACD noch ein CCD
 </translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="35"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="35"/>
         <source>ACD (AtomicClassifierDiagrams)</source>
         <translation>ACD (AtomicClassifierDiagrams)</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="36"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="36"/>
         <source>CCD (ComposedClassifierDiagrams)</source>
         <translation>CCD (ComposedClassifierDiagrams)</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="49"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="49"/>
         <source>%1 reference diagrams, %2 recovered: %3 matched, %4 missing, %5 extra
 </source>
         <translation>%1 Referenzdiagramme, %2 rekonstruiert: %3 zugeordnet, %4 fehlend, %5 zusätzlich
 </translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="56"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="56"/>
         <source>kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="57"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="57"/>
         <source>TP</source>
         <translation>TP</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="58"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="58"/>
         <source>FP</source>
         <translation>FP</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="59"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="59"/>
         <source>FN</source>
         <translation>FN</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="60"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="60"/>
         <source>micro P/R/F1</source>
         <translation>Mikro-P/R/F1</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="61"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="61"/>
         <source>macro P/R/F1</source>
         <translation>Makro-P/R/F1</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="67"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="67"/>
         <source>all kinds</source>
         <translation>alle Arten</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="69"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="69"/>
         <source>Per diagram (P R F1 over all kinds):
 </source>
         <translation>Je Diagramm (P R F1 über alle Arten):
 </translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="74"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="74"/>
         <source>   missing: no recovered diagram</source>
         <translation>   fehlt: kein rekonstruiertes Diagramm</translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="76"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="76"/>
         <source>  extra recovered diagram, not scored: %1 (%2)
 </source>
         <translation>  zusätzliches rekonstruiertes Diagramm, nicht bewertet: %1 (%2)
 </translation>
     </message>
     <message>
-        <location filename="../app/evaluationreport.cpp" line="86"/>
+        <location filename="../app/commands/evaluationreport.cpp" line="86"/>
         <source>Differences (FP: recovered but not in the reference; FN: in the reference but not recovered):
 </source>
         <translation>Unterschiede (FP: rekonstruiert, aber nicht in der Referenz; FN: in der Referenz, aber nicht rekonstruiert):
 </translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::InspectorPanel</name>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="36"/>
+        <source>Select a class, port, node instance, launch file, part or topic to see where it comes from and to correct it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="46"/>
+        <source>Kind:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="47"/>
+        <source>Name:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="48"/>
+        <source>Type:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="49"/>
+        <source>Key:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="50"/>
+        <source>Provenance:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="51"/>
+        <source>Review:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="90"/>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="93"/>
+        <source>✓ reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/inspectorpanel.cpp" line="93"/>
+        <source>not reviewed</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1269,85 +2764,103 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::LaunchTreeModel</name>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="222"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="108"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="224"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="110"/>
         <source>Namespace</source>
         <translation>Namespace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="226"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="112"/>
         <source>Package / executable</source>
         <translation>Paket / Executable</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="228"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="114"/>
         <source>Class</source>
         <translation>Klasse</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="230"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="116"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="247"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="133"/>
         <source>(unresolved include)</source>
         <translation>(unaufgelöstes Include)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="293"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="179"/>
         <source>namespace scope</source>
         <translation>Namespace-Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="322"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="207"/>
         <source>(not found)</source>
         <translation>(nicht gefunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreemodel.cpp" line="322"/>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="207"/>
         <source>(external)</source>
         <translation>(extern)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="274"/>
+        <source>Parameters</source>
+        <translation type="unfinished">Parameter</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../widgets/launchtreemodeldata.cpp" line="276"/>
+        <source>%n in effect</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreemodeldata.cpp" line="278"/>
+        <source>The parameters this instance runs with, and where each comes from: the launch file, a parameter file, or the default in code.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::LaunchTreePanel</name>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="16"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="18"/>
         <source>&amp;Go to Class</source>
         <translation>Zur &amp;Klasse wechseln</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="20"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="22"/>
         <source>Filter by name, namespace, class or executable</source>
         <translation>Nach Name, Namespace, Klasse oder Executable filtern</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="21"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="23"/>
         <source>Shows the launch files, namespaces and node instances whose name, namespace, class or executable contains this text. Esc clears the filter.</source>
         <translation>Zeigt die Launch-Files, Namespaces und Knoteninstanzen, deren Name, Namespace, Klasse oder Executable diesen Text enthält. Esc setzt den Filter zurück.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="29"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="31"/>
         <source>Select the atomic node class this node instance runs</source>
         <translation>Die atomare Knotenklasse auswählen, die diese Knoteninstanz ausführt</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="37"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="39"/>
         <source>&amp;Expand All</source>
         <translation>Alle &amp;ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="39"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="41"/>
         <source>&amp;Collapse All</source>
         <translation>Alle &amp;einklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreepanel.cpp" line="58"/>
+        <location filename="../widgets/launchtreepanel.cpp" line="72"/>
         <source>No launch files analysed yet.</source>
         <translation>Noch keine Launch-Files analysiert.</translation>
     </message>
@@ -1451,186 +2964,224 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
         <translation>%1 Includes</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="130"/>
+        <location filename="../widgets/launchtreetext.cpp" line="131"/>
         <source>unresolved (%1)</source>
         <translation>unaufgelöst (%1)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="131"/>
+        <location filename="../widgets/launchtreetext.cpp" line="132"/>
         <source>unresolved (%1) · guess: %2</source>
         <translation>unaufgelöst (%1) · Annahme: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="137"/>
+        <location filename="../widgets/launchtreetext.cpp" line="138"/>
         <source>Composable node</source>
         <translation>Komponierbarer Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="138"/>
+        <location filename="../widgets/launchtreetext.cpp" line="139"/>
         <source>Lifecycle node</source>
         <translation>Lifecycle-Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="139"/>
+        <location filename="../widgets/launchtreetext.cpp" line="140"/>
         <source>Node</source>
         <translation>Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="143"/>
-        <location filename="../widgets/launchtreetext.cpp" line="202"/>
+        <location filename="../widgets/launchtreetext.cpp" line="144"/>
+        <location filename="../widgets/launchtreetext.cpp" line="212"/>
         <source>Package: %1</source>
         <translation>Paket: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="146"/>
+        <location filename="../widgets/launchtreetext.cpp" line="147"/>
         <source>Plugin: %1</source>
         <translation>Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="146"/>
+        <location filename="../widgets/launchtreetext.cpp" line="147"/>
         <source>Executable: %1</source>
         <translation>Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="149"/>
+        <location filename="../widgets/launchtreetext.cpp" line="150"/>
         <source>Class: %1</source>
         <translation>Klasse: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="154"/>
+        <location filename="../widgets/launchtreetext.cpp" line="155"/>
         <source>Class: not found in the workspace</source>
         <translation>Klasse: nicht im Workspace gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="155"/>
+        <location filename="../widgets/launchtreetext.cpp" line="156"/>
         <source>Class: not analysed; package %1 is not in the workspace</source>
         <translation>Klasse: nicht analysiert; Paket %1 liegt nicht im Workspace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="159"/>
+        <location filename="../widgets/launchtreetext.cpp" line="160"/>
         <source>Loaded into container: %1</source>
         <translation>Geladen in Container: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="162"/>
-        <location filename="../widgets/launchtreetext.cpp" line="205"/>
+        <location filename="../widgets/launchtreetext.cpp" line="163"/>
+        <location filename="../widgets/launchtreetext.cpp" line="215"/>
         <source>Condition: %1 (true)</source>
         <translation>Bedingung: %1 (wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="163"/>
+        <location filename="../widgets/launchtreetext.cpp" line="164"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not started)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht gestartet)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="165"/>
+        <location filename="../widgets/launchtreetext.cpp" line="166"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that declares it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das ihn deklariert, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="170"/>
+        <location filename="../widgets/launchtreetext.cpp" line="171"/>
         <source>Remappings:</source>
         <translation>Remaps:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="176"/>
+        <location filename="../widgets/launchtreetext.cpp" line="177"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="178"/>
-        <source>Parameters:</source>
-        <translation>Parameter:</translation>
+        <location filename="../widgets/launchtreetext.cpp" line="179"/>
+        <source>Parameters given:</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="181"/>
-        <location filename="../widgets/launchtreetext.cpp" line="216"/>
+        <location filename="../widgets/launchtreetext.cpp" line="185"/>
+        <source>Loads plugins:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../widgets/launchtreetext.cpp" line="188"/>
+        <source>Parameters in effect: %n (listed under the node, each with its source)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="261"/>
+        <source>default in code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="267"/>
+        <source>launch file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="276"/>
+        <source>No launch value or parameter file sets it: the default declared in code, at %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="280"/>
+        <source>From the parameter file %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="282"/>
+        <source>Set by the launch file at %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="191"/>
+        <location filename="../widgets/launchtreetext.cpp" line="226"/>
         <source>Not resolved statically:</source>
         <translation>Nicht statisch aufgelöst:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="183"/>
+        <location filename="../widgets/launchtreetext.cpp" line="193"/>
         <source>Declared at %1</source>
         <translation>Deklariert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="191"/>
+        <location filename="../widgets/launchtreetext.cpp" line="201"/>
         <source>Launch file</source>
         <translation>Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="192"/>
+        <location filename="../widgets/launchtreetext.cpp" line="202"/>
         <source>External include</source>
         <translation>Externes Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="193"/>
+        <location filename="../widgets/launchtreetext.cpp" line="203"/>
         <source>Included launch file</source>
         <translation>Eingebundenes Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="197"/>
+        <location filename="../widgets/launchtreetext.cpp" line="207"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="199"/>
+        <location filename="../widgets/launchtreetext.cpp" line="209"/>
         <source>Package %1 is not in the workspace; its nodes are not analysed.</source>
         <translation>Paket %1 liegt nicht im Workspace; seine Knoten werden nicht analysiert.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="206"/>
+        <location filename="../widgets/launchtreetext.cpp" line="216"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not included)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht eingebunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="208"/>
+        <location filename="../widgets/launchtreetext.cpp" line="218"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that includes it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das es einbindet, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="213"/>
+        <location filename="../widgets/launchtreetext.cpp" line="223"/>
         <source>Launch arguments:</source>
         <translation>Launch-Argumente:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="218"/>
-        <location filename="../widgets/launchtreetext.cpp" line="243"/>
+        <location filename="../widgets/launchtreetext.cpp" line="228"/>
+        <location filename="../widgets/launchtreetext.cpp" line="253"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="218"/>
+        <location filename="../widgets/launchtreetext.cpp" line="228"/>
         <source>Included at %1</source>
         <translation>Eingebunden in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="226"/>
+        <location filename="../widgets/launchtreetext.cpp" line="236"/>
         <source>&lt;b&gt;Namespace&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Namespace&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="227"/>
+        <location filename="../widgets/launchtreetext.cpp" line="237"/>
         <source>Pushed in %1</source>
         <translation>Gesetzt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="229"/>
+        <location filename="../widgets/launchtreetext.cpp" line="239"/>
         <source>1 instance inside this scope</source>
         <translation>1 Instanz in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="230"/>
+        <location filename="../widgets/launchtreetext.cpp" line="240"/>
         <source>%1 instances inside this scope</source>
         <translation>%1 Instanzen in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="237"/>
+        <location filename="../widgets/launchtreetext.cpp" line="247"/>
         <source>&lt;b&gt;Not resolved statically:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Nicht statisch aufgelöst:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="241"/>
+        <location filename="../widgets/launchtreetext.cpp" line="251"/>
         <source>The analysis continued with: %1</source>
         <translation>Die Analyse wurde fortgesetzt mit: %1</translation>
     </message>
@@ -1737,265 +3288,346 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::LogView</name>
     <message>
-        <location filename="../widgets/logview.cpp" line="32"/>
+        <location filename="../widgets/logview.cpp" line="26"/>
+        <source>&amp;Hide Finding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="27"/>
+        <source>&amp;Accept Finding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="28"/>
+        <source>Accept Finding with &amp;Reason…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="29"/>
+        <source>Re&amp;store Finding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="46"/>
+        <source>H</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="47"/>
+        <source>Hide the selected findings: they leave the list (Hidden shows them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="48"/>
+        <source>A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="49"/>
+        <source>Accept the selected findings as they are: they leave the list and rosarch check no longer counts them as new</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="51"/>
+        <source>U</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="52"/>
+        <source>Show the selected hidden or accepted findings again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="83"/>
         <source>Progress and messages of stage runs appear here.</source>
         <translation>Hier erscheinen Fortschritt und Meldungen der Stufenausführungen.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="133"/>
+        <source>Log</source>
+        <translation type="unfinished">Protokoll</translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="136"/>
+        <source>Log — %1 findings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="137"/>
+        <source>Log — %1 findings, %2 shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="259"/>
+        <source>Accept Finding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="260"/>
+        <source>Why is this finding fine as it is?</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>rosarch::MainWindow</name>
     <message>
-        <location filename="../app/mainwindow.cpp" line="61"/>
-        <source>rosarch</source>
-        <translation>rosarch</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="123"/>
+        <location filename="../app/mainwindow.cpp" line="163"/>
         <source>Atomic nodes</source>
         <translation>Atomare Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="124"/>
+        <location filename="../app/mainwindow.cpp" line="164"/>
         <source>Launch tree</source>
         <translation>Launch-Baum</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="125"/>
+        <location filename="../app/mainwindow.cpp" line="165"/>
         <source>Composed diagram</source>
         <translation>Kompositionsdiagramm</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="126"/>
+        <location filename="../app/mainwindow.cpp" line="166"/>
         <source>Source</source>
         <translation>Quelltext</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="127"/>
+        <location filename="../app/mainwindow.cpp" line="167"/>
+        <location filename="../app/mainwindow.cpp" line="171"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="25"/>
+        <location filename="../app/mainwindowactions.cpp" line="32"/>
         <source>&amp;Open Workspace…</source>
         <translation>Workspace ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="27"/>
+        <location filename="../app/mainwindowactions.cpp" line="34"/>
         <source>Open a ROS 2 workspace folder and recover its architecture</source>
         <translation>Einen ROS-2-Workspace-Ordner öffnen und seine Architektur rekonstruieren</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="30"/>
+        <location filename="../app/mainwindowactions.cpp" line="37"/>
         <source>&amp;Export Artifacts…</source>
         <translation>Artefakte &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="31"/>
+        <location filename="../app/mainwindowactions.cpp" line="38"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="33"/>
+        <location filename="../app/mainwindowactions.cpp" line="40"/>
         <source>Write the JSON artifacts and the PlantUML diagrams: one per node class (ACD) and one per launch file (CCD)</source>
         <translation>Die JSON-Artefakte und die PlantUML-Diagramme schreiben: eines pro Knotenklasse (ACD) und eines pro Launch-File (CCD)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="37"/>
+        <location filename="../app/mainwindowactions.cpp" line="44"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="42"/>
+        <location filename="../app/mainwindowactions.cpp" line="49"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="44"/>
+        <location filename="../app/mainwindowactions.cpp" line="51"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="47"/>
+        <location filename="../app/mainwindowactions.cpp" line="54"/>
         <source>&amp;Find…</source>
         <translation>&amp;Suchen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="63"/>
+        <location filename="../app/mainwindowactions.cpp" line="70"/>
         <source>&amp;Next Diagnostic</source>
         <translation>&amp;Nächste Diagnose</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="69"/>
+        <location filename="../app/mainwindowactions.cpp" line="76"/>
         <source>&amp;Previous Diagnostic</source>
         <translation>&amp;Vorherige Diagnose</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="49"/>
+        <location filename="../app/mainwindowactions.cpp" line="56"/>
         <source>Filter the node tree, or the launch tree when it has the focus, by name</source>
         <translation>Den Knotenbaum – oder den Launch-Baum, wenn er den Fokus hat – nach Name filtern</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="76"/>
+        <location filename="../app/mainwindowactions.cpp" line="83"/>
         <source>&amp;Run All Stages</source>
         <translation>Alle Stufen aus&amp;führen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="77"/>
+        <location filename="../app/mainwindowactions.cpp" line="84"/>
         <source>Run all</source>
         <translation>Alle ausführen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="79"/>
+        <location filename="../app/mainwindowactions.cpp" line="86"/>
         <source>Recover the atomic nodes, the launch tree and the composed architecture of the workspace (F5)</source>
         <translation>Die atomaren Knoten, den Launch-Baum und die zusammengesetzte Architektur des Workspaces rekonstruieren (F5)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="81"/>
+        <location filename="../app/mainwindowactions.cpp" line="88"/>
         <source>Stage 1 finds node classes, their ports and executables; stage 2 reads the launch files; stage 3 composes them</source>
         <translation>Stufe 1 findet Knotenklassen, ihre Ports und Executables; Stufe 2 liest die Launch-Files; Stufe 3 setzt sie zusammen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="85"/>
+        <location filename="../app/mainwindowactions.cpp" line="92"/>
         <source>Run Stage &amp;2: Launch Files</source>
         <translation>Stufe &amp;2 ausführen: Launch-Files</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="86"/>
+        <location filename="../app/mainwindowactions.cpp" line="93"/>
         <source>Stage 2</source>
         <translation>Stufe 2</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="88"/>
+        <location filename="../app/mainwindowactions.cpp" line="95"/>
         <source>Read the launch files again against the current atomic nodes, with the chosen launch arguments (F6)</source>
         <translation>Die Launch-Files mit den gewählten Launch-Argumenten erneut lesen und mit den aktuellen atomaren Knoten abgleichen (F6)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="90"/>
+        <location filename="../app/mainwindowactions.cpp" line="97"/>
         <source>Re-run stage 2 only: launch files, includes, namespaces and node instances</source>
         <translation>Nur Stufe 2 erneut ausführen: Launch-Files, Includes, Namespaces und Knoteninstanzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="94"/>
+        <location filename="../app/mainwindowactions.cpp" line="101"/>
         <source>Launch &amp;Arguments…</source>
         <translation>&amp;Launch-Argumente…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="95"/>
+        <location filename="../app/mainwindowactions.cpp" line="102"/>
         <source>Arguments</source>
         <translation>Argumente</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="96"/>
+        <location filename="../app/mainwindowactions.cpp" line="103"/>
         <source>Ctrl+Shift+A</source>
         <translation>Ctrl+Shift+A</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="98"/>
+        <location filename="../app/mainwindowactions.cpp" line="105"/>
         <source>Choose the root launch file and the launch argument values for stage 2</source>
         <translation>Das Wurzel-Launch-File und die Werte der Launch-Argumente für Stufe 2 wählen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="102"/>
+        <location filename="../app/mainwindowactions.cpp" line="109"/>
         <source>&amp;Cancel Stage</source>
         <translation>Stufe &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="103"/>
+        <location filename="../app/mainwindowactions.cpp" line="110"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="105"/>
+        <location filename="../app/mainwindowactions.cpp" line="112"/>
         <source>Stop the running stage and keep the previous result (Esc)</source>
         <translation>Die laufende Stufe anhalten und das vorherige Ergebnis behalten (Esc)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="108"/>
+        <location filename="../app/mainwindowactions.cpp" line="115"/>
         <source>&amp;Suggest (Stage 4)</source>
         <translation>&amp;Vorschläge (Stufe 4)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="109"/>
+        <location filename="../app/mainwindowactions.cpp" line="116"/>
         <source>LLM</source>
         <translation>LLM</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="111"/>
+        <location filename="../app/mainwindowactions.cpp" line="118"/>
         <source>Propose node descriptions and subsystem groupings for review (F7); asks the LLM when one is configured</source>
         <translation>Knotenbeschreibungen und Subsystem-Gruppierungen zur Prüfung vorschlagen (F7); fragt das LLM, wenn eines konfiguriert ist</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="121"/>
+        <location filename="../app/mainwindowactions.cpp" line="128"/>
+        <source>&amp;Watch Workspace for Changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowactions.cpp" line="131"/>
+        <source>Analyse again when a source, build, launch or parameter file of the workspace changes on disk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowactions.cpp" line="137"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="124"/>
+        <location filename="../app/mainwindowactions.cpp" line="140"/>
         <source>&amp;About rosarch</source>
         <translation>&amp;Über rosarch</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="130"/>
+        <location filename="../app/mainwindowactions.cpp" line="146"/>
         <source>About &amp;Qt</source>
         <translation>Über &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="137"/>
+        <location filename="../app/mainwindowactions.cpp" line="153"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="139"/>
+        <location filename="../app/mainwindowactions.cpp" line="156"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="151"/>
+        <location filename="../app/mainwindowactions.cpp" line="178"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="160"/>
+        <location filename="../app/mainwindowactions.cpp" line="187"/>
         <source>Main</source>
         <translation>Hauptwerkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="172"/>
+        <location filename="../app/mainwindowactions.cpp" line="199"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="176"/>
+        <location filename="../app/mainwindowactions.cpp" line="207"/>
         <source>&amp;Toolbar</source>
         <translation>&amp;Werkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="181"/>
+        <location filename="../app/mainwindowactions.cpp" line="215"/>
         <source>&amp;Stages</source>
         <translation>&amp;Stufen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="190"/>
+        <location filename="../app/mainwindowactions.cpp" line="224"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="132"/>
+        <location filename="../app/mainwindow.cpp" line="177"/>
         <source>Suggestions</source>
         <translation>Vorschläge</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="273"/>
+        <location filename="../app/mainwindow.cpp" line="352"/>
         <source>Open ROS 2 Workspace</source>
         <translation>ROS-2-Workspace öffnen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="284"/>
+        <location filename="../app/mainwindow.cpp" line="363"/>
         <source>Cannot open workspace</source>
         <translation>Workspace kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="285"/>
+        <location filename="../app/mainwindow.cpp" line="364"/>
         <source>The folder “%1” does not exist or is not a folder.
 
 Choose a ROS 2 workspace (a folder containing packages with a package.xml) with File → Open Workspace, or drop one onto the window.</source>
@@ -2004,37 +3636,76 @@ Choose a ROS 2 workspace (a folder containing packages with a package.xml) with 
 Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordner mit Paketen, die eine package.xml enthalten) aus, oder ziehen Sie einen Workspace auf das Fenster.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="299"/>
-        <source>%1 — rosarch</source>
-        <translation>%1 — rosarch</translation>
+        <location filename="../app/mainwindow.cpp" line="64"/>
+        <location filename="../app/mainwindow.cpp" line="399"/>
+        <source>rosarch[*]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/mainwindow.cpp" line="75"/>
+        <source>%n file(s) changed on disk (%1); analysing again</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="342"/>
+        <location filename="../app/mainwindow.cpp" line="90"/>
+        <source>This workspace has more than %L1 files and folders to watch, so only its folders are watched: files added, removed or replaced (as most editors save) start a new analysis, a file edited in place does not. Press F5 after such an edit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="180"/>
+        <source>Architecture changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="182"/>
+        <source>Talkers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="407"/>
+        <source>%1 (new project)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="409"/>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="410"/>
+        <source>%1[*] — rosarch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="452"/>
         <source>No recent workspaces</source>
         <translation>Keine zuletzt geöffneten Workspaces</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="347"/>
+        <location filename="../app/mainwindow.cpp" line="457"/>
         <source>&amp;%1 %2 — %3</source>
         <translation>&amp;%1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="355"/>
+        <location filename="../app/mainwindow.cpp" line="465"/>
         <source>&amp;Clear Menu</source>
         <translation>Menü &amp;leeren</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="366"/>
+        <location filename="../app/mainwindow.cpp" line="476"/>
         <source>Export Artifacts To</source>
         <translation>Artefakte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="381"/>
+        <location filename="../app/mainwindow.cpp" line="490"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="382"/>
+        <location filename="../app/mainwindow.cpp" line="491"/>
         <source>The artifacts could not be written to “%1”:
 %2
 
@@ -2045,102 +3716,112 @@ Choose a folder you can write to, or free some space, and export again.</source>
 Wählen Sie einen Ordner, in den Sie schreiben dürfen, oder geben Sie Speicherplatz frei, und exportieren Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="385"/>
+        <location filename="../app/mainwindow.cpp" line="494"/>
         <source>Export to %1 failed: %2</source>
         <translation>Export nach %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="388"/>
+        <location filename="../app/mainwindow.cpp" line="497"/>
         <source>Exported 1 file to %1</source>
         <translation>1 Datei nach %1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="389"/>
+        <location filename="../app/mainwindow.cpp" line="498"/>
         <source>Exported %1 files to %2</source>
         <translation>%1 Dateien nach %2 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="423"/>
+        <location filename="../app/mainwindowstatus.cpp" line="45"/>
         <source>1 package</source>
         <translation>1 Paket</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="423"/>
+        <location filename="../app/mainwindowstatus.cpp" line="45"/>
         <source>%1 packages</source>
         <translation>%1 Pakete</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="424"/>
+        <location filename="../app/mainwindowstatus.cpp" line="46"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="424"/>
+        <location filename="../app/mainwindowstatus.cpp" line="46"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="425"/>
+        <location filename="../app/mainwindowstatus.cpp" line="48"/>
+        <source>1 plugin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="48"/>
+        <source>%1 plugins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="49"/>
         <source>1 port</source>
         <translation>1 Port</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="425"/>
+        <location filename="../app/mainwindowstatus.cpp" line="49"/>
         <source>%1 ports</source>
         <translation>%1 Ports</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="426"/>
+        <location filename="../app/mainwindowstatus.cpp" line="50"/>
         <source>1 launch file</source>
         <translation>1 Launch-File</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="426"/>
+        <location filename="../app/mainwindowstatus.cpp" line="50"/>
         <source>%1 launch files</source>
         <translation>%1 Launch-Files</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="427"/>
+        <location filename="../app/mainwindowstatus.cpp" line="51"/>
         <source>1 instance</source>
         <translation>1 Instanz</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="427"/>
+        <location filename="../app/mainwindowstatus.cpp" line="51"/>
         <source>%1 instances</source>
         <translation>%1 Instanzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="428"/>
+        <location filename="../app/mainwindowstatus.cpp" line="52"/>
         <source>1 unresolved</source>
         <translation>1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="428"/>
+        <location filename="../app/mainwindowstatus.cpp" line="52"/>
         <source>%1 unresolved</source>
         <translation>%1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="429"/>
+        <location filename="../app/mainwindowstatus.cpp" line="53"/>
         <source>1 composite</source>
         <translation>1 Komposit</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="429"/>
+        <location filename="../app/mainwindowstatus.cpp" line="53"/>
         <source>%1 composites</source>
         <translation>%1 Komposite</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="430"/>
+        <location filename="../app/mainwindowstatus.cpp" line="54"/>
         <source>1 diagnostic</source>
         <translation>1 Diagnose</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="430"/>
+        <location filename="../app/mainwindowstatus.cpp" line="54"/>
         <source>%1 diagnostics</source>
         <translation>%1 Diagnosen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="432"/>
+        <location filename="../app/mainwindowstatus.cpp" line="56"/>
         <source>Stage 1: packages, atomic node classes and their ports.
 Stage 2: launch files found, node instances they start and expressions that could not be resolved statically.
 Stage 3: composites, one per launch-file instance.</source>
@@ -2149,17 +3830,17 @@ Stufe 2: gefundene Launch-Files, die von ihnen gestarteten Knoteninstanzen und A
 Stufe 3: Komposite, eines pro Launch-File-Instanz.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="447"/>
+        <location filename="../app/mainwindowstatus.cpp" line="71"/>
         <source>Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.</source>
         <translation>Öffnen Sie einen ROS-2-Workspace (Datei → Workspace öffnen), um seinen Launch-Baum zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="449"/>
+        <location filename="../app/mainwindowstatus.cpp" line="73"/>
         <source>Reading the launch files…</source>
         <translation>Die Launch-Files werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="452"/>
+        <location filename="../app/mainwindowstatus.cpp" line="76"/>
         <source>No launch files found in this workspace.
 
 Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file holding a launch description.</source>
@@ -2168,7 +3849,7 @@ Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file hol
 Stufe 2 liest *.launch.py-, *.launch.xml- und *.launch.yaml-Dateien sowie jede Datei, die eine Launch-Beschreibung enthält.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="457"/>
+        <location filename="../app/mainwindowstatus.cpp" line="81"/>
         <source>No launch file was analysed as a root.
 
 Choose one in Stages → Launch Arguments…</source>
@@ -2177,14 +3858,439 @@ Choose one in Stages → Launch Arguments…</source>
 Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="487"/>
+        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <source>atomic nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <source>launch files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <source>composition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="115"/>
+        <source>Stage %1: %2 — %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="117"/>
+        <source>Stage %1: %2 — %3/%4 composites</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="121"/>
+        <source>Stage %1: %2 — %3/%4 files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowstatus.cpp" line="131"/>
         <source>[%1/%2] %3</source>
         <translation>[%1/%2] %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="139"/>
+        <location filename="../app/mainwindow.cpp" line="192"/>
         <source>Cannot show %1</source>
         <translation>%1 kann nicht angezeigt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="33"/>
+        <source>Corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="34"/>
+        <source>Inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="70"/>
+        <source>&amp;Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="77"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="93"/>
+        <source>Select an element to correct it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="82"/>
+        <source>Show &amp;Corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindowcorrections.cpp" line="87"/>
+        <source>Show &amp;Inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::ProjectController</name>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="29"/>
+        <source>&amp;New Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="30"/>
+        <source>Open &amp;Project…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="31"/>
+        <source>&amp;Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="32"/>
+        <source>Save Project &amp;As…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="33"/>
+        <source>Recent Pro&amp;jects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="36"/>
+        <source>rosarch projects (*.project.json);;JSON files (*.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="42"/>
+        <source>Start an empty project (no decisions, no corrections, the default launch options) on the open workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="45"/>
+        <source>Ctrl+Shift+O</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="46"/>
+        <source>Open a rosarch project file and the workspace it belongs to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="52"/>
+        <source>Open Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="57"/>
+        <source>Write the launch options, decisions and corrections to the project file (by default rosarch.project.json in the workspace)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="61"/>
+        <source>Ctrl+Shift+S</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="62"/>
+        <source>Write the project to another file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="74"/>
+        <location filename="../app/projectcontroller.cpp" line="221"/>
+        <source>The project file could not be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="75"/>
+        <source>Cannot read the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="76"/>
+        <source>%1
+
+rosarch opened the workspace with an empty project. Saving writes a new project file; the unreadable one stays where it was kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="99"/>
+        <source>the new project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="102"/>
+        <source>Unsaved changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="103"/>
+        <source>The project of “%1” has changes that are not saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="108"/>
+        <source>Save them to %1, discard them, or cancel and stay with this project?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="134"/>
+        <source>Recover unsaved changes?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="135"/>
+        <source>rosarch did not close normally while the project of “%1” had unsaved changes. They were kept on %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="141"/>
+        <source>&amp;Recover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="145"/>
+        <source>Recover them (the project shows as modified until you save it), or discard them and keep the project as saved in %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="148"/>
+        <source>Recover them (the project shows as modified until you save it), or discard them (the workspace has no saved project yet)?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="150"/>
+        <source>Autosave file: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="156"/>
+        <source>Discarded the autosaved changes %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="162"/>
+        <source>The autosaved changes could not be recovered: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="163"/>
+        <source>Cannot recover the changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="164"/>
+        <source>%1
+
+The autosave file was left where it is.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="167"/>
+        <source>Recovered the unsaved changes from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="168"/>
+        <source>Recovered the unsaved changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="192"/>
+        <source>Save Project As</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="201"/>
+        <source>The project could not be saved to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="205"/>
+        <source>Saved the project to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="206"/>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="216"/>
+        <location filename="../app/projectcontroller.cpp" line="222"/>
+        <location filename="../app/projectcontroller.cpp" line="228"/>
+        <source>Cannot open project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="217"/>
+        <source>The project file “%1” does not exist.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="223"/>
+        <source>%1
+
+The file was not opened and is left as it is.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="229"/>
+        <source>The workspace of the project “%1” is not there: %2.
+
+Move the project file into its workspace, or open the workspace and save the project again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="246"/>
+        <source>Opened the project %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="258"/>
+        <source>No workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="258"/>
+        <source>A project belongs to a workspace: open one with File → Open Workspace, then start a new project on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="265"/>
+        <source>Started a new project on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="276"/>
+        <source>No recent projects</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="281"/>
+        <source>&amp;%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="288"/>
+        <source>Not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/projectcontroller.cpp" line="294"/>
+        <source>&amp;Clear Menu</source>
+        <translation type="unfinished">Menü &amp;leeren</translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::RenderController</name>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="20"/>
+        <source>Export and &amp;Render with PlantUML…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="22"/>
+        <source>Write the artifacts and render every ACD and CCD to SVG with PlantUML (needs Java and a PlantUML jar)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="25"/>
+        <source>PlantUML &amp;Jar…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="26"/>
+        <source>Choose the PlantUML jar used for rendering</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="55"/>
+        <source>Choose the PlantUML Jar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="57"/>
+        <source>Java archives (*.jar)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="61"/>
+        <source>PlantUML jar set to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="72"/>
+        <source>Export and Render To</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="85"/>
+        <source>Java not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="86"/>
+        <source>Rendering with PlantUML needs a Java runtime. Install one (on Debian: apt install default-jre-headless) or set JAVA_HOME, then render again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="91"/>
+        <location filename="../app/rendercontroller.cpp" line="98"/>
+        <source>PlantUML jar not found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="92"/>
+        <source>The PlantUML jar chosen in File › PlantUML Jar… is no longer there:
+%1
+
+Choose it again, then render again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="99"/>
+        <source>Rendering needs plantuml.jar (from plantuml.com, or scripts/fetch-plantuml.sh in rosarch&apos;s sources). Choose it with File › PlantUML Jar…, or set ROSARCH_PLANTUML_JAR, then render again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="107"/>
+        <source>Export failed</source>
+        <translation type="unfinished">Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="108"/>
+        <source>The artifacts could not be written to “%1”:
+%2
+
+Choose a folder you can write to, or free some space, and try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="133"/>
+        <source>Rendered %1 diagrams to SVG in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="136"/>
+        <source>PlantUML failed (exit code %1): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="140"/>
+        <source>Rendering failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="146"/>
+        <source>Java could not be started: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/rendercontroller.cpp" line="151"/>
+        <source>Rendering %1 diagrams with PlantUML…</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2218,54 +4324,102 @@ Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
 <context>
     <name>rosarch::StageController</name>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="103"/>
+        <location filename="../app/stagecontroller.cpp" line="130"/>
         <source>Reading launch files…</source>
         <translation>Launch-Files werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="99"/>
+        <location filename="../app/stagecontroller.cpp" line="126"/>
         <source>Stages 1–3 (atomic nodes, launch files, composition) started on %1</source>
         <translation>Stufen 1–3 (atomare Knoten, Launch-Files, Komposition) für %1 gestartet</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="100"/>
+        <location filename="../app/stagecontroller.cpp" line="25"/>
+        <source>%1 took %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="33"/>
+        <source>Stage 1 (atomic nodes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="35"/>
+        <source>Stage 2 (launch files)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="37"/>
+        <source>Stage 3 (composition)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="39"/>
+        <source>Stage %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="127"/>
         <source>Recovering atomic nodes, launch files and their composition…</source>
         <translation>Atomare Knoten, Launch-Files und ihre Komposition werden rekonstruiert…</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="102"/>
+        <location filename="../app/stagecontroller.cpp" line="129"/>
         <source>Stages 2–3 (launch files, composition) started on %1</source>
         <translation>Stufen 2–3 (Launch-Files, Komposition) für %1 gestartet</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="119"/>
+        <location filename="../app/stagecontroller.cpp" line="144"/>
+        <source>Stages 1–3 finished in %1 s: the result is the same as the one shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="152"/>
+        <location filename="../app/stagecontroller.cpp" line="174"/>
+        <source>Showing the result in the window took %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="156"/>
         <source>Stages 1–3 finished in %1 s: %2 nodes, %3 ports, %4 launch files, %5 node instances, %6 composites, %7 diagnostics</source>
         <translation>Stufen 1–3 in %1 s abgeschlossen: %2 Knoten, %3 Ports, %4 Launch-Files, %5 Knoteninstanzen, %6 Komposite, %7 Diagnosen</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="135"/>
+        <location filename="../app/stagecontroller.cpp" line="176"/>
         <source>Stages 2–3 finished in %1 s: %2 launch files, %3 launch-file instances, %4 node instances, %5 composites, %6 diagnostics</source>
         <translation>Stufen 2–3 in %1 s abgeschlossen: %2 Launch-Files, %3 Launch-File-Instanzen, %4 Knoteninstanzen, %5 Komposite, %6 Diagnosen</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="153"/>
+        <location filename="../app/stagecontroller.cpp" line="194"/>
+        <location filename="../app/stagecontroller.cpp" line="204"/>
         <source>Stages 1–3</source>
         <translation>Stufen 1–3</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="153"/>
+        <location filename="../app/stagecontroller.cpp" line="194"/>
+        <location filename="../app/stagecontroller.cpp" line="204"/>
         <source>Stages 2–3</source>
         <translation>Stufen 2–3</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="154"/>
+        <location filename="../app/stagecontroller.cpp" line="195"/>
         <source>%1 canceled; the previous result is kept.</source>
         <translation>%1 abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <location filename="../app/stagecontroller.cpp" line="155"/>
+        <location filename="../app/stagecontroller.cpp" line="196"/>
         <source>%1 canceled</source>
         <translation>%1 abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="206"/>
+        <source>%1 stopped without a result; the previous result is kept. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/stagecontroller.cpp" line="207"/>
+        <source>%1 stopped: the analysis worker failed (see the log)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2279,89 +4433,89 @@ Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
 <context>
     <name>rosarch::SuggestCommand</name>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="21"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="21"/>
         <source>Recover a ROS 2 workspace and propose checked suggestions (node descriptions, subsystem groupings, unresolved names).</source>
         <translation>Einen ROS-2-Workspace rekonstruieren und geprüfte Vorschläge machen (Knotenbeschreibungen, Subsystem-Gruppierungen, unaufgelöste Namen).</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="25"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="28"/>
         <source>The workspace folder to analyse.</source>
         <translation>Der zu analysierende Workspace-Ordner.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="27"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="31"/>
         <source>Folder for suggestions.json.</source>
         <translation>Ordner für suggestions.json.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="29"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="35"/>
         <source>OpenAI-compatible endpoint (with or without /v1); default $ROSARCH_LLM_ENDPOINT. The API key is read from $ROSARCH_LLM_API_KEY or $OPENAI_API_KEY.</source>
         <translation>OpenAI-kompatibler Endpunkt (mit oder ohne /v1); Standard: $ROSARCH_LLM_ENDPOINT. Der API-Schlüssel wird aus $ROSARCH_LLM_API_KEY oder $OPENAI_API_KEY gelesen.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="33"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="42"/>
         <source>Model name; default $ROSARCH_LLM_MODEL.</source>
         <translation>Modellname; Standard: $ROSARCH_LLM_MODEL.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="35"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="47"/>
         <source>Request timeout in seconds (default 120).</source>
         <translation>Timeout einer Anfrage in Sekunden (Standard: 120).</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="37"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="52"/>
         <source>Folder whose prompt files override the built-in ones; default $ROSARCH_PROMPT_DIR.</source>
         <translation>Ordner, dessen Prompt-Dateien die eingebauten ersetzen; Standard: $ROSARCH_PROMPT_DIR.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="40"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="58"/>
         <source>Print only errors.</source>
         <translation>Nur Fehler ausgeben.</translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="53"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="66"/>
         <source>suggest needs a workspace folder and --out &lt;dir&gt;.
 </source>
         <translation>suggest benötigt einen Workspace-Ordner und --out &lt;dir&gt;.
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="58"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="72"/>
         <source>Not a folder: %1
 </source>
         <translation>Kein Ordner: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="72"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="87"/>
         <source>--llm-timeout expects a positive number of seconds, got &apos;%1&apos;.
 </source>
         <translation>--llm-timeout erwartet eine positive Anzahl Sekunden, erhalten: „%1“.
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="85"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="107"/>
         <source>LLM: %1
 </source>
         <translation>LLM: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="90"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="113"/>
         <source>LLM error: %1
 </source>
         <translation>LLM-Fehler: %1
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="98"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="121"/>
         <source>Cannot create %1
 </source>
         <translation>%1 kann nicht erstellt werden
 </translation>
     </message>
     <message>
-        <location filename="../app/suggestcommand.cpp" line="115"/>
+        <location filename="../app/commands/suggestcommand.cpp" line="139"/>
         <source>%1 suggestions (%2); %3 discarded (%4); %5 prompts, ~%6 tokens (characters / 4).
 Wrote %7
 </source>
@@ -2541,82 +4695,87 @@ Wrote %7
 <context>
     <name>rosarch::SuggestionModel</name>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="103"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="107"/>
         <source>Description</source>
         <translation>Beschreibung</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="105"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="109"/>
         <source>Grouping</source>
         <translation>Gruppierung</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="107"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="111"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="116"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="120"/>
         <source>Descriptions</source>
         <translation>Beschreibungen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="118"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="122"/>
         <source>Groupings</source>
         <translation>Gruppierungen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="120"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="124"/>
         <source>Names</source>
         <translation>Namen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="129"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="133"/>
         <source>Pending</source>
         <translation>Offen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="131"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="135"/>
         <source>Accepted</source>
         <translation>Angenommen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="133"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="137"/>
         <source>Rejected</source>
         <translation>Abgelehnt</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="227"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="209"/>
+        <source>“%1” (quoted from the code)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/suggestionmodel.cpp" line="233"/>
         <source>deterministic</source>
         <translation>deterministisch</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="268"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="274"/>
         <source>%1 · %2</source>
         <translation>%1 · %2</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="297"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="303"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="299"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="305"/>
         <source>Target</source>
         <translation>Ziel</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="301"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="307"/>
         <source>Proposal</source>
         <translation>Vorschlag</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="303"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="309"/>
         <source>Origin</source>
         <translation>Herkunft</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionmodel.cpp" line="305"/>
+        <location filename="../widgets/suggestionmodel.cpp" line="311"/>
         <source>Evidence</source>
         <translation>Belege</translation>
     </message>
@@ -2624,113 +4783,113 @@ Wrote %7
 <context>
     <name>rosarch::SuggestionPanel</name>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="63"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="62"/>
         <source>All statuses</source>
         <translation>Alle Status</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="68"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="67"/>
         <source>Show the suggestions of one status</source>
         <translation>Die Vorschläge mit einem bestimmten Status anzeigen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="69"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="68"/>
         <source>All kinds</source>
         <translation>Alle Arten</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="74"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="73"/>
         <source>Show the suggestions of one kind</source>
         <translation>Die Vorschläge einer bestimmten Art anzeigen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="162"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="161"/>
         <source>Select a suggestion to see its rationale and evidence.</source>
         <translation>Wählen Sie einen Vorschlag aus, um Begründung und Belege zu sehen.</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="185"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="184"/>
         <source>Run Suggestions</source>
         <translation>Vorschläge ermitteln</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="186"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="185"/>
         <source>Propose node descriptions and subsystem groupings from the code (and ask the LLM when one is configured)</source>
         <translation>Knotenbeschreibungen und Subsystem-Gruppierungen aus dem Code vorschlagen (und das LLM fragen, wenn eines konfiguriert ist)</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="189"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="188"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="190"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="189"/>
         <source>Stop asking the LLM; what arrived so far is kept</source>
         <translation>Das LLM nicht weiter fragen; bereits Empfangenes bleibt erhalten</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="192"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="191"/>
         <source>LLM Settings…</source>
         <translation>LLM-Einstellungen…</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="193"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="192"/>
         <source>Endpoint, model and timeouts of the language model</source>
         <translation>Endpunkt, Modell und Timeouts des Sprachmodells</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="196"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="195"/>
         <source>Accept</source>
         <translation>Annehmen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="197"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="196"/>
         <source>Apply the proposed change (Enter); undo with Ctrl+Z</source>
         <translation>Die vorgeschlagene Änderung übernehmen (Enter); rückgängig mit Ctrl+Z</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="199"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="198"/>
         <source>Reject</source>
         <translation>Ablehnen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="200"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="199"/>
         <source>Dismiss the proposal; it is not asked again (Delete)</source>
         <translation>Den Vorschlag verwerfen; er wird nicht erneut gestellt (Entf)</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="202"/>
-        <location filename="../widgets/suggestionpanel.cpp" line="427"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="201"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="426"/>
         <source>Accept All</source>
         <translation>Alle annehmen</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="203"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="202"/>
         <source>Accept every pending suggestion of this kind, as one step on the undo stack</source>
         <translation>Alle offenen Vorschläge dieser Art annehmen, als ein Schritt im Rückgängig-Verlauf</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="399"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="398"/>
         <source>No suggestions</source>
         <translation>Keine Vorschläge</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="402"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="401"/>
         <source>%1 pending · %2 accepted · %3 rejected</source>
         <translation>%1 offen · %2 angenommen · %3 abgelehnt</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="426"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="425"/>
         <source>Accept All %1 (%2)</source>
         <translation>Alle %1 annehmen (%2)</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="441"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="440"/>
         <source>Looking for suggestions…</source>
         <translation>Vorschläge werden gesucht…</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="444"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="443"/>
         <source>No suggestions yet.
 
 Run Suggestions proposes node descriptions from docstrings and comments and subsystem groupings from the topic graph; with an LLM configured it also asks the model.</source>
@@ -2739,27 +4898,32 @@ Run Suggestions proposes node descriptions from docstrings and comments and subs
 „Vorschläge ermitteln“ schlägt Knotenbeschreibungen aus Docstrings und Kommentaren sowie Subsystem-Gruppierungen aus dem Topic-Graphen vor; ist ein LLM konfiguriert, wird zusätzlich das Modell gefragt.</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="448"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="447"/>
         <source>No suggestion matches the filter.</source>
         <translation>Kein Vorschlag entspricht dem Filter.</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="466"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="465"/>
         <source>Group</source>
         <translation>Gruppe</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="468"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="470"/>
+        <source>Proposal, quoted from the code (the repository&apos;s words, not rosarch&apos;s):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/suggestionpanel.cpp" line="473"/>
         <source>Proposal:</source>
         <translation>Vorschlag:</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="472"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="477"/>
         <source>Evidence:</source>
         <translation>Belege:</translation>
     </message>
     <message>
-        <location filename="../widgets/suggestionpanel.cpp" line="487"/>
+        <location filename="../widgets/suggestionpanel.cpp" line="492"/>
         <source>Origin:</source>
         <translation>Herkunft:</translation>
     </message>
@@ -2767,9 +4931,198 @@ Run Suggestions proposes node descriptions from docstrings and comments and subs
 <context>
     <name>rosarch::SuggestionRunner</name>
     <message>
-        <location filename="../app/suggestionrunner.cpp" line="95"/>
+        <location filename="../app/suggestionrunner.cpp" line="15"/>
         <source>The suggestion run stopped with an internal error: %1</source>
         <translation>Der Vorschlagslauf wurde wegen eines internen Fehlers abgebrochen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::TalkersPanel</name>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="19"/>
+        <source>publisher</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="21"/>
+        <source>subscriber</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="23"/>
+        <source>service server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="25"/>
+        <source>service client</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="27"/>
+        <source>action server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="31"/>
+        <source>action client</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="40"/>
+        <source>1 publisher</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="41"/>
+        <source>%1 publishers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="42"/>
+        <source>1 server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="43"/>
+        <source>%1 servers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="44"/>
+        <source>1 subscriber</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="45"/>
+        <source>%1 subscribers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="46"/>
+        <source>1 client</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="47"/>
+        <source>%1 clients</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="48"/>
+        <source>%1, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="54"/>
+        <source>topic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="56"/>
+        <source>service</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="57"/>
+        <source>action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="63"/>
+        <source>%1 of %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="65"/>
+        <source>Port %1, written “%2”%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="67"/>
+        <source>, remapped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="71"/>
+        <source>The name is a guess: the analysis could not decide it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="73"/>
+        <source>Inactive: its launch condition or guard is false.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="75"/>
+        <source>Created at %1:%2</source>
+        <translation type="unfinished">Erzeugt in %1:%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="89"/>
+        <source>Node</source>
+        <translation type="unfinished">Knoten</translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="89"/>
+        <source>Role</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="89"/>
+        <source>Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="89"/>
+        <source>Class</source>
+        <translation type="unfinished">Klasse</translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="104"/>
+        <source>Click a topic, service or action in the composed diagram, or a port in the node list, to see who talks on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="128"/>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="129"/>
+        <source>%1 · %2</source>
+        <translation type="unfinished">%1 · %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="130"/>
+        <source>%1 · %2 · %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="144"/>
+        <source>%1  %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="160"/>
+        <source>%1 talks on nothing in %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="162"/>
+        <source>No node in %2 talks on %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="164"/>
+        <source>Talkers on %1 in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/talkerspanel.cpp" line="165"/>
+        <source>%1
+%2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

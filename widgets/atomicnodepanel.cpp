@@ -90,7 +90,6 @@ void AtomicNodePanel::setModel(AtomicNodeModel *model)
 
 void AtomicNodePanel::onModelReset()
 {
-    m_tree->expandAll();
     m_tree->resizeColumnToContents(AtomicNodeModel::NameColumn);
     m_tree->resizeColumnToContents(AtomicNodeModel::TypeColumn);
     for (int c : {AtomicNodeModel::NameColumn, AtomicNodeModel::TypeColumn})

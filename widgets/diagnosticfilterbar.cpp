@@ -39,13 +39,13 @@ DiagnosticFilterBar::DiagnosticFilterBar(DiagnosticModel *model, QWidget *parent
     }
     m_kind->setToolTip(tr("Show only findings of one kind"));
     m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_kind->setMinimumContentsLength(12);
+    m_kind->setMinimumContentsLength(8);
     m_package->setToolTip(tr("Show only findings in one package"));
     m_package->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_package->setMinimumContentsLength(10);
+    m_package->setMinimumContentsLength(6);
     m_search->setPlaceholderText(tr("Search findings"));
     m_search->setClearButtonEnabled(true);
-    m_search->setMinimumWidth(140);
+    m_search->setMinimumWidth(90);
     m_search->setToolTip(tr("Show findings whose message, file, kind or package contains this"));
     m_hidden->setToolTip(tr("Also show findings you hid (drawn grey)"));
     m_accepted->setToolTip(tr("Also show findings you accepted (drawn grey)"));
@@ -98,6 +98,48 @@ void DiagnosticFilterBar::apply()
     f.showHidden = m_hidden->isChecked();
     f.showAccepted = m_accepted->isChecked();
     m_model->setFilter(f);
+}
+
+QVariantMap DiagnosticFilterBar::state() const
+{
+    return {{QStringLiteral("errors"), m_errors->isChecked()},
+            {QStringLiteral("warnings"), m_warnings->isChecked()},
+            {QStringLiteral("infos"), m_infos->isChecked()},
+            {QStringLiteral("kind"), m_kind->currentData().toString()},
+            {QStringLiteral("package"), m_package->currentData().toString()},
+            {QStringLiteral("text"), m_search->text()},
+            {QStringLiteral("hidden"), m_hidden->isChecked()},
+            {QStringLiteral("accepted"), m_accepted->isChecked()},
+            {QStringLiteral("grouping"), m_grouping->currentData().toInt()}};
+}
+
+void DiagnosticFilterBar::restoreState(const QVariantMap &state)
+{
+    if (state.isEmpty())
+        return;
+    {
+        const QSignalBlocker b1(m_errors), b2(m_warnings), b3(m_infos), b4(m_kind), b5(m_package),
+            b6(m_search), b7(m_hidden), b8(m_accepted), b9(m_grouping);
+        m_errors->setChecked(state.value(QStringLiteral("errors"), true).toBool());
+        m_warnings->setChecked(state.value(QStringLiteral("warnings"), true).toBool());
+        m_infos->setChecked(state.value(QStringLiteral("infos"), true).toBool());
+        // a kind or package with no findings (yet) stays chosen: refreshCounts offers it with 0
+        for (const auto &[combo, key] : {std::pair{m_kind, QStringLiteral("kind")},
+                                         std::pair{m_package, QStringLiteral("package")}}) {
+            const QString value = state.value(key).toString();
+            if (!value.isEmpty() && combo->findData(value) < 0)
+                combo->addItem(value, value);
+            combo->setCurrentIndex(std::max(combo->findData(value), 0));
+        }
+        m_search->setText(state.value(QStringLiteral("text")).toString());
+        m_hidden->setChecked(state.value(QStringLiteral("hidden")).toBool());
+        m_accepted->setChecked(state.value(QStringLiteral("accepted")).toBool());
+        m_grouping->setCurrentIndex(
+            std::max(m_grouping->findData(state.value(QStringLiteral("grouping")).toInt()), 0));
+    }
+    m_model->setGrouping(DiagnosticModel::Grouping(m_grouping->currentData().toInt()));
+    apply();
+    refreshCounts();
 }
 
 void DiagnosticFilterBar::refreshCounts()

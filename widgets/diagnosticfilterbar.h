@@ -2,6 +2,7 @@
 
 #include "diagnosticmodel.h"
 
+#include <QVariantMap>
 #include <QWidget>
 
 class QCheckBox;
@@ -27,6 +28,11 @@ public:
     QCheckBox *showHiddenBox() const { return m_hidden; }
     QCheckBox *showAcceptedBox() const { return m_accepted; }
     QComboBox *groupingCombo() const { return m_grouping; }
+
+    /// The filter and grouping chosen, to remember between sessions (AppSettings keeps it).
+    QVariantMap state() const;
+    /// Chooses a remembered filter and grouping again (unknown keys are ignored).
+    void restoreState(const QVariantMap &state);
 
 private:
     void apply();

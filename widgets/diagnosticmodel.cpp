@@ -162,7 +162,7 @@ QMap<QString, int> DiagnosticModel::codeCounts() const
 {
     QMap<QString, int> out;
     for (const Entry &e : m_entries)
-        if (isShownMark(e))
+        if (passes(e, true, false))
             ++out[e.diagnostic->code];
     return out;
 }
@@ -171,7 +171,7 @@ QMap<QString, int> DiagnosticModel::packageCounts() const
 {
     QMap<QString, int> out;
     for (const Entry &e : m_entries)
-        if (isShownMark(e))
+        if (passes(e, false, true))
             ++out[e.package];
     return out;
 }

@@ -82,8 +82,8 @@ public:
     /// Every finding of the run, and those the filter shows.
     int total() const { return int(m_entries.size()); }
     int shown() const { return int(m_visible.size()); }
-    /// How many findings of each code / package there are among those not hidden or accepted
-    /// (or shown by the "show" toggles): what the filter's combo boxes offer.
+    /// How many findings of each code / package the rest of the filter shows (severities,
+    /// text, the package or kind chosen, hidden and accepted): what the combo boxes offer.
     QMap<QString, int> codeCounts() const;
     QMap<QString, int> packageCounts() const;
     /// How many findings of `severity` there are among those not hidden or accepted (or shown).

@@ -8,6 +8,9 @@
 #include <QTreeView>
 #include <QVBoxLayout>
 
+#include <functional>
+#include <utility>
+
 namespace rosarch {
 
 FilteredTreePanel::FilteredTreePanel(QWidget *parent)
@@ -37,6 +40,7 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     // "rosarch.keepsCurrent" during the reset keeps the current row by place (rows from the
     // root down), so that the person stays where they were.
     connect(m_proxy, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
+        rememberExpanded();
         m_keptRows.clear();
         if (!m_proxy->sourceModel() ||
             !m_proxy->sourceModel()->property("rosarch.keepsCurrent").toBool())
@@ -45,6 +49,7 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
             m_keptRows.prepend(i.row());
     });
     connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
+        restoreExpanded();
         if (m_keptRows.isEmpty())
             return;
         QModelIndex i;
@@ -71,7 +76,95 @@ void FilteredTreePanel::applyFilter(const QString &text)
 
 void FilteredTreePanel::expandRows()
 {
-    m_tree->expandAll();
+    if (m_filter->text().trimmed().isEmpty())
+        expandTop();
+    else
+        expandAllRows();
+}
+
+bool FilteredTreePanel::isExpandable(const QModelIndex &) const
+{
+    return true;
+}
+
+void FilteredTreePanel::expandAllRows()
+{
+    std::function<void(const QModelIndex &)> expand = [&](const QModelIndex &parent) {
+        for (int row = 0, rows = m_proxy->rowCount(parent); row < rows; ++row) {
+            const QModelIndex index = m_proxy->index(row, 0, parent);
+            if (!m_proxy->hasChildren(index) || !isExpandable(index))
+                continue;
+            m_tree->expand(index);
+            expand(index);
+        }
+    };
+    expand({});
+}
+
+void FilteredTreePanel::expandTop()
+{
+    QList<QModelIndex> level;
+    int shown = m_proxy->rowCount();
+    for (int row = 0; row < m_proxy->rowCount(); ++row)
+        level << m_proxy->index(row, 0);
+    while (!level.isEmpty() && shown < kExpandBudget) {
+        QList<QModelIndex> next;
+        for (const QModelIndex &index : std::as_const(level)) {
+            if (!m_proxy->hasChildren(index) || !isExpandable(index))
+                continue;
+            const int rows = m_proxy->rowCount(index);
+            if (shown + rows > kExpandBudget)
+                return;
+            m_tree->expand(index);
+            shown += rows;
+            for (int row = 0; row < rows; ++row)
+                next << m_proxy->index(row, 0, index);
+        }
+        level = next;
+    }
+}
+
+QString FilteredTreePanel::rowKey(const QModelIndex &proxyIndex) const
+{
+    QStringList names;
+    for (QModelIndex i = proxyIndex; i.isValid(); i = i.parent())
+        names.prepend(i.data().toString());
+    return names.join(QChar(0x1f));
+}
+
+void FilteredTreePanel::rememberExpanded()
+{
+    m_expanded.clear();
+    // only the open rows are visited: the cost follows what is shown
+    std::function<void(const QModelIndex &)> visit = [&](const QModelIndex &parent) {
+        for (int row = 0, rows = m_proxy->rowCount(parent); row < rows; ++row) {
+            const QModelIndex index = m_proxy->index(row, 0, parent);
+            if (!m_tree->isExpanded(index))
+                continue;
+            m_expanded.insert(rowKey(index));
+            visit(index);
+        }
+    };
+    visit({});
+}
+
+void FilteredTreePanel::restoreExpanded()
+{
+    if (m_expanded.isEmpty()) {
+        expandRows();
+        return;
+    }
+    const QSet<QString> expanded = std::exchange(m_expanded, {});
+    std::function<void(const QModelIndex &)> visit = [&](const QModelIndex &parent) {
+        for (int row = 0, rows = m_proxy->rowCount(parent); row < rows; ++row) {
+            const QModelIndex index = m_proxy->index(row, 0, parent);
+            if (!expanded.contains(rowKey(index)))
+                continue;
+            m_tree->expand(index);
+            visit(index);
+        }
+    };
+    visit({});
 }
 
 QModelIndex FilteredTreePanel::currentSourceIndex() const

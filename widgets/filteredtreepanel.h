@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QModelIndex>
+#include <QSet>
 #include <QWidget>
 
 class QLineEdit;
@@ -35,8 +36,19 @@ Q_SIGNALS:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
-    /// Expands the rows a person sees without asking (after a reset or a filter): all of them.
+    /// Expands the rows a person sees without asking (after a filter): with a filter, every
+    /// row that matches; without, the top of the tree (expandTop).
     virtual void expandRows();
+    /// Expands every row (that isExpandable), making them all: "Expand All".
+    void expandAllRows();
+    /// Expands the top of the tree, breadth first, while fewer than kExpandBudget rows show:
+    /// a small workspace opens fully, a large one as far as a screen or two, so a new result
+    /// costs the same on any system size.
+    void expandTop();
+    /// Whether expanding opens `proxyIndex` (a launch tree's "Parameters" row does not).
+    virtual bool isExpandable(const QModelIndex &proxyIndex) const;
+
+    static constexpr int kExpandBudget = 400;
 
     NodeFilterProxyModel *m_proxy;
     QLineEdit *m_filter;
@@ -46,7 +58,13 @@ protected:
 private:
     void applyFilter(const QString &text);
 
-    QList<int> m_keptRows; ///< the current row's place, kept across a reshaping reset
+    /// The key of a row: the names of the rows from the root down to it.
+    QString rowKey(const QModelIndex &proxyIndex) const;
+    void rememberExpanded();
+    void restoreExpanded();
+
+    QList<int> m_keptRows;    ///< the current row's place, kept across a reshaping reset
+    QSet<QString> m_expanded; ///< the expanded rows by key, kept across a reset
 };
 
 } // namespace rosarch

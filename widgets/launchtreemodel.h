@@ -46,6 +46,7 @@ public:
     QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
     QModelIndex parent(const QModelIndex &child) const override;
     int rowCount(const QModelIndex &parent = {}) const override;
+    bool hasChildren(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
@@ -67,6 +68,9 @@ public:
     QString correctionSummary(const QString &id) const;
     /// Whether the row's condition and those of all its ancestors hold.
     bool isActive(const QModelIndex &index) const;
+
+    /// How many rows are made so far: a launch file's rows are made when first asked for.
+    int rowsMade() const { return int(m_layout.items().size()); }
 
     QModelIndex launchFileIndex(const QString &instanceId, int column = 0) const;
     QModelIndex nodeIndex(const QString &nodeId, int column = 0) const;
@@ -105,7 +109,8 @@ private:
     LaunchDependencies m_launch; ///< as corrected, with removed instances where they were
     QSet<QString> m_removed;     ///< ids of removed node instances
     CorrectionIndex m_index;
-    LaunchTreeLayout m_layout;
+    /// Rows are made as they are asked for (rowCount, index, a lookup): the cache is mutable.
+    mutable LaunchTreeLayout m_layout;
 };
 
 } // namespace rosarch

@@ -11,8 +11,6 @@
 #include <QTreeView>
 #include <QVBoxLayout>
 
-#include <functional>
-
 namespace rosarch {
 
 LaunchTreePanel::LaunchTreePanel(QWidget *parent)
@@ -39,7 +37,7 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
     auto *separator = new QAction(this);
     separator->setSeparator(true);
     auto *expandAll = new QAction(tr("&Expand All"), this);
-    connect(expandAll, &QAction::triggered, this, [this] { expandRows(); });
+    connect(expandAll, &QAction::triggered, this, [this] { expandAllRows(); });
     auto *collapseAll = new QAction(tr("&Collapse All"), this);
     connect(collapseAll, &QAction::triggered, m_tree, &QTreeView::collapseAll);
     m_tree->addActions({m_goToClass, separator, expandAll, collapseAll});
@@ -93,27 +91,15 @@ void LaunchTreePanel::setPlaceholderText(const QString &text)
     m_placeholder->setText(text);
 }
 
-void LaunchTreePanel::expandRows()
+bool LaunchTreePanel::isExpandable(const QModelIndex &proxyIndex) const
 {
-    const StallScope scope("LaunchTreePanel::expandRows");
-    const auto parameters = int(LaunchTreeModel::ItemKind::Parameters);
-    std::function<void(const QModelIndex &)> expand = [&](const QModelIndex &parent) {
-        const QAbstractItemModel *model = m_tree->model();
-        for (int row = 0, rows = model->rowCount(parent); row < rows; ++row) {
-            const QModelIndex index = model->index(row, 0, parent);
-            if (model->data(index, LaunchTreeModel::KindRole).toInt() == parameters ||
-                !model->hasChildren(index))
-                continue;
-            m_tree->expand(index);
-            expand(index);
-        }
-    };
-    expand({});
+    return proxyIndex.data(LaunchTreeModel::KindRole).toInt() !=
+           int(LaunchTreeModel::ItemKind::Parameters);
 }
 
 void LaunchTreePanel::onModelReset()
 {
-    expandRows();
+    const StallScope scope("LaunchTreePanel::onModelReset");
     // Fit the columns to their content within bounds, so that a long plugin name does not
     // push the class (the link to the atomic nodes) out of sight.
     const QList<std::pair<int, int>> bounds{{LaunchTreeModel::NameColumn, 160},

@@ -34,8 +34,8 @@ Q_SIGNALS:
     void contextMenuRequested(QMenu *menu, const QModelIndex &sourceIndex);
 
 protected:
-    /// Everything but the nodes' "Parameters" rows: a navigation stack has ten thousands.
-    void expandRows() override;
+    /// Not the nodes' "Parameters" rows: a navigation stack has ten thousands.
+    bool isExpandable(const QModelIndex &proxyIndex) const override;
 
 private:
     void onModelReset();

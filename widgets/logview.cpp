@@ -87,6 +87,9 @@ LogView::LogView(QWidget *parent)
     m_splitter->addWidget(m_log);
     m_splitter->setStretchFactor(0, 3);
     m_splitter->setStretchFactor(1, 1);
+    // The run log keeps a readable share (about 30 characters) in the default layout: the
+    // filter bar above the findings would otherwise take the whole width.
+    m_log->setMinimumWidth(m_log->fontMetrics().horizontalAdvance(QLatin1Char('0')) * 30);
     m_splitter->setChildrenCollapsible(false);
 
     auto *layout = new QVBoxLayout(this);

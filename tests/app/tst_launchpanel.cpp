@@ -323,6 +323,47 @@ private Q_SLOTS:
         QCOMPARE(proxy->rowCount(proxy->index(0, 0)), 3);
     }
 
+    void expandedRowsAreKeptAcrossANewResult()
+    {
+        MainWindow w;
+        w.show();
+        w.document()->setRecovery(handBuiltRecovery());
+        QTreeView *tree = w.launchPanel()->treeView();
+        QAbstractItemModel *proxy = tree->model();
+        // a small tree opens fully, but for the nodes' parameters
+        const QModelIndex root = proxy->index(0, 0);
+        QVERIFY(tree->isExpanded(root));
+        QModelIndex included;
+        for (int r = 0; r < proxy->rowCount(root) && !included.isValid(); ++r)
+            if (proxy->hasChildren(proxy->index(r, 0, root)))
+                included = proxy->index(r, 0, root);
+        QVERIFY(included.isValid());
+        QVERIFY(tree->isExpanded(included));
+        const QString includedName = included.data().toString();
+        // the person closes one row; a new result (a re-run) keeps it closed, the rest open
+        tree->collapse(included);
+        Recovery again = handBuiltRecovery();
+        again.launch.nodes[0].nodeName = QStringLiteral("renamed_by_the_rerun");
+        w.document()->setRecovery(again);
+        const QModelIndex rootAfter = proxy->index(0, 0);
+        QVERIFY(tree->isExpanded(rootAfter));
+        bool found = false;
+        for (int r = 0; r < proxy->rowCount(rootAfter); ++r) {
+            const QModelIndex i = proxy->index(r, 0, rootAfter);
+            if (i.data().toString() == includedName) {
+                found = true;
+                QVERIFY(!tree->isExpanded(i));
+            }
+        }
+        QVERIFY(found);
+        // Expand All opens it again
+        tree->expandAll();
+        w.launchPanel()->filterEdit()->setText(QStringLiteral("no such row"));
+        QCOMPARE(proxy->rowCount(), 0);
+        w.launchPanel()->filterEdit()->clear();
+        QVERIFY(tree->isExpanded(proxy->index(0, 0)));
+    }
+
     void argumentsDialogShowsAndReturnsOptions()
     {
         LaunchArgumentsDialog dialog;

@@ -1,6 +1,8 @@
 #include "appsettings.h"
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
+#include "diagnosticfilterbar.h"
+#include "diagnosticmodel.h"
 #include "document.h"
 #include "guifixture.h"
 #include "logview.h"
@@ -14,6 +16,7 @@
 #include <Qsci/qscilexer.h>
 #include <Qsci/qsciscintilla.h>
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
@@ -24,8 +27,10 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSortFilterProxyModel>
 #include <QTemporaryDir>
 #include <QThread>
+#include <QToolButton>
 #include <QTreeView>
 #include <QUndoStack>
 #include <QtTest>
@@ -448,6 +453,38 @@ private Q_SLOTS:
         QVERIFY(reset);
         reset->trigger();
         QVERIFY(log->isVisible());
+    }
+
+    void logFilterIsRemembered()
+    {
+        {
+            MainWindow w;
+            w.show();
+            DiagnosticFilterBar *bar = w.logView()->filterBar();
+            bar->severityButton(Diagnostic::Severity::Info)->setChecked(false);
+            bar->searchEdit()->setText(QStringLiteral("braces"));
+            bar->groupingCombo()->setCurrentIndex(
+                bar->groupingCombo()->findData(int(DiagnosticModel::Grouping::Package)));
+            w.close();
+        }
+        MainWindow again;
+        again.show();
+        DiagnosticFilterBar *bar = again.logView()->filterBar();
+        QVERIFY(!bar->severityButton(Diagnostic::Severity::Info)->isChecked());
+        QVERIFY(bar->severityButton(Diagnostic::Severity::Error)->isChecked());
+        QCOMPARE(bar->searchEdit()->text(), QStringLiteral("braces"));
+        QCOMPARE(bar->groupingCombo()->currentData().toInt(),
+                 int(DiagnosticModel::Grouping::Package));
+        // and the table follows what the bar says
+        const auto *model = qobject_cast<const DiagnosticModel *>(
+            qobject_cast<QSortFilterProxyModel *>(again.logView()->diagnosticsView()->model())
+                ->sourceModel());
+        QVERIFY(model);
+        QVERIFY(!model->filter().infos);
+        QCOMPARE(model->filter().text, QStringLiteral("braces"));
+        QCOMPARE(model->grouping(), DiagnosticModel::Grouping::Package);
+        bar->restoreState({{QStringLiteral("infos"), true}}); // back to all for the next tests
+        again.close();
     }
 
     void windowStaysResponsiveWhileRunning()

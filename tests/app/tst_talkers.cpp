@@ -24,6 +24,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTreeWidget>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace rosarch;
@@ -151,6 +152,28 @@ private Q_SLOTS:
                  }));
         QCOMPARE(talkers()->summary(), QStringLiteral("Talkers on topic /detections in system"));
         test::saveScreenshot(*m_window, QStringLiteral("talkers-topic.png"));
+    }
+
+    void talkersFollowACorrection()
+    {
+        QVERIFY(showComposite(QStringLiteral("lf1")));
+        QVERIFY(click(QStringLiteral("channel:q_detections")));
+        QVERIFY(row(talkers(), QStringLiteral("/backup_planner")));
+        // A person removes the backup planner: the talkers shown follow the corrected model.
+        QString backup;
+        for (const NodeInstance &n : doc()->launchDependencies().nodes)
+            if (n.nodeName == QLatin1String("backup_planner"))
+                backup = n.id;
+        QVERIFY(!backup.isEmpty());
+        Correction remove;
+        remove.kind = Correction::Kind::Remove;
+        remove.target = doc()->keyOf(backup);
+        const QString id = doc()->addCorrection(remove);
+        QVERIFY(!id.isEmpty());
+        QVERIFY(!row(talkers(), QStringLiteral("/backup_planner")));
+        QVERIFY(row(talkers(), QStringLiteral("/planner")));
+        doc()->undoStack()->undo(); // and back
+        QVERIFY(row(talkers(), QStringLiteral("/backup_planner")));
     }
 
     void actionClickListsServersAndClients()

@@ -163,6 +163,20 @@ private Q_SLOTS:
         f.text = QStringLiteral("Syntax error"); // the kind's title
         model.setFilter(f);
         QCOMPARE(model.shown(), 2);
+
+        // The combos count what the rest of the filter shows: severities and text apply, the
+        // combo's own choice does not (so the other kinds stay offered with their counts).
+        QCOMPARE(model.codeCounts(), (QMap<QString, int>{{QStringLiteral("syntax-error"), 2}}));
+        QCOMPARE(model.packageCounts(),
+                 (QMap<QString, int>{{QStringLiteral("alpha"), 1}, {QStringLiteral("beta"), 1}}));
+        f = {};
+        f.infos = false;
+        f.package = QStringLiteral("beta");
+        model.setFilter(f);
+        QCOMPARE(model.codeCounts(), (QMap<QString, int>{{QStringLiteral("parse-failed"), 1},
+                                                         {QStringLiteral("syntax-error"), 1}}));
+        QCOMPARE(model.packageCounts().value(QStringLiteral("beta")), 2);
+        QCOMPARE(model.packageCounts().value(QStringLiteral("alpha")), 1);
     }
 
     void groupsByKindAndPackage()

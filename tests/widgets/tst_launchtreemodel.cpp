@@ -17,6 +17,8 @@
 #include <QStandardPaths>
 #include <QtTest>
 
+#include <functional>
+
 using namespace rosarch;
 
 namespace {
@@ -492,6 +494,50 @@ private Q_SLOTS:
         QCOMPARE(model.evidence(model.nodeIndex(QStringLiteral("n5"))), at(kSensors, 3, 6));
         QCOMPARE(model.evidence(model.launchFileIndex(QStringLiteral("lf3"))), at(kRobot, 30, 32));
         QVERIFY(!model.evidence(model.index(1, 0, model.index(0, 0))).isValid()); // a namespace
+    }
+
+    void rowsAreMadeWhenFirstAskedFor()
+    {
+        Document document;
+        document.setLaunchDependencies(sample());
+        // Every row, depth first, as the names from the root: the whole tree.
+        const auto dump = [](const QAbstractItemModel *m) {
+            QStringList out;
+            std::function<void(const QModelIndex &, const QString &)> walk =
+                [&](const QModelIndex &parent, const QString &path) {
+                    for (int r = 0; r < m->rowCount(parent); ++r) {
+                        const QModelIndex i = m->index(r, 0, parent);
+                        if (i.data(LaunchTreeModel::KindRole).toInt() ==
+                            int(LaunchTreeModel::ItemKind::Parameters))
+                            continue; // made by the model on demand, not laid out
+                        out << path + i.data().toString();
+                        walk(i, path + i.data().toString() + u'/');
+                    }
+                };
+            walk({}, {});
+            return out;
+        };
+        LaunchTreeModel fresh(&document);
+        // only the root is made: its rows wait until a view opens it or a lookup needs them
+        QCOMPARE(fresh.rowsMade(), 1);
+        QVERIFY(fresh.hasChildren(fresh.index(0, 0)));
+        QCOMPARE(fresh.rowsMade(), 1);
+        // a lookup makes the rows on the way to the row it finds, and only those
+        const QModelIndex n6 = fresh.nodeIndex(QStringLiteral("n6"));
+        QCOMPARE(n6.data().toString(), QStringLiteral("lidar_filter"));
+        QCOMPARE(fresh.launchFile(n6)->id, QStringLiteral("lf3"));
+        QVERIFY(fresh.rowsMade() > 1);
+        LaunchTreeModel bySourceLine(&document);
+        QCOMPARE(
+            bySourceLine.indexAt(kSensors, 4, bySourceLine.launchFileIndex(QStringLiteral("lf3"))),
+            bySourceLine.nodeIndex(QStringLiteral("n6")));
+        // whatever was made first, the tree is the same as one made in order
+        LaunchTreeModel inOrder(&document);
+        const QStringList all = dump(&inOrder);
+        QVERIFY(all.size() > 10);
+        QCOMPARE(dump(&fresh), all);
+        QCOMPARE(dump(&bySourceLine), all);
+        QCOMPARE(inOrder.rowsMade(), int(all.size()));
     }
 
     void filterFindsNodesThroughTheTree()

@@ -6,6 +6,10 @@
 // long a cancel takes until the window says so and until the worker process is gone.
 //
 //   rosarch-stallbench <workspace> [--runs N] [--no-cancel]
+//   rosarch-stallbench --generate <packages> [--runs N] [--no-cancel]
+//
+// --generate measures a generated workspace of that many packages (the one tst_largeworkspace
+// opens with 1,000), written into a temporary folder and removed after.
 //
 // A benchmark, not a check: it writes nothing into the workspace and exits 0 unless it could
 // not run (exit 1) or the run did not finish (exit 2).
@@ -14,6 +18,8 @@
 #include "mainwindow.h"
 #include "stagerunner.h"
 #include "stallmonitor.h"
+#include "stallprobe.h"
+#include "syntheticworkspace.h"
 
 #include <QAction>
 #include <QCommandLineParser>
@@ -23,6 +29,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTextStream>
 #include <QTimer>
 #include <QTreeView>
@@ -136,14 +143,41 @@ int main(int argc, char **argv)
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
                                         QStringLiteral("save the window after the first open"),
                                         QStringLiteral("png"));
-    parser.addOptions({runsOption, noCancel, top, screenshot});
+    const QCommandLineOption generate(
+        QStringLiteral("generate"),
+        QStringLiteral("measure a generated workspace of this many packages instead"),
+        QStringLiteral("packages"));
+    parser.addOptions({runsOption, noCancel, top, screenshot, generate});
     parser.process(app);
-    if (parser.positionalArguments().size() != 1 ||
-        !QFileInfo(parser.positionalArguments().first()).isDir()) {
-        std::fputs("rosarch-stallbench: give one workspace folder (see --help)\n", stderr);
+    QTemporaryDir generated;
+    QString workspaceArg;
+    if (parser.isSet(generate)) {
+        bool ok = false;
+        const int packages = parser.value(generate).toInt(&ok);
+        QString error;
+        if (!ok || packages < 1 || packages > 100000 || !generated.isValid()) {
+            std::fputs("rosarch-stallbench: --generate takes a number of packages (1-100000)\n",
+                       stderr);
+            return 1;
+        }
+        if (!SyntheticWorkspace::generate(generated.path(), packages, 10, &error)) {
+            std::fprintf(stderr, "rosarch-stallbench: %s\n", qPrintable(error));
+            return 1;
+        }
+        workspaceArg = generated.path();
+        // kept to measure another build on it when asked (as tst_largeworkspace does)
+        generated.setAutoRemove(qEnvironmentVariableIsEmpty("ROSARCH_KEEP_LARGE_WORKSPACE"));
+        if (!generated.autoRemove())
+            std::fprintf(stderr, "workspace kept in %s\n", qPrintable(generated.path()));
+    } else if (parser.positionalArguments().size() == 1) {
+        workspaceArg = parser.positionalArguments().first();
+    }
+    if (workspaceArg.isEmpty() || !QFileInfo(workspaceArg).isDir()) {
+        std::fputs("rosarch-stallbench: give one workspace folder or --generate (see --help)\n",
+                   stderr);
         return 1;
     }
-    const QString root = QFileInfo(parser.positionalArguments().first()).canonicalFilePath();
+    const QString root = QFileInfo(workspaceArg).canonicalFilePath();
     const int topGaps = parser.value(top).toInt();
     QDir(QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
              .filePath(QStringLiteral("projects")))
@@ -205,7 +239,10 @@ int main(int argc, char **argv)
     // next runs keep that selection.
     if (auto *tree = w.launchPanel()->findChild<QTreeView *>(); tree && tree->model()) {
         app.beginPhase(QStringLiteral("select launch file"));
-        tree->setCurrentIndex(tree->model()->index(0, 0));
+        {
+            const StallScope scope("select the launch file (current row changed)");
+            tree->setCurrentIndex(tree->model()->index(0, 0));
+        }
         spinFor(app, 3000);
         out() << "select launch file " << tree->currentIndex().data().toString() << ":\n";
         reportGaps(app, QStringLiteral("select launch file"), topGaps);

@@ -8,6 +8,7 @@
 #include "diagramscene.h"
 #include "diagramtext.h"
 #include "diagramview.h"
+#include "stallprobe.h"
 
 #include <QAction>
 #include <QEvent>
@@ -122,8 +123,11 @@ void DiagramPanel::setArchitecture(const Architecture &architecture, const QList
 {
     m_architecture = architecture;
     m_roots = roots.isEmpty() ? RootChoice::roots(m_architecture, {}) : roots;
-    m_rootPicker->setRoots(m_roots);
-    m_rootPrompt->setRoots(m_roots);
+    {
+        const StallScope scope("DiagramPanel root picker and prompt");
+        m_rootPicker->setRoots(m_roots);
+        m_rootPrompt->setRoots(m_roots);
+    }
     QString show = m_current;
     if (!m_architecture.composite(show)) {
         show.clear();

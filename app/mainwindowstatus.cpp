@@ -1,0 +1,135 @@
+// The main window's status bar: the counts of what the stages found, the progress of a run
+// with its cancel button, and the launch tree's placeholder while there is nothing to show.
+#include "document.h"
+#include "launchtreepanel.h"
+#include "logview.h"
+#include "mainwindow.h"
+#include "recovery.h"
+#include "stagerunner.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QToolButton>
+
+namespace rosarch {
+
+void MainWindow::createStatusBar()
+{
+    m_countsLabel = new QLabel(this);
+    m_progressBar = new QProgressBar(this);
+    m_progressBar->setFixedWidth(220);
+    m_progressBar->setMaximumHeight(16);
+    m_progressBar->setTextVisible(false);
+    m_cancelButton = new QToolButton(this);
+    m_cancelButton->setDefaultAction(m_cancelAction);
+    m_cancelButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_cancelButton->setAutoRaise(true);
+    statusBar()->addPermanentWidget(m_countsLabel);
+    statusBar()->addPermanentWidget(m_progressBar);
+    statusBar()->addPermanentWidget(m_cancelButton);
+}
+
+void MainWindow::updateCounts()
+{
+    const AtomicNodeList &list = m_document->atomicNodes();
+    const RecoveryCounts counts =
+        RecoveryCounts::of({list, m_document->launchDependencies(), m_document->architecture()});
+    const qsizetype diagnostics = counts.diagnostics;
+    // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
+    const auto count = [](qsizetype n, const QString &one, const QString &many) {
+        return n == 1 ? one : many.arg(n);
+    };
+    QStringList parts{count(counts.packages, tr("1 package"), tr("%1 packages")),
+                      count(counts.nodes, tr("1 node"), tr("%1 nodes"))};
+    if (counts.plugins > 0)
+        parts << count(counts.plugins, tr("1 plugin"), tr("%1 plugins"));
+    parts << QStringList{count(counts.ports, tr("1 port"), tr("%1 ports")),
+                         count(counts.launchFiles, tr("1 launch file"), tr("%1 launch files")),
+                         count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
+                         count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
+                         count(counts.composites, tr("1 composite"), tr("%1 composites")),
+                         count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
+    m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
+    m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
+                                 "Stage 2: launch files found, node instances they start and "
+                                 "expressions that could not be resolved statically.\n"
+                                 "Stage 3: composites, one per launch-file instance."));
+    m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
+    m_nextDiagnosticAction->setEnabled(diagnostics > 0);
+    m_previousDiagnosticAction->setEnabled(diagnostics > 0);
+    updateLaunchPlaceholder();
+}
+
+void MainWindow::updateLaunchPlaceholder()
+{
+    const LaunchDependencies &launch = m_document->launchDependencies();
+    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty())
+        m_launchPanel->setPlaceholderText(
+            tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree."));
+    else if (m_runner->isRunning())
+        m_launchPanel->setPlaceholderText(tr("Reading the launch files…"));
+    else if (launch.launchFiles.isEmpty())
+        m_launchPanel->setPlaceholderText(
+            tr("No launch files found in this workspace.\n\nStage 2 reads *.launch.py, "
+               "*.launch.xml and *.launch.yaml files and any file holding a launch "
+               "description."));
+    else
+        m_launchPanel->setPlaceholderText(
+            tr("No launch file was analysed as a root.\n\nChoose one in Stages → Launch "
+               "Arguments…"));
+}
+
+void MainWindow::setRunning(bool running)
+{
+    m_progressBar->setVisible(running);
+    m_cancelButton->setVisible(running);
+    m_cancelAction->setEnabled(running);
+    updateLaunchPlaceholder();
+}
+
+void MainWindow::onStageStarted()
+{
+    m_lastProgressText.clear();
+    m_progressBar->setRange(0, 0);
+    setRunning(true);
+}
+
+void MainWindow::onStageProgressed(int done, int total, const QString &what, int stage)
+{
+    if (total > 0) {
+        m_progressBar->setRange(0, total);
+        m_progressBar->setValue(done);
+    } else {
+        m_progressBar->setRange(0, 0);
+    }
+    if (stage > 0) {
+        // Per stage, with counts; the files themselves would flood the log.
+        const QLocale locale;
+        static const QStringList names{tr("atomic nodes"), tr("launch files"), tr("composition")};
+        const QString name = names.value(stage - 1);
+        QString text;
+        if (total <= 0)
+            text = tr("Stage %1: %2 — %3").arg(stage).arg(name, what);
+        else if (stage == 3)
+            text = tr("Stage %1: %2 — %3/%4 composites")
+                       .arg(stage)
+                       .arg(name, locale.toString(done), locale.toString(total));
+        else
+            text = tr("Stage %1: %2 — %3/%4 files")
+                       .arg(stage)
+                       .arg(name, locale.toString(done), locale.toString(total));
+        m_progressBar->setToolTip(what);
+        statusBar()->showMessage(text);
+        return;
+    }
+    if (!what.isEmpty() && what != m_lastProgressText) {
+        m_lastProgressText = what;
+        statusBar()->showMessage(what);
+        m_logView->appendLog(total > 0 ? tr("[%1/%2] %3").arg(done).arg(total).arg(what) : what);
+    }
+}
+
+} // namespace rosarch

@@ -1,0 +1,184 @@
+// What the atomic node tree shows in each row and column: packages, nodes and ports, with the
+// marks of corrections (tint, strike-out, review tick) and a suggested description previewed.
+#include "atomicnodemodel.h"
+#include "atomicnodetext.h"
+#include "icons.h"
+
+#include <QFont>
+#include <QGuiApplication>
+#include <QPalette>
+
+namespace rosarch {
+
+QVariant AtomicNodeModel::marksData(const QString &id, const Marks &marks, int column,
+                                    int role) const
+{
+    const bool removed = m_removed.contains(id) || m_removed.contains(id.section(u'/', 0, 0));
+    switch (role) {
+    case Qt::ForegroundRole:
+        if (removed)
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        if (marks.provenance != Provenance::Recovered)
+            return QGuiApplication::palette().brush(QPalette::Link);
+        return {};
+    case ProvenanceRole:
+        return removed ? QStringLiteral("removed") : provenanceName(marks.provenance);
+    case ReviewedRole:
+        return marks.reviewed;
+    case Qt::DisplayRole:
+        return column == NameColumn && marks.reviewed && !removed ? QStringLiteral(" \u2713")
+                                                                  : QString();
+    case Qt::ToolTipRole: {
+        const QString summary = m_index.summary(id);
+        return summary.isEmpty()
+                   ? QString()
+                   : QStringLiteral("<hr/>") +
+                         summary.toHtmlEscaped().replace(u'\n', QStringLiteral("<br/>"));
+    }
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::packageData(const PackageRow &row, int column, int role) const
+{
+    const RosPackage *pkg = package(row);
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return row.name.isEmpty() ? tr("(outside any package)") : row.name;
+        case TypeColumn:
+            return pkg ? pkg->buildType : QString();
+        case DetailsColumn: {
+            QString details =
+                row.nodes.size() == 1 ? tr("1 node") : tr("%1 nodes").arg(row.nodes.size());
+            if (pkg && !pkg->path.isEmpty())
+                details += QStringLiteral(" · ") + pkg->path;
+            return details;
+        }
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::package() : QVariant();
+    case Qt::ForegroundRole:
+        // A package without nodes (interfaces, bringup) is context, not content.
+        if (row.nodes.isEmpty())
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        return {};
+    case Qt::ToolTipRole:
+        return AtomicNodeText::packageToolTip(row.name, pkg, int(row.nodes.size()));
+    case KindRole:
+        return int(ItemKind::Package);
+    default:
+        return {};
+    }
+}
+
+void AtomicNodeModel::setDescriptionPreview(const QString &nodeId, const QString &description)
+{
+    if (nodeId == m_previewNodeId && description == m_previewDescription)
+        return;
+    const QString previous = m_previewNodeId;
+    m_previewNodeId = nodeId;
+    m_previewDescription = description;
+    for (const QString &id : {previous, nodeId}) {
+        const QModelIndex index = nodeIndex(id, DescriptionColumn);
+        if (index.isValid())
+            Q_EMIT dataChanged(index, index, {Qt::DisplayRole, Qt::FontRole});
+    }
+}
+
+QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole:
+        switch (column) {
+        case NameColumn:
+            return role == Qt::DisplayRole
+                       ? node.className + marksData(node.id, node.marks, column, role).toString()
+                       : node.className;
+        case TypeColumn:
+            if (node.procedural)
+                return tr("procedural node");
+            if (node.isPlugin())
+                return tr("plugin: %1").arg(node.pluginInterface);
+            return node.baseClasses.join(QStringLiteral(", "));
+        case DetailsColumn:
+            return AtomicNodeText::nodeDetails(node);
+        case DescriptionColumn:
+            if (role == Qt::DisplayRole && node.id == m_previewNodeId)
+                return tr("%1 (suggested)").arg(m_previewDescription);
+            return node.description;
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::node() : QVariant();
+    case Qt::FontRole: {
+        QFont f;
+        f.setItalic(column == DescriptionColumn && node.id == m_previewNodeId);
+        f.setStrikeOut(m_removed.contains(node.id));
+        return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
+    }
+    case Qt::ToolTipRole:
+        return AtomicNodeText::nodeToolTip(node) +
+               marksData(node.id, node.marks, column, role).toString();
+    case Qt::ForegroundRole:
+    case ProvenanceRole:
+    case ReviewedRole:
+        return marksData(node.id, node.marks, column, role);
+    case KindRole:
+        return int(ItemKind::Node);
+    case NodeIdRole:
+        return node.id;
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int column,
+                                   int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return (port.name.isEmpty() ? port.nameExpression : port.name) +
+                   marksData(node.id + u'/' + port.id, port.marks, column, role).toString();
+        case TypeColumn:
+            return port.type;
+        case DetailsColumn:
+            return AtomicNodeText::portDetails(port);
+        default:
+            return {};
+        }
+    case Qt::DecorationRole:
+        return column == NameColumn ? Icons::port(port.kind) : QVariant();
+    case Qt::FontRole: {
+        QFont f;
+        f.setItalic(column == NameColumn && !port.isResolved());
+        f.setStrikeOut(m_removed.contains(node.id + u'/' + port.id) || m_removed.contains(node.id));
+        return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
+    }
+    case Qt::ToolTipRole:
+        return AtomicNodeText::portToolTip(node, port) +
+               marksData(node.id + u'/' + port.id, port.marks, column, role).toString();
+    case Qt::ForegroundRole:
+    case ProvenanceRole:
+    case ReviewedRole:
+        return marksData(node.id + u'/' + port.id, port.marks, column, role);
+    case KindRole:
+        return int(ItemKind::Port);
+    case NodeIdRole:
+        return node.id;
+    case PortIdRole:
+        return port.id;
+    default:
+        return {};
+    }
+}
+
+} // namespace rosarch
