@@ -1,4 +1,5 @@
 #include "analysiscache.h"
+#include "analysisfingerprint.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -83,8 +84,12 @@ AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWi
         m_digests = std::make_unique<FileDigests>();
         return;
     }
-    m_directory =
-        m_root + QStringLiteral("/%1-f%2").arg(QStringLiteral(ROSARCH_VERSION)).arg(kFormatVersion);
+    // The version, the analysis code's fingerprint and the format: a build whose analysis
+    // differs never reads another's entries, even at the same version number.
+    m_directory = m_root + QStringLiteral("/%1-%2-f%3")
+                               .arg(QStringLiteral(ROSARCH_VERSION),
+                                    QStringLiteral(ROSARCH_ANALYSIS_FINGERPRINT))
+                               .arg(kFormatVersion);
     if (!QDir().mkpath(m_directory) || !QFileInfo(m_directory).isWritable()) {
         m_digests = std::make_unique<FileDigests>();
         m_problem = QStringLiteral("The analysis cache folder %1 cannot be created or written; "
