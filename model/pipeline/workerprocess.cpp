@@ -5,10 +5,10 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <mutex>
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pthread.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -20,25 +20,35 @@ namespace rosarch {
 
 namespace {
 
-void ignoreBrokenPipes()
+/// Blocks SIGPIPE on this thread while alive, and swallows one raised meanwhile: a worker that
+/// died between two runs must not take the application with it when the next request is
+/// written (QProcess does the same; a process-wide SIG_IGN would change the host's signals).
+class NoBrokenPipeSignal
 {
-    // A worker that died between two runs must not take the application with it when the next
-    // request is written (QProcess does the same).
-    static std::once_flag once;
-    std::call_once(once, [] {
-        struct sigaction current
-        {
-        };
-        if (sigaction(SIGPIPE, nullptr, &current) == 0 && current.sa_handler == SIG_DFL) {
-            struct sigaction ignore
-            {
-            };
-            ignore.sa_handler = SIG_IGN;
-            sigemptyset(&ignore.sa_mask);
-            sigaction(SIGPIPE, &ignore, nullptr);
+public:
+    NoBrokenPipeSignal()
+    {
+        sigemptyset(&m_pipe);
+        sigaddset(&m_pipe, SIGPIPE);
+        pthread_sigmask(SIG_BLOCK, &m_pipe, &m_old);
+    }
+    ~NoBrokenPipeSignal()
+    {
+        sigset_t pending;
+        sigpending(&pending);
+        if (sigismember(&pending, SIGPIPE) == 1) {
+            const timespec none{0, 0};
+            sigtimedwait(&m_pipe, nullptr, &none);
         }
-    });
-}
+        pthread_sigmask(SIG_SETMASK, &m_old, nullptr);
+    }
+    NoBrokenPipeSignal(const NoBrokenPipeSignal &) = delete;
+    NoBrokenPipeSignal &operator=(const NoBrokenPipeSignal &) = delete;
+
+private:
+    sigset_t m_pipe;
+    sigset_t m_old;
+};
 
 void closeFd(int *fd)
 {
@@ -58,7 +68,6 @@ void sleepMs(int ms)
 bool WorkerProcess::start(const QString &program, QString *error)
 {
     stop(0);
-    ignoreBrokenPipes();
     m_stdout.clear();
     m_stderr.clear();
     m_exited = m_crashed = false;
@@ -105,6 +114,7 @@ bool WorkerProcess::start(const QString &program, QString *error)
 
 bool WorkerProcess::write(const QByteArray &bytes)
 {
+    const NoBrokenPipeSignal quiet;
     const char *p = bytes.constData();
     qsizetype left = bytes.size();
     while (left > 0 && m_in >= 0) {
