@@ -35,6 +35,9 @@ public:
             QList<Diagnostic> *out)
         : m_arch(arch), m_nodes(nodes), m_launch(launch), m_out(out)
     {
+        for (const Composite &c : arch.composites)
+            if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
+                m_composites.insert(c.instanceId, &c);
     }
 
     void checkRoot(const Composite &root)
@@ -59,7 +62,7 @@ private:
             if (!part.active)
                 continue;
             if (part.kind == RosNodePart::Kind::Launch) {
-                if (const Composite *child = m_arch.composite(part.typeId))
+                if (const Composite *child = m_composites.value(part.typeId))
                     collect(*child, depth + 1);
                 continue;
             }
@@ -334,6 +337,7 @@ private:
     }
 
     const Architecture &m_arch;
+    QHash<QString, const Composite *> m_composites; ///< by instance id
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     QList<Diagnostic> *m_out;
