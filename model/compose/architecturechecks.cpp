@@ -7,6 +7,8 @@
 #include <QHash>
 #include <QSet>
 
+#include <cstdlib>
+
 namespace rosarch {
 
 namespace {
@@ -148,16 +150,19 @@ private:
         for (const QString &key : m_order) {
             if (!key.startsWith(prefix))
                 continue;
-            const QString other = key.mid(prefix.size());
-            const Family &f = m_system[key];
-            const QList<Use> &side = wantProviders ? f.providers : f.users;
-            if (other == name || side.isEmpty())
+            const QStringView other = QStringView(key).mid(prefix.size());
+            // the distance is at least the difference in length: most names are out at once
+            if (std::abs(other.size() - name.size()) >= best || other == name)
                 continue;
-            const int d = editDistance(name, other, best);
+            const auto it = m_system.constFind(key);
+            const QList<Use> &side = wantProviders ? it->providers : it->users;
+            if (side.isEmpty())
+                continue;
+            const int d = editDistance(name, other.toString(), best);
             if (d < best) {
                 best = d;
                 use = &side.first();
-                *found = other;
+                *found = other.toString();
             }
         }
         return use;
