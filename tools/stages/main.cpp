@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <vector>
 
 #include <sys/resource.h>
@@ -174,7 +175,8 @@ Read readRequest(StageRequest *request)
     return Read::Request;
 }
 
-Recovery run(const StageRequest &request)
+/// `composed`: the last complete run's stage 3 with its inputs, reused when they are equal.
+Recovery run(const StageRequest &request, const Recovery *composed)
 {
     StageControl control;
     control.skipped = request.skipped;
@@ -200,12 +202,12 @@ Recovery run(const StageRequest &request)
         if (!result.launch.canceled) {
             control.stageTimed(2, clock.restart());
             result.architecture =
-                composeArchitecture(request.nodes, result.launch, control.forStage(3));
+                composeOrReuse(request.nodes, result.launch, control.forStage(3), composed);
             if (!result.architecture.canceled)
                 control.stageTimed(3, clock.elapsed());
         }
     } else {
-        result = recoverWorkspace(request.root, request.options, control);
+        result = recoverWorkspace(request.root, request.options, control, composed);
     }
     return result;
 }
@@ -221,6 +223,7 @@ int main(int argc, char **argv)
     // Requests one after the other, until the supervisor closes stdin. Each reply is relative
     // to the previous one (stagestream::writeResult).
     Recovery previous;
+    std::optional<Recovery> composed; // stage 3 and what it was composed from, for the next run
     for (;;) {
         StageRequest request;
         const Read read = readRequest(&request);
@@ -232,7 +235,13 @@ int main(int argc, char **argv)
             limitMemory(request.memoryBudgetMb);
         limited = true;
         QThreadPool::globalInstance()->setMaxThreadCount(request.serial ? 1 : threads);
-        Recovery result = run(request);
+        Recovery result = run(request, composed ? &*composed : nullptr);
+        if (!result.launch.canceled && !result.architecture.canceled &&
+            (request.job == StageRequest::Job::Launch || !result.nodes.canceled)) {
+            composed =
+                Recovery{request.job == StageRequest::Job::Launch ? request.nodes : result.nodes,
+                         result.launch, result.architecture};
+        }
         QByteArray payload;
         {
             QDataStream out(&payload, QIODevice::WriteOnly);
