@@ -35,7 +35,7 @@ class Checker
 public:
     Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
             QList<Diagnostic> *out)
-        : m_arch(arch), m_nodes(nodes), m_launch(launch), m_out(out)
+        : m_nodes(nodes), m_launch(launch), m_out(out)
     {
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
@@ -341,7 +341,6 @@ private:
         return cls && !cls->nodeName.isEmpty();
     }
 
-    const Architecture &m_arch;
     QHash<QString, const Composite *> m_composites; ///< by instance id
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;

@@ -50,7 +50,7 @@ QString joinNamespace(const QString &outer, const QString &inner)
 
 LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes,
                                Loader loader, LaunchDependencies *out)
-    : m_workspace(workspace), m_nodes(nodes), m_load(std::move(loader)), m_out(out)
+    : m_workspace(workspace), m_load(std::move(loader)), m_out(out)
 {
     for (const RosPackage &p : workspace.packages)
         m_packagePaths.insert(p.name, p.path);

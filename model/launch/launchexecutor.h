@@ -101,7 +101,6 @@ private:
                                        const Evidence &evidence);
 
     const Workspace &m_workspace;
-    const AtomicNodeList &m_nodes;
     Loader m_load;
     LaunchDependencies *m_out;
     QHash<QString, QString> m_packagePaths; ///< package -> folder
