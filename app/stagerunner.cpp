@@ -44,21 +44,35 @@ void StageRunner::setLaunchFunction(LaunchFunction stage)
     m_launchStage = std::move(stage);
 }
 
+void StageRunner::setProcessOptions(const StageProcess::Options &options)
+{
+    m_process = options;
+    if (m_session)
+        m_session->setOptions(options);
+}
+
+std::shared_ptr<StageSession> StageRunner::session()
+{
+    if (!m_session && !StageProcess::helperPath(m_process.helperPath).isEmpty())
+        m_session = std::make_shared<StageSession>(m_process);
+    return m_session;
+}
+
 void StageRunner::run(const QString &root, const LaunchOptions &options, const Recovery &shown)
 {
     const RecoveryFunction stage = m_stage;
-    const StageProcess::Options process = m_process;
-    start(root, Job::Recovery, [stage, root, options, process, shown](const StageControl &control) {
+    const std::shared_ptr<StageSession> session = stage ? nullptr : this->session();
+    start(root, Job::Recovery, [stage, session, root, options, shown](const StageControl &control) {
         Outcome out;
         Recovery &result = out.recovery;
         try {
             if (stage) {
                 result = stage(root, options, control);
-            } else if (StageProcess::helperPath(process.helperPath).isEmpty()) {
+            } else if (!session) {
                 result = recoverWorkspace(root, options, control);
                 result.nodes.diagnostics.append(StageProcess::missingWorker());
             } else {
-                StageProcess::Result r = StageProcess::recover(root, options, control, process);
+                StageProcess::Result r = session->recover(root, options, control);
                 result = std::move(r.recovery);
                 result.nodes.canceled = result.nodes.canceled || r.canceled;
                 out.error = r.error;
@@ -79,13 +93,13 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
                             const LaunchOptions &options)
 {
     const LaunchFunction stage = m_launchStage;
-    const StageProcess::Options process = m_process;
+    const std::shared_ptr<StageSession> session = stage ? nullptr : this->session();
     start(root, Job::LaunchOnly,
-          [stage, root, nodes, options, process](const StageControl &control) {
+          [stage, session, root, nodes, options](const StageControl &control) {
               Outcome out;
               Recovery &result = out.recovery;
               try {
-                  if (stage || StageProcess::helperPath(process.helperPath).isEmpty()) {
+                  if (stage || !session) {
                       QElapsedTimer clock;
                       clock.start();
                       result.launch =
@@ -100,8 +114,7 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
                               control.stageTimed(3, clock.elapsed());
                       }
                   } else {
-                      StageProcess::Result r =
-                          StageProcess::launch(root, nodes, options, control, process);
+                      StageProcess::Result r = session->launch(root, nodes, options, control);
                       result = std::move(r.recovery);
                       result.launch.canceled = result.launch.canceled || r.canceled;
                       out.error = r.error;

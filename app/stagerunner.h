@@ -7,6 +7,7 @@
 #include "recovery.h"
 #include "stagecontrol.h"
 #include "stageprocess.h"
+#include "stagesession.h"
 
 #include <QObject>
 
@@ -22,7 +23,9 @@ namespace rosarch {
 ///
 /// The stages run in the analysis worker process (StageProcess), so that a crash or a memory
 /// blow-up in analysing somebody's code costs at most a file, and never the window: what the
-/// worker cannot pin on one file arrives as stageFailed, and the previous result stays.
+/// worker cannot pin on one file arrives as stageFailed, and the previous result stays. The
+/// worker is kept between runs (a StageSession, made by the first run), so a run after the
+/// first pays neither its start nor the transfer of what did not change.
 class StageRunner : public QObject
 {
     Q_OBJECT
@@ -48,7 +51,7 @@ public:
     /// Runs the stage 2 re-run in this process with `stage` instead of the worker.
     void setLaunchFunction(LaunchFunction stage);
     /// How the worker is run (its path, the per-file time and memory budgets).
-    void setProcessOptions(const StageProcess::Options &options) { m_process = options; }
+    void setProcessOptions(const StageProcess::Options &options);
 
     /// Starts stages 1 to 3 on `root`, superseding any run in progress. `shown` is the result
     /// the window shows now: a result equal to it is reported as unchanged (compared off the
@@ -97,6 +100,9 @@ private:
     RecoveryFunction m_stage;     ///< in-process stages 1 to 3 (empty: the worker)
     LaunchFunction m_launchStage; ///< in-process stage 2 re-run (empty: the worker)
     StageProcess::Options m_process;
+    /// The long-lived worker; shared with the runs, which may outlive a superseding run().
+    std::shared_ptr<StageSession> session();
+    std::shared_ptr<StageSession> m_session;
     Job m_currentJob = Job::Recovery;
     bool m_unchanged = false;
     JobRunner m_jobs; ///< last member: its destructor cancels and waits for the workers

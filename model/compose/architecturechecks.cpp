@@ -7,6 +7,8 @@
 #include <QHash>
 #include <QSet>
 
+#include <cstdlib>
+
 namespace rosarch {
 
 namespace {
@@ -33,8 +35,11 @@ class Checker
 public:
     Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
             QList<Diagnostic> *out)
-        : m_arch(arch), m_nodes(nodes), m_launch(launch), m_out(out)
+        : m_nodes(nodes), m_launch(launch), m_out(out)
     {
+        for (const Composite &c : arch.composites)
+            if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
+                m_composites.insert(c.instanceId, &c);
     }
 
     void checkRoot(const Composite &root)
@@ -59,7 +64,7 @@ private:
             if (!part.active)
                 continue;
             if (part.kind == RosNodePart::Kind::Launch) {
-                if (const Composite *child = m_arch.composite(part.typeId))
+                if (const Composite *child = m_composites.value(part.typeId))
                     collect(*child, depth + 1);
                 continue;
             }
@@ -145,16 +150,19 @@ private:
         for (const QString &key : m_order) {
             if (!key.startsWith(prefix))
                 continue;
-            const QString other = key.mid(prefix.size());
-            const Family &f = m_system[key];
-            const QList<Use> &side = wantProviders ? f.providers : f.users;
-            if (other == name || side.isEmpty())
+            const QStringView other = QStringView(key).mid(prefix.size());
+            // the distance is at least the difference in length: most names are out at once
+            if (std::abs(other.size() - name.size()) >= best || other == name)
                 continue;
-            const int d = editDistance(name, other, best);
+            const auto it = m_system.constFind(key);
+            const QList<Use> &side = wantProviders ? it->providers : it->users;
+            if (side.isEmpty())
+                continue;
+            const int d = editDistance(name, other.toString(), best);
             if (d < best) {
                 best = d;
                 use = &side.first();
-                *found = other;
+                *found = other.toString();
             }
         }
         return use;
@@ -333,7 +341,7 @@ private:
         return cls && !cls->nodeName.isEmpty();
     }
 
-    const Architecture &m_arch;
+    QHash<QString, const Composite *> m_composites; ///< by instance id
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     QList<Diagnostic> *m_out;

@@ -301,6 +301,10 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 containers.insert(host->id);
     }
 
+    QHash<QString, const LaunchFileInstance *> launchInstances;
+    for (const LaunchFileInstance &lf : launch.instances)
+        if (!launchInstances.contains(lf.id)) // the first, as LaunchDependencies::instance()
+            launchInstances.insert(lf.id, &lf);
     QHash<QString, Composite> built;
     const int total = int(launch.instances.size());
     for (int i = total - 1; i >= 0; --i) { // children come after their parent: build them first
@@ -327,7 +331,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
             if (const NodeInstance *n = instances.value(id); n && !containers.contains(id))
                 entries.append({true, id, n->evidence});
         for (const QString &id : lf.includedLaunchFiles)
-            if (const LaunchFileInstance *child = launch.instance(id))
+            if (const LaunchFileInstance *child = launchInstances.value(id))
                 entries.append({false, id, child->evidence});
         std::stable_sort(entries.begin(), entries.end(), [&](const Entry &a, const Entry &b) {
             const bool aHere = a.evidence.file == lf.file, bHere = b.evidence.file == lf.file;
@@ -371,7 +375,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                     part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;
                 }
             } else {
-                const LaunchFileInstance &child = *launch.instance(e.id);
+                const LaunchFileInstance &child = *launchInstances.value(e.id);
                 part.kind = RosNodePart::Kind::Launch;
                 part.typeName = launchStem(child.type);
                 part.typeId = child.id;

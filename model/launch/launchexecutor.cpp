@@ -50,13 +50,38 @@ QString joinNamespace(const QString &outer, const QString &inner)
 
 LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes,
                                Loader loader, LaunchDependencies *out)
-    : m_workspace(workspace), m_nodes(nodes), m_load(std::move(loader)), m_out(out)
+    : m_workspace(workspace), m_load(std::move(loader)), m_out(out)
 {
     for (const RosPackage &p : workspace.packages)
         m_packagePaths.insert(p.name, p.path);
+    for (const SourceFile &f : workspace.files)
+        m_filePackages.insert(f.path, f.package); // the last of a path, as a scan would find
+    for (const AtomicNode &n : nodes.nodes) {
+        QSet<QString> seen;
+        for (const QString &e : n.executables)
+            if (!seen.contains(e)) {
+                seen.insert(e);
+                m_classesByExecutable[n.packageName + QChar(0) + e].append(&n);
+                m_classesByExecutableName[e].append(&n);
+            }
+        for (const QString &p : n.plugins)
+            if (!m_classesByPlugin.contains(p))
+                m_classesByPlugin.insert(p, &n);
+    }
 }
 
 IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QString &fromFile) const
+{
+    const QString key = rawPath + QChar(0) + fromFile;
+    const auto known = m_includeTargets.constFind(key);
+    if (known != m_includeTargets.cend())
+        return *known;
+    const IncludeTarget t = findInclude(rawPath, fromFile);
+    m_includeTargets.insert(key, t);
+    return t;
+}
+
+IncludeTarget LaunchExecutor::findInclude(const QString &rawPath, const QString &fromFile) const
 {
     IncludeTarget t;
     QString path = rawPath.trimmed();
@@ -64,9 +89,13 @@ IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QStri
         QStringLiteral("^\\$\\(find-pkg-(?:share|prefix) ([^)\\s]+)\\)/*(.*)$"));
     const auto m = share.match(path);
     auto existing = [&](const QString &rel) {
-        return m_workspace.absolutePath(rel).isEmpty()
-                   ? false
-                   : QFileInfo(m_workspace.absolutePath(rel)).isFile();
+        const auto it = m_isFile.constFind(rel);
+        if (it != m_isFile.cend())
+            return *it;
+        const QString absolute = m_workspace.absolutePath(rel);
+        const bool file = !absolute.isEmpty() && QFileInfo(absolute).isFile();
+        m_isFile.insert(rel, file);
+        return file;
     };
     if (m.hasMatch()) {
         t.package = m.captured(1);
@@ -110,10 +139,7 @@ IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QStri
         const QString clean = QDir::cleanPath(rel);
         if (existing(clean)) {
             t.file = clean;
-            t.package = QString();
-            for (const SourceFile &f : m_workspace.files)
-                if (f.path == clean)
-                    t.package = f.package;
+            t.package = m_filePackages.value(clean);
             return t;
         }
     }
@@ -130,9 +156,7 @@ void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &
     inst.id = (m_idPrefix + QStringLiteral("lf%1")).arg(m_out->instances.size() + 1);
     inst.type = QFileInfo(file).fileName();
     inst.file = file;
-    for (const SourceFile &f : m_workspace.files)
-        if (f.path == file)
-            inst.package = f.package;
+    inst.package = m_filePackages.value(file);
     inst.format = formatName(d->format);
     inst.evidence = Evidence::startOf(file);
     m_out->instances.append(inst);
@@ -334,16 +358,11 @@ LaunchExecutor::resolveClasses(const QString &package, const QString &executable
     QString wanted = executable;
     if (plugin && wanted.startsWith(QLatin1String("::")))
         wanted.remove(0, 2);
-    QList<const AtomicNode *> out;
-    for (const AtomicNode &n : m_nodes.nodes) {
-        if (plugin) {
-            if (n.plugins.contains(wanted))
-                return {&n};
-        } else if (n.packageName == package && n.executables.contains(executable)) {
-            out.append(&n);
-        }
+    if (plugin) {
+        const AtomicNode *n = m_classesByPlugin.value(wanted);
+        return n ? QList<const AtomicNode *>{n} : QList<const AtomicNode *>{};
     }
-    return out;
+    return m_classesByExecutable.value(package + QChar(0) + executable);
 }
 
 namespace {
@@ -364,13 +383,10 @@ QList<const AtomicNode *> LaunchExecutor::resolveElsewhere(const QString &execut
     // A package may install an executable under another package's name
     // (`install(TARGETS x DESTINATION lib/other)`): the one package of the workspace that
     // builds it, when there is exactly one.
-    QList<const AtomicNode *> out;
+    const QList<const AtomicNode *> out = m_classesByExecutableName.value(executable);
     QSet<QString> packages;
-    for (const AtomicNode &n : m_nodes.nodes)
-        if (n.executables.contains(executable)) {
-            out.append(&n);
-            packages.insert(n.packageName);
-        }
+    for (const AtomicNode *n : out)
+        packages.insert(n->packageName);
     if (packages.size() != 1)
         return {};
     *builtBy = *packages.cbegin();

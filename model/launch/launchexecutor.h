@@ -51,6 +51,8 @@ public:
     QStringList directIncludes(const QString &file);
 
 private:
+    IncludeTarget findInclude(const QString &path, const QString &fromFile) const;
+
     struct Scope
     {
         QMap<QString, QString> configurations;
@@ -99,10 +101,19 @@ private:
                                        const Evidence &evidence);
 
     const Workspace &m_workspace;
-    const AtomicNodeList &m_nodes;
     Loader m_load;
     LaunchDependencies *m_out;
-    QHash<QString, QString> m_packagePaths;         ///< package -> folder
+    QHash<QString, QString> m_packagePaths; ///< package -> folder
+    QHash<QString, QString> m_filePackages; ///< workspace file -> its package
+    /// Classes by package + '\0' + executable, in stage 1's order; plugin classes by name
+    /// (the first); the classes of each executable name, in order.
+    QHash<QString, QList<const AtomicNode *>> m_classesByExecutable;
+    QHash<QString, const AtomicNode *> m_classesByPlugin;
+    QHash<QString, QList<const AtomicNode *>> m_classesByExecutableName;
+    /// resolveInclude's answers by path + '\0' + including file, and whether a path is a file:
+    /// a stack includes the same files and parameter files from many places.
+    mutable QHash<QString, IncludeTarget> m_includeTargets;
+    mutable QHash<QString, bool> m_isFile;
     QHash<QString, ParameterFile> m_parameterFiles; ///< by workspace-relative path
     QHash<QString, ParameterFile> m_rewrittenFiles; ///< RewrittenYaml results, by file and rewrites
     QSet<QString> m_missingParameterFiles;          ///< reported once per path

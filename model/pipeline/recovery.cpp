@@ -32,8 +32,17 @@ RecoveryCounts RecoveryCounts::of(const Recovery &r)
     return c;
 }
 
+Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                            const StageControl &control, const Recovery *previous)
+{
+    if (previous && !previous->architecture.canceled && !previous->launch.canceled &&
+        !previous->nodes.canceled && previous->launch == launch && previous->nodes == nodes)
+        return previous->architecture;
+    return composeArchitecture(nodes, launch, control);
+}
+
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
-                          const StageControl &control)
+                          const StageControl &control, const Recovery *previous)
 {
     Recovery r;
     QElapsedTimer clock;
@@ -54,7 +63,7 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);
-    r.architecture = composeArchitecture(r.nodes, r.launch, control.forStage(3));
+    r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
     return r;

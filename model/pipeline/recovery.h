@@ -38,8 +38,15 @@ struct RecoveryCounts
     static RecoveryCounts of(const Recovery &recovery);
 };
 
-/// Runs stages 1, 2 and 3 on `root` (one scan, shared).
+/// Runs stages 1, 2 and 3 on `root` (one scan, shared). With `previous` (an earlier complete
+/// recovery), stage 3 is not run again when its inputs, stages 1 and 2, equal the ones
+/// `previous` was composed from: its architecture is the result.
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
-                          const StageControl &control = {});
+                          const StageControl &control = {}, const Recovery *previous = nullptr);
+
+/// Stage 3 on `nodes` and `launch`, or `previous`'s architecture when it was composed from equal
+/// ones (stage 3 is a function of them alone).
+Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencies &launch,
+                            const StageControl &control, const Recovery *previous);
 
 } // namespace rosarch

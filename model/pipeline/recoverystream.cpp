@@ -84,4 +84,104 @@ ROSARCH_DEFINE_STREAM(LaunchOptions)
 ROSARCH_DEFINE_STREAM(StageRequest)
 #undef ROSARCH_DEFINE_STREAM
 
+namespace {
+
+// Delta encoding of the worker's reply: mode 0 = the list equals base's; 1 = a count, then
+// per element a flag "equal to base's at this index" or the element.
+template <class T> void writeList(QDataStream &s, const QList<T> &v, const QList<T> &base)
+{
+    QList<bool> same(v.size());
+    bool all = v.size() == base.size();
+    for (qsizetype i = 0; i < v.size(); ++i) {
+        same[i] = i < base.size() && v.at(i) == base.at(i);
+        all = all && same[i];
+    }
+    if (all) {
+        s << quint8(0);
+        return;
+    }
+    s << quint8(1) << quint32(v.size());
+    for (qsizetype i = 0; i < v.size(); ++i) {
+        s << same.at(i);
+        if (!same.at(i))
+            s << v.at(i);
+    }
+}
+
+template <class T> void readList(QDataStream &s, QList<T> &v, const QList<T> &base)
+{
+    quint8 mode = 0;
+    s >> mode;
+    if (s.status() != QDataStream::Ok)
+        return;
+    if (mode == 0) {
+        v = base;
+        return;
+    }
+    quint32 n = 0;
+    s >> n;
+    if (mode != 1 || n > (1u << 24)) {
+        s.setStatus(QDataStream::ReadCorruptData);
+        return;
+    }
+    v.clear();
+    v.reserve(n);
+    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i) {
+        bool same = false;
+        s >> same;
+        if (same && qsizetype(i) >= base.size()) {
+            s.setStatus(QDataStream::ReadCorruptData);
+            return;
+        }
+        if (same) {
+            v.append(base.at(i));
+        } else {
+            T element;
+            s >> element;
+            v.append(std::move(element));
+        }
+    }
+}
+
+/// The lists of a Recovery with their counterparts in the base, and its scalars, both ways.
+template <class R, class B, class L, class F> void deltaFields(R &v, B &base, L list, F scalar)
+{
+    scalar(v.nodes.workspaceRoot, v.nodes.canceled, v.launch.canceled, v.architecture.canceled);
+    list(v.nodes.packages, base.nodes.packages);
+    list(v.nodes.nodes, base.nodes.nodes);
+    list(v.nodes.diagnostics, base.nodes.diagnostics);
+    list(v.launch.launchFiles, base.launch.launchFiles);
+    list(v.launch.instances, base.launch.instances);
+    list(v.launch.nodes, base.launch.nodes);
+    list(v.launch.arguments, base.launch.arguments);
+    list(v.launch.classifierInstances, base.launch.classifierInstances);
+    list(v.launch.classifierNodes, base.launch.classifierNodes);
+    list(v.launch.diagnostics, base.launch.diagnostics);
+    list(v.architecture.composites, base.architecture.composites);
+    list(v.architecture.classifiers, base.architecture.classifiers);
+    list(v.architecture.diagnostics, base.architecture.diagnostics);
+}
+
+} // namespace
+
+namespace stagestream {
+
+void writeResult(QDataStream &s, const Recovery &v, const Recovery &base)
+{
+    deltaFields(
+        v, base, [&s](const auto &list, const auto &from) { writeList(s, list, from); },
+        [&s](const auto &...x) { (s << ... << x); });
+}
+
+bool readResult(QDataStream &s, Recovery *v, const Recovery &base)
+{
+    *v = {};
+    deltaFields(
+        *v, base, [&s](auto &list, const auto &from) { readList(s, list, from); },
+        [&s](auto &...x) { (s >> ... >> x); });
+    return s.status() == QDataStream::Ok;
+}
+
+} // namespace stagestream
+
 } // namespace rosarch

@@ -44,7 +44,7 @@ QDataStream &operator>>(QDataStream &s, StageRequest &v);
 namespace stagestream {
 /// The first bytes of a request and of every worker reply: "RSTG" and the format version.
 constexpr quint32 kMagic = 0x52535447;
-constexpr quint32 kVersion = 2;
+constexpr quint32 kVersion = 3;
 /// The QDataStream version both sides use.
 constexpr QDataStream::Version kStreamVersion = QDataStream::Qt_6_4;
 /// The worker's replies on stdout are frames: a type and a payload (QByteArray).
@@ -54,8 +54,14 @@ enum Frame : quint8
     Timed = 'T',    ///< qint32 stage, qint64 milliseconds: a stage finished
     Enter = 'E',    ///< quint64 thread, QString file: work on a file begins
     Leave = 'L',    ///< quint64 thread, QString file: and ends
-    Result = 'R',   ///< Recovery
+    Result = 'R',   ///< Recovery, relative to the worker's previous Result (writeResult)
 };
+/// Writes `v` relative to `base`, the previous result sent on this pipe: a list equal to
+/// base's is a flag, and so is each element equal to base's element at the same index (a warm
+/// run, or one with a file edited, sends a few elements instead of the whole recovery).
+void writeResult(QDataStream &s, const Recovery &v, const Recovery &base);
+/// Reads what writeResult wrote against the same `base`; false when it is damaged.
+bool readResult(QDataStream &s, Recovery *v, const Recovery &base);
 /// Worker exit codes besides 0 (done) and a signal.
 constexpr int kExitBadRequest = 2;
 constexpr int kExitOutOfMemory = 4;

@@ -49,6 +49,8 @@ private Q_SLOTS:
                             QStringLiteral("warm/in-process"),
                             QStringLiteral("one-file-edit/worker"),
                             QStringLiteral("one-file-edit/in-process"),
+                            QStringLiteral("warm/gui-session"),
+                            QStringLiteral("one-file-edit/gui-session"),
                         }));
         QVERIFY(report.value(QStringLiteral("peak_rss_kb")).toInteger() > 0);
     }

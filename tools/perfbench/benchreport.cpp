@@ -35,7 +35,15 @@ QString ratio(qint64 ms, qint64 baseline)
 
 QString pathName(Path p)
 {
-    return p == Path::Worker ? QStringLiteral("worker") : QStringLiteral("in-process");
+    switch (p) {
+    case Path::Worker:
+        return QStringLiteral("worker");
+    case Path::InProcess:
+        return QStringLiteral("in-process");
+    case Path::Session:
+        return QStringLiteral("gui-session");
+    }
+    return {};
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "recovery.h"
 #include "sourcereader.h"
 #include "stageprocess.h"
+#include "stagesession.h"
 #include "syntaxtree.h"
 #include "workspacescanner.h"
 
@@ -56,9 +57,10 @@ ParseBaseline parseBaseline(const QString &root)
     return b;
 }
 
-RunResult runChild(const QString &program, Path path, const QString &root, const QString &cacheDir)
+namespace {
+
+QProcessEnvironment childEnvironment(const QString &cacheDir)
 {
-    QProcess child;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("ROSARCH_NO_CACHE"));
     env.remove(QStringLiteral("ROSARCH_CACHE_DIR"));
@@ -66,7 +68,15 @@ RunResult runChild(const QString &program, Path path, const QString &root, const
         env.insert(QStringLiteral("ROSARCH_NO_CACHE"), QStringLiteral("1"));
     else
         env.insert(QStringLiteral("ROSARCH_CACHE_DIR"), cacheDir);
-    child.setProcessEnvironment(env);
+    return env;
+}
+
+} // namespace
+
+RunResult runChild(const QString &program, Path path, const QString &root, const QString &cacheDir)
+{
+    QProcess child;
+    child.setProcessEnvironment(childEnvironment(cacheDir));
     child.start(program,
                 {QStringLiteral("--child"),
                  path == Path::Worker ? QStringLiteral("worker") : QStringLiteral("inprocess"),
@@ -110,6 +120,72 @@ int childMain(const QString &path, const QString &root)
     }
     const qint64 ms = timer.elapsed();
     QTextStream(stdout) << ms << ' ' << rss << '\n';
+    return 0;
+}
+
+RunResult runSessionChild(const QString &program, const QString &root, const QString &cacheDir,
+                          int runs, const QString &editedFile, int firstEdit, QList<qint64> *ms)
+{
+    QProcess child;
+    child.setProcessEnvironment(childEnvironment(cacheDir));
+    child.start(program, {QStringLiteral("--session-child"), root, QString::number(runs),
+                          editedFile, QString::number(firstEdit)});
+    RunResult r;
+    if (!child.waitForFinished(30 * 60 * 1000) || child.exitStatus() != QProcess::NormalExit ||
+        child.exitCode() != 0) {
+        r.error = QString::fromLocal8Bit(child.readAllStandardError()).trimmed();
+        if (r.error.isEmpty())
+            r.error = QStringLiteral("the measuring child failed (%1)").arg(child.errorString());
+        return r;
+    }
+    const QStringList fields =
+        QString::fromLatin1(child.readAllStandardOutput()).simplified().split(QLatin1Char(' '));
+    if (fields.size() != runs + 1) {
+        r.error = QStringLiteral("the measuring child printed no figures");
+        return r;
+    }
+    r.peakRssKb = fields.at(0).toLongLong();
+    for (int i = 1; i < fields.size(); ++i)
+        ms->append(fields.at(i).toLongLong());
+    r.ok = true;
+    return r;
+}
+
+int sessionChildMain(const QStringList &args)
+{
+    // args: root, runs, edited file ("" none), first edit number
+    const QString root = args.value(0);
+    const int runs = args.value(1).toInt();
+    const QString edited = args.value(2);
+    int edit = args.value(3).toInt();
+    QList<qint64> times;
+    {
+        StageSession session;
+        StageProcess::Result first = session.recover(root, {}, {});
+        if (!first.error.isEmpty()) {
+            QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << first.error << '\n';
+            return 1;
+        }
+        for (int i = 0; i < runs; ++i) {
+            if (!edited.isEmpty() && !editFile(edited, edit++)) {
+                QTextStream(stderr) << "rosarch-perfbench: cannot edit " << edited << '\n';
+                return 1;
+            }
+            QElapsedTimer timer;
+            timer.start();
+            const StageProcess::Result r = session.recover(root, {}, {});
+            times << timer.elapsed();
+            if (!r.error.isEmpty()) {
+                QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << r.error << '\n';
+                return 1;
+            }
+        }
+    } // the worker is reaped here, so that its peak memory is counted
+    QTextStream out(stdout);
+    out << maxRssKb(RUSAGE_CHILDREN);
+    for (qint64 ms : std::as_const(times))
+        out << ' ' << ms;
+    out << '\n';
     return 0;
 }
 

@@ -23,6 +23,7 @@ enum class Path
 {
     Worker,    ///< through rosarch-stages, as the GUI runs it
     InProcess, ///< recoverWorkspace() in the measuring process
+    Session,   ///< one StageSession kept across the runs, as the GUI's StageRunner keeps it
 };
 
 /// One recovery, measured in a child process of its own.
@@ -40,6 +41,16 @@ RunResult runChild(const QString &program, Path path, const QString &root, const
 
 /// The child's side: runs the recovery and prints "ms peakRssKb" on stdout.
 int childMain(const QString &path, const QString &root);
+
+/// Runs `runs` recoveries of `root` in one child process on one StageSession (the GUI's
+/// path), after one unmeasured run that starts the worker and fills the cache; before each
+/// measured run, `editedFile` (if any) is edited with the numbers from `firstEdit` on.
+/// `result.ms` is unused; the runs' times go to `ms`.
+RunResult runSessionChild(const QString &program, const QString &root, const QString &cacheDir,
+                          int runs, const QString &editedFile, int firstEdit, QList<qint64> *ms);
+
+/// The child's side of runSessionChild: prints "peakRssKb ms..." on stdout.
+int sessionChildMain(const QStringList &args);
 
 /// Copies the files of the workspace at `from` that the scanner reads into `to`.
 bool copyWorkspace(const QString &from, const QString &to, QString *error);

@@ -7,7 +7,9 @@
 // read), then stages 1-3 through the analysis worker (as the GUI runs them) and in-process:
 // without the analysis cache, cold (empty cache), warm (nothing changed) and with one C++
 // source file edited; each as a ratio to the baseline, with the peak memory of the process
-// that did the analysis. Every recovery runs in a child process of its own.
+// that did the analysis. Every recovery runs in a child process of its own, except the
+// gui-session rows: one child keeps one StageSession (a long-lived worker) across its runs, as
+// the GUI does, so warm and edit runs are measured on a worker that is already running.
 #include "benchreport.h"
 #include "benchsteps.h"
 
@@ -48,6 +50,8 @@ int main(int argc, char **argv)
     const QStringList args = app.arguments();
     if (args.size() == 4 && args.at(1) == QLatin1String("--child"))
         return childMain(args.at(2), args.at(3));
+    if (args.size() == 6 && args.at(1) == QLatin1String("--session-child"))
+        return sessionChildMain(args.mid(2));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(
@@ -122,13 +126,37 @@ int main(int argc, char **argv)
          QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
         {QStringLiteral("one-file-edit"), Path::InProcess, true, Plan::Edit,
          QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
+        // The GUI's path: one StageRunner keeps its worker between runs.
+        {QStringLiteral("warm"), Path::Session, true, Plan::Warm, QStringLiteral("<= 0.2x"), 0.2,
+         0},
+        {QStringLiteral("one-file-edit"), Path::Session, true, Plan::Edit,
+         QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
     };
     int edits = 0;
     for (const Plan &plan : plans) {
         if (plan.kind == Plan::Edit && edited.isEmpty())
             continue;
         Case c{plan.name, plan.path, {}, 0, plan.target, plan.targetRatio, plan.targetMs};
-        err << plan.name << (plan.path == Path::Worker ? " (worker)" : " (in-process)") << "...\n";
+        err << plan.name
+            << (plan.path == Path::Worker      ? " (worker)"
+                : plan.path == Path::InProcess ? " (in-process)"
+                                               : " (gui session)")
+            << "...\n";
+        if (plan.path == Path::Session) {
+            // One child, one worker: an unmeasured first run, then the measured ones.
+            const RunResult r =
+                runSessionChild(app.applicationFilePath(), root, cacheDir, runs,
+                                plan.kind == Plan::Edit ? edited : QString(), edits + 1, &c.ms);
+            if (!r.ok) {
+                err << "rosarch-perfbench: " << r.error << '\n';
+                return 1;
+            }
+            edits += plan.kind == Plan::Edit ? runs : 0;
+            c.peakRssKb = r.peakRssKb;
+            report.peakRssKb = std::max(report.peakRssKb, c.peakRssKb);
+            report.cases << c;
+            continue;
+        }
         if (plan.kind != Plan::Cold) // a populated cache to start from
             runChild(app.applicationFilePath(), plan.path, root, cacheDir);
         for (int i = 0; i < runs; ++i) {

@@ -1,7 +1,8 @@
-// rosarch-stages: reads a StageRequest (model/pipeline/recoverystream.h) on stdin, runs the
-// stages it asks for and writes frames to stdout: progress, the file each thread begins and
-// ends, and the result. The supervisor (StageProcess) learns from the frames which file a
-// crash, an exhausted memory budget or an overrun belongs to, and starts this again without it.
+// rosarch-stages: reads StageRequests (model/pipeline/recoverystream.h) on stdin, one after
+// the other until stdin ends, runs the stages each asks for and writes frames to stdout:
+// progress, the file each thread begins and ends, and the result. The supervisor (StageProcess)
+// learns from the frames which file a crash, an exhausted memory budget or an overrun belongs to,
+// and starts this again without it.
 //
 // Exit codes: 0 done, 2 unreadable request, 4 out of memory; a crash ends it by a signal.
 //
@@ -13,15 +14,18 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QFile>
+#include <QIODevice>
 #include <QMutex>
 #include <QThread>
 #include <QThreadPool>
+#include <QtEndian>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <optional>
 #include <vector>
 
 #include <sys/resource.h>
@@ -44,6 +48,18 @@ void writeAll(const QByteArray &bytes)
         p += n;
         left -= n;
     }
+}
+
+/// A payload written already.
+struct RawPayload
+{
+    QByteArray bytes;
+};
+
+QDataStream &operator<<(QDataStream &s, const RawPayload &p)
+{
+    s.writeRawData(p.bytes.constData(), int(p.bytes.size()));
+    return s;
 }
 
 template <class... T> void frame(stagestream::Frame type, const T &...fields)
@@ -109,36 +125,59 @@ void testFault(const QString &file)
     }
 }
 
-} // namespace
-
-int main(int argc, char **argv)
+/// Reads exactly `size` bytes of stdin; false at its end.
+bool readAll(char *into, qsizetype size)
 {
-    QCoreApplication app(argc, argv);
-    std::set_new_handler(outOfMemory);
-
-    QFile input;
-    if (!input.open(stdin, QIODevice::ReadOnly)) {
-        std::fputs("rosarch-stages: cannot read the request\n", stderr);
-        return stagestream::kExitBadRequest;
+    while (size > 0) {
+        const ssize_t n = ::read(STDIN_FILENO, into, size_t(size));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        into += n;
+        size -= n;
     }
-    QDataStream in(&input);
-    in.setVersion(stagestream::kStreamVersion);
-    quint32 magic = 0, version = 0;
-    StageRequest request;
-    in >> magic >> version;
+    return true;
+}
+
+enum class Read
+{
+    Request,
+    End, ///< the supervisor closed stdin: it is done with this worker, or gone
+    Bad,
+};
+
+Read readRequest(StageRequest *request)
+{
+    char header[12];
+    if (!readAll(header, sizeof header))
+        return Read::End;
+    const quint32 magic = qFromBigEndian<quint32>(header);
+    const quint32 version = qFromBigEndian<quint32>(header + 4);
+    const quint32 length = qFromBigEndian<quint32>(header + 8);
     if (magic != stagestream::kMagic || version != stagestream::kVersion) {
         std::fputs("rosarch-stages: the request is not from this build of rosarch\n", stderr);
-        return stagestream::kExitBadRequest;
+        return Read::Bad;
     }
-    in >> request;
+    QByteArray payload(qsizetype(length == 0xffffffffu ? 0 : length), Qt::Uninitialized);
+    if (!readAll(payload.data(), payload.size())) {
+        std::fputs("rosarch-stages: the request is incomplete\n", stderr);
+        return Read::Bad;
+    }
+    QDataStream in(payload);
+    in.setVersion(stagestream::kStreamVersion);
+    *request = {};
+    in >> *request;
     if (in.status() != QDataStream::Ok) {
         std::fputs("rosarch-stages: the request is incomplete\n", stderr);
-        return stagestream::kExitBadRequest;
+        return Read::Bad;
     }
-    limitMemory(request.memoryBudgetMb);
-    if (request.serial)
-        QThreadPool::globalInstance()->setMaxThreadCount(1);
+    return Read::Request;
+}
 
+/// `composed`: the last complete run's stage 3 with its inputs, reused when they are equal.
+Recovery run(const StageRequest &request, const Recovery *composed)
+{
     StageControl control;
     control.skipped = request.skipped;
     control.progressed = [](int done, int total, const QString &what) {
@@ -163,13 +202,53 @@ int main(int argc, char **argv)
         if (!result.launch.canceled) {
             control.stageTimed(2, clock.restart());
             result.architecture =
-                composeArchitecture(request.nodes, result.launch, control.forStage(3));
+                composeOrReuse(request.nodes, result.launch, control.forStage(3), composed);
             if (!result.architecture.canceled)
                 control.stageTimed(3, clock.elapsed());
         }
     } else {
-        result = recoverWorkspace(request.root, request.options, control);
+        result = recoverWorkspace(request.root, request.options, control, composed);
     }
-    frame(stagestream::Result, result);
-    return 0;
+    return result;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    std::set_new_handler(outOfMemory);
+    const int threads = QThreadPool::globalInstance()->maxThreadCount();
+    bool limited = false;
+    // Requests one after the other, until the supervisor closes stdin. Each reply is relative
+    // to the previous one (stagestream::writeResult).
+    Recovery previous;
+    std::optional<Recovery> composed; // stage 3 and what it was composed from, for the next run
+    for (;;) {
+        StageRequest request;
+        const Read read = readRequest(&request);
+        if (read == Read::End)
+            return 0;
+        if (read == Read::Bad)
+            return stagestream::kExitBadRequest;
+        if (!limited) // the supervisor sends one budget to a worker
+            limitMemory(request.memoryBudgetMb);
+        limited = true;
+        QThreadPool::globalInstance()->setMaxThreadCount(request.serial ? 1 : threads);
+        Recovery result = run(request, composed ? &*composed : nullptr);
+        if (!result.launch.canceled && !result.architecture.canceled &&
+            (request.job == StageRequest::Job::Launch || !result.nodes.canceled)) {
+            composed =
+                Recovery{request.job == StageRequest::Job::Launch ? request.nodes : result.nodes,
+                         result.launch, result.architecture};
+        }
+        QByteArray payload;
+        {
+            QDataStream out(&payload, QIODevice::WriteOnly);
+            out.setVersion(stagestream::kStreamVersion);
+            stagestream::writeResult(out, result, previous);
+        }
+        frame(stagestream::Result, RawPayload{payload});
+        previous = std::move(result);
+    }
 }
