@@ -384,9 +384,55 @@ void AnalysisCache::fail(const QString &why)
         m_problem = why + QStringLiteral("; the cache is off for the rest of this run.");
 }
 
+std::shared_ptr<const void> AnalysisCache::recent(const QString &kind, const QByteArray &key)
+{
+    if (!m_enabled)
+        return {};
+    QMutexLocker lock(&m_recentMutex);
+    const auto found = m_recent.find(kind);
+    if (found == m_recent.end())
+        return {};
+    Recent &r = *found;
+    if (const auto it = r.current.constFind(key); it != r.current.constEnd()) {
+        ++m_hits;
+        ++m_kept;
+        return *it;
+    }
+    const auto it = r.previous.find(key);
+    if (it == r.previous.end())
+        return {};
+    std::shared_ptr<const void> value = std::move(*it);
+    r.previous.erase(it);
+    r.current.insert(key, value);
+    ++m_hits;
+    ++m_kept;
+    return value;
+}
+
+void AnalysisCache::keepRecent(const QString &kind, const QByteArray &key,
+                               std::shared_ptr<const void> value)
+{
+    if (!m_enabled)
+        return;
+    QMutexLocker lock(&m_recentMutex);
+    m_recent[kind].current.insert(key, std::move(value));
+}
+
+void AnalysisCache::startRun(std::initializer_list<QString> kinds)
+{
+    QMutexLocker lock(&m_recentMutex);
+    for (const QString &kind : kinds) {
+        const auto it = m_recent.find(kind);
+        if (it == m_recent.end())
+            continue;
+        it->previous = std::move(it->current);
+        it->current.clear();
+    }
+}
+
 AnalysisCache::Statistics AnalysisCache::statistics() const
 {
-    return {m_hits.load(), m_misses.load(), m_rejected.load(), m_stores.load()};
+    return {m_hits.load(), m_misses.load(), m_rejected.load(), m_stores.load(), m_kept.load()};
 }
 
 std::optional<Diagnostic> AnalysisCache::takeProblem()

@@ -49,6 +49,7 @@ public:
         int misses = 0;   ///< no entry (or an unusable one) for a key
         int rejected = 0; ///< entries found damaged or foreign (counted as misses too)
         int stores = 0;
+        int kept = 0; ///< hits served by values this process decoded before (recent())
     };
 
     /// A cache in `root` (entries below `root`/analysis/); "" gives a cache that is off.
@@ -86,6 +87,15 @@ public:
     /// trims; a failure turns the cache off (see takeProblem()).
     void flush();
 
+    /// Values decoded from entries in this process, so that a long-lived worker does not decode
+    /// the same entries run after run (stagememo::load gives them their types; one kind, one
+    /// type). What a run of a kind used stays for the next run of that kind (startRun()); the
+    /// rest is dropped then. A kept value counts as a hit. Nothing is kept when the cache is off.
+    std::shared_ptr<const void> recent(const QString &kind, const QByteArray &key);
+    void keepRecent(const QString &kind, const QByteArray &key, std::shared_ptr<const void> value);
+    /// A new run of `kinds` begins: drops their values that the previous run did not use.
+    void startRun(std::initializer_list<QString> kinds);
+
     Statistics statistics() const;
     /// The diagnostic for the problem that turned the cache off, once; none otherwise.
     std::optional<Diagnostic> takeProblem();
@@ -116,7 +126,7 @@ private:
     QString m_directory;
     qint64 m_maxBytes;
     std::atomic<bool> m_enabled{false};
-    std::atomic<int> m_hits{0}, m_misses{0}, m_rejected{0}, m_stores{0};
+    std::atomic<int> m_hits{0}, m_misses{0}, m_rejected{0}, m_stores{0}, m_kept{0};
     std::atomic<bool> m_storedSinceTrim{false};
     std::unique_ptr<FileDigests> m_digests;
 
@@ -129,6 +139,14 @@ private:
     QSet<QString> m_rejectedPacks;
     QString m_problem;
     bool m_problemTaken = false;
+
+    struct Recent
+    {
+        QHash<QByteArray, std::shared_ptr<const void>> current;  ///< used in this run
+        QHash<QByteArray, std::shared_ptr<const void>> previous; ///< used in the one before
+    };
+    QMutex m_recentMutex; ///< guards m_recent
+    QHash<QString, Recent> m_recent;
 };
 
 } // namespace rosarch

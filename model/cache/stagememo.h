@@ -5,6 +5,9 @@
 
 #include <QMap>
 
+#include <memory>
+#include <optional>
+
 // Whole-stage memos: a stage's result in the analysis cache, under a key made of everything the
 // stage reads. Templates over the workspace and control types, so that the cache library does
 // not depend on the workspace scanner's.
@@ -37,15 +40,30 @@ QByteArray workspacePart(const Workspace &ws, const Control &control, bool sizes
     return bytes;
 }
 
+/// The entry of `kind` under `key` decoded by `decode` (bool(const QByteArray &, T *)), when
+/// there is a good one: the value this process decoded before (AnalysisCache::recent), else
+/// the entry read and decoded, and kept for the next run.
+template <class T, class Decode>
+std::optional<T> loadWith(AnalysisCache &cache, const QString &kind, const QByteArray &key,
+                          Decode decode)
+{
+    if (const std::shared_ptr<const void> kept = cache.recent(kind, key))
+        return *static_cast<const T *>(kept.get());
+    const std::optional<QByteArray> bytes = cache.load(kind, key);
+    T value;
+    if (!bytes || !decode(*bytes, &value))
+        return std::nullopt;
+    cache.keepRecent(kind, key, std::make_shared<const T>(value));
+    return value;
+}
+
 /// The memo of `kind` under `key`, when there is a good one.
 template <class T>
 std::optional<T> load(AnalysisCache &cache, const QString &kind, const QByteArray &key)
 {
-    const std::optional<QByteArray> bytes = cache.load(kind, key);
-    T value;
-    if (!bytes || !cachecodec::decode(*bytes, &value))
-        return std::nullopt;
-    return value;
+    return loadWith<T>(cache, kind, key, [](const QByteArray &bytes, T *value) {
+        return cachecodec::decode(bytes, value);
+    });
 }
 
 } // namespace rosarch::stagememo

@@ -223,6 +223,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                                        const LaunchOptions &options, const StageControl &control)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")}); // see NodeAnalyzer::run
     QByteArray key;
     if (cache.isEnabled()) {
         // Every file but C++ sources and headers, which stage 2 never reads (their facts reach

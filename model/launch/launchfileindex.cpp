@@ -4,6 +4,7 @@
 #include "launchanalyzer.h"
 #include "launchfilecodec.h"
 #include "sourcereader.h"
+#include "stagememo.h"
 
 #include <QMutex>
 #include <QtConcurrent/QtConcurrentMap>
@@ -55,9 +56,12 @@ LaunchFileIndex::LaunchFileIndex(const Workspace &ws, const StageControl &contro
             return r;
         const QByteArray key = AnalysisCache::key(
             {"launch", f->path.toUtf8(), QByteArray::number(int(f->language)), content});
-        if (const std::optional<QByteArray> cached = cache.load(QStringLiteral("launch"), key);
-            cached && LaunchFileCodec::decode(*cached, &r.description))
+        using Description = std::optional<LaunchFileDescription>;
+        if (std::optional<Description> cached = stagememo::loadWith<Description>(
+                cache, QStringLiteral("launch"), key, &LaunchFileCodec::decode)) {
+            r.description = std::move(*cached);
             return r;
+        }
         r.description = LaunchAnalyzer::read(*f, content);
         cache.store(QStringLiteral("launch"), key, LaunchFileCodec::encode(r.description));
         return r;

@@ -252,6 +252,11 @@ QByteArray memoKey(const Workspace &workspace, const StageControl &control, Anal
 AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    // What this process decoded in the last run of stage 1 stays for this one (the long-lived
+    // worker's next run); what that run did not use is dropped.
+    cache.startRun({QStringLiteral("stage1"), QStringLiteral("cppmacros"),
+                    QStringLiteral("cppmanifest"), QStringLiteral("cpp"),
+                    QStringLiteral("python")});
     const QByteArray key = cache.isEnabled() ? memoKey(workspace, control, cache) : QByteArray();
     std::optional<AtomicNodeList> list;
     if (!key.isEmpty())

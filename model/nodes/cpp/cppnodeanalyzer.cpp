@@ -143,9 +143,12 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     for (qsizetype i = 0; same && i < manifest->written.size(); ++i)
                         same = digestOf(lookup(manifest->written.at(i), manifest->angled.at(i))) ==
                                manifest->exports.at(i);
-                    const std::optional<QByteArray> cached =
-                        same ? cache.load(QStringLiteral("cpp"), manifest->key) : std::nullopt;
-                    if (cached && CppFactsCodec::decode(*cached, &facts)) {
+                    std::optional<CppFileFacts> cached;
+                    if (same)
+                        cached = stagememo::loadWith<CppFileFacts>(
+                            cache, QStringLiteral("cpp"), manifest->key, &CppFactsCodec::decode);
+                    if (cached) {
+                        facts = std::move(*cached);
                         facts.diagnostics = manifest->diagnostics + facts.diagnostics;
                         QMutexLocker lock(&reportMutex);
                         control.report(++done, total, file->path);

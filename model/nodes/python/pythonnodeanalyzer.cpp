@@ -6,6 +6,7 @@
 #include "pythonmodulereader.h"
 #include "pythonnodelinker.h"
 #include "sourcereader.h"
+#include "stagememo.h"
 #include "syntaxtree.h"
 
 #include <QMutex>
@@ -79,16 +80,16 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
             modulePath(file->path, package ? package->path : QString(), pythonFiles);
         const QByteArray key = AnalysisCache::key(
             {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), content});
-        PythonFileResult analysed;
-        if (const std::optional<QByteArray> cached = cache.load(QStringLiteral("python"), key);
-            cached && PythonFactsCodec::decode(*cached, &analysed)) {
-            r.module = std::move(analysed.module);
-            r.diagnostics += analysed.diagnostics;
+        if (std::optional<PythonFileResult> cached = stagememo::loadWith<PythonFileResult>(
+                cache, QStringLiteral("python"), key, &PythonFactsCodec::decode)) {
+            r.module = std::move(cached->module);
+            r.diagnostics += cached->diagnostics;
             return r;
         }
-        analysed = analyzeContent(content, file->path, file->package, module);
+        const PythonFileResult analysed =
+            analyzeContent(content, file->path, file->package, module);
         cache.store(QStringLiteral("python"), key, PythonFactsCodec::encode(analysed));
-        r.module = std::move(analysed.module);
+        r.module = analysed.module;
         r.diagnostics += analysed.diagnostics;
         return r;
     };

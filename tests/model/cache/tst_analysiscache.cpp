@@ -132,6 +132,53 @@ private Q_SLOTS:
         QVERIFY(found);
     }
 
+    void aLongLivedProcessKeepsWhatItDecoded()
+    {
+        // The long-lived worker: one cache across runs. Once an entry is decoded, later runs
+        // take the value kept in memory; an edit still re-analyses exactly the edited file, and
+        // every result equals an uncached one.
+        {
+            AnalysisCache fill(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+            recoverWith(m_ws, &fill);
+        }
+        AnalysisCache cache(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+        const QString camera = m_ws + QStringLiteral("/src/vision/src/camera.cpp");
+        const QByteArray original = test::readFile(camera);
+        test::writeFile(camera, "// moved one line down\n" + original);
+        QVERIFY(recoverWith(m_ws, &cache) == recoverUncached(m_ws)); // decodes from the packs
+        const AnalysisCache::Statistics decoded = cache.statistics();
+
+        test::writeFile(camera, "// moved two lines down\n\n" + original);
+        const Recovery edited = recoverWith(m_ws, &cache);
+        QVERIFY(edited == recoverUncached(m_ws));
+        const AnalysisCache::Statistics kept = cache.statistics();
+        // Misses: the memos of stages 1 and 2 (camera's parameter defaults moved), camera.cpp's
+        // manifest and its facts; everything else came from memory, nothing from a pack.
+        QCOMPARE(kept.misses - decoded.misses, 4);
+        QCOMPARE(decoded.kept, 0);
+        QVERIFY(kept.kept > 0);
+        QCOMPARE(kept.kept - decoded.kept, kept.hits - decoded.hits);
+        // The kept facts are the ones a fresh process decodes.
+        AnalysisCache fresh(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+        QVERIFY(recoverWith(m_ws, &fresh) == edited);
+
+        // Back to the original text: every result matches again, from memory or packs.
+        test::writeFile(camera, original);
+        QVERIFY(recoverWith(m_ws, &cache) == recoverUncached(m_ws));
+        // Nothing is kept in a cache that is off.
+        AnalysisCache off{QString()};
+        off.keepRecent(QStringLiteral("cpp"), keyOf(1), std::make_shared<const int>(1));
+        QVERIFY(!off.recent(QStringLiteral("cpp"), keyOf(1)));
+        // A run drops what the run before it did not use.
+        cache.keepRecent(QStringLiteral("test"), keyOf(2), std::make_shared<const int>(2));
+        QVERIFY(cache.recent(QStringLiteral("test"), keyOf(2)));
+        cache.startRun({QStringLiteral("test")});
+        QVERIFY(cache.recent(QStringLiteral("test"), keyOf(2))); // used in the run before
+        cache.startRun({QStringLiteral("test")});
+        cache.startRun({QStringLiteral("test")});
+        QVERIFY(!cache.recent(QStringLiteral("test"), keyOf(2)));
+    }
+
     void aHeaderMacroChangeReanalysesTheFilesThatUseIt()
     {
         const QString ws = m_temp.filePath(QStringLiteral("rover"));
