@@ -415,7 +415,7 @@ void AnalysisCache::keepRecent(const QString &kind, const QByteArray &key,
     if (!m_enabled)
         return;
     QMutexLocker lock(&m_recentMutex);
-    m_recent[kind].current.insert(key, std::move(value));
+    m_recent[kind].current[key] = std::move(value);
 }
 
 void AnalysisCache::startRun(std::initializer_list<QString> kinds)
