@@ -26,6 +26,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSet>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -70,10 +71,10 @@ void spinFor(StallMonitor &app, int ms)
         app, [&] { return timer.elapsed() >= ms; }, ms + 1000);
 }
 
-/// The analysis worker processes this process started that still run.
-int runningWorkers()
+/// The process ids of the analysis workers this process started that still run.
+QSet<QByteArray> runningWorkers()
 {
-    int count = 0;
+    QSet<QByteArray> out;
     const QDir tasks(QStringLiteral("/proc/self/task"));
     for (const QString &task : tasks.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
         QFile children(tasks.filePath(task + QStringLiteral("/children")));
@@ -84,10 +85,10 @@ int runningWorkers()
                 continue;
             QFile comm(QStringLiteral("/proc/%1/comm").arg(QString::fromLatin1(pid.trimmed())));
             if (comm.open(QIODevice::ReadOnly) && comm.readAll().startsWith("rosarch-stages"))
-                ++count;
+                out.insert(pid.trimmed());
         }
     }
-    return count;
+    return out;
 }
 
 QAction *actionWithShortcut(MainWindow &w, const QKeySequence &key)
@@ -266,12 +267,14 @@ int main(int argc, char **argv)
                 continue;
             }
             const qint64 pressed = app.phaseElapsed();
+            // The window keeps a worker ahead of need: what has to go is the one that ran.
+            const QSet<QByteArray> working = runningWorkers();
             cancel->trigger();
             const bool said = spinUntil(
                 app, [&] { return canceled > canceledBefore; }, 60000);
             const qint64 saidAt = said ? canceledAt : -1;
             spinUntil(
-                app, [] { return runningWorkers() == 0; }, 60000);
+                app, [&] { return !runningWorkers().intersects(working); }, 60000);
             const qint64 stoppedAt = app.phaseElapsed();
             out() << QStringLiteral("%1: window said canceled after %2 ms, worker gone after %3 "
                                     "ms%4\n")
