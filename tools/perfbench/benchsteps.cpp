@@ -71,6 +71,19 @@ QProcessEnvironment childEnvironment(const QString &cacheDir)
     return env;
 }
 
+/// The figures a measuring child printed, once it finished; none, with r->error, if it failed.
+QStringList childFigures(QProcess &child, RunResult *r)
+{
+    if (!child.waitForFinished(30 * 60 * 1000) || child.exitStatus() != QProcess::NormalExit ||
+        child.exitCode() != 0) {
+        r->error = QString::fromLocal8Bit(child.readAllStandardError()).trimmed();
+        if (r->error.isEmpty())
+            r->error = QStringLiteral("the measuring child failed (%1)").arg(child.errorString());
+        return {};
+    }
+    return QString::fromLatin1(child.readAllStandardOutput()).simplified().split(QLatin1Char(' '));
+}
+
 } // namespace
 
 RunResult runChild(const QString &program, Path path, const QString &root, const QString &cacheDir)
@@ -82,15 +95,9 @@ RunResult runChild(const QString &program, Path path, const QString &root, const
                  path == Path::Worker ? QStringLiteral("worker") : QStringLiteral("inprocess"),
                  root});
     RunResult r;
-    if (!child.waitForFinished(30 * 60 * 1000) || child.exitStatus() != QProcess::NormalExit ||
-        child.exitCode() != 0) {
-        r.error = QString::fromLocal8Bit(child.readAllStandardError()).trimmed();
-        if (r.error.isEmpty())
-            r.error = QStringLiteral("the measuring child failed (%1)").arg(child.errorString());
+    const QStringList fields = childFigures(child, &r);
+    if (!r.error.isEmpty())
         return r;
-    }
-    const QStringList fields =
-        QString::fromLatin1(child.readAllStandardOutput()).simplified().split(QLatin1Char(' '));
     if (fields.size() != 2) {
         r.error = QStringLiteral("the measuring child printed no figures");
         return r;
@@ -131,15 +138,9 @@ RunResult runSessionChild(const QString &program, const QString &root, const QSt
     child.start(program, {QStringLiteral("--session-child"), root, QString::number(runs),
                           editedFile, QString::number(firstEdit)});
     RunResult r;
-    if (!child.waitForFinished(30 * 60 * 1000) || child.exitStatus() != QProcess::NormalExit ||
-        child.exitCode() != 0) {
-        r.error = QString::fromLocal8Bit(child.readAllStandardError()).trimmed();
-        if (r.error.isEmpty())
-            r.error = QStringLiteral("the measuring child failed (%1)").arg(child.errorString());
+    const QStringList fields = childFigures(child, &r);
+    if (!r.error.isEmpty())
         return r;
-    }
-    const QStringList fields =
-        QString::fromLatin1(child.readAllStandardOutput()).simplified().split(QLatin1Char(' '));
     if (fields.size() != runs + 1) {
         r.error = QStringLiteral("the measuring child printed no figures");
         return r;
