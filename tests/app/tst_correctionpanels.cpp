@@ -13,23 +13,8 @@ class TestCorrectionPanels : public CorrectionTestBase
 {
     Q_OBJECT
 private Q_SLOTS:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        qputenv("ROSARCH_AUTHOR", "tester");
-        QVERIFY(m_dir.isValid());
-        m_ws = m_dir.filePath(QStringLiteral("ws"));
-        QVERIFY(copyFixture(QStringLiteral(ROSARCH_TEST_DATA "/project_corrections/ws"), m_ws));
-        m_recovery = recover(m_ws);
-        QVERIFY(!m_recovery.nodes.nodes.isEmpty());
-        QVERIFY(!m_recovery.launch.nodes.isEmpty());
-    }
-
-    void init()
-    {
-        // every test starts without a project: the autosave of the last one is not read
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void initTestCase() { setUpFixture(); }
+    void init() { forgetProjects(); }
 
     void inspectorShowsTheSelection()
     {

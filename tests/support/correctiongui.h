@@ -175,6 +175,26 @@ protected:
     QString m_ws;
     Recovery m_recovery;
 
+    /// initTestCase() of a test: the project_corrections fixture copied and recovered once.
+    void setUpFixture()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        qputenv("ROSARCH_AUTHOR", "tester");
+        QVERIFY(m_dir.isValid());
+        m_ws = m_dir.filePath(QStringLiteral("ws"));
+        QVERIFY(copyFixture(QStringLiteral(ROSARCH_TEST_DATA "/project_corrections/ws"), m_ws));
+        m_recovery = recover(m_ws);
+        QVERIFY(!m_recovery.nodes.nodes.isEmpty());
+        QVERIFY(!m_recovery.launch.nodes.isEmpty());
+    }
+
+    /// init() of a test: every test starts without a project (the autosave of the last one is
+    /// not read).
+    static void forgetProjects()
+    {
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    }
+
     std::unique_ptr<Gui> open()
     {
         auto gui = std::make_unique<Gui>();
