@@ -26,7 +26,8 @@ QString place(const Evidence &e)
 DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
     : QAbstractItemModel(parent), m_document(document)
 {
-    // Diagnostics come with stage results: only a new model or a stage 2 run changes them.
+    // Diagnostics come with stage results (a new model, a stage 2 run); stage 3's are those of
+    // the corrected model, so corrections and accepted suggestions change them too.
     connect(document, &Document::aboutToChange, this, [this](const DocumentChange &change) {
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             beginResetModel();
@@ -34,6 +35,11 @@ DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
         const StallScope scope("DiagnosticModel (document changed)");
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch)) {
+            reload();
+            endResetModel();
+            Q_EMIT findingsChanged();
+        } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions)) {
+            beginResetModel();
             reload();
             endResetModel();
             Q_EMIT findingsChanged();
@@ -47,14 +53,15 @@ DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
 void DiagnosticModel::reload()
 {
     m_entries.clear();
+    m_architectureDiagnostics = m_document->accepted().architecture.diagnostics;
     // A file's package: the deepest package folder holding it.
     QHash<QString, QString> packages;
     for (const RosPackage &p : m_document->atomicNodes().packages)
         packages.insert(p.path, p.name);
     QHash<QString, QString> folderPackage;
-    for (const QList<Diagnostic> *list :
-         {&m_document->atomicNodes().diagnostics, &m_document->launchDependencies().diagnostics,
-          &m_document->architecture().diagnostics})
+    for (const QList<Diagnostic> *list : std::initializer_list<const QList<Diagnostic> *>{
+             &m_document->atomicNodes().diagnostics, &m_document->launchDependencies().diagnostics,
+             &m_architectureDiagnostics})
         for (const Diagnostic &d : *list) {
             QString folder = d.evidence.file.section(QLatin1Char('/'), 0, -2);
             QString package;

@@ -124,6 +124,9 @@ private:
     QStringList keysAt(const QModelIndexList &indexes) const;
 
     Document *m_document;
+    /// Stage 3's findings of the model as corrected (Document::accepted()): the checks of what a
+    /// person sees in the diagram and exports. A copy, which the entries point into.
+    QList<Diagnostic> m_architectureDiagnostics;
     QList<Entry> m_entries;
     QList<int> m_visible; ///< entries shown, in stage order
     QList<Group> m_groups;

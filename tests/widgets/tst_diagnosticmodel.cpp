@@ -326,6 +326,41 @@ private Q_SLOTS:
         QCOMPARE(reopened.findingMarks().size(), 1);
     }
 
+    void checksFollowTheCorrectedModel()
+    {
+        // The Log shows the checks of the model a person corrected, as the diagram and the
+        // exports do: removing the node that publishes /odom_debug takes "no one hears it" away.
+        Document doc;
+        doc.setAutosaveInterval(60000);
+        DiagnosticModel model(&doc);
+        QAbstractItemModelTester tester(&model,
+                                        QAbstractItemModelTester::FailureReportingMode::QtTest);
+        doc.setRecovery(m_recovered);
+        const auto unheard = [&model] {
+            return messages(model).filter(QStringLiteral("/odom_debug")).size();
+        };
+        QCOMPARE(unheard(), 1);
+        const QStringList before = messages(model);
+        // Odometry runs in two systems, both of which report the finding (two contexts).
+        QList<Correction> removals;
+        for (const NodeInstance &n : doc.launchDependencies().nodes) {
+            if (n.nodeName != QLatin1String("odometry"))
+                continue;
+            Correction remove;
+            remove.kind = Correction::Kind::Remove;
+            remove.target = doc.keyOf(n.id);
+            removals.append(remove);
+        }
+        QCOMPARE(removals.size(), 2);
+        QSignalSpy changed(&model, &DiagnosticModel::findingsChanged);
+        QCOMPARE(doc.addCorrections(removals, QStringLiteral("Remove odometry")).size(), 2);
+        QVERIFY(changed.count() >= 1);
+        QCOMPARE(unheard(), 0);
+        QVERIFY(messages(model) != before);
+        doc.undoStack()->undo();
+        QCOMPARE(messages(model), before);
+    }
+
     void oldProjectsStillLoadAndMarksSurviveTheirOwnVersion()
     {
         Project p;
