@@ -195,8 +195,23 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
     list.packages = workspace.packages;
     list.diagnostics = workspace.diagnostics;
 
-    LanguageAnalysis analyses[] = {PythonNodeAnalyzer(workspace).analyze(control),
-                                   CppNodeAnalyzer(workspace).analyze(control)};
+    // One progression for the stage: the Python files, then the C++ files after them.
+    int pythonFiles = 0;
+    int cppFiles = 0;
+    for (const SourceFile &f : workspace.files) {
+        pythonFiles += f.language == SourceFile::Language::Python;
+        cppFiles += f.language == SourceFile::Language::Cpp;
+    }
+    const auto part = [&control, all = pythonFiles + cppFiles](int before) {
+        StageControl c = control;
+        if (control.progressed)
+            c.progressed = [&control, all, before](int done, int, const QString &what) {
+                control.report(before + done, all, what);
+            };
+        return c;
+    };
+    LanguageAnalysis analyses[] = {PythonNodeAnalyzer(workspace).analyze(part(0)),
+                                   CppNodeAnalyzer(workspace).analyze(part(pythonFiles))};
     QList<EntryPoint> entryPoints;
     QList<ComponentRegistration> registrations;
     for (LanguageAnalysis &a : analyses) {

@@ -3,9 +3,11 @@
 #include "analysistext.h"
 #include "cppanalysis.h"
 #include "cppnodeanalyzer.h"
+#include "nodeanalyzer.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
 
+#include <QMutex>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -378,6 +380,34 @@ private Q_SLOTS:
         const LanguageAnalysis canceled = CppNodeAnalyzer(ws).analyze(cancel);
         QVERIFY(canceled.nodes.isEmpty());
         QVERIFY(canceled.entryPoints.isEmpty());
+    }
+
+    void stageOneReportsOneProgression()
+    {
+        // The status bar's bar fills once for stage 1: the Python files, then the C++ files.
+        const Workspace ws = WorkspaceScanner::scan(test::dataDir(QStringLiteral("gui_ws")));
+        int files = 0;
+        for (const SourceFile &f : ws.files)
+            files += f.language == SourceFile::Language::Python ||
+                     f.language == SourceFile::Language::Cpp;
+        QVERIFY(files >= 2);
+        QMutex mutex;
+        QList<std::pair<int, int>> reports;
+        StageControl control;
+        control.progressed = [&](int done, int total, const QString &) {
+            const QMutexLocker lock(&mutex);
+            reports.append({done, total});
+        };
+        const AtomicNodeList list = NodeAnalyzer::run(ws, control);
+        QVERIFY(!list.nodes.isEmpty());
+        QVERIFY(!reports.isEmpty());
+        int last = 0;
+        for (const auto &[done, total] : std::as_const(reports)) {
+            QCOMPARE(total, files);
+            QVERIFY2(done >= last, qPrintable(QStringLiteral("%1 after %2").arg(done).arg(last)));
+            last = done;
+        }
+        QCOMPARE(last, files);
     }
 };
 
