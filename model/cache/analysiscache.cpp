@@ -104,7 +104,7 @@ AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWi
 
 AnalysisCache::~AnalysisCache()
 {
-    flush();
+    flushDeferred();
 }
 
 AnalysisCache &AnalysisCache::shared()
@@ -343,6 +343,12 @@ void AnalysisCache::compact()
 }
 
 void AnalysisCache::flush()
+{
+    if (!m_deferFlush)
+        flushDeferred();
+}
+
+void AnalysisCache::flushDeferred()
 {
     if (!m_enabled)
         return;

@@ -37,7 +37,7 @@ class AnalysisCache
 {
 public:
     /// Bump when the serialised form of any cached result changes.
-    static constexpr int kFormatVersion = 2;
+    static constexpr int kFormatVersion = 3;
     static constexpr qint64 kDefaultMaxBytes = 256LL * 1024 * 1024;
     /// More packs than this in the folder are merged into one at flush().
     static constexpr int kMaxPacks = 8;
@@ -84,8 +84,15 @@ public:
     FileDigests &digests() { return *m_digests; }
 
     /// Writes the entries stored since the last flush as one pack and the digest memo, then
-    /// trims; a failure turns the cache off (see takeProblem()).
+    /// trims; a failure turns the cache off (see takeProblem()). Waits for flushDeferred() when
+    /// deferred (setDeferFlush()).
     void flush();
+    /// In a long-lived worker: flush() leaves what was stored in memory (loads find it there)
+    /// until flushDeferred(), called once the worker has replied, so that a run does not wait for
+    /// its pack to be written; a problem writing it is said by the next run.
+    void setDeferFlush(bool defer) { m_deferFlush = defer; }
+    /// Flushes, deferred or not.
+    void flushDeferred();
 
     /// Values decoded from entries in this process, so that a long-lived worker does not decode
     /// the same entries run after run (stagememo::load gives them their types; one kind, one
@@ -128,6 +135,7 @@ private:
     std::atomic<bool> m_enabled{false};
     std::atomic<int> m_hits{0}, m_misses{0}, m_rejected{0}, m_stores{0}, m_kept{0};
     std::atomic<bool> m_storedSinceTrim{false};
+    std::atomic<bool> m_deferFlush{false};
     std::unique_ptr<FileDigests> m_digests;
 
     mutable QMutex m_mutex; ///< guards everything below

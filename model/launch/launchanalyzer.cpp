@@ -1,5 +1,6 @@
 #include "launchanalyzer.h"
 #include "analysiscache.h"
+#include "evidenceshift.h"
 #include "launchexecutor.h"
 #include "launchfileindex.h"
 #include "pythonlaunchreader.h"
@@ -166,27 +167,26 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
 /// Exactly what the launch executor uses of stage 1's result (LaunchExecutor::resolveClasses,
 /// resolveElsewhere, executeNode, effectiveParameters): each class's id, name, package,
 /// executables, plugins, lifecycle, compile type, node name, and the ports whose parameters
-/// give defaults, with their evidence. No other source location: an edit that moves lines of
-/// a node's file and changes none of this leaves stage 2's result as it was.
-QByteArray nodesPart(const AtomicNodeList &nodes)
+/// give defaults, with the files of their evidence; the evidence itself goes to `locations`, in
+/// order. No other source location: an edit that moves lines of a node's file and changes none
+/// of this leaves stage 2's result as it was but for these locations (EvidenceShift).
+QByteArray nodesPart(const AtomicNodeList &nodes, QList<Evidence> *locations)
 {
     QByteArray bytes;
     QDataStream s(&bytes, QIODevice::WriteOnly);
     s.setVersion(QDataStream::Qt_6_4);
-    cachecodec::Writer w{s};
     s << quint32(nodes.nodes.size());
     for (const AtomicNode &n : nodes.nodes) {
         s << n.id << n.className << n.packageName << n.executables << n.plugins << n.lifecycle
           << qint32(n.compileType) << n.nodeName;
         for (const Port &p : n.ports) {
-            Evidence at = p.evidence;
             if (p.nameOrigin == NameOrigin::Parameter && !p.parameter.isEmpty()) {
-                s << quint8(1) << p.parameter << p.name;
-                cachecodec::io(w, at);
+                s << quint8(1) << p.parameter << p.name << p.evidence.file;
+                locations->append(p.evidence);
             }
             if (!p.guardParameter.isEmpty()) {
-                s << quint8(2) << p.guardParameter << p.guardDefault;
-                cachecodec::io(w, at);
+                s << quint8(2) << p.guardParameter << p.guardDefault << p.evidence.file;
+                locations->append(p.evidence);
             }
         }
         s << quint8(0);
@@ -225,6 +225,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")}); // see NodeAnalyzer::run
     QByteArray key;
+    QList<Evidence> locations; // of `nodes` that the result may hold
     if (cache.isEnabled()) {
         // Every file but C++ sources and headers, which stage 2 never reads (their facts reach
         // it through `nodes`).
@@ -237,21 +238,32 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         s << options.rootFile << options.arguments;
         key = AnalysisCache::key({"stage2", stagememo::workspacePart(workspace, control, false),
                                   cache.digests().digestAll(workspace.root, paths), optionsPart,
-                                  nodesPart(nodes)});
+                                  nodesPart(nodes, &locations)});
     }
-    using Memo = std::pair<ExtraFiles, LaunchDependencies>;
+    // The result with the locations of `nodes` it was computed from: when only they moved since,
+    // the result is the memo's with them moved too.
+    using Memo = std::pair<QList<Evidence>, std::pair<ExtraFiles, LaunchDependencies>>;
     if (!key.isEmpty())
         if (std::optional<Memo> memo = stagememo::load<Memo>(cache, QStringLiteral("stage2"), key);
-            memo && memo->first == extraFiles(workspace, memo->second, cache.digests())) {
-            cache.flush();
-            if (const std::optional<Diagnostic> problem = cache.takeProblem())
-                memo->second.diagnostics.prepend(*problem);
-            return std::move(memo->second);
+            memo &&
+            memo->second.first == extraFiles(workspace, memo->second.second, cache.digests())) {
+            EvidenceShift shift;
+            LaunchDependencies &reused = memo->second.second;
+            if (shift.compare(memo->first, locations)) {
+                shift.compareUnmoved(memo->first, locations);
+                if (shift.settle() && shift.apply(reused)) {
+                    cache.flush();
+                    if (const std::optional<Diagnostic> problem = cache.takeProblem())
+                        reused.diagnostics.prepend(*problem);
+                    return std::move(reused);
+                }
+            }
         }
     LaunchDependencies out = analyse(workspace, nodes, options, control);
     if (!key.isEmpty() && !out.canceled && cache.isEnabled())
         cache.store(QStringLiteral("stage2"), key,
-                    cachecodec::encode(Memo{extraFiles(workspace, out, cache.digests()), out}));
+                    cachecodec::encode(
+                        Memo{locations, {extraFiles(workspace, out, cache.digests()), out}}));
     cache.flush();
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.prepend(*problem);

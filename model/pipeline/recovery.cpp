@@ -1,5 +1,6 @@
 #include "recovery.h"
 #include "composearchitecture.h"
+#include "evidenceshift.h"
 #include "nodeanalyzer.h"
 #include "workspacescanner.h"
 
@@ -36,8 +37,23 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
                             const StageControl &control, const Recovery *previous)
 {
     if (previous && !previous->architecture.canceled && !previous->launch.canceled &&
-        !previous->nodes.canceled && previous->launch == launch && previous->nodes == nodes)
-        return previous->architecture;
+        !previous->nodes.canceled) {
+        // Equal inputs but for locations that moved: the earlier result, with them moved too.
+        // Stage 3 reads all of stage 1's result but its diagnostics (Composer,
+        // ArchitectureChecks), whose messages may name lines.
+        const AtomicNodeList &before = previous->nodes;
+        EvidenceShift shift;
+        if (before.workspaceRoot == nodes.workspaceRoot &&
+            shift.compare(before.packages, nodes.packages) &&
+            shift.compare(before.nodes, nodes.nodes) && shift.compare(previous->launch, launch)) {
+            shift.compareUnmoved(before.packages, nodes.packages);
+            shift.compareUnmoved(before.nodes, nodes.nodes);
+            shift.compareUnmoved(previous->launch, launch);
+            Architecture reused = previous->architecture;
+            if (shift.settle() && shift.apply(reused))
+                return reused;
+        }
+    }
     return composeArchitecture(nodes, launch, control);
 }
 

@@ -40,12 +40,13 @@ struct RecoveryCounts
 
 /// Runs stages 1, 2 and 3 on `root` (one scan, shared). With `previous` (an earlier complete
 /// recovery), stage 3 is not run again when its inputs, stages 1 and 2, equal the ones
-/// `previous` was composed from: its architecture is the result.
+/// `previous` was composed from but for source locations: see composeOrReuse().
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
                           const StageControl &control = {}, const Recovery *previous = nullptr);
 
 /// Stage 3 on `nodes` and `launch`, or `previous`'s architecture when it was composed from equal
-/// ones (stage 3 is a function of them alone).
+/// ones (stage 3 is a function of them alone), or from ones that differ only in where some
+/// locations moved in a way stage 3 cannot tell (EvidenceShift): then with them moved too.
 Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencies &launch,
                             const StageControl &control, const Recovery *previous);
 

@@ -1,5 +1,6 @@
 #include "benchsteps.h"
 
+#include "analysiscache.h"
 #include "recovery.h"
 #include "sourcereader.h"
 #include "stageprocess.h"
@@ -174,11 +175,32 @@ int sessionChildMain(const QStringList &args)
             }
             QElapsedTimer timer;
             timer.start();
-            const StageProcess::Result r = session.recover(root, {}, {});
+            StageControl control;
+            if (qEnvironmentVariableIsSet("ROSARCH_PERFBENCH_STAGES")) // where a run's time goes
+                control.stageTimed = [&timer](int stage, qint64 ms) {
+                    QTextStream(stderr) << "stage " << stage << ' ' << ms << " ms (at "
+                                        << timer.elapsed() << " ms)\n";
+                };
+            const StageProcess::Result r = session.recover(root, {}, control);
             times << timer.elapsed();
             if (!r.error.isEmpty()) {
                 QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << r.error << '\n';
                 return 1;
+            }
+            if (i == runs - 1 && qEnvironmentVariableIsSet("ROSARCH_PERFBENCH_CHECK")) {
+                // The session's last result against a fresh run without the cache.
+                AnalysisCache off{QString()};
+                StageControl fresh;
+                fresh.cache = &off;
+                const Recovery expected = recoverWorkspace(root, {}, fresh);
+                QTextStream(stderr)
+                    << "check: stage 1 "
+                    << (expected.nodes == r.recovery.nodes ? "same" : "DIFFERENT") << ", stage 2 "
+                    << (expected.launch == r.recovery.launch ? "same" : "DIFFERENT") << ", stage 3 "
+                    << (expected.architecture == r.recovery.architecture ? "same" : "DIFFERENT")
+                    << '\n';
+                if (!(expected == r.recovery))
+                    return 1;
             }
         }
     } // the worker is reaped here, so that its peak memory is counted

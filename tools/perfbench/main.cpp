@@ -10,6 +10,9 @@
 // that did the analysis. Every recovery runs in a child process of its own, except the
 // gui-session rows: one child keeps one StageSession (a long-lived worker) across its runs, as
 // the GUI does, so warm and edit runs are measured on a worker that is already running.
+// For looking closer at that child (`--session-child <root> <runs> <file> <first edit>`), two
+// switches: ROSARCH_PERFBENCH_STAGES=1 prints each stage's time of each run, and
+// ROSARCH_PERFBENCH_CHECK=1 compares the last run's result with a fresh one without the cache.
 #include "benchreport.h"
 #include "benchsteps.h"
 

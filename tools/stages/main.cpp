@@ -9,6 +9,7 @@
 // For the supervisor's tests only: ROSARCH_STAGES_TEST_CRASH_IN, _HANG_IN and _EXHAUST_IN name
 // a substring; the worker crashes, hangs or allocates without bound when it begins a file whose
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
+#include "analysiscache.h"
 #include "composearchitecture.h"
 #include "recoverystream.h"
 
@@ -222,6 +223,7 @@ int main(int argc, char **argv)
     bool limited = false;
     // Requests one after the other, until the supervisor closes stdin. Each reply is relative
     // to the previous one (stagestream::writeResult).
+    AnalysisCache::shared().setDeferFlush(true);
     Recovery previous;
     std::optional<Recovery> composed; // stage 3 and what it was composed from, for the next run
     for (;;) {
@@ -249,6 +251,8 @@ int main(int argc, char **argv)
             stagestream::writeResult(out, result, previous);
         }
         frame(stagestream::Result, RawPayload{payload});
+        // The cache's pack is written once the supervisor has its reply.
+        AnalysisCache::shared().flushDeferred();
         previous = std::move(result);
     }
 }
