@@ -255,6 +255,7 @@ QString DiagramPanel::message() const
 
 void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit)
 {
+    const StallScope scope("DiagramPanel::applyLayout (scene items)");
     const Composite *c = composite();
     if (!c)
         return;
