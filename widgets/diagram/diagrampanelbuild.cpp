@@ -148,13 +148,16 @@ void DiagramPanel::onBuilt(const Built &built)
     }
     if (graph.nodes.size() > kMaxLayoutNodes) {
         m_scene->clearDiagram();
-        showMessage(
-            tr("%1 has %2 boxes to draw even as an overview; Graphviz takes minutes for more "
-               "than %3.\n\nOpen one of the launch files it includes (in the launch tree or "
-               "by its box's menu in a smaller diagram), or hide elements with the filters.")
-                .arg(c->stem)
-                .arg(graph.nodes.size())
-                .arg(kMaxLayoutNodes));
+        const QString what =
+            isCollapsed()
+                ? tr("%1 has %2 boxes to draw even as an overview; Graphviz would take minutes "
+                     "to lay out more than %3.")
+                : tr("%1 has %2 boxes to draw; Graphviz would take minutes to lay out more "
+                     "than %3. The overview draws fewer.");
+        showMessage(what.arg(c->stem).arg(graph.nodes.size()).arg(kMaxLayoutNodes) +
+                    QStringLiteral("\n\n") +
+                    tr("Open one of the launch files it includes from the launch tree, or hide "
+                       "elements with the filters."));
         Q_EMIT layoutFinished(false);
         return;
     }

@@ -149,6 +149,16 @@ private Q_SLOTS:
             message.contains(QStringLiteral("more than %1").arg(DiagramPanel::kMaxLayoutNodes)),
             qPrintable(message));
         QVERIFY(panel.isCollapsed()); // the overview was tried first
+
+        // Expanded, it says so without "even as an overview", and points to the overview.
+        QVERIFY(laidOut(panel, [&] { panel.expandAll(); }));
+        QVERIFY(!panel.isCollapsed());
+        QVERIFY2(panel.message().startsWith(
+                     QStringLiteral("wide has %1 boxes to draw; Graphviz would take minutes")
+                         .arg(count)),
+                 qPrintable(panel.message()));
+        QVERIFY(panel.message().contains(QStringLiteral("The overview draws fewer.")));
+        QVERIFY(!layouter.isRunning());
     }
 };
 
