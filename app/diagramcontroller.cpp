@@ -183,6 +183,7 @@ void DiagramController::onLaunchItemSelected(const QString &instanceId)
 {
     if (m_fromDiagram || instanceId.isEmpty())
         return;
+    const StallScope scope("DiagramController launch item selected");
     const LaunchDependencies &launch = m_document->launchDependencies();
     QString composite = instanceId;
     if (const NodeInstance *n = launch.node(instanceId))

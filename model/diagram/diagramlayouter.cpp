@@ -6,7 +6,12 @@ DiagramLayouter::DiagramLayouter(QObject *parent) : QObject(parent) {}
 
 std::optional<LayoutGeometry> DiagramLayouter::cached(const LayoutGraph &graph) const
 {
-    const auto it = m_cache.constFind(GraphLayout::toDot(graph));
+    return cached(GraphLayout::toDot(graph));
+}
+
+std::optional<LayoutGeometry> DiagramLayouter::cached(const QString &dot) const
+{
+    const auto it = m_cache.constFind(dot);
     if (it == m_cache.cend())
         return std::nullopt;
     return *it;
@@ -15,9 +20,14 @@ std::optional<LayoutGeometry> DiagramLayouter::cached(const LayoutGraph &graph) 
 void DiagramLayouter::layout(const LayoutGraph &graph,
                              std::function<void(const LayoutResult &)> done)
 {
+    layout(graph, GraphLayout::toDot(graph), std::move(done));
+}
+
+void DiagramLayouter::layout(const LayoutGraph &graph, const QString &dot,
+                             std::function<void(const LayoutResult &)> done)
+{
     LayoutOptions options;
     options.timeoutMs = m_timeoutMs;
-    const QString dot = GraphLayout::toDot(graph);
     m_jobs.start<LayoutResult>(
         [graph, options](const JobControl &control) mutable {
             options.canceled = [&control] { return control.isCanceled(); };

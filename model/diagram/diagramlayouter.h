@@ -27,9 +27,15 @@ public:
 
     /// The layout of `graph` computed before, if it is still cached.
     std::optional<LayoutGeometry> cached(const LayoutGraph &graph) const;
+    /// The same, for a graph whose DOT text (GraphLayout::toDot) is `dot`: a big graph's DOT
+    /// is made off the UI thread.
+    std::optional<LayoutGeometry> cached(const QString &dot) const;
     /// Lays `graph` out, superseding a layout in progress; `done` is called on this object's
     /// thread with the result, unless the request was superseded or canceled.
     void layout(const LayoutGraph &graph, std::function<void(const LayoutResult &)> done);
+    /// The same, with the graph's DOT text made already.
+    void layout(const LayoutGraph &graph, const QString &dot,
+                std::function<void(const LayoutResult &)> done);
     /// Drops the layout in progress: its `done` is not called.
     void cancel();
     bool isRunning() const { return m_jobs.isRunning(); }

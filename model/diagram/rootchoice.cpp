@@ -99,6 +99,16 @@ QList<LaunchRoot> RootChoice::roots(const Architecture &architecture,
     for (const Composite &c : architecture.composites)
         if (!c.parentId.isEmpty())
             children[c.parentId] << &c;
+    // What the analysis left unresolved, by instance id: LaunchDependencies' own look-ups scan
+    // their lists, which made this quadratic (50 ms on the UI thread for 3,000 launch files).
+    QHash<QString, int> unresolved;
+    for (const LaunchFileInstance &lf : launch.instances)
+        if (!unresolved.contains(lf.id)) // the first, as instance()
+            unresolved.insert(lf.id, int(lf.unresolved.size()));
+    QHash<QString, int> nodeUnresolved;
+    for (const NodeInstance &n : launch.nodes)
+        if (!nodeUnresolved.contains(n.id)) // the first, as node()
+            nodeUnresolved.insert(n.id, int(n.unresolved.size()));
 
     QList<LaunchRoot> roots;
     for (const Composite &c : architecture.composites) {
@@ -114,14 +124,12 @@ QList<LaunchRoot> RootChoice::roots(const Architecture &architecture,
             seen.insert(at->instanceId);
             if (at != &c)
                 ++root.includes;
-            if (const LaunchFileInstance *lf = launch.instance(at->instanceId))
-                root.unresolved += int(lf->unresolved.size());
+            root.unresolved += unresolved.value(at->instanceId);
             for (const RosNodePart &part : at->parts) {
                 if (part.kind != RosNodePart::Kind::Node)
                     continue;
                 ++root.nodes;
-                if (const NodeInstance *node = launch.node(part.instanceId))
-                    root.unresolved += int(node->unresolved.size());
+                root.unresolved += nodeUnresolved.value(part.instanceId);
             }
             todo << children.value(at->instanceId);
         }

@@ -3,6 +3,8 @@
 // long each stage took, and the UI thread never stops answering for long (a generous limit
 // here; rosarch-stallbench measures it strictly on real workspaces).
 #include "atomicnodemodel.h"
+#include "diagrampanel.h"
+#include "diagramscene.h"
 #include "document.h"
 #include "launchtreemodel.h"
 #include "logview.h"
@@ -113,6 +115,19 @@ private Q_SLOTS:
                  qPrintable(QString::number(launch.nodes.size())));
         QVERIFY(w.launchModel()->rowCount() > 0);
 
+        // The diagram of the root including every group's launch file: built off the UI thread
+        // (it has more elements than the panel builds inline), laid out and drawn.
+        DiagramPanel *panel = w.diagramPanel();
+        const Composite *all = panel->architecture().composite(panel->currentComposite());
+        QVERIFY(all);
+        QCOMPARE(all->stem, QStringLiteral("all"));
+        QVERIFY(all->parts.size() + all->channels.size() + all->boundary.size() +
+                    all->connections.size() >
+                DiagramPanel::kInlineBuildElements);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isLayingOut(), 60000);
+        QVERIFY2(panel->message().isEmpty(), qPrintable(panel->message()));
+        QVERIFY(!panel->scene()->isEmpty());
+
         // Per-stage progress with file counts, and the time each stage took, in the log.
         QSet<int> stages;
         for (const QList<QVariant> &p : std::as_const(progressed))
@@ -147,6 +162,11 @@ private Q_SLOTS:
         QVERIFY2(
             watch.longest() < kStallLimitMs,
             qPrintable(QStringLiteral("the UI thread stalled for %1 ms").arg(watch.longest())));
+
+        // The window goes (at the end of this scope) while the diagram of the big root is built
+        // again (Expand All): the build's worker is waited for and its result goes nowhere.
+        panel->expandAll();
+        QVERIFY(panel->isBuilding());
     }
 };
 

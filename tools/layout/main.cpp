@@ -10,8 +10,15 @@
 //
 // Exit codes: 0 laid out, 2 unreadable DOT, 3 layout failed, 4 no layout engine.
 // Graphviz may abort() or loop on some inputs; the caller runs this with a timeout.
+//
+// Graphviz 2.4x's network simplex (rank and x positions) recurses once per node of its
+// auxiliary graph: a composite of a few hundred parts in one rank went ~175,000 frames deep and
+// overflowed the default 8 MB stack (SIGSEGV). The layout runs on a thread with a big stack;
+// the pages are only committed as the recursion touches them.
 #include <graphviz/graphviz_version.h>
 #include <graphviz/gvc.h>
+
+#include <pthread.h>
 
 #include <clocale>
 #include <cstdio>
@@ -180,15 +187,9 @@ std::string toJson(Agraph_t *g)
     return out;
 }
 
-} // namespace
-
-int main(int argc, char **argv)
+/// Reads DOT from stdin, lays it out and writes the JSON; the process's exit code.
+int run()
 {
-    std::setlocale(LC_NUMERIC, "C"); // "%.2f" must write a decimal point
-    if (argc > 1 && std::strcmp(argv[1], "--version") == 0) {
-        std::printf("rosarch-layout (Graphviz %s)\n", PACKAGE_VERSION);
-        return 0;
-    }
     GVC_t *gvc = gvContextPlugins(builtins, 0);
     Agraph_t *g = agread(stdin, nullptr);
     if (!g) {
@@ -208,4 +209,32 @@ int main(int argc, char **argv)
     gvFreeLayout(gvc, g);
     agclose(g);
     return gvFreeContext(gvc) == 0 ? 0 : 3;
+}
+
+void *runThread(void *exitCode)
+{
+    *static_cast<int *>(exitCode) = run();
+    return nullptr;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    std::setlocale(LC_NUMERIC, "C"); // "%.2f" must write a decimal point
+    if (argc > 1 && std::strcmp(argv[1], "--version") == 0) {
+        std::printf("rosarch-layout (Graphviz %s)\n", PACKAGE_VERSION);
+        return 0;
+    }
+    constexpr size_t kStackBytes = size_t(1) << 30; // 1 GB of address space, see above
+    int exitCode = 3;
+    pthread_attr_t attributes;
+    pthread_t thread;
+    if (pthread_attr_init(&attributes) != 0 ||
+        pthread_attr_setstacksize(&attributes, kStackBytes) != 0 ||
+        pthread_create(&thread, &attributes, &runThread, &exitCode) != 0)
+        return run(); // no big stack to be had: the default one does for most diagrams
+    pthread_attr_destroy(&attributes);
+    pthread_join(thread, nullptr);
+    return exitCode;
 }

@@ -2,7 +2,6 @@
 #include "diagrambreadcrumbbar.h"
 #include "diagramlayouter.h"
 #include "diagramminimap.h"
-#include "diagramoverview.h"
 #include "diagramrootpicker.h"
 #include "diagramrootprompt.h"
 #include "diagramscene.h"
@@ -13,7 +12,6 @@
 #include <QAction>
 #include <QEvent>
 #include <QFileDialog>
-#include <QFontMetricsF>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QMenu>
@@ -255,73 +253,9 @@ QString DiagramPanel::message() const
     return m_view->message();
 }
 
-DiagramMetrics DiagramPanel::metrics() const
-{
-    const DiagramStyle &s = m_scene->diagramStyle();
-    DiagramMetrics m;
-    const auto width = [](const QFont &font) {
-        return
-            [fm = QFontMetricsF(font)](const QString &text) { return fm.horizontalAdvance(text); };
-    };
-    m.titleWidth = width(s.titleFont);
-    m.textWidth = width(s.textFont);
-    m.smallWidth = width(s.smallFont);
-    m.titleHeight = QFontMetricsF(s.titleFont).height();
-    m.textHeight = QFontMetricsF(s.textFont).height();
-    m.smallHeight = QFontMetricsF(s.smallFont).height();
-    return m;
-}
-
-void DiagramPanel::relayout()
-{
-    if (m_pending && m_layouter)
-        m_layouter->cancel(); // the previous layout is no longer wanted
-    m_pending = false;
-    m_view->setBusyText({});
-    const Composite *c = composite();
-    if (!c) {
-        m_scene->clearDiagram();
-        showMessage(m_architecture.composites.isEmpty()
-                        ? tr("No composed diagram yet. Run stage 3 to compose the launch files.")
-                        : tr("This launch file is not part of the architecture."));
-        return;
-    }
-    LayoutGraph graph = DiagramBuilder::build(*c, currentOptions(), metrics());
-    // Boxes alone that cover more than the view at the legible zoom cannot fit: go straight
-    // to the overview rather than lay out a drawing nobody can read.
-    const double z = m_view->legibleZoom();
-    const QSize viewport = m_view->viewport()->size();
-    if (DiagramOverview::boxArea(graph) * z * z > double(viewport.width()) * viewport.height() &&
-        overviewInstead(QSizeF(1e9, 1e9)))
-        graph = DiagramBuilder::build(*c, currentOptions(), metrics());
-    if (graph.nodes.isEmpty()) {
-        m_scene->clearDiagram();
-        showMessage(c->parts.isEmpty()
-                        ? tr("%1 starts no nodes and includes no launch files.").arg(c->stem)
-                        : tr("Every element of %1 is hidden by the filters.").arg(c->stem));
-        Q_EMIT layoutFinished(true);
-        return;
-    }
-    if (!m_layouter)
-        return; // the window is closing
-    if (const std::optional<LayoutGeometry> cached = m_layouter->cached(graph)) {
-        LayoutResult result;
-        result.ok = true;
-        result.geometry = *cached;
-        applyLayout(graph, result, m_fitPending);
-        return;
-    }
-    m_pending = true;
-    m_view->setBusyText(tr("Laying out…"));
-    m_layouter->layout(graph, [this, graph](const LayoutResult &result) {
-        m_pending = false;
-        m_view->setBusyText({});
-        applyLayout(graph, result, m_fitPending);
-    });
-}
-
 void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit)
 {
+    const StallScope scope("DiagramPanel::applyLayout (scene items)");
     const Composite *c = composite();
     if (!c)
         return;

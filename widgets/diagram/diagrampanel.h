@@ -4,12 +4,15 @@
 #include "diagrambuilder.h"
 #include "diagramitem.h"
 #include "graphlayout.h"
+#include "jobrunner.h"
 #include "rootchoice.h"
 
 #include <QHash>
 #include <QPointer>
 #include <QSet>
 #include <QWidget>
+
+#include <optional>
 
 class QAction;
 class QLineEdit;
@@ -83,8 +86,16 @@ public:
     bool exportSvg(const QString &path);
     bool exportPng(const QString &path);
 
-    /// True while the layout of what the panel should show is still running.
-    bool isLayingOut() const { return m_pending; }
+    /// True while the diagram of what the panel should show is still being built or laid out.
+    bool isLayingOut() const { return m_pending || m_building; }
+    /// True while the layout graph of a big composite is built off the UI thread.
+    bool isBuilding() const { return m_building; }
+    /// Composites with more elements (parts, channels, boundary ports, connections) than this
+    /// are built off the UI thread; smaller ones take well under a millisecond inline.
+    static constexpr int kInlineBuildElements = 300;
+    /// Graphs with more boxes are not laid out: Graphviz 2.4x took 40 s for 600 boxes (one
+    /// root including 3,000 launch files, as its overview); the panel says so instead.
+    static constexpr int kMaxLayoutNodes = 400;
     /// The text shown instead of a drawing (errors, empty states); "" while a diagram shows.
     QString message() const;
     qint64 lastLayoutMs() const { return m_lastLayoutMs; }
@@ -139,9 +150,33 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    /// A composite's layout graph and its DOT text, and what the overview check decided.
+    struct Built
+    {
+        LayoutGraph graph;
+        QString dot;
+        bool sizeChecked = false;               ///< the composite was checked for the overview
+        std::optional<DiagramOptions> overview; ///< switched to these overview options
+    };
+    /// The fonts of the drawing as text: a worker builds its own QFonts from them (a QFont
+    /// shared with the UI thread caches its engine there).
+    struct Fonts
+    {
+        QString title, text, small;
+    };
+
     const Composite *composite() const;
     DiagramMetrics metrics() const;
+    static DiagramMetrics metrics(const Fonts &fonts);
+    /// Builds the graph of `composite` (pure; runs on any thread). Boxes that cover more than
+    /// `overviewArea` (points², < 0 for no check) cannot be read at the legible zoom: then the
+    /// graph is the overview's, built from `base` (the filters).
+    static Built build(const Composite &composite, const DiagramOptions &options,
+                       const DiagramOptions &base, const DiagramMetrics &metrics,
+                       double overviewArea);
     void relayout();
+    /// Takes a built graph on: the overview decision, then the layout (cached or started).
+    void onBuilt(const Built &built);
     void applyLayout(const LayoutGraph &graph, const LayoutResult &result, bool fit);
     void showMessage(const QString &text);
     void updateBreadcrumbs();
@@ -173,7 +208,9 @@ private:
     QStringList m_matches;
     int m_matchIndex = -1;
     QPointer<DiagramLayouter> m_layouter; ///< may go first when both belong to one window
-    bool m_pending = false;
+    bool m_pending = false;               ///< a layout runs
+    bool m_building = false;              ///< a graph is built on m_builds
+    int m_buildGeneration = 0;            ///< builds that finish under an older number are dropped
     bool m_fitPending = true;
     qint64 m_lastLayoutMs = 0;
 
@@ -190,6 +227,7 @@ private:
     QAction *m_exportAction;
     DiagramScene *m_scene;
     DiagramView *m_view;
+    JobRunner m_builds; ///< last: destroyed first, it waits for a build still running
 };
 
 } // namespace rosarch

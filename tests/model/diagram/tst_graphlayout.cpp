@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <sys/resource.h>
+
 using namespace rosarch;
 
 namespace {
@@ -87,6 +89,7 @@ private Q_SLOTS:
     void builderFiltersAndCollapses();
     void builtDiagramLaysOut();
     void biggerDiagramLaysOut();
+    void deepRecursionDoesNotOverflowTheStack();
 };
 
 void TestGraphLayout::realHelperLaysOutTheGraph()
@@ -393,6 +396,40 @@ void TestGraphLayout::biggerDiagramLaysOut()
         for (const LayoutNode &n : g.nodes)
             if (n.cluster == c.id)
                 QVERIFY(r.geometry.clusters[c.id].contains(r.geometry.nodes[n.id]));
+}
+
+void TestGraphLayout::deepRecursionDoesNotOverflowTheStack()
+{
+    // Graphviz's network simplex recurses once per node of a spanning tree: a chain of 3,000
+    // boxes overflows a 256 KB stack (as 600 launch-file boxes in one rank overflowed the
+    // default 8 MB one). The helper lays out on a thread of its own, with a big stack.
+    LayoutGraph chain;
+    for (int i = 0; i < 3000; ++i) {
+        chain.nodes << node(QStringLiteral("n%1").arg(i), 72, 36);
+        if (i > 0)
+            chain.edges << edge(QStringLiteral("e%1").arg(i), QStringLiteral("n%1").arg(i - 1), {},
+                                QStringLiteral("n%1").arg(i));
+    }
+    QProcess helper;
+    helper.setChildProcessModifier([] {
+        const rlimit small{256 * 1024, 256 * 1024};
+        setrlimit(RLIMIT_STACK, &small);
+    });
+    helper.start(GraphLayout::helperPath(), {});
+    QVERIFY(helper.waitForStarted());
+    helper.write(GraphLayout::toDot(chain).toUtf8());
+    helper.closeWriteChannel();
+    QVERIFY(helper.waitForFinished(120000));
+    QCOMPARE(helper.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(helper.exitCode(), 0);
+    LayoutGeometry geometry;
+    QString error;
+    QVERIFY2(GraphLayout::parseGeometry(helper.readAllStandardOutput(), chain, &geometry, &error),
+             qPrintable(error));
+    QCOMPARE(geometry.nodes.size(), chain.nodes.size());
+    // left to right, one rank after the other
+    QVERIFY(geometry.nodes[QStringLiteral("n0")].right() <
+            geometry.nodes[QStringLiteral("n1")].left());
 }
 
 QTEST_GUILESS_MAIN(TestGraphLayout)
