@@ -13,12 +13,19 @@ StageControl StageControl::forStage(int stage) const
     return c;
 }
 
-FileWork::FileWork(const StageControl &control, const QString &file)
-    : m_control(control), m_file(file),
-      m_reported(control.fileWork && !control.skipped.contains(file))
+FileWork::FileWork(const StageControl &control, const QString &file, Start start)
+    : m_control(control), m_file(file)
 {
-    if (m_reported) // a skipped file is not worked on
-        m_control.fileWork(m_file, true);
+    if (start == Start::Now)
+        this->start();
+}
+
+void FileWork::start()
+{
+    if (m_reported || !m_control.fileWork || m_control.skipped.contains(m_file))
+        return; // a skipped file is not worked on
+    m_reported = true;
+    m_control.fileWork(m_file, true);
 }
 
 FileWork::~FileWork()

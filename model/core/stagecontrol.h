@@ -49,8 +49,15 @@ struct StageControl
 class FileWork
 {
 public:
-    FileWork(const StageControl &control, const QString &file);
+    enum class Start
+    {
+        Now,  ///< the work starts with the object
+        Later ///< only at start(): what is found in the cache is no work to say
+    };
+    FileWork(const StageControl &control, const QString &file, Start start = Start::Now);
     ~FileWork();
+    /// Says that the work on the file starts (once; never for a skipped file).
+    void start();
     FileWork(const FileWork &) = delete;
     FileWork &operator=(const FileWork &) = delete;
 
@@ -60,7 +67,7 @@ public:
 private:
     const StageControl &m_control;
     QString m_file;
-    bool m_reported;
+    bool m_reported = false;
 };
 
 } // namespace rosarch

@@ -176,16 +176,35 @@ Read readRequest(StageRequest *request)
     return Read::Request;
 }
 
+/// Whether a progress report goes out: a status bar needs a few a second, not one per file (a
+/// frame per file costs the worker and the window a system call and a wake-up each). Messages,
+/// a stage's first and last report, and a report 40 ms after the last one sent go out.
+bool progressDue(int stage, int done, int total)
+{
+    static QMutex mutex;
+    static QElapsedTimer sent;
+    static int lastStage = -1;
+    const QMutexLocker lock(&mutex);
+    if (total > 0 && done > 0 && done < total && stage == lastStage && sent.isValid() &&
+        sent.elapsed() < 40)
+        return false;
+    lastStage = stage;
+    sent.start();
+    return true;
+}
+
 /// `composed`: the last complete run's stage 3 with its inputs, reused when they are equal.
 Recovery run(const StageRequest &request, const Recovery *composed)
 {
     StageControl control;
     control.skipped = request.skipped;
     control.progressed = [](int done, int total, const QString &what) {
-        frame(stagestream::Progress, qint32(0), qint32(done), qint32(total), what);
+        if (progressDue(0, done, total))
+            frame(stagestream::Progress, qint32(0), qint32(done), qint32(total), what);
     };
     control.stageProgressed = [](int stage, int done, int total, const QString &what) {
-        frame(stagestream::Progress, qint32(stage), qint32(done), qint32(total), what);
+        if (progressDue(stage, done, total))
+            frame(stagestream::Progress, qint32(stage), qint32(done), qint32(total), what);
     };
     control.stageTimed = [](int stage, qint64 ms) { frame(stagestream::Timed, qint32(stage), ms); };
     control.fileWork = [](const QString &file, bool entering) {

@@ -7,6 +7,7 @@
 #include "cppmacroindex.h"
 #include "cppnodelinker.h"
 #include "cppsyntax.h"
+#include "filedigests.h"
 #include "sourcereader.h"
 #include "stagememo.h"
 #include "syntaxtree.h"
@@ -127,69 +128,89 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         facts.package = file->package;
         if (control.isCanceled())
             return facts;
-        const FileWork work(control, file->path);
-        QByteArray bytes;
-        if (!work.skip(&facts.diagnostics) && reader.read(file->path, &bytes, &facts.diagnostics)) {
+        // Said to the supervisor only when the file is read: a cache hit cannot crash it.
+        FileWork work(control, file->path, FileWork::Start::Later);
+        if (!work.skip(&facts.diagnostics)) {
             try {
                 const CppPreprocessor::IncludeLookup lookup = macroIndex.lookup(file->path);
-                const QByteArray manifestKey = AnalysisCache::key(
-                    {"cppmanifest", file->path.toUtf8(), file->package.toUtf8(),
-                     FileDigests::digestOf(bytes), initialDigests.value(file->package)});
-                if (std::optional<CppManifest> manifest = stagememo::load<CppManifest>(
-                        cache, QStringLiteral("cppmanifest"), manifestKey);
-                    manifest && manifest->written.size() == manifest->angled.size() &&
-                    manifest->written.size() == manifest->exports.size()) {
-                    bool same = true;
-                    for (qsizetype i = 0; same && i < manifest->written.size(); ++i)
-                        same = digestOf(lookup(manifest->written.at(i), manifest->angled.at(i))) ==
-                               manifest->exports.at(i);
-                    std::optional<CppFileFacts> cached;
-                    if (same)
-                        cached = stagememo::loadWith<CppFileFacts>(
-                            cache, QStringLiteral("cpp"), manifest->key, &CppFactsCodec::decode);
-                    if (cached) {
-                        facts = std::move(*cached);
-                        facts.diagnostics = manifest->diagnostics + facts.diagnostics;
-                        QMutexLocker lock(&reportMutex);
-                        control.report(++done, total, file->path);
-                        return facts;
-                    }
-                    facts = CppFileFacts();
-                    facts.path = file->path;
-                    facts.package = file->package;
-                }
-                CppManifest manifest;
-                auto recording = [&](const QByteArray &written, bool angled) {
-                    const CppMacros *exports = lookup(written, angled);
-                    manifest.written.append(written);
-                    manifest.angled.append(angled);
-                    manifest.exports.append(digestOf(exports));
-                    return exports;
+                const auto manifestKeyOf = [&](const QByteArray &digest) {
+                    return AnalysisCache::key({"cppmanifest", file->path.toUtf8(),
+                                               file->package.toUtf8(), digest,
+                                               initialDigests.value(file->package)});
                 };
-                CppPreprocessor::Result preprocessed = CppPreprocessor::run(
-                    &bytes, file->path, macroIndex.initialMacros(file->package), recording);
-                // The facts depend on the text the preprocessor leaves and the macros in
-                // effect at its end, so those (and where the file is) are the key.
-                const QByteArray key =
-                    AnalysisCache::key({"cpp", file->path.toUtf8(), file->package.toUtf8(), bytes,
-                                        CppFactsCodec::digest(preprocessed.macros)});
-                const std::optional<QByteArray> cached = cache.load(QStringLiteral("cpp"), key);
-                if (!cached || !CppFactsCodec::decode(*cached, &facts)) {
-                    cppsyntax::blankExportMacros(&bytes);
-                    cppsyntax::blankQtKeywords(&bytes);
-                    cppsyntax::blankGrammarGaps(&bytes);
-                    QList<Diagnostic> isolated;
-                    const SyntaxTree tree =
-                        CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
-                    facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
-                    facts.diagnostics = isolated + facts.diagnostics;
-                    cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
+                // The facts of a file whose text and included headers' exports are those of
+                // the manifest's run: no preprocessing, no parsing.
+                const auto fromManifest =
+                    [&](const QByteArray &manifestKey) -> std::optional<CppFileFacts> {
+                    const std::optional<CppManifest> manifest = stagememo::load<CppManifest>(
+                        cache, QStringLiteral("cppmanifest"), manifestKey);
+                    if (!manifest || manifest->written.size() != manifest->angled.size() ||
+                        manifest->written.size() != manifest->exports.size())
+                        return std::nullopt;
+                    for (qsizetype i = 0; i < manifest->written.size(); ++i)
+                        if (digestOf(lookup(manifest->written.at(i), manifest->angled.at(i))) !=
+                            manifest->exports.at(i))
+                            return std::nullopt;
+                    std::optional<CppFileFacts> cached = stagememo::loadWith<CppFileFacts>(
+                        cache, QStringLiteral("cpp"), manifest->key, &CppFactsCodec::decode);
+                    if (cached)
+                        cached->diagnostics = manifest->diagnostics + cached->diagnostics;
+                    return cached;
+                };
+                // A file unchanged since it was last hashed is found without reading it.
+                QByteArray known;
+                if (cache.isEnabled())
+                    known = cache.digests().digest(m_workspace.absolutePath(file->path));
+                std::optional<CppFileFacts> hit;
+                if (!known.isEmpty())
+                    hit = fromManifest(manifestKeyOf(known));
+                QByteArray bytes;
+                QList<Diagnostic> read; // what reading says of the file (not UTF-8, ...)
+                if (!hit)
+                    work.start();
+                if (hit) {
+                    facts = std::move(*hit);
+                } else if (!reader.read(file->path, &bytes, &read)) {
+                    facts.diagnostics += read;
+                } else if (const QByteArray manifestKey =
+                               manifestKeyOf(FileDigests::digestOf(bytes));
+                           manifestKey != manifestKeyOf(known) &&
+                           (hit = fromManifest(manifestKey))) { // changed since it was hashed
+                    facts = std::move(*hit);
+                } else {
+                    CppManifest manifest;
+                    auto recording = [&](const QByteArray &written, bool angled) {
+                        const CppMacros *exports = lookup(written, angled);
+                        manifest.written.append(written);
+                        manifest.angled.append(angled);
+                        manifest.exports.append(digestOf(exports));
+                        return exports;
+                    };
+                    CppPreprocessor::Result preprocessed = CppPreprocessor::run(
+                        &bytes, file->path, macroIndex.initialMacros(file->package), recording);
+                    // The facts depend on the text the preprocessor leaves and the macros in
+                    // effect at its end, so those (and where the file is) are the key.
+                    const QByteArray key =
+                        AnalysisCache::key({"cpp", file->path.toUtf8(), file->package.toUtf8(),
+                                            bytes, CppFactsCodec::digest(preprocessed.macros)});
+                    const std::optional<QByteArray> cached = cache.load(QStringLiteral("cpp"), key);
+                    if (!cached || !CppFactsCodec::decode(*cached, &facts)) {
+                        cppsyntax::blankExportMacros(&bytes);
+                        cppsyntax::blankQtKeywords(&bytes);
+                        cppsyntax::blankGrammarGaps(&bytes);
+                        QList<Diagnostic> isolated;
+                        const SyntaxTree tree =
+                            CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
+                        facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
+                        facts.diagnostics = isolated + facts.diagnostics;
+                        cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
+                    }
+                    manifest.diagnostics = read + preprocessed.diagnostics;
+                    manifest.key = key;
+                    cache.store(QStringLiteral("cppmanifest"), manifestKey,
+                                cachecodec::encode(manifest));
+                    facts.diagnostics = manifest.diagnostics + facts.diagnostics;
                 }
-                manifest.diagnostics = preprocessed.diagnostics;
-                manifest.key = key;
-                cache.store(QStringLiteral("cppmanifest"), manifestKey,
-                            cachecodec::encode(manifest));
-                facts.diagnostics = preprocessed.diagnostics + facts.diagnostics;
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();
                 facts.path = file->path;

@@ -1,6 +1,7 @@
 #include "pythonnodeanalyzer.h"
 
 #include "analysiscache.h"
+#include "filedigests.h"
 #include "pythonerrorrecovery.h"
 #include "pythonfactscodec.h"
 #include "pythonmodulereader.h"
@@ -71,23 +72,44 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
             QMutexLocker lock(&reportMutex);
             control.report(done++, total, file->path);
         }
-        const FileWork work(control, file->path);
-        QByteArray content;
-        if (work.skip(&r.diagnostics) || !reader.read(file->path, &content, &r.diagnostics))
+        // Said to the supervisor only when the file is read: a cache hit cannot crash it.
+        FileWork work(control, file->path, FileWork::Start::Later);
+        if (work.skip(&r.diagnostics))
             return r;
         const RosPackage *package = m_workspace.package(file->package);
         const QString module =
             modulePath(file->path, package ? package->path : QString(), pythonFiles);
-        const QByteArray key = AnalysisCache::key(
-            {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), content});
-        if (std::optional<PythonFileResult> cached = stagememo::loadWith<PythonFileResult>(
-                cache, QStringLiteral("python"), key, &PythonFactsCodec::decode)) {
-            r.module = std::move(cached->module);
-            r.diagnostics += cached->diagnostics;
+        const auto keyOf = [&](const QByteArray &digest) {
+            return AnalysisCache::key(
+                {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), digest});
+        };
+        const auto fromCache = [&](const QByteArray &key) {
+            if (std::optional<PythonFileResult> cached = stagememo::loadWith<PythonFileResult>(
+                    cache, QStringLiteral("python"), key, &PythonFactsCodec::decode)) {
+                r.module = std::move(cached->module);
+                r.diagnostics += cached->diagnostics;
+                return true;
+            }
+            return false;
+        };
+        // A file unchanged since it was last hashed is found without reading it.
+        QByteArray known;
+        if (cache.isEnabled())
+            known = cache.digests().digest(m_workspace.absolutePath(file->path));
+        if (!known.isEmpty() && fromCache(keyOf(known)))
+            return r;
+        work.start();
+        QByteArray content;
+        QList<Diagnostic> read; // what reading says of the file (not UTF-8, ...), kept with it
+        if (!reader.read(file->path, &content, &read)) {
+            r.diagnostics += read;
             return r;
         }
-        const PythonFileResult analysed =
-            analyzeContent(content, file->path, file->package, module);
+        const QByteArray key = keyOf(FileDigests::digestOf(content));
+        if (key != keyOf(known) && fromCache(key)) // changed since it was hashed
+            return r;
+        PythonFileResult analysed = analyzeContent(content, file->path, file->package, module);
+        analysed.diagnostics = read + analysed.diagnostics;
         cache.store(QStringLiteral("python"), key, PythonFactsCodec::encode(analysed));
         r.module = analysed.module;
         r.diagnostics += analysed.diagnostics;
