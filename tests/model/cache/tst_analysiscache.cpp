@@ -5,6 +5,7 @@
 // the size bound evicts the oldest packs.
 // Every cache lives in a temporary folder.
 #include "analysiscache.h"
+#include "cachetestcase.h"
 #include "recovery.h"
 #include "testsupport.h"
 
@@ -81,9 +82,7 @@ private Q_SLOTS:
     void init()
     {
         QVERIFY(m_temp.isValid());
-        m_ws = m_temp.filePath(QStringLiteral("ws-%1").arg(QTest::currentTestFunction()));
-        m_cache = m_temp.filePath(QStringLiteral("cache-%1").arg(QTest::currentTestFunction()));
-        test::copyTree(test::dataDir(QStringLiteral("compose_system/ws")), m_ws);
+        test::freshCacheCase(m_temp, &m_ws, &m_cache);
     }
 
     void secondRunReadsBothStagesFromTheCache()

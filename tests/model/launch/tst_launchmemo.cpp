@@ -3,6 +3,7 @@
 // not run stage 2 again, while a changed executable name does; either way the result is the
 // one an uncached run gives.
 #include "analysiscache.h"
+#include "cachetestcase.h"
 #include "launchanalyzer.h"
 #include "nodeanalyzer.h"
 #include "testsupport.h"
@@ -57,9 +58,7 @@ private Q_SLOTS:
     void init()
     {
         QVERIFY(m_temp.isValid());
-        m_ws = m_temp.filePath(QStringLiteral("ws-%1").arg(QTest::currentTestFunction()));
-        m_cache = m_temp.filePath(QStringLiteral("cache-%1").arg(QTest::currentTestFunction()));
-        test::copyTree(test::dataDir(QStringLiteral("compose_system/ws")), m_ws);
+        test::freshCacheCase(m_temp, &m_ws, &m_cache);
     }
 
     void aCommentMovingNodeLinesKeepsTheMemo()

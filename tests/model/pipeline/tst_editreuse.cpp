@@ -3,6 +3,7 @@
 // the analysis cache, and in a long-lived worker); an edit that changes what the stages read
 // (a topic's name) is analysed again. EvidenceShift refuses moves a stage could tell apart.
 #include "analysiscache.h"
+#include "cachetestcase.h"
 #include "evidenceshift.h"
 #include "recovery.h"
 #include "stagesession.h"
@@ -103,9 +104,7 @@ private Q_SLOTS:
     void init()
     {
         QVERIFY(m_temp.isValid());
-        m_ws = m_temp.filePath(QStringLiteral("ws-%1").arg(QTest::currentTestFunction()));
-        m_cache = m_temp.filePath(QStringLiteral("cache-%1").arg(QTest::currentTestFunction()));
-        test::copyTree(test::dataDir(QStringLiteral("compose_system/ws")), m_ws);
+        test::freshCacheCase(m_temp, &m_ws, &m_cache);
     }
 
     void movedLinesGiveWhatAFreshRunGives()
