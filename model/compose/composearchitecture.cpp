@@ -8,7 +8,17 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
                                  const StageControl &control,
                                  const QHash<QString, QString> &renamed)
 {
-    Architecture arch = Composer::run(nodes, launch, control, renamed);
+    // One progression for the stage: the systems, then the launch files' own classifiers.
+    const int all = int(launch.instances.size() + launch.classifierInstances.size());
+    const auto part = [&control, all](int before) {
+        StageControl c = control;
+        if (control.progressed)
+            c.progressed = [&control, all, before](int done, int, const QString &what) {
+                control.report(before + done, all, what);
+            };
+        return c;
+    };
+    Architecture arch = Composer::run(nodes, launch, part(0), renamed);
     if (arch.canceled)
         return arch;
     arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
@@ -16,7 +26,8 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
         LaunchDependencies alone;
         alone.instances = launch.classifierInstances;
         alone.nodes = launch.classifierNodes;
-        Architecture classifiers = Composer::run(nodes, alone, control, renamed);
+        Architecture classifiers =
+            Composer::run(nodes, alone, part(int(launch.instances.size())), renamed);
         arch.canceled = classifiers.canceled;
         for (Composite &c : classifiers.composites)
             if (c.parentId.isEmpty())

@@ -3,6 +3,7 @@
 // launch file under different namespaces, a container with its own remaps, a guarded
 // service, a parameter-derived topic, SetRemap, an inactive node and an unresolved name).
 #include "ccdwriter.h"
+#include "composearchitecture.h"
 #include "composer.h"
 #include "guifixture.h"
 #include "recovery.h"
@@ -503,6 +504,28 @@ private Q_SLOTS:
         QCOMPARE(launchStem(QStringLiteral("nav_launch.py")), QStringLiteral("nav"));
         QCOMPARE(launchStem(QStringLiteral("a/b/mission.launch.yaml")), QStringLiteral("mission"));
         QCOMPARE(launchStem(QStringLiteral("bringup.xml")), QStringLiteral("bringup"));
+    }
+
+    void stageThreeReportsOneProgression()
+    {
+        // The status bar's bar fills once for stage 3: the systems, then each launch file's own
+        // classifier diagram.
+        const LaunchDependencies &launch = m_recovery.launch;
+        QVERIFY(!launch.classifierInstances.isEmpty());
+        const int all = int(launch.instances.size() + launch.classifierInstances.size());
+        QList<std::pair<int, int>> reports;
+        StageControl control;
+        control.progressed = [&](int done, int total, const QString &) {
+            reports.append({done, total});
+        };
+        QVERIFY(composeArchitecture(m_recovery.nodes, launch, control) == m_recovery.architecture);
+        QCOMPARE(reports.size(), all);
+        int last = 0;
+        for (const auto &[done, total] : std::as_const(reports)) {
+            QCOMPARE(total, all);
+            QCOMPARE(done, last + 1);
+            last = done;
+        }
     }
 };
 
