@@ -10,15 +10,7 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
 {
     // One progression for the stage: the systems, then the launch files' own classifiers.
     const int all = int(launch.instances.size() + launch.classifierInstances.size());
-    const auto part = [&control, all](int before) {
-        StageControl c = control;
-        if (control.progressed)
-            c.progressed = [&control, all, before](int done, int, const QString &what) {
-                control.report(before + done, all, what);
-            };
-        return c;
-    };
-    Architecture arch = Composer::run(nodes, launch, part(0), renamed);
+    Architecture arch = Composer::run(nodes, launch, control.part(0, all), renamed);
     if (arch.canceled)
         return arch;
     arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
@@ -27,7 +19,7 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
         alone.instances = launch.classifierInstances;
         alone.nodes = launch.classifierNodes;
         Architecture classifiers =
-            Composer::run(nodes, alone, part(int(launch.instances.size())), renamed);
+            Composer::run(nodes, alone, control.part(int(launch.instances.size()), all), renamed);
         arch.canceled = classifiers.canceled;
         for (Composite &c : classifiers.composites)
             if (c.parentId.isEmpty())

@@ -13,6 +13,16 @@ StageControl StageControl::forStage(int stage) const
     return c;
 }
 
+StageControl StageControl::part(int before, int all) const
+{
+    StageControl c = *this;
+    if (progressed)
+        c.progressed = [progressed = progressed, before, all](int done, int, const QString &what) {
+            progressed(before + done, all, what);
+        };
+    return c;
+}
+
 FileWork::FileWork(const StageControl &control, const QString &file, Start start)
     : m_control(control), m_file(file)
 {

@@ -41,6 +41,9 @@ struct StageControl
     }
     /// The control stage `stage` runs with: its progress goes to stageProgressed.
     StageControl forStage(int stage) const;
+    /// The control of one part of a stage whose parts report one progression: the part's
+    /// `done` is counted after the `before` items of the parts ahead of it, out of `all`.
+    StageControl part(int before, int all) const;
 };
 
 /// The work on one file, for StageControl::fileWork: construct it before the file is read,

@@ -202,16 +202,9 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
         pythonFiles += f.language == SourceFile::Language::Python;
         cppFiles += f.language == SourceFile::Language::Cpp;
     }
-    const auto part = [&control, all = pythonFiles + cppFiles](int before) {
-        StageControl c = control;
-        if (control.progressed)
-            c.progressed = [&control, all, before](int done, int, const QString &what) {
-                control.report(before + done, all, what);
-            };
-        return c;
-    };
-    LanguageAnalysis analyses[] = {PythonNodeAnalyzer(workspace).analyze(part(0)),
-                                   CppNodeAnalyzer(workspace).analyze(part(pythonFiles))};
+    LanguageAnalysis analyses[] = {
+        PythonNodeAnalyzer(workspace).analyze(control.part(0, pythonFiles + cppFiles)),
+        CppNodeAnalyzer(workspace).analyze(control.part(pythonFiles, pythonFiles + cppFiles))};
     QList<EntryPoint> entryPoints;
     QList<ComponentRegistration> registrations;
     for (LanguageAnalysis &a : analyses) {
