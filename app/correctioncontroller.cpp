@@ -45,6 +45,10 @@ CorrectionController::CorrectionController(Document *document, AtomicNodePanel *
             m_current = {};
         refreshInspector();
     });
+    connect(document, &Document::keysMade, this, [this] {
+        if (m_current.kind != Kind::None)
+            refreshInspector(); // its key, shown as being worked out until now
+    });
     connect(nodePanel, &FilteredTreePanel::currentSourceIndexChanged, this,
             [this](const QModelIndex &index) { setCurrent(nodeElement(index)); });
     connect(launchPanel, &FilteredTreePanel::currentSourceIndexChanged, this,
@@ -119,6 +123,13 @@ QString CorrectionController::keyOf(const QString &id)
     if (index().isEmpty()) // no corrections: the model as recovered is the corrected one
         return m_document->keyOf(id);
     return index().keyOf(id);
+}
+
+bool CorrectionController::keysAtHand(const QString &id)
+{
+    const QString family = StableKeys::family(id);
+    return family == QLatin1String("topic") || family == QLatin1String("service") ||
+           family == QLatin1String("action") || !index().isEmpty() || m_document->keysReady();
 }
 
 bool CorrectionController::ask(CorrectionDialog &dialog)
@@ -345,9 +356,13 @@ InspectorInfo CorrectionController::describe(const Element &e)
     }
     }
     info.name = nameOf(e);
-    info.key = keyOf(e.kind == Kind::Connection ? e.port : e.id);
-    if (e.kind == Kind::Connection)
-        info.key = keyOf(e.id) + QStringLiteral(" \u00b7 ") + info.key;
+    if (!keysAtHand(e.id)) {
+        info.key = tr("(being worked out\u2026)"); // shown when the keys are made
+    } else {
+        info.key = keyOf(e.kind == Kind::Connection ? e.port : e.id);
+        if (e.kind == Kind::Connection)
+            info.key = keyOf(e.id) + QStringLiteral(" \u00b7 ") + info.key;
+    }
     QStringList by;
     const QList<Correction> touching = index().of(e.id);
     for (const Correction &c : touching)
@@ -423,7 +438,7 @@ QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *par
         add(tr("Re&name\u2026"), Qt::Key_F2, [this](const Element &x) { rename(x); });
         break;
     case Kind::Connection:
-        if (!keyOf(e.port).isEmpty())
+        if (!keysAtHand(e.port) || !keyOf(e.port).isEmpty())
             add(tr("Remove &Connection\u2026"), QKeySequence::Delete,
                 [this](const Element &x) { remove(x); });
         return actions;

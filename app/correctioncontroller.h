@@ -100,6 +100,9 @@ private:
     bool ask(CorrectionDialog &dialog);
     bool push(Correction c);
     QString keyOf(const QString &id);
+    /// True when keyOf(id) answers without waiting for the keys of a large model (made on a
+    /// thread of their own after each recovery): the inspector does not wait for them.
+    bool keysAtHand(const QString &id);
     QString nameOf(const Element &element);
     bool isRemoved(const Element &element);
     QStringList knownTypes();

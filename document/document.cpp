@@ -21,6 +21,10 @@ Document::Document(QObject *parent) : QObject(parent)
     m_autosave.setInterval(2000);
     connect(&m_autosave, &QTimer::timeout, this, [this] { writeAutosave(); });
     connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this] { updateModified(); });
+    connect(&m_keysWatcher, &QFutureWatcherBase::finished, this, [this] {
+        if (keysReady()) // else a job of a model since replaced
+            Q_EMIT keysMade();
+    });
 }
 
 Document::~Document()
@@ -54,6 +58,7 @@ void Document::setRecovery(Recovery recovery)
     }
     disposeInBackground(std::make_pair(std::exchange(m_corrected, std::nullopt),
                                        std::exchange(m_keys, std::nullopt)));
+    m_keysJob = {};                                // of the old model: left to finish, dropped
     m_modifiedOutside = sameWorkspace && modified; // undo history goes, the changes stay
     m_undoStack.clear();
     disposeInBackground(Recovery{std::exchange(m_nodes, std::move(recovery.nodes)),
@@ -78,6 +83,7 @@ void Document::setRecovery(Recovery recovery)
     else
         clearSuggestions();
     updateModified();
+    startKeys();
     const StallScope views("Document::changed (views)");
     Q_EMIT changed(change);
 }
@@ -107,10 +113,12 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     const QList<SuggestionDecision> keyed = keyedDecisions(); // launch ids may change
     const QList<Suggestion> suggestions = keyedSuggestions();
     m_keys.reset();
+    m_keysJob = {}; // of the old model: left to finish, dropped
     disposeInBackground(std::make_pair(std::exchange(m_launch, std::move(launch)),
                                        std::exchange(m_architecture, std::move(architecture))));
     bindDecisions(keyed);
     bindSuggestions(suggestions); // by key: groupings and names refer to launch ids
+    startKeys();
     Q_EMIT changed(change);
 }
 

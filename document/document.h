@@ -11,6 +11,8 @@
 #include "suggestiondecision.h"
 #include "suggestionreport.h"
 
+#include <QFuture>
+#include <QFutureWatcher>
 #include <QHash>
 #include <QMap>
 #include <QObject>
@@ -156,6 +158,12 @@ public:
     /// The stable key of an element by the id the views use ("arc_3", "arc_3/p1", "n3", "lf2",
     /// "lf1/part2", "topic:/scan"); "" when there is no such element in the model as recovered.
     QString keyOf(const QString &id) const;
+    /// The stable keys of the model as recovered. Made once per model, on a thread of their
+    /// own as soon as the model arrives (a large model's keys take a few hundred ms); waits
+    /// for that when they are not made yet.
+    const StableKeys &recoveredKeys() const;
+    /// True when recoveredKeys() and keyOf() answer without waiting.
+    bool keysReady() const;
     /// Who makes corrections here: $ROSARCH_AUTHOR, else the login name.
     static QString author();
 
@@ -197,6 +205,8 @@ Q_SIGNALS:
     void modifiedChanged(bool modified);
     /// The project's file changed (saved under another name, another project opened).
     void projectPathChanged(const QString &path);
+    /// The keys of the model as recovered were made (keysReady() is true now).
+    void keysMade();
 
 private:
     friend class DecideSuggestionCommand;
@@ -238,6 +248,10 @@ private:
     /// Clears the suggestions (no signals); true when there were any.
     bool clearSuggestions();
     void emitChange(DocumentChange::Parts parts, const QString &id = {});
+    /// Makes the keys of the model as recovered (the model changed): a large model's on their
+    /// own thread, a small one's at once. A job still making the old ones is left to finish
+    /// and be dropped.
+    void startKeys();
 
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
@@ -250,7 +264,9 @@ private:
     QList<SuggestionDecision> m_unboundDecisions;         ///< by key: nothing here matches them
     mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted()/orphans(), until a change
     mutable std::optional<StableKeys> m_keys;             ///< keyOf(): of the model as recovered
-    QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
+    mutable QFuture<StableKeys> m_keysJob;                ///< making m_keys, until taken
+    QFutureWatcher<StableKeys> m_keysWatcher;
+    QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     QTimer m_autosave;
     bool m_unsaved = false;          ///< a change is not in the autosave side file

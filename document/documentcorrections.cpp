@@ -9,6 +9,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSet>
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
 
 namespace rosarch {
 
@@ -44,11 +46,10 @@ QList<SuggestionDecision> Document::keyedDecisions() const
     QList<SuggestionDecision> out = m_unboundDecisions;
     if (m_decisions.isEmpty())
         return out;
-    if (!m_keys) // the keys of a large model take a while: made once per model
-        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
+    const StableKeys &keys = recoveredKeys();
     for (const SuggestionDecision &d : m_decisions) {
         SuggestionDecision k;
-        if (CorrectedModel::keyed(d, *m_keys, &k))
+        if (CorrectedModel::keyed(d, keys, &k))
             out.append(k);
     }
     return out;
@@ -58,12 +59,10 @@ void Document::bindDecisions(const QList<SuggestionDecision> &keyed)
 {
     m_decisions.clear();
     m_unboundDecisions.clear();
-    if (!keyed.isEmpty() && !m_keys)
-        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
     for (const SuggestionDecision &d : keyed) {
         SuggestionDecision b;
         QString reason;
-        if (CorrectedModel::bound(d, *m_keys, &b, &reason))
+        if (CorrectedModel::bound(d, recoveredKeys(), &b, &reason))
             m_decisions.insert(b.key(), b);
         else
             m_unboundDecisions.append(d); // kept, applied to nothing
@@ -87,9 +86,43 @@ Project Document::project() const
 
 QString Document::keyOf(const QString &id) const
 {
-    if (!m_keys)
-        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
-    return m_keys->keyOf(id);
+    return recoveredKeys().keyOf(id);
+}
+
+const StableKeys &Document::recoveredKeys() const
+{
+    if (!m_keys) {
+        // Waiting for the job costs less than starting over; one not started yet runs here.
+        m_keys = m_keysJob.isValid() ? m_keysJob.result()
+                                     : StableKeys(Recovery{m_nodes, m_launch, m_architecture});
+        m_keysJob = {};
+    }
+    return *m_keys;
+}
+
+bool Document::keysReady() const
+{
+    return m_keys || (m_keysJob.isValid() && m_keysJob.isFinished());
+}
+
+void Document::startKeys()
+{
+    if (m_keys)
+        return;
+    // A small model's keys take a few ms: made here, they are there when a view asks.
+    constexpr qsizetype kSmallModel = 1000;
+    if (m_nodes.nodes.size() + m_launch.instances.size() + m_launch.nodes.size() +
+            m_launch.classifierNodes.size() + m_architecture.composites.size() <
+        kSmallModel) {
+        recoveredKeys();
+        return;
+    }
+    static QThreadPool pool; // not the global pool, which painting waits for
+    pool.setMaxThreadCount(1);
+    m_keysJob = QtConcurrent::run(&pool, [recovery = Recovery{m_nodes, m_launch, m_architecture}] {
+        return StableKeys(recovery);
+    });
+    m_keysWatcher.setFuture(m_keysJob);
 }
 
 QList<Suggestion> Document::keyedSuggestions() const
@@ -114,14 +147,13 @@ void Document::bindSuggestions(const QList<Suggestion> &keyed)
         m_suggestionReport.suggestions.clear();
         return;
     }
-    if (!m_keys)
-        m_keys = StableKeys(Recovery{m_nodes, m_launch, m_architecture});
+    const StableKeys &keys = recoveredKeys();
     QList<Suggestion> bound;
     for (Suggestion s : keyed) {
-        s.targetId = m_keys->idOf(s.targetId);
+        s.targetId = keys.idOf(s.targetId);
         bool there = !s.targetId.isEmpty();
         for (QString &m : s.memberIds) {
-            m = m_keys->idOf(m);
+            m = keys.idOf(m);
             there = there && !m.isEmpty();
         }
         if (!there)

@@ -11,8 +11,7 @@ CorrectionIndex::CorrectionIndex(const Document &document) : m_corrections(docum
         return;
     const Recovery &corrected = document.accepted();
     m_corrected = StableKeys(corrected);
-    m_recovered = StableKeys(
-        Recovery{document.atomicNodes(), document.launchDependencies(), document.architecture()});
+    m_recovered = document.recoveredKeys(); // made once per model
     for (int i = 0; i < m_corrections.size(); ++i)
         m_byTarget[m_corrections[i].target].append(i);
     // A port a correction added has no key of its own as recovered: find it by what it says.

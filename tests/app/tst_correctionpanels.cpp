@@ -1,6 +1,7 @@
 // Corrections in the GUI's panels (issue 12): the inspector, the Corrections panel, re-running
 // the stages, orphans and re-targeting, and a project's corrections shown everywhere.
 #include "correctiongui.h"
+#include "stablekeys.h"
 
 #include <QtTest>
 
@@ -44,6 +45,40 @@ private Q_SLOTS:
                  QStringLiteral("corrected by c1"));
         QVERIFY(gui->inspector.info().corrections.contains(
             QStringLiteral("odometry \u2192 odom_node")));
+    }
+
+    void inspectorDoesNotWaitForTheKeysOfALargeModel()
+    {
+        // As large as a 3,000-package workspace: its stable keys are made on a thread of their
+        // own, and the inspector shows an element's key once they are there.
+        const auto large = [this](const QString &package) {
+            Recovery r = recover(m_ws);
+            const AtomicNode like = r.nodes.nodes.first();
+            for (int i = 0; i < 4000; ++i) {
+                AtomicNode n = like;
+                n.id = QStringLiteral("arc_x%1").arg(i);
+                n.packageName = package + QString::number(i);
+                r.nodes.nodes.append(n);
+            }
+            return r;
+        };
+        const Recovery first = large(QStringLiteral("first_"));
+        const Recovery second = large(QStringLiteral("second_"));
+        const QString id = QStringLiteral("arc_x3999");
+        Gui gui;
+        QSignalSpy made(&gui.document, &Document::keysMade);
+        gui.document.setRecovery(first);
+        gui.document.setRecovery(second); // while the first one's keys may still be made
+        gui.controller->setCurrent({EKind::Class, id, {}, {}});
+        const QString expected = StableKeys(second).keyOf(id);
+        QVERIFY(expected.startsWith(QStringLiteral("class:second_3999|")));
+        const QString shown = gui.inspector.fieldText(QStringLiteral("key"));
+        QVERIFY2(shown == expected || shown == QStringLiteral("(being worked out\u2026)"),
+                 qPrintable(shown));
+        QTRY_COMPARE(gui.inspector.fieldText(QStringLiteral("key")), expected);
+        QVERIFY(gui.document.keysReady());
+        QCOMPARE(gui.document.keyOf(id), expected); // not the first model's key
+        QCOMPARE(gui.document.keyOf(QStringLiteral("arc_x0")), StableKeys(second).keyOf("arc_x0"));
     }
 
     void correctionsPanelListsAndReverts()
