@@ -1,6 +1,7 @@
 // Pathological input, generated here, never crashes, hangs or silently drops anything: each
 // case is a workspace with one hostile file next to a healthy node, and the run must finish
 // with the healthy part recovered and a diagnostic naming what was skipped and why.
+#include "analysiscache.h"
 #include "recovery.h"
 #include "recoverytest.h"
 #include "syntaxtree.h"
@@ -233,6 +234,36 @@ private Q_SLOTS:
         const QStringList names = codes(r, QStringLiteral("unreadable-name"));
         QCOMPARE(names.size(), 1);
         QVERIFY(names.first().contains(QLatin1String("not valid UTF-8")));
+    }
+
+    void aCppFileNotInUtf8IsSaidAlsoWhenItComesFromTheCache()
+    {
+        // The C++ reader's warning is part of what the cache keeps of the file: a later run
+        // that takes the file from the cache (another file edited, another process) says it too.
+        QTemporaryDir dir;
+        const QString ws = dir.filePath(QStringLiteral("ws"));
+        cppPackage(ws, "add_executable(worker src/worker.cpp src/scale.cpp)\n");
+        writeFile(ws + "/src/cpp/src/scale.cpp",
+                  "// r\xe9glage fin\nint twice(int x) { return 2 * x; }\n");
+        const auto run = [&dir](const QString &root) {
+            AnalysisCache cache(dir.filePath(QStringLiteral("cache")));
+            StageControl control;
+            control.cache = &cache;
+            return recoverWorkspace(root, {}, control);
+        };
+        const Recovery cold = run(ws);
+        const QStringList said = codes(cold, QStringLiteral("not-utf8"));
+        QCOMPARE(said.size(), 1);
+        QVERIFY2(said.first().startsWith(QLatin1String("src/cpp/src/scale.cpp")),
+                 qPrintable(said.first()));
+        QCOMPARE(classes(cold), QStringList{QStringLiteral("Worker")});
+        writeFile(
+            ws + "/src/cpp/src/worker.cpp",
+            "// edited\n#include \"rclcpp/rclcpp.hpp\"\nclass Worker : public rclcpp::Node {\n"
+            "public:\n  Worker() : Node(\"worker\") {}\n};\n");
+        const Recovery warm = run(ws);
+        QCOMPARE(codes(warm, QStringLiteral("not-utf8")), said);
+        QCOMPARE(classes(warm), QStringList{QStringLiteral("Worker")});
     }
 
     void aLaunchFileTooLongToEvaluateSaysWhereItStopped()
