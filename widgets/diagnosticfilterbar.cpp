@@ -1,5 +1,6 @@
 #include "diagnosticfilterbar.h"
 #include "diagnostickind.h"
+#include "flowlayout.h"
 #include "icons.h"
 
 #include <QCheckBox>
@@ -21,8 +22,17 @@ DiagnosticFilterBar::DiagnosticFilterBar(DiagnosticModel *model, QWidget *parent
       m_hidden(new QCheckBox(tr("Hidden"), this)), m_accepted(new QCheckBox(tr("Accepted"), this)),
       m_grouping(new QComboBox(this))
 {
-    auto *layout = new QHBoxLayout(this);
+    // Wraps into rows when the dock is narrow: the bar must not set the window's width.
+    auto *layout = new FlowLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
+    // what belongs together stays on one row
+    const auto group = [this] {
+        auto *box = new QWidget(this);
+        auto *row = new QHBoxLayout(box);
+        row->setContentsMargins(0, 0, 0, 0);
+        return std::make_pair(box, row);
+    };
+    const auto [severityBox, severityRow] = group();
     const std::pair<QToolButton *, Diagnostic::Severity> severities[] = {
         {m_errors, Diagnostic::Severity::Error},
         {m_warnings, Diagnostic::Severity::Warning},
@@ -35,8 +45,9 @@ DiagnosticFilterBar::DiagnosticFilterBar(DiagnosticModel *model, QWidget *parent
         button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
         button->setToolTip(tr("Show or hide findings of this severity"));
         connect(button, &QToolButton::toggled, this, &DiagnosticFilterBar::apply);
-        layout->addWidget(button);
+        severityRow->addWidget(button);
     }
+    layout->addWidget(severityBox);
     m_kind->setToolTip(tr("Show only findings of one kind"));
     m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_kind->setMinimumContentsLength(8);
@@ -55,11 +66,16 @@ DiagnosticFilterBar::DiagnosticFilterBar(DiagnosticModel *model, QWidget *parent
     m_grouping->setToolTip(tr("Group the findings by kind or by package"));
     layout->addWidget(m_kind);
     layout->addWidget(m_package);
-    layout->addWidget(m_search, 1);
-    layout->addWidget(m_hidden);
-    layout->addWidget(m_accepted);
-    layout->addWidget(new QLabel(tr("Group by:"), this));
-    layout->addWidget(m_grouping);
+    layout->addWidget(m_search);
+    layout->setStretchWidget(m_search);
+    const auto [showBox, showRow] = group();
+    showRow->addWidget(m_hidden);
+    showRow->addWidget(m_accepted);
+    layout->addWidget(showBox);
+    const auto [groupingBox, groupingRow] = group();
+    groupingRow->addWidget(new QLabel(tr("Group by:"), groupingBox));
+    groupingRow->addWidget(m_grouping);
+    layout->addWidget(groupingBox);
 
     // Typing filters after a short pause, not on every key, with thousands of findings.
     auto *typing = new QTimer(this);

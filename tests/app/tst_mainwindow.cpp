@@ -256,6 +256,20 @@ private Q_SLOTS:
         saveScreenshot(w, QStringLiteral("mainwindow_example.png"));
     }
 
+    void theWindowFitsALaptopScreen()
+    {
+        // Before: the Log's filter bar kept its dock ~1,100 px wide, and the window, opened
+        // on a 1,440 px wide screen, was wider than it (its right-hand docks cut off).
+        MainWindow w;
+        w.show();
+        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY2(w.minimumSizeHint().width() <= 1366,
+                 qPrintable(QString::number(w.minimumSizeHint().width())));
+        w.resize(1366, 768);
+        QTRY_COMPARE(w.width(), 1366);
+    }
+
     void findFiltersTheTree()
     {
         MainWindow w;
