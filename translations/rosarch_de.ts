@@ -909,175 +909,180 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::CorrectionController</name>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="78"/>
+        <location filename="../app/correctioncontroller.cpp" line="82"/>
         <source>&amp;Group Selected Parts into Subsystem…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="90"/>
+        <location filename="../app/correctioncontroller.cpp" line="94"/>
         <source>Remove %1 corrections</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="138"/>
+        <location filename="../app/correctioncontroller.cpp" line="149"/>
         <source>%1: %2 (Ctrl+Z undoes it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="297"/>
+        <location filename="../app/correctioncontroller.cpp" line="308"/>
         <source>Plugin class</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="297"/>
+        <location filename="../app/correctioncontroller.cpp" line="308"/>
         <source>Node class</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="308"/>
+        <location filename="../app/correctioncontroller.cpp" line="319"/>
         <source>Port (%1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="320"/>
+        <location filename="../app/correctioncontroller.cpp" line="331"/>
         <source>Node instance</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="320"/>
+        <location filename="../app/correctioncontroller.cpp" line="331"/>
         <source>Connection</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="324"/>
+        <location filename="../app/correctioncontroller.cpp" line="335"/>
         <source>%1 %2 [%3]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="332"/>
+        <location filename="../app/correctioncontroller.cpp" line="343"/>
         <source>Launch file</source>
         <translation type="unfinished">Launch-File</translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="338"/>
+        <location filename="../app/correctioncontroller.cpp" line="349"/>
         <source>Topic</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="339"/>
+        <location filename="../app/correctioncontroller.cpp" line="350"/>
         <source>Service</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="340"/>
+        <location filename="../app/correctioncontroller.cpp" line="351"/>
         <source>Action</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="357"/>
+        <location filename="../app/correctioncontroller.cpp" line="360"/>
+        <source>(being worked out…)</source>
+        <translation>(wird ermittelt…)</translation>
+    </message>
+    <message>
+        <location filename="../app/correctioncontroller.cpp" line="372"/>
         <source>removed by %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="359"/>
+        <location filename="../app/correctioncontroller.cpp" line="374"/>
         <source>corrected by %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="361"/>
+        <location filename="../app/correctioncontroller.cpp" line="376"/>
         <source>suggested (an accepted suggestion)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="363"/>
+        <location filename="../app/correctioncontroller.cpp" line="378"/>
         <source>corrected</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="365"/>
+        <location filename="../app/correctioncontroller.cpp" line="380"/>
         <source>recovered by analysis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="390"/>
+        <location filename="../app/correctioncontroller.cpp" line="405"/>
         <source>Restore (Revert %1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="394"/>
-        <location filename="../app/correctioncontroller.cpp" line="504"/>
+        <location filename="../app/correctioncontroller.cpp" line="409"/>
+        <location filename="../app/correctioncontroller.cpp" line="519"/>
         <source>Ctrl+R</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="395"/>
+        <location filename="../app/correctioncontroller.cpp" line="410"/>
         <source>Unmark Reviewed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="395"/>
+        <location filename="../app/correctioncontroller.cpp" line="410"/>
         <source>Mark Re&amp;viewed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="398"/>
+        <location filename="../app/correctioncontroller.cpp" line="413"/>
         <source>Add &amp;Port…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="399"/>
+        <location filename="../app/correctioncontroller.cpp" line="414"/>
         <source>Re&amp;move Class…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="405"/>
+        <location filename="../app/correctioncontroller.cpp" line="420"/>
         <source>Set &amp;Name…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="405"/>
-        <location filename="../app/correctioncontroller.cpp" line="415"/>
-        <location filename="../app/correctioncontroller.cpp" line="423"/>
+        <location filename="../app/correctioncontroller.cpp" line="420"/>
+        <location filename="../app/correctioncontroller.cpp" line="430"/>
+        <location filename="../app/correctioncontroller.cpp" line="438"/>
         <source>Re&amp;name…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="407"/>
+        <location filename="../app/correctioncontroller.cpp" line="422"/>
         <source>Set &amp;Type…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="409"/>
+        <location filename="../app/correctioncontroller.cpp" line="424"/>
         <source>Set &amp;Type… (unknown)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="410"/>
+        <location filename="../app/correctioncontroller.cpp" line="425"/>
         <source>Re&amp;move Port…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="416"/>
+        <location filename="../app/correctioncontroller.cpp" line="431"/>
         <source>Re&amp;move…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="417"/>
+        <location filename="../app/correctioncontroller.cpp" line="432"/>
         <source>Add &amp;Connection…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="420"/>
+        <location filename="../app/correctioncontroller.cpp" line="435"/>
         <source>Add &amp;Part…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="427"/>
+        <location filename="../app/correctioncontroller.cpp" line="442"/>
         <source>Remove &amp;Connection…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="442"/>
+        <location filename="../app/correctioncontroller.cpp" line="457"/>
         <source>Correct</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1333,17 +1338,17 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::CorrectionIndex</name>
     <message>
-        <location filename="../widgets/correctionindex.cpp" line="78"/>
+        <location filename="../widgets/correctionindex.cpp" line="77"/>
         <source>%1 by %2 (%3): %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/correctionindex.cpp" line="80"/>
+        <location filename="../widgets/correctionindex.cpp" line="79"/>
         <source>Reviewed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/correctionindex.cpp" line="81"/>
+        <location filename="../widgets/correctionindex.cpp" line="80"/>
         <source>Corrected</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1545,102 +1550,102 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::DiagnosticFilterBar</name>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="21"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="22"/>
         <source>Hidden</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="21"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="22"/>
         <source>Accepted</source>
         <translation type="unfinished">Angenommen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="36"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="46"/>
         <source>Show or hide findings of this severity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="40"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="51"/>
         <source>Show only findings of one kind</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="43"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="54"/>
         <source>Show only findings in one package</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="46"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="57"/>
         <source>Search findings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="49"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="60"/>
         <source>Show findings whose message, file, kind or package contains this</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="50"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="61"/>
         <source>Also show findings you hid (drawn grey)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="51"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="62"/>
         <source>Also show findings you accepted (drawn grey)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="52"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="63"/>
         <source>None</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="53"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="64"/>
         <source>Kind</source>
         <translation type="unfinished">Art</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="54"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="65"/>
         <source>Package</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="55"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="66"/>
         <source>Group the findings by kind or by package</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="61"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="76"/>
         <source>Group by:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="149"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="165"/>
         <source>Errors %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="151"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="167"/>
         <source>Warnings %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="154"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="170"/>
         <source>Info %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="171"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="187"/>
         <source>(no package)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="180"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="196"/>
         <source>All kinds</source>
         <translation type="unfinished">Alle Arten</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticfilterbar.cpp" line="181"/>
+        <location filename="../widgets/diagnosticfilterbar.cpp" line="197"/>
         <source>All packages</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1648,87 +1653,87 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::DiagnosticModel</name>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="251"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="258"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="253"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="260"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="255"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="262"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="271"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="278"/>
         <source>(no package)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="277"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="284"/>
         <source>%1 (1 finding)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="278"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="285"/>
         <source>%1 (%2 findings)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="305"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="312"/>
         <source>%1 (accepted)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="306"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="313"/>
         <source>%1 (hidden)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="354"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="361"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="356"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="363"/>
         <source>Seen in %1 systems</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="369"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="376"/>
         <source>The number of systems (root launch files) the finding was seen in</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="374"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="381"/>
         <source>Severity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="376"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="383"/>
         <source>Kind</source>
         <translation type="unfinished">Art</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="378"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="385"/>
         <source>Package</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="380"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="387"/>
         <source>File</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="382"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="389"/>
         <source>Message</source>
         <translation>Meldung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="384"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="391"/>
         <source>Systems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1786,89 +1791,89 @@ Wrote %12 files to %13
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="233"/>
-        <location filename="../app/diagramcontroller.cpp" line="241"/>
-        <location filename="../app/diagramcontroller.cpp" line="258"/>
+        <location filename="../app/diagramcontroller.cpp" line="234"/>
+        <location filename="../app/diagramcontroller.cpp" line="242"/>
+        <location filename="../app/diagramcontroller.cpp" line="259"/>
         <source>%1 %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="277"/>
+        <location filename="../app/diagramcontroller.cpp" line="278"/>
         <source>port %1 of %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="280"/>
+        <location filename="../app/diagramcontroller.cpp" line="281"/>
         <source>No launch file starts %1, so its port %2 talks on nothing in the composed architecture.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="303"/>
+        <location filename="../app/diagramcontroller.cpp" line="304"/>
         <source>%1 leaves %2 through its boundary: the launch files that include %2 may have more talkers.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="342"/>
+        <location filename="../app/diagramcontroller.cpp" line="343"/>
         <source>the reference has no diagram for %1</source>
         <translation>die Referenz enthält kein Diagramm für %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="371"/>
+        <location filename="../app/diagramcontroller.cpp" line="372"/>
         <source>No ACD or CCD diagram could be read in %1.</source>
         <translation>In %1 konnte kein ACD- oder CCD-Diagramm gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="383"/>
+        <location filename="../app/diagramcontroller.cpp" line="384"/>
         <source>Compared with %1 (%2): micro F1 %3, macro F1 %4</source>
         <translation>Verglichen mit %1 (%2): Mikro-F1 %3, Makro-F1 %4</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="401"/>
+        <location filename="../app/diagramcontroller.cpp" line="402"/>
         <source>Reference Model (folder of PlantUML diagrams)</source>
         <translation>Referenzmodell (Ordner mit PlantUML-Diagrammen)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="407"/>
+        <location filename="../app/diagramcontroller.cpp" line="408"/>
         <source>Comparison failed: %1</source>
         <translation>Vergleich fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="413"/>
+        <location filename="../app/diagramcontroller.cpp" line="414"/>
         <source>Comparison with %1</source>
         <translation>Vergleich mit %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="432"/>
+        <location filename="../app/diagramcontroller.cpp" line="433"/>
         <source>Exported the composed diagram to %1</source>
         <translation>Kompositionsdiagramm nach %1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="433"/>
+        <location filename="../app/diagramcontroller.cpp" line="434"/>
         <source>Could not write the composed diagram to %1</source>
         <translation>Das Kompositionsdiagramm konnte nicht nach %1 geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="434"/>
+        <location filename="../app/diagramcontroller.cpp" line="435"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="434"/>
+        <location filename="../app/diagramcontroller.cpp" line="435"/>
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="448"/>
+        <location filename="../app/diagramcontroller.cpp" line="449"/>
         <source>SVG drawing (*.svg)</source>
         <translation>SVG-Zeichnung (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="448"/>
+        <location filename="../app/diagramcontroller.cpp" line="449"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/diagramcontroller.cpp" line="450"/>
+        <location filename="../app/diagramcontroller.cpp" line="451"/>
         <source>Export Composed Diagram</source>
         <translation>Kompositionsdiagramm exportieren</translation>
     </message>
@@ -1884,164 +1889,184 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::DiagramPanel</name>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="42"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="40"/>
         <source>Find in diagram</source>
         <translation>Im Diagramm suchen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="43"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="41"/>
         <source>Highlights the parts, topics, services and namespaces whose name contains this text. Enter goes to the next match.</source>
         <translation>Hebt die Teile, Topics, Services und Namespaces hervor, deren Name diesen Text enthält. Enter springt zum nächsten Treffer.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="52"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="50"/>
         <source>Parameters</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="52"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="50"/>
         <source>Show ports whose name comes from a parameter</source>
         <translation>Ports anzeigen, deren Name aus einem Parameter stammt</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="53"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="51"/>
         <source>Inactive</source>
         <translation>Inaktiv</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="54"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="52"/>
         <source>Show parts and ports whose launch condition or guard is false</source>
         <translation>Teile und Ports anzeigen, deren Launch-Bedingung oder Bedingung im Code falsch ist</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="55"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="53"/>
         <source>External</source>
         <translation>Extern</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="56"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="54"/>
         <source>Show includes of launch files outside the workspace</source>
         <translation>Includes von Launch-Files außerhalb des Workspaces anzeigen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="58"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="56"/>
         <source>−</source>
         <translation>−</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="59"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="57"/>
         <source>Zoom out (-, Ctrl+wheel)</source>
         <translation>Verkleinern (-, Ctrl+Mausrad)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="60"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="58"/>
         <source>+</source>
         <translation>+</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="61"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="59"/>
         <source>Zoom in (+, Ctrl+wheel)</source>
         <translation>Vergrößern (+, Ctrl+Mausrad)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="62"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="60"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="63"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="61"/>
         <source>Fit the whole diagram in the view (0); a diagram too big to read whole stops at a legible size, the minimap shows the rest</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="65"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="63"/>
         <source>Overview</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="66"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="64"/>
         <source>Collapse namespaces to one box each and hide the ports of every part; double-click a box to expand it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="68"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="66"/>
         <location filename="../widgets/diagram/diagrampanelcollapse.cpp" line="202"/>
         <source>Expand All</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="69"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="67"/>
         <source>Show every namespace and port of this diagram</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="373"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="307"/>
         <source>as included by %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="374"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="308"/>
         <source>Names, namespaces and arguments are resolved for this include of %1. The exported CCD of %1 is the file on its own, with its declared defaults.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="378"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="312"/>
         <source>as launched</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="379"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="313"/>
         <source>The root launch file with the launch arguments of the run.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="70"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="68"/>
         <source>Export…</source>
         <translation>Exportieren…</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="72"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="70"/>
         <source>Export Diagram</source>
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="74"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="72"/>
         <source>SVG image (*.svg);;PNG image (*.png)</source>
         <translation>SVG-Bild (*.svg);;PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="79"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="77"/>
         <source>Save the whole diagram as SVG or PNG</source>
         <translation>Das ganze Diagramm als SVG oder PNG speichern</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="112"/>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="285"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="110"/>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="91"/>
         <source>No composed diagram yet. Run stage 3 to compose the launch files.</source>
         <translation>Noch kein Kompositionsdiagramm. Führen Sie Stufe 3 aus, um die Launch-Files zusammenzusetzen.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="286"/>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="92"/>
         <source>This launch file is not part of the architecture.</source>
         <translation>Dieses Launch-File ist nicht Teil der Architektur.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="300"/>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="113"/>
+        <source>Building diagram…</source>
+        <translation>Diagramm wird aufgebaut…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="144"/>
         <source>%1 starts no nodes and includes no launch files.</source>
         <translation>%1 startet keine Knoten und bindet keine Launch-Files ein.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="301"/>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="145"/>
         <source>Every element of %1 is hidden by the filters.</source>
         <translation>Alle Elemente von %1 sind durch die Filter ausgeblendet.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="315"/>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="153"/>
+        <source>%1 has %2 boxes to draw even as an overview; Graphviz would take minutes to lay out more than %3.</source>
+        <translation>%1 hat selbst als Übersicht %2 Kästen; Graphviz bräuchte Minuten, um mehr als %3 anzuordnen.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="155"/>
+        <source>%1 has %2 boxes to draw; Graphviz would take minutes to lay out more than %3. The overview draws fewer.</source>
+        <translation>%1 hat %2 Kästen; Graphviz bräuchte Minuten, um mehr als %3 anzuordnen. Die Übersicht zeichnet weniger.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="159"/>
+        <source>Open one of the launch files it includes from the launch tree, or hide elements with the filters.</source>
+        <translation>Öffnen Sie im Launch-Baum eine der Launch-Dateien, die sie einbindet, oder blenden Sie Elemente mit den Filtern aus.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagrampanelbuild.cpp" line="174"/>
         <source>Laying out…</source>
         <translation>Layout wird berechnet…</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagrampanel.cpp" line="330"/>
+        <location filename="../widgets/diagram/diagrampanel.cpp" line="264"/>
         <source>%1
 
 Collapse namespaces or hide elements to make the diagram smaller, then try again.</source>
@@ -2387,7 +2412,7 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
         <translation>Vorschlag ablehnen</translation>
     </message>
     <message>
-        <location filename="../document/document.cpp" line="261"/>
+        <location filename="../document/document.cpp" line="269"/>
         <source>Accept %1 suggestions</source>
         <translation>%1 Vorschläge annehmen</translation>
     </message>
