@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include <dirent.h>
+#include <sys/stat.h>
 
 namespace rosarch {
 
@@ -49,20 +50,66 @@ SourceFile::Language languageOf(const QString &fileName)
     return SourceFile::Language::Other;
 }
 
-/// The entries of `dir` whose names are not valid UTF-8, decoded lossily.
-QStringList undecodableNames(const QString &dir)
+/// A folder's entry as readdir() gives it: the name, and the type when the file system says it
+/// (DT_UNKNOWN otherwise).
+struct DirEntry
 {
-    QStringList out;
-    DIR *d = opendir(QFile::encodeName(dir).constData());
-    if (!d)
+    QString name;
+    unsigned char type = DT_UNKNOWN;
+};
+
+/// What one pass over a folder's listing finds.
+struct Listing
+{
+    bool opened = false;
+    bool ignored = false;    ///< a COLCON_IGNORE or AMENT_IGNORE is there
+    QList<DirEntry> entries; ///< sorted by name, without "." and ".."
+    QStringList undecodable; ///< names that are not valid UTF-8, decoded lossily, sorted
+};
+
+bool existsAt(int dirFd, const char *name)
+{
+    struct stat st
+    {
+    };
+    return fstatat(dirFd, name, &st, 0) == 0;
+}
+
+/// The folder's entries in one readdir() pass: no stat per entry (the type comes with the
+/// name on the usual file systems), and the ignore markers seen in the listing.
+Listing list(const QString &dir)
+{
+    Listing out;
+    const QByteArray path = QFile::encodeName(dir);
+    DIR *d = opendir(path.constData());
+    if (!d) { // a folder that can be entered but not listed may still say to ignore it
+        struct stat st
+        {
+        };
+        out.ignored = stat((path + "/COLCON_IGNORE").constData(), &st) == 0 ||
+                      stat((path + "/AMENT_IGNORE").constData(), &st) == 0;
         return out;
+    }
+    out.opened = true;
+    const int fd = dirfd(d);
     while (const dirent *e = readdir(d)) {
-        const QByteArray name(e->d_name);
-        if (!name.isValidUtf8())
-            out << QString::fromUtf8(name);
+        const char *raw = e->d_name;
+        if (raw[0] == '.' && (raw[1] == '\0' || (raw[1] == '.' && raw[2] == '\0')))
+            continue;
+        const QByteArray name(raw);
+        if (!name.isValidUtf8()) { // Qt's listings leave these out; they are said, not dropped
+            out.undecodable << QString::fromUtf8(name);
+            continue;
+        }
+        if ((name == "COLCON_IGNORE" || name == "AMENT_IGNORE") &&
+            ((e->d_type != DT_LNK && e->d_type != DT_UNKNOWN) || existsAt(fd, raw)))
+            out.ignored = true; // a marker is one when it exists (a dangling link is none)
+        out.entries.append({QString::fromUtf8(name), e->d_type});
     }
     closedir(d);
-    out.sort();
+    std::sort(out.entries.begin(), out.entries.end(),
+              [](const DirEntry &a, const DirEntry &b) { return a.name < b.name; });
+    out.undecodable.sort();
     return out;
 }
 
@@ -74,7 +121,10 @@ public:
     {
     }
 
-    void walk(const QString &absDir, const QString &relDir, int depth = 0)
+    /// Walks `absDir`, whose canonical path is `canonical` when the caller knows it (a real
+    /// folder below a canonical one), else "" (the root, a symlink), then resolved here.
+    void walk(const QString &absDir, const QString &relDir, QString canonical = QString(),
+              int depth = 0)
     {
         if (m_control.isCanceled())
             return;
@@ -86,8 +136,8 @@ public:
                  relDir);
             return;
         }
-        const QFileInfo dirInfo(absDir);
-        const QString canonical = dirInfo.canonicalFilePath();
+        if (canonical.isEmpty())
+            canonical = QFileInfo(absDir).canonicalFilePath();
         if (!canonical.isEmpty() && !isInside(canonical)) {
             skip(QStringLiteral("symlink-outside"),
                  QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
@@ -110,14 +160,10 @@ public:
             return;
         }
         m_visited.insert(canonical);
-        QDir dir(absDir);
-        if (dir.exists(QStringLiteral("COLCON_IGNORE")) ||
-            dir.exists(QStringLiteral("AMENT_IGNORE")))
+        const Listing listing = list(absDir);
+        if (listing.ignored)
             return;
-        const QFileInfoList entries = dir.entryInfoList(
-            QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System,
-            QDir::Name);
-        if (entries.isEmpty() && !dirInfo.isReadable()) {
+        if (!listing.opened) {
             Diagnostic d;
             d.code = QStringLiteral("unreadable-folder");
             d.message = QStringLiteral("Skipped %1: the folder cannot be read.").arg(relDir);
@@ -125,8 +171,7 @@ public:
             m_ws->diagnostics.append(d);
             return;
         }
-        // Qt leaves out names whose bytes are not UTF-8; they are said, not dropped.
-        for (const QString &name : undecodableNames(absDir)) {
+        for (const QString &name : listing.undecodable) {
             const QString rel = relDir.isEmpty() ? name : relDir + QLatin1Char('/') + name;
             skip(QStringLiteral("unreadable-name"),
                  QStringLiteral("Skipped %1: its name is not valid UTF-8 (shown with \uFFFD), so "
@@ -134,33 +179,57 @@ public:
                      .arg(rel),
                  rel);
         }
-        for (const QFileInfo &e : entries) {
-            const QString rel =
-                relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
-            if (e.isDir()) {
-                if (!isSkippedFolder(e.fileName()))
-                    walk(e.absoluteFilePath(), rel, depth + 1);
+        for (const DirEntry &e : listing.entries) {
+            const QString rel = relDir.isEmpty() ? e.name : relDir + QLatin1Char('/') + e.name;
+            const QString abs = absDir + QLatin1Char('/') + e.name;
+            unsigned char type = e.type;
+            struct stat st
+            {
+            };
+            if (type == DT_UNKNOWN) { // the file system does not say: ask
+                if (lstat(QFile::encodeName(abs).constData(), &st) != 0)
+                    continue;
+                type = S_ISDIR(st.st_mode)   ? DT_DIR
+                       : S_ISLNK(st.st_mode) ? DT_LNK
+                       : S_ISREG(st.st_mode) ? DT_REG
+                                             : DT_UNKNOWN;
+            }
+            if (type == DT_DIR) { // a real folder: its canonical path follows from its parent's
+                if (!isSkippedFolder(e.name))
+                    walk(abs, rel, canonical + QLatin1Char('/') + e.name, depth + 1);
                 continue;
             }
-            if (e.isSymLink() && !e.exists()) {
+            const bool link = type == DT_LNK;
+            if (link && stat(QFile::encodeName(abs).constData(), &st) != 0)
                 continue; // a dangling link is not a source file
-            }
-            if (e.isSymLink() && !isInside(e.canonicalFilePath())) {
-                skip(QStringLiteral("symlink-outside"),
-                     QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
-                         .arg(rel, e.canonicalFilePath()),
-                     rel);
+            if (link && S_ISDIR(st.st_mode)) {
+                if (!isSkippedFolder(e.name))
+                    walk(abs, rel, QString(), depth + 1);
                 continue;
             }
-            const SourceFile::Language lang = languageOf(e.fileName());
+            if (link) {
+                const QString target = QFileInfo(abs).canonicalFilePath();
+                if (!isInside(target)) {
+                    skip(QStringLiteral("symlink-outside"),
+                         QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
+                             .arg(rel, target),
+                         rel);
+                    continue;
+                }
+            }
+            const SourceFile::Language lang = languageOf(e.name);
             if (lang == SourceFile::Language::Other)
                 continue;
-            if (!e.isFile())
+            if (type != DT_REG && !link)
                 continue; // fifos, sockets, devices
+            if (!link && stat(QFile::encodeName(abs).constData(), &st) != 0)
+                continue; // gone since the listing
+            if (!S_ISREG(st.st_mode))
+                continue; // a link to a fifo, a socket, a device
             SourceFile f;
             f.path = rel;
             f.language = lang;
-            f.size = e.size();
+            f.size = st.st_size;
             m_ws->files.append(f);
         }
     }
