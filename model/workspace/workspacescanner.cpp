@@ -3,6 +3,8 @@
 #include "cmakelistsreader.h"
 #include "sourcereader.h"
 
+#include "analysiscache.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -265,35 +267,68 @@ QString parentDir(const QString &relPath)
     return slash < 0 ? QString() : relPath.left(slash);
 }
 
-} // namespace
-
-Workspace WorkspaceScanner::scan(const QString &root, const StageControl &control)
+/// A file the package phase looked at, and what it held then: its digest ("" when it could not
+/// be read) and whether it existed.
+struct Looked
 {
-    Workspace ws;
-    const QFileInfo rootInfo(root);
-    ws.root = rootInfo.canonicalFilePath().isEmpty() ? rootInfo.absoluteFilePath()
-                                                     : rootInfo.canonicalFilePath();
-    if (!rootInfo.isDir()) {
-        Diagnostic d;
-        d.severity = Diagnostic::Severity::Error;
-        d.code = QStringLiteral("no-workspace");
-        d.message = QStringLiteral("%1 is not a folder.").arg(root);
-        ws.diagnostics.append(d);
-        return ws;
-    }
-    control.report(0, 0, QStringLiteral("Scanning %1").arg(ws.root));
-    Walker(ws.root, control, &ws).walk(ws.root, QString());
-    std::sort(ws.files.begin(), ws.files.end(),
-              [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
+    QString path;
+    QByteArray digest;
+    bool exists = false;
+    bool operator==(const Looked &) const = default;
+};
 
+/// What a scan found past its walk, for the next scan of the same workspace in this process:
+/// when that walk finds the same and the build files looked at are unchanged, so is the rest.
+struct ScanMemo
+{
+    QString root;
+    QList<SourceFile> walked;
+    QList<Diagnostic> walkDiagnostics;
+    QHash<QString, QString> skipped;
+    QList<Looked> looked;
+    Workspace result;
+};
+
+/// The same files, apart from their sizes (which the package phase does not read).
+bool sameFiles(const QList<SourceFile> &a, const QList<SourceFile> &b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (qsizetype i = 0; i < a.size(); ++i)
+        if (a.at(i).path != b.at(i).path || a.at(i).language != b.at(i).language)
+            return false;
+    return true;
+}
+
+Looked look(const Workspace &ws, const QString &rel, FileDigests &digests)
+{
+    const QString abs = ws.absolutePath(rel);
+    Looked l{rel, digests.digest(abs), false};
+    l.exists = !l.digest.isEmpty() || QFileInfo::exists(abs);
+    return l;
+}
+
+/// The packages (one per package.xml; its folder owns every file below it) and what their
+/// build files declare. Each file looked at is added to `looked` (when given), with what it held
+/// before it was read: a change after that is seen by the next scan.
+void readPackages(Workspace &ws, const StageControl &control, FileDigests *digests,
+                  QList<Looked> *looked)
+{
     const SourceReader reader(ws.root);
+    auto note = [&](const QString &rel) {
+        if (digests)
+            looked->append(look(ws, rel, *digests));
+    };
+    auto exists = [&](const QString &rel) {
+        note(rel);
+        return QFileInfo::exists(ws.absolutePath(rel));
+    };
     auto load = [&](const QString &rel, QByteArray *content) {
-        if (!QFileInfo::exists(ws.absolutePath(rel)))
+        if (!exists(rel))
             return false;
         return reader.read(rel, content, &ws.diagnostics);
     };
 
-    // Packages: one per package.xml; its folder owns every file below it.
     for (const SourceFile &f : std::as_const(ws.files)) {
         if (f.language != SourceFile::Language::PackageXml)
             continue;
@@ -336,12 +371,65 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
             pkg.executables.append(
                 BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
         if (const FileWork work(control, prefix + QStringLiteral("CMakeLists.txt"));
-            QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt"))) &&
-            !work.skip(&ws.diagnostics)) {
+            exists(prefix + QStringLiteral("CMakeLists.txt")) && !work.skip(&ws.diagnostics)) {
             CMakeListsReader cmake(load);
             pkg.executables.append(
                 cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));
         }
+    }
+}
+
+} // namespace
+
+Workspace WorkspaceScanner::scan(const QString &root, const StageControl &control)
+{
+    Workspace ws;
+    const QFileInfo rootInfo(root);
+    ws.root = rootInfo.canonicalFilePath().isEmpty() ? rootInfo.absoluteFilePath()
+                                                     : rootInfo.canonicalFilePath();
+    if (!rootInfo.isDir()) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Error;
+        d.code = QStringLiteral("no-workspace");
+        d.message = QStringLiteral("%1 is not a folder.").arg(root);
+        ws.diagnostics.append(d);
+        return ws;
+    }
+    control.report(0, 0, QStringLiteral("Scanning %1").arg(ws.root));
+    Walker(ws.root, control, &ws).walk(ws.root, QString());
+    std::sort(ws.files.begin(), ws.files.end(),
+              [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
+
+    // In a long-lived process, the previous scan's packages when nothing they came from changed.
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const bool memo = cache.isEnabled() && !control.isCanceled();
+    const QString kind = QStringLiteral("scan");
+    const QByteArray key("last");
+    if (memo) {
+        if (const std::shared_ptr<const void> kept = cache.recent(kind, key)) {
+            const ScanMemo &m = *static_cast<const ScanMemo *>(kept.get());
+            const auto unchanged = [&] {
+                for (const Looked &l : m.looked)
+                    if (!(look(ws, l.path, cache.digests()) == l))
+                        return false;
+                return true;
+            };
+            if (m.root == ws.root && m.skipped == control.skipped &&
+                sameFiles(m.walked, ws.files) && m.walkDiagnostics == ws.diagnostics &&
+                unchanged()) {
+                Workspace out = m.result;
+                for (qsizetype i = 0; i < out.files.size(); ++i) // an edit changes a file's size
+                    if (out.files.at(i).size != ws.files.at(i).size)
+                        out.files[i].size = ws.files.at(i).size;
+                return out;
+            }
+        }
+    }
+    ScanMemo next{ws.root, ws.files, ws.diagnostics, control.skipped, {}, {}};
+    readPackages(ws, control, memo ? &cache.digests() : nullptr, &next.looked);
+    if (memo && !control.isCanceled()) {
+        next.result = ws;
+        cache.keepRecent(kind, key, std::make_shared<const ScanMemo>(std::move(next)));
     }
     return ws;
 }

@@ -1,6 +1,7 @@
 // The workspace scan lists each folder once (the entry types from the listing, no stat per
 // entry but for the files it keeps and for links): what it finds and what it says of links,
 // ignore markers, skipped folders and special files.
+#include "analysiscache.h"
 #include "testsupport.h"
 #include "workspacescanner.h"
 
@@ -27,6 +28,25 @@ QStringList said(const Workspace &ws)
     QStringList out;
     for (const Diagnostic &d : ws.diagnostics)
         out << d.code + QLatin1Char(' ') + d.evidence.file;
+    return out;
+}
+
+/// Everything a scan gives, as one comparable list.
+QStringList everything(const Workspace &ws)
+{
+    QStringList out{ws.root};
+    for (const RosPackage &p : ws.packages) {
+        out << QStringLiteral("package %1 at %2").arg(p.name, p.path);
+        for (const Executable &e : p.executables)
+            out << QStringLiteral("  %1 %2 %3").arg(e.name, e.target, e.sources.join(u' '));
+    }
+    for (const SourceFile &f : ws.files)
+        out << QStringLiteral("file %1 of %2 (%3 bytes, %4)")
+                   .arg(f.path, f.package)
+                   .arg(f.size)
+                   .arg(int(f.language));
+    for (const Diagnostic &d : ws.diagnostics)
+        out << QStringLiteral("said %1 %2: %3").arg(d.code, d.evidence.file, d.message);
     return out;
 }
 
@@ -118,6 +138,68 @@ private Q_SLOTS:
         QCOMPARE(paths(after),
                  QStringList({QStringLiteral("p/package.xml"), QStringLiteral("p/src/uno.cpp")}));
         QCOMPARE(after.packages.size(), 1);
+    }
+
+    // In a long-lived process a scan keeps what it read past the walk; the next scan uses it only
+    // when the walk finds the same files and no build file it looked at changed.
+    void keptScanSeesChangedBuildFiles()
+    {
+        QTemporaryDir temp;
+        QVERIFY(temp.isValid());
+        const QString root = temp.filePath(QStringLiteral("ws"));
+        AnalysisCache cache(temp.filePath(QStringLiteral("cache")), AnalysisCache::kDefaultMaxBytes,
+                            0);
+        StageControl control;
+        control.cache = &cache;
+        test::writeFile(root + QStringLiteral("/p/package.xml"),
+                        "<package format=\"3\"><name>p</name></package>\n");
+        test::writeFile(root + QStringLiteral("/p/CMakeLists.txt"),
+                        "project(p)\nadd_executable(one src/one.cpp)\nadd_subdirectory(extra)\n");
+        test::writeFile(root + QStringLiteral("/p/extra/CMakeLists.txt"),
+                        "add_executable(three ../src/one.cpp)\n");
+        test::writeFile(root + QStringLiteral("/p/src/one.cpp"), "int one;\n");
+        const auto kept = [&] { return everything(WorkspaceScanner::scan(root, control)); };
+        const auto fresh = [&] {
+            AnalysisCache off{QString()};
+            StageControl plain = control;
+            plain.cache = &off;
+            return everything(WorkspaceScanner::scan(root, plain));
+        };
+        const QStringList first = kept();
+        QCOMPARE(first, fresh());
+        QVERIFY(first.contains(QStringLiteral("  three  ../src/one.cpp")) ||
+                first.join(u'\n').contains(QLatin1String("three")));
+        QVERIFY(cache.recent(QStringLiteral("scan"), QByteArrayLiteral("last")));
+        QCOMPARE(kept(), first);
+
+        // A file's content changed: only its size differs.
+        test::writeFile(root + QStringLiteral("/p/src/one.cpp"), "int one = 1;\n");
+        QCOMPARE(kept(), fresh());
+        QVERIFY(kept() != first);
+        test::writeFile(root + QStringLiteral("/p/CMakeLists.txt"),
+                        "project(p)\nadd_executable(one src/one.cpp)\n"
+                        "add_executable(two src/one.cpp)\nadd_subdirectory(extra)\n");
+        QVERIFY(kept().join(u'\n').contains(QLatin1String("two")));
+        QCOMPARE(kept(), fresh());
+        test::writeFile(root + QStringLiteral("/p/extra/CMakeLists.txt"),
+                        "add_executable(four ../src/one.cpp)\n");
+        QVERIFY(kept().join(u'\n').contains(QLatin1String("four")));
+        QCOMPARE(kept(), fresh());
+        test::writeFile(root + QStringLiteral("/p/package.xml"),
+                        "<package format=\"3\"><name>renamed</name></package>\n");
+        QVERIFY(kept().contains(QStringLiteral("package renamed at p")));
+        QCOMPARE(kept(), fresh());
+        // A setup.cfg appears: a file of the walk, so the walk differs.
+        test::writeFile(root + QStringLiteral("/p/setup.cfg"),
+                        "[options.entry_points]\nconsole_scripts =\n    tool = p.tool:main\n");
+        QCOMPARE(kept(), fresh());
+        // What the control skips is part of it too.
+        control.skipped.insert(QStringLiteral("p/CMakeLists.txt"), QStringLiteral("crashed"));
+        QVERIFY(kept().join(u'\n').contains(QLatin1String("file-skipped")));
+        QCOMPARE(kept(), fresh());
+        control.skipped.clear();
+        QCOMPARE(kept(), fresh());
+        QVERIFY(!kept().join(u'\n').contains(QLatin1String("file-skipped")));
     }
 };
 
