@@ -5,6 +5,8 @@
 #include "analysiscache.h"
 #include "cpplinkmemo.h"
 #include "nodeanalyzer.h"
+#include "recovery.h"
+#include "stagesession.h"
 #include "testsupport.h"
 
 #include <QTemporaryDir>
@@ -278,6 +280,55 @@ private Q_SLOTS:
         const AtomicNodeList fresh = runFresh(m_ws);
         QVERIFY(after == fresh);
         QVERIFY(!(after == before));
+    }
+
+    // The GUI's path: one long-lived worker with the analysis cache on, across edits of every
+    // kind; each result is what a fresh run without the cache gives.
+    void aLongLivedWorkerFollowsEveryChange()
+    {
+        const QByteArray noCache = qgetenv("ROSARCH_NO_CACHE");
+        const QByteArray cacheDir = qgetenv("ROSARCH_CACHE_DIR");
+        qunsetenv("ROSARCH_NO_CACHE");
+        qputenv("ROSARCH_CACHE_DIR", QFile::encodeName(m_cache));
+        const auto restore = qScopeGuard([&] {
+            if (!noCache.isNull())
+                qputenv("ROSARCH_NO_CACHE", noCache);
+            if (cacheDir.isNull())
+                qunsetenv("ROSARCH_CACHE_DIR");
+            else
+                qputenv("ROSARCH_CACHE_DIR", cacheDir);
+        });
+        StageSession session;
+        const auto same = [&](const char *step) {
+            const StageProcess::Result r = session.recover(m_ws, {}, {});
+            QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+            AnalysisCache off{QString()};
+            StageControl fresh;
+            fresh.cache = &off;
+            QVERIFY2(r.recovery == recoverWorkspace(m_ws, {}, fresh), step);
+        };
+        same("first");
+        const QString talker = m_ws + QLatin1Char('/') + kTalker;
+        const QString status = m_ws + QLatin1Char('/') + kStatus;
+        test::writeFile(talker, "// moved\n" + test::readFile(talker));
+        same("lines moved");
+        replaceIn(status, "\"status\"", "\"health_report\"");
+        same("a helper's port");
+        replaceIn(talker, "class Talker : public Base", "class Talker : public Quiet");
+        same("a class's base");
+        test::writeFile(m_ws + QStringLiteral("/linkpkg/src/listener.cpp"), kListenerSource);
+        same("a file added");
+        QVERIFY(QFile::rename(status, m_ws + QStringLiteral("/linkpkg/src/state.cpp")));
+        same("a file renamed");
+        test::copyTree(m_ws + QStringLiteral("/linkpkg"), m_ws + QStringLiteral("/otherpkg"));
+        replaceIn(m_ws + QStringLiteral("/otherpkg/package.xml"), "<name>linkpkg</name>",
+                  "<name>otherpkg</name>");
+        same("a package added");
+        test::writeFile(m_ws + QStringLiteral("/otherpkg/COLCON_IGNORE"), QByteArray());
+        same("a package ignored");
+        QVERIFY(QFile::remove(m_ws + QStringLiteral("/linkpkg/src/listener.cpp")));
+        same("a file removed");
+        QVERIFY2(QDir(m_cache).exists(), "the worker ran without the analysis cache");
     }
 };
 
