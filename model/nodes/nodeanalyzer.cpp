@@ -49,6 +49,14 @@ public:
     {
         for (const EntryPoint &e : entryPoints)
             m_entryPoints.insert(e.file, e);
+        // The node classes by name, in the nodes' order (the linker changes no name).
+        for (qsizetype i = 0; i < nodes->size(); ++i) {
+            const AtomicNode &n = nodes->at(i);
+            if (n.isPlugin())
+                continue; // a pluginlib plugin is loaded by a node, never started itself
+            m_byQualifiedName[stripGlobal(n.qualifiedName)].append(i);
+            m_byClassName[n.className].append(i);
+        }
     }
 
     void linkRegistration(const ComponentRegistration &r)
@@ -94,16 +102,13 @@ private:
     QList<AtomicNode *> byQualifiedName(const QString &qualified, const QString &preferredPackage)
     {
         const QString wanted = stripGlobal(qualified);
-        QList<AtomicNode *> exact, bySimpleName;
-        for (AtomicNode &n : *m_nodes) {
-            if (n.isPlugin())
-                continue; // a pluginlib plugin is loaded by a node, never started itself
-            if (stripGlobal(n.qualifiedName) == wanted)
-                exact.append(&n);
-            else if (n.className == lastSegment(wanted))
-                bySimpleName.append(&n);
-        }
-        QList<AtomicNode *> found = exact.isEmpty() ? bySimpleName : exact;
+        // Those named exactly, else those whose class has the name's last segment.
+        QList<qsizetype> indices = m_byQualifiedName.value(wanted);
+        if (indices.isEmpty())
+            indices = m_byClassName.value(lastSegment(wanted));
+        QList<AtomicNode *> found;
+        for (const qsizetype i : std::as_const(indices))
+            found.append(&(*m_nodes)[i]);
         if (found.size() > 1 && !preferredPackage.isEmpty()) {
             QList<AtomicNode *> same;
             for (AtomicNode *n : std::as_const(found))
@@ -174,6 +179,8 @@ private:
     QList<AtomicNode> *m_nodes;
     QList<Diagnostic> *m_diagnostics;
     QMultiHash<QString, EntryPoint> m_entryPoints;
+    QHash<QString, QList<qsizetype>> m_byQualifiedName; ///< without a leading "::"
+    QHash<QString, QList<qsizetype>> m_byClassName;
 };
 
 bool diagnosticLess(const Diagnostic &a, const Diagnostic &b)

@@ -3,6 +3,8 @@
 #include "cmakelistsreader.h"
 #include "sourcereader.h"
 
+#include "analysiscache.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -11,6 +13,7 @@
 #include <algorithm>
 
 #include <dirent.h>
+#include <sys/stat.h>
 
 namespace rosarch {
 
@@ -49,20 +52,66 @@ SourceFile::Language languageOf(const QString &fileName)
     return SourceFile::Language::Other;
 }
 
-/// The entries of `dir` whose names are not valid UTF-8, decoded lossily.
-QStringList undecodableNames(const QString &dir)
+/// A folder's entry as readdir() gives it: the name, and the type when the file system says it
+/// (DT_UNKNOWN otherwise).
+struct DirEntry
 {
-    QStringList out;
-    DIR *d = opendir(QFile::encodeName(dir).constData());
-    if (!d)
+    QString name;
+    unsigned char type = DT_UNKNOWN;
+};
+
+/// What one pass over a folder's listing finds.
+struct Listing
+{
+    bool opened = false;
+    bool ignored = false;    ///< a COLCON_IGNORE or AMENT_IGNORE is there
+    QList<DirEntry> entries; ///< sorted by name, without "." and ".."
+    QStringList undecodable; ///< names that are not valid UTF-8, decoded lossily, sorted
+};
+
+bool existsAt(int dirFd, const char *name)
+{
+    struct stat st
+    {
+    };
+    return fstatat(dirFd, name, &st, 0) == 0;
+}
+
+/// The folder's entries in one readdir() pass: no stat per entry (the type comes with the
+/// name on the usual file systems), and the ignore markers seen in the listing.
+Listing list(const QString &dir)
+{
+    Listing out;
+    const QByteArray path = QFile::encodeName(dir);
+    DIR *d = opendir(path.constData());
+    if (!d) { // a folder that can be entered but not listed may still say to ignore it
+        struct stat st
+        {
+        };
+        out.ignored = stat((path + "/COLCON_IGNORE").constData(), &st) == 0 ||
+                      stat((path + "/AMENT_IGNORE").constData(), &st) == 0;
         return out;
+    }
+    out.opened = true;
+    const int fd = dirfd(d);
     while (const dirent *e = readdir(d)) {
-        const QByteArray name(e->d_name);
-        if (!name.isValidUtf8())
-            out << QString::fromUtf8(name);
+        const char *raw = e->d_name;
+        if (raw[0] == '.' && (raw[1] == '\0' || (raw[1] == '.' && raw[2] == '\0')))
+            continue;
+        const QByteArray name(raw);
+        if (!name.isValidUtf8()) { // Qt's listings leave these out; they are said, not dropped
+            out.undecodable << QString::fromUtf8(name);
+            continue;
+        }
+        if ((name == "COLCON_IGNORE" || name == "AMENT_IGNORE") &&
+            ((e->d_type != DT_LNK && e->d_type != DT_UNKNOWN) || existsAt(fd, raw)))
+            out.ignored = true; // a marker is one when it exists (a dangling link is none)
+        out.entries.append({QString::fromUtf8(name), e->d_type});
     }
     closedir(d);
-    out.sort();
+    std::sort(out.entries.begin(), out.entries.end(),
+              [](const DirEntry &a, const DirEntry &b) { return a.name < b.name; });
+    out.undecodable.sort();
     return out;
 }
 
@@ -74,7 +123,10 @@ public:
     {
     }
 
-    void walk(const QString &absDir, const QString &relDir, int depth = 0)
+    /// Walks `absDir`, whose canonical path is `canonical` when the caller knows it (a real
+    /// folder below a canonical one), else "" (the root, a symlink), then resolved here.
+    void walk(const QString &absDir, const QString &relDir, QString canonical = QString(),
+              int depth = 0)
     {
         if (m_control.isCanceled())
             return;
@@ -86,8 +138,8 @@ public:
                  relDir);
             return;
         }
-        const QFileInfo dirInfo(absDir);
-        const QString canonical = dirInfo.canonicalFilePath();
+        if (canonical.isEmpty())
+            canonical = QFileInfo(absDir).canonicalFilePath();
         if (!canonical.isEmpty() && !isInside(canonical)) {
             skip(QStringLiteral("symlink-outside"),
                  QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
@@ -110,14 +162,10 @@ public:
             return;
         }
         m_visited.insert(canonical);
-        QDir dir(absDir);
-        if (dir.exists(QStringLiteral("COLCON_IGNORE")) ||
-            dir.exists(QStringLiteral("AMENT_IGNORE")))
+        const Listing listing = list(absDir);
+        if (listing.ignored)
             return;
-        const QFileInfoList entries = dir.entryInfoList(
-            QDir::Dirs | QDir::Files | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System,
-            QDir::Name);
-        if (entries.isEmpty() && !dirInfo.isReadable()) {
+        if (!listing.opened) {
             Diagnostic d;
             d.code = QStringLiteral("unreadable-folder");
             d.message = QStringLiteral("Skipped %1: the folder cannot be read.").arg(relDir);
@@ -125,8 +173,7 @@ public:
             m_ws->diagnostics.append(d);
             return;
         }
-        // Qt leaves out names whose bytes are not UTF-8; they are said, not dropped.
-        for (const QString &name : undecodableNames(absDir)) {
+        for (const QString &name : listing.undecodable) {
             const QString rel = relDir.isEmpty() ? name : relDir + QLatin1Char('/') + name;
             skip(QStringLiteral("unreadable-name"),
                  QStringLiteral("Skipped %1: its name is not valid UTF-8 (shown with \uFFFD), so "
@@ -134,33 +181,57 @@ public:
                      .arg(rel),
                  rel);
         }
-        for (const QFileInfo &e : entries) {
-            const QString rel =
-                relDir.isEmpty() ? e.fileName() : relDir + QLatin1Char('/') + e.fileName();
-            if (e.isDir()) {
-                if (!isSkippedFolder(e.fileName()))
-                    walk(e.absoluteFilePath(), rel, depth + 1);
+        for (const DirEntry &e : listing.entries) {
+            const QString rel = relDir.isEmpty() ? e.name : relDir + QLatin1Char('/') + e.name;
+            const QString abs = absDir + QLatin1Char('/') + e.name;
+            unsigned char type = e.type;
+            struct stat st
+            {
+            };
+            if (type == DT_UNKNOWN) { // the file system does not say: ask
+                if (lstat(QFile::encodeName(abs).constData(), &st) != 0)
+                    continue;
+                type = S_ISDIR(st.st_mode)   ? DT_DIR
+                       : S_ISLNK(st.st_mode) ? DT_LNK
+                       : S_ISREG(st.st_mode) ? DT_REG
+                                             : DT_UNKNOWN;
+            }
+            if (type == DT_DIR) { // a real folder: its canonical path follows from its parent's
+                if (!isSkippedFolder(e.name))
+                    walk(abs, rel, canonical + QLatin1Char('/') + e.name, depth + 1);
                 continue;
             }
-            if (e.isSymLink() && !e.exists()) {
+            const bool link = type == DT_LNK;
+            if (link && stat(QFile::encodeName(abs).constData(), &st) != 0)
                 continue; // a dangling link is not a source file
-            }
-            if (e.isSymLink() && !isInside(e.canonicalFilePath())) {
-                skip(QStringLiteral("symlink-outside"),
-                     QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
-                         .arg(rel, e.canonicalFilePath()),
-                     rel);
+            if (link && S_ISDIR(st.st_mode)) {
+                if (!isSkippedFolder(e.name))
+                    walk(abs, rel, QString(), depth + 1);
                 continue;
             }
-            const SourceFile::Language lang = languageOf(e.fileName());
+            if (link) {
+                const QString target = QFileInfo(abs).canonicalFilePath();
+                if (!isInside(target)) {
+                    skip(QStringLiteral("symlink-outside"),
+                         QStringLiteral("Skipped %1: it links to %2, outside the workspace.")
+                             .arg(rel, target),
+                         rel);
+                    continue;
+                }
+            }
+            const SourceFile::Language lang = languageOf(e.name);
             if (lang == SourceFile::Language::Other)
                 continue;
-            if (!e.isFile())
+            if (type != DT_REG && !link)
                 continue; // fifos, sockets, devices
+            if (!link && stat(QFile::encodeName(abs).constData(), &st) != 0)
+                continue; // gone since the listing
+            if (!S_ISREG(st.st_mode))
+                continue; // a link to a fifo, a socket, a device
             SourceFile f;
             f.path = rel;
             f.language = lang;
-            f.size = e.size();
+            f.size = st.st_size;
             m_ws->files.append(f);
         }
     }
@@ -196,35 +267,68 @@ QString parentDir(const QString &relPath)
     return slash < 0 ? QString() : relPath.left(slash);
 }
 
-} // namespace
-
-Workspace WorkspaceScanner::scan(const QString &root, const StageControl &control)
+/// A file the package phase looked at, and what it held then: its digest ("" when it could not
+/// be read) and whether it existed.
+struct Looked
 {
-    Workspace ws;
-    const QFileInfo rootInfo(root);
-    ws.root = rootInfo.canonicalFilePath().isEmpty() ? rootInfo.absoluteFilePath()
-                                                     : rootInfo.canonicalFilePath();
-    if (!rootInfo.isDir()) {
-        Diagnostic d;
-        d.severity = Diagnostic::Severity::Error;
-        d.code = QStringLiteral("no-workspace");
-        d.message = QStringLiteral("%1 is not a folder.").arg(root);
-        ws.diagnostics.append(d);
-        return ws;
-    }
-    control.report(0, 0, QStringLiteral("Scanning %1").arg(ws.root));
-    Walker(ws.root, control, &ws).walk(ws.root, QString());
-    std::sort(ws.files.begin(), ws.files.end(),
-              [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
+    QString path;
+    QByteArray digest;
+    bool exists = false;
+    bool operator==(const Looked &) const = default;
+};
 
+/// What a scan found past its walk, for the next scan of the same workspace in this process:
+/// when that walk finds the same and the build files looked at are unchanged, so is the rest.
+struct ScanMemo
+{
+    QString root;
+    QList<SourceFile> walked;
+    QList<Diagnostic> walkDiagnostics;
+    QHash<QString, QString> skipped;
+    QList<Looked> looked;
+    Workspace result;
+};
+
+/// The same files, apart from their sizes (which the package phase does not read).
+bool sameFiles(const QList<SourceFile> &a, const QList<SourceFile> &b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (qsizetype i = 0; i < a.size(); ++i)
+        if (a.at(i).path != b.at(i).path || a.at(i).language != b.at(i).language)
+            return false;
+    return true;
+}
+
+Looked look(const Workspace &ws, const QString &rel, FileDigests &digests)
+{
+    const QString abs = ws.absolutePath(rel);
+    Looked l{rel, digests.digest(abs), false};
+    l.exists = !l.digest.isEmpty() || QFileInfo::exists(abs);
+    return l;
+}
+
+/// The packages (one per package.xml; its folder owns every file below it) and what their
+/// build files declare. Each file looked at is added to `looked` (when given), with what it held
+/// before it was read: a change after that is seen by the next scan.
+void readPackages(Workspace &ws, const StageControl &control, FileDigests *digests,
+                  QList<Looked> *looked)
+{
     const SourceReader reader(ws.root);
+    auto note = [&](const QString &rel) {
+        if (digests)
+            looked->append(look(ws, rel, *digests));
+    };
+    auto exists = [&](const QString &rel) {
+        note(rel);
+        return QFileInfo::exists(ws.absolutePath(rel));
+    };
     auto load = [&](const QString &rel, QByteArray *content) {
-        if (!QFileInfo::exists(ws.absolutePath(rel)))
+        if (!exists(rel))
             return false;
         return reader.read(rel, content, &ws.diagnostics);
     };
 
-    // Packages: one per package.xml; its folder owns every file below it.
     for (const SourceFile &f : std::as_const(ws.files)) {
         if (f.language != SourceFile::Language::PackageXml)
             continue;
@@ -267,12 +371,65 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
             pkg.executables.append(
                 BuildFileParser::readSetupCfg(content, prefix + QStringLiteral("setup.cfg")));
         if (const FileWork work(control, prefix + QStringLiteral("CMakeLists.txt"));
-            QFileInfo::exists(ws.absolutePath(prefix + QStringLiteral("CMakeLists.txt"))) &&
-            !work.skip(&ws.diagnostics)) {
+            exists(prefix + QStringLiteral("CMakeLists.txt")) && !work.skip(&ws.diagnostics)) {
             CMakeListsReader cmake(load);
             pkg.executables.append(
                 cmake.read(prefix + QStringLiteral("CMakeLists.txt"), &ws.diagnostics));
         }
+    }
+}
+
+} // namespace
+
+Workspace WorkspaceScanner::scan(const QString &root, const StageControl &control)
+{
+    Workspace ws;
+    const QFileInfo rootInfo(root);
+    ws.root = rootInfo.canonicalFilePath().isEmpty() ? rootInfo.absoluteFilePath()
+                                                     : rootInfo.canonicalFilePath();
+    if (!rootInfo.isDir()) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Error;
+        d.code = QStringLiteral("no-workspace");
+        d.message = QStringLiteral("%1 is not a folder.").arg(root);
+        ws.diagnostics.append(d);
+        return ws;
+    }
+    control.report(0, 0, QStringLiteral("Scanning %1").arg(ws.root));
+    Walker(ws.root, control, &ws).walk(ws.root, QString());
+    std::sort(ws.files.begin(), ws.files.end(),
+              [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
+
+    // In a long-lived process, the previous scan's packages when nothing they came from changed.
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const bool memo = cache.isEnabled() && !control.isCanceled();
+    const QString kind = QStringLiteral("scan");
+    const QByteArray key("last");
+    if (memo) {
+        if (const std::shared_ptr<const void> kept = cache.recent(kind, key)) {
+            const ScanMemo &m = *static_cast<const ScanMemo *>(kept.get());
+            const auto unchanged = [&] {
+                for (const Looked &l : m.looked)
+                    if (!(look(ws, l.path, cache.digests()) == l))
+                        return false;
+                return true;
+            };
+            if (m.root == ws.root && m.skipped == control.skipped &&
+                sameFiles(m.walked, ws.files) && m.walkDiagnostics == ws.diagnostics &&
+                unchanged()) {
+                Workspace out = m.result;
+                for (qsizetype i = 0; i < out.files.size(); ++i) // an edit changes a file's size
+                    if (out.files.at(i).size != ws.files.at(i).size)
+                        out.files[i].size = ws.files.at(i).size;
+                return out;
+            }
+        }
+    }
+    ScanMemo next{ws.root, ws.files, ws.diagnostics, control.skipped, {}, {}};
+    readPackages(ws, control, memo ? &cache.digests() : nullptr, &next.looked);
+    if (memo && !control.isCanceled()) {
+        next.result = ws;
+        cache.keepRecent(kind, key, std::make_shared<const ScanMemo>(std::move(next)));
     }
     return ws;
 }

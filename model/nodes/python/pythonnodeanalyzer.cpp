@@ -42,6 +42,15 @@ QString modulePath(const QString &file, const QString &packagePath,
     }
     return parts.isEmpty() ? stem : parts.join(QLatin1Char('.'));
 }
+
+/// The last analysis of this process, for the next: when every file's cache key is the same
+/// (so is every file's result, which the key determines), so is the analysis.
+struct PythonMemo
+{
+    QString root;
+    QList<QByteArray> keys; ///< of the files, in order
+    LanguageAnalysis result;
+};
 } // namespace
 
 PythonNodeAnalyzer::PythonNodeAnalyzer(const Workspace &workspace) : m_workspace(workspace) {}
@@ -62,6 +71,43 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
     const SourceReader reader(m_workspace.root);
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     const int total = int(files.size());
+    const auto moduleOf = [&](const SourceFile *file) {
+        const RosPackage *package = m_workspace.package(file->package);
+        return modulePath(file->path, package ? package->path : QString(), pythonFiles);
+    };
+    const auto keyOf = [&](const SourceFile *file, const QString &module,
+                           const QByteArray &digest) {
+        return AnalysisCache::key(
+            {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), digest});
+    };
+
+    // Every file's key from its digest, taken before it is read (a change after that is seen by
+    // the next run); none when a file cannot be read or is skipped.
+    QList<QByteArray> keys;
+    if (cache.isEnabled()) {
+        for (const SourceFile *file : std::as_const(files)) {
+            const QByteArray digest =
+                control.skipped.contains(file->path)
+                    ? QByteArray()
+                    : cache.digests().digest(m_workspace.absolutePath(file->path));
+            if (digest.isEmpty()) {
+                keys.clear();
+                break;
+            }
+            keys.append(keyOf(file, moduleOf(file), digest));
+        }
+    }
+    const QString memoKind = QStringLiteral("pythonrun");
+    const QByteArray memoKey("last");
+    if (!keys.isEmpty() && !control.isCanceled())
+        if (const std::shared_ptr<const void> kept = cache.recent(memoKind, memoKey)) {
+            const PythonMemo &memo = *static_cast<const PythonMemo *>(kept.get());
+            if (memo.root == m_workspace.root && memo.keys == keys) {
+                control.report(total, total, QString());
+                return memo.result;
+            }
+        }
+
     int done = 0;
     QMutex reportMutex;
     auto analyzeFile = [&](const SourceFile *file) {
@@ -76,13 +122,7 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         FileWork work(control, file->path, FileWork::Start::Later);
         if (work.skip(&r.diagnostics))
             return r;
-        const RosPackage *package = m_workspace.package(file->package);
-        const QString module =
-            modulePath(file->path, package ? package->path : QString(), pythonFiles);
-        const auto keyOf = [&](const QByteArray &digest) {
-            return AnalysisCache::key(
-                {"python", file->path.toUtf8(), file->package.toUtf8(), module.toUtf8(), digest});
-        };
+        const QString module = moduleOf(file);
         const auto fromCache = [&](const QByteArray &key) {
             if (std::optional<PythonFileResult> cached = stagememo::loadWith<PythonFileResult>(
                     cache, QStringLiteral("python"), key, &PythonFactsCodec::decode)) {
@@ -96,7 +136,7 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         QByteArray known;
         if (cache.isEnabled())
             known = cache.digests().digest(m_workspace.absolutePath(file->path));
-        if (!known.isEmpty() && fromCache(keyOf(known)))
+        if (!known.isEmpty() && fromCache(keyOf(file, module, known)))
             return r;
         work.start();
         QByteArray content;
@@ -105,8 +145,8 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
             r.diagnostics += read;
             return r;
         }
-        const QByteArray key = keyOf(FileDigests::digestOf(content));
-        if (key != keyOf(known) && fromCache(key)) // changed since it was hashed
+        const QByteArray key = keyOf(file, module, FileDigests::digestOf(content));
+        if (key != keyOf(file, module, known) && fromCache(key)) // changed since it was hashed
             return r;
         PythonFileResult analysed = analyzeContent(content, file->path, file->package, module);
         analysed.diagnostics = read + analysed.diagnostics;
@@ -128,6 +168,10 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
             modules.append(*r.module);
     }
     PythonNodeLinker(modules).link(&result);
+    if (!keys.isEmpty())
+        cache.keepRecent(
+            memoKind, memoKey,
+            std::make_shared<const PythonMemo>(PythonMemo{m_workspace.root, keys, result}));
     return result;
 }
 

@@ -1,3 +1,4 @@
+#include "analysiscache.h"
 #include "pythonanalysis.h"
 #include "pythonnodeanalyzer.h"
 #include "syntaxtree.h"
@@ -455,6 +456,64 @@ private Q_SLOTS:
             QCOMPARE(first.nodes, second.nodes);
             QCOMPARE(first.entryPoints, second.entryPoints);
         }
+    }
+
+    // In a long-lived process the analysis is reused while every file's key is the same; an
+    // edited, added or removed file, or one skipped, analyses again: always what a fresh run gives.
+    void keptAnalysisFollowsEdits()
+    {
+        QTemporaryDir temp;
+        QVERIFY(temp.isValid());
+        const QString root = temp.filePath(QStringLiteral("ws"));
+        test::copyTree(test::dataDir(QStringLiteral("compose_system/ws")), root);
+        AnalysisCache cache(temp.filePath(QStringLiteral("cache")), AnalysisCache::kDefaultMaxBytes,
+                            0);
+        StageControl control;
+        control.cache = &cache;
+        const auto kept = [&] {
+            return PythonNodeAnalyzer(WorkspaceScanner::scan(root, control)).analyze(control);
+        };
+        const auto fresh = [&] {
+            AnalysisCache off{QString()};
+            StageControl plain = control;
+            plain.cache = &off;
+            return PythonNodeAnalyzer(WorkspaceScanner::scan(root, plain)).analyze(plain);
+        };
+        const auto topics = [](const LanguageAnalysis &a) {
+            QStringList out;
+            for (const AtomicNode &n : a.nodes)
+                for (const Port &p : n.ports)
+                    out << n.className + QLatin1Char(' ') + p.name;
+            return out;
+        };
+        const auto same = [&](const LanguageAnalysis &a, const LanguageAnalysis &b) {
+            return a.nodes == b.nodes && a.entryPoints == b.entryPoints &&
+                   a.registrations == b.registrations && a.diagnostics == b.diagnostics;
+        };
+        const LanguageAnalysis first = kept();
+        QVERIFY(same(first, fresh()));
+        QVERIFY(topics(first).contains(QStringLiteral("Planner cmd_vel")));
+        QVERIFY(same(kept(), first));
+
+        const QString planner = root + QStringLiteral("/src/planning/planning/planner.py");
+        QByteArray text = test::readFile(planner);
+        text.replace("'cmd_vel'", "'cmd_vel_out'");
+        test::writeFile(planner, text);
+        QVERIFY(topics(kept()).contains(QStringLiteral("Planner cmd_vel_out")));
+        QVERIFY(same(kept(), fresh()));
+        test::writeFile(root + QStringLiteral("/src/planning/planning/extra.py"),
+                        "from rclpy.node import Node\n\n\nclass Extra(Node):\n"
+                        "    def __init__(self):\n        super().__init__('extra')\n"
+                        "        self.create_publisher(Empty, 'extra_topic', 1)\n");
+        QVERIFY(topics(kept()).contains(QStringLiteral("Extra extra_topic")));
+        QVERIFY(same(kept(), fresh()));
+        QVERIFY(QFile::remove(root + QStringLiteral("/src/planning/planning/extra.py")));
+        QVERIFY(!topics(kept()).contains(QStringLiteral("Extra extra_topic")));
+        QVERIFY(same(kept(), fresh()));
+        control.skipped.insert(QStringLiteral("src/planning/planning/planner.py"),
+                               QStringLiteral("crashed"));
+        QVERIFY(!topics(kept()).contains(QStringLiteral("Planner cmd_vel_out")));
+        QVERIFY(same(kept(), fresh()));
     }
 };
 
