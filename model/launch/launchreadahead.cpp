@@ -1,0 +1,74 @@
+#include "launchreadahead.h"
+
+#include "analysiscache.h"
+#include "sourcereader.h"
+
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentMap>
+
+#ifdef Q_OS_LINUX
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
+namespace rosarch {
+
+namespace {
+
+/// The calling thread yields to every other thread of the process (Linux: per-thread nice).
+void lowestPriority()
+{
+#ifdef Q_OS_LINUX
+    setpriority(PRIO_PROCESS, id_t(gettid()), 19);
+#endif
+}
+
+} // namespace
+
+LaunchReadAhead::LaunchReadAhead(const Workspace &workspace, const StageControl &control)
+    : m_workspace(workspace), m_control(control), m_files(LaunchFileIndex::candidates(workspace)),
+      m_reads(size_t(m_files.size()))
+{
+    if (QThreadPool::globalInstance()->maxThreadCount() < 2)
+        return;
+    m_thread = std::thread([this] {
+        lowestPriority();
+        readSome();
+    });
+}
+
+LaunchReadAhead::~LaunchReadAhead()
+{
+    m_stop = true;
+    if (m_thread.joinable())
+        m_thread.join();
+}
+
+void LaunchReadAhead::readSome()
+{
+    const SourceReader reader(m_workspace.root);
+    AnalysisCache &cache = m_control.cache ? *m_control.cache : AnalysisCache::shared();
+    for (;;) {
+        const qsizetype i = m_next++;
+        if (i >= m_files.size() || m_stop || m_control.isCanceled())
+            return;
+        m_reads[size_t(i)] = LaunchFileIndex::read(*m_files.at(i), reader, m_control, cache);
+    }
+}
+
+std::optional<QList<LaunchFileRead>> LaunchReadAhead::take()
+{
+    if (!m_thread.joinable())
+        return std::nullopt;
+    // What is left, on this thread and the pool's; then the reading thread's file in hand.
+    std::vector<int> readers(size_t(QThreadPool::globalInstance()->maxThreadCount()));
+    QtConcurrent::blockingMap(readers, [this](int &) { readSome(); });
+    m_thread.join();
+    m_stop = true;
+    if (m_control.isCanceled())
+        return std::nullopt;
+    return QList<LaunchFileRead>(std::make_move_iterator(m_reads.begin()),
+                                 std::make_move_iterator(m_reads.end()));
+}
+
+} // namespace rosarch
