@@ -6,24 +6,7 @@
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
-#ifdef Q_OS_LINUX
-#include <sys/resource.h>
-#include <unistd.h>
-#endif
-
 namespace rosarch {
-
-namespace {
-
-/// The calling thread yields to every other thread of the process (Linux: per-thread nice).
-void lowestPriority()
-{
-#ifdef Q_OS_LINUX
-    setpriority(PRIO_PROCESS, id_t(gettid()), 19);
-#endif
-}
-
-} // namespace
 
 LaunchReadAhead::LaunchReadAhead(const Workspace &workspace, const StageControl &control)
     : m_workspace(workspace), m_control(control), m_files(LaunchFileIndex::candidates(workspace)),
@@ -31,10 +14,7 @@ LaunchReadAhead::LaunchReadAhead(const Workspace &workspace, const StageControl 
 {
     if (QThreadPool::globalInstance()->maxThreadCount() < 2)
         return;
-    m_thread = std::thread([this] {
-        lowestPriority();
-        readSome();
-    });
+    m_thread = std::thread([this] { readSome(); });
 }
 
 LaunchReadAhead::~LaunchReadAhead()

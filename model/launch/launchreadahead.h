@@ -12,11 +12,13 @@
 namespace rosarch {
 
 /// Stage 2's reading of the launch files (LaunchFileIndex::read), begun while stage 1 still
-/// runs: it needs nothing of stage 1's result. A thread of its own, at the lowest scheduling
-/// priority, reads the files one after the other, so that it takes only the time stage 1 leaves
-/// a core idle (its serial parts); take() reads what is left on every pool thread. Started
-/// only when stage 1 analyses (a stage-1 memo hit means a stage-2 memo hit, most likely), and
-/// never with one analysis thread (the worker's serial mode: one file at a time in flight).
+/// runs: it needs nothing of stage 1's result. A thread of its own reads the files one after
+/// the other next to stage 1's threads, so that stage 1's serial parts (the linkers, the macro
+/// index) leave no core idle; take() reads what is left on every pool thread. Its thread runs
+/// at the ordinary priority: at a lower one it would hold the analysis cache's lock (and the
+/// worker's output lock) while stage 1's threads wait for it. Started only when stage 1
+/// analyses (a stage-1 memo hit means a stage-2 memo hit, most likely), and never with one
+/// analysis thread (the worker's serial mode: one file at a time in flight).
 class LaunchReadAhead
 {
 public:
