@@ -236,7 +236,11 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                                        LaunchReadAhead *readAhead)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")}); // see NodeAnalyzer::run
+    // See NodeAnalyzer::run; a read-ahead began the run of the "launch" entries already.
+    if (readAhead && readAhead->reading())
+        cache.startRun({QStringLiteral("stage2")});
+    else
+        cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")});
     QByteArray key;
     QList<Evidence> locations; // of `nodes` that the result may hold
     if (cache.isEnabled()) {

@@ -3,6 +3,7 @@
 #include "analysiscache.h"
 #include "sourcereader.h"
 
+#include <QDir>
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
@@ -12,8 +13,16 @@ LaunchReadAhead::LaunchReadAhead(const Workspace &workspace, const StageControl 
     : m_workspace(workspace), m_control(control), m_files(LaunchFileIndex::candidates(workspace)),
       m_reads(size_t(m_files.size()))
 {
-    if (QThreadPool::globalInstance()->maxThreadCount() < 2)
+    AnalysisCache &cache = m_control.cache ? *m_control.cache : AnalysisCache::shared();
+    // A cache with entries may answer stage 2 by its memo: reading ahead would be work thrown
+    // away, and what it decoded would depend on how far it got.
+    if (QThreadPool::globalInstance()->maxThreadCount() < 2 ||
+        (cache.isEnabled() &&
+         !QDir(cache.directory()).entryList({QStringLiteral("*.pack")}, QDir::Files).isEmpty()))
         return;
+    // The run of the "launch" entries begins here, not in LaunchAnalyzer::run: what the reading
+    // decodes stays for the next run even when the reading outlasts the start of stage 2.
+    cache.startRun({QStringLiteral("launch")});
     m_thread = std::thread([this] { readSome(); });
 }
 

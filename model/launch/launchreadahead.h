@@ -16,13 +16,16 @@ namespace rosarch {
 /// the other next to stage 1's threads, so that stage 1's serial parts (the linkers, the macro
 /// index) leave no core idle; take() reads what is left on every pool thread. Its thread runs
 /// at the ordinary priority: at a lower one it would hold the analysis cache's lock (and the
-/// worker's output lock) while stage 1's threads wait for it. Started only when stage 1
-/// analyses (a stage-1 memo hit means a stage-2 memo hit, most likely), and never with one
-/// analysis thread (the worker's serial mode: one file at a time in flight).
+/// worker's output lock) while stage 1's threads wait for it. Made only when stage 1 analyses;
+/// it reads only on a cold run (the cache off, or its folder without entries: a cache with
+/// entries will most likely answer stage 2 by its memo), and never with one analysis thread
+/// (the worker's serial mode: one file at a time in flight).
 class LaunchReadAhead
 {
 public:
     LaunchReadAhead(const Workspace &workspace, const StageControl &control);
+    /// Whether it reads (else take() gives nothing and stage 2 reads the files itself).
+    bool reading() const { return m_thread.joinable(); }
     /// Stops after the file in hand and waits for it.
     ~LaunchReadAhead();
     LaunchReadAhead(const LaunchReadAhead &) = delete;

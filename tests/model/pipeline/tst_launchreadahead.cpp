@@ -125,6 +125,21 @@ private Q_SLOTS:
         QVERIFY(!reads); // stage 2 reads them itself, one file at a time
     }
 
+    void aCacheWithEntriesReadsNothingAhead()
+    {
+        QTemporaryDir folder;
+        AnalysisCache cache(folder.path(), AnalysisCache::kDefaultMaxBytes, 0);
+        StageControl control;
+        control.cache = &cache;
+        const QString root = workspace("compose_system/ws");
+        const Workspace ws = WorkspaceScanner::scan(root, control);
+        QVERIFY(LaunchReadAhead(ws, control).reading()); // cold: nothing to answer stage 2
+        const Recovery cold = recoverWorkspace(root, {}, control);
+        QVERIFY(cold == serially(root, uncached()));
+        QVERIFY(!LaunchReadAhead(ws, control).reading()); // its memo will, most likely
+        QVERIFY(recoverWorkspace(root, {}, control) == cold);
+    }
+
     void aCancelDuringTheOverlapEndsTheRun_data()
     {
         QTest::addColumn<int>("after");
