@@ -3,6 +3,7 @@
 #include "evidenceshift.h"
 #include "launchexecutor.h"
 #include "launchfileindex.h"
+#include "launchreadahead.h"
 #include "pythonlaunchreader.h"
 #include "rosnames.h"
 #include "sourcereader.h"
@@ -60,11 +61,22 @@ void runClassifiers(const Workspace &workspace, const AtomicNodeList &nodes,
     out->classifierNodes = std::move(alone.nodes);
 }
 
+/// The index of the launch files, from what `readAhead` read when it did.
+LaunchFileIndex indexOf(const Workspace &workspace, const StageControl &control,
+                        LaunchReadAhead *readAhead, QList<Diagnostic> *diagnostics)
+{
+    if (readAhead)
+        if (std::optional<QList<LaunchFileRead>> reads = readAhead->take())
+            return LaunchFileIndex(workspace, std::move(*reads), control, diagnostics);
+    return LaunchFileIndex(workspace, control, diagnostics);
+}
+
 LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nodes,
-                           const LaunchOptions &options, const StageControl &control)
+                           const LaunchOptions &options, const StageControl &control,
+                           LaunchReadAhead *readAhead)
 {
     LaunchDependencies out;
-    const LaunchFileIndex index(workspace, control, &out.diagnostics);
+    const LaunchFileIndex index = indexOf(workspace, control, readAhead, &out.diagnostics);
     if (control.isCanceled()) {
         out.canceled = true;
         return out;
@@ -220,10 +232,15 @@ ExtraFiles extraFiles(const Workspace &workspace, const LaunchDependencies &out,
 } // namespace
 
 LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
-                                       const LaunchOptions &options, const StageControl &control)
+                                       const LaunchOptions &options, const StageControl &control,
+                                       LaunchReadAhead *readAhead)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")}); // see NodeAnalyzer::run
+    // See NodeAnalyzer::run; a read-ahead began the run of the "launch" entries already.
+    if (readAhead && readAhead->reading())
+        cache.startRun({QStringLiteral("stage2")});
+    else
+        cache.startRun({QStringLiteral("stage2"), QStringLiteral("launch")});
     QByteArray key;
     QList<Evidence> locations; // of `nodes` that the result may hold
     if (cache.isEnabled()) {
@@ -259,7 +276,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                 }
             }
         }
-    LaunchDependencies out = analyse(workspace, nodes, options, control);
+    LaunchDependencies out = analyse(workspace, nodes, options, control, readAhead);
     if (!key.isEmpty() && !out.canceled && cache.isEnabled())
         cache.store(QStringLiteral("stage2"), key,
                     cachecodec::encode(
@@ -273,8 +290,8 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
 std::optional<LaunchFileDescription> LaunchAnalyzer::read(const SourceFile &f,
                                                           const QByteArray &content)
 {
-    if (f.language == SourceFile::Language::Python && PythonLaunchReader::isLaunchFile(content))
-        return PythonLaunchReader::read(content, f.path);
+    if (f.language == SourceFile::Language::Python)
+        return PythonLaunchReader::readIfLaunchFile(content, f.path);
     if (f.language == SourceFile::Language::Xml && XmlLaunchReader::isLaunchFile(content))
         return XmlLaunchReader::read(content, f.path);
     if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))

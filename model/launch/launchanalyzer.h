@@ -13,6 +13,8 @@
 
 namespace rosarch {
 
+class LaunchReadAhead;
+
 /// What a person chose for stage 2: the root launch file and launch argument values.
 struct LaunchOptions
 {
@@ -28,9 +30,11 @@ struct LaunchOptions
 class LaunchAnalyzer
 {
 public:
+    /// With `readAhead`, the launch files it read (when it did) are not read again.
     static LaunchDependencies run(const Workspace &workspace, const AtomicNodeList &nodes,
                                   const LaunchOptions &options = {},
-                                  const StageControl &control = {});
+                                  const StageControl &control = {},
+                                  LaunchReadAhead *readAhead = nullptr);
     /// `content` read by the reader of the file's format (Python, XML, YAML) when it is a
     /// launch file of that format; none otherwise.
     static std::optional<LaunchFileDescription> read(const SourceFile &file,

@@ -13,14 +13,6 @@ namespace rosarch {
 
 namespace {
 
-/// One candidate file, read.
-struct Read
-{
-    bool readable = false;
-    QList<Diagnostic> readProblems; ///< already reported by the node analyzers for .py
-    std::optional<LaunchFileDescription> description;
-};
-
 bool isCandidate(const SourceFile &f)
 {
     return f.language == SourceFile::Language::Python || f.language == SourceFile::Language::Xml ||
@@ -29,50 +21,73 @@ bool isCandidate(const SourceFile &f)
 
 } // namespace
 
+QList<const SourceFile *> LaunchFileIndex::candidates(const Workspace &ws)
+{
+    QList<const SourceFile *> out;
+    for (const SourceFile &f : ws.files)
+        if (isCandidate(f))
+            out.append(&f);
+    return out;
+}
+
+LaunchFileRead LaunchFileIndex::read(const SourceFile &f, const SourceReader &reader,
+                                     const StageControl &control, AnalysisCache &cache)
+{
+    LaunchFileRead r;
+    if (control.isCanceled())
+        return r;
+    const FileWork work(control, f.path);
+    QByteArray content;
+    if (work.skip(&r.readProblems) || !reader.read(f.path, &content, &r.readProblems))
+        return r;
+    r.readable = true;
+    // Only a Python file that names the launch function can be one; the test is cheap.
+    if (f.language == SourceFile::Language::Python &&
+        !content.contains("generate_launch_description"))
+        return r;
+    const QByteArray key = AnalysisCache::key(
+        {"launch", f.path.toUtf8(), QByteArray::number(int(f.language)), content});
+    using Description = std::optional<LaunchFileDescription>;
+    if (std::optional<Description> cached = stagememo::loadWith<Description>(
+            cache, QStringLiteral("launch"), key, &LaunchFileCodec::decode)) {
+        r.description = std::move(*cached);
+        return r;
+    }
+    r.description = LaunchAnalyzer::read(f, content);
+    cache.store(QStringLiteral("launch"), key, LaunchFileCodec::encode(r.description));
+    return r;
+}
+
 LaunchFileIndex::LaunchFileIndex(const Workspace &ws, const StageControl &control,
                                  QList<Diagnostic> *diagnostics)
+    : LaunchFileIndex(
+          ws,
+          [&] {
+              const SourceReader reader(ws.root);
+              AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+              return QtConcurrent::blockingMapped<QList<LaunchFileRead>>(
+                  candidates(ws),
+                  std::function<LaunchFileRead(const SourceFile *)>(
+                      [&](const SourceFile *f) { return read(*f, reader, control, cache); }));
+          }(),
+          control, diagnostics)
 {
-    const SourceReader reader(ws.root);
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    QList<const SourceFile *> candidates;
-    QList<int> positions; // in ws.files, for the progress reports
-    for (qsizetype i = 0; i < ws.files.size(); ++i)
-        if (isCandidate(ws.files.at(i))) {
-            candidates.append(&ws.files.at(i));
-            positions.append(int(i + 1));
-        }
-    auto readFile = [&](const SourceFile *f) {
-        Read r;
-        if (control.isCanceled())
-            return r;
-        const FileWork work(control, f->path);
-        QByteArray content;
-        if (work.skip(&r.readProblems) || !reader.read(f->path, &content, &r.readProblems))
-            return r;
-        r.readable = true;
-        // Only a Python file that names the launch function can be one; the test is cheap.
-        if (f->language == SourceFile::Language::Python &&
-            !content.contains("generate_launch_description"))
-            return r;
-        const QByteArray key = AnalysisCache::key(
-            {"launch", f->path.toUtf8(), QByteArray::number(int(f->language)), content});
-        using Description = std::optional<LaunchFileDescription>;
-        if (std::optional<Description> cached = stagememo::loadWith<Description>(
-                cache, QStringLiteral("launch"), key, &LaunchFileCodec::decode)) {
-            r.description = std::move(*cached);
-            return r;
-        }
-        r.description = LaunchAnalyzer::read(*f, content);
-        cache.store(QStringLiteral("launch"), key, LaunchFileCodec::encode(r.description));
-        return r;
-    };
-    QList<Read> reads = QtConcurrent::blockingMapped<QList<Read>>(
-        candidates, std::function<Read(const SourceFile *)>(readFile));
+}
+
+LaunchFileIndex::LaunchFileIndex(const Workspace &ws, QList<LaunchFileRead> reads,
+                                 const StageControl &control, QList<Diagnostic> *diagnostics)
+{
     if (control.isCanceled())
         return;
-    for (qsizetype i = 0; i < candidates.size(); ++i) {
-        const SourceFile &f = *candidates.at(i);
-        Read &r = reads[i];
+    QList<int> positions; // in ws.files, for the progress reports
+    for (qsizetype i = 0; i < ws.files.size(); ++i)
+        if (isCandidate(ws.files.at(i)))
+            positions.append(int(i + 1));
+    const QList<const SourceFile *> files = candidates(ws);
+    Q_ASSERT(reads.size() == files.size());
+    for (qsizetype i = 0; i < files.size() && i < reads.size(); ++i) {
+        const SourceFile &f = *files.at(i);
+        LaunchFileRead &r = reads[i];
         const bool python = f.language == SourceFile::Language::Python;
         if (!r.readable) {
             if (!python)

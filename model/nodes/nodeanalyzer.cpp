@@ -264,7 +264,8 @@ QByteArray memoKey(const Workspace &workspace, const StageControl &control, Anal
 
 } // namespace
 
-AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control)
+AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control,
+                                 const std::function<void()> &analysing)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     // What this process decoded in the last run of stage 1 stays for this one (the long-lived
@@ -277,6 +278,8 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
     if (!key.isEmpty())
         list = stagememo::load<AtomicNodeList>(cache, QStringLiteral("stage1"), key);
     if (!list) {
+        if (analysing)
+            analysing();
         list = analyse(workspace, control);
         if (!key.isEmpty() && !list->canceled)
             cache.store(QStringLiteral("stage1"), key, cachecodec::encode(*list));

@@ -4,6 +4,8 @@
 #include "stagecontrol.h"
 #include "workspace.h"
 
+#include <functional>
+
 namespace rosarch {
 
 /// Stage 1: runs the Python and C++ analyzers over a scanned workspace and links the node
@@ -11,7 +13,9 @@ namespace rosarch {
 class NodeAnalyzer
 {
 public:
-    static AtomicNodeList run(const Workspace &workspace, const StageControl &control = {});
+    /// `analysing` is called when the files are to be analysed (no memo of the whole stage).
+    static AtomicNodeList run(const Workspace &workspace, const StageControl &control = {},
+                              const std::function<void()> &analysing = {});
 };
 
 /// Convenience: scan `root` and run stage 1.

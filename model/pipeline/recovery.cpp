@@ -1,6 +1,7 @@
 #include "recovery.h"
 #include "composearchitecture.h"
 #include "evidenceshift.h"
+#include "launchreadahead.h"
 #include "nodeanalyzer.h"
 #include "workspacescanner.h"
 
@@ -69,13 +70,17 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     };
     const StageControl stage1 = control.forStage(1);
     const Workspace ws = WorkspaceScanner::scan(root, stage1);
-    r.nodes = NodeAnalyzer::run(ws, stage1);
+    const StageControl stage2 = control.forStage(2);
+    // Stage 2's reading of the launch files runs in what stage 1 leaves of the cores.
+    std::optional<LaunchReadAhead> readAhead;
+    r.nodes = NodeAnalyzer::run(ws, stage1, [&] { readAhead.emplace(ws, stage2); });
     if (r.nodes.canceled || control.isCanceled()) {
         r.launch.canceled = true;
         return r;
     }
     timed(1);
-    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, control.forStage(2));
+    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr);
+    readAhead.reset();
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);

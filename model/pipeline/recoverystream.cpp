@@ -21,6 +21,144 @@ template <class F> void fields(StageRequest &v, F f)
 
 } // namespace
 
+namespace {
+
+/// The strings of one result written so far (writeResult) or read so far (readResult). A
+/// result repeats file paths, names, types and parameter values thousands of times (nav2's is
+/// ~22 MB written out in full); each is sent once and then by its number, and the reader's
+/// copies share one buffer. Off (null) outside writeResult and readResult.
+struct StringTable
+{
+    QHash<QString, quint32> numbers; ///< writing: string -> number (1-based; 0 = null string)
+    QList<QString> strings;          ///< reading: number - 1 -> string
+};
+thread_local StringTable *strings = nullptr;
+
+/// Turns the string table on for one result on this thread.
+class StringScope
+{
+public:
+    explicit StringScope(StringTable *table) { strings = table; }
+    ~StringScope() { strings = nullptr; }
+    StringScope(const StringScope &) = delete;
+    StringScope &operator=(const StringScope &) = delete;
+};
+
+/// Refuses counts no honest result has, so that a damaged one cannot ask for gigabytes.
+constexpr quint32 kMaxCount = 1u << 24;
+
+void put(QDataStream &s, const QString &v)
+{
+    if (!strings) {
+        s << v;
+        return;
+    }
+    if (v.isNull()) {
+        s << quint32(0);
+        return;
+    }
+    const auto known = strings->numbers.constFind(v);
+    if (known != strings->numbers.cend()) {
+        s << *known;
+        return;
+    }
+    const auto number = quint32(strings->numbers.size() + 1);
+    strings->numbers.insert(v, number);
+    s << number << v;
+}
+
+void get(QDataStream &s, QString &v)
+{
+    if (!strings) {
+        s >> v;
+        return;
+    }
+    quint32 number = 0;
+    s >> number;
+    if (number == 0) {
+        v = QString();
+    } else if (number <= quint32(strings->strings.size())) {
+        v = strings->strings.at(number - 1);
+    } else if (number == quint32(strings->strings.size()) + 1) {
+        s >> v;
+        strings->strings.append(v);
+    } else {
+        s.setStatus(QDataStream::ReadCorruptData);
+    }
+}
+
+template <class T> void put(QDataStream &s, const T &v);
+template <class T> void get(QDataStream &s, T &v);
+
+template <class X, class Y> void put(QDataStream &s, const QPair<X, Y> &v)
+{
+    put(s, v.first);
+    put(s, v.second);
+}
+template <class X, class Y> void get(QDataStream &s, QPair<X, Y> &v)
+{
+    get(s, v.first);
+    get(s, v.second);
+}
+
+template <class T> void put(QDataStream &s, const QList<T> &v)
+{
+    s << quint32(v.size());
+    for (const T &x : v)
+        put(s, x);
+}
+template <class T> void get(QDataStream &s, QList<T> &v)
+{
+    quint32 n = 0;
+    s >> n;
+    v.clear();
+    if (n > kMaxCount) {
+        s.setStatus(QDataStream::ReadCorruptData);
+        return;
+    }
+    v.reserve(n);
+    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i)
+        get(s, v.emplace_back());
+}
+
+template <class K, class V> void put(QDataStream &s, const QMap<K, V> &v)
+{
+    s << quint32(v.size());
+    for (auto it = v.cbegin(); it != v.cend(); ++it) {
+        put(s, it.key());
+        put(s, it.value());
+    }
+}
+template <class K, class V> void get(QDataStream &s, QMap<K, V> &v)
+{
+    quint32 n = 0;
+    s >> n;
+    v.clear();
+    if (n > kMaxCount) {
+        s.setStatus(QDataStream::ReadCorruptData);
+        return;
+    }
+    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i) {
+        K key;
+        V value;
+        get(s, key);
+        get(s, value);
+        v.insert(key, value);
+    }
+}
+
+/// Scalars, enums and the model types (their operators below).
+template <class T> void put(QDataStream &s, const T &v)
+{
+    s << v;
+}
+template <class T> void get(QDataStream &s, T &v)
+{
+    s >> v;
+}
+
+} // namespace
+
 // Declared first so that the containers' stream operators find the nested types by ADL.
 #define ROSARCH_DECLARE_STREAM(T)                                                                  \
     QDataStream &operator<<(QDataStream &s, const T &v);                                           \
@@ -50,12 +188,12 @@ ROSARCH_DECLARE_STREAM(Architecture)
 #define ROSARCH_DEFINE_STREAM(T)                                                                   \
     QDataStream &operator<<(QDataStream &s, const T &v)                                            \
     {                                                                                              \
-        fields(const_cast<T &>(v), [&s](const auto &...x) { (s << ... << x); });                   \
+        fields(const_cast<T &>(v), [&s](const auto &...x) { (put(s, x), ...); });                  \
         return s;                                                                                  \
     }                                                                                              \
     QDataStream &operator>>(QDataStream &s, T &v)                                                  \
     {                                                                                              \
-        fields(v, [&s](auto &...x) { (s >> ... >> x); });                                          \
+        fields(v, [&s](auto &...x) { (get(s, x), ...); });                                         \
         return s;                                                                                  \
     }
 ROSARCH_DEFINE_STREAM(Evidence)
@@ -104,7 +242,7 @@ template <class T> void writeList(QDataStream &s, const QList<T> &v, const QList
     for (qsizetype i = 0; i < v.size(); ++i) {
         s << same.at(i);
         if (!same.at(i))
-            s << v.at(i);
+            put(s, v.at(i));
     }
 }
 
@@ -133,13 +271,10 @@ template <class T> void readList(QDataStream &s, QList<T> &v, const QList<T> &ba
             s.setStatus(QDataStream::ReadCorruptData);
             return;
         }
-        if (same) {
+        if (same)
             v.append(base.at(i));
-        } else {
-            T element;
-            s >> element;
-            v.append(std::move(element));
-        }
+        else
+            get(s, v.emplace_back());
     }
 }
 
@@ -168,17 +303,21 @@ namespace stagestream {
 
 void writeResult(QDataStream &s, const Recovery &v, const Recovery &base)
 {
+    StringTable table;
+    const StringScope scope(&table);
     deltaFields(
         v, base, [&s](const auto &list, const auto &from) { writeList(s, list, from); },
-        [&s](const auto &...x) { (s << ... << x); });
+        [&s](const auto &...x) { (put(s, x), ...); });
 }
 
 bool readResult(QDataStream &s, Recovery *v, const Recovery &base)
 {
     *v = {};
+    StringTable table;
+    const StringScope scope(&table);
     deltaFields(
         *v, base, [&s](auto &list, const auto &from) { readList(s, list, from); },
-        [&s](auto &...x) { (s >> ... >> x); });
+        [&s](auto &...x) { (get(s, x), ...); });
     return s.status() == QDataStream::Ok;
 }
 

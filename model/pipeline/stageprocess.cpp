@@ -30,7 +30,9 @@ StageProcess::Result StageProcess::recover(const QString &root, const LaunchOpti
                                            const StageControl &control, const Options &process)
 {
     StageSession once(process, false);
-    return once.recover(root, options, control);
+    Result r = once.recover(root, options, control);
+    once.releaseWorker(); // it writes its cache after it replied: nobody needs to wait for that
+    return r;
 }
 
 StageProcess::Result StageProcess::launch(const QString &root, const AtomicNodeList &nodes,
@@ -38,7 +40,9 @@ StageProcess::Result StageProcess::launch(const QString &root, const AtomicNodeL
                                           const Options &process)
 {
     StageSession once(process, false);
-    return once.launch(root, nodes, options, control);
+    Result r = once.launch(root, nodes, options, control);
+    once.releaseWorker();
+    return r;
 }
 
 } // namespace rosarch

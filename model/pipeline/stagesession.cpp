@@ -103,6 +103,13 @@ StageSession::~StageSession()
     m_worker.stop();
 }
 
+void StageSession::releaseWorker()
+{
+    QMutexLocker lock(&m_mutex);
+    m_worker.release();
+    m_base = {};
+}
+
 void StageSession::setOptions(const StageProcess::Options &options)
 {
     QMutexLocker lock(&m_mutex);

@@ -34,6 +34,10 @@ public:
     StageProcess::Result launch(const QString &root, const AtomicNodeList &nodes,
                                 const LaunchOptions &options, const StageControl &control);
 
+    /// Lets the worker go without waiting for it to leave (WorkerProcess::release): for a
+    /// session of one run, whose worker still writes its cache after it replied.
+    void releaseWorker();
+
     /// The worker's process id (-1 when none runs), and how many the session started: for tests.
     qint64 workerPid();
     int workersStarted();

@@ -2,6 +2,10 @@
 
 #include <QFile>
 
+#include <mutex>
+#include <thread>
+#include <vector>
+
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -61,6 +65,36 @@ void sleepMs(int ms)
 {
     const timespec t{ms / 1000, long(ms % 1000) * 1000000L};
     nanosleep(&t, nullptr);
+}
+
+/// The threads that reap released workers; joined when the process exits, so that a released
+/// worker's last writes (its cache pack) end before the process does.
+class Reapers
+{
+public:
+    ~Reapers() { joinAll(); }
+    void joinAll()
+    {
+        const std::lock_guard lock(m_mutex);
+        for (std::thread &t : m_threads)
+            t.join();
+        m_threads.clear();
+    }
+    void add(std::thread t)
+    {
+        const std::lock_guard lock(m_mutex);
+        m_threads.push_back(std::move(t));
+    }
+
+private:
+    std::mutex m_mutex;
+    std::vector<std::thread> m_threads;
+};
+
+Reapers &reapers()
+{
+    static Reapers r;
+    return r;
 }
 
 } // namespace
@@ -199,6 +233,38 @@ void WorkerProcess::stop(int graceMs)
     }
     closeAll();
     m_pid = -1;
+}
+
+void WorkerProcess::release(int graceMs)
+{
+    if (m_pid <= 0 || m_exited) {
+        stop(0);
+        return;
+    }
+    closeFd(&m_in); // an idle worker leaves on end-of-file
+    // Its stdout and stderr stay open until it is reaped: a write to a closed pipe would kill
+    // it in the middle of its cache write.
+    const pid_t pid = m_pid;
+    const int out = m_out, err = m_err;
+    m_pid = -1;
+    m_out = m_err = -1;
+    reapers().add(std::thread([pid, out, err, graceMs] {
+        WorkerProcess w;
+        w.m_pid = pid;
+        w.m_out = out;
+        w.m_err = err;
+        for (int waited = 0; waited < graceMs && !w.reap(false); waited += 5) {
+            w.poll(5);
+            w.m_stdout.clear();
+            w.m_stderr.clear();
+        }
+        w.stop(0); // kills it if it is still there, and closes the pipes
+    }));
+}
+
+void WorkerProcess::waitForReleased()
+{
+    reapers().joinAll();
 }
 
 void WorkerProcess::closeAll()

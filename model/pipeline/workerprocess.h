@@ -43,6 +43,12 @@ public:
     void kill();
     /// Closes its stdin, gives it `graceMs` to leave, then kills it; forgets it.
     void stop(int graceMs = 300);
+    /// stop() without waiting: a thread of its own gives it `graceMs` to leave, kills it then,
+    /// and reaps it; this process waits for such threads when it exits. For a worker that has
+    /// replied and only writes its cache before it leaves.
+    void release(int graceMs = 300);
+    /// Waits until every worker released so far is reaped.
+    static void waitForReleased();
 
 private:
     void drain(int fd, QByteArray *into);

@@ -6,6 +6,7 @@
 #include "stageprocess.h"
 #include "stagesession.h"
 #include "syntaxtree.h"
+#include "workerprocess.h"
 #include "workspacescanner.h"
 
 #include <QDirIterator>
@@ -114,19 +115,21 @@ int childMain(const QString &path, const QString &root)
     QElapsedTimer timer;
     timer.start();
     qint64 rss = 0;
+    qint64 ms = 0;
     if (path == QLatin1String("worker")) {
         const StageProcess::Result r = StageProcess::recover(root, {}, {}, {});
+        ms = timer.elapsed(); // the worker writes its cache after that, on its own
         if (!r.error.isEmpty()) {
             QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << r.error << '\n';
             return 1;
         }
+        WorkerProcess::waitForReleased();
         rss = maxRssKb(RUSAGE_CHILDREN); // the worker, which did the analysis
     } else {
         const Recovery r = recoverWorkspace(root);
-        Q_UNUSED(r);
+        ms = timer.elapsed();
         rss = maxRssKb(RUSAGE_SELF);
     }
-    const qint64 ms = timer.elapsed();
     QTextStream(stdout) << ms << ' ' << rss << '\n';
     return 0;
 }
