@@ -19,12 +19,18 @@ struct JobRunner::Job
     ErasedDone done;
     QFutureWatcher<std::shared_ptr<void>> *watcher = nullptr;
 
+    struct Progress
+    {
+        qint64 done = 0;
+        qint64 total = 0;
+        QString what;
+        int step = 0;
+    };
+
     QMutex mutex;
-    bool hasProgress = false;
-    qint64 doneCount = 0;
-    qint64 total = 0;
-    QString what;
-    int step = 0;
+    /// The latest report of each step since the last delivery, in order: a step that ends
+    /// between two deliveries still shows its last report, not only the next step's.
+    QList<Progress> progress;
     QStringList lines;
     QString error;
     int tick = 0; ///< QFuture progress must grow: the future carries a tick, this the numbers
@@ -75,11 +81,12 @@ int JobRunner::startErased(ErasedWork work, ErasedDone done)
                                                int step) {
                 {
                     QMutexLocker lock(&job->mutex);
-                    job->hasProgress = true;
-                    job->doneCount = done;
-                    job->total = total;
-                    job->what = what;
-                    job->step = step;
+                    if (job->progress.isEmpty() || job->progress.last().step != step) {
+                        if (job->progress.size() >= 8) // steps taking turns: a bound
+                            job->progress.removeFirst();
+                        job->progress.append({done, total, what, step});
+                    } else
+                        job->progress.last() = {done, total, what, step};
                 }
                 notify();
             };
@@ -116,25 +123,16 @@ void JobRunner::deliver(const std::shared_ptr<Job> &job)
     if (job->generation != m_generation)
         return; // a newer job supersedes this one
     QStringList lines;
-    bool hasProgress = false;
-    qint64 done = 0;
-    qint64 total = 0;
-    QString what;
-    int step = 0;
+    QList<Job::Progress> progress;
     {
         QMutexLocker lock(&job->mutex);
-        step = job->step;
         lines.swap(job->lines);
-        hasProgress = job->hasProgress;
-        job->hasProgress = false;
-        done = job->doneCount;
-        total = job->total;
-        what = job->what;
+        progress.swap(job->progress);
     }
     for (const QString &line : std::as_const(lines))
         Q_EMIT logged(line);
-    if (hasProgress)
-        Q_EMIT progressed(done, total, what, step);
+    for (const Job::Progress &p : std::as_const(progress))
+        Q_EMIT progressed(p.done, p.total, p.what, p.step);
 }
 
 void JobRunner::finish(const std::shared_ptr<Job> &job)

@@ -52,6 +52,36 @@ private Q_SLOTS:
         QCOMPARE(progressed.last().at(2).toString(), QStringLiteral("half"));
     }
 
+    void eachStepShowsItsLastReportWhenStepsEndBetweenDeliveries()
+    {
+        // Before: only the latest report reached the window, so a stage that finished between
+        // two deliveries (a fast stage 2) never showed its progress at all.
+        JobRunner runner;
+        QList<std::pair<int, qint64>> shown; // step, done
+        connect(&runner, &JobRunner::progressed, this,
+                [&](qint64 done, qint64, const QString &, int step) {
+                    shown.append({step, done});
+                });
+        bool finished = false;
+        // All reports are made before the runner's thread delivers any: the job runs while
+        // this thread does not process events.
+        QSemaphore made;
+        runner.start<int>(
+            [&made](const JobControl &control) {
+                for (int step = 1; step <= 3; ++step)
+                    for (int i = 1; i <= 10; ++i)
+                        control.progress(i, 10, QStringLiteral("file %1").arg(i), step);
+                made.release();
+                return 0;
+            },
+            [&](int, bool) { finished = true; });
+        QVERIFY(made.tryAcquire(1, 10000));
+        QTRY_VERIFY(finished);
+        QCOMPARE(shown.size(), 3);
+        for (int step = 1; step <= 3; ++step)
+            QCOMPARE(shown.at(step - 1), (std::pair<int, qint64>{step, 10}));
+    }
+
     void aNewerJobDropsTheOlderResult()
     {
         JobRunner runner;
