@@ -47,6 +47,18 @@ public:
 /// Refuses counts no honest result has, so that a damaged one cannot ask for gigabytes.
 constexpr quint32 kMaxCount = 1u << 24;
 
+/// Reads a count of items that follow; false (and the stream marked corrupt) when it is more
+/// than any real reply holds.
+bool countIn(QDataStream &s, quint32 *n)
+{
+    *n = 0;
+    s >> *n;
+    if (*n <= kMaxCount)
+        return true;
+    s.setStatus(QDataStream::ReadCorruptData);
+    return false;
+}
+
 void put(QDataStream &s, const QString &v)
 {
     if (!strings) {
@@ -110,12 +122,9 @@ template <class T> void put(QDataStream &s, const QList<T> &v)
 template <class T> void get(QDataStream &s, QList<T> &v)
 {
     quint32 n = 0;
-    s >> n;
     v.clear();
-    if (n > kMaxCount) {
-        s.setStatus(QDataStream::ReadCorruptData);
+    if (!countIn(s, &n))
         return;
-    }
     v.reserve(n);
     for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i)
         get(s, v.emplace_back());
@@ -132,12 +141,9 @@ template <class K, class V> void put(QDataStream &s, const QMap<K, V> &v)
 template <class K, class V> void get(QDataStream &s, QMap<K, V> &v)
 {
     quint32 n = 0;
-    s >> n;
     v.clear();
-    if (n > kMaxCount) {
-        s.setStatus(QDataStream::ReadCorruptData);
+    if (!countIn(s, &n))
         return;
-    }
     for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i) {
         K key;
         V value;
