@@ -116,9 +116,7 @@ const CorrectionIndex &CorrectionController::index()
 
 QString CorrectionController::keyOf(const QString &id)
 {
-    if (StableKeys::family(id) == QLatin1String("topic") ||
-        StableKeys::family(id) == QLatin1String("service") ||
-        StableKeys::family(id) == QLatin1String("action"))
+    if (StableKeys::isChannelKey(id))
         return id;
     if (index().isEmpty()) // no corrections: the model as recovered is the corrected one
         return m_document->keyOf(id);
@@ -127,9 +125,7 @@ QString CorrectionController::keyOf(const QString &id)
 
 bool CorrectionController::keysAtHand(const QString &id)
 {
-    const QString family = StableKeys::family(id);
-    return family == QLatin1String("topic") || family == QLatin1String("service") ||
-           family == QLatin1String("action") || !index().isEmpty() || m_document->keysReady();
+    return StableKeys::isChannelKey(id) || !index().isEmpty() || m_document->keysReady();
 }
 
 bool CorrectionController::ask(CorrectionDialog &dialog)
@@ -475,8 +471,7 @@ void CorrectionController::showCorrection(const QString &id)
         for (const LaunchFileInstance &lf : m_document->accepted().launch.instances)
             if (StableKeys::launchKey(lf) == c->target && elementId.isEmpty())
                 elementId = lf.id;
-    if (family == QLatin1String("topic") || family == QLatin1String("service") ||
-        family == QLatin1String("action")) {
+    if (StableKeys::isChannelKey(c->target)) {
         QString name = c->target.section(u':', 1);
         if (c->kind == Correction::Kind::Rename)
             name = c->newValue;

@@ -176,8 +176,7 @@ private:
         if (family == QLatin1String("port")) {
             if (Port *p = port(c.target))
                 setPortName(p, c.newValue);
-        } else if (family == QLatin1String("topic") || family == QLatin1String("service") ||
-                   family == QLatin1String("action")) {
+        } else if (StableKeys::isChannelKey(c.target)) {
             if (knows(c.target)) {
                 m_renamed.insert(c.target, c.newValue);
                 m_composeAgain = true;

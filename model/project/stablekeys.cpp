@@ -82,6 +82,13 @@ QString StableKeys::family(const QString &key)
     return families.contains(f) ? f : QString();
 }
 
+bool StableKeys::isChannelKey(const QString &key)
+{
+    const QString f = family(key);
+    return f == QLatin1String("topic") || f == QLatin1String("service") ||
+           f == QLatin1String("action");
+}
+
 void StableKeys::add(const QString &id, const QString &key)
 {
     if (!m_keyOfId.contains(id))

@@ -55,6 +55,8 @@ public:
     /// The family of a key: "class", "port", "instance", "include", "part", "topic", ... ("" if
     /// it is not a key).
     static QString family(const QString &key);
+    /// True for a `topic:`, `service:` or `action:` key: a resolved name, its own key.
+    static bool isChannelKey(const QString &key);
 
 private:
     void add(const QString &id, const QString &key);
