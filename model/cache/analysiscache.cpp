@@ -14,6 +14,7 @@
 #include <QTemporaryFile>
 #include <QtEndian>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -105,6 +106,7 @@ AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWi
 AnalysisCache::~AnalysisCache()
 {
     flushDeferred();
+    waitForWrites();
 }
 
 AnalysisCache &AnalysisCache::shared()
@@ -234,6 +236,10 @@ std::optional<QByteArray> AnalysisCache::load(const QString &kind, const QByteAr
             ++m_hits;
             return m_pending.at(size_t(*pending)).second;
         }
+        if (const auto writing = m_writingAt.constFind(id); writing != m_writingAt.constEnd()) {
+            ++m_hits;
+            return m_writing.at(size_t(*writing)).second;
+        }
         openPacks();
         const auto it = m_index.constFind(id);
         if (it == m_index.constEnd()) {
@@ -314,72 +320,114 @@ bool AnalysisCache::writePack(const std::vector<std::pair<QByteArray, QByteArray
     return true;
 }
 
-void AnalysisCache::compact()
+bool AnalysisCache::compact(QString *error)
 {
     // The largest pack stays as it is (rewriting it each time would cost what the cache
-    // saves); the others and this run's entries become one.
+    // saves); the others and the entries being written become one. Read outside the lock
+    // (loads go on meanwhile): packs are never changed in place.
+    std::vector<std::shared_ptr<Pack>> packs;
+    QHash<QByteArray, Location> index;
+    {
+        QMutexLocker lock(&m_mutex);
+        openPacks();
+        packs = m_packs;
+        index = m_index;
+    }
     size_t largest = 0;
-    for (size_t i = 1; i < m_packs.size(); ++i)
-        if (m_packs[i]->file.size() > m_packs[largest]->file.size())
+    for (size_t i = 1; i < packs.size(); ++i)
+        if (packs[i]->file.size() > packs[largest]->file.size())
             largest = i;
     std::vector<std::pair<QByteArray, QByteArray>> merged;
-    for (auto it = m_index.cbegin(); it != m_index.cend(); ++it) {
-        if (size_t(it->pack) == largest || m_pendingAt.contains(it.key()))
+    for (auto it = index.cbegin(); it != index.cend(); ++it) {
+        if (size_t(it->pack) == largest || m_writingAt.contains(it.key()))
             continue;
-        if (std::optional<QByteArray> payload = read(*m_packs.at(size_t(it->pack)), *it))
+        if (std::optional<QByteArray> payload = read(*packs.at(size_t(it->pack)), *it))
             merged.emplace_back(it.key(), std::move(*payload));
     }
-    for (auto &entry : m_pending)
-        merged.push_back(std::move(entry));
-    QString error;
-    if (!writePack(merged, &error)) {
-        fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
-                 .arg(m_directory, error));
-        return;
-    }
-    for (size_t i = 0; i < m_packs.size(); ++i)
+    merged.insert(merged.end(), m_writing.cbegin(), m_writing.cend());
+    if (!writePack(merged, error))
+        return false;
+    for (size_t i = 0; i < packs.size(); ++i)
         if (i != largest)
-            QFile::remove(m_packs[i]->path); // another process may have removed it already
+            QFile::remove(packs[i]->path); // another process may have removed it already
+    return true;
 }
 
 void AnalysisCache::flush()
 {
-    if (!m_deferFlush)
-        flushDeferred();
+    if (m_deferFlush)
+        return;
+    flushDeferred();
+    waitForWrites();
 }
 
 void AnalysisCache::flushDeferred()
 {
+    QMutexLocker writer(&m_writerMutex);
+    if (m_writer.joinable()) // writes stay in the order begun
+        m_writer.join();
     if (!m_enabled)
         return;
-    QString error;
-    if (!m_digests->save(&error)) {
-        fail(QStringLiteral("The analysis cache could not write its file digests to %1 (%2)")
-                 .arg(m_directory, error));
-        return;
-    }
     {
         QMutexLocker lock(&m_mutex);
-        if (m_pending.empty())
-            return;
-        openPacks();
-        if (int(m_packs.size()) + 1 > kMaxPacks) {
-            compact();
-        } else if (!writePack(m_pending, &error)) {
-            lock.unlock();
-            fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
-                     .arg(m_directory, error));
-            return;
-        }
+        m_writing = std::move(m_pending);
+        m_writingAt = std::move(m_pendingAt);
         m_pending.clear();
         m_pendingAt.clear();
-        // The next load reads the folder again, with this run's pack and other processes'.
-        m_packs.clear();
-        m_index.clear();
-        m_opened = false;
-        m_storedSinceTrim = true;
     }
-    trim();
+    if (m_writing.empty() && !m_digests->changed())
+        return;
+    // In a long-lived worker the next run goes on while this one's pack is written: the
+    // writer yields to it.
+    const bool lowPriority = m_deferFlush;
+    m_writer = std::thread([this, lowPriority] { write(lowPriority); });
+}
+
+void AnalysisCache::waitForWrites()
+{
+    QMutexLocker writer(&m_writerMutex);
+    if (m_writer.joinable())
+        m_writer.join();
+}
+
+void AnalysisCache::write(bool lowPriority)
+{
+    if (lowPriority)
+        setpriority(PRIO_PROCESS, id_t(::gettid()), 10); // this thread's; best effort
+    QString error;
+    QString problem;
+    if (!m_digests->save(&error)) {
+        problem = QStringLiteral("The analysis cache could not write its file digests to %1 (%2)")
+                      .arg(m_directory, error);
+    } else if (!m_writing.empty()) {
+        bool merge = false;
+        {
+            QMutexLocker lock(&m_mutex);
+            openPacks();
+            merge = int(m_packs.size()) + 1 > kMaxPacks;
+        }
+        if (!(merge ? compact(&error) : writePack(m_writing, &error)))
+            problem = QStringLiteral("The analysis cache could not write to %1 (%2)")
+                          .arg(m_directory, error);
+    }
+    if (!problem.isEmpty())
+        fail(problem); // before the entries leave memory: no load sees them gone meanwhile
+    const bool wrote = !m_writing.empty() && problem.isEmpty();
+    {
+        QMutexLocker lock(&m_mutex);
+        m_writing.clear();
+        m_writingAt.clear();
+        if (wrote) {
+            // The next load reads the folder again, with this pack and other processes'.
+            m_packs.clear();
+            m_index.clear();
+            m_opened = false;
+        }
+    }
+    if (wrote) {
+        m_storedSinceTrim = true;
+        trim();
+    }
 }
 
 void AnalysisCache::fail(const QString &why)
