@@ -133,6 +133,7 @@ AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWi
 
 AnalysisCache::~AnalysisCache()
 {
+    waitForWrites();
     flushDeferred();
     waitForWrites();
 }
@@ -385,6 +386,7 @@ void AnalysisCache::flush()
 {
     if (m_deferFlush)
         return;
+    waitForWrites();
     flushDeferred();
     waitForWrites();
 }
@@ -392,8 +394,13 @@ void AnalysisCache::flush()
 void AnalysisCache::flushDeferred()
 {
     QMutexLocker writer(&m_writerMutex);
-    if (m_writer.joinable()) // writes stay in the order begun
+    if (m_writer.joinable()) {
+        // Still writing: these entries go with the next flush (loads find them meanwhile), so
+        // that writes stay one at a time, in order, and the caller never waits for one.
+        if (!m_written.load())
+            return;
         m_writer.join();
+    }
     if (!m_enabled)
         return;
     {
@@ -408,7 +415,11 @@ void AnalysisCache::flushDeferred()
     // In a long-lived worker the next run goes on while this one's pack is written: the
     // writer yields to it.
     const bool lowPriority = m_deferFlush;
-    m_writer = std::thread([this, lowPriority] { write(lowPriority); });
+    m_written = false;
+    m_writer = std::thread([this, lowPriority] {
+        write(lowPriority);
+        m_written = true;
+    });
 }
 
 void AnalysisCache::waitForWrites()

@@ -93,10 +93,10 @@ public:
     /// its pack to be written; a problem writing it is said by the next run.
     void setDeferFlush(bool defer) { m_deferFlush = defer; }
     /// Flushes, deferred or not, without waiting: the entries stored so far are written by a
-    /// thread of low priority (loads find them in memory meanwhile), after the writes begun
-    /// before. The next run goes on at once; waitForWrites() waits.
+    /// thread of low priority (loads find them in memory meanwhile); while one is still being
+    /// written, they wait in memory for the next call. The next run goes on at once.
     void flushDeferred();
-    /// Waits for the writes flushDeferred() began (the cache's destructor does too).
+    /// Waits for the write flushDeferred() began (the destructor waits, then writes the rest).
     void waitForWrites();
 
     /// Values decoded from entries in this process, so that a long-lived worker does not decode
@@ -160,6 +160,7 @@ private:
 
     QMutex m_writerMutex; ///< guards m_writer: one write at a time, in the order begun
     std::thread m_writer;
+    std::atomic<bool> m_written{true}; ///< m_writer is done
 
     struct Recent
     {

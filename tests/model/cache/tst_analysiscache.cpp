@@ -288,8 +288,9 @@ private Q_SLOTS:
     void theNextRunGoesOnWhilePacksAreWritten()
     {
         // Back-to-back runs of a long-lived worker: each flushDeferred() writes in the
-        // background while the next run loads and stores; every entry is found throughout,
-        // the last store of a key wins, and the writes end as complete packs.
+        // background while the next run loads and stores (or, while a write still runs, leaves
+        // its entries for the next one); every entry is found throughout, the last store of a
+        // key wins, and the writes end as complete packs.
         constexpr int kRuns = 3 * AnalysisCache::kMaxPacks; // merges happen in the background too
         constexpr int kPerRun = 40;
         {
