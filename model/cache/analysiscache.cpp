@@ -14,6 +14,7 @@
 #include <QTemporaryFile>
 #include <QtEndian>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -44,6 +45,34 @@ constexpr quint32 kMaxIndexEntries = 1u << 22;
 QByteArray checksum(QByteArrayView bytes)
 {
     return QCryptographicHash::hash(bytes, QCryptographicHash::Sha1);
+}
+
+/// An entry's checksum: it guards against damage, not against forgery (the index that holds it
+/// has a SHA-1), so it is a fast one. Two 64-bit lanes over 8-byte words, multiply-mixed; a
+/// warm run checks megabytes of entries, which SHA-1 took ~10 ms for on nav2.
+QByteArray entryChecksum(QByteArrayView bytes)
+{
+    constexpr quint64 kA = 0x9e3779b97f4a7c15ull, kB = 0xc2b2ae3d27d4eb4full;
+    quint64 a = kA ^ quint64(bytes.size()), b = kB + quint64(bytes.size());
+    const auto mix = [](quint64 h, quint64 w, quint64 k) {
+        h ^= w * k;
+        h = (h << 31) | (h >> 33);
+        return h * 0xff51afd7ed558ccdull;
+    };
+    const char *p = bytes.data();
+    qsizetype left = bytes.size();
+    for (; left >= 16; p += 16, left -= 16) {
+        a = mix(a, qFromLittleEndian<quint64>(p), kB);
+        b = mix(b, qFromLittleEndian<quint64>(p + 8), kA);
+    }
+    char tail[16] = {};
+    std::memcpy(tail, p, size_t(left));
+    a = mix(a, qFromLittleEndian<quint64>(tail), kB);
+    b = mix(b, qFromLittleEndian<quint64>(tail + 8), kA);
+    a ^= b >> 29;
+    b ^= a >> 31;
+    const quint64 out[2] = {qToBigEndian(mix(a, b, kA)), qToBigEndian(mix(b, a, kB))};
+    return QByteArray(reinterpret_cast<const char *>(out), sizeof out);
 }
 
 QByteArray readAt(QFile &file, qint64 offset, qint64 length)
@@ -104,7 +133,9 @@ AnalysisCache::AnalysisCache(const QString &root, qint64 maxBytes, qint64 racyWi
 
 AnalysisCache::~AnalysisCache()
 {
+    waitForWrites();
     flushDeferred();
+    waitForWrites();
 }
 
 AnalysisCache &AnalysisCache::shared()
@@ -216,7 +247,7 @@ void AnalysisCache::openPacks()
 std::optional<QByteArray> AnalysisCache::read(Pack &pack, const Location &where)
 {
     QByteArray bytes = readAt(pack.file, where.offset, where.length);
-    if (bytes.size() != where.length || checksum(bytes) != where.checksum)
+    if (bytes.size() != where.length || entryChecksum(bytes) != where.checksum)
         return std::nullopt;
     return bytes;
 }
@@ -233,6 +264,10 @@ std::optional<QByteArray> AnalysisCache::load(const QString &kind, const QByteAr
         if (const auto pending = m_pendingAt.constFind(id); pending != m_pendingAt.constEnd()) {
             ++m_hits;
             return m_pending.at(size_t(*pending)).second;
+        }
+        if (const auto writing = m_writingAt.constFind(id); writing != m_writingAt.constEnd()) {
+            ++m_hits;
+            return m_writing.at(size_t(*writing)).second;
         }
         openPacks();
         const auto it = m_index.constFind(id);
@@ -286,7 +321,7 @@ bool AnalysisCache::writePack(const std::vector<std::pair<QByteArray, QByteArray
     s.setVersion(QDataStream::Qt_6_4);
     s << quint32(entries.size());
     for (const auto &[id, payload] : entries) {
-        s << id << qint64(bytes.size()) << qint64(payload.size()) << checksum(payload);
+        s << id << qint64(bytes.size()) << qint64(payload.size()) << entryChecksum(payload);
         bytes.append(payload);
     }
     const quint64 indexAt = qToBigEndian(quint64(bytes.size()));
@@ -314,72 +349,124 @@ bool AnalysisCache::writePack(const std::vector<std::pair<QByteArray, QByteArray
     return true;
 }
 
-void AnalysisCache::compact()
+bool AnalysisCache::compact(QString *error)
 {
     // The largest pack stays as it is (rewriting it each time would cost what the cache
-    // saves); the others and this run's entries become one.
+    // saves); the others and the entries being written become one. Read outside the lock
+    // (loads go on meanwhile): packs are never changed in place.
+    std::vector<std::shared_ptr<Pack>> packs;
+    QHash<QByteArray, Location> index;
+    {
+        QMutexLocker lock(&m_mutex);
+        openPacks();
+        packs = m_packs;
+        index = m_index;
+    }
     size_t largest = 0;
-    for (size_t i = 1; i < m_packs.size(); ++i)
-        if (m_packs[i]->file.size() > m_packs[largest]->file.size())
+    for (size_t i = 1; i < packs.size(); ++i)
+        if (packs[i]->file.size() > packs[largest]->file.size())
             largest = i;
     std::vector<std::pair<QByteArray, QByteArray>> merged;
-    for (auto it = m_index.cbegin(); it != m_index.cend(); ++it) {
-        if (size_t(it->pack) == largest || m_pendingAt.contains(it.key()))
+    for (auto it = index.cbegin(); it != index.cend(); ++it) {
+        if (size_t(it->pack) == largest || m_writingAt.contains(it.key()))
             continue;
-        if (std::optional<QByteArray> payload = read(*m_packs.at(size_t(it->pack)), *it))
+        if (std::optional<QByteArray> payload = read(*packs.at(size_t(it->pack)), *it))
             merged.emplace_back(it.key(), std::move(*payload));
     }
-    for (auto &entry : m_pending)
-        merged.push_back(std::move(entry));
-    QString error;
-    if (!writePack(merged, &error)) {
-        fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
-                 .arg(m_directory, error));
-        return;
-    }
-    for (size_t i = 0; i < m_packs.size(); ++i)
+    merged.insert(merged.end(), m_writing.cbegin(), m_writing.cend());
+    if (!writePack(merged, error))
+        return false;
+    for (size_t i = 0; i < packs.size(); ++i)
         if (i != largest)
-            QFile::remove(m_packs[i]->path); // another process may have removed it already
+            QFile::remove(packs[i]->path); // another process may have removed it already
+    return true;
 }
 
 void AnalysisCache::flush()
 {
-    if (!m_deferFlush)
-        flushDeferred();
+    if (m_deferFlush)
+        return;
+    waitForWrites();
+    flushDeferred();
+    waitForWrites();
 }
 
 void AnalysisCache::flushDeferred()
 {
+    QMutexLocker writer(&m_writerMutex);
+    if (m_writer.joinable()) {
+        // Still writing: these entries go with the next flush (loads find them meanwhile), so
+        // that writes stay one at a time, in order, and the caller never waits for one.
+        if (!m_written.load())
+            return;
+        m_writer.join();
+    }
     if (!m_enabled)
         return;
-    QString error;
-    if (!m_digests->save(&error)) {
-        fail(QStringLiteral("The analysis cache could not write its file digests to %1 (%2)")
-                 .arg(m_directory, error));
-        return;
-    }
     {
         QMutexLocker lock(&m_mutex);
-        if (m_pending.empty())
-            return;
-        openPacks();
-        if (int(m_packs.size()) + 1 > kMaxPacks) {
-            compact();
-        } else if (!writePack(m_pending, &error)) {
-            lock.unlock();
-            fail(QStringLiteral("The analysis cache could not write to %1 (%2)")
-                     .arg(m_directory, error));
-            return;
-        }
+        m_writing = std::move(m_pending);
+        m_writingAt = std::move(m_pendingAt);
         m_pending.clear();
         m_pendingAt.clear();
-        // The next load reads the folder again, with this run's pack and other processes'.
-        m_packs.clear();
-        m_index.clear();
-        m_opened = false;
-        m_storedSinceTrim = true;
     }
-    trim();
+    if (m_writing.empty() && !m_digests->changed())
+        return;
+    // In a long-lived worker the next run goes on while this one's pack is written: the
+    // writer yields to it.
+    const bool lowPriority = m_deferFlush;
+    m_written = false;
+    m_writer = std::thread([this, lowPriority] {
+        write(lowPriority);
+        m_written = true;
+    });
+}
+
+void AnalysisCache::waitForWrites()
+{
+    QMutexLocker writer(&m_writerMutex);
+    if (m_writer.joinable())
+        m_writer.join();
+}
+
+void AnalysisCache::write(bool lowPriority)
+{
+    if (lowPriority)
+        setpriority(PRIO_PROCESS, id_t(::gettid()), 10); // this thread's; best effort
+    QString error;
+    QString problem;
+    if (!m_digests->save(&error)) {
+        problem = QStringLiteral("The analysis cache could not write its file digests to %1 (%2)")
+                      .arg(m_directory, error);
+    } else if (!m_writing.empty()) {
+        bool merge = false;
+        {
+            QMutexLocker lock(&m_mutex);
+            openPacks();
+            merge = int(m_packs.size()) + 1 > kMaxPacks;
+        }
+        if (!(merge ? compact(&error) : writePack(m_writing, &error)))
+            problem = QStringLiteral("The analysis cache could not write to %1 (%2)")
+                          .arg(m_directory, error);
+    }
+    if (!problem.isEmpty())
+        fail(problem); // before the entries leave memory: no load sees them gone meanwhile
+    const bool wrote = !m_writing.empty() && problem.isEmpty();
+    {
+        QMutexLocker lock(&m_mutex);
+        m_writing.clear();
+        m_writingAt.clear();
+        if (wrote) {
+            // The next load reads the folder again, with this pack and other processes'.
+            m_packs.clear();
+            m_index.clear();
+            m_opened = false;
+        }
+    }
+    if (wrote) {
+        m_storedSinceTrim = true;
+        trim();
+    }
 }
 
 void AnalysisCache::fail(const QString &why)

@@ -14,6 +14,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <thread>
 #include <vector>
 
 class QFile;
@@ -37,7 +38,7 @@ class AnalysisCache
 {
 public:
     /// Bump when the serialised form of any cached result changes.
-    static constexpr int kFormatVersion = 3;
+    static constexpr int kFormatVersion = 4;
     static constexpr qint64 kDefaultMaxBytes = 256LL * 1024 * 1024;
     /// More packs than this in the folder are merged into one at flush().
     static constexpr int kMaxPacks = 8;
@@ -91,8 +92,12 @@ public:
     /// until flushDeferred(), called once the worker has replied, so that a run does not wait for
     /// its pack to be written; a problem writing it is said by the next run.
     void setDeferFlush(bool defer) { m_deferFlush = defer; }
-    /// Flushes, deferred or not.
+    /// Flushes, deferred or not, without waiting: the entries stored so far are written by a
+    /// thread of low priority (loads find them in memory meanwhile); while one is still being
+    /// written, they wait in memory for the next call. The next run goes on at once.
     void flushDeferred();
+    /// Waits for the write flushDeferred() began (the destructor waits, then writes the rest).
+    void waitForWrites();
 
     /// Values decoded from entries in this process, so that a long-lived worker does not decode
     /// the same entries run after run (stagememo::load gives them their types; one kind, one
@@ -126,7 +131,8 @@ private:
     static std::optional<QByteArray> read(Pack &pack, const Location &where);
     bool writePack(const std::vector<std::pair<QByteArray, QByteArray>> &entries,
                    QString *error) const;
-    void compact();
+    bool compact(QString *error);
+    void write(bool lowPriority);
     void fail(const QString &why);
 
     QString m_root;
@@ -144,9 +150,17 @@ private:
     QHash<QByteArray, Location> m_index;        ///< entryId -> where
     std::vector<std::pair<QByteArray, QByteArray>> m_pending; ///< entryId, payload
     QHash<QByteArray, qsizetype> m_pendingAt;                 ///< entryId -> in m_pending
+    /// Entries being written by m_writer: changed only while no write runs (flushDeferred())
+    /// and, under the lock, by the writer when it is done.
+    std::vector<std::pair<QByteArray, QByteArray>> m_writing;
+    QHash<QByteArray, qsizetype> m_writingAt;
     QSet<QString> m_rejectedPacks;
     QString m_problem;
     bool m_problemTaken = false;
+
+    QMutex m_writerMutex; ///< guards m_writer: one write at a time, in the order begun
+    std::thread m_writer;
+    std::atomic<bool> m_written{true}; ///< m_writer is done
 
     struct Recent
     {

@@ -78,8 +78,10 @@ QByteArray FileDigests::digest(const QString &absolutePath)
     if (steady) {
         m_entries.insert(absolutePath, {before, digest});
         m_dirty = true;
+        ++m_changes;
     } else if (m_entries.remove(absolutePath) > 0) {
         m_dirty = true;
+        ++m_changes;
     }
     return digest;
 }
@@ -138,17 +140,29 @@ void FileDigests::loadLocked()
         m_entries = std::move(entries);
 }
 
-bool FileDigests::save(QString *error)
+bool FileDigests::changed() const
 {
     QMutexLocker lock(&m_mutex);
-    if (!m_dirty || m_memoFile.isEmpty())
-        return true;
+    return m_dirty && !m_memoFile.isEmpty();
+}
+
+bool FileDigests::save(QString *error)
+{
+    QHash<QString, Entry> entries; // a copy (shared until changed): digests go on meanwhile
+    quint64 changes = 0;
+    {
+        QMutexLocker lock(&m_mutex);
+        if (!m_dirty || m_memoFile.isEmpty())
+            return true;
+        entries = m_entries;
+        changes = m_changes;
+    }
     QByteArray bytes;
     {
         QDataStream s(&bytes, QIODevice::WriteOnly);
         s.setVersion(QDataStream::Qt_6_4);
-        s << kMagic << kMemoVersion << quint32(m_entries.size());
-        for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it)
+        s << kMagic << kMemoVersion << quint32(entries.size());
+        for (auto it = entries.cbegin(); it != entries.cend(); ++it)
             s << it.key() << it->stat.size << it->stat.mtimeNs << it->stat.ctimeNs << it->stat.inode
               << it->stat.device << it->digest;
     }
@@ -169,7 +183,9 @@ bool FileDigests::save(QString *error)
             *error = written ? QString::fromLocal8Bit(std::strerror(errno)) : why;
         return false;
     }
-    m_dirty = false;
+    QMutexLocker lock(&m_mutex);
+    if (m_changes == changes) // else what changed meanwhile is saved next time
+        m_dirty = false;
     return true;
 }
 

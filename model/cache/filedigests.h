@@ -39,8 +39,10 @@ public:
     /// Files hashed (read) since construction, for tests and benchmarks.
     int hashed() const;
 
+    /// Whether the memo changed since it was last saved.
+    bool changed() const;
     /// Writes the memo (a temporary file renamed) when anything changed; false on failure,
-    /// with the reason in `error`.
+    /// with the reason in `error`. Digests go on meanwhile (the memo is written as it was).
     bool save(QString *error);
 
 private:
@@ -67,6 +69,7 @@ private:
     QHash<QString, Entry> m_entries;
     bool m_loaded = false;
     bool m_dirty = false;
+    quint64 m_changes = 0; ///< changes to m_entries, so that save() knows what it wrote
     int m_hashed = 0;
 };
 

@@ -292,6 +292,16 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
     return std::move(*list);
 }
 
+void NodeAnalyzer::warmUp(const Workspace &workspace, const StageControl &control)
+{
+    // The analysis without the stage's memo: what it loads stays in memory for the next run
+    // (no startRun(), which would drop what the last run used). A file changed since that run
+    // is analysed and stored as any run would.
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    if (cache.isEnabled() && !control.isCanceled())
+        analyse(workspace, control);
+}
+
 AtomicNodeList recoverAtomicNodes(const QString &root, const StageControl &control)
 {
     const Workspace ws = WorkspaceScanner::scan(root, control);

@@ -16,6 +16,11 @@ public:
     /// `analysing` is called when the files are to be analysed (no memo of the whole stage).
     static AtomicNodeList run(const Workspace &workspace, const StageControl &control = {},
                               const std::function<void()> &analysing = {});
+    /// For an idle long-lived process after a run that stage 1's memo answered: decodes what a
+    /// run after an edit reuses (each file's entries, the C++ link, the Python analysis) and
+    /// keeps it in the cache's memory (AnalysisCache::recent), so that the first edit costs
+    /// what later ones do. Changes no result; stops soon when `control` is canceled.
+    static void warmUp(const Workspace &workspace, const StageControl &control);
 };
 
 /// Convenience: scan `root` and run stage 1.

@@ -332,6 +332,8 @@ void readPackages(Workspace &ws, const StageControl &control, FileDigests *diges
     for (const SourceFile &f : std::as_const(ws.files)) {
         if (f.language != SourceFile::Language::PackageXml)
             continue;
+        if (control.isCanceled())
+            return; // what was read so far: a canceled scan's workspace is not used
         RosPackage pkg;
         pkg.path = parentDir(f.path);
         const FileWork work(control, f.path);
@@ -361,6 +363,8 @@ void readPackages(Workspace &ws, const StageControl &control, FileDigests *diges
 
     // Build files at a package's root declare its executables and plugins.
     for (RosPackage &pkg : ws.packages) {
+        if (control.isCanceled())
+            return;
         const QString prefix = pkg.path.isEmpty() ? QString() : pkg.path + QLatin1Char('/');
         QByteArray content;
         if (const FileWork work(control, prefix + QStringLiteral("setup.py"));

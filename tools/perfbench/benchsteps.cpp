@@ -16,6 +16,7 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTextStream>
+#include <QThread>
 
 #include <sys/resource.h>
 
@@ -171,7 +172,11 @@ int sessionChildMain(const QStringList &args)
             QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << first.error << '\n';
             return 1;
         }
+        // A person's pause before each edit (ms), in which the idle worker warms up.
+        const int pause = qEnvironmentVariableIntValue("ROSARCH_PERFBENCH_PAUSE_MS");
         for (int i = 0; i < runs; ++i) {
+            if (pause > 0)
+                QThread::msleep(ulong(pause));
             if (!edited.isEmpty() && !editFile(edited, edit++)) {
                 QTextStream(stderr) << "rosarch-perfbench: cannot edit " << edited << '\n';
                 return 1;

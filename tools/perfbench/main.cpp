@@ -12,7 +12,8 @@
 // the GUI does, so warm and edit runs are measured on a worker that is already running.
 // For looking closer at that child (`--session-child <root> <runs> <file> <first edit>`), two
 // switches: ROSARCH_PERFBENCH_STAGES=1 prints each stage's time of each run, and
-// ROSARCH_PERFBENCH_CHECK=1 compares the last run's result with a fresh one without the cache.
+// ROSARCH_PERFBENCH_CHECK=1 compares the last run's result with a fresh one without the cache;
+// ROSARCH_PERFBENCH_PAUSE_MS=N waits N ms before each run (a person's pause before an edit).
 #include "benchreport.h"
 #include "benchsteps.h"
 

@@ -11,7 +11,9 @@
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
 #include "analysiscache.h"
 #include "composearchitecture.h"
+#include "nodeanalyzer.h"
 #include "recoverystream.h"
+#include "workspacescanner.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -21,12 +23,14 @@
 #include <QThreadPool>
 #include <QtEndian>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <optional>
+#include <thread>
 #include <vector>
 
 #include <sys/resource.h>
@@ -232,6 +236,37 @@ Recovery run(const StageRequest &request, const Recovery *composed)
     return result;
 }
 
+/// Stage 1's warm-up (NodeAnalyzer::warmUp) while the worker waits for its next request, so
+/// that the first edit after a run the stage's memo answered costs what later ones do. The
+/// next request stops it at once (stop() before the request runs).
+class IdleWarmUp
+{
+public:
+    ~IdleWarmUp() { stop(); }
+    void start(const StageRequest &request)
+    {
+        stop();
+        m_stop = false;
+        m_thread = std::thread([this, root = request.root, skipped = request.skipped] {
+            StageControl control; // no progress, no file work: nobody is waiting for it
+            control.canceled = [this] { return m_stop.load(); };
+            control.skipped = skipped;
+            const Workspace ws = WorkspaceScanner::scan(root, control);
+            NodeAnalyzer::warmUp(ws, control);
+        });
+    }
+    void stop()
+    {
+        m_stop = true;
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+
+private:
+    std::atomic<bool> m_stop{false};
+    std::thread m_thread;
+};
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -245,9 +280,12 @@ int main(int argc, char **argv)
     AnalysisCache::shared().setDeferFlush(true);
     Recovery previous;
     std::optional<Recovery> composed; // stage 3 and what it was composed from, for the next run
+    IdleWarmUp warmUp;
+    const bool warm = qEnvironmentVariableIntValue("ROSARCH_STAGES_NO_WARM_UP") == 0;
     for (;;) {
         StageRequest request;
         const Read read = readRequest(&request);
+        warmUp.stop();
         if (read == Read::End)
             return 0;
         if (read == Read::Bad)
@@ -272,6 +310,8 @@ int main(int argc, char **argv)
         frame(stagestream::Result, RawPayload{payload});
         // The cache's pack is written once the supervisor has its reply.
         AnalysisCache::shared().flushDeferred();
+        if (warm && request.job == StageRequest::Job::Recovery && !result.nodes.canceled)
+            warmUp.start(request);
         previous = std::move(result);
     }
 }

@@ -93,6 +93,8 @@ CppNodeAnalyzer::CppNodeAnalyzer(const Workspace &workspace) : m_workspace(works
 
 LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
 {
+    if (control.isCanceled()) // before the macro index, which reads every package's CMakeLists
+        return {};
     QList<const SourceFile *> sources;
     for (const SourceFile &file : m_workspace.files)
         if (file.language == SourceFile::Language::Cpp)

@@ -279,9 +279,63 @@ private Q_SLOTS:
         QVERIFY(packs(m_cache).isEmpty());
         QCOMPARE(cache.load(QStringLiteral("test"), keyOf(1)), std::optional<QByteArray>("one"));
         cache.flushDeferred(); // what the worker calls once it has replied
+        cache.waitForWrites();
         QCOMPARE(packs(m_cache).size(), 1);
         AnalysisCache other(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         QCOMPARE(other.load(QStringLiteral("test"), keyOf(1)), std::optional<QByteArray>("one"));
+    }
+
+    void theNextRunGoesOnWhilePacksAreWritten()
+    {
+        // Back-to-back runs of a long-lived worker: each flushDeferred() writes in the
+        // background while the next run loads and stores (or, while a write still runs, leaves
+        // its entries for the next one); every entry is found throughout, the last store of a
+        // key wins, and the writes end as complete packs.
+        constexpr int kRuns = 3 * AnalysisCache::kMaxPacks; // merges happen in the background too
+        constexpr int kPerRun = 40;
+        {
+            AnalysisCache cache(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+            cache.setDeferFlush(true);
+            for (int run = 0; run < kRuns; ++run) {
+                for (int i = 0; i < kPerRun; ++i) {
+                    const int n = run * kPerRun + i;
+                    cache.store(QStringLiteral("cpp"), keyOf(n), QByteArray::number(n));
+                }
+                cache.store(QStringLiteral("stage1"), keyOf(0), QByteArray::number(run));
+                cache.flush(); // deferred: nothing waits
+                for (int n = 0; n < (run + 1) * kPerRun; n += 7)
+                    QCOMPARE(cache.load(QStringLiteral("cpp"), keyOf(n)),
+                             std::optional<QByteArray>(QByteArray::number(n)));
+                QCOMPARE(cache.load(QStringLiteral("stage1"), keyOf(0)),
+                         std::optional<QByteArray>(QByteArray::number(run)));
+                cache.flushDeferred(); // the reply is out: the pack is written meanwhile
+            }
+            QVERIFY(!cache.takeProblem());
+        } // the destructor waits for the last write
+        QVERIFY(packs(m_cache).size() <= AnalysisCache::kMaxPacks);
+        AnalysisCache reader(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+        for (int n = 0; n < kRuns * kPerRun; ++n)
+            QCOMPARE(reader.load(QStringLiteral("cpp"), keyOf(n)),
+                     std::optional<QByteArray>(QByteArray::number(n)));
+        QCOMPARE(reader.load(QStringLiteral("stage1"), keyOf(0)),
+                 std::optional<QByteArray>(QByteArray::number(kRuns - 1)));
+        QCOMPARE(reader.statistics().rejected, 0);
+    }
+
+    void aFailedBackgroundWriteIsSaidByTheNextRun()
+    {
+        AnalysisCache cache(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
+        cache.setDeferFlush(true);
+        cache.store(QStringLiteral("cpp"), keyOf(1), "one");
+        QVERIFY(QDir(cache.directory()).removeRecursively());
+        QVERIFY(QFile(cache.directory()).open(QIODevice::WriteOnly)); // a file where the folder was
+        cache.flushDeferred();
+        cache.waitForWrites();
+        const std::optional<Diagnostic> problem = cache.takeProblem();
+        QVERIFY(problem);
+        QCOMPARE(problem->code, QStringLiteral("cache-unavailable"));
+        QVERIFY(!cache.isEnabled());
+        QFile::remove(cache.directory());
     }
 
     void manyPacksAreMerged()
