@@ -91,6 +91,7 @@ public:
     /// until flushDeferred(), called once the worker has replied, so that a run does not wait for
     /// its pack to be written; a problem writing it is said by the next run.
     void setDeferFlush(bool defer) { m_deferFlush = defer; }
+    bool defersFlush() const { return m_deferFlush; }
     /// Flushes, deferred or not.
     void flushDeferred();
 
