@@ -1,5 +1,6 @@
 #include "deferredcachewrite.h"
 #include "analysiscache.h"
+#include "launchanalyzer.h"
 
 #include <mutex>
 #include <thread>
@@ -15,7 +16,11 @@ public:
     // The shared cache first: statics go in the reverse order of their construction, so this
     // is gone, its thread joined, before the cache is.
     Writes() : m_cache(&AnalysisCache::shared()) {}
-    ~Writes() { wait(); }
+    ~Writes()
+    {
+        wait();
+        LaunchAnalyzer::finishStores(); // the worker's, whose pack is written after its reply
+    }
     Writes(const Writes &) = delete;
     Writes &operator=(const Writes &) = delete;
 
@@ -24,7 +29,10 @@ public:
         const std::lock_guard lock(m_mutex);
         if (m_thread.joinable()) // one write at a time; the previous run's is long done
             m_thread.join();
-        m_thread = std::thread([cache = m_cache] { cache->flushDeferred(); });
+        m_thread = std::thread([cache = m_cache] {
+            LaunchAnalyzer::finishStores();
+            cache->flushDeferred();
+        });
     }
     void wait()
     {
