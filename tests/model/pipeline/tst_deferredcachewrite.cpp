@@ -1,11 +1,14 @@
 // An in-process recovery does not wait for its cache packs (DeferredCacheWrite): it leaves
 // them to a thread of its own, whose pack is complete once written (or once the process has
 // ended), so that the next run is warm; the result is the same as without the cache; a canceled
-// run and a caller's own cache are handled as before; the worker's deferral is left alone.
+// run and a caller's own cache are handled as before; the worker's deferral is left alone, and
+// its pack has stage 2's memo, encoded on a pool thread (LaunchAnalyzer::finishStores).
 #include "analysiscache.h"
 #include "deferredcachewrite.h"
 #include "recovery.h"
+#include "stageprocess.h"
 #include "testsupport.h"
+#include "workerprocess.h"
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -140,6 +143,25 @@ private Q_SLOTS:
         }
         QVERIFY(cache.defersFlush());
         cache.setDeferFlush(false);
+    }
+
+    void theWorkersPackHoldsStageTwosMemoEncodedAside()
+    {
+        // The worker encodes stage 2's memo on a pool thread and writes its pack after its
+        // reply: the pack has it, so that a second worker stores (and writes) nothing.
+        const QString root = test::dataDir(QStringLiteral("launch_formats/ws"));
+        const QStringList before = packsIn(m_cacheRoot.path());
+        const StageProcess::Result cold = StageProcess::recover(root, {}, {}, {});
+        QVERIFY2(cold.error.isEmpty(), qPrintable(cold.error));
+        WorkerProcess::waitForReleased();
+        const QStringList after = packsIn(m_cacheRoot.path());
+        QCOMPARE(after.size(), before.size() + 1);
+        const StageProcess::Result warm = StageProcess::recover(root, {}, {}, {});
+        QVERIFY2(warm.error.isEmpty(), qPrintable(warm.error));
+        WorkerProcess::waitForReleased();
+        QCOMPARE(packsIn(m_cacheRoot.path()), after);
+        QVERIFY(warm.recovery == cold.recovery);
+        QVERIFY(cold.recovery == uncached(root));
     }
 
     void aHeadlessRunLeavesACompleteCacheWhenItExits()
