@@ -92,6 +92,7 @@ public:
     /// until flushDeferred(), called once the worker has replied, so that a run does not wait for
     /// its pack to be written; a problem writing it is said by the next run.
     void setDeferFlush(bool defer) { m_deferFlush = defer; }
+    bool defersFlush() const { return m_deferFlush; }
     /// Flushes, deferred or not, without waiting: the entries stored so far are written by a
     /// thread of low priority (loads find them in memory meanwhile); while one is still being
     /// written, they wait in memory for the next call. The next run goes on at once.

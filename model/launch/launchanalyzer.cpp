@@ -14,13 +14,19 @@
 
 #include <QHash>
 #include <QSet>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <map>
+#include <mutex>
 
 namespace rosarch {
 
 namespace {
+
+/// The stores of stage 2's results still being encoded (LaunchAnalyzer::finishStores()).
+std::mutex pendingMutex;
+QList<QFuture<void>> pending;
 
 /// Each launch file of the system analysed on its own, with its declared defaults, in the
 /// classifier scope: what its CCD shows (blueprint §1). What these runs find was found by the
@@ -277,10 +283,20 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             }
         }
     LaunchDependencies out = analyse(workspace, nodes, options, control, readAhead);
-    if (!key.isEmpty() && !out.canceled && cache.isEnabled())
-        cache.store(QStringLiteral("stage2"), key,
-                    cachecodec::encode(
-                        Memo{locations, {extraFiles(workspace, out, cache.digests()), out}}));
+    if (!key.isEmpty() && !out.canceled && cache.isEnabled()) {
+        auto store = [&cache, key,
+                      memo = Memo{locations, {extraFiles(workspace, out, cache.digests()), out}}] {
+            cache.store(QStringLiteral("stage2"), key, cachecodec::encode(memo));
+        };
+        // The shared cache writing its pack later (the worker's after its reply, an in-process
+        // run's after the run): the memo is encoded on a pool thread while stage 3 runs.
+        if (&cache == &AnalysisCache::shared() && cache.defersFlush()) {
+            const std::lock_guard lock(pendingMutex);
+            pending.append(QtConcurrent::run(std::move(store)));
+        } else {
+            store();
+        }
+    }
     cache.flush();
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.prepend(*problem);
@@ -297,6 +313,14 @@ std::optional<LaunchFileDescription> LaunchAnalyzer::read(const SourceFile &f,
     if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
         return YamlLaunchReader::read(content, f.path);
     return std::nullopt;
+}
+
+void LaunchAnalyzer::finishStores()
+{
+    const std::lock_guard lock(pendingMutex);
+    for (QFuture<void> &store : pending)
+        store.waitForFinished();
+    pending.clear();
 }
 
 LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,

@@ -39,6 +39,10 @@ public:
     /// launch file of that format; none otherwise.
     static std::optional<LaunchFileDescription> read(const SourceFile &file,
                                                      const QByteArray &content);
+    /// Waits until the results that run() stores in a cache whose flushes are deferred
+    /// (AnalysisCache::setDeferFlush) are stored: run() encodes them on a pool thread, while
+    /// stage 3 runs. Whoever writes such a cache's pack calls this first.
+    static void finishStores();
 };
 
 /// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer

@@ -1,5 +1,7 @@
 #include "recovery.h"
+#include "analysiscache.h"
 #include "composearchitecture.h"
+#include "deferredcachewrite.h"
 #include "evidenceshift.h"
 #include "launchreadahead.h"
 #include "nodeanalyzer.h"
@@ -68,6 +70,8 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
         if (control.stageTimed)
             control.stageTimed(stage, clock.restart());
     };
+    // The cache's packs are written once the run is over, while the caller goes on with it.
+    const DeferredCacheWrite deferred(control.cache ? *control.cache : AnalysisCache::shared());
     const StageControl stage1 = control.forStage(1);
     const Workspace ws = WorkspaceScanner::scan(root, stage1);
     const StageControl stage2 = control.forStage(2);
@@ -87,6 +91,7 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
+
     return r;
 }
 

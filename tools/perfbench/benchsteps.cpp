@@ -117,8 +117,14 @@ int childMain(const QString &path, const QString &root)
     timer.start();
     qint64 rss = 0;
     qint64 ms = 0;
+    StageControl control;
+    if (qEnvironmentVariableIsSet("ROSARCH_PERFBENCH_STAGES")) // where the time goes
+        control.stageTimed = [&timer](int stage, qint64 stageMs) {
+            QTextStream(stderr) << "stage " << stage << ' ' << stageMs << " ms (at "
+                                << timer.elapsed() << " ms)\n";
+        };
     if (path == QLatin1String("worker")) {
-        const StageProcess::Result r = StageProcess::recover(root, {}, {}, {});
+        const StageProcess::Result r = StageProcess::recover(root, {}, control, {});
         ms = timer.elapsed(); // the worker writes its cache after that, on its own
         if (!r.error.isEmpty()) {
             QTextStream(stderr) << "rosarch-perfbench: the worker failed: " << r.error << '\n';
@@ -127,7 +133,7 @@ int childMain(const QString &path, const QString &root)
         WorkerProcess::waitForReleased();
         rss = maxRssKb(RUSAGE_CHILDREN); // the worker, which did the analysis
     } else {
-        const Recovery r = recoverWorkspace(root);
+        const Recovery r = recoverWorkspace(root, {}, control);
         ms = timer.elapsed();
         rss = maxRssKb(RUSAGE_SELF);
     }

@@ -11,6 +11,7 @@
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
 #include "analysiscache.h"
 #include "composearchitecture.h"
+#include "launchanalyzer.h"
 #include "nodeanalyzer.h"
 #include "recoverystream.h"
 #include "workspacescanner.h"
@@ -309,6 +310,7 @@ int main(int argc, char **argv)
         }
         frame(stagestream::Result, RawPayload{payload});
         // The cache's pack is written once the supervisor has its reply.
+        LaunchAnalyzer::finishStores();
         AnalysisCache::shared().flushDeferred();
         if (warm && request.job == StageRequest::Job::Recovery && !result.nodes.canceled)
             warmUp.start(request);

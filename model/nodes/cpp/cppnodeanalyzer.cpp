@@ -76,6 +76,19 @@ std::unique_ptr<CppMacroIndex> macroIndexOf(const Workspace &ws, const SourceRea
     return index;
 }
 
+/// The facts of one preprocessed C++ file, from its parse.
+CppFileFacts parsed(QByteArray bytes, const SourceFile &file, const CppMacros &macros)
+{
+    cppsyntax::blankExportMacros(&bytes);
+    cppsyntax::blankQtKeywords(&bytes);
+    cppsyntax::blankGrammarGaps(&bytes);
+    QList<Diagnostic> isolated;
+    const SyntaxTree tree = CppErrorRecovery::parse(std::move(bytes), file.path, &isolated);
+    CppFileFacts facts = CppFileExtractor::extract(tree, file.package, macros);
+    facts.diagnostics = isolated + facts.diagnostics;
+    return facts;
+}
+
 Diagnostic analysisFailed(const QString &file, const std::exception &e)
 {
     Diagnostic d;
@@ -170,10 +183,17 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                 QList<Diagnostic> read; // what reading says of the file (not UTF-8, ...)
                 if (!hit)
                     work.start();
+                // Without the cache, no key is worked out and nothing is encoded.
+                const bool cached = cache.isEnabled();
                 if (hit) {
                     facts = std::move(*hit);
                 } else if (!reader.read(file->path, &bytes, &read)) {
                     facts.diagnostics += read;
+                } else if (!cached) {
+                    CppPreprocessor::Result preprocessed = CppPreprocessor::run(
+                        &bytes, file->path, macroIndex.initialMacros(file->package), lookup);
+                    facts = parsed(std::move(bytes), *file, preprocessed.macros);
+                    facts.diagnostics = read + preprocessed.diagnostics + facts.diagnostics;
                 } else if (const QByteArray manifestKey =
                                manifestKeyOf(FileDigests::digestOf(bytes));
                            manifestKey != manifestKeyOf(known) &&
@@ -195,16 +215,9 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     const QByteArray key =
                         AnalysisCache::key({"cpp", file->path.toUtf8(), file->package.toUtf8(),
                                             bytes, CppFactsCodec::digest(preprocessed.macros)});
-                    const std::optional<QByteArray> cached = cache.load(QStringLiteral("cpp"), key);
-                    if (!cached || !CppFactsCodec::decode(*cached, &facts)) {
-                        cppsyntax::blankExportMacros(&bytes);
-                        cppsyntax::blankQtKeywords(&bytes);
-                        cppsyntax::blankGrammarGaps(&bytes);
-                        QList<Diagnostic> isolated;
-                        const SyntaxTree tree =
-                            CppErrorRecovery::parse(std::move(bytes), file->path, &isolated);
-                        facts = CppFileExtractor::extract(tree, file->package, preprocessed.macros);
-                        facts.diagnostics = isolated + facts.diagnostics;
+                    const std::optional<QByteArray> entry = cache.load(QStringLiteral("cpp"), key);
+                    if (!entry || !CppFactsCodec::decode(*entry, &facts)) {
+                        facts = parsed(std::move(bytes), *file, preprocessed.macros);
                         cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
                     }
                     manifest.diagnostics = read + preprocessed.diagnostics;
