@@ -45,8 +45,10 @@ public:
     void stop(int graceMs = 300);
     /// stop() without waiting: a thread of its own gives it `graceMs` to leave, kills it then,
     /// and reaps it; this process waits for such threads when it exits. For a worker that has
-    /// replied and only writes its cache before it leaves.
-    void release(int graceMs = 300);
+    /// replied and only writes its cache before it leaves: the grace is long enough for a large
+    /// workspace's pack (autoware's cold pack is ~42 MB) on a slow disk, and a worker that leaves
+    /// sooner is reaped at once.
+    void release(int graceMs = 10000);
     /// Waits until every worker released so far is reaped.
     static void waitForReleased();
 
