@@ -91,7 +91,6 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
-
     return r;
 }
 

@@ -5,6 +5,7 @@
 // the size bound evicts the oldest packs.
 // Every cache lives in a temporary folder.
 #include "analysiscache.h"
+#include "cacherecovery.h"
 #include "cachetestcase.h"
 #include "recovery.h"
 #include "testsupport.h"
@@ -16,20 +17,6 @@
 using namespace rosarch;
 
 namespace {
-
-/// Stages 1-3 on `root` with `cache`.
-Recovery recoverWith(const QString &root, AnalysisCache *cache)
-{
-    StageControl control;
-    control.cache = cache;
-    return recoverWorkspace(root, {}, control);
-}
-
-Recovery recoverUncached(const QString &root)
-{
-    AnalysisCache off{QString()};
-    return recoverWith(root, &off);
-}
 
 QStringList packs(const QString &cacheRoot)
 {
@@ -89,7 +76,7 @@ private Q_SLOTS:
     {
         AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         QVERIFY(first.isEnabled());
-        const Recovery cold = recoverWith(m_ws, &first);
+        const Recovery cold = test::recoverWith(m_ws, &first);
         // 3 C++ files, 4 Python files (the launch file among them), 2 launch files; the
         // memos of stages 1 and 2, the macro index and the 3 C++ manifests.
         QCOMPARE(first.statistics().stores, 15);
@@ -99,19 +86,19 @@ private Q_SLOTS:
         QVERIFY(!cold.architecture.composites.isEmpty());
 
         AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        const Recovery warm = recoverWith(m_ws, &second);
+        const Recovery warm = test::recoverWith(m_ws, &second);
         QCOMPARE(second.statistics().hits, 2); // the two memos, nothing per file
         QCOMPARE(second.statistics().misses, 0);
         QCOMPARE(second.statistics().stores, 0);
         QCOMPARE(second.digests().hashed(), 0); // every file known by its stat
         QVERIFY(warm == cold);
-        QVERIFY(warm == recoverUncached(m_ws));
+        QVERIFY(warm == test::recoverUncached(m_ws));
     }
 
     void editingOneFileReanalysesExactlyThatFile()
     {
         AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        recoverWith(m_ws, &first);
+        test::recoverWith(m_ws, &first);
         const QString camera = m_ws + QStringLiteral("/src/vision/src/camera.cpp");
         QByteArray source = test::readFile(camera);
         const qsizetype at = source.indexOf("\"image_raw\"");
@@ -120,11 +107,11 @@ private Q_SLOTS:
         test::writeFile(camera, source);
 
         AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        const Recovery edited = recoverWith(m_ws, &second);
+        const Recovery edited = test::recoverWith(m_ws, &second);
         QCOMPARE(second.statistics().misses, 3); // the stage 1 memo, camera.cpp, its manifest
         QCOMPARE(second.statistics().stores, 3);
         QCOMPARE(second.digests().hashed(), 1);
-        QVERIFY(edited == recoverUncached(m_ws));
+        QVERIFY(edited == test::recoverUncached(m_ws));
         bool found = false;
         for (const AtomicNode &n : edited.nodes.nodes)
             for (const Port &p : n.ports)
@@ -139,18 +126,19 @@ private Q_SLOTS:
         // every result equals an uncached one.
         {
             AnalysisCache fill(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-            recoverWith(m_ws, &fill);
+            test::recoverWith(m_ws, &fill);
         }
         AnalysisCache cache(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         const QString camera = m_ws + QStringLiteral("/src/vision/src/camera.cpp");
         const QByteArray original = test::readFile(camera);
         test::writeFile(camera, "// moved one line down\n" + original);
-        QVERIFY(recoverWith(m_ws, &cache) == recoverUncached(m_ws)); // decodes from the packs
+        QVERIFY(test::recoverWith(m_ws, &cache) ==
+                test::recoverUncached(m_ws)); // decodes from the packs
         const AnalysisCache::Statistics decoded = cache.statistics();
 
         test::writeFile(camera, "// moved two lines down\n\n" + original);
-        const Recovery edited = recoverWith(m_ws, &cache);
-        QVERIFY(edited == recoverUncached(m_ws));
+        const Recovery edited = test::recoverWith(m_ws, &cache);
+        QVERIFY(edited == test::recoverUncached(m_ws));
         const AnalysisCache::Statistics kept = cache.statistics();
         // Misses: the memo of stage 1, camera.cpp's manifest and its facts; everything else
         // came from memory (stage 2's memo too, with camera's parameter defaults moved), nothing
@@ -161,11 +149,11 @@ private Q_SLOTS:
         QCOMPARE(kept.kept - decoded.kept, kept.hits - decoded.hits);
         // The kept facts are the ones a fresh process decodes.
         AnalysisCache fresh(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        QVERIFY(recoverWith(m_ws, &fresh) == edited);
+        QVERIFY(test::recoverWith(m_ws, &fresh) == edited);
 
         // Back to the original text: every result matches again, from memory or packs.
         test::writeFile(camera, original);
-        QVERIFY(recoverWith(m_ws, &cache) == recoverUncached(m_ws));
+        QVERIFY(test::recoverWith(m_ws, &cache) == test::recoverUncached(m_ws));
         // Nothing is kept in a cache that is off.
         AnalysisCache off{QString()};
         off.keepRecent(QStringLiteral("cpp"), keyOf(1), std::make_shared<const int>(1));
@@ -185,7 +173,7 @@ private Q_SLOTS:
         const QString ws = m_temp.filePath(QStringLiteral("rover"));
         test::copyTree(test::dataDir(QStringLiteral("cpp_preprocessor/ws")), ws);
         AnalysisCache first(m_cache);
-        const Recovery before = recoverWith(ws, &first);
+        const Recovery before = test::recoverWith(ws, &first);
         QVERIFY(portNames(before, QStringLiteral("RoverDriver")).contains(QStringLiteral("odom")));
 
         // Only the header changes; the source file that uses its macro is the same text.
@@ -194,17 +182,17 @@ private Q_SLOTS:
         text.replace("#define ROVER_ODOM_TOPIC \"odom\"", "#define ROVER_ODOM_TOPIC \"odometry\"");
         test::writeFile(header, text);
         AnalysisCache second(m_cache);
-        const Recovery after = recoverWith(ws, &second);
+        const Recovery after = test::recoverWith(ws, &second);
         QVERIFY(
             portNames(after, QStringLiteral("RoverDriver")).contains(QStringLiteral("odometry")));
-        QVERIFY(after == recoverUncached(ws));
+        QVERIFY(after == test::recoverUncached(ws));
         QVERIFY(second.statistics().misses >= 3); // the memo, the header, the driver
     }
 
     void damagedPacksAreAnalysedAgain()
     {
         AnalysisCache first(m_cache);
-        const Recovery cold = recoverWith(m_ws, &first);
+        const Recovery cold = test::recoverWith(m_ws, &first);
         const QStringList files = packs(m_cache);
         QCOMPARE(files.size(), 2);
         // A flipped byte inside the first pack's entries; the second pack truncated; a
@@ -220,12 +208,12 @@ private Q_SLOTS:
                         QByteArray(4096, '\xff'));
 
         AnalysisCache second(m_cache);
-        const Recovery again = recoverWith(m_ws, &second);
+        const Recovery again = test::recoverWith(m_ws, &second);
         QCOMPARE(second.statistics().rejected, 3);
         QVERIFY(again == cold);
 
         AnalysisCache third(m_cache);
-        QVERIFY(recoverWith(m_ws, &third) == cold);
+        QVERIFY(test::recoverWith(m_ws, &third) == cold);
         QCOMPARE(third.statistics().misses, 0);
     }
 
@@ -245,15 +233,15 @@ private Q_SLOTS:
         QCOMPARE(opened.load(QStringLiteral("cpp"), keyOf(2)), std::optional<QByteArray>("two"));
         QVERIFY(!notYetOpened.load(QStringLiteral("cpp"), keyOf(2)));
         QCOMPARE(notYetOpened.statistics().misses, 1);
-        QVERIFY(recoverWith(m_ws, &notYetOpened) == recoverUncached(m_ws));
+        QVERIFY(test::recoverWith(m_ws, &notYetOpened) == test::recoverUncached(m_ws));
     }
 
     void twoCachesShareAFolder()
     {
         AnalysisCache a(m_cache);
         AnalysisCache b(m_cache);
-        const Recovery ra = recoverWith(m_ws, &a);
-        const Recovery rb = recoverWith(m_ws, &b);
+        const Recovery ra = test::recoverWith(m_ws, &a);
+        const Recovery rb = test::recoverWith(m_ws, &b);
         a.store(QStringLiteral("cpp"), keyOf(1), "from a");
         b.store(QStringLiteral("cpp"), keyOf(2), "from b");
         b.flush();
@@ -262,7 +250,7 @@ private Q_SLOTS:
         AnalysisCache c(m_cache);
         QCOMPARE(c.load(QStringLiteral("cpp"), keyOf(1)), std::optional<QByteArray>("from a"));
         QCOMPARE(c.load(QStringLiteral("cpp"), keyOf(2)), std::optional<QByteArray>("from b"));
-        QVERIFY(recoverWith(m_ws, &c) == ra);
+        QVERIFY(test::recoverWith(m_ws, &c) == ra);
         QCOMPARE(c.statistics().rejected, 0);
         // No temporary file is left behind.
         QDirIterator it(m_cache, QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
@@ -358,14 +346,14 @@ private Q_SLOTS:
         test::writeFile(m_cache, "not a folder");
         AnalysisCache blocked(m_cache + QStringLiteral("/below"));
         QVERIFY(!blocked.isEnabled());
-        const Recovery r = recoverWith(m_ws, &blocked);
+        const Recovery r = test::recoverWith(m_ws, &blocked);
         const QList<Diagnostic> problems = withCode(r, QStringLiteral("cache-unavailable"));
         QCOMPARE(problems.size(), 1);
         QVERIFY(problems.at(0).message.contains(m_cache + QStringLiteral("/below")));
         QCOMPARE(problems.at(0).related.size(), 1);
         QVERIFY(problems.at(0).related.at(0).evidence.file.startsWith(m_cache));
-        QCOMPARE(r.nodes.nodes, recoverUncached(m_ws).nodes.nodes);
-        QCOMPARE(r.architecture, recoverUncached(m_ws).architecture);
+        QCOMPARE(r.nodes.nodes, test::recoverUncached(m_ws).nodes.nodes);
+        QCOMPARE(r.architecture, test::recoverUncached(m_ws).architecture);
     }
 
     void aFailedWriteTurnsTheCacheOffForTheRun()
@@ -376,12 +364,12 @@ private Q_SLOTS:
         QVERIFY(cache.isEnabled());
         QVERIFY(QDir(cache.directory()).removeRecursively());
         test::writeFile(cache.directory(), "in the way");
-        const Recovery r = recoverWith(m_ws, &cache);
+        const Recovery r = test::recoverWith(m_ws, &cache);
         QVERIFY(!cache.isEnabled());
         const QList<Diagnostic> problems = withCode(r, QStringLiteral("cache-unavailable"));
         QCOMPARE(problems.size(), 1);
         QVERIFY(problems.at(0).message.contains(cache.directory()));
-        Recovery uncached = recoverUncached(m_ws);
+        Recovery uncached = test::recoverUncached(m_ws);
         QCOMPARE(r.nodes.nodes, uncached.nodes.nodes);
         QCOMPARE(r.launch.nodes, uncached.launch.nodes);
     }

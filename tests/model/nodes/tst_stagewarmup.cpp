@@ -3,6 +3,7 @@
 // edit reads nothing more from the cache's packs than later ones. Run to its end, stopped part
 // way, or stopped at once by the next request, the edit gives exactly what a fresh run gives.
 #include "analysiscache.h"
+#include "cacherecovery.h"
 #include "cachetestcase.h"
 #include "nodeanalyzer.h"
 #include "recovery.h"
@@ -20,19 +21,6 @@ using namespace rosarch;
 namespace {
 
 const QString kRectifier = QStringLiteral("src/vision/src/rectifier.cpp");
-
-Recovery recoverWith(const QString &root, AnalysisCache *cache)
-{
-    StageControl control;
-    control.cache = cache;
-    return recoverWorkspace(root, {}, control);
-}
-
-Recovery recoverFresh(const QString &root)
-{
-    AnalysisCache off{QString()};
-    return recoverWith(root, &off);
-}
 
 void prependComment(const QString &file, int n)
 {
@@ -61,7 +49,7 @@ class TestStageWarmUp : public QObject
     void fillCache()
     {
         AnalysisCache cold(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        recoverWith(m_ws, &cold);
+        test::recoverWith(m_ws, &cold);
     }
 
     /// The first edit after a warm start, with the warm-up stopped after `polls` of its
@@ -70,7 +58,7 @@ class TestStageWarmUp : public QObject
     {
         fillCache();
         AnalysisCache warm(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        recoverWith(m_ws, &warm);
+        test::recoverWith(m_ws, &warm);
         if (polls != 0) {
             std::atomic<int> left{polls};
             StageControl control;
@@ -80,8 +68,8 @@ class TestStageWarmUp : public QObject
         }
         prependComment(m_ws + QLatin1Char('/') + kRectifier, polls);
         const AnalysisCache::Statistics before = warm.statistics();
-        const Recovery edited = recoverWith(m_ws, &warm);
-        const Recovery fresh = recoverFresh(m_ws);
+        const Recovery edited = test::recoverWith(m_ws, &warm);
+        const Recovery fresh = test::recoverUncached(m_ws);
         if (!(edited == fresh))
             return -1;
         return readFromPacks(warm.statistics()) - readFromPacks(before);
@@ -132,14 +120,14 @@ private Q_SLOTS:
         prependComment(m_ws + QLatin1Char('/') + kRectifier, 1);
         StageProcess::Result r = session.recover(m_ws, {}, {});
         QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
-        QVERIFY(r.recovery == recoverFresh(m_ws));
+        QVERIFY(r.recovery == test::recoverUncached(m_ws));
         // After a pause the warm-up has had time for (some or all of) its work.
         for (int edit = 2; edit < 5; ++edit) {
             QTest::qWait(300 * (edit - 1));
             prependComment(m_ws + QLatin1Char('/') + kRectifier, edit);
             r = session.recover(m_ws, {}, {});
             QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
-            QVERIFY(r.recovery == recoverFresh(m_ws));
+            QVERIFY(r.recovery == test::recoverUncached(m_ws));
         }
         QCOMPARE(session.workersStarted(), 1);
         qunsetenv("ROSARCH_CACHE_DIR");

@@ -3,6 +3,7 @@
 // the analysis cache, and in a long-lived worker); an edit that changes what the stages read
 // (a topic's name) is analysed again. EvidenceShift refuses moves a stage could tell apart.
 #include "analysiscache.h"
+#include "cacherecovery.h"
 #include "cachetestcase.h"
 #include "evidenceshift.h"
 #include "recovery.h"
@@ -17,19 +18,6 @@ using namespace rosarch;
 namespace {
 
 const QString kRectifier = QStringLiteral("src/vision/src/rectifier.cpp");
-
-Recovery recoverWith(const QString &root, AnalysisCache *cache, const Recovery *previous)
-{
-    StageControl control;
-    control.cache = cache;
-    return recoverWorkspace(root, {}, control, previous);
-}
-
-Recovery recoverFresh(const QString &root)
-{
-    AnalysisCache off{QString()};
-    return recoverWith(root, &off, nullptr);
-}
 
 /// Prepends `lines` comment lines to `file`.
 void prependLines(const QString &file, int lines)
@@ -110,14 +98,14 @@ private Q_SLOTS:
     void movedLinesGiveWhatAFreshRunGives()
     {
         AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        Recovery before = recoverWith(m_ws, &first, nullptr);
+        Recovery before = test::recoverWith(m_ws, &first, nullptr);
         const Lines old = linesOf(before);
         QVERIFY(old.port > 0 && old.parameter > 0 && old.part > 0);
         mark(&before);
         prependLines(m_ws + QLatin1Char('/') + kRectifier, 3);
 
         AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        Recovery after = recoverWith(m_ws, &second, &before);
+        Recovery after = test::recoverWith(m_ws, &second, &before);
         // Stage 2 came from its memo (written for the old lines), stage 3 from `before`.
         QCOMPARE(second.statistics().stores, 3); // stage 1's memo, rectifier.cpp, its manifest
         const Diagnostic *kept = marker(after);
@@ -125,7 +113,7 @@ private Q_SLOTS:
         QCOMPARE(kept->evidence.line, marker(before)->evidence.line + 3);
         after.architecture.diagnostics.removeOne(*kept);
 
-        const Recovery fresh = recoverFresh(m_ws);
+        const Recovery fresh = test::recoverUncached(m_ws);
         const Lines moved = linesOf(fresh);
         QCOMPARE(moved.port, old.port + 3);
         QCOMPARE(moved.parameter, old.parameter + 3);
@@ -141,7 +129,7 @@ private Q_SLOTS:
     void aRenamedTopicIsComposedAgain()
     {
         AnalysisCache first(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        Recovery before = recoverWith(m_ws, &first, nullptr);
+        Recovery before = test::recoverWith(m_ws, &first, nullptr);
         mark(&before);
         const QString file = m_ws + QLatin1Char('/') + kRectifier;
         QByteArray source = test::readFile(file);
@@ -151,9 +139,9 @@ private Q_SLOTS:
         prependLines(file, 2);
 
         AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
-        const Recovery after = recoverWith(m_ws, &second, &before);
+        const Recovery after = test::recoverWith(m_ws, &second, &before);
         QVERIFY2(!marker(after), "stage 3 reused a result composed from another topic");
-        const Recovery fresh = recoverFresh(m_ws);
+        const Recovery fresh = test::recoverUncached(m_ws);
         QVERIFY(after == fresh);
         bool renamed = false;
         for (const Composite &c : after.architecture.composites)
@@ -172,7 +160,7 @@ private Q_SLOTS:
         const StageProcess::Result moved = session.recover(m_ws, {}, {});
         QVERIFY2(moved.error.isEmpty(), qPrintable(moved.error));
         QCOMPARE(linesOf(moved.recovery).part, linesOf(first.recovery).part + 4);
-        QVERIFY(moved.recovery == recoverFresh(m_ws));
+        QVERIFY(moved.recovery == test::recoverUncached(m_ws));
     }
 
     void theShiftRefusesWhatAStageCouldTell()
