@@ -1,8 +1,12 @@
 // Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
 #include "cppcodescan.h"
+#include "cppgapstarts.h"
 #include "cppsyntax.h"
 
 #include <QRegularExpression>
+
+#include <cstring>
+#include <optional>
 
 namespace rosarch::cppsyntax {
 
@@ -10,17 +14,36 @@ namespace {
 
 using namespace scan;
 
+// The matches of `re` that start at one of `starts` (ascending), as globalMatch finds them when
+// no match can start elsewhere: a start inside the previous match is passed over.
+template <typename Apply>
+void eachMatchAt(const QRegularExpression &re, const QString &text,
+                 const std::vector<qsizetype> &starts, Apply apply)
+{
+    qsizetype end = -1;
+    for (const qsizetype start : starts) {
+        if (start < end)
+            continue;
+        const QRegularExpressionMatch m = re.match(text, start, QRegularExpression::NormalMatch,
+                                                   QRegularExpression::AnchorAtOffsetMatchOption);
+        if (!m.hasMatch())
+            continue;
+        apply(m);
+        end = m.capturedEnd();
+    }
+}
+
 // Explicit instantiations, `template class X<int>;`, `extern template void f<int>(int);`, at
 // the start of a statement: they declare nothing the analysis reads.
-template <typename Blank> void blankExplicitInstantiations(const QByteArray &code, Blank blank)
+template <typename Blank>
+void blankExplicitInstantiations(const QByteArray &code, const std::vector<qsizetype> &templates,
+                                 Blank blank)
 {
-    for (qsizetype from = 0;;) {
-        const qsizetype at = code.indexOf("template", from);
-        if (at < 0)
-            return;
-        from = at + 8;
-        if (!isWordAt(code, at, "template"))
+    qsizetype from = 0;
+    for (const qsizetype at : templates) {
+        if (at < from)
             continue;
+        from = at + 8;
         const qsizetype after = nextCode(code, at + 8);
         if (after >= code.size() || code.at(after) == '<') // a template declaration
             continue;
@@ -151,15 +174,13 @@ template <typename Blank> void blankMacroArguments(const QByteArray &code, Blank
 // `decltype(a, b)`, the SFINAE idiom `decltype((void)T::header, nullptr)` or `decltype(x,
 // void())`: the grammar reads no comma expression there. Its type is that of the last operand,
 // so everything up to the last comma at the top level is blanked.
-template <typename Blank> void blankDecltypeCommas(const QByteArray &code, Blank blank)
+template <typename Blank>
+void blankDecltypeCommas(const QByteArray &code, const std::vector<qsizetype> &decltypes,
+                         Blank blank)
 {
-    for (qsizetype from = 0;;) {
-        const qsizetype at = code.indexOf("decltype", from);
-        if (at < 0)
-            return;
-        from = at + 8;
+    for (const qsizetype at : decltypes) {
         const qsizetype open = nextCode(code, at + 8);
-        if (!isWordAt(code, at, "decltype") || open >= code.size() || code.at(open) != '(')
+        if (open >= code.size() || code.at(open) != '(')
             continue;
         const qsizetype close = closingParen(code, open, open + 4096);
         if (close < 0)
@@ -180,13 +201,13 @@ template <typename Blank> void blankDecltypeCommas(const QByteArray &code, Blank
 // start of a statement, `operator++();`: the grammar only reads an operator name where it is
 // declared. The symbol becomes underscores (`x.operator__(a)`), a plain member call.
 template <typename Rename>
-void renameOperatorCalls(const QByteArray &code, const QString &text, Rename rename)
+void renameOperatorCalls(const QByteArray &code, const QString &text,
+                         const std::vector<qsizetype> &starts, Rename rename)
 {
     static const QRegularExpression call(
         QStringLiteral("\\boperator([ \\t]*(?:\\([ \\t]*\\)|\\[[ \\t]*\\]|[-+*/%^&|~!=<>]+))"
                        "\\s*\\("));
-    for (auto it = call.globalMatch(text); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
+    eachMatchAt(call, text, starts, [&](const QRegularExpressionMatch &m) {
         const qsizetype before = previousCode(code, m.capturedStart());
         const bool member =
             before >= 0 && (code.at(before) == '.' ||
@@ -199,7 +220,7 @@ void renameOperatorCalls(const QByteArray &code, const QString &text, Rename ren
         }
         if (member || statement)
             rename(m.capturedStart(1), m.capturedEnd(1));
-    }
+    });
 }
 
 // Pointers to members: the grammar reads neither the type `void (C::*)(int)` nor the call
@@ -221,44 +242,45 @@ template <typename Blank> void blankPointerToMembers(const QString &text, Blank 
 
 // `using Ts::operator()...;`, the pack expansion that builds an overload set: the grammar
 // reads the using-declaration without its `...`.
-template <typename Blank> void blankUsingPackExpansions(const QString &text, Blank blank)
+template <typename Blank>
+void blankUsingPackExpansions(const QString &text, const std::vector<qsizetype> &starts,
+                              Blank blank)
 {
     static const QRegularExpression expansion(
         QStringLiteral("\\busing\\s[^;={}]*?(\\.\\.\\.)\\s*;"));
-    for (auto it = expansion.globalMatch(text); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
+    eachMatchAt(expansion, text, starts, [&](const QRegularExpressionMatch &m) {
         blank(m.capturedStart(1), m.capturedEnd(1));
-    }
+    });
 }
 
 // `typeid(int)`: the grammar reads typeid as a call, whose argument cannot be a built-in type.
-template <typename Blank> void blankTypeidTypes(const QString &text, Blank blank)
+template <typename Blank>
+void blankTypeidTypes(const QString &text, const std::vector<qsizetype> &starts, Blank blank)
 {
     static const QRegularExpression builtin(QStringLiteral(
         "\\btypeid\\s*\\(\\s*((?:const\\s+)?(?:unsigned|signed|short|long|int|char|float|double|"
         "bool|void|wchar_t|char8_t|char16_t|char32_t)\\b[^();{}]*)\\)"));
-    for (auto it = builtin.globalMatch(text); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
+    eachMatchAt(builtin, text, starts, [&](const QRegularExpressionMatch &m) {
         blank(m.capturedStart(1), m.capturedEnd(1));
-    }
+    });
 }
 
 // A reference initialised with parentheses, `const T & x(a.b);`, reads as a function returning
 // a reference whose parameters are broken. When the parentheses hold a member access (`.` or
 // `->`) and no default argument, they become braces: `const T & x{a.b};`.
 template <typename Rewrite>
-void bracedReferenceInitialisers(const QByteArray &code, const QString &text, Rewrite rewrite)
+void bracedReferenceInitialisers(const QByteArray &code, const QString &text,
+                                 const std::vector<qsizetype> &starts, Rewrite rewrite)
 {
     static const QRegularExpression reference(QStringLiteral(
         "(?:^|[;{}])\\s*(?:const\\s+)?(?:::)?[A-Za-z_]\\w*(?:\\s*<[^;{}()]*?>)?"
         "(?:\\s*::\\s*[A-Za-z_]\\w*(?:\\s*<[^;{}()]*?>)?)*\\s*&\\s*[A-Za-z_]\\w*\\s*(\\()"));
-    for (auto it = reference.globalMatch(text); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
+    eachMatchAt(reference, text, starts, [&](const QRegularExpressionMatch &m) {
         const qsizetype open = m.capturedStart(1);
         const qsizetype close = closingParen(code, open, open + 4096);
         if (close < 0 || nextCode(code, close + 1) >= code.size() ||
             code.at(nextCode(code, close + 1)) != ';')
-            continue;
+            return;
         bool access = false;
         bool defaulted = false;
         for (qsizetype i = open + 1, depth = 0; i < close; ++i) {
@@ -274,24 +296,32 @@ void bracedReferenceInitialisers(const QByteArray &code, const QString &text, Re
         }
         if (access && !defaulted)
             rewrite(open, close);
-    }
+    });
 }
 
 // A declaration as the unbraced body of `for`, `while` or `if`, `for (...) const auto r = f();`:
 // the grammar wants a statement there. The declarator is blanked, `f();` stays.
-template <typename Blank>
-void blankDeclarationBodies(const QByteArray &code, const QString &text, Blank blank)
+template <typename Text, typename Blank>
+void blankDeclarationBodies(const QByteArray &code, Text text, const std::vector<qsizetype> &heads,
+                            Blank blank)
 {
-    static const QRegularExpression head(QStringLiteral("\\b(?:for|while|if)\\s*\\("));
     static const QRegularExpression declaration(QStringLiteral(
         "\\G\\s*((?:const|constexpr)\\s+(?:auto\\b|[A-Za-z_][\\w:]*(?:<[^;{}()]*?>)?)"
         "|auto\\b)\\s*[&*]*\\s*[A-Za-z_]\\w*\\s*=(?!=)"));
-    for (auto it = head.globalMatch(text); it.hasNext();) {
-        const QRegularExpressionMatch m = it.next();
-        const qsizetype close = closingParen(code, m.capturedEnd() - 1, code.size());
+    // `\\b(?:for|while|if)\\s*\\(` matches at each head; the matches never overlap.
+    for (const qsizetype open : heads) {
+        const qsizetype close = closingParen(code, open, code.size());
         if (close < 0)
             continue;
-        const QRegularExpressionMatch d = declaration.match(text, close + 1);
+        // The declaration starts with `const`, `constexpr` or `auto`: only then is it tried.
+        qsizetype end = skipRegexSpaces(code, close + 1);
+        const qsizetype start = end;
+        while (end < code.size() && isIdentifierChar(code.at(end)))
+            ++end;
+        const std::string_view word(code.constData() + start, size_t(end - start));
+        if (word != "const" && word != "constexpr" && word != "auto")
+            continue;
+        const QRegularExpressionMatch d = declaration.match(text(), close + 1);
         if (d.hasMatch())
             blank(d.capturedStart(1), d.capturedEnd());
     }
@@ -301,11 +331,11 @@ bool isMacroWord(std::string_view word)
 {
     bool underscore = false;
     for (char c : word) {
-        if (!(std::isupper(uchar(c)) || std::isdigit(uchar(c)) || c == '_'))
+        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'))
             return false;
         underscore = underscore || c == '_';
     }
-    return word.size() > 3 && underscore && !std::isdigit(uchar(word.front()));
+    return word.size() > 3 && underscore && !(word.front() >= '0' && word.front() <= '9');
 }
 
 // True when the code before `i` ends a statement or a member: `;`, `{`, `}`, or an access
@@ -409,76 +439,74 @@ void blankGrammarGaps(QByteArray *source)
             if (code.at(i) != '\n' && code.at(i) != '\r')
                 code[i] = ' ';
     });
-    // Latin-1 maps every byte to one character, so match offsets are byte offsets.
-    const QString text = QString::fromLatin1(code);
-    auto each = [&](const QRegularExpression &re, auto apply) {
-        for (auto it = re.globalMatch(text); it.hasNext();)
-            apply(it.next());
+    const GapStarts starts = findGapStarts(code);
+    // Latin-1 maps every byte to one character, so match offsets are byte offsets. Made only
+    // for a file with a place where an expression can match.
+    std::optional<QString> latin1;
+    auto text = [&]() -> const QString & {
+        if (!latin1)
+            latin1 = QString::fromLatin1(code);
+        return *latin1;
     };
-    const bool news = contains(code, "new ");
-    const bool typenames = contains(code, "typename ");
-    const bool templates = contains(code, "template");
-    const bool braces = code.contains('{');
-    const bool macros =
-        contains(code, "_THROW") || contains(code, "SIGNAL") || contains(code, "SLOT");
-    if (news) {
+    if (!starts.news.empty() && contains(code, "new ")) {
         static const QRegularExpression pointerArray(
             QStringLiteral("\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*\\s*(\\*+)\\s*\\["));
-        each(pointerArray, [&](const QRegularExpressionMatch &m) {
+        eachMatchAt(pointerArray, text(), starts.news, [&](const QRegularExpressionMatch &m) {
             blank(m.capturedStart(1), m.capturedEnd(1));
         });
         static const QRegularExpression valueInitialized(QStringLiteral(
             "\\bnew\\s+(?:const\\s+)?[A-Za-z_][\\w:]*[\\s*]*\\[[^\\]\\n;]*\\](\\s*\\(\\s*\\))"));
-        each(valueInitialized, [&](const QRegularExpressionMatch &m) {
+        eachMatchAt(valueInitialized, text(), starts.news, [&](const QRegularExpressionMatch &m) {
             blank(m.capturedStart(1), m.capturedEnd(1));
         });
     }
-    if (typenames) {
+    if (!starts.typenames.empty() && contains(code, "typename ")) {
         static const QRegularExpression constructed(
             QStringLiteral("(?:[=(,]|\\breturn)\\s*(typename)\\s+"
                            "[A-Za-z_]\\w*(?:<[^;{}()]*?>)?(?:::[A-Za-z_]\\w*(?:<[^;{}()]*?>)?)+"
                            "\\s*[({]"));
-        each(constructed, [&](const QRegularExpressionMatch &m) {
-            blank(m.capturedStart(1), m.capturedEnd(1));
-        });
+        const std::vector<qsizetype> at = typenameStarts(code, starts.typenames);
+        if (!at.empty())
+            eachMatchAt(constructed, text(), at, [&](const QRegularExpressionMatch &m) {
+                blank(m.capturedStart(1), m.capturedEnd(1));
+            });
     }
-    if (templates) {
+    if (!starts.members.empty()) {
         static const QRegularExpression member(
             QStringLiteral("(?:->|\\.)\\s*(template)\\s+[A-Za-z_]\\w*\\s*\\("));
-        each(member, [&](const QRegularExpressionMatch &m) {
+        eachMatchAt(member, text(), starts.members, [&](const QRegularExpressionMatch &m) {
             blank(m.capturedStart(1), m.capturedEnd(1));
         });
-        blankExplicitInstantiations(code, blank);
     }
-    if (braces) {
+    blankExplicitInstantiations(code, starts.templates, blank);
+    if (code.contains('{')) {
         rewriteBracedDefaults(code, [&](qsizetype from, qsizetype to) {
             blank(from, to);
             data[from] = '0';
         });
     }
-    if (macros)
+    if (starts.macroArguments) // the words it reads, each holding a text the gate looked for
         blankMacroArguments(code, blank);
-    if (contains(code, "decltype"))
-        blankDecltypeCommas(code, blank);
-    if (contains(code, "operator")) {
-        renameOperatorCalls(code, text, [&](qsizetype from, qsizetype to) {
+    blankDecltypeCommas(code, starts.decltypes, blank);
+    if (!starts.operators.empty()) {
+        renameOperatorCalls(code, text(), starts.operators, [&](qsizetype from, qsizetype to) {
             std::fill(data + from, data + to, '_');
         });
     }
-    if (contains(code, "::*") || contains(code, "->*"))
-        blankPointerToMembers(text, blank);
-    if (contains(code, "..."))
-        blankUsingPackExpansions(text, blank);
-    if (contains(code, "typeid"))
-        blankTypeidTypes(text, blank);
-    if (code.contains('&')) {
-        bracedReferenceInitialisers(code, text, [&](qsizetype open, qsizetype close) {
-            data[open] = '{';
-            data[close] = '}';
-        });
+    if (starts.pointerToMember)
+        blankPointerToMembers(text(), blank);
+    if (!starts.usings.empty() && contains(code, "..."))
+        blankUsingPackExpansions(text(), starts.usings, blank);
+    if (!starts.typeids.empty())
+        blankTypeidTypes(text(), starts.typeids, blank);
+    if (!starts.references.empty()) {
+        bracedReferenceInitialisers(code, text(), starts.references,
+                                    [&](qsizetype open, qsizetype close) {
+                                        data[open] = '{';
+                                        data[close] = '}';
+                                    });
     }
-    if (contains(code, "for") || contains(code, "while") || contains(code, "if"))
-        blankDeclarationBodies(code, text, blank);
+    blankDeclarationBodies(code, text, starts.heads, blank);
 }
 
 } // namespace rosarch::cppsyntax

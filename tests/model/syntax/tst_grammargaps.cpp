@@ -318,6 +318,78 @@ private Q_SLOTS:
         QCOMPARE(out.left(out.lastIndexOf("void f")), src.left(src.lastIndexOf("void f")));
         QVERIFY(out.endsWith("void f(int n = 0 , const char *s = \"f(int n = {})\");\n"));
     }
+
+    // Each rewrite is tried only where a word of its pattern stands; these pin what the
+    // patterns matched when they were tried at every offset (spaces that are no blanks, a gate
+    // on text the file lacks, `returntypename`, the start of the file).
+    void rewritesAtTheirWords_data()
+    {
+        QTest::addColumn<QByteArray>("source");
+        QTest::addColumn<QByteArray>("expected");
+        QTest::newRow("new: only where the file has `new `")
+            << QByteArray("void f() { auto p = new\tint *[3]; auto q = new int *[3]; }")
+            << QByteArray("void f() { auto p = new\tint  [3]; auto q = new int  [3]; }");
+        QTest::newRow("new: no `new ` in the file")
+            << QByteArray("void f() { auto p = new\tint *[3]; }")
+            << QByteArray("void f() { auto p = new\tint *[3]; }");
+        QTest::newRow("typename: after return without a space")
+            << QByteArray("template <typename T> T f() { returntypename T::Goal(); }")
+            << QByteArray("template <typename T> T f() { return         T::Goal(); }");
+        QTest::newRow("typename: after return and =")
+            << QByteArray("template <typename T> T f() { return  typename T::Goal(); x = typename "
+                          "T::A<int>{}; }")
+            << QByteArray("template <typename T> T f() { return           T::Goal(); x =          "
+                          "T::A<int>{}; }");
+        QTest::newRow("typename: no `typename ` in the file")
+            << QByteArray("void f() { g(a,typename\tT::B()); }")
+            << QByteArray("void f() { g(a,typename\tT::B()); }");
+        QTest::newRow("template after -> and .")
+            << QByteArray("void f() { bb->template set(\"a\", 1); cc .  template get (); "
+                          "dd.template get<int>(); }")
+            << QByteArray("void f() { bb->         set(\"a\", 1); cc .           get (); "
+                          "dd.template get<int>(); }");
+        QTest::newRow("reference initialisers, at the start too")
+            << QByteArray(
+                   "const T & x(a.b);\nvoid f() { const Foo<int>&y(p->q); if (a && b(c)) {} }")
+            << QByteArray(
+                   "const T & x{a.b};\nvoid f() { const Foo<int>&y{p->q}; if (a && b(c)) {} }");
+        QTest::newRow("unbraced declaration bodies")
+            << QByteArray("void f() { for (int i = 0; i < n; ++i) const auto r = g(i); while(x) "
+                          "constexpr int k = h(); if (y) auto z = 1; }")
+            << QByteArray("void f() { for (int i = 0; i < n; ++i)                g(i); while(x)    "
+                          "               h(); if (y)          1; }");
+        QTest::newRow("a head after a vertical tab")
+            << QByteArray("void f() { if\v(a) auto b = c; iffy(x); }")
+            << QByteArray("void f() { if\v(a)          c; iffy(x); }");
+        QTest::newRow("operator calls")
+            << QByteArray("void f() { x.operator()(a); operator++(); this->operator [](1); }")
+            << QByteArray("void f() { x.operator__(a); operator__(); this->operator___(1); }");
+        QTest::newRow("using pack expansion")
+            << QByteArray("struct S : Ts... { using Ts::operator()...; };")
+            << QByteArray("struct S : Ts... { using Ts::operator()   ; };");
+        QTest::newRow("typeid of built-in types")
+            << QByteArray("void f() { auto t = typeid(int); auto u = typeid ( const char * ); }")
+            << QByteArray("void f() { auto t = typeid(   ); auto u = typeid (              ); }");
+        QTest::newRow("macro arguments")
+            << QByteArray("void f() { EXPECT_THROW(Foo f(x), E); connect(a, SIGNAL(b(int)), c, "
+                          "SLOT(d())); }")
+            << QByteArray("void f() { EXPECT_THROW(           ); connect(a, SIGNAL(      ), c, "
+                          "SLOT(   )); }");
+        QTest::newRow("decltype commas")
+            << QByteArray(
+                   "void f() { decltype(a, b) x; using T = decltype((void)T::header, nullptr); }")
+            << QByteArray(
+                   "void f() { decltype(   b) x; using T = decltype(                 nullptr); }");
+        QTest::newRow("pointers to members")
+            << QByteArray("void f() { void (C::*pm)(int) = &C::g; (obj->*pm)(1); }")
+            << QByteArray("void f() { void (   *pm)(int) = &C::g; (obj-> pm)(1); }");
+    }
+    void rewritesAtTheirWords()
+    {
+        QFETCH(QByteArray, source);
+        QFETCH(QByteArray, expected);
+        QCOMPARE(rewritten(source), expected);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGrammarGaps)
