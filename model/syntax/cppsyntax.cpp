@@ -7,7 +7,39 @@
 
 namespace rosarch::cppsyntax {
 
+const Fields &fields()
+{
+    static const Fields f = [] {
+        const auto id = [](std::string_view name) {
+            return ts::fieldId(SyntaxTree::Grammar::Cpp, name);
+        };
+        Fields f{};
+        f.alternative = id("alternative");
+        f.argument = id("argument");
+        f.arguments = id("arguments");
+        f.body = id("body");
+        f.condition = id("condition");
+        f.consequence = id("consequence");
+        f.declarator = id("declarator");
+        f.defaultValue = id("default_value");
+        f.field = id("field");
+        f.function = id("function");
+        f.left = id("left");
+        f.name = id("name");
+        f.op = id("operator");
+        f.parameters = id("parameters");
+        f.right = id("right");
+        f.scope = id("scope");
+        f.type = id("type");
+        f.value = id("value");
+        return f;
+    }();
+    return f;
+}
+
 namespace {
+
+constexpr auto Cpp = SyntaxTree::Grammar::Cpp;
 
 QString nodeText(const SyntaxTree &tree, TSNode n)
 {
@@ -17,11 +49,13 @@ QString nodeText(const SyntaxTree &tree, TSNode n)
 // Descends the `scope::scope::name` chain of a qualified_identifier.
 void splitQualifiedIdentifier(const SyntaxTree &tree, TSNode n, QStringList *scope, TSNode *last)
 {
-    while (ts::is(n, "qualified_identifier")) {
-        const TSNode s = ts::field(n, "scope");
+    static const ts::TypeSet qualified(Cpp, {"qualified_identifier"});
+    const Fields &f = fields();
+    while (qualified.contains(n)) {
+        const TSNode s = ts::field(n, f.scope);
         if (!ts::isNull(s))
             scope->append(simplified(tree, s));
-        n = ts::field(n, "name");
+        n = ts::field(n, f.name);
     }
     *last = n;
 }
@@ -30,28 +64,43 @@ void splitQualifiedIdentifier(const SyntaxTree &tree, TSNode n, QStringList *sco
 
 CallShape callShape(const SyntaxTree &tree, TSNode function)
 {
+    enum
+    {
+        Qualified,
+        Field,
+        TemplateFunction,
+        TemplateMethod,
+        Identifier,
+        FieldIdentifier
+    };
+    static const ts::TypeSet kinds(Cpp,
+                                   {"qualified_identifier", "field_expression", "template_function",
+                                    "template_method", "identifier", "field_identifier"});
+    const Fields &f = fields();
     CallShape shape;
     TSNode n = function;
-    if (ts::is(n, "qualified_identifier")) {
+    const int kind = kinds.index(n);
+    if (kind == Qualified) {
         QStringList scope;
         splitQualifiedIdentifier(tree, n, &scope, &n);
         shape.scope = scope.join(QStringLiteral("::"));
-    } else if (ts::is(n, "field_expression")) {
-        shape.receiver = ts::field(n, "argument");
-        const TSNode op = ts::field(n, "operator");
+    } else if (kind == Field) {
+        shape.receiver = ts::field(n, f.argument);
+        const TSNode op = ts::field(n, f.op);
         shape.arrow = ts::isNull(op) ? tree.view(n).find("->") != std::string_view::npos
                                      : tree.view(op) == "->";
-        n = ts::field(n, "field");
-        if (ts::is(n, "qualified_identifier")) {
+        n = ts::field(n, f.field);
+        if (kinds.index(n) == Qualified) {
             QStringList scope;
             splitQualifiedIdentifier(tree, n, &scope, &n);
             shape.scope = scope.join(QStringLiteral("::"));
         }
     }
-    if (ts::is(n, "template_function") || ts::is(n, "template_method")) {
-        shape.name = nodeText(tree, ts::field(n, "name"));
-        shape.templateArguments = ts::field(n, "arguments");
-    } else if (ts::is(n, "identifier") || ts::is(n, "field_identifier")) {
+    const int last = kinds.index(n);
+    if (last == TemplateFunction || last == TemplateMethod) {
+        shape.name = nodeText(tree, ts::field(n, f.name));
+        shape.templateArguments = ts::field(n, f.arguments);
+    } else if (last == Identifier || last == FieldIdentifier) {
         shape.name = nodeText(tree, n);
     }
     return shape;
@@ -69,6 +118,7 @@ QString firstTemplateArgument(const SyntaxTree &tree, TSNode templateArguments)
 
 std::vector<TSNode> arguments(TSNode list)
 {
+    static const ts::TypeSet comment(Cpp, {"comment"});
     // One pass with a cursor into one list: this runs for every call the analysis reads.
     std::vector<TSNode> out;
     if (ts::isNull(list))
@@ -78,7 +128,7 @@ std::vector<TSNode> arguments(TSNode list)
     if (ts_tree_cursor_goto_first_child(&cursor)) {
         do {
             const TSNode a = ts_tree_cursor_current_node(&cursor);
-            if (ts_node_is_named(a) && !ts::is(a, "comment"))
+            if (ts_node_is_named(a) && !comment.contains(a))
                 out.push_back(a);
         } while (ts_tree_cursor_goto_next_sibling(&cursor));
     }
@@ -88,7 +138,16 @@ std::vector<TSNode> arguments(TSNode list)
 
 bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content)
 {
-    if (ts::is(n, "string_literal")) {
+    enum
+    {
+        String,
+        Raw,
+        Concatenated
+    };
+    static const ts::TypeSet kinds(Cpp,
+                                   {"string_literal", "raw_string_literal", "concatenated_string"});
+    const int kind = kinds.index(n);
+    if (kind == String) {
         const std::string_view v = tree.view(n);
         const size_t open = v.find('"');
         if (open == std::string_view::npos || v.size() < open + 2 || v.back() != '"')
@@ -96,7 +155,7 @@ bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content)
         *content = QString::fromUtf8(v.data() + open + 1, qsizetype(v.size() - open - 2));
         return true;
     }
-    if (ts::is(n, "raw_string_literal")) {
+    if (kind == Raw) {
         static const QRegularExpression raw(QStringLiteral("^[uUL8]*R\"([^(]*)\\((.*)\\)\\1\"$"),
                                             QRegularExpression::DotMatchesEverythingOption);
         const auto m = raw.match(tree.text(n));
@@ -105,7 +164,7 @@ bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content)
         *content = m.captured(2);
         return true;
     }
-    if (ts::is(n, "concatenated_string")) {
+    if (kind == Concatenated) {
         QString all;
         for (TSNode part : arguments(n)) {
             QString piece;
@@ -121,27 +180,38 @@ bool stringLiteral(const SyntaxTree &tree, TSNode n, QString *content)
 
 TSNode unwrap(const SyntaxTree &tree, TSNode n)
 {
+    enum
+    {
+        Parenthesized,
+        Cast,
+        Call,
+        CompoundLiteral
+    };
+    static const ts::TypeSet kinds(Cpp, {"parenthesized_expression", "cast_expression",
+                                         "call_expression", "compound_literal_expression"});
+    const Fields &f = fields();
     for (int guard = 0; guard < 16 && !ts::isNull(n); ++guard) {
-        if (ts::is(n, "parenthesized_expression")) {
+        const int kind = kinds.index(n);
+        if (kind == Parenthesized) {
             const auto inner = arguments(n);
             if (inner.size() != 1)
                 return n;
             n = inner.front();
             continue;
         }
-        if (ts::is(n, "cast_expression")) {
-            n = ts::field(n, "value");
+        if (kind == Cast) {
+            n = ts::field(n, f.value);
             continue;
         }
-        if (ts::is(n, "call_expression") || ts::is(n, "compound_literal_expression")) {
+        if (kind == Call || kind == CompoundLiteral) {
             QString name;
             QString scope;
-            if (ts::is(n, "call_expression")) {
-                const CallShape shape = callShape(tree, ts::field(n, "function"));
+            if (kind == Call) {
+                const CallShape shape = callShape(tree, ts::field(n, f.function));
                 name = shape.name;
                 scope = shape.scope;
             } else {
-                const QStringList parts = splitScope(simplified(tree, ts::field(n, "type")));
+                const QStringList parts = splitScope(simplified(tree, ts::field(n, f.type)));
                 name = parts.isEmpty() ? QString() : parts.last();
                 scope = parts.mid(0, parts.size() - 1).join(QStringLiteral("::"));
             }
@@ -154,8 +224,7 @@ TSNode unwrap(const SyntaxTree &tree, TSNode n)
                 name == QLatin1String("ParameterValue");
             if (!transparent)
                 return n;
-            const TSNode list =
-                ts::is(n, "call_expression") ? ts::field(n, "arguments") : ts::field(n, "value");
+            const TSNode list = kind == Call ? ts::field(n, f.arguments) : ts::field(n, f.value);
             const auto args = arguments(list);
             if (args.empty())
                 return n;
@@ -169,20 +238,21 @@ TSNode unwrap(const SyntaxTree &tree, TSNode n)
 
 TSNode declaredName(TSNode declarator)
 {
+    static const ts::TypeSet names(Cpp, {"identifier", "field_identifier"});
+    const TSFieldId inner = fields().declarator;
     TSNode n = declarator;
     for (int guard = 0; guard < 16 && !ts::isNull(n); ++guard) {
-        const auto t = ts::type(n);
-        if (t == "identifier" || t == "field_identifier")
+        if (names.contains(n))
             return n;
-        TSNode inner = ts::field(n, "declarator");
-        if (ts::isNull(inner)) {
+        TSNode next = ts::field(n, inner);
+        if (ts::isNull(next)) {
             // reference_declarator keeps its identifier as an unnamed-field child.
             const auto kids = ts::namedChildren(n);
             if (kids.empty())
                 break;
-            inner = kids.back();
+            next = kids.back();
         }
-        n = inner;
+        n = next;
     }
     TSNode null{};
     return null;

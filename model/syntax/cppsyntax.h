@@ -9,6 +9,15 @@ namespace rosarch::cppsyntax {
 
 // Small helpers over the tree-sitter C++ grammar and over C++ names as text.
 
+/// The C++ grammar's field ids, looked up once: ts::field(n, fields().name) in the code that
+/// runs on every node of a function body.
+struct Fields
+{
+    TSFieldId alternative, argument, arguments, body, condition, consequence, declarator,
+        defaultValue, field, function, left, name, op, parameters, right, scope, type, value;
+};
+const Fields &fields();
+
 /// The shape of a call's function: `scope::name<templateArguments>` or `receiver->name<...>`.
 struct CallShape
 {

@@ -276,6 +276,45 @@ TSNode field(TSNode n, const char *name)
     return ts_node_child_by_field_name(n, name, uint32_t(strlen(name)));
 }
 
+static const TSLanguage *languageOf(SyntaxTree::Grammar grammar)
+{
+    return grammar == SyntaxTree::Grammar::Python ? tree_sitter_python() : tree_sitter_cpp();
+}
+
+TSFieldId fieldId(SyntaxTree::Grammar grammar, std::string_view name)
+{
+    static const FieldIds cpp(tree_sitter_cpp());
+    static const FieldIds python(tree_sitter_python());
+    return (grammar == SyntaxTree::Grammar::Python ? python : cpp).id(name);
+}
+
+TypeSet::TypeSet(SyntaxTree::Grammar grammar, std::initializer_list<std::string_view> names)
+    : m_language(languageOf(grammar)), m_names(names)
+{
+    const uint32_t count = ts_language_symbol_count(m_language);
+    m_bySymbol.assign(count, -1);
+    for (uint32_t s = 0; s < count; ++s) {
+        const char *name = ts_language_symbol_name(m_language, TSSymbol(s));
+        if (!name)
+            continue;
+        // The first of equal names, as indexOf would find it.
+        for (size_t i = 0; i < m_names.size() && i < 127; ++i)
+            if (m_names[i] == name) {
+                m_bySymbol[s] = std::int8_t(i);
+                break;
+            }
+    }
+}
+
+int TypeSet::slowIndex(TSNode n) const
+{
+    const std::string_view t = type(n);
+    for (size_t i = 0; i < m_names.size() && i < 127; ++i)
+        if (m_names[i] == t)
+            return int(i);
+    return -1;
+}
+
 // The children through a cursor, in one pass: ts_node_child(n, i) walks from the first
 // child each time, which made wide nodes (an ERROR node holding a whole broken header)
 // quadratic.
@@ -317,6 +356,22 @@ std::vector<TSNode> fieldChildren(TSNode n, const char *name)
         do {
             const char *field = ts_tree_cursor_current_field_name(&cursor);
             if (field && strcmp(field, name) == 0)
+                out.push_back(ts_tree_cursor_current_node(&cursor));
+        } while (ts_tree_cursor_goto_next_sibling(&cursor));
+    }
+    ts_tree_cursor_delete(&cursor);
+    return out;
+}
+
+std::vector<TSNode> fieldChildren(TSNode n, TSFieldId id)
+{
+    std::vector<TSNode> out;
+    if (ts_node_is_null(n) || id == 0)
+        return out;
+    TSTreeCursor cursor = ts_tree_cursor_new(n);
+    if (ts_tree_cursor_goto_first_child(&cursor)) {
+        do {
+            if (ts_tree_cursor_current_field_id(&cursor) == id)
                 out.push_back(ts_tree_cursor_current_node(&cursor));
         } while (ts_tree_cursor_goto_next_sibling(&cursor));
     }

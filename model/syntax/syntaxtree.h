@@ -10,6 +10,8 @@
 #include <tree_sitter/api.h>
 
 #include <chrono>
+#include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -86,11 +88,44 @@ inline bool is(TSNode n, std::string_view t)
     return type(n) == t;
 }
 TSNode field(TSNode n, const char *name);
+/// The id of field `name` in `grammar` (0 when it has none): field(n, id) finds the child
+/// without looking the name up, for the loops that run on every node.
+TSFieldId fieldId(SyntaxTree::Grammar grammar, std::string_view name);
+inline TSNode field(TSNode n, TSFieldId id)
+{
+    return ts_node_is_null(n) ? n : ts_node_child_by_field_id(n, id);
+}
+
+/// A few node types of one grammar, told apart by symbol rather than by comparing names:
+/// a table from each symbol of the grammar to the index of its name in `names`, built once.
+/// index(n) is `names`' index of type(n), -1 when it is none of them.
+class TypeSet
+{
+public:
+    TypeSet(SyntaxTree::Grammar grammar, std::initializer_list<std::string_view> names);
+    int index(TSNode n) const
+    {
+        if (ts_node_is_null(n))
+            return -1;
+        const TSSymbol symbol = ts_node_symbol(n);
+        if (symbol < m_bySymbol.size() && ts_tree_language(n.tree) == m_language)
+            return m_bySymbol[symbol];
+        return slowIndex(n); // ERROR and the other built-in symbols, another grammar
+    }
+    bool contains(TSNode n) const { return index(n) >= 0; }
+
+private:
+    int slowIndex(TSNode n) const;
+    const TSLanguage *m_language;
+    std::vector<std::string_view> m_names;
+    std::vector<std::int8_t> m_bySymbol;
+};
 std::vector<TSNode> namedChildren(TSNode n);
 std::vector<TSNode> children(TSNode n);
 /// Every child under field `name` (a cursor: ts_node_field_name_for_child misreports
 /// fields after unnamed children in tree-sitter 0.20).
 std::vector<TSNode> fieldChildren(TSNode n, const char *name);
+std::vector<TSNode> fieldChildren(TSNode n, TSFieldId id);
 /// The nearest ancestor of one of the given types (null node if none).
 TSNode ancestor(TSNode n, std::initializer_list<std::string_view> types);
 /// Calls `visit` for `n` and every descendant in document order; return false to skip children.

@@ -24,10 +24,10 @@ QStringList templateParameterNames(const SyntaxTree &tree, TSNode list)
 {
     QStringList names;
     for (TSNode p : ts::namedChildren(list)) {
-        TSNode name = ts::field(p, "name");
+        TSNode name = ts::field(p, fields().name);
         if (ts::isNull(name)) {
             if (ts::is(p, "parameter_declaration") || ts::is(p, "optional_parameter_declaration"))
-                name = declaredName(ts::field(p, "declarator"));
+                name = declaredName(ts::field(p, fields().declarator));
             else
                 for (TSNode c : ts::namedChildren(p))
                     if (ts::is(c, "type_identifier") || ts::is(c, "identifier"))
@@ -45,11 +45,17 @@ public:
     Walker(const SyntaxTree &tree, CppFileFacts &facts, const CppMacros &macros)
         : m_tree(tree), m_facts(facts), m_macros(macros)
     {
-        const QByteArray &src = tree.source();
-        m_rclcppNode =
-            src.contains("using rclcpp::Node;") || src.contains("using namespace rclcpp;");
-        m_lifecycleNode = src.contains("using rclcpp_lifecycle::LifecycleNode;") ||
-                          src.contains("using namespace rclcpp_lifecycle;");
+        // Each of the four texts starts with "using ": one scan for that instead of four.
+        const std::string_view src(tree.source().constData(), size_t(tree.source().size()));
+        for (size_t at = src.find("using "); at != std::string_view::npos;
+             at = src.find("using ", at + 1)) {
+            const std::string_view rest = src.substr(at);
+            m_rclcppNode = m_rclcppNode || rest.starts_with("using rclcpp::Node;") ||
+                           rest.starts_with("using namespace rclcpp;");
+            m_lifecycleNode = m_lifecycleNode ||
+                              rest.starts_with("using rclcpp_lifecycle::LifecycleNode;") ||
+                              rest.starts_with("using namespace rclcpp_lifecycle;");
+        }
     }
 
     void visitScope(TSNode n, const Scope &scope)
@@ -63,12 +69,13 @@ public:
         const auto t = ts::type(n);
         if (t == "namespace_definition") {
             Scope inner = scope;
-            const QStringList parts = splitScope(simplified(m_tree, ts::field(n, "name")));
+            const QStringList parts = splitScope(simplified(m_tree, ts::field(n, fields().name)));
             inner.namespaces += parts;
             inner.path += parts;
-            visitScope(ts::field(n, "body"), inner);
+            visitScope(ts::field(n, fields().body), inner);
         } else if (t == "template_declaration") {
-            const QStringList params = templateParameterNames(m_tree, ts::field(n, "parameters"));
+            const QStringList params =
+                templateParameterNames(m_tree, ts::field(n, fields().parameters));
             for (TSNode child : ts::namedChildren(n))
                 if (!ts::is(child, "template_parameter_list"))
                     visitDeclaration(child, scope, params);
@@ -76,17 +83,17 @@ public:
             addClass(n, scope, templateParameters);
         } else if (t == "function_definition") {
             // A class the parser closed early can end up as the return type of what follows.
-            const TSNode type = ts::field(n, "type");
+            const TSNode type = ts::field(n, fields().type);
             if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
                 addClass(type, scope, templateParameters);
             addFunction(n, scope, templateParameters);
         } else if (t == "alias_declaration") {
-            addAlias(scope, m_tree.text(ts::field(n, "name")),
-                     simplified(m_tree, ts::field(n, "type")));
+            addAlias(scope, m_tree.text(ts::field(n, fields().name)),
+                     simplified(m_tree, ts::field(n, fields().type)));
         } else if (t == "type_definition") {
-            const QString type = simplified(m_tree, ts::field(n, "type"));
+            const QString type = simplified(m_tree, ts::field(n, fields().type));
             for (TSNode c : ts::namedChildren(n)) {
-                if (ts::is(c, "type_identifier") && !ts_node_eq(c, ts::field(n, "type")))
+                if (ts::is(c, "type_identifier") && !ts_node_eq(c, ts::field(n, fields().type)))
                     addAlias(scope, m_tree.text(c), type);
             }
         } else if (t == "using_declaration") {
@@ -94,13 +101,13 @@ public:
         } else if (t == "field_declaration") {
             addField(n, scope);
         } else if (t == "declaration") {
-            const TSNode type = ts::field(n, "type");
+            const TSNode type = ts::field(n, fields().type);
             if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
                 addClass(type, scope, templateParameters);
             else if (scope.classIndex < 0)
                 addConstant(n);
         } else if (t == "linkage_specification") {
-            visitScope(ts::field(n, "body"), scope);
+            visitScope(ts::field(n, fields().body), scope);
         } else if (t == "preproc_if" || t == "preproc_ifdef" || t == "preproc_else" ||
                    t == "preproc_elif" || t == "preproc_elifdef" || t == "declaration_list" ||
                    t == "ERROR") {
@@ -111,8 +118,8 @@ public:
 private:
     void addClass(TSNode n, const Scope &scope, const QStringList &templateParameters)
     {
-        const TSNode body = ts::field(n, "body");
-        const TSNode nameNode = ts::field(n, "name");
+        const TSNode body = ts::field(n, fields().body);
+        const TSNode nameNode = ts::field(n, fields().name);
         if (ts::isNull(body) || ts::isNull(nameNode))
             return;
         QStringList written = splitScope(withoutTemplateArguments(simplified(m_tree, nameNode)));
@@ -196,7 +203,7 @@ private:
     // A member: its type (helpers are found by it) and its in-class initializer.
     void addField(TSNode n, const Scope &scope)
     {
-        const TSNode type = ts::field(n, "type");
+        const TSNode type = ts::field(n, fields().type);
         if (ts::is(type, "class_specifier") || ts::is(type, "struct_specifier"))
             addClass(type, scope, {});
         if (scope.classIndex < 0)
@@ -207,12 +214,12 @@ private:
             if (ts::is(child, "function_declarator"))
                 return; // a method declaration
         }
-        const TSNode declarator = ts::field(n, "declarator");
+        const TSNode declarator = ts::field(n, fields().declarator);
         const QString name = m_tree.text(declaredName(declarator));
         if (name.isEmpty())
             return;
         c.memberTypes.insert(name, typeText);
-        TSNode value = ts::field(n, "default_value");
+        TSNode value = ts::field(n, fields().defaultValue);
         if (ts::isNull(value))
             return;
         if (ts::is(value, "initializer_list")) {
@@ -256,14 +263,14 @@ private:
             if (!ts::is(d, "init_declarator"))
                 continue;
             QString literal;
-            TSNode value = ts::field(d, "value");
+            TSNode value = ts::field(d, fields().value);
             if (ts::is(value, "initializer_list") || ts::is(value, "argument_list")) {
                 const auto items = arguments(value);
                 value = items.size() == 1 ? items.front() : TSNode{};
             }
             if (ts::isNull(value) || !stringLiteral(m_tree, unwrap(m_tree, value), &literal))
                 continue;
-            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
+            const QString name = m_tree.text(declaredName(ts::field(d, fields().declarator)));
             if (!name.isEmpty() && !m_facts.constants.contains(name))
                 m_facts.constants.insert(name, literal);
         }

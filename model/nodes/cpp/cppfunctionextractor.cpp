@@ -21,7 +21,7 @@ TSNode functionDeclarator(TSNode declarator)
     for (int guard = 0; guard < 8 && !ts::isNull(n); ++guard) {
         if (ts::is(n, "function_declarator"))
             return n;
-        TSNode inner = ts::field(n, "declarator");
+        TSNode inner = ts::field(n, fields().declarator);
         if (ts::isNull(inner)) {
             const auto kids = ts::namedChildren(n);
             if (kids.empty())
@@ -54,7 +54,7 @@ CppFunction CppFunctionExtractor::extract(TSNode definition,
     readSignature(definition);
     m_member = m_context.ownerClass >= 0 || !m_function.ownerScope.isEmpty();
     readInitializers(definition);
-    const TSNode body = ts::field(definition, "body");
+    const TSNode body = ts::field(definition, fields().body);
     visit(body);
     // `std::string getName() override {return std::string("navigate_to_pose");}`
     const std::vector<TSNode> statements = arguments(body);
@@ -71,28 +71,28 @@ CppFunction CppFunctionExtractor::extract(TSNode definition,
 
 void CppFunctionExtractor::readSignature(TSNode definition)
 {
-    const TSNode fd = functionDeclarator(ts::field(definition, "declarator"));
-    TSNode nameNode = ts::field(fd, "declarator");
+    const TSNode fd = functionDeclarator(ts::field(definition, fields().declarator));
+    TSNode nameNode = ts::field(fd, fields().declarator);
     QStringList scope;
     while (ts::is(nameNode, "qualified_identifier")) {
-        const TSNode s = ts::field(nameNode, "scope");
+        const TSNode s = ts::field(nameNode, fields().scope);
         if (!ts::isNull(s))
             scope.append(simplified(m_tree, s));
-        nameNode = ts::field(nameNode, "name");
+        nameNode = ts::field(nameNode, fields().name);
     }
     if (ts::is(nameNode, "template_function"))
-        nameNode = ts::field(nameNode, "name");
+        nameNode = ts::field(nameNode, fields().name);
     m_function.name = simplified(m_tree, nameNode);
     m_function.ownerScope = scope.join(QStringLiteral("::"));
     const QString className =
         m_function.ownerScope.isEmpty() ? m_context.className : lastSegment(m_function.ownerScope);
     m_function.isConstructor = !className.isEmpty() && m_function.name == className;
 
-    for (TSNode p : ts::namedChildren(ts::field(fd, "parameters"))) {
+    for (TSNode p : ts::namedChildren(ts::field(fd, fields().parameters))) {
         if (ts::is(p, "comment") || m_tree.view(p) == "void")
             continue;
-        const TSNode nameOf = declaredName(ts::field(p, "declarator"));
-        const TSNode def = ts::field(p, "default_value");
+        const TSNode nameOf = declaredName(ts::field(p, fields().declarator));
+        const TSNode def = ts::field(p, fields().defaultValue);
         QString defaultValue;
         stringLiteral(m_tree, def, &defaultValue);
         // The declaration without its default: "const std::string & topic".
@@ -147,57 +147,154 @@ void CppFunctionExtractor::readInitializers(TSNode definition)
     }
 }
 
-void CppFunctionExtractor::visit(TSNode body)
+void CppFunctionExtractor::visit(TSNode root)
 {
-    ts::walk(body, [this](TSNode n) {
-        const auto t = ts::type(n);
-        if (t == "declaration") {
-            onDeclaration(n);
-        } else if (t == "assignment_expression") {
-            onAssignment(n);
-        } else if (t == "call_expression") {
-            onCall(n);
-        } else if (t == "new_expression") {
-            onNew(n);
-        } else if (t == "return_statement") {
-            const auto value = arguments(n);
-            if (value.size() == 1 && ts::is(unwrap(m_tree, value.front()), "identifier"))
-                m_returned.append(m_tree.text(unwrap(m_tree, value.front())));
-        } else if (t == "alias_declaration") {
-            m_function.aliases.insert(m_tree.text(ts::field(n, "name")),
-                                      simplified(m_tree, ts::field(n, "type")));
-            return false;
-        } else if (t == "using_declaration") {
-            // `using std_msgs::msg::Int32;` inside a function body
-            const auto kids = arguments(n);
-            const QString target = kids.empty() ? QString() : simplified(m_tree, kids.back());
-            const QString last = lastSegment(target);
-            bool isNamespace = false;
-            for (TSNode c : ts::children(n))
-                isNamespace = isNamespace || ts::is(c, "namespace");
-            if (!isNamespace && !last.isEmpty() && last != target)
-                m_function.aliases.insert(last, target);
-            return false;
-        } else if (t == "type_definition") {
-            const TSNode type = ts::field(n, "type");
-            for (TSNode c : ts::namedChildren(n))
-                if (ts::is(c, "type_identifier") && !ts_node_eq(c, type))
-                    m_function.aliases.insert(m_tree.text(c), simplified(m_tree, type));
-            return false;
-        } else if (t == "class_specifier" || t == "struct_specifier") {
-            return false; // local classes are not followed
+    // ts::walk, keeping the path from `root` down (m_path), so that the handlers know the
+    // ancestors of the node they read without climbing with ts_node_parent, which descends
+    // from the root of the tree on each call.
+    if (ts::isNull(root))
+        return;
+    m_path.clear();
+    TSTreeCursor cursor = ts_tree_cursor_new(root);
+    for (;;) {
+        const TSNode n = ts_tree_cursor_current_node(&cursor);
+        if (visitNode(n) && ts_tree_cursor_goto_first_child(&cursor)) {
+            m_path.push_back(n);
+            continue;
         }
+        // Up until a next sibling exists, never above `root`.
+        bool moved = false;
+        while (!moved && !m_path.empty()) {
+            moved = ts_tree_cursor_goto_next_sibling(&cursor);
+            if (!moved) {
+                if (!ts_tree_cursor_goto_parent(&cursor))
+                    break;
+                m_path.pop_back();
+            }
+        }
+        if (!moved)
+            break;
+    }
+    ts_tree_cursor_delete(&cursor);
+    m_path.clear();
+}
+
+bool CppFunctionExtractor::visitNode(TSNode n)
+{
+    enum
+    {
+        Declaration,
+        Assignment,
+        Call,
+        New,
+        Return,
+        Alias,
+        Using,
+        TypeDefinition,
+        Class,
+        Struct
+    };
+    static const ts::TypeSet kinds(SyntaxTree::Grammar::Cpp,
+                                   {"declaration", "assignment_expression", "call_expression",
+                                    "new_expression", "return_statement", "alias_declaration",
+                                    "using_declaration", "type_definition", "class_specifier",
+                                    "struct_specifier"});
+    static const ts::TypeSet identifier(SyntaxTree::Grammar::Cpp, {"identifier"});
+    static const ts::TypeSet namespaceKeyword(SyntaxTree::Grammar::Cpp, {"namespace"});
+    static const ts::TypeSet typeIdentifier(SyntaxTree::Grammar::Cpp, {"type_identifier"});
+    const Fields &f = fields();
+    switch (kinds.index(n)) {
+    case Declaration:
+        onDeclaration(n);
         return true;
-    });
+    case Assignment:
+        onAssignment(n);
+        return true;
+    case Call:
+        onCall(n);
+        return true;
+    case New:
+        onNew(n);
+        return true;
+    case Return: {
+        const auto value = arguments(n);
+        if (value.size() == 1 && identifier.contains(unwrap(m_tree, value.front())))
+            m_returned.append(m_tree.text(unwrap(m_tree, value.front())));
+        return true;
+    }
+    case Alias:
+        m_function.aliases.insert(m_tree.text(ts::field(n, f.name)),
+                                  simplified(m_tree, ts::field(n, f.type)));
+        return false;
+    case Using: {
+        // `using std_msgs::msg::Int32;` inside a function body
+        const auto kids = arguments(n);
+        const QString target = kids.empty() ? QString() : simplified(m_tree, kids.back());
+        const QString last = lastSegment(target);
+        bool isNamespace = false;
+        for (TSNode c : ts::children(n))
+            isNamespace = isNamespace || namespaceKeyword.contains(c);
+        if (!isNamespace && !last.isEmpty() && last != target)
+            m_function.aliases.insert(last, target);
+        return false;
+    }
+    case TypeDefinition: {
+        const TSNode type = ts::field(n, f.type);
+        for (TSNode c : ts::namedChildren(n))
+            if (typeIdentifier.contains(c) && !ts_node_eq(c, type))
+                m_function.aliases.insert(m_tree.text(c), simplified(m_tree, type));
+        return false;
+    }
+    case Class:
+    case Struct:
+        return false; // local classes are not followed
+    default:
+        return true;
+    }
+}
+
+// `for (std::size_t i = 0; ...)`: whether a for statement is among the three nearest ancestors
+// of `value`, the nearest of which are `near` (innermost first), and above them the walk's path.
+bool CppFunctionExtractor::inLoopHead(TSNode value, std::initializer_list<TSNode> near) const
+{
+    static const ts::TypeSet forStatement(SyntaxTree::Grammar::Cpp, {"for_statement"});
+    if (ts::isNull(value))
+        return false;
+    // ts_node_parent finds a parent by byte ranges: for an empty node (a MISSING one) that can
+    // be a token before it rather than the node holding it. Climb as CppLocal::setValue does.
+    if (ts_node_start_byte(value) == ts_node_end_byte(value)) {
+        CppLocal probe;
+        probe.setValue(value);
+        return probe.loopInitial;
+    }
+    int up = 0;
+    TSNode last = value;
+    for (TSNode a : near) {
+        if (up == 3)
+            return false;
+        if (forStatement.contains(a))
+            return true;
+        ++up;
+        last = a;
+    }
+    for (auto it = m_path.crbegin(); it != m_path.crend() && up < 3; ++it, ++up) {
+        if (forStatement.contains(*it))
+            return true;
+        last = *it;
+    }
+    for (TSNode p = ts_node_parent(last); up < 3 && !ts::isNull(p); ++up, p = ts_node_parent(p))
+        if (forStatement.contains(p))
+            return true;
+    return false;
 }
 
 void CppFunctionExtractor::onDeclaration(TSNode declaration)
 {
-    const QString type = simplified(m_tree, ts::field(declaration, "type"));
-    for (TSNode d : ts::fieldChildren(declaration, "declarator")) {
+    const QString type = simplified(m_tree, ts::field(declaration, fields().type));
+    for (TSNode d : ts::fieldChildren(declaration, fields().declarator)) {
         if (ts::is(d, "init_declarator")) {
-            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
-            const TSNode value = ts::field(d, "value");
+            const QString name = m_tree.text(declaredName(ts::field(d, fields().declarator)));
+            const TSNode value = ts::field(d, fields().value);
             CppLocal local;
             local.type = type;
             if (ts::is(value, "argument_list") || ts::is(value, "initializer_list")) {
@@ -217,23 +314,23 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
                     addInstantiation(type, args, declaration);
                 }
                 if (args.size() == 1) // std::string topic("chatter");
-                    local.setValue(args.front());
+                    local.setValue(args.front(), inLoopHead(args.front(), {value, d, declaration}));
             } else {
-                local.setValue(value);
+                local.setValue(value, inLoopHead(value, {d, declaration}));
             }
             if (!name.isEmpty())
                 m_locals.insert(name, local);
         } else if (ts::is(d, "function_declarator")) {
             // `image_transport::ImageTransport it(shared_from_this());` parses as a function
             // declaration inside a body; treat it as a local constructed from its arguments.
-            const QString name = m_tree.text(declaredName(ts::field(d, "declarator")));
+            const QString name = m_tree.text(declaredName(ts::field(d, fields().declarator)));
             if (name.isEmpty())
                 continue;
             CppLocal local;
             local.type = type;
             m_locals.insert(name, local);
             std::vector<TSNode> args;
-            for (TSNode p : arguments(ts::field(d, "parameters")))
+            for (TSNode p : arguments(ts::field(d, fields().parameters)))
                 args.push_back(p);
             addInstantiation(type, args, declaration);
         } else {
@@ -249,25 +346,26 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
 
 void CppFunctionExtractor::onAssignment(TSNode assignment)
 {
-    const TSNode left = ts::field(assignment, "left");
-    const TSNode right = ts::field(assignment, "right");
-    const TSNode op = ts::field(assignment, "operator");
+    const TSNode left = ts::field(assignment, fields().left);
+    const TSNode right = ts::field(assignment, fields().right);
+    const TSNode op = ts::field(assignment, fields().op);
     const bool plain = ts::isNull(op) || m_tree.view(op) == "=";
     const TSNode value = plain ? right : assignment;
     if (ts::is(left, "identifier")) {
         const QString name = m_tree.text(left);
         auto it = m_locals.find(name);
         if (it != m_locals.end()) {
-            it->setValue(value);
+            it->setValue(value, plain ? inLoopHead(value, {assignment}) : inLoopHead(value, {}));
             return;
         }
         if (m_function.parameterNames.contains(name))
             return;
         if (m_member)
             m_function.memberBindings.append({name, m_values.evaluate(value)});
-    } else if (ts::is(left, "field_expression") && ts::is(ts::field(left, "argument"), "this")) {
+    } else if (ts::is(left, "field_expression") &&
+               ts::is(ts::field(left, fields().argument), "this")) {
         m_function.memberBindings.append(
-            {m_tree.text(ts::field(left, "field")), m_values.evaluate(value)});
+            {m_tree.text(ts::field(left, fields().field)), m_values.evaluate(value)});
     } else if (ts::is(left, "field_expression")) {
         addFieldBinding(left, m_values.evaluate(value));
     }
@@ -286,8 +384,8 @@ void CppFunctionExtractor::addFieldBinding(TSNode target, const CppValue &value)
 
 void CppFunctionExtractor::onNew(TSNode expression)
 {
-    const QString type = simplified(m_tree, ts::field(expression, "type"));
-    const auto args = arguments(ts::field(expression, "arguments"));
+    const QString type = simplified(m_tree, ts::field(expression, fields().type));
+    const auto args = arguments(ts::field(expression, fields().arguments));
     bool lifecycle = false;
     if (isProceduralNodeType(type, &lifecycle)) {
         addProceduralNode(expression, args, lifecycle);
@@ -298,10 +396,10 @@ void CppFunctionExtractor::onNew(TSNode expression)
 
 void CppFunctionExtractor::onCall(TSNode call)
 {
-    const CallShape shape = callShape(m_tree, ts::field(call, "function"));
+    const CallShape shape = callShape(m_tree, ts::field(call, fields().function));
     if (shape.name.isEmpty())
         return;
-    const auto args = arguments(ts::field(call, "arguments"));
+    const auto args = arguments(ts::field(call, fields().arguments));
     onParameterCall(shape.name, args);
     if (m_portCalls.read(call, shape, args))
         return;
@@ -374,8 +472,8 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
         if (m_member && !m_function.parameterNames.contains(var))
             m_function.memberBindings.append({var, bound});
     } else if (ts::is(target, "field_expression") &&
-               ts::is(ts::field(target, "argument"), "this")) {
-        bound.variable = m_tree.text(ts::field(target, "field"));
+               ts::is(ts::field(target, fields().argument), "this")) {
+        bound.variable = m_tree.text(ts::field(target, fields().field));
         m_function.memberBindings.append({bound.variable, bound});
     } else if (ts::is(target, "field_expression")) {
         addFieldBinding(target, bound); // get_parameter("p", params_.p)
@@ -528,10 +626,10 @@ QString CppFunctionExtractor::assignedVariable(TSNode expression) const
         n = p;
         p = ts_node_parent(p);
     }
-    if (ts::is(p, "init_declarator") && nodesEqual(ts::field(p, "value"), n))
-        return m_tree.text(declaredName(ts::field(p, "declarator")));
-    if (ts::is(p, "assignment_expression") && nodesEqual(ts::field(p, "right"), n))
-        return simplified(m_tree, ts::field(p, "left"));
+    if (ts::is(p, "init_declarator") && nodesEqual(ts::field(p, fields().value), n))
+        return m_tree.text(declaredName(ts::field(p, fields().declarator)));
+    if (ts::is(p, "assignment_expression") && nodesEqual(ts::field(p, fields().right), n))
+        return simplified(m_tree, ts::field(p, fields().left));
     if (ts::is(p, "argument_list") && ts::is(ts_node_parent(p), "field_initializer"))
         return simplified(m_tree, ts::namedChildren(ts_node_parent(p)).front());
     return {};

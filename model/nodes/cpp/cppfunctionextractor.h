@@ -39,7 +39,9 @@ public:
 private:
     void readSignature(TSNode functionDefinition);
     void readInitializers(TSNode functionDefinition);
-    void visit(TSNode body);
+    void visit(TSNode root);
+    bool visitNode(TSNode n);
+    bool inLoopHead(TSNode value, std::initializer_list<TSNode> near) const;
     void onDeclaration(TSNode declaration);
     void onAssignment(TSNode assignment);
     void onCall(TSNode call);
@@ -63,7 +65,8 @@ private:
     bool m_member = false;
     QStringList m_templateParameters;
     QHash<QString, CppLocal> m_locals;
-    QStringList m_returned; ///< locals the function returns (node factories are no nodes)
+    std::vector<TSNode> m_path; ///< while visiting: the ancestors of the node visited
+    QStringList m_returned;     ///< locals the function returns (node factories are no nodes)
     CppValueEvaluator m_values{m_tree, m_locals, m_function, m_context.macros};
     CppPortCallReader m_portCalls{m_tree,       m_values,  m_locals, m_templateParameters,
                                   m_definition, m_function};

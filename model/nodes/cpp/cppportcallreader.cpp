@@ -280,18 +280,18 @@ QString CppPortCallReader::callbackName(const std::vector<TSNode> &args, int fir
         if (t == "lambda_expression")
             return QStringLiteral("lambda");
         if (t == "pointer_expression") {
-            const QString target = simplified(m_tree, ts::field(a, "argument"));
+            const QString target = simplified(m_tree, ts::field(a, fields().argument));
             return lastSegment(target);
         }
         if (t == "call_expression") {
-            const CallShape shape = callShape(m_tree, ts::field(a, "function"));
+            const CallShape shape = callShape(m_tree, ts::field(a, fields().function));
             if (shape.name == QLatin1String("bind") || shape.name == QLatin1String("bind_front")) {
-                const auto bound = arguments(ts::field(a, "arguments"));
+                const auto bound = arguments(ts::field(a, fields().arguments));
                 if (bound.empty())
                     return QStringLiteral("bind");
                 const TSNode target = unwrap(m_tree, bound.front());
                 if (ts::is(target, "pointer_expression"))
-                    return lastSegment(simplified(m_tree, ts::field(target, "argument")));
+                    return lastSegment(simplified(m_tree, ts::field(target, fields().argument)));
                 if (ts::is(target, "lambda_expression"))
                     return QStringLiteral("lambda");
                 return lastSegment(simplified(m_tree, target));
@@ -316,7 +316,7 @@ QString CppPortCallReader::callbackName(const std::vector<TSNode> &args, int fir
                 return text;
             }
             if (t == "field_expression")
-                return m_tree.text(ts::field(a, "field"));
+                return m_tree.text(ts::field(a, fields().field));
             return lastSegment(text);
         }
     }
@@ -331,17 +331,17 @@ void CppPortCallReader::guardOf(TSNode call, QString *guard, CppValue *guardValu
          child = p, p = ts_node_parent(p)) {
         if (!ts::is(p, "if_statement"))
             continue;
-        const TSNode clause = ts::field(p, "condition");
-        TSNode value = ts::field(clause, "value");
+        const TSNode clause = ts::field(p, fields().condition);
+        TSNode value = ts::field(clause, fields().value);
         if (ts::isNull(value))
             value = clause;
         QString text = simplified(m_tree, value);
         if (ts::is(value, "condition_clause") && text.startsWith(u'(') && text.endsWith(u')'))
             text = text.mid(1, text.size() - 2).trimmed();
         bool negated = false;
-        if (encloses(ts::field(p, "consequence"), child))
+        if (encloses(ts::field(p, fields().consequence), child))
             negated = false;
-        else if (encloses(ts::field(p, "alternative"), child))
+        else if (encloses(ts::field(p, fields().alternative), child))
             negated = true;
         else
             continue; // inside the condition itself

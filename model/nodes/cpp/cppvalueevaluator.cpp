@@ -147,7 +147,7 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         v.kind = CppValue::Kind::SelfNode;
         return v;
     }
-    if (t == "pointer_expression" && ts::is(ts::field(n, "argument"), "this")) {
+    if (t == "pointer_expression" && ts::is(ts::field(n, fields().argument), "this")) {
         v.kind = CppValue::Kind::SelfNode;
         return v;
     }
@@ -157,15 +157,15 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         return r;
     }
     // `prefix + "/" + name`, `std::string(ns_) + "/" + name`: the parts, resolved later.
-    if (t == "binary_expression" && m_tree.text(ts::field(n, "operator")) == QLatin1String("+")) {
+    if (t == "binary_expression" && m_tree.text(ts::field(n, fields().op)) == QLatin1String("+")) {
         v.kind = CppValue::Kind::Concatenation;
-        for (const char *side : {"left", "right"})
+        for (const TSFieldId side : {fields().left, fields().right})
             appendPart(&v, evaluate(ts::field(n, side), depth + 1));
         return v;
     }
-    if (t == "field_expression" && ts::is(ts::field(n, "argument"), "this")) {
+    if (t == "field_expression" && ts::is(ts::field(n, fields().argument), "this")) {
         v.kind = CppValue::Kind::Member;
-        v.variable = m_tree.text(ts::field(n, "field"));
+        v.variable = m_tree.text(ts::field(n, fields().field));
         return v;
     }
     if (t == "field_expression") {
@@ -180,7 +180,7 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         return v;
     }
     if (t == "call_expression") {
-        const CallShape shape = callShape(m_tree, ts::field(n, "function"));
+        const CallShape shape = callShape(m_tree, ts::field(n, fields().function));
         const bool onSelf = ts::isNull(shape.receiver) || ts::is(shape.receiver, "this");
         if (m_macros && ts::isNull(shape.receiver) && shape.scope.isEmpty() &&
             ts::isNull(shape.templateArguments)) {
@@ -188,7 +188,7 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
             const auto macro = m_macros->constFind(shape.name.toUtf8());
             if (macro != m_macros->cend() && macro->functionLike) {
                 QList<QByteArray> texts;
-                for (TSNode a : arguments(ts::field(n, "arguments")))
+                for (TSNode a : arguments(ts::field(n, fields().arguments)))
                     texts.append(
                         QByteArray(m_tree.view(a).data(), qsizetype(m_tree.view(a).size())));
                 const QString value = CppPreprocessor::expandedValue(*macro, texts, *m_macros);
@@ -210,14 +210,14 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
             !lower.endsWith(QLatin1String("parameters")) &&
             (lower.contains(QLatin1String("get")) || lower.contains(QLatin1String("declare")))) {
             QString parameter;
-            if (literalParameterIndex(arguments(ts::field(n, "arguments")), &parameter, depth) >=
-                0) {
+            if (literalParameterIndex(arguments(ts::field(n, fields().arguments)), &parameter,
+                                      depth) >= 0) {
                 v.kind = CppValue::Kind::Parameter;
                 v.parameter = parameter;
                 return v;
             }
         }
-        const std::vector<TSNode> args = arguments(ts::field(n, "arguments"));
+        const std::vector<TSNode> args = arguments(ts::field(n, fields().arguments));
         // `std::shared_ptr<rclcpp::Node>(this, [](rclcpp::Node *) {})`: a handle on this node.
         if (shape.name == QLatin1String("shared_ptr") && !args.empty() &&
             evaluate(args.front(), depth + 1).kind == CppValue::Kind::SelfNode) {
@@ -317,8 +317,8 @@ CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
 {
     CppValue v;
     v.kind = CppValue::Kind::Field;
-    v.field = m_tree.text(ts::field(n, "field"));
-    const TSNode object = unwrap(m_tree, ts::field(n, "argument"));
+    v.field = m_tree.text(ts::field(n, fields().field));
+    const TSNode object = unwrap(m_tree, ts::field(n, fields().argument));
     if (ts::is(object, "identifier")) {
         const QString name = m_tree.text(object);
         const auto local = m_locals.constFind(name);
@@ -340,8 +340,8 @@ CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
             v.variable = name;
         }
     } else if (ts::is(object, "field_expression") &&
-               ts::is(ts::field(object, "argument"), "this")) {
-        v.variable = m_tree.text(ts::field(object, "field"));
+               ts::is(ts::field(object, fields().argument), "this")) {
+        v.variable = m_tree.text(ts::field(object, fields().field));
     } else if (!ts::is(object, "call_expression")) {
         v.kind = CppValue::Kind::Expression; // `msg->header.frame_id`, `arr[i].topic`, ...
     }

@@ -23,6 +23,12 @@ struct CppLocal
     bool loopInitial = false;
 
     void setValue(TSNode v);
+    /// With `loopInitial` known (CppFunctionExtractor finds it from the path it walked).
+    void setValue(TSNode v, bool isLoopInitial)
+    {
+        value = v;
+        loopInitial = isLoopInitial;
+    }
 };
 
 /// What an expression refers to, seen from inside its function: a literal, a local holding

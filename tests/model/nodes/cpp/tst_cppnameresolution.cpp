@@ -194,20 +194,66 @@ private Q_SLOTS:
     }
 
     // A loop counter's initial value is not its value in the body: `image_raw0` would be wrong.
+    // Neither is a value set in a for statement's head or unbraced body (up to three levels
+    // above the value), however the variable is declared or assigned.
+    void loopCounter_data()
+    {
+        QTest::addColumn<QByteArray>("body");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("declared in the head")
+            << QByteArray("for (std::size_t i = 0; i < 3; ++i)\n"
+                          "  pubs_.push_back(create_publisher<std_msgs::msg::String>(\n"
+                          "    \"~/image_raw\" + std::to_string(i), 1));\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("constant") << QByteArray("const int first = 0;\n"
+                                                "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                                                "  \"~/image_raw\" + std::to_string(first), 1);\n")
+                                  << "~/image_raw0 local";
+        QTest::newRow("assigned in the head")
+            << QByteArray("int i = 4;\nfor (i = 0; i < 3; ++i) {}\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("assigned in the update")
+            << QByteArray("int i = 4;\nfor (int k = 0; k < 3; i = 2) {}\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("unbraced body")
+            << QByteArray("int i = 4;\nfor (int k = 0; k < 3; ++k) i = 2;\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("braced body")
+            << QByteArray("int i = 4;\nfor (int k = 0; k < 3; ++k) { i = 2; }\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "~/image_raw2 local";
+        QTest::newRow("compound assignment in the body")
+            << QByteArray("int i = 4;\nfor (int k = 0; k < 3; ++k) i += 2;\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("compound assignment in a block")
+            << QByteArray("int i = 4;\n{ i += 2; }\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "\"~/image_raw\" + std::to_string(i) expression";
+        QTest::newRow("constructed")
+            << QByteArray("for (int k = 0; k < 1; ++k) {}\nint i(3);\n"
+                          "pub_ = create_publisher<std_msgs::msg::String>(\n"
+                          "  \"~/image_raw\" + std::to_string(i), 1);\n")
+            << "~/image_raw3 local";
+    }
+
     void loopCounter()
     {
+        QFETCH(QByteArray, body);
+        QFETCH(QString, name);
         const QByteArray code =
-            "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n"
-            "    for (std::size_t i = 0; i < 3; ++i)\n"
-            "      pubs_.push_back(create_publisher<std_msgs::msg::String>(\n"
-            "        \"~/image_raw\" + std::to_string(i), 1));\n"
-            "    const int first = 0;\n"
-            "    pub_ = create_publisher<std_msgs::msg::String>(\"~/image_raw\" + "
-            "std::to_string(first), 1);\n"
+            "class N : public rclcpp::Node {\npublic:\n  N() : Node(\"n\") {\n" + body +
             "  }\n};\n";
-        QCOMPARE(resolvedNames(analyzeFiles({{"a/n.cpp", "a", code}})),
-                 (QStringList{QStringLiteral("\"~/image_raw\" + std::to_string(i) expression"),
-                              QStringLiteral("~/image_raw0 local")}));
+        QCOMPARE(resolvedNames(analyzeFiles({{"a/n.cpp", "a", code}})), QStringList{name});
     }
 
     void formattedNames()
