@@ -16,12 +16,30 @@ const std::pair<const char *, bool> kNodeFactories[] = {
     {"rclpy.lifecycle.node.LifecycleNode", true},
 };
 
-bool skipInScope(TSNode n, TSNode body, bool moduleLevel)
+enum
 {
+    ClassDefinition,
+    FunctionDefinition,
+    Call,
+    Assignment
+};
+// The types the walks over every node of a scope look for, told apart by symbol.
+const ts::TypeSet &scopeKinds()
+{
+    static const ts::TypeSet kinds(
+        SyntaxTree::Grammar::Python,
+        {"class_definition", "function_definition", "call", "assignment"});
+    return kinds;
+}
+
+// `kind` is scopeKinds().index(n).
+bool skipInScope(int kind, TSNode n, TSNode body, bool moduleLevel)
+{
+    if (kind != ClassDefinition && kind != FunctionDefinition)
+        return false;
     if (ts_node_eq(n, body))
         return false;
-    const std::string_view t = ts::type(n);
-    return t == "class_definition" || (moduleLevel && t == "function_definition");
+    return kind == ClassDefinition || moduleLevel;
 }
 
 /// "std_msgs.msg.String", "pkg.srv.T.Request": a message, service or action type.
@@ -78,10 +96,12 @@ PythonModuleFacts PythonModuleReader::read(const QString &package) const
     facts.file = m_tree.file();
     facts.package = package;
     facts.modulePath = m_resolver.modulePath();
+    const ts::TypeSet &kinds = scopeKinds();
     py::walk(m_tree.root(), [&](TSNode n) {
-        if (ts::is(n, "class_definition"))
+        const int kind = kinds.index(n);
+        if (kind == ClassDefinition)
             facts.classes.append(readClass(n));
-        else if (ts::is(n, "function_definition") && m_resolver.scopes().isTopLevel(n))
+        else if (kind == FunctionDefinition && m_resolver.scopes().isTopLevel(n))
             facts.functions.append(readFunction(n));
         return true;
     });
@@ -178,10 +198,12 @@ void PythonModuleReader::findAliases(TSNode body, Receivers *receivers, bool mem
                                      PythonScopeFacts *facts, const Receivers &visible) const
 {
     const bool moduleLevel = ts::isNull(evidence);
+    const ts::TypeSet &kinds = scopeKinds();
     py::walk(body, [&](TSNode n) {
-        if (skipInScope(n, body, moduleLevel))
+        const int kind = kinds.index(n);
+        if (skipInScope(kind, n, body, moduleLevel))
             return false;
-        if (!ts::is(n, "assignment"))
+        if (kind != Assignment)
             return true;
         TSNode left = ts::field(n, "left");
         TSNode right = ts::field(n, "right");
@@ -213,10 +235,12 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
                               const QStringList &parameterNames, PythonScopeFacts *facts) const
 {
     const bool moduleLevel = ts::is(body, "module");
+    const ts::TypeSet &kinds = scopeKinds();
     py::walk(body, [&](TSNode n) {
-        if (skipInScope(n, body, moduleLevel))
+        const int type = kinds.index(n);
+        if (skipInScope(type, n, body, moduleLevel))
             return false;
-        if (!ts::is(n, "call"))
+        if (type != Call)
             return true;
         PortKind kind;
         TSNode receiver;
@@ -499,10 +523,12 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
             for (const PythonParameter &p : facts.initParameters)
                 parameterNames.append(p.name);
         }
+        const ts::TypeSet &kinds = scopeKinds();
         py::walk(ts::field(methods[i], "body"), [&](TSNode n) {
-            if (ts::is(n, "class_definition"))
+            const int kind = kinds.index(n);
+            if (kind == ClassDefinition)
                 return false;
-            if (!ts::is(n, "call"))
+            if (kind != Call)
                 return true;
             TSNode function = ts::field(n, "function");
             if (!ts::is(function, "attribute") ||

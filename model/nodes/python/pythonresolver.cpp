@@ -291,8 +291,9 @@ void PythonResolver::indexParameters() const
         if (!m_fileParameters.contains(name))
             m_fileParameters.insert(name, defaultValue);
     };
+    static const ts::TypeSet call(SyntaxTree::Grammar::Python, {"call"});
     py::walk(m_tree.root(), [&](TSNode n) {
-        if (!ts::is(n, "call"))
+        if (!call.contains(n))
             return true;
         const std::string_view callee = py::calleeName(m_tree, n);
         QString name;
@@ -325,17 +326,28 @@ const PythonResolver::AssignmentIndex &PythonResolver::locals(TSNode scope) cons
         return *it;
     AssignmentIndex &index = m_locals[key];
     TSNode body = ts::isNull(scope) ? m_tree.root() : ts::field(scope, "body");
+    enum
+    {
+        Function,
+        Class,
+        Lambda,
+        For,
+        Assignment
+    };
+    static const ts::TypeSet kinds(
+        SyntaxTree::Grammar::Python,
+        {"function_definition", "class_definition", "lambda", "for_statement", "assignment"});
     py::walk(body, [&](TSNode n) {
-        const std::string_view t = ts::type(n);
-        if (t == "function_definition" || t == "class_definition" || t == "lambda")
+        const int t = kinds.index(n);
+        if (t == Function || t == Class || t == Lambda)
             return false;
-        if (t == "for_statement") {
+        if (t == For) {
             TSNode left = ts::field(n, "left");
             if (ts::is(left, "identifier"))
                 index[m_tree.text(left)].append({ts_node_start_byte(n), TSNode{}});
             return true;
         }
-        if (t != "assignment")
+        if (t != Assignment)
             return true;
         TSNode right = ts::field(n, "right");
         while (ts::is(right, "assignment"))
@@ -358,11 +370,12 @@ const PythonResolver::AssignmentIndex &PythonResolver::members(TSNode classNode)
         return *it;
     AssignmentIndex &index = m_members[key];
     TSNode body = ts::field(classNode, "body");
+    static const ts::TypeSet kinds(SyntaxTree::Grammar::Python, {"class_definition", "assignment"});
     py::walk(body, [&](TSNode n) {
-        const std::string_view t = ts::type(n);
-        if (t == "class_definition")
+        const int t = kinds.index(n);
+        if (t == 0)
             return false;
-        if (t != "assignment")
+        if (t != 1)
             return true;
         TSNode right = ts::field(n, "right");
         while (ts::is(right, "assignment"))

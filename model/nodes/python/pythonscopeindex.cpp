@@ -8,11 +8,14 @@ namespace rosarch {
 
 PythonScopeIndex::PythonScopeIndex(const SyntaxTree &tree)
 {
+    static const ts::TypeSet definitions(SyntaxTree::Grammar::Python,
+                                         {"class_definition", "function_definition"});
     std::vector<int> open; // scopes enclosing the current position
     py::walk(tree.root(), [&](TSNode n) {
-        const bool isClass = ts::is(n, "class_definition");
-        if (!isClass && !ts::is(n, "function_definition"))
+        const int kind = definitions.index(n);
+        if (kind < 0)
             return true;
+        const bool isClass = kind == 0;
         Scope s;
         s.start = ts_node_start_byte(n);
         s.end = ts_node_end_byte(n);
