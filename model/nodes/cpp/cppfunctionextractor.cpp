@@ -1,5 +1,6 @@
 #include "cppfunctionextractor.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace rosarch {
@@ -11,6 +12,17 @@ namespace {
 bool nodesEqual(TSNode a, TSNode b)
 {
     return !ts::isNull(a) && !ts::isNull(b) && ts_node_eq(a, b);
+}
+
+bool isAscii(const QString &s)
+{
+    return std::all_of(s.cbegin(), s.cend(), [](QChar c) { return c.unicode() < 0x80; });
+}
+
+bool hasLowerCase(const QString &ascii)
+{
+    return std::any_of(ascii.cbegin(), ascii.cend(),
+                       [](QChar c) { return c.unicode() >= 'a' && c.unicode() <= 'z'; });
 }
 
 // The function_declarator inside a definition's declarator (through pointer/reference
@@ -428,6 +440,10 @@ void CppFunctionExtractor::onCall(TSNode call)
 
 void CppFunctionExtractor::onParameterCall(const QString &name, const std::vector<TSNode> &args)
 {
+    // Both forms name a parameter: an ASCII name without it is neither (most calls), with no
+    // lower-case copy made. Other names take the long way, where case mapping is Unicode's.
+    if (isAscii(name) && !name.contains(QLatin1String("parameter"), Qt::CaseInsensitive))
+        return;
     const QString lower = name.toLower();
     const bool declares = lower.contains(QLatin1String("declare")) &&
                           lower.contains(QLatin1String("parameter")) &&
@@ -553,7 +569,7 @@ void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
     // parameter, a member or a plain variable (a procedural node).
     if (!ts::isNull(shape.receiver) || args.empty() || shape.scope == QLatin1String("std"))
         return;
-    if (shape.name == shape.name.toUpper())
+    if (isAscii(shape.name) ? !hasLowerCase(shape.name) : shape.name == shape.name.toUpper())
         return; // RCLCPP_INFO and other macros
     CppFreeCall call;
     call.function =

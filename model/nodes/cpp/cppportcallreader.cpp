@@ -192,6 +192,27 @@ bool CppPortCallReader::readMessageFilter(TSNode call, const CallShape &shape,
 
 bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vector<TSNode> &args)
 {
+    // The names portCallKind and readMessageFilter know: any other call creates no port, and
+    // its receiver's text is not needed.
+    static const QStringList known = {QStringLiteral("create_publisher"),
+                                      QStringLiteral("create_subscription"),
+                                      QStringLiteral("create_service"),
+                                      QStringLiteral("create_client"),
+                                      QStringLiteral("create_server"),
+                                      QStringLiteral("create_generic_publisher"),
+                                      QStringLiteral("create_generic_subscription"),
+                                      QStringLiteral("create_action_server"),
+                                      QStringLiteral("create_action_client"),
+                                      QStringLiteral("create_camera_publisher"),
+                                      QStringLiteral("create_camera_subscription"),
+                                      QStringLiteral("advertise"),
+                                      QStringLiteral("advertiseCamera"),
+                                      QStringLiteral("subscribe"),
+                                      QStringLiteral("subscribeCamera"),
+                                      QStringLiteral("make_shared"),
+                                      QStringLiteral("make_unique")};
+    if (!known.contains(shape.name))
+        return false;
     if (readMessageFilter(call, shape, args))
         return true;
     QString receiverText;
