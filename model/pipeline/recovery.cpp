@@ -61,7 +61,8 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
 }
 
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
-                          const StageControl &control, const Recovery *previous)
+                          const StageControl &control, const Recovery *previous,
+                          const StageDone &stageDone)
 {
     Recovery r;
     QElapsedTimer clock;
@@ -83,11 +84,15 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
         return r;
     }
     timed(1);
+    if (stageDone)
+        stageDone(1, r);
     r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr);
     readAhead.reset();
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);
+    if (stageDone)
+        stageDone(2, r);
     r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
