@@ -5,6 +5,7 @@
 #include "evidenceshift.h"
 #include "launchreadahead.h"
 #include "nodeanalyzer.h"
+#include "stagememo.h"
 #include "workspacescanner.h"
 
 #include <QElapsedTimer>
@@ -60,6 +61,40 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
     return composeArchitecture(nodes, launch, control);
 }
 
+namespace {
+
+/// Stage 3 as composeOrReuse(), or its memo when `key` (made of the keys stages 1 and 2's
+/// results are functions of) is not empty and the cache has one: a fresh process composes
+/// nothing on a run whose stages 1 and 2 came from their memos.
+Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const StageControl &control,
+                             const Recovery *previous)
+{
+    if (control.isCanceled()) { // before the memo too: a canceled run does not go on
+        Architecture canceled;
+        canceled.canceled = true;
+        return canceled;
+    }
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    const bool memo = !key.isEmpty() && cache.isEnabled();
+    if (memo) {
+        cache.startRun({QStringLiteral("stage3")});
+        if (std::optional<Architecture> a =
+                stagememo::load<Architecture>(cache, QStringLiteral("stage3"), key))
+            return std::move(*a);
+    }
+    Architecture a = composeOrReuse(r.nodes, r.launch, control, previous);
+    if (memo && !a.canceled) {
+        // Encoded on a pool thread when the cache's pack is written later (LaunchAnalyzer).
+        LaunchAnalyzer::storeLater(cache, [&cache, key, a] {
+            cache.store(QStringLiteral("stage3"), key, cachecodec::encode(a));
+        });
+        cache.flush();
+    }
+    return a;
+}
+
+} // namespace
+
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
                           const StageControl &control, const Recovery *previous,
                           const StageDone &stageDone)
@@ -78,7 +113,9 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     const StageControl stage2 = control.forStage(2);
     // Stage 2's reading of the launch files runs in what stage 1 leaves of the cores.
     std::optional<LaunchReadAhead> readAhead;
-    r.nodes = NodeAnalyzer::run(ws, stage1, [&] { readAhead.emplace(ws, stage2); });
+    QByteArray nodesKey, launchKey; // what stages 1 and 2's results are functions of
+    r.nodes = NodeAnalyzer::run(
+        ws, stage1, [&] { readAhead.emplace(ws, stage2); }, &nodesKey);
     if (r.nodes.canceled || control.isCanceled()) {
         r.launch.canceled = true;
         return r;
@@ -86,14 +123,18 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     timed(1);
     if (stageDone)
         stageDone(1, r);
-    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr);
+    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr,
+                                   &launchKey);
     readAhead.reset();
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);
     if (stageDone)
         stageDone(2, r);
-    r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
+    const QByteArray key = nodesKey.isEmpty() || launchKey.isEmpty()
+                               ? QByteArray()
+                               : AnalysisCache::key({"stage3", nodesKey, launchKey});
+    r.architecture = composeWithMemo(r, key, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
     return r;
