@@ -83,7 +83,10 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
             return std::move(*a);
     }
     Architecture a = composeOrReuse(r.nodes, r.launch, control, previous);
-    if (memo && !a.canceled) {
+    // Stored by a run without an earlier result only: one with it (a long-lived worker's)
+    // reuses stage 3 from memory, and an edit would cost it an encoding (nav2's is ~8 MB)
+    // and the memory for it, for a memo that only a fresh process reads.
+    if (memo && !previous && !a.canceled) {
         // Encoded on a pool thread when the cache's pack is written later (LaunchAnalyzer).
         LaunchAnalyzer::storeLater(cache, [&cache, key, a] {
             cache.store(QStringLiteral("stage3"), key, cachecodec::encode(a));
