@@ -64,8 +64,8 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
 namespace {
 
 /// Stage 3 as composeOrReuse(), or its memo when `key` (made of the keys stages 1 and 2's
-/// results are functions of) is not empty and the cache has one: a fresh process composes
-/// nothing on a run whose stages 1 and 2 came from their memos.
+/// results are functions of) is not empty, there is no `previous` and the cache has one: a
+/// fresh process composes nothing on a run whose stages 1 and 2 came from their memos.
 Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const StageControl &control,
                              const Recovery *previous)
 {
@@ -75,7 +75,11 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
         return canceled;
     }
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    const bool memo = !key.isEmpty() && cache.isEnabled();
+    // Only in a run without an earlier result: one with it (a long-lived worker's) reuses
+    // stage 3 from memory. Its lookups could wait for the pack its last run is writing, and
+    // a store would cost an edit run an encoding (nav2's is ~8 MB) and the memory for it,
+    // for a memo that only a fresh process reads.
+    const bool memo = !key.isEmpty() && !previous && cache.isEnabled();
     if (memo) {
         cache.startRun({QStringLiteral("stage3")});
         if (std::optional<Architecture> a =
@@ -83,10 +87,7 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
             return std::move(*a);
     }
     Architecture a = composeOrReuse(r.nodes, r.launch, control, previous);
-    // Stored by a run without an earlier result only: one with it (a long-lived worker's)
-    // reuses stage 3 from memory, and an edit would cost it an encoding (nav2's is ~8 MB)
-    // and the memory for it, for a memo that only a fresh process reads.
-    if (memo && !previous && !a.canceled) {
+    if (memo && !a.canceled) {
         // Encoded on a pool thread when the cache's pack is written later (LaunchAnalyzer).
         LaunchAnalyzer::storeLater(cache, [&cache, key, a] {
             cache.store(QStringLiteral("stage3"), key, cachecodec::encode(a));
