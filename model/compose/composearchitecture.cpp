@@ -2,28 +2,45 @@
 #include "architecturechecks.h"
 #include "composer.h"
 
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <atomic>
+
 namespace rosarch {
 
 Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDependencies &launch,
                                  const StageControl &control,
                                  const QHash<QString, QString> &renamed)
 {
-    // One progression for the stage: the systems, then the launch files' own classifiers.
+    // One progression for the stage over the systems and the launch files' own classifiers,
+    // which are composed at the same time (on a pool thread): each finished launch-file
+    // instance counts one, whichever part it belongs to.
     const int all = int(launch.instances.size() + launch.classifierInstances.size());
-    Architecture arch = Composer::run(nodes, launch, control.part(0, all), renamed);
-    if (arch.canceled)
-        return arch;
-    arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
-    if (!launch.classifierInstances.isEmpty()) {
-        LaunchDependencies alone;
-        alone.instances = launch.classifierInstances;
-        alone.nodes = launch.classifierNodes;
-        Architecture classifiers =
-            Composer::run(nodes, alone, control.part(int(launch.instances.size()), all), renamed);
-        arch.canceled = classifiers.canceled;
-        for (Composite &c : classifiers.composites)
-            if (c.parentId.isEmpty())
-                arch.classifiers.append(std::move(c));
+    std::atomic<int> done{0};
+    StageControl part = control;
+    if (control.progressed)
+        part.progressed = [&done, all, progressed = control.progressed](
+                              int, int, const QString &what) { progressed(++done, all, what); };
+    // The classifiers do not depend on the systems' composites nor on their checks.
+    QFuture<Architecture> classifiers;
+    if (!launch.classifierInstances.isEmpty())
+        classifiers = QtConcurrent::run([&nodes, &launch, &part, &renamed] {
+            LaunchDependencies alone;
+            alone.instances = launch.classifierInstances;
+            alone.nodes = launch.classifierNodes;
+            return Composer::run(nodes, alone, part, renamed);
+        });
+    Architecture arch = Composer::run(nodes, launch, part, renamed);
+    if (!arch.canceled)
+        arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
+    if (classifiers.isValid()) {
+        // Taken even when canceled: the lambda refers to this frame.
+        Architecture alone = classifiers.result();
+        arch.canceled = arch.canceled || alone.canceled;
+        if (!arch.canceled)
+            for (Composite &c : alone.composites)
+                if (c.parentId.isEmpty())
+                    arch.classifiers.append(std::move(c));
     }
     return arch;
 }

@@ -239,7 +239,7 @@ ExtraFiles extraFiles(const Workspace &workspace, const LaunchDependencies &out,
 
 LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicNodeList &nodes,
                                        const LaunchOptions &options, const StageControl &control,
-                                       LaunchReadAhead *readAhead)
+                                       LaunchReadAhead *readAhead, QByteArray *resultKey)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     // See NodeAnalyzer::run; a read-ahead began the run of the "launch" entries already.
@@ -266,6 +266,12 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
     // The result with the locations of `nodes` it was computed from: when only they moved since,
     // the result is the memo's with them moved too.
     using Memo = std::pair<QList<Evidence>, std::pair<ExtraFiles, LaunchDependencies>>;
+    const auto keyOfResult = [&](const ExtraFiles &extra) {
+        if (resultKey && !key.isEmpty())
+            *resultKey = AnalysisCache::key({"stage2 result", key, cachecodec::encode(extra)});
+    };
+    if (resultKey)
+        resultKey->clear();
     if (!key.isEmpty())
         if (std::optional<Memo> memo = stagememo::load<Memo>(cache, QStringLiteral("stage2"), key);
             memo &&
@@ -275,6 +281,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
             if (shift.compare(memo->first, locations)) {
                 shift.compareUnmoved(memo->first, locations);
                 if (shift.settle() && shift.apply(reused)) {
+                    keyOfResult(memo->second.first);
                     cache.flush();
                     if (const std::optional<Diagnostic> problem = cache.takeProblem())
                         reused.diagnostics.prepend(*problem);
@@ -284,18 +291,13 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         }
     LaunchDependencies out = analyse(workspace, nodes, options, control, readAhead);
     if (!key.isEmpty() && !out.canceled && cache.isEnabled()) {
-        auto store = [&cache, key,
-                      memo = Memo{locations, {extraFiles(workspace, out, cache.digests()), out}}] {
-            cache.store(QStringLiteral("stage2"), key, cachecodec::encode(memo));
-        };
+        ExtraFiles extra = extraFiles(workspace, out, cache.digests());
+        keyOfResult(extra);
         // The shared cache writing its pack later (the worker's after its reply, an in-process
         // run's after the run): the memo is encoded on a pool thread while stage 3 runs.
-        if (&cache == &AnalysisCache::shared() && cache.defersFlush()) {
-            const std::lock_guard lock(pendingMutex);
-            pending.append(QtConcurrent::run(std::move(store)));
-        } else {
-            store();
-        }
+        storeLater(cache, [&cache, key, memo = Memo{locations, {std::move(extra), out}}] {
+            cache.store(QStringLiteral("stage2"), key, cachecodec::encode(memo));
+        });
     }
     cache.flush();
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
@@ -313,6 +315,16 @@ std::optional<LaunchFileDescription> LaunchAnalyzer::read(const SourceFile &f,
     if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
         return YamlLaunchReader::read(content, f.path);
     return std::nullopt;
+}
+
+void LaunchAnalyzer::storeLater(AnalysisCache &cache, std::function<void()> store)
+{
+    if (&cache == &AnalysisCache::shared() && cache.defersFlush()) {
+        const std::lock_guard lock(pendingMutex);
+        pending.append(QtConcurrent::run(std::move(store)));
+    } else {
+        store();
+    }
 }
 
 void LaunchAnalyzer::finishStores()

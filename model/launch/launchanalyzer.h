@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "atomicnodelist.h"
 #include "launchaction.h"
 #include "launchdependencies.h"
@@ -31,10 +33,13 @@ class LaunchAnalyzer
 {
 public:
     /// With `readAhead`, the launch files it read (when it did) are not read again.
+    /// `resultKey` (when given) is set to a key the result is a function of, together with
+    /// `nodes` (its memo's key and the files it read outside the scan; "" without the cache).
     static LaunchDependencies run(const Workspace &workspace, const AtomicNodeList &nodes,
                                   const LaunchOptions &options = {},
                                   const StageControl &control = {},
-                                  LaunchReadAhead *readAhead = nullptr);
+                                  LaunchReadAhead *readAhead = nullptr,
+                                  QByteArray *resultKey = nullptr);
     /// `content` read by the reader of the file's format (Python, XML, YAML) when it is a
     /// launch file of that format; none otherwise.
     static std::optional<LaunchFileDescription> read(const SourceFile &file,
@@ -43,6 +48,10 @@ public:
     /// (AnalysisCache::setDeferFlush) are stored: run() encodes them on a pool thread, while
     /// stage 3 runs. Whoever writes such a cache's pack calls this first.
     static void finishStores();
+    /// Runs `store` (which stores an entry in `cache`) on a pool thread when `cache` is the
+    /// shared one and defers its flushes, to be waited for by finishStores(); else now. For
+    /// stage 2's memo and stage 3's (recoverWorkspace).
+    static void storeLater(AnalysisCache &cache, std::function<void()> store);
 };
 
 /// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer

@@ -265,7 +265,7 @@ QByteArray memoKey(const Workspace &workspace, const StageControl &control, Anal
 } // namespace
 
 AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control,
-                                 const std::function<void()> &analysing)
+                                 const std::function<void()> &analysing, QByteArray *resultKey)
 {
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     // What this process decoded in the last run of stage 1 stays for this one (the long-lived
@@ -284,6 +284,8 @@ AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl 
         if (!key.isEmpty() && !list->canceled)
             cache.store(QStringLiteral("stage1"), key, cachecodec::encode(*list));
     }
+    if (resultKey)
+        *resultKey = list->canceled ? QByteArray() : key;
     cache.flush();
     if (const std::optional<Diagnostic> problem = cache.takeProblem()) {
         list->diagnostics.append(*problem);

@@ -14,8 +14,11 @@ class NodeAnalyzer
 {
 public:
     /// `analysing` is called when the files are to be analysed (no memo of the whole stage).
+    /// `resultKey` (when given) is set to the key the result is a function of: its memo's key
+    /// ("" without the cache, or when canceled).
     static AtomicNodeList run(const Workspace &workspace, const StageControl &control = {},
-                              const std::function<void()> &analysing = {});
+                              const std::function<void()> &analysing = {},
+                              QByteArray *resultKey = nullptr);
     /// For an idle long-lived process after a run that stage 1's memo answered: decodes what a
     /// run after an edit reuses (each file's entries, the C++ link, the Python analysis) and
     /// keeps it in the cache's memory (AnalysisCache::recent), so that the first edit costs

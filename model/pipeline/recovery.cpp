@@ -5,6 +5,8 @@
 #include "evidenceshift.h"
 #include "launchreadahead.h"
 #include "nodeanalyzer.h"
+#include "recoverystream.h"
+#include "stagememo.h"
 #include "workspacescanner.h"
 
 #include <QElapsedTimer>
@@ -60,8 +62,73 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
     return composeArchitecture(nodes, launch, control);
 }
 
+namespace {
+
+/// Stage 3's memo in the worker reply's form (stagestream), whose string table makes it a
+/// quarter of the size of the cache's own encoding (nav2: ~2 MB instead of ~8 MB).
+QByteArray encodeArchitecture(const Architecture &a)
+{
+    Recovery r;
+    r.architecture = a;
+    QByteArray bytes;
+    QDataStream out(&bytes, QIODevice::WriteOnly);
+    out.setVersion(stagestream::kStreamVersion);
+    stagestream::writeParts(out, stagestream::ArchitecturePart, r, {});
+    return bytes;
+}
+
+bool decodeArchitecture(const QByteArray &bytes, Architecture *a)
+{
+    Recovery r;
+    quint8 parts = 0;
+    QDataStream in(bytes);
+    in.setVersion(stagestream::kStreamVersion);
+    if (!stagestream::readParts(in, &r, {}, &parts) || parts != stagestream::ArchitecturePart ||
+        !in.atEnd())
+        return false;
+    *a = std::move(r.architecture);
+    return true;
+}
+
+/// Stage 3 as composeOrReuse(), or its memo when `key` (made of the keys stages 1 and 2's
+/// results are functions of) is not empty, there is no `previous` and the cache has one: a
+/// fresh process composes nothing on a run whose stages 1 and 2 came from their memos.
+Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const StageControl &control,
+                             const Recovery *previous)
+{
+    if (control.isCanceled()) { // before the memo too: a canceled run does not go on
+        Architecture canceled;
+        canceled.canceled = true;
+        return canceled;
+    }
+    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    // Only in a run without an earlier result: one with it (a long-lived worker's) reuses
+    // stage 3 from memory. Its lookups could wait for the pack its last run is writing, and
+    // a store would cost an edit run an encoding (nav2's is ~8 MB) and the memory for it,
+    // for a memo that only a fresh process reads.
+    const bool memo = !key.isEmpty() && !previous && cache.isEnabled();
+    if (memo) {
+        cache.startRun({QStringLiteral("stage3")});
+        if (std::optional<Architecture> a = stagememo::loadWith<Architecture>(
+                cache, QStringLiteral("stage3"), key, decodeArchitecture))
+            return std::move(*a);
+    }
+    Architecture a = composeOrReuse(r.nodes, r.launch, control, previous);
+    if (memo && !a.canceled) {
+        // Encoded on a pool thread when the cache's pack is written later (LaunchAnalyzer).
+        LaunchAnalyzer::storeLater(cache, [&cache, key, a] {
+            cache.store(QStringLiteral("stage3"), key, encodeArchitecture(a));
+        });
+        cache.flush();
+    }
+    return a;
+}
+
+} // namespace
+
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
-                          const StageControl &control, const Recovery *previous)
+                          const StageControl &control, const Recovery *previous,
+                          const StageDone &stageDone)
 {
     Recovery r;
     QElapsedTimer clock;
@@ -77,18 +144,28 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     const StageControl stage2 = control.forStage(2);
     // Stage 2's reading of the launch files runs in what stage 1 leaves of the cores.
     std::optional<LaunchReadAhead> readAhead;
-    r.nodes = NodeAnalyzer::run(ws, stage1, [&] { readAhead.emplace(ws, stage2); });
+    QByteArray nodesKey, launchKey; // what stages 1 and 2's results are functions of
+    r.nodes = NodeAnalyzer::run(
+        ws, stage1, [&] { readAhead.emplace(ws, stage2); }, &nodesKey);
     if (r.nodes.canceled || control.isCanceled()) {
         r.launch.canceled = true;
         return r;
     }
     timed(1);
-    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr);
+    if (stageDone)
+        stageDone(1, r);
+    r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr,
+                                   &launchKey);
     readAhead.reset();
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);
-    r.architecture = composeOrReuse(r.nodes, r.launch, control.forStage(3), previous);
+    if (stageDone)
+        stageDone(2, r);
+    const QByteArray key = nodesKey.isEmpty() || launchKey.isEmpty()
+                               ? QByteArray()
+                               : AnalysisCache::key({"stage3", nodesKey, launchKey});
+    r.architecture = composeWithMemo(r, key, control.forStage(3), previous);
     if (!r.architecture.canceled)
         timed(3);
     return r;

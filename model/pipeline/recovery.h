@@ -8,6 +8,8 @@
 
 #include <QString>
 
+#include <functional>
+
 namespace rosarch {
 
 /// The artifacts of every stage run so far on one workspace.
@@ -38,11 +40,15 @@ struct RecoveryCounts
     static RecoveryCounts of(const Recovery &recovery);
 };
 
+/// Called with the recovery so far when stage 1 or stage 2 is done and the run goes on.
+using StageDone = std::function<void(int stage, const Recovery &sofar)>;
+
 /// Runs stages 1, 2 and 3 on `root` (one scan, shared). With `previous` (an earlier complete
 /// recovery), stage 3 is not run again when its inputs, stages 1 and 2, equal the ones
 /// `previous` was composed from but for source locations: see composeOrReuse().
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
-                          const StageControl &control = {}, const Recovery *previous = nullptr);
+                          const StageControl &control = {}, const Recovery *previous = nullptr,
+                          const StageDone &stageDone = {});
 
 /// Stage 3 on `nodes` and `launch`, or `previous`'s architecture when it was composed from equal
 /// ones (stage 3 is a function of them alone), or from ones that differ only in where some

@@ -16,7 +16,7 @@ template <class F> void fields(LaunchOptions &v, F f)
 }
 template <class F> void fields(StageRequest &v, F f)
 {
-    f(v.job, v.root, v.options, v.nodes, v.skipped, v.memoryBudgetMb, v.serial);
+    f(v.job, v.root, v.options, v.nodes, v.skipped, v.memoryBudgetMb, v.serial, v.last);
 }
 
 } // namespace
@@ -284,47 +284,86 @@ template <class T> void readList(QDataStream &s, QList<T> &v, const QList<T> &ba
     }
 }
 
-/// The lists of a Recovery with their counterparts in the base, and its scalars, both ways.
-template <class R, class B, class L, class F> void deltaFields(R &v, B &base, L list, F scalar)
+/// The lists of one part of a Recovery (stagestream::Part) with their counterparts in the
+/// base, and its scalars, both ways.
+template <class R, class B, class L, class F>
+void deltaFields(quint8 part, R &v, B &base, L list, F scalar)
 {
-    scalar(v.nodes.workspaceRoot, v.nodes.canceled, v.launch.canceled, v.architecture.canceled);
-    list(v.nodes.packages, base.nodes.packages);
-    list(v.nodes.nodes, base.nodes.nodes);
-    list(v.nodes.diagnostics, base.nodes.diagnostics);
-    list(v.launch.launchFiles, base.launch.launchFiles);
-    list(v.launch.instances, base.launch.instances);
-    list(v.launch.nodes, base.launch.nodes);
-    list(v.launch.arguments, base.launch.arguments);
-    list(v.launch.classifierInstances, base.launch.classifierInstances);
-    list(v.launch.classifierNodes, base.launch.classifierNodes);
-    list(v.launch.diagnostics, base.launch.diagnostics);
-    list(v.architecture.composites, base.architecture.composites);
-    list(v.architecture.classifiers, base.architecture.classifiers);
-    list(v.architecture.diagnostics, base.architecture.diagnostics);
+    if (part == stagestream::NodesPart) {
+        scalar(v.nodes.workspaceRoot, v.nodes.canceled);
+        list(v.nodes.packages, base.nodes.packages);
+        list(v.nodes.nodes, base.nodes.nodes);
+        list(v.nodes.diagnostics, base.nodes.diagnostics);
+    } else if (part == stagestream::LaunchPart) {
+        scalar(v.launch.canceled);
+        list(v.launch.launchFiles, base.launch.launchFiles);
+        list(v.launch.instances, base.launch.instances);
+        list(v.launch.nodes, base.launch.nodes);
+        list(v.launch.arguments, base.launch.arguments);
+        list(v.launch.classifierInstances, base.launch.classifierInstances);
+        list(v.launch.classifierNodes, base.launch.classifierNodes);
+        list(v.launch.diagnostics, base.launch.diagnostics);
+    } else {
+        scalar(v.architecture.canceled);
+        list(v.architecture.composites, base.architecture.composites);
+        list(v.architecture.classifiers, base.architecture.classifiers);
+        list(v.architecture.diagnostics, base.architecture.diagnostics);
+    }
 }
+
+constexpr quint8 kParts[] = {stagestream::NodesPart, stagestream::LaunchPart,
+                             stagestream::ArchitecturePart};
 
 } // namespace
 
 namespace stagestream {
 
+void writeParts(QDataStream &s, quint8 parts, const Recovery &v, const Recovery &base)
+{
+    s << parts;
+    for (const quint8 part : kParts) {
+        if (!(parts & part))
+            continue;
+        // A string table per part: a part is decoded without the ones sent before it.
+        StringTable table;
+        const StringScope scope(&table);
+        deltaFields(
+            part, v, base, [&s](const auto &list, const auto &from) { writeList(s, list, from); },
+            [&s](const auto &...x) { (put(s, x), ...); });
+    }
+}
+
+bool readParts(QDataStream &s, Recovery *v, const Recovery &base, quint8 *parts)
+{
+    quint8 read = 0;
+    s >> read;
+    if (s.status() != QDataStream::Ok || (read & ~quint8(AllParts)) != 0)
+        return false;
+    for (const quint8 part : kParts) {
+        if (!(read & part))
+            continue;
+        StringTable table;
+        const StringScope scope(&table);
+        deltaFields(
+            part, *v, base, [&s](auto &list, const auto &from) { readList(s, list, from); },
+            [&s](auto &...x) { (get(s, x), ...); });
+    }
+    if (s.status() != QDataStream::Ok)
+        return false;
+    *parts |= read;
+    return true;
+}
+
 void writeResult(QDataStream &s, const Recovery &v, const Recovery &base)
 {
-    StringTable table;
-    const StringScope scope(&table);
-    deltaFields(
-        v, base, [&s](const auto &list, const auto &from) { writeList(s, list, from); },
-        [&s](const auto &...x) { (put(s, x), ...); });
+    writeParts(s, AllParts, v, base);
 }
 
 bool readResult(QDataStream &s, Recovery *v, const Recovery &base)
 {
     *v = {};
-    StringTable table;
-    const StringScope scope(&table);
-    deltaFields(
-        *v, base, [&s](auto &list, const auto &from) { readList(s, list, from); },
-        [&s](auto &...x) { (get(s, x), ...); });
-    return s.status() == QDataStream::Ok;
+    quint8 parts = 0;
+    return readParts(s, v, base, &parts) && parts == AllParts;
 }
 
 } // namespace stagestream

@@ -26,10 +26,20 @@ Diagnostic StageProcess::missingWorker()
     return d;
 }
 
+namespace {
+
+StageProcess::Options oneShot(StageProcess::Options options)
+{
+    options.oneShot = true;
+    return options;
+}
+
+} // namespace
+
 StageProcess::Result StageProcess::recover(const QString &root, const LaunchOptions &options,
                                            const StageControl &control, const Options &process)
 {
-    StageSession once(process, false);
+    StageSession once(oneShot(process), false);
     Result r = once.recover(root, options, control);
     once.releaseWorker(); // it writes its cache after it replied: nobody needs to wait for that
     return r;
@@ -39,7 +49,7 @@ StageProcess::Result StageProcess::launch(const QString &root, const AtomicNodeL
                                           const LaunchOptions &options, const StageControl &control,
                                           const Options &process)
 {
-    StageSession once(process, false);
+    StageSession once(oneShot(process), false);
     Result r = once.launch(root, nodes, options, control);
     once.releaseWorker();
     return r;

@@ -27,6 +27,7 @@ public:
         int fileTimeoutMs = 120 * 1000; ///< the time budget of one file's analysis
         qint64 memoryBudgetMb = 4096;   ///< the worker's address space (0 = unlimited)
         int maxAttempts = 6;            ///< worker starts for one run, restarts included
+        bool oneShot = false;           ///< one run per worker: it does not warm up for a next one
     };
 
     struct Result

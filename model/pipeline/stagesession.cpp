@@ -172,6 +172,8 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
     QElapsedTimer clock;
     clock.start();
     qsizetype read = 0; // frames of output() consumed
+    constexpr quint8 kDamaged = 0x80;
+    quint8 parts = 0; // of the result, read so far
     auto readFrames = [&] {
         QByteArray &buffer = m_worker.output();
         for (;;) {
@@ -215,8 +217,12 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
                             break;
                         }
                 }
-            } else if (type == stagestream::Result) {
-                a.hasResult = stagestream::readResult(frame, &a.recovery, m_base);
+            } else if (type == stagestream::Ahead || type == stagestream::Result) {
+                // Parts sent ahead are decoded while the worker runs the next stage.
+                if (!stagestream::readParts(frame, &a.recovery, m_base, &parts))
+                    parts |= kDamaged;
+                if (type == stagestream::Result)
+                    a.hasResult = parts == stagestream::AllParts;
                 if (a.hasResult)
                     m_base = a.recovery;
             }
@@ -231,6 +237,15 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
         readFrames();
         if (a.hasResult)
             return a; // the worker waits for the next request
+        if (parts & kDamaged) {
+            // It waits for the next request too, with nothing more to say.
+            m_worker.kill();
+            a.stderrBytes = m_worker.errors() + "\nits reply could not be read";
+            a.exitCode = m_worker.exitCode();
+            a.crashed = m_worker.crashed();
+            m_worker.stop(0);
+            return a;
+        }
         QByteArray &errors = m_worker.errors();
         if (errors.size() > 64 * 1024)
             errors = errors.right(16 * 1024);
@@ -277,6 +292,7 @@ StageProcess::Result StageSession::supervise(StageRequest request, const StageCo
         return result;
     }
     request.memoryBudgetMb = m_options.memoryBudgetMb;
+    request.last = m_options.oneShot;
     request.skipped = control.skipped;
     while (result.attempts < m_options.maxAttempts) {
         ++result.attempts;

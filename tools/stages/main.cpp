@@ -22,6 +22,7 @@
 #include <QMutex>
 #include <QThread>
 #include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QtEndian>
 
 #include <atomic>
@@ -198,8 +199,48 @@ bool progressDue(int stage, int done, int total)
     return true;
 }
 
+/// The parts of a reply sent ahead of its Result frame: stage 1's result is encoded and written
+/// on a pool thread while stage 2 runs, stage 2's while stage 3 runs, so that the supervisor
+/// decodes them meanwhile and only stage 3's part is left when the run is over.
+class ReplyAhead
+{
+public:
+    explicit ReplyAhead(const Recovery &base) : m_base(base) {}
+    ReplyAhead(const ReplyAhead &) = delete;
+    ReplyAhead &operator=(const ReplyAhead &) = delete;
+    ~ReplyAhead() { finish(); }
+
+    void send(int stage, const Recovery &sofar)
+    {
+        const quint8 part = stage == 1 ? stagestream::NodesPart : stagestream::LaunchPart;
+        m_sent |= part;
+        m_writes.append(QtConcurrent::run([this, part, sofar] {
+            QByteArray payload;
+            {
+                QDataStream out(&payload, QIODevice::WriteOnly);
+                out.setVersion(stagestream::kStreamVersion);
+                stagestream::writeParts(out, part, sofar, m_base);
+            }
+            frame(stagestream::Ahead, RawPayload{payload});
+        }));
+    }
+    /// Waits until the parts sent ahead are written; the parts the Result frame has to carry.
+    quint8 finish()
+    {
+        for (QFuture<void> &write : m_writes)
+            write.waitForFinished();
+        m_writes.clear();
+        return quint8(stagestream::AllParts & ~m_sent);
+    }
+
+private:
+    const Recovery &m_base;
+    quint8 m_sent = 0;
+    QList<QFuture<void>> m_writes;
+};
+
 /// `composed`: the last complete run's stage 3 with its inputs, reused when they are equal.
-Recovery run(const StageRequest &request, const Recovery *composed)
+Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *ahead)
 {
     StageControl control;
     control.skipped = request.skipped;
@@ -232,14 +273,17 @@ Recovery run(const StageRequest &request, const Recovery *composed)
                 control.stageTimed(3, clock.elapsed());
         }
     } else {
-        result = recoverWorkspace(request.root, request.options, control, composed);
+        result = recoverWorkspace(
+            request.root, request.options, control, composed,
+            [ahead](int stage, const Recovery &sofar) { ahead->send(stage, sofar); });
     }
     return result;
 }
 
 /// Stage 1's warm-up (NodeAnalyzer::warmUp) while the worker waits for its next request, so
 /// that the first edit after a run the stage's memo answered costs what later ones do. The
-/// next request stops it at once (stop() before the request runs).
+/// next request stops it at once (stop() before the request runs). Not in a worker of one run
+/// (StageRequest::last), which leaves once it has replied and written its cache.
 class IdleWarmUp
 {
 public:
@@ -249,6 +293,9 @@ public:
         stop();
         m_stop = false;
         m_thread = std::thread([this, root = request.root, skipped = request.skipped] {
+            // At the lowest priority (this thread only; Linux's nice is per thread): it works
+            // in what a person's other work leaves of the cores.
+            setpriority(PRIO_PROCESS, id_t(::gettid()), 19);
             StageControl control; // no progress, no file work: nobody is waiting for it
             control.canceled = [this] { return m_stop.load(); };
             control.skipped = skipped;
@@ -295,7 +342,8 @@ int main(int argc, char **argv)
             limitMemory(request.memoryBudgetMb);
         limited = true;
         QThreadPool::globalInstance()->setMaxThreadCount(request.serial ? 1 : threads);
-        Recovery result = run(request, composed ? &*composed : nullptr);
+        ReplyAhead ahead(previous);
+        Recovery result = run(request, composed ? &*composed : nullptr, &ahead);
         if (!result.launch.canceled && !result.architecture.canceled &&
             (request.job == StageRequest::Job::Launch || !result.nodes.canceled)) {
             composed =
@@ -306,13 +354,14 @@ int main(int argc, char **argv)
         {
             QDataStream out(&payload, QIODevice::WriteOnly);
             out.setVersion(stagestream::kStreamVersion);
-            stagestream::writeResult(out, result, previous);
+            stagestream::writeParts(out, ahead.finish(), result, previous);
         }
         frame(stagestream::Result, RawPayload{payload});
         // The cache's pack is written once the supervisor has its reply.
         LaunchAnalyzer::finishStores();
         AnalysisCache::shared().flushDeferred();
-        if (warm && request.job == StageRequest::Job::Recovery && !result.nodes.canceled)
+        if (warm && !request.last && request.job == StageRequest::Job::Recovery &&
+            !result.nodes.canceled)
             warmUp.start(request);
         previous = std::move(result);
     }

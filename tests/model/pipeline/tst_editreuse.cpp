@@ -106,7 +106,8 @@ private Q_SLOTS:
 
         AnalysisCache second(m_cache, AnalysisCache::kDefaultMaxBytes, 0);
         Recovery after = test::recoverWith(m_ws, &second, &before);
-        // Stage 2 came from its memo (written for the old lines), stage 3 from `before`.
+        // Stage 2 came from its memo (written for the old lines), stage 3 from `before` (a run
+        // with an earlier result stores no memo of stage 3).
         QCOMPARE(second.statistics().stores, 3); // stage 1's memo, rectifier.cpp, its manifest
         const Diagnostic *kept = marker(after);
         QVERIFY2(kept, "stage 3 was composed again instead of reused");
