@@ -1,0 +1,259 @@
+#include "cppfunctionextractor.h"
+#include "cppfunctiontext.h"
+
+#include <cstring>
+
+// CppFunctionExtractor's calls: port and parameter calls, instantiations, method and free
+// calls, procedural nodes.
+
+namespace rosarch {
+
+using namespace cppsyntax;
+using namespace cppfunctiontext;
+
+void CppFunctionExtractor::onCall(TSNode call)
+{
+    const CallShape shape = callShape(m_tree, ts::field(call, fields().function));
+    if (shape.name.isEmpty())
+        return;
+    const auto args = arguments(ts::field(call, fields().arguments));
+    onParameterCall(shape.name, args);
+    if (m_portCalls.read(call, shape, args))
+        return;
+
+    const bool makeShared =
+        shape.name == QLatin1String("make_shared") || shape.name == QLatin1String("make_unique");
+    if (!makeShared) {
+        addFreeCall(call, shape, args);
+        addMethodCall(call, shape, args);
+        return;
+    }
+    QString className;
+    if (!ts::isNull(shape.templateArguments))
+        className = firstTemplateArgument(m_tree, shape.templateArguments);
+    else if (!shape.scope.isEmpty() && shape.scope != QLatin1String("std"))
+        className = shape.scope; // Talker::make_shared(...)
+    if (className.isEmpty())
+        return;
+    bool lifecycle = false;
+    if (isProceduralNodeType(className, &lifecycle)) {
+        addProceduralNode(call, args, lifecycle);
+        return;
+    }
+    addInstantiation(className, args, call);
+}
+
+void CppFunctionExtractor::onParameterCall(const QString &name, const std::vector<TSNode> &args)
+{
+    // Both forms name a parameter: an ASCII name without it is neither (most calls), with no
+    // lower-case copy made. Other names take the long way, where case mapping is Unicode's.
+    if (isAscii(name) && !name.contains(QLatin1String("parameter"), Qt::CaseInsensitive))
+        return;
+    const QString lower = name.toLower();
+    const bool declares = lower.contains(QLatin1String("declare")) &&
+                          lower.contains(QLatin1String("parameter")) &&
+                          !lower.endsWith(QLatin1String("parameters"));
+    const bool gets = name == QLatin1String("get_parameter") ||
+                      name == QLatin1String("get_parameter_or") ||
+                      name == QLatin1String("get_parameter_or_set_default");
+    if (!declares && !gets)
+        return;
+    QString parameter;
+    const int at = m_values.literalParameterIndex(args, &parameter);
+    if (at < 0)
+        return;
+    const int next = at + 1;
+    if (declares) {
+        CppParameterDeclaration decl;
+        decl.parameter = parameter;
+        if (next < int(args.size()))
+            decl.defaultValue = m_values.evaluate(args[size_t(next)]);
+        m_function.parameterDeclarations.append(decl);
+        return;
+    }
+    if (next >= int(args.size()))
+        return;
+    // get_parameter("p", variable) / get_parameter_or("p", variable, default)
+    const TSNode target = args[size_t(next)];
+    if (name != QLatin1String("get_parameter") && next + 1 < int(args.size()))
+        m_function.parameterDeclarations.append(
+            {parameter, m_values.evaluate(args[size_t(next + 1)])});
+    CppValue bound;
+    bound.kind = CppValue::Kind::Parameter;
+    bound.parameter = parameter;
+    bound.text = simplified(m_tree, target);
+    if (ts::is(target, "identifier")) {
+        const QString var = m_tree.text(target);
+        auto it = m_locals.find(var);
+        if (it != m_locals.end()) {
+            it->parameter = parameter;
+            return;
+        }
+        bound.variable = var;
+        if (m_member && !m_function.parameterNames.contains(var))
+            m_function.memberBindings.append({var, bound});
+    } else if (ts::is(target, "field_expression") &&
+               ts::is(ts::field(target, fields().argument), "this")) {
+        bound.variable = m_tree.text(ts::field(target, fields().field));
+        m_function.memberBindings.append({bound.variable, bound});
+    } else if (ts::is(target, "field_expression")) {
+        addFieldBinding(target, bound); // get_parameter("p", params_.p)
+    }
+}
+
+void CppFunctionExtractor::addInstantiation(const QString &className,
+                                            const std::vector<TSNode> &args, TSNode where,
+                                            const QString &member)
+{
+    CppInstantiation inst;
+    inst.className = className;
+    inst.member = member;
+    inst.evidence = m_tree.evidence(where);
+    bool interesting = member.isEmpty() && !className.isEmpty();
+    for (TSNode a : args) {
+        CppValue v;
+        if (ts::is(a, "parameter_declaration")) {
+            // Most vexing parse: `T x(node)`; the "parameter" is the argument's text.
+            const QString text = simplified(m_tree, a);
+            if (!text.contains(u'('))
+                v = m_values.evaluateIdentifier(text, 0);
+            else if (text == QLatin1String("shared_from_this()") ||
+                     text == QLatin1String("weak_from_this()"))
+                v.kind = CppValue::Kind::SelfNode;
+            else
+                v.kind = CppValue::Kind::Expression;
+            v.text = text;
+        } else {
+            v = m_values.evaluate(a);
+        }
+        if (v.kind == CppValue::Kind::SelfNode)
+            interesting = true;
+        inst.arguments.append(v);
+    }
+    // Member initializers matter only when they hand the node to a helper.
+    if (!member.isEmpty())
+        for (const CppValue &v : std::as_const(inst.arguments))
+            if (v.kind == CppValue::Kind::SelfNode || v.kind == CppValue::Kind::FunctionParameter ||
+                v.kind == CppValue::Kind::Member)
+                interesting = true;
+    if (interesting)
+        m_function.instantiations.append(inst);
+}
+
+void CppFunctionExtractor::addMethodCall(TSNode call, const CallShape &shape,
+                                         const std::vector<TSNode> &args)
+{
+    if (!m_member || ts::isNull(shape.receiver) || args.empty())
+        return;
+    // Only calls on a member (`x_->m(...)`, `this->x_.m(...)`), not on locals or parameters.
+    const CppValue object = m_values.evaluate(shape.receiver);
+    if (object.kind != CppValue::Kind::Member || object.variable.isEmpty())
+        return;
+    CppMethodCall c;
+    c.member = object.variable;
+    c.method = shape.name;
+    if (!ts::isNull(shape.templateArguments))
+        for (TSNode a : arguments(shape.templateArguments))
+            c.templateArguments.append(simplified(m_tree, a));
+    bool named = false;
+    for (TSNode a : args) {
+        CppValue v = m_values.evaluate(a);
+        named = named || v.kind == CppValue::Kind::Literal || v.kind == CppValue::Kind::Local;
+        c.arguments.append(std::move(v));
+    }
+    if (!named && c.templateArguments.isEmpty())
+        return; // `pub_->publish(msg)`: nothing a lazy helper would key a port by
+    c.evidence = m_tree.evidence(call);
+    m_function.methodCalls.append(c);
+}
+
+void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
+                                       const std::vector<TSNode> &args)
+{
+    // Only calls without an object, and only those that pass something node-like: `this`, a
+    // parameter, a member or a plain variable (a procedural node).
+    if (!ts::isNull(shape.receiver) || args.empty() || shape.scope == QLatin1String("std"))
+        return;
+    if (isAscii(shape.name) ? !hasLowerCase(shape.name) : shape.name == shape.name.toUpper())
+        return; // RCLCPP_INFO and other macros
+    CppFreeCall call;
+    call.function =
+        shape.scope.isEmpty() ? shape.name : shape.scope + QStringLiteral("::") + shape.name;
+    bool handsSomething = false;
+    for (TSNode a : args) {
+        const CppValue v = m_values.evaluate(a);
+        const bool plain = v.kind == CppValue::Kind::Expression && !v.text.isEmpty() &&
+                           (v.text.at(0).isLetter() || v.text.at(0) == u'_') &&
+                           !v.text.contains(u'(') && !v.text.contains(u' ');
+        handsSomething = handsSomething || plain || v.kind == CppValue::Kind::SelfNode ||
+                         v.kind == CppValue::Kind::FunctionParameter ||
+                         v.kind == CppValue::Kind::Member;
+        call.arguments.append(v);
+    }
+    call.evidence = m_tree.evidence(where);
+    if (handsSomething)
+        m_function.freeCalls.append(call);
+}
+
+void CppFunctionExtractor::addProceduralNode(TSNode creation, const std::vector<TSNode> &args,
+                                             bool lifecycle)
+{
+    CppProceduralNode node;
+    node.variable = assignedVariable(creation);
+    if (node.variable.startsWith(QLatin1String("this->")))
+        node.variable = node.variable.mid(6);
+    node.lifecycle = lifecycle;
+    if (!args.empty())
+        node.nodeName = m_values.evaluate(args.front());
+    node.evidence = m_tree.evidence(creation);
+    TSNode up = ts_node_parent(creation);
+    while (ts::is(up, "parenthesized_expression"))
+        up = ts_node_parent(up);
+    if (ts::is(up, "return_statement"))
+        return; // `return rclcpp::Node::make_shared(...)`: a factory
+    if (m_member) {
+        // In a member function only a node kept in a member matters (a node-like component).
+        if (node.variable.isEmpty() || m_locals.contains(node.variable) ||
+            m_function.parameterNames.contains(node.variable))
+            return;
+        node.member = true;
+    }
+    m_function.proceduralNodes.append(node);
+}
+
+bool CppFunctionExtractor::isProceduralNodeType(const QString &className, bool *lifecycle) const
+{
+    QString c = withoutTemplateArguments(className);
+    if (c.startsWith(QLatin1String("::")))
+        c = c.mid(2);
+    if (c == QLatin1String("rclcpp::Node") ||
+        (c == QLatin1String("Node") && m_context.rclcppNodeInScope)) {
+        *lifecycle = false;
+        return true;
+    }
+    if (c == QLatin1String("rclcpp_lifecycle::LifecycleNode") ||
+        (c == QLatin1String("LifecycleNode") && m_context.lifecycleNodeInScope)) {
+        *lifecycle = true;
+        return true;
+    }
+    return false;
+}
+
+QString CppFunctionExtractor::assignedVariable(TSNode expression) const
+{
+    TSNode n = expression;
+    TSNode p = ts_node_parent(n);
+    while (ts::is(p, "parenthesized_expression")) {
+        n = p;
+        p = ts_node_parent(p);
+    }
+    if (ts::is(p, "init_declarator") && nodesEqual(ts::field(p, fields().value), n))
+        return m_tree.text(declaredName(ts::field(p, fields().declarator)));
+    if (ts::is(p, "assignment_expression") && nodesEqual(ts::field(p, fields().right), n))
+        return simplified(m_tree, ts::field(p, fields().left));
+    if (ts::is(p, "argument_list") && ts::is(ts_node_parent(p), "field_initializer"))
+        return simplified(m_tree, ts::namedChildren(ts_node_parent(p)).front());
+    return {};
+}
+
+} // namespace rosarch
