@@ -36,7 +36,31 @@ struct Writer
 {
     static constexpr bool reading = false;
     QDataStream &s;
+    /// The strings written so far and their numbers (from 1; 0 is the null string): each is
+    /// written in full once, then by its number. An entry repeats its file's path in every
+    /// piece of evidence, and names and types many times; without the table nav2's stage 2
+    /// memo was 14 MB. Null: every string in full.
+    QHash<QString, quint32> *strings = nullptr;
+
     bool good() const { return s.status() == QDataStream::Ok; }
+    void string(const QString &v)
+    {
+        if (!strings) {
+            s << v;
+            return;
+        }
+        if (v.isNull()) {
+            s << quint32(0);
+            return;
+        }
+        if (const auto known = strings->constFind(v); known != strings->cend()) {
+            s << *known;
+            return;
+        }
+        const auto number = quint32(strings->size() + 1);
+        strings->insert(v, number);
+        s << number << v;
+    }
 };
 
 /// Reads what a Writer wrote (QDataStream's big-endian form, version Qt_6_4) straight from the
@@ -48,6 +72,9 @@ struct Reader
     const char *p;
     const char *end;
     bool ok = true;
+    /// The strings read so far, when the Writer had its table: number - 1 -> string. The
+    /// copies share one buffer.
+    QList<QString> *strings = nullptr;
 
     bool good() const { return ok; }
     /// The next `n` bytes, or null (and not good()) when there are fewer.
@@ -73,6 +100,26 @@ struct Reader
         }
     }
     void string(QString *v)
+    {
+        if (!strings) {
+            fullString(v);
+            return;
+        }
+        quint32 number = 0;
+        integer(&number);
+        if (!ok || number == 0) {
+            *v = QString();
+        } else if (number <= quint32(strings->size())) {
+            *v = strings->at(number - 1);
+        } else if (number == quint32(strings->size()) + 1) {
+            fullString(v);
+            strings->append(*v);
+        } else {
+            ok = false;
+            *v = QString();
+        }
+    }
+    void fullString(QString *v)
     {
         quint32 bytes = 0;
         integer(&bytes);
@@ -136,7 +183,9 @@ template <class A, class T> void io(A &a, T &v)
 {
     if constexpr (std::is_same_v<T, QString> || std::is_same_v<T, QByteArray> ||
                   std::is_same_v<T, bool> || std::is_integral_v<T>) {
-        if constexpr (!A::reading)
+        if constexpr (!A::reading && std::is_same_v<T, QString>)
+            a.string(v);
+        else if constexpr (!A::reading)
             a.s << v;
         else if constexpr (std::is_same_v<T, QString>)
             a.string(&v);
@@ -260,7 +309,8 @@ template <class T> QByteArray encode(const T &value)
     QByteArray bytes;
     QDataStream s(&bytes, QIODevice::WriteOnly);
     s.setVersion(QDataStream::Qt_6_4);
-    Writer w{s};
+    QHash<QString, quint32> strings;
+    Writer w{s, &strings};
     io(w, const_cast<T &>(value));
     return bytes;
 }
@@ -268,7 +318,9 @@ template <class T> QByteArray encode(const T &value)
 /// Reads `bytes` into `value`; false when they are not a whole, well-formed `T`.
 template <class T> bool decode(const QByteArray &bytes, T *value)
 {
+    QList<QString> strings;
     Reader r{bytes.constData(), bytes.constData() + bytes.size()};
+    r.strings = &strings;
     io(r, *value);
     return r.ok && r.p == r.end;
 }

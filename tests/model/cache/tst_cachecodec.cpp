@@ -1,6 +1,7 @@
-// The cache codec's reader reads what its writer (QDataStream, Qt_6_4, big-endian) wrote,
-// exactly as QDataStream would read it back (null and empty strings stay apart), and refuses
-// truncated, oversized or trailing bytes instead of reading past them.
+// The cache codec's reader reads what its writer (QDataStream, Qt_6_4, big-endian, each string
+// in full once and then by its number) wrote, with null and empty strings apart as QDataStream
+// keeps them, and refuses truncated, oversized, trailing or misnumbered bytes instead of
+// reading past them. Without its string table the writer writes what QDataStream writes.
 #include "cachecodec.h"
 
 #include <QtTest>
@@ -24,6 +25,7 @@ struct Sample
     QHash<QString, qint32> map{{QStringLiteral("k"), 3}};
     std::optional<QString> maybe = QStringLiteral("m");
     Diagnostic::Severity severity = Diagnostic::Severity::Error;
+    QList<QString> repeated = QList<QString>(50, QStringLiteral("nav2_bringup/launch/x.py"));
 };
 
 } // namespace
@@ -32,7 +34,7 @@ namespace rosarch::cachecodec {
 template <class F> void cacheFields(Tag, Sample &v, F f)
 {
     f(v.null, v.empty, v.text, v.bytes, v.nullBytes, v.flag, v.negative, v.big, v.wide, v.list,
-      v.map, v.maybe, v.severity);
+      v.map, v.maybe, v.severity, v.repeated);
 }
 } // namespace rosarch::cachecodec
 
@@ -41,7 +43,7 @@ class TestCacheCodec : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void whatIsWrittenIsReadAsQDataStreamReadsIt()
+    void whatIsWrittenIsReadBack()
     {
         const Sample in;
         const QByteArray bytes = cachecodec::encode(in);
@@ -66,15 +68,43 @@ private Q_SLOTS:
         QCOMPARE(out.map, in.map);
         QCOMPARE(out.maybe, in.maybe);
         QCOMPARE(out.severity, Diagnostic::Severity::Error);
+        QCOMPARE(out.repeated, in.repeated);
 
-        // What QDataStream reads from the same bytes.
-        QDataStream s(bytes);
+        // A repeated string is written once and read into copies of one string.
+        Sample once;
+        once.repeated.resize(1);
+        QCOMPARE(bytes.size() - cachecodec::encode(once).size(), 49 * 4); // 49 numbers
+        QCOMPARE(out.repeated.first().constData(), out.repeated.last().constData());
+        QCOMPARE(cachecodec::encode(in), bytes); // the same value, the same bytes (cache keys)
+    }
+
+    void withoutItsTableTheWriterWritesWhatQDataStreamWrites()
+    {
+        Sample in;
+        QByteArray ours;
+        {
+            QDataStream s(&ours, QIODevice::WriteOnly);
+            s.setVersion(QDataStream::Qt_6_4);
+            cachecodec::Writer w{s};
+            cachecodec::io(w, in.null);
+            cachecodec::io(w, in.empty);
+            cachecodec::io(w, in.text);
+            cachecodec::io(w, in.text);
+        }
+        QByteArray theirs;
+        {
+            QDataStream s(&theirs, QIODevice::WriteOnly);
+            s.setVersion(QDataStream::Qt_6_4);
+            s << in.null << in.empty << in.text << in.text;
+        }
+        QCOMPARE(ours, theirs);
+        QDataStream s(ours);
         s.setVersion(QDataStream::Qt_6_4);
         QString null, empty, text;
         s >> null >> empty >> text;
-        QCOMPARE(null.isNull(), out.null.isNull());
-        QCOMPARE(empty.isNull(), out.empty.isNull());
-        QCOMPARE(text, out.text);
+        QVERIFY(null.isNull());
+        QVERIFY(!empty.isNull() && empty.isEmpty());
+        QCOMPARE(text, in.text);
     }
 
     void damagedBytesAreRefused()
@@ -84,9 +114,14 @@ private Q_SLOTS:
         for (qsizetype cut = 0; cut < bytes.size(); ++cut)
             QVERIFY2(!cachecodec::decode(bytes.first(cut), &out), qPrintable(QString::number(cut)));
         QVERIFY(!cachecodec::decode(bytes + 'x', &out)); // trailing bytes
+        // Bytes 0-3: the null string (number 0); 4-7: the empty string's number (1), 8-11 its
+        // byte count (0).
         QByteArray odd = bytes;
-        odd[7] = 1; // the empty string's byte count (bytes 4 to 7) made odd: not UTF-16
+        odd[11] = 1; // a byte count made odd: not UTF-16
         QVERIFY(!cachecodec::decode(odd, &out));
+        QByteArray ahead = bytes;
+        ahead[7] = 2; // a number no string has yet
+        QVERIFY(!cachecodec::decode(ahead, &out));
         QList<QString> list;
         QVERIFY(!cachecodec::decode(QByteArray("\x7f\xff\xff\xff", 4), &list)); // too many
     }
