@@ -8,13 +8,13 @@
 #include "cppmacroindex.h"
 #include "cppsyntax.h"
 #include "filedigests.h"
+#include "largestfirst.h"
 #include "sourcereader.h"
 #include "stagememo.h"
 #include "syntaxtree.h"
 
 #include <QMutex>
 #include <QThreadPool>
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <memory>
 
@@ -113,7 +113,8 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         if (file.language == SourceFile::Language::Cpp)
             sources.append(&file);
 
-    // Phase 1: per-file facts, in parallel. Trees are dropped as soon as a file is done.
+    // Phase 1: per-file facts, in parallel (largest first). Trees are dropped as soon as a file is
+    // done.
     const SourceReader reader(m_workspace.root);
     // Before any file is parsed: the macros the packages and the workspace headers define, so
     // that conditional compilation is decided as the build decides it.
@@ -237,8 +238,7 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         control.report(++done, total, file->path);
         return facts;
     };
-    QList<CppFileFacts> files = QtConcurrent::blockingMapped<QList<CppFileFacts>>(
-        sources, std::function<CppFileFacts(const SourceFile *)>(extract));
+    QList<CppFileFacts> files = mapLargestFirst<CppFileFacts>(sources, extract);
     if (control.isCanceled())
         return {};
 

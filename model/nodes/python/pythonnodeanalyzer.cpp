@@ -2,6 +2,7 @@
 
 #include "analysiscache.h"
 #include "filedigests.h"
+#include "largestfirst.h"
 #include "pythonerrorrecovery.h"
 #include "pythonfactscodec.h"
 #include "pythonmodulereader.h"
@@ -12,7 +13,6 @@
 
 #include <QMutex>
 #include <QSet>
-#include <QtConcurrent/QtConcurrentMap>
 
 namespace rosarch {
 
@@ -67,7 +67,7 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         pythonFiles.insert(f.path);
     }
 
-    // Each file on its own, in parallel; the results keep the files' order.
+    // Each file on its own, in parallel (largest first); the results keep the files' order.
     const SourceReader reader(m_workspace.root);
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
     const int total = int(files.size());
@@ -155,8 +155,7 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
         r.diagnostics += analysed.diagnostics;
         return r;
     };
-    const QList<PythonFileResult> analysed = QtConcurrent::blockingMapped<QList<PythonFileResult>>(
-        files, std::function<PythonFileResult(const SourceFile *)>(analyzeFile));
+    const QList<PythonFileResult> analysed = mapLargestFirst<PythonFileResult>(files, analyzeFile);
     if (control.isCanceled())
         return result;
     control.report(total, total, QString());
