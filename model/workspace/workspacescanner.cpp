@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 
 namespace rosarch {
@@ -58,6 +59,10 @@ struct DirEntry
 {
     QString name;
     unsigned char type = DT_UNKNOWN;
+    SourceFile::Language language = SourceFile::Language::Other; ///< Other for folders
+    /// A regular source file's size, stat'ed relative to the open folder while listing it (a
+    /// stat by full path walks every folder of the path again); -1 when it is gone by then.
+    qint64 size = -1;
 };
 
 /// What one pass over a folder's listing finds.
@@ -78,7 +83,8 @@ bool existsAt(int dirFd, const char *name)
 }
 
 /// The folder's entries in one readdir() pass: no stat per entry (the type comes with the
-/// name on the usual file systems), and the ignore markers seen in the listing.
+/// name on the usual file systems) but one for each source file's size, relative to the
+/// folder, and the ignore markers seen in the listing.
 Listing list(const QString &dir)
 {
     Listing out;
@@ -106,7 +112,24 @@ Listing list(const QString &dir)
         if ((name == "COLCON_IGNORE" || name == "AMENT_IGNORE") &&
             ((e->d_type != DT_LNK && e->d_type != DT_UNKNOWN) || existsAt(fd, raw)))
             out.ignored = true; // a marker is one when it exists (a dangling link is none)
-        out.entries.append({QString::fromUtf8(name), e->d_type});
+        DirEntry entry{QString::fromUtf8(name), e->d_type};
+        struct stat st
+        {
+        };
+        if (entry.type == DT_UNKNOWN) { // the file system does not say: ask
+            if (fstatat(fd, raw, &st, AT_SYMLINK_NOFOLLOW) != 0)
+                continue;
+            entry.type = S_ISDIR(st.st_mode)   ? DT_DIR
+                         : S_ISLNK(st.st_mode) ? DT_LNK
+                         : S_ISREG(st.st_mode) ? DT_REG
+                                               : DT_UNKNOWN;
+        }
+        if (entry.type != DT_DIR)
+            entry.language = languageOf(entry.name);
+        if (entry.type == DT_REG && entry.language != SourceFile::Language::Other &&
+            fstatat(fd, raw, &st, 0) == 0 && S_ISREG(st.st_mode))
+            entry.size = st.st_size;
+        out.entries.append(entry);
     }
     closedir(d);
     std::sort(out.entries.begin(), out.entries.end(),
@@ -184,18 +207,10 @@ public:
         for (const DirEntry &e : listing.entries) {
             const QString rel = relDir.isEmpty() ? e.name : relDir + QLatin1Char('/') + e.name;
             const QString abs = absDir + QLatin1Char('/') + e.name;
-            unsigned char type = e.type;
+            const unsigned char type = e.type;
             struct stat st
             {
             };
-            if (type == DT_UNKNOWN) { // the file system does not say: ask
-                if (lstat(QFile::encodeName(abs).constData(), &st) != 0)
-                    continue;
-                type = S_ISDIR(st.st_mode)   ? DT_DIR
-                       : S_ISLNK(st.st_mode) ? DT_LNK
-                       : S_ISREG(st.st_mode) ? DT_REG
-                                             : DT_UNKNOWN;
-            }
             if (type == DT_DIR) { // a real folder: its canonical path follows from its parent's
                 if (!isSkippedFolder(e.name))
                     walk(abs, rel, canonical + QLatin1Char('/') + e.name, depth + 1);
@@ -219,19 +234,19 @@ public:
                     continue;
                 }
             }
-            const SourceFile::Language lang = languageOf(e.name);
+            const SourceFile::Language lang = e.language;
             if (lang == SourceFile::Language::Other)
                 continue;
             if (type != DT_REG && !link)
                 continue; // fifos, sockets, devices
-            if (!link && stat(QFile::encodeName(abs).constData(), &st) != 0)
-                continue; // gone since the listing
-            if (!S_ISREG(st.st_mode))
+            if (!link && e.size < 0)
+                continue; // gone since the listing, or no longer a regular file
+            if (link && !S_ISREG(st.st_mode))
                 continue; // a link to a fifo, a socket, a device
             SourceFile f;
             f.path = rel;
             f.language = lang;
-            f.size = st.st_size;
+            f.size = link ? st.st_size : e.size;
             m_ws->files.append(f);
         }
     }
