@@ -42,6 +42,33 @@ bool skipInScope(int kind, TSNode n, TSNode body, bool moduleLevel)
     return kind == ClassDefinition || moduleLevel;
 }
 
+} // namespace
+
+/// The calls and the assignments of a scope's body, in the order a walk over it meets them,
+/// without the nested scopes its passes skip (skipInScope): one walk for the passes over it.
+struct PythonModuleReader::ScopeNodes
+{
+    std::vector<TSNode> calls;
+    std::vector<TSNode> assignments;
+
+    ScopeNodes(TSNode body, bool moduleLevel)
+    {
+        const ts::TypeSet &kinds = scopeKinds();
+        py::walk(body, [&](TSNode n) {
+            const int kind = kinds.index(n);
+            if (skipInScope(kind, n, body, moduleLevel))
+                return false;
+            if (kind == Call)
+                calls.push_back(n);
+            else if (kind == Assignment)
+                assignments.push_back(n);
+            return true;
+        });
+    }
+};
+
+namespace {
+
 /// "std_msgs.msg.String", "pkg.srv.T.Request": a message, service or action type.
 bool isInterfaceName(const QString &dotted)
 {
@@ -193,24 +220,18 @@ bool PythonModuleReader::proceduralNode(TSNode expr, PythonProcedural *procedura
     return false;
 }
 
-void PythonModuleReader::findAliases(TSNode body, Receivers *receivers, bool members,
+void PythonModuleReader::findAliases(const ScopeNodes &body, Receivers *receivers, bool members,
                                      const QString &function, TSNode evidence,
                                      PythonScopeFacts *facts, const Receivers &visible) const
 {
     const bool moduleLevel = ts::isNull(evidence);
-    const ts::TypeSet &kinds = scopeKinds();
-    py::walk(body, [&](TSNode n) {
-        const int kind = kinds.index(n);
-        if (skipInScope(kind, n, body, moduleLevel))
-            return false;
-        if (kind != Assignment)
-            return true;
+    for (const TSNode n : body.assignments) {
         TSNode left = ts::field(n, "left");
         TSNode right = ts::field(n, "right");
         if (members
                 ? !(ts::is(left, "attribute") && m_tree.view(ts::field(left, "object")) == "self")
                 : !ts::is(left, "identifier"))
-            return true;
+            continue;
         PythonProcedural procedural;
         if (proceduralNode(right, &procedural)) {
             procedural.function = function;
@@ -220,34 +241,27 @@ void PythonModuleReader::findAliases(TSNode body, Receivers *receivers, bool mem
             h.kind = PythonHandle::Kind::Procedural;
             h.index = int(facts->procedurals.size() - 1);
             receivers->insert(key(left), h);
-            return true;
+            continue;
         }
         const QString from = key(right);
         if (receivers->contains(from))
             receivers->insert(key(left), receivers->value(from));
         else if (visible.contains(from))
             receivers->insert(key(left), visible.value(from));
-        return true;
-    });
+    }
 }
 
-void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QString &method,
-                              const QStringList &parameterNames, PythonScopeFacts *facts) const
+void PythonModuleReader::scan(const ScopeNodes &body, const Receivers &receivers,
+                              const QString &method, const QStringList &parameterNames,
+                              PythonScopeFacts *facts) const
 {
-    const bool moduleLevel = ts::is(body, "module");
-    const ts::TypeSet &kinds = scopeKinds();
-    py::walk(body, [&](TSNode n) {
-        const int type = kinds.index(n);
-        if (skipInScope(type, n, body, moduleLevel))
-            return false;
-        if (type != Call)
-            return true;
+    for (const TSNode n : body.calls) {
         PortKind kind;
         TSNode receiver;
         if (m_ports.recognize(n, &kind, &receiver)) {
             const auto it = receivers.constFind(key(receiver));
             if (it == receivers.constEnd())
-                return true;
+                continue;
             PythonPortFact fact;
             fact.port = m_ports.read(n, kind);
             fact.method = method;
@@ -281,7 +295,7 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
                 }
             }
             facts->ports.append(fact);
-            return true;
+            continue;
         }
         TSNode function = ts::field(n, "function");
         QString target;
@@ -295,7 +309,7 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
                          QLatin1Char('.') + m_tree.text(ts::field(function, "attribute"));
         }
         if (target.isEmpty())
-            return true;
+            continue;
         // builtins (print, len, ...) and message constructors cannot take a node handle apart
         const bool external = !target.contains(QLatin1Char('.')) || isInterfaceName(target);
         int position = 0;
@@ -332,8 +346,7 @@ void PythonModuleReader::scan(TSNode body, const Receivers &receivers, const QSt
             call.evidence = m_tree.evidence(n);
             facts->calls.append(call);
         }
-        return true;
-    });
+    }
 }
 
 PythonParameterRef PythonModuleReader::parameterOf(TSNode identifier) const
@@ -512,6 +525,12 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         }
     }
 
+    // Each method's body walked once, for the passes below.
+    std::vector<ScopeNodes> bodies;
+    bodies.reserve(methods.size());
+    for (const TSNode method : methods)
+        bodies.emplace_back(ts::field(method, "body"), false);
+
     // How the constructor calls the base constructor, and which overrides call their base.
     for (size_t i = 0; i < methods.size(); ++i) {
         const QString &name = facts.methods.at(qsizetype(i));
@@ -523,29 +542,22 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
             for (const PythonParameter &p : facts.initParameters)
                 parameterNames.append(p.name);
         }
-        const ts::TypeSet &kinds = scopeKinds();
-        py::walk(ts::field(methods[i], "body"), [&](TSNode n) {
-            const int kind = kinds.index(n);
-            if (kind == ClassDefinition)
-                return false;
-            if (kind != Call)
-                return true;
+        for (const TSNode n : bodies[i].calls) {
             TSNode function = ts::field(n, "function");
             if (!ts::is(function, "attribute") ||
                 m_tree.text(ts::field(function, "attribute")) != name)
-                return true;
+                continue;
             TSNode object = ts::field(function, "object");
             const bool viaSuper = isSuperCall(m_tree, object);
             if (!viaSuper && !facts.bases.contains(key(object)))
-                return true;
+                continue;
             if (!facts.superCalledMethods.contains(name))
                 facts.superCalledMethods.append(name);
             if (isInit && !facts.hasBaseInitCall) {
                 facts.hasBaseInitCall = true;
                 facts.baseInitArguments = arguments(n, parameterNames, !viaSuper);
             }
-            return true;
-        });
+        }
     }
 
     // Node handles held in members: `self.node = node` (constructor parameter) or
@@ -562,8 +574,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         } else if (facts.methods.at(qsizetype(i)) == QLatin1String("setup")) {
             addSetupHandles(m_tree, methods[i], &visible);
         }
-        findAliases(ts::field(methods[i], "body"), &members, true, facts.methods.at(qsizetype(i)),
-                    methods[i], &facts, visible);
+        findAliases(bodies[i], &members, true, facts.methods.at(qsizetype(i)), methods[i], &facts,
+                    visible);
     }
 
     for (size_t i = 0; i < methods.size(); ++i) {
@@ -581,9 +593,8 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         }
         if (name == QLatin1String("setup"))
             addSetupHandles(m_tree, methods[i], &receivers);
-        TSNode body = ts::field(methods[i], "body");
-        findAliases(body, &receivers, false, name, methods[i], &facts, {});
-        scan(body, receivers, name, parameterNames, &facts);
+        findAliases(bodies[i], &receivers, false, name, methods[i], &facts, {});
+        scan(bodies[i], receivers, name, parameterNames, &facts);
     }
     return facts;
 }
@@ -601,7 +612,7 @@ PythonFunctionFacts PythonModuleReader::readFunction(TSNode function) const
         parameterNames.append(p);
         receivers.insert(p, parameterHandle(i, p));
     }
-    TSNode body = ts::field(function, "body");
+    const ScopeNodes body(ts::field(function, "body"), false);
     findAliases(body, &receivers, false, facts.name, function, &facts, {});
     scan(body, receivers, QString(), parameterNames, &facts);
     return facts;
@@ -611,8 +622,9 @@ PythonFunctionFacts PythonModuleReader::readModuleStatements() const
 {
     PythonFunctionFacts facts;
     Receivers receivers;
-    findAliases(m_tree.root(), &receivers, false, QString(), TSNode{}, &facts, {});
-    scan(m_tree.root(), receivers, QString(), {}, &facts);
+    const ScopeNodes module(m_tree.root(), true);
+    findAliases(module, &receivers, false, QString(), TSNode{}, &facts, {});
+    scan(module, receivers, QString(), {}, &facts);
     return facts;
 }
 

@@ -20,13 +20,15 @@ public:
 
 private:
     using Receivers = QHash<QString, PythonHandle>;
+    struct ScopeNodes;
 
     PythonClassFacts readClass(TSNode cls) const;
     PythonFunctionFacts readFunction(TSNode function) const;
     PythonFunctionFacts readModuleStatements() const;
-    void findAliases(TSNode body, Receivers *receivers, bool members, const QString &function,
-                     TSNode evidence, PythonScopeFacts *facts, const Receivers &visible) const;
-    void scan(TSNode body, const Receivers &receivers, const QString &method,
+    void findAliases(const ScopeNodes &body, Receivers *receivers, bool members,
+                     const QString &function, TSNode evidence, PythonScopeFacts *facts,
+                     const Receivers &visible) const;
+    void scan(const ScopeNodes &body, const Receivers &receivers, const QString &method,
               const QStringList &parameterNames, PythonScopeFacts *facts) const;
     bool proceduralNode(TSNode expr, PythonProcedural *procedural) const;
     QList<PythonArgument> arguments(TSNode call, const QStringList &parameterNames,
