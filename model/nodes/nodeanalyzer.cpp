@@ -209,9 +209,13 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
         pythonFiles += f.language == SourceFile::Language::Python;
         cppFiles += f.language == SourceFile::Language::Cpp;
     }
+    // The C++ macro index is built while the Python files are analysed.
+    CppNodeAnalyzer cpp(workspace);
+    const StageControl cppPart = control.part(pythonFiles, pythonFiles + cppFiles);
+    cpp.prepare(cppPart);
     LanguageAnalysis analyses[] = {
         PythonNodeAnalyzer(workspace).analyze(control.part(0, pythonFiles + cppFiles)),
-        CppNodeAnalyzer(workspace).analyze(control.part(pythonFiles, pythonFiles + cppFiles))};
+        cpp.analyze(cppPart)};
     QList<EntryPoint> entryPoints;
     QList<ComponentRegistration> registrations;
     for (LanguageAnalysis &a : analyses) {

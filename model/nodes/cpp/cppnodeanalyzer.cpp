@@ -15,6 +15,7 @@
 
 #include <QMutex>
 #include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <memory>
 
@@ -104,6 +105,24 @@ Diagnostic analysisFailed(const QString &file, const std::exception &e)
 
 CppNodeAnalyzer::CppNodeAnalyzer(const Workspace &workspace) : m_workspace(workspace) {}
 
+CppNodeAnalyzer::~CppNodeAnalyzer()
+{
+    if (m_prepared.isValid()) // the task refers to this analyzer's workspace
+        m_prepared.waitForFinished();
+}
+
+void CppNodeAnalyzer::prepare(const StageControl &control)
+{
+    // The task keeps a copy of the control: the caller's may be a temporary.
+    m_prepared = QtConcurrent::run([this, control]() -> std::shared_ptr<const CppMacroIndex> {
+        if (control.isCanceled()) // before the index, which reads every package's CMakeLists
+            return nullptr;
+        const SourceReader reader(m_workspace.root); // the index reads only while it is built
+        AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+        return macroIndexOf(m_workspace, reader, control, cache);
+    });
+}
+
 LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
 {
     if (control.isCanceled()) // before the macro index, which reads every package's CMakeLists
@@ -117,12 +136,16 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
     // done.
     const SourceReader reader(m_workspace.root);
     // Before any file is parsed: the macros the packages and the workspace headers define, so
-    // that conditional compilation is decided as the build decides it.
+    // that conditional compilation is decided as the build decides it (prepare() may have
+    // started on it already).
     AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
-    const std::unique_ptr<CppMacroIndex> index = macroIndexOf(m_workspace, reader, control, cache);
-    const CppMacroIndex &macroIndex = *index;
-    if (control.isCanceled())
+    const std::shared_ptr<const CppMacroIndex> index =
+        m_prepared.isValid() ? m_prepared.result()
+                             : std::shared_ptr<const CppMacroIndex>(
+                                   macroIndexOf(m_workspace, reader, control, cache));
+    if (control.isCanceled() || !index)
         return {};
+    const CppMacroIndex &macroIndex = *index;
     // Digests of each header's exports and of each package's initial macros, for the manifests.
     QHash<const CppMacros *, QByteArray> exportDigests;
     for (auto it = macroIndex.exports().cbegin(); it != macroIndex.exports().cend(); ++it)
