@@ -43,12 +43,29 @@ struct ClassifierRuns::State
         Run run;
     };
 
-    State(LaunchExecutor executor, const StageControl &c, qsizetype b)
-        : prototype(std::move(executor)), control(c), budget(b)
+    State(const Workspace &w, const AtomicNodeList &n, LaunchExecutor::Loader l,
+          const StageControl &c, qsizetype b)
+        : workspace(w), nodes(n), loader(std::move(l)), control(c), budget(b)
     {
     }
 
-    const LaunchExecutor prototype; ///< each thread runs a copy
+    /// The executor the pool threads copy, made (or set) before they begin.
+    const LaunchExecutor &prototypeOr(const LaunchExecutor *warm)
+    {
+        if (!prototype) {
+            if (warm)
+                prototype.emplace(*warm);
+            else
+                prototype.emplace(workspace, nodes, loader, nullptr);
+            prototype->setIdPrefix(kPrefix);
+        }
+        return *prototype;
+    }
+
+    const Workspace &workspace;
+    const AtomicNodeList &nodes;
+    const LaunchExecutor::Loader loader;
+    std::optional<LaunchExecutor> prototype;
     const StageControl &control;
     const qsizetype budget;
     std::mutex mutex;
@@ -64,10 +81,8 @@ struct ClassifierRuns::State
 ClassifierRuns::ClassifierRuns(const Workspace &workspace, const AtomicNodeList &nodes,
                                LaunchExecutor::Loader loader, const StageControl &control,
                                qsizetype budget)
+    : m_state(std::make_shared<State>(workspace, nodes, std::move(loader), control, budget))
 {
-    LaunchExecutor executor(workspace, nodes, std::move(loader), nullptr);
-    executor.setIdPrefix(kPrefix);
-    m_state = std::make_shared<State>(std::move(executor), control, budget);
 }
 
 ClassifierRuns::~ClassifierRuns()
@@ -109,7 +124,7 @@ void ClassifierRuns::work(const std::shared_ptr<State> &state)
         ++s.running;
         lock.unlock();
         if (!executor)
-            executor.emplace(s.prototype);
+            executor.emplace(*s.prototype);
         Run run = runFile(*executor, s.control, file);
         lock.lock();
         s.made += run.made.instances.size() + run.made.nodes.size();
@@ -120,12 +135,13 @@ void ClassifierRuns::work(const std::shared_ptr<State> &state)
     }
 }
 
-void ClassifierRuns::start(const QStringList &files)
+void ClassifierRuns::start(const QStringList &files, const LaunchExecutor *warm)
 {
     State &s = *m_state;
     qsizetype added = 0;
     {
         const std::lock_guard lock(s.mutex);
+        s.prototypeOr(warm);
         for (const QString &f : files)
             if (!s.byFile.contains(f)) {
                 s.byFile.insert(f, qsizetype(s.items.size()));
@@ -141,6 +157,40 @@ void ClassifierRuns::start(const QStringList &files)
         pool->start([state = m_state] { work(state); });
 }
 
+LaunchExecutor &ClassifierRuns::executor(const LaunchExecutor *warm)
+{
+    if (!m_executor) {
+        const std::lock_guard lock(m_state->mutex);
+        m_executor.emplace(warm ? *warm : m_state->prototypeOr(nullptr));
+        m_executor->setIdPrefix(kPrefix);
+    }
+    return *m_executor;
+}
+
+void ClassifierRuns::runWaiting(const QStringList &files, const LaunchExecutor *warm)
+{
+    // From the end of the list, while the pool threads work from its start: this thread waits
+    // the least for runs it needs first.
+    State &s = *m_state;
+    std::unique_lock lock(s.mutex);
+    for (auto f = files.crbegin(); f != files.crend(); ++f) {
+        const auto it = s.byFile.constFind(*f);
+        if (it == s.byFile.cend() || s.items[*it].step != State::Step::Waiting)
+            continue;
+        if (s.stopped || s.made > s.budget || s.control.isCanceled())
+            return;
+        const qsizetype at = *it;
+        s.items[at].step = State::Step::Running;
+        lock.unlock();
+        Run run = runFile(executor(warm), s.control, *f);
+        lock.lock();
+        s.made += run.made.instances.size() + run.made.nodes.size();
+        s.items[at].run = std::move(run);
+        s.items[at].step = State::Step::Done;
+        s.changed.notify_all();
+    }
+}
+
 ClassifierRuns::Run ClassifierRuns::take(const QString &file, const LaunchExecutor *warm)
 {
     State &s = *m_state;
@@ -151,11 +201,7 @@ ClassifierRuns::Run ClassifierRuns::take(const QString &file, const LaunchExecut
         if (item)
             item->step = State::Step::Taken;
         lock.unlock();
-        if (!m_executor) {
-            m_executor.emplace(warm ? *warm : s.prototype);
-            m_executor->setIdPrefix(kPrefix);
-        }
-        Run run = runFile(*m_executor, s.control, file);
+        Run run = runFile(executor(warm), s.control, file);
         lock.lock();
         s.made += run.made.instances.size() + run.made.nodes.size();
         return run;
@@ -227,7 +273,8 @@ void ClassifierRuns::finish(const QStringList &files, LaunchDependencies *out,
         begun = !s.items.empty();
     }
     if (!begun)
-        start(files);
+        start(files, warm);
+    runWaiting(files, warm);
     LaunchDependencies alone;
     for (const QString &file : files) {
         if (s.control.isCanceled()) {

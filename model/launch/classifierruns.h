@@ -30,8 +30,9 @@ public:
     ClassifierRuns &operator=(const ClassifierRuns &) = delete;
 
     /// Begins running `files` (those finish() will likely be asked for) on pool threads while
-    /// the caller does something else.
-    void start(const QStringList &files);
+    /// the caller does something else. The first start() says what the pool threads copy:
+    /// `warm` (see finish()), else a new executor.
+    void start(const QStringList &files, const LaunchExecutor *warm = nullptr);
     /// The runs of `files` in this order, into `out`'s classifierInstances and classifierNodes
     /// (left empty when the run is canceled); a run over the budget ends them with a
     /// diagnostic in `out`. What they would diagnose was found by the system's runs already:
@@ -54,6 +55,10 @@ private:
     static Run runFile(LaunchExecutor &executor, const StageControl &control, const QString &file);
     /// A pool thread's loop: runs the files no one runs yet until there are none.
     static void work(const std::shared_ptr<State> &state);
+    /// The executor of the runs this thread makes.
+    LaunchExecutor &executor(const LaunchExecutor *warm);
+    /// Runs the files of `files` no pool thread has begun, from the last.
+    void runWaiting(const QStringList &files, const LaunchExecutor *warm);
     /// `file`'s run: the pool's, waited for, or made now.
     Run take(const QString &file, const LaunchExecutor *warm);
     void stop();

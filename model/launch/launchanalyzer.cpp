@@ -69,11 +69,10 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     out.launchFiles = index.files();
     const LaunchExecutor::Loader loader = [&](const QString &f) { return index.find(f); };
     LaunchExecutor executor(workspace, nodes, loader, &out);
-    // Every file is reached when every top-level file is a root: their own runs begin on the
-    // pool while this thread runs the system.
+    // The files' own runs begin after the system's, from its executor: begun on the pool during
+    // them, with cold caches, they read the same parameter files and resolve the same includes
+    // again, and took the system's runs longer on two cores than they saved (nav2).
     ClassifierRuns classifiers(workspace, nodes, loader, control);
-    if (options.rootFile.isEmpty())
-        classifiers.start(out.launchFiles);
 
     QStringList roots;
     if (!options.rootFile.isEmpty()) {
