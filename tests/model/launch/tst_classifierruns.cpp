@@ -12,7 +12,9 @@
 #include "workspacescanner.h"
 
 #include <QElapsedTimer>
+#include <QThread>
 #include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QtTest>
 
 #include <algorithm>
@@ -257,6 +259,27 @@ private Q_SLOTS:
             QVERIFY(d.classifierInstances == expected.classifierInstances);
             QVERIFY(d.classifierNodes == expected.classifierNodes);
             QVERIFY(d.diagnostics == expected.diagnostics);
+        }
+    }
+
+    void runsFromAPoolThreadWithNoThreadLeft()
+    {
+        // Stage 2 may itself run on the pool, which may have no other thread free: the caller
+        // runs what no pool thread began, and never waits for a run that has not begun.
+        Fixture fx;
+        addFiles(fx);
+        const QStringList files{kA, kB, kC, kD, kE};
+        const LaunchDependencies expected = oneAfterTheOther(fx, files, ClassifierRuns::kBudget);
+        for (const int threads : {1, 2}) {
+            const PoolSize size(threads);
+            QFuture<LaunchDependencies> run = QtConcurrent::run(
+                [&] { return onThePool(fx, files, ClassifierRuns::kBudget, {}); });
+            QElapsedTimer timer;
+            timer.start();
+            while (!run.isFinished() && timer.elapsed() < 10000)
+                QThread::msleep(5);
+            QVERIFY(run.isFinished());
+            QVERIFY(run.result().classifierNodes == expected.classifierNodes);
         }
     }
 
