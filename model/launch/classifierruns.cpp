@@ -58,6 +58,7 @@ struct ClassifierRuns::State
             else
                 prototype.emplace(workspace, nodes, loader, nullptr);
             prototype->setIdPrefix(kPrefix);
+            prototype->setOutput(nullptr); // each run sets its own
         }
         return *prototype;
     }

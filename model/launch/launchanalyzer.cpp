@@ -6,7 +6,6 @@
 #include "launchfileindex.h"
 #include "launchreadahead.h"
 #include "pythonlaunchreader.h"
-#include "rosnames.h"
 #include "sourcereader.h"
 #include "stagememo.h"
 #include "workspacescanner.h"
