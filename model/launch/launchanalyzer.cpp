@@ -1,11 +1,11 @@
 #include "launchanalyzer.h"
 #include "analysiscache.h"
+#include "classifierruns.h"
 #include "evidenceshift.h"
 #include "launchexecutor.h"
 #include "launchfileindex.h"
 #include "launchreadahead.h"
 #include "pythonlaunchreader.h"
-#include "rosnames.h"
 #include "sourcereader.h"
 #include "stagememo.h"
 #include "workspacescanner.h"
@@ -29,42 +29,17 @@ std::mutex pendingMutex;
 QList<QFuture<void>> pending;
 
 /// Each launch file of the system analysed on its own, with its declared defaults, in the
-/// classifier scope: what its CCD shows (blueprint §1). What these runs find was found by the
-/// system's runs already, so their diagnostics are dropped; a budget bounds their size.
-void runClassifiers(const Workspace &workspace, const AtomicNodeList &nodes,
-                    const LaunchFileIndex &index, const StageControl &control,
-                    LaunchDependencies *out)
+/// classifier scope: what its CCD shows (blueprint §1), in the order the system reaches them.
+void runClassifiers(ClassifierRuns &runs, const LaunchExecutor &system, LaunchDependencies *out)
 {
-    constexpr qsizetype kBudget = 100000; // instances over all runs
-    LaunchDependencies alone;
-    LaunchExecutor executor(
-        workspace, nodes, [&](const QString &f) { return index.find(f); }, &alone);
-    executor.setIdPrefix(QStringLiteral("c"));
+    QStringList files;
     QSet<QString> done;
-    for (const LaunchFileInstance &i : std::as_const(out->instances)) {
-        if (i.file.isEmpty() || done.contains(i.file))
-            continue;
-        done.insert(i.file);
-        if (control.isCanceled())
-            return;
-        if (alone.instances.size() + alone.nodes.size() > kBudget) {
-            Diagnostic d;
-            d.code = QStringLiteral("launch-evaluation-limit");
-            d.message = QStringLiteral("Analysing each launch file on its own for its diagram "
-                                       "stopped after %1 instances; the diagrams of %2 and later "
-                                       "files show them as included by the system.")
-                            .arg(kBudget)
-                            .arg(i.file);
-            d.evidence = Evidence::startOf(i.file);
-            out->diagnostics.append(d);
-            break;
+    for (const LaunchFileInstance &i : std::as_const(out->instances))
+        if (!i.file.isEmpty() && !done.contains(i.file)) {
+            done.insert(i.file);
+            files.append(i.file);
         }
-        const FileWork work(control, i.file);
-        if (!work.skip(&alone.diagnostics))
-            executor.runRoot(i.file, {}, QLatin1String(RosNames::kClassifierScope));
-    }
-    out->classifierInstances = std::move(alone.instances);
-    out->classifierNodes = std::move(alone.nodes);
+    runs.finish(files, out, &system);
 }
 
 /// The index of the launch files, from what `readAhead` read when it did.
@@ -91,8 +66,12 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.append(*problem);
     out.launchFiles = index.files();
-    LaunchExecutor executor(
-        workspace, nodes, [&](const QString &f) { return index.find(f); }, &out);
+    const LaunchExecutor::Loader loader = [&](const QString &f) { return index.find(f); };
+    LaunchExecutor executor(workspace, nodes, loader, &out);
+    // The files' own runs begin after the system's, from its executor: begun on the pool during
+    // them, with cold caches, they read the same parameter files and resolve the same includes
+    // again, and took the system's runs longer on two cores than they saved (nav2).
+    ClassifierRuns classifiers(workspace, nodes, loader, control);
 
     QStringList roots;
     if (!options.rootFile.isEmpty()) {
@@ -142,7 +121,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
                     reached.insert(i.file);
             }
     }
-    runClassifiers(workspace, nodes, index, control, &out);
+    runClassifiers(classifiers, executor, &out);
     // The same problem met through two include chains is one diagnostic.
     QList<Diagnostic> unique;
     for (const Diagnostic &d : std::as_const(out.diagnostics))

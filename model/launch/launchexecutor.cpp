@@ -225,6 +225,15 @@ bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, c
     return a.condition.unless ? !holds : holds;
 }
 
+bool LaunchExecutor::isContainerNamed(const NodeInstance &n, const QString &target,
+                                      const QString &nameSpace)
+{
+    if (target.isEmpty())
+        return false;
+    const QString fq = joinNamespace(n.nameSpace, n.nodeName);
+    return n.nodeName == target || fq == target || fq == joinNamespace(nameSpace, target);
+}
+
 void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QString &id)
 {
     if (instance >= 0)
@@ -321,16 +330,19 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             const QString target = evaluate(a.target, scope, frame, sink, a.evidence);
             // The container is found by its name (plain or fully qualified).
             QString containerId = target;
-            for (const NodeInstance &n : std::as_const(m_out->nodes)) {
-                const QString fq = joinNamespace(n.nameSpace, n.nodeName);
-                if (!target.isEmpty() && (n.nodeName == target || fq == target ||
-                                          fq == joinNamespace(scope.nameSpace, target)))
+            bool found = false;
+            for (const NodeInstance &n : std::as_const(m_out->nodes))
+                if (isContainerNamed(n, target, scope.nameSpace)) {
                     containerId = n.id;
-            }
+                    found = true;
+                }
             Scope inner = scope;
             inner.active = scope.active && conditionHolds(a, scope, frame, sink);
+            const qsizetype first = m_out->nodes.size();
             for (const LaunchAction &c : a.children)
                 executeNode(c, inner, frame, containerId);
+            if (m_unfound && !found && !target.isEmpty() && m_out->nodes.size() > first)
+                m_unfound->append({first, m_out->nodes.size(), target, scope.nameSpace});
             break;
         }
         case LaunchAction::Kind::Include:

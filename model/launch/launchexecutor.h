@@ -32,6 +32,16 @@ class LaunchExecutor
 public:
     using Loader = std::function<const LaunchFileDescription *(const QString &file)>;
 
+    /// A LoadComposableNodes whose container is none of the nodes made so far: the nodes it
+    /// loaded (`first` to `end`, indices into the output's nodes) name it by `target`.
+    struct UnfoundContainer
+    {
+        qsizetype first = 0;
+        qsizetype end = 0;
+        QString target;
+        QString nameSpace; ///< of the scope the target was named in
+    };
+
     LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes, Loader loader,
                    LaunchDependencies *out);
 
@@ -42,6 +52,14 @@ public:
 
     /// Prefixes the ids of the instances made ("c" gives "clf1", "cn1").
     void setIdPrefix(const QString &prefix) { m_idPrefix = prefix; }
+    /// Appends to `out` from now on (a copy of an executor may run into another output).
+    void setOutput(LaunchDependencies *out) { m_out = out; }
+    /// Records each container a LoadComposableNodes does not find in `sink` (null: none).
+    void setUnfoundContainers(QList<UnfoundContainer> *sink) { m_unfound = sink; }
+    /// Whether `n` is the container a LoadComposableNodes in namespace `nameSpace` names by
+    /// `target` (plain or fully qualified); the last such node is the one.
+    static bool isContainerNamed(const NodeInstance &n, const QString &target,
+                                 const QString &nameSpace);
 
     /// Evaluates an include path (as produced by SubstitutionEvaluator) to a launch file.
     IncludeTarget resolveInclude(const QString &path, const QString &fromFile) const;
@@ -118,6 +136,7 @@ private:
     QHash<QString, ParameterFile> m_rewrittenFiles; ///< RewrittenYaml results, by file and rewrites
     QSet<QString> m_missingParameterFiles;          ///< reported once per path
     QString m_idPrefix;
+    QList<UnfoundContainer> *m_unfound = nullptr;
 };
 
 /// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.

@@ -12,6 +12,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <mutex>
+
 using namespace rosarch;
 
 namespace {
@@ -509,16 +512,19 @@ private Q_SLOTS:
     void stageThreeReportsOneProgression()
     {
         // The status bar's bar fills once for stage 3: the systems, then each launch file's own
-        // classifier diagram.
+        // classifier diagram. The two parts report from two threads: in any order, once each.
         const LaunchDependencies &launch = m_recovery.launch;
         QVERIFY(!launch.classifierInstances.isEmpty());
         const int all = int(launch.instances.size() + launch.classifierInstances.size());
+        std::mutex mutex;
         QList<std::pair<int, int>> reports;
         StageControl control;
         control.progressed = [&](int done, int total, const QString &) {
+            const std::lock_guard lock(mutex);
             reports.append({done, total});
         };
         QVERIFY(composeArchitecture(m_recovery.nodes, launch, control) == m_recovery.architecture);
+        std::sort(reports.begin(), reports.end());
         QCOMPARE(reports.size(), all);
         int last = 0;
         for (const auto &[done, total] : std::as_const(reports)) {
