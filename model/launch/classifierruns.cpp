@@ -255,13 +255,15 @@ void ClassifierRuns::append(LaunchDependencies *merged, Run &run)
         merged->nodes.append(std::move(n));
     }
     // One executor would have found these containers among the nodes of the files before.
-    for (const LaunchExecutor::UnfoundContainer &u : std::as_const(run.unfound))
+    for (const LaunchExecutor::UnfoundContainer &u : std::as_const(run.unfound)) {
+        const LaunchExecutor::ContainerName name(u.target, u.nameSpace);
         for (qsizetype j = nodes - 1; j >= 0; --j)
-            if (LaunchExecutor::isContainerNamed(merged->nodes.at(j), u.target, u.nameSpace)) {
+            if (name.matches(merged->nodes.at(j))) {
                 for (qsizetype k = u.first; k < u.end; ++k)
                     merged->nodes[nodes + k].container = merged->nodes.at(j).id;
                 break;
             }
+    }
 }
 
 void ClassifierRuns::finish(const QStringList &files, LaunchDependencies *out,

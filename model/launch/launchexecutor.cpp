@@ -225,13 +225,34 @@ bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, c
     return a.condition.unless ? !holds : holds;
 }
 
-bool LaunchExecutor::isContainerNamed(const NodeInstance &n, const QString &target,
-                                      const QString &nameSpace)
+LaunchExecutor::ContainerName::ContainerName(const QString &target, const QString &nameSpace)
+    : m_target(target), m_scoped(target.isEmpty() ? QString() : joinNamespace(nameSpace, target))
 {
-    if (target.isEmpty())
+}
+
+bool LaunchExecutor::ContainerName::matches(const NodeInstance &n) const
+{
+    if (m_target.isEmpty())
+        return false;
+    if (n.nodeName == m_target)
+        return true;
+    // The length of joinNamespace(n.nameSpace, n.nodeName), worked out as it joins them: a
+    // name of another length is neither the target nor the scoped target.
+    QStringView name = QStringView(n.nodeName).trimmed();
+    qsizetype length = 0;
+    if (name.startsWith(u'/')) {
+        length = name == u"/" ? 0 : name.size();
+    } else if (name.isEmpty()) {
+        length = n.nameSpace.size();
+    } else {
+        while (name.endsWith(u'/'))
+            name.chop(1);
+        length = n.nameSpace.size() + 1 + name.size();
+    }
+    if (length != m_target.size() && length != m_scoped.size())
         return false;
     const QString fq = joinNamespace(n.nameSpace, n.nodeName);
-    return n.nodeName == target || fq == target || fq == joinNamespace(nameSpace, target);
+    return fq == m_target || fq == m_scoped;
 }
 
 void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QString &id)
@@ -331,8 +352,9 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             // The container is found by its name (plain or fully qualified).
             QString containerId = target;
             bool found = false;
+            const ContainerName name(target, scope.nameSpace);
             for (const NodeInstance &n : std::as_const(m_out->nodes))
-                if (isContainerNamed(n, target, scope.nameSpace)) {
+                if (name.matches(n)) {
                     containerId = n.id;
                     found = true;
                 }

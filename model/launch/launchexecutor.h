@@ -56,10 +56,19 @@ public:
     void setOutput(LaunchDependencies *out) { m_out = out; }
     /// Records each container a LoadComposableNodes does not find in `sink` (null: none).
     void setUnfoundContainers(QList<UnfoundContainer> *sink) { m_unfound = sink; }
-    /// Whether `n` is the container a LoadComposableNodes in namespace `nameSpace` names by
-    /// `target` (plain or fully qualified); the last such node is the one.
-    static bool isContainerNamed(const NodeInstance &n, const QString &target,
-                                 const QString &nameSpace);
+    /// The container a LoadComposableNodes in namespace `nameSpace` names by `target`, plain or
+    /// fully qualified; the last node that matches() is the one. matches() is asked of every
+    /// node made so far, for each load: it builds no name for a node whose name cannot match.
+    class ContainerName
+    {
+    public:
+        ContainerName(const QString &target, const QString &nameSpace);
+        bool matches(const NodeInstance &n) const;
+
+    private:
+        QString m_target;
+        QString m_scoped; ///< joinNamespace(nameSpace, target)
+    };
 
     /// Evaluates an include path (as produced by SubstitutionEvaluator) to a launch file.
     IncludeTarget resolveInclude(const QString &path, const QString &fromFile) const;

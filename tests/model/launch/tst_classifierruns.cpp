@@ -6,6 +6,7 @@
 #include "classifierruns.h"
 #include "executorfixture.h"
 #include "launchanalyzer.h"
+#include "launchexecutor.h"
 #include "recovery.h"
 #include "rosnames.h"
 #include "testsupport.h"
@@ -228,6 +229,53 @@ private Q_SLOTS:
             found = found || (n.id == own->container && n.nodeName == QLatin1String("shared") &&
                               n.launchFileId != inA->launchFileId);
         QVERIFY(found);
+    }
+
+    void aContainerIsNamedAsBefore()
+    {
+        // What the lookup compared before it left out the names of other lengths: the node's
+        // name, and its fully qualified name against the target and the scoped target.
+        const QStringList names{QString(),
+                                QStringLiteral("c"),
+                                QStringLiteral(" c "),
+                                QStringLiteral("c/"),
+                                QStringLiteral("/c"),
+                                QStringLiteral("/"),
+                                QStringLiteral("/ns/c"),
+                                QStringLiteral("ns/c"),
+                                QStringLiteral("container"),
+                                QStringLiteral("c//")};
+        const QStringList spaces{QString(), QStringLiteral("/ns"), QStringLiteral("/ns/inner"),
+                                 QStringLiteral("/n")};
+        const QStringList targets{QString(),
+                                  QStringLiteral("c"),
+                                  QStringLiteral("/ns/c"),
+                                  QStringLiteral("/c"),
+                                  QStringLiteral("c/"),
+                                  QStringLiteral("/"),
+                                  QStringLiteral(" c"),
+                                  QStringLiteral("inner/c"),
+                                  QStringLiteral("container")};
+        int matched = 0;
+        for (const QString &target : targets)
+            for (const QString &scope : spaces) {
+                const LaunchExecutor::ContainerName name(target, scope);
+                for (const QString &nodeName : names)
+                    for (const QString &nodeSpace : spaces) {
+                        NodeInstance n;
+                        n.nodeName = nodeName;
+                        n.nameSpace = nodeSpace;
+                        const QString fq = joinNamespace(nodeSpace, nodeName);
+                        const bool before =
+                            !target.isEmpty() && (nodeName == target || fq == target ||
+                                                  fq == joinNamespace(scope, target));
+                        QVERIFY2(name.matches(n) == before,
+                                 qPrintable(QStringLiteral("target '%1' in '%2', node '%3' in '%4'")
+                                                .arg(target, scope, nodeName, nodeSpace)));
+                        matched += before ? 1 : 0;
+                    }
+            }
+        QVERIFY(matched > 50); // the rows do match, not only miss
     }
 
     void theBudgetCutsAtTheSameFile_data()
