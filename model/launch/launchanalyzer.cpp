@@ -114,6 +114,10 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             reached.insert(i.file);
         for (const QString &f : std::as_const(out.launchFiles))
             if (!reached.contains(f)) {
+                if (control.isCanceled()) {
+                    out.canceled = true;
+                    return out;
+                }
                 const FileWork work(control, f);
                 if (!work.skip(&out.diagnostics))
                     executor.runRoot(f, options.arguments);
@@ -122,6 +126,12 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             }
     }
     runClassifiers(classifiers, executor, &out);
+    // Canceled while the files ran on their own: their lists are incomplete, so the result
+    // is not one to keep (nor to store as stage 2's memo).
+    if (control.isCanceled()) {
+        out.canceled = true;
+        return out;
+    }
     // The same problem met through two include chains is one diagnostic.
     QList<Diagnostic> unique;
     for (const Diagnostic &d : std::as_const(out.diagnostics))

@@ -13,6 +13,7 @@
 #include "workspacescanner.h"
 
 #include <QElapsedTimer>
+#include <QTemporaryDir>
 #include <QThread>
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
@@ -389,6 +390,41 @@ private Q_SLOTS:
                 const PoolSize size(threads);
                 QVERIFY(analyzeLaunchFiles(root, r.nodes, {}, control) == alone);
             }
+    }
+
+    void aResultNotCanceledIsWhole_data() { stageTwoIsTheSameOnAnyNumberOfThreads_data(); }
+    void aResultNotCanceledIsWhole()
+    {
+        // A cancel at any point, the files' own runs included: stage 2 says it was canceled,
+        // or gives the whole result, and what it kept in the cache gives the whole result.
+        QFETCH(QString, root);
+        AnalysisCache off{QString()};
+        StageControl plain;
+        plain.cache = &off;
+        const Recovery r = recoverWorkspace(root, {}, plain);
+        int entries = 0;
+        plain.fileWork = [&](const QString &, bool entering) { entries += entering ? 1 : 0; };
+        const LaunchDependencies whole = analyzeLaunchFiles(root, r.nodes, {}, plain);
+        QVERIFY(entries > 2);
+        for (int at = 1; at <= entries; ++at) {
+            const QTemporaryDir dir;
+            AnalysisCache cache(dir.path());
+            std::atomic<int> entered{0};
+            StageControl control;
+            control.cache = &cache;
+            control.fileWork = [&](const QString &, bool entering) {
+                if (entering)
+                    ++entered;
+            };
+            control.canceled = [&] { return entered.load() >= at; };
+            const LaunchDependencies d = analyzeLaunchFiles(root, r.nodes, {}, control);
+            QVERIFY2(d.canceled || d == whole, qPrintable(QString::number(at)));
+            cache.flush();
+            StageControl again;
+            again.cache = &cache;
+            QVERIFY2(analyzeLaunchFiles(root, r.nodes, {}, again) == whole,
+                     qPrintable(QString::number(at)));
+        }
     }
 };
 
