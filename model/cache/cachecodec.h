@@ -32,6 +32,23 @@ struct Tag
 {
 };
 
+/// Writes `v` in full the first time `table` meets it and by its number after that (from 1;
+/// 0 is the null string): the form of the cache's entries and of the worker's reply.
+inline void writeNumbered(QDataStream &s, QHash<QString, quint32> &table, const QString &v)
+{
+    if (v.isNull()) {
+        s << quint32(0);
+        return;
+    }
+    if (const auto known = table.constFind(v); known != table.cend()) {
+        s << *known;
+        return;
+    }
+    const auto number = quint32(table.size() + 1);
+    table.insert(v, number);
+    s << number << v;
+}
+
 struct Writer
 {
     static constexpr bool reading = false;
@@ -45,21 +62,10 @@ struct Writer
     bool good() const { return s.status() == QDataStream::Ok; }
     void string(const QString &v)
     {
-        if (!strings) {
+        if (strings)
+            writeNumbered(s, *strings, v);
+        else
             s << v;
-            return;
-        }
-        if (v.isNull()) {
-            s << quint32(0);
-            return;
-        }
-        if (const auto known = strings->constFind(v); known != strings->cend()) {
-            s << *known;
-            return;
-        }
-        const auto number = quint32(strings->size() + 1);
-        strings->insert(v, number);
-        s << number << v;
     }
 };
 

@@ -1,5 +1,6 @@
 #include "recoverystream.h"
 
+#include "cachecodec.h"
 #include "modelfields.h"
 
 namespace rosarch {
@@ -61,22 +62,10 @@ bool countIn(QDataStream &s, quint32 *n)
 
 void put(QDataStream &s, const QString &v)
 {
-    if (!strings) {
+    if (strings)
+        cachecodec::writeNumbered(s, strings->numbers, v);
+    else
         s << v;
-        return;
-    }
-    if (v.isNull()) {
-        s << quint32(0);
-        return;
-    }
-    const auto known = strings->numbers.constFind(v);
-    if (known != strings->numbers.cend()) {
-        s << *known;
-        return;
-    }
-    const auto number = quint32(strings->numbers.size() + 1);
-    strings->numbers.insert(v, number);
-    s << number << v;
 }
 
 void get(QDataStream &s, QString &v)

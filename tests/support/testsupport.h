@@ -10,8 +10,25 @@
 #include <QString>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThreadPool>
 
 namespace rosarch::test {
+
+/// The global thread pool's size for a scope.
+class PoolSize
+{
+public:
+    explicit PoolSize(int threads) : m_before(QThreadPool::globalInstance()->maxThreadCount())
+    {
+        QThreadPool::globalInstance()->setMaxThreadCount(threads);
+    }
+    ~PoolSize() { QThreadPool::globalInstance()->setMaxThreadCount(m_before); }
+    PoolSize(const PoolSize &) = delete;
+    PoolSize &operator=(const PoolSize &) = delete;
+
+private:
+    int m_before;
+};
 
 inline QString dataDir(const QString &sub = {})
 {

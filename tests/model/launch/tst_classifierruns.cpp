@@ -23,25 +23,10 @@
 #include <atomic>
 
 using namespace rosarch;
+using test::PoolSize;
 using namespace rosarch::test::executor;
 
 namespace {
-
-/// The pool's size for a scope.
-class PoolSize
-{
-public:
-    explicit PoolSize(int threads) : m_before(QThreadPool::globalInstance()->maxThreadCount())
-    {
-        QThreadPool::globalInstance()->setMaxThreadCount(threads);
-    }
-    ~PoolSize() { QThreadPool::globalInstance()->setMaxThreadCount(m_before); }
-    PoolSize(const PoolSize &) = delete;
-    PoolSize &operator=(const PoolSize &) = delete;
-
-private:
-    int m_before;
-};
 
 LaunchAction composable(const QString &name)
 {

@@ -16,6 +16,7 @@
 #include <mutex>
 
 using namespace rosarch;
+using test::PoolSize;
 
 namespace {
 
@@ -42,22 +43,6 @@ bool readParts(const QByteArray &bytes, Recovery *into, const Recovery &base, qu
     in.setVersion(stagestream::kStreamVersion);
     return stagestream::readParts(in, into, base, read);
 }
-
-/// The pool's size for a scope.
-class PoolSize
-{
-public:
-    explicit PoolSize(int threads) : m_before(QThreadPool::globalInstance()->maxThreadCount())
-    {
-        QThreadPool::globalInstance()->setMaxThreadCount(threads);
-    }
-    ~PoolSize() { QThreadPool::globalInstance()->setMaxThreadCount(m_before); }
-    PoolSize(const PoolSize &) = delete;
-    PoolSize &operator=(const PoolSize &) = delete;
-
-private:
-    int m_before;
-};
 
 } // namespace
 
