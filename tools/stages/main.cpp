@@ -35,6 +35,8 @@
 #include <thread>
 #include <vector>
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -284,6 +286,12 @@ Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *
 /// that the first edit after a run the stage's memo answered costs what later ones do. The
 /// next request stops it at once (stop() before the request runs). Not in a worker of one run
 /// (StageRequest::last), which leaves once it has replied and written its cache.
+///
+/// It runs at the idle priority, its pool threads too: it starts as the window applies the
+/// reply, and on two cores a warm-up at the normal priority took the UI thread's core away
+/// from it for tens of milliseconds (the stall benchmark's longest gaps). Linux's priority is
+/// per thread and a thread cannot take a lowered one back, so the warm-up has the global pool
+/// to itself (the worker is idle meanwhile), on threads made for it and ended after it.
 class IdleWarmUp
 {
 public:
@@ -293,9 +301,11 @@ public:
         stop();
         m_stop = false;
         m_thread = std::thread([this, root = request.root, skipped = request.skipped] {
-            // At the lowest priority (this thread only; Linux's nice is per thread): it works
-            // in what a person's other work leaves of the cores.
-            setpriority(PRIO_PROCESS, id_t(::gettid()), 19);
+            QThreadPool *pool = QThreadPool::globalInstance();
+            pool->waitForDone(); // the run's threads, at the normal priority, end here
+            pool->setThreadPriority(QThread::IdlePriority); // those the warm-up starts
+            const sched_param idle{};
+            pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle); // best effort
             StageControl control; // no progress, no file work: nobody is waiting for it
             control.canceled = [this] { return m_stop.load(); };
             control.skipped = skipped;
@@ -306,8 +316,12 @@ public:
     void stop()
     {
         m_stop = true;
-        if (m_thread.joinable())
-            m_thread.join();
+        if (!m_thread.joinable())
+            return;
+        m_thread.join();
+        QThreadPool *pool = QThreadPool::globalInstance();
+        pool->waitForDone(); // the warm-up's idle threads end; the next run starts its own
+        pool->setThreadPriority(QThread::InheritPriority);
     }
 
 private:
