@@ -78,9 +78,16 @@ void DiagnosticModel::reload()
                 }
                 folderPackage.insert(folder, package);
             }
-            m_entries.append({&d, d.key(), package});
+            m_entries.append({&d, {}, package});
         }
     rebuild();
+}
+
+const QString &DiagnosticModel::keyOf(const Entry &e) const
+{
+    if (e.key.isEmpty())
+        e.key = e.diagnostic->key(); // a hash of its text: ~1,500 of them took milliseconds
+    return e.key;
 }
 
 void DiagnosticModel::refresh()
@@ -131,8 +138,8 @@ void DiagnosticModel::rebuild()
     QHash<QString, int> groupOf;
     for (int i = 0; i < m_entries.size(); ++i) {
         Entry &e = m_entries[i];
-        e.mark = marks.value(e.key, -1);
-        for (int a = 0; e.mark < 0 && a < e.diagnostic->aliases.size(); ++a)
+        e.mark = marks.isEmpty() ? -1 : marks.value(keyOf(e), -1);
+        for (int a = 0; e.mark < 0 && !marks.isEmpty() && a < e.diagnostic->aliases.size(); ++a)
             e.mark = marks.value(e.diagnostic->aliases.at(a), -1);
         if (!passes(e, false, false))
             continue;
@@ -339,7 +346,7 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
             return data(index, Qt::DisplayRole);
         }
     case KeyRole:
-        return e.key;
+        return keyOf(e);
     case GroupRole:
         return false;
     case Qt::DecorationRole:
@@ -398,8 +405,8 @@ QStringList DiagnosticModel::keysAt(const QModelIndexList &indexes) const
 {
     QStringList keys;
     const auto add = [&](int e) {
-        if (e >= 0 && !keys.contains(m_entries.at(e).key))
-            keys.append(m_entries.at(e).key);
+        if (e >= 0 && !keys.contains(keyOf(m_entries.at(e))))
+            keys.append(keyOf(m_entries.at(e)));
     };
     for (const QModelIndex &i : indexes) {
         if (i.model() != this)
@@ -426,7 +433,7 @@ int DiagnosticModel::restoreFindings(const QModelIndexList &indexes)
     QStringList keys;
     const QStringList own = keysAt(indexes);
     for (const Entry &e : std::as_const(m_entries))
-        if (e.mark >= 0 && own.contains(e.key))
+        if (e.mark >= 0 && own.contains(keyOf(e)))
             keys.append(m_document->findingMarks().at(e.mark).key);
     return m_document->unmarkFindings(keys);
 }

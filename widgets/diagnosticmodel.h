@@ -106,7 +106,7 @@ private:
     struct Entry
     {
         const Diagnostic *diagnostic;
-        QString key;
+        mutable QString key; ///< made when first needed (keyOf): most are never asked for
         QString package;
         int mark = -1; ///< index into the project's finding marks, -1 = none
     };
@@ -115,7 +115,9 @@ private:
         QString label;
         QList<int> entries; ///< indexes into m_entries
     };
-    void reload();  ///< the entries from the document, then rebuild()
+    void reload(); ///< the entries from the document, then rebuild()
+    /// The entry's finding key (Diagnostic::key), made on first use.
+    const QString &keyOf(const Entry &e) const;
     void rebuild(); ///< the marks, visibility and groups (no reset signals)
     void refresh(); ///< rebuild() inside a reset
     bool passes(const Entry &e, bool ignoreCode, bool ignorePackage) const;

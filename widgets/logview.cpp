@@ -163,11 +163,13 @@ void LogView::afterReset()
 {
     // Group rows span the table and start open; the finding selected before stays selected
     // when it is still shown.
+    // (A reset clears the spans: ungrouped, there is nothing to undo.)
     const bool grouped = m_model && m_model->grouping() != DiagnosticModel::Grouping::None;
-    for (int row = 0; row < m_proxy->rowCount(); ++row)
-        m_diagnostics->setFirstColumnSpanned(row, {}, grouped);
-    if (grouped)
+    if (grouped) {
+        for (int row = 0; row < m_proxy->rowCount(); ++row)
+            m_diagnostics->setFirstColumnSpanned(row, {}, true);
         m_diagnostics->expandAll();
+    }
     m_diagnostics->setRootIsDecorated(grouped);
     const QString key = m_currentKey;
     if (!key.isEmpty()) {

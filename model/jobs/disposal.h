@@ -1,5 +1,7 @@
 #pragma once
 
+#include "threadpriority.h"
+
 #include <QThreadPool>
 
 #include <memory>
@@ -16,7 +18,10 @@ template <typename T> void disposeInBackground(T &&value)
     static QThreadPool pool; // waits for what is left when the process ends
     pool.setMaxThreadCount(1);
     auto holder = std::make_shared<std::decay_t<T>>(std::forward<T>(value));
-    pool.start([holder = std::move(holder)]() mutable { holder.reset(); });
+    pool.start([holder = std::move(holder)]() mutable {
+        lowerThisThreadPriority(); // the pool's own thread
+        holder.reset();
+    });
 }
 
 } // namespace rosarch

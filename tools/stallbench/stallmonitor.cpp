@@ -70,8 +70,30 @@ void StallMonitor::tick()
 
 bool StallMonitor::notify(QObject *receiver, QEvent *event)
 {
-    if (m_depth > 0 || QThread::currentThread() != thread())
+    if (QThread::currentThread() != thread())
         return QApplication::notify(receiver, event);
+    if (m_depth > 0) {
+        // an event sent inside the dispatch (a widget's paint inside the window's repaint, a
+        // layout): named like a scope, one level deep only
+        if (m_depth > 1) {
+            ++m_depth;
+            const bool result = QApplication::notify(receiver, event);
+            --m_depth;
+            return result;
+        }
+        QString name = QString::fromLatin1(receiver->metaObject()->className());
+        if (receiver->parent() && name == QLatin1String("QWidget")) // a scroll area's viewport
+            name = QString::fromLatin1(receiver->parent()->metaObject()->className()) +
+                   QLatin1String(" viewport");
+        const QString what = QStringLiteral("  %1 %2").arg(name, eventName(event->type()));
+        QElapsedTimer timer;
+        timer.start();
+        ++m_depth;
+        const bool result = QApplication::notify(receiver, event);
+        --m_depth;
+        scopeTimes()[what] += timer.nsecsElapsed();
+        return result;
+    }
     ++m_depth;
     scopeTimes().clear();
     QElapsedTimer timer;

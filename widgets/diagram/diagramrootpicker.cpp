@@ -7,6 +7,13 @@
 
 namespace rosarch {
 
+namespace {
+
+/// Up to this many entries the lists are fitted at once; more wait until a list opens.
+constexpr int kMeasuredAtOnce = 40;
+
+} // namespace
+
 DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
 {
     setObjectName(QStringLiteral("diagramRootPicker"));
@@ -22,6 +29,8 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
     completer()->setCaseSensitivity(Qt::CaseInsensitive);
     lineEdit()->setPlaceholderText(tr("Root launch file"));
     setToolTip(tr("The root launch file whose system the diagram shows; type to find one"));
+    // Typing opens the completer's list: it is fitted then, as the combo box's own when shown.
+    connect(lineEdit(), &QLineEdit::textEdited, this, [this] { fitListWidth(); });
     connect(this, &QComboBox::activated, this, [this](int index) {
         const QString id = itemData(index).toString();
         if (!id.isEmpty())
@@ -54,9 +63,25 @@ void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
                     Qt::ToolTipRole);
     }
     setEnabled(!roots.isEmpty());
+    m_widthFitted = false; // measuring hundreds of entries is left for when the list opens
+    fitListWidth();
+    setCurrentRoot(current);
+}
+
+void DiagramRootPicker::fitListWidth()
+{
+    if (m_widthFitted ||
+        (!view()->isVisible() && !completer()->popup()->isVisible() && count() > kMeasuredAtOnce))
+        return; // fitted when a list opens (showPopup, or typing)
+    m_widthFitted = true;
     view()->setMinimumWidth(view()->sizeHintForColumn(0) + 24);
     completer()->popup()->setMinimumWidth(view()->minimumWidth());
-    setCurrentRoot(current);
+}
+
+void DiagramRootPicker::showPopup()
+{
+    fitListWidth();
+    QComboBox::showPopup();
 }
 
 void DiagramRootPicker::setCurrentRoot(const QString &instanceId)

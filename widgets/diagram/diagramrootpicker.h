@@ -21,6 +21,8 @@ public:
     QString currentRoot() const;
     /// The text of a root's entry: "bringup — 12 includes".
     static QString entryText(const LaunchRoot &root);
+    /// Fits the list's width to the entries first.
+    void showPopup() override;
 
 Q_SIGNALS:
     /// A person chose a root (by the list, or by typing and Enter).
@@ -30,7 +32,10 @@ protected:
     void focusOutEvent(QFocusEvent *event) override;
 
 private:
+    void fitListWidth();
+
     QList<LaunchRoot> m_roots;
+    bool m_widthFitted = false; ///< the list's width fits the entries (done when it opens)
 };
 
 } // namespace rosarch
