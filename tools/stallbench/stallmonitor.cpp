@@ -82,9 +82,18 @@ bool StallMonitor::notify(QObject *receiver, QEvent *event)
             return result;
         }
         QString name = QString::fromLatin1(receiver->metaObject()->className());
-        if (receiver->parent() && name == QLatin1String("QWidget")) // a scroll area's viewport
-            name = QString::fromLatin1(receiver->parent()->metaObject()->className()) +
-                   QLatin1String(" viewport");
+        if (receiver->parent() && name == QLatin1String("QWidget")) { // a scroll area's viewport
+            // named by the panel it is in: the item views are plain QTreeViews
+            const QObject *view = receiver->parent();
+            const QObject *panel = view->parent();
+            while (panel && panel->metaObject()->className()[0] == 'Q')
+                panel = panel->parent();
+            name = QString::fromLatin1(view->metaObject()->className()) +
+                   QLatin1String(" viewport") +
+                   (panel ? QStringLiteral(" in %1").arg(
+                                QString::fromLatin1(panel->metaObject()->className()))
+                          : QString());
+        }
         const QString what = QStringLiteral("  %1 %2").arg(name, eventName(event->type()));
         QElapsedTimer timer;
         timer.start();

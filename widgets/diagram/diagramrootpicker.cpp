@@ -30,7 +30,7 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
     lineEdit()->setPlaceholderText(tr("Root launch file"));
     setToolTip(tr("The root launch file whose system the diagram shows; type to find one"));
     // Typing opens the completer's list: it is fitted then, as the combo box's own when shown.
-    connect(lineEdit(), &QLineEdit::textEdited, this, [this] { fitListWidth(); });
+    connect(lineEdit(), &QLineEdit::textEdited, this, [this] { fitListWidth(Fit::Now); });
     connect(this, &QComboBox::activated, this, [this](int index) {
         const QString id = itemData(index).toString();
         if (!id.isEmpty())
@@ -63,15 +63,17 @@ void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
                     Qt::ToolTipRole);
     }
     setEnabled(!roots.isEmpty());
-    m_widthFitted = false; // measuring hundreds of entries is left for when the list opens
-    fitListWidth();
+    m_widthFitted = false; // measuring hundreds of entries is left for when a list opens
+    fitListWidth(Fit::IfCheap);
     setCurrentRoot(current);
 }
 
-void DiagramRootPicker::fitListWidth()
+void DiagramRootPicker::fitListWidth(Fit when)
 {
-    if (m_widthFitted ||
-        (!view()->isVisible() && !completer()->popup()->isVisible() && count() > kMeasuredAtOnce))
+    if (m_widthFitted)
+        return;
+    if (when == Fit::IfCheap && count() > kMeasuredAtOnce && !view()->isVisible() &&
+        !completer()->popup()->isVisible())
         return; // fitted when a list opens (showPopup, or typing)
     m_widthFitted = true;
     view()->setMinimumWidth(view()->sizeHintForColumn(0) + 24);
@@ -80,7 +82,7 @@ void DiagramRootPicker::fitListWidth()
 
 void DiagramRootPicker::showPopup()
 {
-    fitListWidth();
+    fitListWidth(Fit::Now);
     QComboBox::showPopup();
 }
 

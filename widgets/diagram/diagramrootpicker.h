@@ -32,7 +32,13 @@ protected:
     void focusOutEvent(QFocusEvent *event) override;
 
 private:
-    void fitListWidth();
+    enum class Fit
+    {
+        Now,
+        IfCheap ///< only when few entries or a list is open
+    };
+    /// Makes the lists as wide as their widest entry.
+    void fitListWidth(Fit when);
 
     QList<LaunchRoot> m_roots;
     bool m_widthFitted = false; ///< the list's width fits the entries (done when it opens)

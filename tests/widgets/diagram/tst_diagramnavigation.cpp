@@ -13,8 +13,10 @@
 #include "diagramwait.h"
 #include "screenshot.h"
 
+#include <QAbstractItemView>
 #include <QAction>
 #include <QCompleter>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QScrollBar>
 #include <QSignalSpy>
@@ -52,6 +54,7 @@ class TestDiagramNavigation : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void pickerListsAndSwitchesRoots();
+    void pickerFitsItsListsWhenTheyOpen();
     void askingListsTheRoots();
     void tooBigStartsAsAnOverview();
     void minimapShowsAndPans();
@@ -92,6 +95,46 @@ void TestDiagramNavigation::pickerListsAndSwitchesRoots()
     QCOMPARE(picker->currentRoot(), QStringLiteral("lf1"));
     QCOMPARE(panel.breadcrumbIds(), (QStringList{"lf1", "lf2"}));
     QCOMPARE(chosen.size(), 1); // only a person's choice is reported
+}
+
+void TestDiagramNavigation::pickerFitsItsListsWhenTheyOpen()
+{
+    // Hundreds of roots (autoware's) are measured when a list opens, not with every result.
+    const auto roots = [](int count, const QString &stem) {
+        QList<LaunchRoot> out;
+        for (int i = 0; i < count; ++i)
+            out.append({QStringLiteral("lf%1").arg(i), stem.arg(i), {}, i, i, 0});
+        return out;
+    };
+    const QString stem = QStringLiteral("a_rather_long_launch_file_name_number_%1");
+    const QString longer = QStringLiteral("an_even_longer_launch_file_name_than_before_number_%1");
+    for (const int count : {3, 300}) {
+        DiagramRootPicker picker;
+        picker.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&picker));
+        picker.setRoots(roots(count, stem));
+        QCOMPARE(picker.count(), count);
+        const int fitted = picker.view()->sizeHintForColumn(0) + 24;
+        QVERIFY2(fitted > picker.width(), "the entries are wider than the box");
+        if (count <= 40) {
+            QCOMPARE(picker.view()->minimumWidth(), fitted); // a few: at once
+            continue;
+        }
+        QVERIFY(picker.view()->minimumWidth() < fitted);
+        // Typing opens the completer's list: both lists fit then.
+        QTest::keyClicks(picker.lineEdit(), QStringLiteral("number_29"));
+        QCOMPARE(picker.view()->minimumWidth(), fitted);
+        QCOMPARE(picker.completer()->popup()->minimumWidth(), fitted);
+        picker.completer()->popup()->hide();
+        // Longer names: measured again when the list opens.
+        picker.setRoots(roots(count, longer));
+        const int wider = picker.view()->sizeHintForColumn(0) + 24;
+        QVERIFY(wider > fitted);
+        QCOMPARE(picker.view()->minimumWidth(), fitted);
+        picker.showPopup();
+        QCOMPARE(picker.view()->minimumWidth(), wider);
+        picker.hidePopup();
+    }
 }
 
 void TestDiagramNavigation::askingListsTheRoots()
