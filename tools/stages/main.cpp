@@ -27,16 +27,17 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <thread>
 #include <vector>
 
-#include <pthread.h>
-#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -287,11 +288,11 @@ Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *
 /// next request stops it at once (stop() before the request runs). Not in a worker of one run
 /// (StageRequest::last), which leaves once it has replied and written its cache.
 ///
-/// It runs at the idle priority, its pool threads too: it starts as the window applies the
-/// reply, and on two cores a warm-up at the normal priority took the UI thread's core away
-/// from it for tens of milliseconds (the stall benchmark's longest gaps). Linux's priority is
-/// per thread and a thread cannot take a lowered one back, so the warm-up has the global pool
-/// to itself (the worker is idle meanwhile), on threads made for it and ended after it.
+/// It starts a moment after the reply: started at once, its pool threads took the cores from
+/// the window's UI thread while it showed the reply (the stall benchmark's longest gaps). It
+/// runs at the normal priority on the pool, whose threads the next request needs back at once:
+/// at the idle priority, a machine busy with other work starved them, and a cancel waited
+/// seconds for the warm-up's files to finish.
 class IdleWarmUp
 {
 public:
@@ -301,11 +302,14 @@ public:
         stop();
         m_stop = false;
         m_thread = std::thread([this, root = request.root, skipped = request.skipped] {
-            QThreadPool *pool = QThreadPool::globalInstance();
-            pool->waitForDone(); // the run's threads, at the normal priority, end here
-            pool->setThreadPriority(QThread::IdlePriority); // those the warm-up starts
-            const sched_param idle{};
-            pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle); // best effort
+            {
+                std::unique_lock lock(m_mutex);
+                if (m_wake.wait_for(lock, kDelay, [this] { return m_stop.load(); }))
+                    return; // the next request came first
+            }
+            // At the lowest priority (this thread only; Linux's nice is per thread): it works
+            // in what a person's other work leaves of the cores.
+            setpriority(PRIO_PROCESS, id_t(::gettid()), 19);
             StageControl control; // no progress, no file work: nobody is waiting for it
             control.canceled = [this] { return m_stop.load(); };
             control.skipped = skipped;
@@ -315,16 +319,21 @@ public:
     }
     void stop()
     {
-        m_stop = true;
-        if (!m_thread.joinable())
-            return;
-        m_thread.join();
-        QThreadPool *pool = QThreadPool::globalInstance();
-        pool->waitForDone(); // the warm-up's idle threads end; the next run starts its own
-        pool->setThreadPriority(QThread::InheritPriority);
+        {
+            const std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        if (m_thread.joinable())
+            m_thread.join();
     }
 
 private:
+    /// How long the window has to show a reply before the warm-up starts.
+    static constexpr std::chrono::milliseconds kDelay{500};
+
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
     std::atomic<bool> m_stop{false};
     std::thread m_thread;
 };
