@@ -61,6 +61,10 @@ void StallMonitor::beginPhase(const QString &name)
 void StallMonitor::tick()
 {
     const qint64 now = m_clock.elapsed();
+    if (m_lastTick >= 0) { // every gap counts for the longest, recorded or not
+        qint64 &longest = m_longest[m_phase];
+        longest = std::max(longest, now - m_lastTick);
+    }
     if (m_lastTick >= 0 && now - m_lastTick >= kRecordGapMs)
         m_gaps.append({now - m_lastTick, m_phaseClock.elapsed(), m_phase,
                        m_dispatches.join(QLatin1String("\n"))});
@@ -139,8 +143,12 @@ QList<StallMonitor::Gap> StallMonitor::gaps(const QString &phase) const
 
 qint64 StallMonitor::longestGap(const QString &phase) const
 {
-    const QList<Gap> all = gaps(phase);
-    return all.isEmpty() ? 0 : all.first().ms;
+    if (!phase.isEmpty())
+        return m_longest.value(phase);
+    qint64 longest = 0;
+    for (const qint64 ms : m_longest)
+        longest = std::max(longest, ms);
+    return longest;
 }
 
 qint64 StallMonitor::lastGapEnd(qint64 ms) const

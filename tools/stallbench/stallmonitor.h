@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QHash>
 #include <QList>
 #include <QString>
 #include <QTimer>
@@ -45,8 +46,9 @@ private:
     QElapsedTimer m_phaseClock;
     qint64 m_lastTick = -1;
     QString m_phase;
-    QList<Gap> m_gaps;
-    QStringList m_dispatches; ///< long dispatches since the last tick
+    QList<Gap> m_gaps;                ///< those of 30 ms or more, with what ran in them
+    QHash<QString, qint64> m_longest; ///< phase -> its longest gap
+    QStringList m_dispatches;         ///< long dispatches since the last tick
     int m_depth = 0;
 };
 
