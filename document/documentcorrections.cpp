@@ -121,7 +121,7 @@ void Document::startKeys()
     static QThreadPool pool; // not the global pool, which painting waits for
     pool.setMaxThreadCount(1);
     m_keysJob = QtConcurrent::run(&pool, [recovery = Recovery{m_nodes, m_launch, m_architecture}] {
-        lowerThisThreadPriority(); // the pool's own thread: made as the result is painted
+        lowerThisThreadPriority(BackgroundPriority::YieldToUi); // its pool's own thread
         return StableKeys(recovery);
     });
     m_keysWatcher.setFuture(m_keysJob);

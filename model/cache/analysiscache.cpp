@@ -1,5 +1,6 @@
 #include "analysiscache.h"
 #include "analysisfingerprint.h"
+#include "threadpriority.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -14,7 +15,6 @@
 #include <QTemporaryFile>
 #include <QtEndian>
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -432,7 +432,7 @@ void AnalysisCache::waitForWrites()
 void AnalysisCache::write(bool lowPriority)
 {
     if (lowPriority)
-        setpriority(PRIO_PROCESS, id_t(::gettid()), 10); // this thread's; best effort
+        lowerThisThreadPriority(BackgroundPriority::Deferred); // this thread's own
     QString error;
     QString problem;
     if (!m_digests->save(&error)) {

@@ -19,7 +19,7 @@ template <typename T> void disposeInBackground(T &&value)
     pool.setMaxThreadCount(1);
     auto holder = std::make_shared<std::decay_t<T>>(std::forward<T>(value));
     pool.start([holder = std::move(holder)]() mutable {
-        lowerThisThreadPriority(); // the pool's own thread
+        lowerThisThreadPriority(BackgroundPriority::YieldToUi); // the pool's own thread
         holder.reset();
     });
 }

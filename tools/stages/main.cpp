@@ -14,6 +14,7 @@
 #include "launchanalyzer.h"
 #include "nodeanalyzer.h"
 #include "recoverystream.h"
+#include "threadpriority.h"
 #include "workspacescanner.h"
 
 #include <QCoreApplication>
@@ -307,9 +308,9 @@ public:
                 if (m_wake.wait_for(lock, kDelay, [this] { return m_stop.load(); }))
                     return; // the next request came first
             }
-            // At the lowest priority (this thread only; Linux's nice is per thread): it works
-            // in what a person's other work leaves of the cores.
-            setpriority(PRIO_PROCESS, id_t(::gettid()), 19);
+            // This thread at the lowest priority: it works in what a person's other work leaves
+            // of the cores.
+            lowerThisThreadPriority(BackgroundPriority::Idle);
             StageControl control; // no progress, no file work: nobody is waiting for it
             control.canceled = [this] { return m_stop.load(); };
             control.skipped = skipped;
