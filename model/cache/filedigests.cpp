@@ -5,6 +5,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QTemporaryFile>
+#include <QThread>
+#include <QThreadPool>
 #include <QtConcurrent/QtConcurrentMap>
 
 #include <sys/stat.h>
@@ -88,10 +90,20 @@ QByteArray FileDigests::digest(const QString &absolutePath)
 
 QByteArray FileDigests::digestAll(const QString &root, const QStringList &relativePaths)
 {
-    const QList<QByteArray> digests = QtConcurrent::blockingMapped<QList<QByteArray>>(
-        relativePaths, std::function<QByteArray(const QString &)>([&](const QString &path) {
-            return digest(root + QLatin1Char('/') + path);
-        }));
+    const std::function<QByteArray(const QString &)> one = [&](const QString &path) {
+        return digest(root + QLatin1Char('/') + path);
+    };
+    QList<QByteArray> digests;
+    if (QThreadPool::globalInstance()->contains(QThread::currentThread())) {
+        // A task on the pool (the C++ macro index's key): waiting for the pool here would wait
+        // behind the work that holds the pool's other threads, with this thread idle. The
+        // digests are mostly memoised by then (the stage's key digested every file just before).
+        digests.reserve(relativePaths.size());
+        for (const QString &path : relativePaths)
+            digests.append(one(path));
+    } else {
+        digests = QtConcurrent::blockingMapped<QList<QByteArray>>(relativePaths, one);
+    }
     QByteArray out;
     out.reserve(relativePaths.size() * 80);
     for (qsizetype i = 0; i < relativePaths.size(); ++i)

@@ -7,7 +7,11 @@
 #include <QCryptographicHash>
 #include <QDateTime>
 #include <QFile>
+#include <QSemaphore>
 #include <QTemporaryDir>
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentMap>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QtTest>
 
 #include <sys/stat.h>
@@ -120,6 +124,35 @@ private Q_SLOTS:
                                                  {QStringLiteral("x.py"), QStringLiteral("y.py")});
         QCOMPARE(all, QByteArray("x.py") + '\0' + sha1("x = 1\n").toHex() + '\n' + "y.py" + '\0' +
                           sha1("y = 2\n").toHex() + '\n');
+    }
+
+    // The C++ macro index takes its key on a pool thread while the Python files hold the
+    // pool's other threads: digestAll there must not wait for the pool (it waited until they
+    // were done, with its own thread idle).
+    void digestAllOnAPoolThreadDoesNotWaitForThePool()
+    {
+        test::writeFile(m_temp.filePath(QStringLiteral("f/x.py")), "x = 1\n");
+        test::writeFile(m_temp.filePath(QStringLiteral("f/y.py")), "y = 2\n");
+        FileDigests digests(QString(), 0);
+        QThreadPool *pool = QThreadPool::globalInstance();
+        const int threads = pool->maxThreadCount();
+        pool->setMaxThreadCount(2);
+        QSemaphore digested;
+        QFuture<QByteArray> all = QtConcurrent::run([&] {
+            QByteArray out = digests.digestAll(m_temp.filePath(QStringLiteral("f")),
+                                               {QStringLiteral("x.py"), QStringLiteral("y.py")});
+            digested.release();
+            return out;
+        });
+        // The other thread is busy, as a map over files holds it, until the digests are there
+        // (or 10 s have passed).
+        const QList<bool> waited = QtConcurrent::blockingMapped<QList<bool>>(
+            QList<int>{1},
+            std::function<bool(int)>([&](int) { return digested.tryAcquire(1, 10000); }));
+        QVERIFY2(waited.value(0), "the digests waited for the pool's busy thread");
+        QCOMPARE(all.result(), QByteArray("x.py") + '\0' + sha1("x = 1\n").toHex() + '\n' + "y.py" +
+                                   '\0' + sha1("y = 2\n").toHex() + '\n');
+        pool->setMaxThreadCount(threads);
     }
 };
 
