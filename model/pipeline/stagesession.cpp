@@ -6,6 +6,9 @@
 #include <QHash>
 #include <QtEndian>
 
+#include <chrono>
+#include <thread>
+
 namespace rosarch {
 
 namespace {
@@ -270,6 +273,12 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
         }
         if (m_worker.exited())
             break;
+        // With no frame half read, a moment's pause lets the worker's reports gather (two a
+        // file: which files its threads are in), so that this thread wakes a few times in that
+        // moment instead of once a frame, each wake-up taken from the worker's threads. A frame
+        // half read (a result coming in) is read on at once, so the pipe never holds it up.
+        if (m_worker.output().isEmpty())
+            std::this_thread::sleep_for(std::chrono::milliseconds(4));
     }
     a.stderrBytes = m_worker.errors();
     a.crashed = m_worker.crashed();
