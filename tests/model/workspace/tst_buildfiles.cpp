@@ -189,6 +189,28 @@ private Q_SLOTS:
                               "src/a/package.xml@pkg_a", "src/a/src/a.cpp@pkg_a"}));
     }
 
+    // A file belongs to the package of the nearest folder above it: the workspace's own
+    // package.xml owns what no inner package does, and a folder named like the start of a
+    // package's folder ("src/ab" next to "src/a") is not inside it.
+    void scannerGivesEachFileTheNearestPackage()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString root = dir.path();
+        writeFile(root + "/package.xml", "<package><name>outer</name></package>");
+        writeFile(root + "/top.py", "x = 1\n");
+        writeFile(root + "/src/a/package.xml", "<package><name>pkg_a</name></package>");
+        writeFile(root + "/src/a/deep/er/a.py", "x = 1\n");
+        writeFile(root + "/src/ab/b.py", "x = 1\n");
+        const Workspace ws = WorkspaceScanner::scan(root);
+        QStringList paths;
+        for (const SourceFile &f : ws.files)
+            paths << f.path + QLatin1Char('@') + f.package;
+        QCOMPARE(paths,
+                 (QStringList{"package.xml@outer", "src/a/deep/er/a.py@pkg_a",
+                              "src/a/package.xml@pkg_a", "src/ab/b.py@outer", "top.py@outer"}));
+    }
+
     void scannerReportsSymlinkLoops()
     {
         QTemporaryDir dir;
