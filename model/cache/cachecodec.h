@@ -32,9 +32,53 @@ struct Tag
 {
 };
 
+/// The bytes QDataStream (version Qt_6_4, big-endian) writes for integers, bools, strings and
+/// byte arrays, appended to a QByteArray directly: a cold run encodes every file's facts, and
+/// QDataStream takes each field through QBuffer's QIODevice::write.
+class Sink
+{
+public:
+    explicit Sink(QByteArray *out) : m_out(out) {}
+
+    template <class T, std::enable_if_t<std::is_integral_v<T>, int> = 0> Sink &operator<<(T v)
+    {
+        if constexpr (std::is_same_v<T, bool>) {
+            m_out->append(char(v ? 1 : 0)); // QDataStream writes a bool as a qint8
+        } else {
+            char bytes[sizeof(T)];
+            qToBigEndian(v, bytes);
+            m_out->append(bytes, qsizetype(sizeof(T)));
+        }
+        return *this;
+    }
+    Sink &operator<<(const QString &v)
+    {
+        if (v.isNull())
+            return *this << quint32(0xffffffffu);
+        const qsizetype n = v.size();
+        *this << quint32(n * 2);
+        const qsizetype at = m_out->size();
+        m_out->resize(at + n * 2);
+        qToBigEndian<char16_t>(v.utf16(), n, m_out->data() + at);
+        return *this;
+    }
+    Sink &operator<<(const QByteArray &v)
+    {
+        if (v.isNull())
+            return *this << quint32(0xffffffffu);
+        *this << quint32(v.size());
+        m_out->append(v);
+        return *this;
+    }
+
+private:
+    QByteArray *m_out;
+};
+
 /// Writes `v` in full the first time `table` meets it and by its number after that (from 1;
 /// 0 is the null string): the form of the cache's entries and of the worker's reply.
-inline void writeNumbered(QDataStream &s, QHash<QString, quint32> &table, const QString &v)
+template <class Stream>
+void writeNumbered(Stream &s, QHash<QString, quint32> &table, const QString &v)
 {
     if (v.isNull()) {
         s << quint32(0);
@@ -52,14 +96,14 @@ inline void writeNumbered(QDataStream &s, QHash<QString, quint32> &table, const 
 struct Writer
 {
     static constexpr bool reading = false;
-    QDataStream &s;
+    Sink &s;
     /// The strings written so far and their numbers (from 1; 0 is the null string): each is
     /// written in full once, then by its number. An entry repeats its file's path in every
     /// piece of evidence, and names and types many times; without the table nav2's stage 2
     /// memo was 14 MB. Null: every string in full.
     QHash<QString, quint32> *strings = nullptr;
 
-    bool good() const { return s.status() == QDataStream::Ok; }
+    bool good() const { return true; }
     void string(const QString &v)
     {
         if (strings)
@@ -313,8 +357,7 @@ template <class F> void cacheFields(Tag, Substitution &v, F f)
 template <class T> QByteArray encode(const T &value)
 {
     QByteArray bytes;
-    QDataStream s(&bytes, QIODevice::WriteOnly);
-    s.setVersion(QDataStream::Qt_6_4);
+    Sink s(&bytes);
     QHash<QString, quint32> strings;
     Writer w{s, &strings};
     io(w, const_cast<T &>(value));

@@ -21,8 +21,7 @@ template <class Workspace, class Control>
 QByteArray workspacePart(const Workspace &ws, const Control &control, bool sizes)
 {
     QByteArray bytes;
-    QDataStream s(&bytes, QIODevice::WriteOnly);
-    s.setVersion(QDataStream::Qt_6_4);
+    cachecodec::Sink s(&bytes);
     cachecodec::Writer w{s};
     auto root = ws.root;
     auto packages = ws.packages;

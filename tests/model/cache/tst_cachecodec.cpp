@@ -83,8 +83,7 @@ private Q_SLOTS:
         Sample in;
         QByteArray ours;
         {
-            QDataStream s(&ours, QIODevice::WriteOnly);
-            s.setVersion(QDataStream::Qt_6_4);
+            cachecodec::Sink s(&ours);
             cachecodec::Writer w{s};
             cachecodec::io(w, in.null);
             cachecodec::io(w, in.empty);
@@ -105,6 +104,28 @@ private Q_SLOTS:
         QVERIFY(null.isNull());
         QVERIFY(!empty.isNull() && empty.isEmpty());
         QCOMPARE(text, in.text);
+    }
+
+    // The sink writes the bytes QDataStream writes, for every kind of field an entry holds.
+    void theSinkWritesWhatQDataStreamWrites()
+    {
+        const QString text = QStringLiteral("Grüße, 世界 \U0001F916");
+        QByteArray ours;
+        cachecodec::Sink sink(&ours);
+        sink << true << false << qint8(-3) << quint8(200) << qint16(-2) << quint16(65000)
+             << qint32(-123456) << quint32(4000000000u) << qint64(-1) << quint64(1) << QString()
+             << QString(QLatin1StringView("")) << text << QByteArray() << QByteArray("")
+             << QByteArray("a\0b", 3);
+        QByteArray theirs;
+        {
+            QDataStream s(&theirs, QIODevice::WriteOnly);
+            s.setVersion(QDataStream::Qt_6_4);
+            s << true << false << qint8(-3) << quint8(200) << qint16(-2) << quint16(65000)
+              << qint32(-123456) << quint32(4000000000u) << qint64(-1) << quint64(1) << QString()
+              << QString(QLatin1StringView("")) << text << QByteArray() << QByteArray("")
+              << QByteArray("a\0b", 3);
+        }
+        QCOMPARE(ours, theirs);
     }
 
     void damagedBytesAreRefused()
