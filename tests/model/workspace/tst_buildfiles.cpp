@@ -20,6 +20,15 @@ QList<Executable> readCMake(const QHash<QString, QByteArray> &files, QList<Diagn
     });
     return reader.read(QStringLiteral("pkg/CMakeLists.txt"), diagnostics);
 }
+/// Each scanned file as "path@package".
+QStringList filesWithPackages(const Workspace &ws)
+{
+    QStringList out;
+    for (const SourceFile &f : ws.files)
+        out << f.path + QLatin1Char('@') + f.package;
+    return out;
+}
+
 } // namespace
 
 class TestBuildFiles : public QObject
@@ -180,9 +189,7 @@ private Q_SLOTS:
         QCOMPARE(ws.packages[0].executables.size(), 1);
         QCOMPARE(ws.packages[0].executables[0].sources, QStringList{"src/a/src/a.cpp"});
         QCOMPARE(ws.packages[1].name, QStringLiteral("pkg_nested"));
-        QStringList paths;
-        for (const SourceFile &f : ws.files)
-            paths << f.path + QLatin1Char('@') + f.package;
+        const QStringList paths = filesWithPackages(ws);
         QCOMPARE(paths,
                  (QStringList{"loose.py@", "src/a/CMakeLists.txt@pkg_a",
                               "src/a/nested/n.py@pkg_nested", "src/a/nested/package.xml@pkg_nested",
@@ -196,16 +203,17 @@ private Q_SLOTS:
     {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        const QString root = dir.path();
-        writeFile(root + "/package.xml", "<package><name>outer</name></package>");
-        writeFile(root + "/top.py", "x = 1\n");
-        writeFile(root + "/src/a/package.xml", "<package><name>pkg_a</name></package>");
-        writeFile(root + "/src/a/deep/er/a.py", "x = 1\n");
-        writeFile(root + "/src/ab/b.py", "x = 1\n");
-        const Workspace ws = WorkspaceScanner::scan(root);
-        QStringList paths;
-        for (const SourceFile &f : ws.files)
-            paths << f.path + QLatin1Char('@') + f.package;
+        const QList<QPair<const char *, const char *>> files = {
+            {"package.xml", "<package><name>outer</name></package>"},
+            {"src/a/package.xml", "<package><name>pkg_a</name></package>"},
+            {"top.py", ""},
+            {"src/a/deep/er/a.py", ""},
+            {"src/ab/b.py", ""},
+        };
+        for (const auto &[path, content] : files)
+            writeFile(dir.filePath(QString::fromLatin1(path)), content);
+        const Workspace ws = WorkspaceScanner::scan(dir.path());
+        const QStringList paths = filesWithPackages(ws);
         QCOMPARE(paths,
                  (QStringList{"package.xml@outer", "src/a/deep/er/a.py@pkg_a",
                               "src/a/package.xml@pkg_a", "src/ab/b.py@outer", "top.py@outer"}));
