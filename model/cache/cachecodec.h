@@ -246,7 +246,8 @@ template <class A, class T> void io(A &a, T &v)
     } else if constexpr (std::is_enum_v<T>) {
         auto raw = qint32(v);
         io(a, raw);
-        v = T(raw);
+        if constexpr (A::reading)
+            v = T(raw);
     } else {
         cacheFields(Tag{}, v, [&a](auto &...x) { (io(a, x), ...); });
     }
@@ -263,8 +264,11 @@ template <class A, class T> void io(A &a, QList<T> &v)
         for (quint32 i = 0; i < n && a.good(); ++i)
             io(a, v.emplace_back());
     } else {
-        for (T &x : v)
-            io(a, x);
+        // Writing never changes what it writes, not even a list's sharing (a non-const loop
+        // would detach it): another thread may be reading the same value (the worker encodes a
+        // stage's result while the next stage reads it).
+        for (const T &x : std::as_const(v))
+            io(a, const_cast<T &>(x));
     }
 }
 
@@ -301,10 +305,10 @@ void ioMap(A &a, Map<K, V> &v)
             v.insert(key, value);
         }
     } else {
-        for (auto it = v.begin(); it != v.end(); ++it) {
+        for (auto it = v.cbegin(); it != v.cend(); ++it) { // no detach (io(QList) says why)
             K key = it.key();
             io(a, key);
-            io(a, it.value());
+            io(a, const_cast<V &>(it.value()));
         }
     }
 }
@@ -330,7 +334,8 @@ template <class A, class T> void io(A &a, std::optional<T> &v)
     bool has = v.has_value();
     io(a, has);
     if (!has) {
-        v.reset();
+        if constexpr (A::reading)
+            v.reset();
         return;
     }
     if constexpr (A::reading)

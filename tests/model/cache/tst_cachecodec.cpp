@@ -128,6 +128,26 @@ private Q_SLOTS:
         QCOMPARE(ours, theirs);
     }
 
+    // Writing changes nothing it writes, not even how a list or a map is shared: the worker
+    // encodes a stage's result on one thread while others read it (a detach there crashed it).
+    void encodingLeavesSharedValuesShared()
+    {
+        const QStringList names{QStringLiteral("a"), QStringLiteral("b")};
+        std::pair<QList<QStringList>, QMap<QString, QStringList>> value;
+        value.first = {names, names}; // a list of its own, whose elements share names' data
+        value.second.insert(QStringLiteral("k"), names);
+        const QMap<QString, QStringList> mapCopy = value.second; // the map itself shared
+        const QByteArray bytes = cachecodec::encode(value);
+        QVERIFY(!bytes.isEmpty());
+        QCOMPARE(value.first.at(0).constData(), names.constData());
+        QCOMPARE(value.first.at(1).constData(), names.constData());
+        QVERIFY(value.second.isSharedWith(mapCopy));
+        QCOMPARE(value.second.constBegin()->constData(), names.constData());
+        std::pair<QList<QStringList>, QMap<QString, QStringList>> back;
+        QVERIFY(cachecodec::decode(bytes, &back));
+        QCOMPARE(back, value);
+    }
+
     void damagedBytesAreRefused()
     {
         const QByteArray bytes = cachecodec::encode(Sample());
