@@ -24,27 +24,6 @@ template <class F> void fields(StageRequest &v, F f)
 
 namespace {
 
-/// The strings of one result written so far (writeResult) or read so far (readResult). A
-/// result repeats file paths, names, types and parameter values thousands of times (nav2's is
-/// ~22 MB written out in full); each is sent once and then by its number, and the reader's
-/// copies share one buffer. Off (null) outside writeResult and readResult.
-struct StringTable
-{
-    QHash<QString, quint32> numbers; ///< writing: string -> number (1-based; 0 = null string)
-    QList<QString> strings;          ///< reading: number - 1 -> string
-};
-thread_local StringTable *strings = nullptr;
-
-/// Turns the string table on for one result on this thread.
-class StringScope
-{
-public:
-    explicit StringScope(StringTable *table) { strings = table; }
-    ~StringScope() { strings = nullptr; }
-    StringScope(const StringScope &) = delete;
-    StringScope &operator=(const StringScope &) = delete;
-};
-
 /// Refuses counts no honest result has, so that a damaged one cannot ask for gigabytes.
 constexpr quint32 kMaxCount = 1u << 24;
 
@@ -58,34 +37,6 @@ bool countIn(QDataStream &s, quint32 *n)
         return true;
     s.setStatus(QDataStream::ReadCorruptData);
     return false;
-}
-
-void put(QDataStream &s, const QString &v)
-{
-    if (strings)
-        cachecodec::writeNumbered(s, strings->numbers, v);
-    else
-        s << v;
-}
-
-void get(QDataStream &s, QString &v)
-{
-    if (!strings) {
-        s >> v;
-        return;
-    }
-    quint32 number = 0;
-    s >> number;
-    if (number == 0) {
-        v = QString();
-    } else if (number <= quint32(strings->strings.size())) {
-        v = strings->strings.at(number - 1);
-    } else if (number == quint32(strings->strings.size()) + 1) {
-        s >> v;
-        strings->strings.append(v);
-    } else {
-        s.setStatus(QDataStream::ReadCorruptData);
-    }
 }
 
 template <class T> void put(QDataStream &s, const T &v);
@@ -220,8 +171,10 @@ ROSARCH_DEFINE_STREAM(StageRequest)
 namespace {
 
 // Delta encoding of the worker's reply: mode 0 = the list equals base's; 1 = a count, then
-// per element a flag "equal to base's at this index" or the element.
-template <class T> void writeList(QDataStream &s, const QList<T> &v, const QList<T> &base)
+// per element a flag "equal to base's at this index" or the element. Written and read straight
+// from bytes (cachecodec's Sink and Reader), not through QDataStream's QIODevice field by field:
+// the window decodes the last part of a reply while a person waits for it.
+template <class T> void writeList(cachecodec::Writer &w, const QList<T> &v, const QList<T> &base)
 {
     QList<bool> same(v.size());
     bool all = v.size() == base.size();
@@ -230,46 +183,46 @@ template <class T> void writeList(QDataStream &s, const QList<T> &v, const QList
         all = all && same[i];
     }
     if (all) {
-        s << quint8(0);
+        w.s << quint8(0);
         return;
     }
-    s << quint8(1) << quint32(v.size());
+    w.s << quint8(1) << quint32(v.size());
     for (qsizetype i = 0; i < v.size(); ++i) {
-        s << same.at(i);
+        w.s << same.at(i);
         if (!same.at(i))
-            put(s, v.at(i));
+            cachecodec::io(w, const_cast<T &>(v.at(i)));
     }
 }
 
-template <class T> void readList(QDataStream &s, QList<T> &v, const QList<T> &base)
+template <class T> void readList(cachecodec::Reader &r, QList<T> &v, const QList<T> &base)
 {
     quint8 mode = 0;
-    s >> mode;
-    if (s.status() != QDataStream::Ok)
+    r.integer(&mode);
+    if (!r.ok)
         return;
     if (mode == 0) {
         v = base;
         return;
     }
     quint32 n = 0;
-    s >> n;
-    if (mode != 1 || n > (1u << 24)) {
-        s.setStatus(QDataStream::ReadCorruptData);
+    r.integer(&n);
+    if (mode != 1 || n > kMaxCount) {
+        r.ok = false;
         return;
     }
     v.clear();
     v.reserve(n);
-    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i) {
+    for (quint32 i = 0; i < n && r.ok; ++i) {
         bool same = false;
-        s >> same;
+        r.integer(&same);
         if (same && qsizetype(i) >= base.size()) {
-            s.setStatus(QDataStream::ReadCorruptData);
+            r.ok = false;
             return;
         }
         if (same)
             v.append(base.at(i));
         else
-            get(s, v.emplace_back());
+            cachecodec::io(r, v.emplace_back());
     }
 }
 
@@ -309,35 +262,45 @@ namespace stagestream {
 
 void writeParts(QDataStream &s, quint8 parts, const Recovery &v, const Recovery &base)
 {
-    s << parts;
+    QByteArray bytes;
+    cachecodec::Sink sink(&bytes);
+    sink << parts;
     for (const quint8 part : kParts) {
         if (!(parts & part))
             continue;
         // A string table per part: a part is decoded without the ones sent before it.
-        StringTable table;
-        const StringScope scope(&table);
+        QHash<QString, quint32> table;
+        cachecodec::Writer w{sink, &table};
         deltaFields(
-            part, v, base, [&s](const auto &list, const auto &from) { writeList(s, list, from); },
-            [&s](const auto &...x) { (put(s, x), ...); });
+            part, v, base, [&w](const auto &list, const auto &from) { writeList(w, list, from); },
+            [&w](const auto &...x) {
+                (cachecodec::io(w, const_cast<std::remove_cvref_t<decltype(x)> &>(x)), ...);
+            });
     }
+    s.writeRawData(bytes.constData(), int(bytes.size()));
 }
 
 bool readParts(QDataStream &s, Recovery *v, const Recovery &base, quint8 *parts)
 {
+    if (!s.device() || s.status() != QDataStream::Ok)
+        return false;
+    const QByteArray bytes = s.device()->readAll(); // the parts are the rest of the stream
+    cachecodec::Reader r{bytes.constData(), bytes.constData() + bytes.size()};
     quint8 read = 0;
-    s >> read;
-    if (s.status() != QDataStream::Ok || (read & ~quint8(AllParts)) != 0)
+    r.integer(&read);
+    if (!r.ok || (read & ~quint8(AllParts)) != 0)
         return false;
     for (const quint8 part : kParts) {
         if (!(read & part))
             continue;
-        StringTable table;
-        const StringScope scope(&table);
+        QList<QString> table;
+        r.strings = &table;
         deltaFields(
-            part, *v, base, [&s](auto &list, const auto &from) { readList(s, list, from); },
-            [&s](auto &...x) { (get(s, x), ...); });
+            part, *v, base, [&r](auto &list, const auto &from) { readList(r, list, from); },
+            [&r](auto &...x) { (cachecodec::io(r, x), ...); });
+        r.strings = nullptr;
     }
-    if (s.status() != QDataStream::Ok)
+    if (!r.ok || r.p != r.end)
         return false;
     *parts |= read;
     return true;
