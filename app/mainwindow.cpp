@@ -67,6 +67,7 @@ MainWindow::MainWindow(QWidget *parent)
     setDockNestingEnabled(true);
 
     createPanels();
+    Icons::warmUp(this); // before the first result is painted
     m_stages = new StageController(m_document, m_runner, m_traceability, m_logView, this);
     m_watcher = new WorkspaceWatcher(this);
     m_watcher->setEnabled(AppSettings().watchWorkspace());

@@ -1,6 +1,11 @@
 #include "icons.h"
 
+#include <QGuiApplication>
 #include <QHash>
+#include <QTimer>
+
+#include <functional>
+#include <memory>
 
 #include <mutex>
 
@@ -123,6 +128,46 @@ QIcon Icons::severity(Diagnostic::Severity severity)
         return fromResource("error");
     }
     return {};
+}
+
+void Icons::warmUp(QObject *context)
+{
+    using Make = std::function<QIcon()>;
+    static const QList<Make> icons = {
+        &Icons::package,
+        &Icons::node,
+        &Icons::launchFile,
+        &Icons::include,
+        &Icons::externalInclude,
+        &Icons::nodeInstance,
+        &Icons::nameSpace,
+        &Icons::container,
+        &Icons::composable,
+        &Icons::unresolved,
+        [] { return Icons::port(PortKind::Publisher); },
+        [] { return Icons::port(PortKind::Subscriber); },
+        [] { return Icons::port(PortKind::ServiceServer); },
+        [] { return Icons::port(PortKind::ServiceClient); },
+        [] { return Icons::port(PortKind::ActionServer); },
+        [] { return Icons::port(PortKind::ActionClient); },
+        [] { return Icons::severity(Diagnostic::Severity::Info); },
+        [] { return Icons::severity(Diagnostic::Severity::Warning); },
+        [] { return Icons::severity(Diagnostic::Severity::Error); },
+    };
+    auto *timer = new QTimer(context);
+    timer->setInterval(0);
+    auto next = std::make_shared<qsizetype>(0);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, next] {
+        if (*next >= icons.size()) {
+            timer->deleteLater();
+            return;
+        }
+        const QIcon icon = icons.at((*next)++)();
+        const qreal ratio = qApp->devicePixelRatio();
+        icon.pixmap(QSize(16, 16), ratio, QIcon::Normal);
+        icon.pixmap(QSize(16, 16), ratio, QIcon::Disabled);
+    });
+    timer->start();
 }
 
 } // namespace rosarch

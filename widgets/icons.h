@@ -4,6 +4,7 @@
 #include "port.h"
 
 #include <QIcon>
+#include <QObject>
 
 namespace rosarch {
 
@@ -32,6 +33,11 @@ public:
     static QIcon container();
     static QIcon composable();
     static QIcon unresolved();
+
+    /// Renders the views' icons (16 px, normal and greyed) one per event-loop turn while the
+    /// window waits for its first result, so that painting that result does not render them:
+    /// SVG icons rendered the first time cost the first paint of the trees several ms.
+    static void warmUp(QObject *context);
 
 private:
     static QIcon fromResource(const char *name);

@@ -16,6 +16,7 @@
 #include <QPalette>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTimer>
 #include <QtTest>
 
 #include <functional>
@@ -122,6 +123,17 @@ private Q_SLOTS:
         const QModelIndex opaque = model.index(3, 0, model.index(0, 0));
         QCOMPARE(model.kind(opaque), LaunchTreeModel::ItemKind::Unresolved);
         QVERIFY(sameIcon(opaque.data(Qt::DecorationRole), Icons::unresolved()));
+    }
+
+    // The icons are rendered ahead of the first result one per event-loop turn, not all at
+    // once when the window is made, and the warm-up ends on its own.
+    void iconsWarmUpOnePerTurn()
+    {
+        QObject window;
+        Icons::warmUp(&window);
+        QCOMPARE(window.findChildren<QTimer *>().size(), 1);
+        QTRY_VERIFY(window.findChildren<QTimer *>().isEmpty());
+        QVERIFY(!Icons::nodeInstance().pixmap(QSize(16, 16)).isNull());
     }
 
     void tooltipsSayWhatAndWhere()
