@@ -5,168 +5,23 @@
 
 namespace rosarch {
 
-namespace {
-
-template <class F> void fields(Recovery &v, F f)
-{
-    f(v.nodes, v.launch, v.architecture);
-}
-template <class F> void fields(LaunchOptions &v, F f)
+namespace cachecodec {
+template <class F> void cacheFields(Tag, LaunchOptions &v, F f)
 {
     f(v.rootFile, v.arguments);
 }
-template <class F> void fields(StageRequest &v, F f)
+template <class F> void cacheFields(Tag, StageRequest &v, F f)
 {
     f(v.job, v.root, v.options, v.nodes, v.skipped, v.memoryBudgetMb, v.serial, v.last);
 }
-
-} // namespace
+} // namespace cachecodec
 
 namespace {
 
 /// Refuses counts no honest result has, so that a damaged one cannot ask for gigabytes.
 constexpr quint32 kMaxCount = 1u << 24;
 
-/// Reads a count of items that follow; false (and the stream marked corrupt) when it is more
-/// than any real reply holds.
-bool countIn(QDataStream &s, quint32 *n)
-{
-    *n = 0;
-    s >> *n;
-    if (*n <= kMaxCount)
-        return true;
-    s.setStatus(QDataStream::ReadCorruptData);
-    return false;
-}
-
-template <class T> void put(QDataStream &s, const T &v);
-template <class T> void get(QDataStream &s, T &v);
-
-template <class X, class Y> void put(QDataStream &s, const QPair<X, Y> &v)
-{
-    put(s, v.first);
-    put(s, v.second);
-}
-template <class X, class Y> void get(QDataStream &s, QPair<X, Y> &v)
-{
-    get(s, v.first);
-    get(s, v.second);
-}
-
-template <class T> void put(QDataStream &s, const QList<T> &v)
-{
-    s << quint32(v.size());
-    for (const T &x : v)
-        put(s, x);
-}
-template <class T> void get(QDataStream &s, QList<T> &v)
-{
-    quint32 n = 0;
-    v.clear();
-    if (!countIn(s, &n))
-        return;
-    v.reserve(n);
-    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i)
-        get(s, v.emplace_back());
-}
-
-template <class K, class V> void put(QDataStream &s, const QMap<K, V> &v)
-{
-    s << quint32(v.size());
-    for (auto it = v.cbegin(); it != v.cend(); ++it) {
-        put(s, it.key());
-        put(s, it.value());
-    }
-}
-template <class K, class V> void get(QDataStream &s, QMap<K, V> &v)
-{
-    quint32 n = 0;
-    v.clear();
-    if (!countIn(s, &n))
-        return;
-    for (quint32 i = 0; i < n && s.status() == QDataStream::Ok; ++i) {
-        K key;
-        V value;
-        get(s, key);
-        get(s, value);
-        v.insert(key, value);
-    }
-}
-
-/// Scalars, enums and the model types (their operators below).
-template <class T> void put(QDataStream &s, const T &v)
-{
-    s << v;
-}
-template <class T> void get(QDataStream &s, T &v)
-{
-    s >> v;
-}
-
 } // namespace
-
-// Declared first so that the containers' stream operators find the nested types by ADL.
-#define ROSARCH_DECLARE_STREAM(T)                                                                  \
-    QDataStream &operator<<(QDataStream &s, const T &v);                                           \
-    QDataStream &operator>>(QDataStream &s, T &v);
-ROSARCH_DECLARE_STREAM(Evidence)
-ROSARCH_DECLARE_STREAM(Diagnostic::Related)
-ROSARCH_DECLARE_STREAM(Diagnostic)
-ROSARCH_DECLARE_STREAM(Port)
-ROSARCH_DECLARE_STREAM(AtomicNode)
-ROSARCH_DECLARE_STREAM(Executable)
-ROSARCH_DECLARE_STREAM(RosPackage)
-ROSARCH_DECLARE_STREAM(Unresolved)
-ROSARCH_DECLARE_STREAM(ParameterSetting)
-ROSARCH_DECLARE_STREAM(NodeInstance)
-ROSARCH_DECLARE_STREAM(LaunchFileInstance)
-ROSARCH_DECLARE_STREAM(LaunchArgument)
-ROSARCH_DECLARE_STREAM(LaunchDependencies)
-ROSARCH_DECLARE_STREAM(PartPort)
-ROSARCH_DECLARE_STREAM(RosNodePart)
-ROSARCH_DECLARE_STREAM(Channel)
-ROSARCH_DECLARE_STREAM(BoundaryPort)
-ROSARCH_DECLARE_STREAM(Connection)
-ROSARCH_DECLARE_STREAM(Composite)
-ROSARCH_DECLARE_STREAM(Architecture)
-#undef ROSARCH_DECLARE_STREAM
-
-#define ROSARCH_DEFINE_STREAM(T)                                                                   \
-    QDataStream &operator<<(QDataStream &s, const T &v)                                            \
-    {                                                                                              \
-        fields(const_cast<T &>(v), [&s](const auto &...x) { (put(s, x), ...); });                  \
-        return s;                                                                                  \
-    }                                                                                              \
-    QDataStream &operator>>(QDataStream &s, T &v)                                                  \
-    {                                                                                              \
-        fields(v, [&s](auto &...x) { (get(s, x), ...); });                                         \
-        return s;                                                                                  \
-    }
-ROSARCH_DEFINE_STREAM(Evidence)
-ROSARCH_DEFINE_STREAM(Diagnostic::Related)
-ROSARCH_DEFINE_STREAM(Diagnostic)
-ROSARCH_DEFINE_STREAM(Port)
-ROSARCH_DEFINE_STREAM(AtomicNode)
-ROSARCH_DEFINE_STREAM(Executable)
-ROSARCH_DEFINE_STREAM(RosPackage)
-ROSARCH_DEFINE_STREAM(Unresolved)
-ROSARCH_DEFINE_STREAM(ParameterSetting)
-ROSARCH_DEFINE_STREAM(NodeInstance)
-ROSARCH_DEFINE_STREAM(LaunchFileInstance)
-ROSARCH_DEFINE_STREAM(LaunchArgument)
-ROSARCH_DEFINE_STREAM(LaunchDependencies)
-ROSARCH_DEFINE_STREAM(PartPort)
-ROSARCH_DEFINE_STREAM(RosNodePart)
-ROSARCH_DEFINE_STREAM(Channel)
-ROSARCH_DEFINE_STREAM(BoundaryPort)
-ROSARCH_DEFINE_STREAM(Connection)
-ROSARCH_DEFINE_STREAM(Composite)
-ROSARCH_DEFINE_STREAM(Architecture)
-ROSARCH_DEFINE_STREAM(AtomicNodeList)
-ROSARCH_DEFINE_STREAM(Recovery)
-ROSARCH_DEFINE_STREAM(LaunchOptions)
-ROSARCH_DEFINE_STREAM(StageRequest)
-#undef ROSARCH_DEFINE_STREAM
 
 namespace {
 
@@ -316,6 +171,17 @@ bool readResult(QDataStream &s, Recovery *v, const Recovery &base)
     *v = {};
     quint8 parts = 0;
     return readParts(s, v, base, &parts) && parts == AllParts;
+}
+
+QByteArray encodeRequest(const StageRequest &request)
+{
+    return cachecodec::encode(request);
+}
+
+bool decodeRequest(const QByteArray &bytes, StageRequest *request)
+{
+    *request = {};
+    return cachecodec::decode(bytes, request);
 }
 
 } // namespace stagestream

@@ -9,17 +9,11 @@
 namespace rosarch {
 
 // Binary streaming of a recovery and what asks for one, for the analysis worker process
-// (rosarch-stages) and the application that runs it. Every field of every model type is
-// written; a round-trip test compares the result with operator== on real fixtures. The format
-// is private to one build of rosarch (the worker and the application come from one build),
-// so it carries a version only to catch a stale helper.
-
-QDataStream &operator<<(QDataStream &s, const Recovery &v);
-QDataStream &operator>>(QDataStream &s, Recovery &v);
-QDataStream &operator<<(QDataStream &s, const AtomicNodeList &v);
-QDataStream &operator>>(QDataStream &s, AtomicNodeList &v);
-QDataStream &operator<<(QDataStream &s, const LaunchOptions &v);
-QDataStream &operator>>(QDataStream &s, LaunchOptions &v);
+// (rosarch-stages) and the application that runs it, in the analysis cache's binary form
+// (cachecodec). Every field of every model type is written; round-trip tests compare the
+// result with operator== on real fixtures. The format is private to one build of rosarch (the
+// worker and the application come from one build), so it carries a version only to catch a
+// stale helper.
 
 /// What one start of the analysis worker is asked to do (stdin of rosarch-stages).
 struct StageRequest
@@ -39,13 +33,10 @@ struct StageRequest
     bool last = false;               ///< no request follows: no warm-up for one
 };
 
-QDataStream &operator<<(QDataStream &s, const StageRequest &v);
-QDataStream &operator>>(QDataStream &s, StageRequest &v);
-
 namespace stagestream {
 /// The first bytes of a request and of every worker reply: "RSTG" and the format version.
 constexpr quint32 kMagic = 0x52535447;
-constexpr quint32 kVersion = 6;
+constexpr quint32 kVersion = 7;
 /// The QDataStream version both sides use.
 constexpr QDataStream::Version kStreamVersion = QDataStream::Qt_6_4;
 /// The worker's replies on stdout are frames: a type and a payload (QByteArray).
@@ -78,6 +69,10 @@ bool readParts(QDataStream &s, Recovery *v, const Recovery &base, quint8 *parts)
 void writeResult(QDataStream &s, const Recovery &v, const Recovery &base);
 /// Reads what writeResult wrote against the same `base`; false when it is damaged or partial.
 bool readResult(QDataStream &s, Recovery *v, const Recovery &base);
+/// A request as the payload of its frame.
+QByteArray encodeRequest(const StageRequest &request);
+/// Reads what encodeRequest wrote; false when it is damaged or partial.
+bool decodeRequest(const QByteArray &bytes, StageRequest *request);
 /// Worker exit codes besides 0 (done) and a signal.
 constexpr int kExitBadRequest = 2;
 constexpr int kExitOutOfMemory = 4;

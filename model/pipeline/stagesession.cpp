@@ -15,12 +15,7 @@ namespace {
 
 QByteArray encode(const StageRequest &r)
 {
-    QByteArray payload;
-    {
-        QDataStream out(&payload, QIODevice::WriteOnly);
-        out.setVersion(stagestream::kStreamVersion);
-        out << r;
-    }
+    const QByteArray payload = stagestream::encodeRequest(r);
     QByteArray bytes;
     QDataStream out(&bytes, QIODevice::WriteOnly);
     out.setVersion(stagestream::kStreamVersion);

@@ -175,11 +175,7 @@ Read readRequest(StageRequest *request)
         std::fputs("rosarch-stages: the request is incomplete\n", stderr);
         return Read::Bad;
     }
-    QDataStream in(payload);
-    in.setVersion(stagestream::kStreamVersion);
-    *request = {};
-    in >> *request;
-    if (in.status() != QDataStream::Ok) {
+    if (!stagestream::decodeRequest(payload, request)) {
         std::fputs("rosarch-stages: the request is incomplete\n", stderr);
         return Read::Bad;
     }

@@ -198,13 +198,24 @@ private Q_SLOTS:
             out.setVersion(stagestream::kStreamVersion);
             stagestream::writeResult(out, r, {});
         }
-        QByteArray plain;
-        {
-            QDataStream out(&plain, QIODevice::WriteOnly);
-            out.setVersion(stagestream::kStreamVersion);
-            out << r;
+        // A string in every diagnostic of a part is in the reply once, whatever their number.
+        const QString marker = QStringLiteral("a message every diagnostic of this part repeats");
+        Recovery repeated = r;
+        for (int i = 0; i < 50; ++i) {
+            repeated.nodes.diagnostics.append(Diagnostic{});
+            repeated.nodes.diagnostics.last().message = marker;
         }
-        QVERIFY2(bytes.size() * 2 < plain.size(), "repeated strings are sent once");
+        QByteArray withRepeats;
+        {
+            QDataStream out(&withRepeats, QIODevice::WriteOnly);
+            out.setVersion(stagestream::kStreamVersion);
+            stagestream::writeResult(out, repeated, {});
+        }
+        QByteArray utf16; // as QDataStream writes a QString: UTF-16, big-endian
+        for (const QChar c : marker)
+            utf16 += char(c.unicode() >> 8) + QByteArray(1, char(c.unicode() & 0xff));
+        QCOMPARE(withRepeats.count(utf16), 1);
+        QVERIFY(withRepeats.size() - bytes.size() < 50 * utf16.size()); // not 50 copies
         Recovery back;
         QDataStream in(bytes);
         in.setVersion(stagestream::kStreamVersion);

@@ -160,17 +160,8 @@ private Q_SLOTS:
             StageRequest request;
             request.root = QStringLiteral("/ws");
             request.last = last;
-            QByteArray bytes;
-            {
-                QDataStream out(&bytes, QIODevice::WriteOnly);
-                out.setVersion(stagestream::kStreamVersion);
-                out << request;
-            }
-            QDataStream in(bytes);
-            in.setVersion(stagestream::kStreamVersion);
             StageRequest back;
-            in >> back;
-            QCOMPARE(in.status(), QDataStream::Ok);
+            QVERIFY(stagestream::decodeRequest(stagestream::encodeRequest(request), &back));
             QCOMPARE(back.last, last);
             QCOMPARE(back.root, request.root);
         }

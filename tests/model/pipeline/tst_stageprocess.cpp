@@ -96,13 +96,12 @@ private Q_SLOTS:
         {
             QDataStream out(&bytes, QIODevice::WriteOnly);
             out.setVersion(stagestream::kStreamVersion);
-            out << direct;
+            stagestream::writeResult(out, direct, {});
         }
         Recovery back;
         QDataStream in(bytes);
         in.setVersion(stagestream::kStreamVersion);
-        in >> back;
-        QCOMPARE(in.status(), QDataStream::Ok);
+        QVERIFY(stagestream::readResult(in, &back, {}));
         QVERIFY(in.atEnd());
         QVERIFY(back == direct);
 
