@@ -16,7 +16,8 @@ build_dir=${ROSARCH_BUILD_DIR:-build}
 packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
-  nlohmann-json3-dev libcurl4-openssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth fonts-dejavu-core
+  nlohmann-json3-dev libcurl4-openssl-dev libssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth
+  fonts-dejavu-core
   ccache clang-format clang-tidy default-jre-headless nodejs git clang-16 libclang-rt-16-dev)
 
 missing=()

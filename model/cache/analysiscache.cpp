@@ -1,9 +1,9 @@
 #include "analysiscache.h"
 #include "analysisfingerprint.h"
+#include "sha1.h"
 #include "threadpriority.h"
 
 #include <QCoreApplication>
-#include <QCryptographicHash>
 #include <QDataStream>
 #include <QDateTime>
 #include <QDir>
@@ -44,7 +44,7 @@ constexpr quint32 kMaxIndexEntries = 1u << 22;
 
 QByteArray checksum(QByteArrayView bytes)
 {
-    return QCryptographicHash::hash(bytes, QCryptographicHash::Sha1);
+    return Sha1::hash(bytes);
 }
 
 /// An entry's checksum: it guards against damage, not against forgery (the index that holds it
@@ -164,7 +164,7 @@ qint64 AnalysisCache::defaultMaxBytes()
 
 QByteArray AnalysisCache::key(std::initializer_list<QByteArrayView> parts)
 {
-    QCryptographicHash hash(QCryptographicHash::Sha1);
+    Sha1 hash;
     for (QByteArrayView part : parts) {
         // Each part with its length, so that ("ab", "c") and ("a", "bc") differ.
         const quint64 size = qToBigEndian(quint64(part.size()));

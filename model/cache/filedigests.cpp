@@ -1,6 +1,6 @@
 #include "filedigests.h"
+#include "sha1.h"
 
-#include <QCryptographicHash>
 #include <QDataStream>
 #include <QFile>
 #include <QFileInfo>
@@ -45,7 +45,7 @@ bool FileDigests::statOf(const QString &path, Stat *out)
 
 QByteArray FileDigests::digestOf(const QByteArray &content)
 {
-    return QCryptographicHash::hash(content, QCryptographicHash::Sha1);
+    return Sha1::hash(content);
 }
 
 QByteArray FileDigests::digest(const QString &absolutePath)
@@ -129,9 +129,8 @@ void FileDigests::loadLocked()
         return;
     const QByteArray bytes = file.readAll();
     // A damaged or foreign memo is no memo: every file is hashed again.
-    if (bytes.size() < kHashSize ||
-        QCryptographicHash::hash(QByteArrayView(bytes).chopped(kHashSize),
-                                 QCryptographicHash::Sha1) != QByteArrayView(bytes).last(kHashSize))
+    if (bytes.size() < kHashSize || Sha1::hash(QByteArrayView(bytes).chopped(kHashSize)) !=
+                                        QByteArrayView(bytes).last(kHashSize))
         return;
     QDataStream s(bytes.first(bytes.size() - kHashSize));
     s.setVersion(QDataStream::Qt_6_4);
@@ -178,7 +177,7 @@ bool FileDigests::save(QString *error)
             s << it.key() << it->stat.size << it->stat.mtimeNs << it->stat.ctimeNs << it->stat.inode
               << it->stat.device << it->digest;
     }
-    bytes += QCryptographicHash::hash(bytes, QCryptographicHash::Sha1);
+    bytes += Sha1::hash(bytes);
     // Another process may save its memo at the same time: each writes its own temporary file
     // and the last rename wins, whole.
     QTemporaryFile file(m_memoFile + QStringLiteral(".XXXXXX"));

@@ -1,9 +1,8 @@
 #include "cppfactscodec.h"
+#include "sha1.h"
 
 #include "cachecodec.h"
 #include "cppfactsfields.h"
-
-#include <QCryptographicHash>
 
 #include <algorithm>
 
@@ -25,7 +24,7 @@ QByteArray CppFactsCodec::digest(const CppMacros &macros)
 {
     QList<QByteArray> names = macros.keys();
     std::sort(names.begin(), names.end());
-    QCryptographicHash hash(QCryptographicHash::Sha1);
+    Sha1 hash;
     for (const QByteArray &name : std::as_const(names)) {
         const CppMacro &m = *macros.constFind(name);
         // Separators that cannot occur in a name, a body or a parameter.

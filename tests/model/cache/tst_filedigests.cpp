@@ -2,6 +2,7 @@
 // changed, even a rewrite of the same size with the mtime set back; the memo survives a
 // process and a damaged memo is no memo.
 #include "filedigests.h"
+#include "sha1.h"
 #include "testsupport.h"
 
 #include <QCryptographicHash>
@@ -153,6 +154,26 @@ private Q_SLOTS:
         QCOMPARE(all.result(), QByteArray("x.py") + '\0' + sha1("x = 1\n").toHex() + '\n' + "y.py" +
                                    '\0' + sha1("y = 2\n").toHex() + '\n');
         pool->setMaxThreadCount(threads);
+    }
+
+    void opensslsSha1GivesQtsDigests()
+    {
+        // Keys written before the change of implementation stay valid: the same digests.
+        QByteArray large(3 * 1024 * 1024 + 17, Qt::Uninitialized);
+        for (qsizetype i = 0; i < large.size(); ++i)
+            large[i] = char((i * 131) ^ (i >> 7));
+        for (const QByteArray &bytes :
+             {QByteArray(), QByteArray("x = 1\n"), QByteArray(64, 'a'), large}) {
+            QCOMPARE(Sha1::hash(bytes), QCryptographicHash::hash(bytes, QCryptographicHash::Sha1));
+            Sha1 parts; // in pieces, an empty one among them
+            QCryptographicHash qt(QCryptographicHash::Sha1);
+            for (qsizetype at = 0, step = 1; at < bytes.size(); at += step, step = step * 3 + 1) {
+                parts.addData(QByteArrayView(bytes).sliced(at, std::min(step, bytes.size() - at)));
+                parts.addData({});
+                qt.addData(QByteArrayView(bytes).sliced(at, std::min(step, bytes.size() - at)));
+            }
+            QCOMPARE(parts.result(), qt.result());
+        }
     }
 };
 
