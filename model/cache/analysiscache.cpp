@@ -13,6 +13,7 @@
 #include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QTemporaryFile>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QtEndian>
 
 #include <unistd.h>
@@ -21,6 +22,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 
 namespace rosarch {
 
@@ -427,6 +429,32 @@ void AnalysisCache::waitForWrites()
     QMutexLocker writer(&m_writerMutex);
     if (m_writer.joinable())
         m_writer.join();
+}
+
+namespace {
+
+/// The stores storeLater() began that finishStores() has not waited for.
+std::mutex pendingMutex;
+QList<QFuture<void>> pending;
+
+} // namespace
+
+void AnalysisCache::storeLater(std::function<void()> store)
+{
+    if (this == &shared() && defersFlush()) {
+        const std::lock_guard lock(pendingMutex);
+        pending.append(QtConcurrent::run(std::move(store)));
+    } else {
+        store();
+    }
+}
+
+void AnalysisCache::finishStores()
+{
+    const std::lock_guard lock(pendingMutex);
+    for (QFuture<void> &store : pending)
+        store.waitForFinished();
+    pending.clear();
 }
 
 void AnalysisCache::write(bool lowPriority)

@@ -11,6 +11,7 @@
 #include <QString>
 
 #include <atomic>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -99,6 +100,14 @@ public:
     void flushDeferred();
     /// Waits for the write flushDeferred() began (the destructor waits, then writes the rest).
     void waitForWrites();
+    /// Runs `store` (which stores entries in this cache) on a pool thread when this is the
+    /// shared cache and defers its flushes, to be waited for by finishStores(); else now. For
+    /// what a run encodes once its result is known (stage 1's C++ facts, the memos of stages 2
+    /// and 3), so that encoding does not hold up the result.
+    void storeLater(std::function<void()> store);
+    /// Waits until what storeLater() began is stored. Whoever writes the shared cache's pack
+    /// calls this first.
+    static void finishStores();
 
     /// Values decoded from entries in this process, so that a long-lived worker does not decode
     /// the same entries run after run (stagememo::load gives them their types; one kind, one

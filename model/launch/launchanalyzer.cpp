@@ -14,19 +14,13 @@
 
 #include <QHash>
 #include <QSet>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <map>
-#include <mutex>
 
 namespace rosarch {
 
 namespace {
-
-/// The stores of stage 2's results still being encoded (LaunchAnalyzer::finishStores()).
-std::mutex pendingMutex;
-QList<QFuture<void>> pending;
 
 /// Each launch file of the system analysed on its own, with its declared defaults, in the
 /// classifier scope: what its CCD shows (blueprint §1), in the order the system reaches them.
@@ -284,7 +278,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         keyOfResult(extra);
         // The shared cache writing its pack later (the worker's after its reply, an in-process
         // run's after the run): the memo is encoded on a pool thread while stage 3 runs.
-        storeLater(cache, [&cache, key, memo = Memo{locations, {std::move(extra), out}}] {
+        cache.storeLater([&cache, key, memo = Memo{locations, {std::move(extra), out}}] {
             cache.store(QStringLiteral("stage2"), key, cachecodec::encode(memo));
         });
     }
@@ -304,24 +298,6 @@ std::optional<LaunchFileDescription> LaunchAnalyzer::read(const SourceFile &f,
     if (f.language == SourceFile::Language::Yaml && YamlLaunchReader::isLaunchFile(content))
         return YamlLaunchReader::read(content, f.path);
     return std::nullopt;
-}
-
-void LaunchAnalyzer::storeLater(AnalysisCache &cache, std::function<void()> store)
-{
-    if (&cache == &AnalysisCache::shared() && cache.defersFlush()) {
-        const std::lock_guard lock(pendingMutex);
-        pending.append(QtConcurrent::run(std::move(store)));
-    } else {
-        store();
-    }
-}
-
-void LaunchAnalyzer::finishStores()
-{
-    const std::lock_guard lock(pendingMutex);
-    for (QFuture<void> &store : pending)
-        store.waitForFinished();
-    pending.clear();
 }
 
 LaunchDependencies analyzeLaunchFiles(const QString &root, const AtomicNodeList &nodes,

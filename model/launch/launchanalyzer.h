@@ -44,14 +44,6 @@ public:
     /// launch file of that format; none otherwise.
     static std::optional<LaunchFileDescription> read(const SourceFile &file,
                                                      const QByteArray &content);
-    /// Waits until the results that run() stores in a cache whose flushes are deferred
-    /// (AnalysisCache::setDeferFlush) are stored: run() encodes them on a pool thread, while
-    /// stage 3 runs. Whoever writes such a cache's pack calls this first.
-    static void finishStores();
-    /// Runs `store` (which stores an entry in `cache`) on a pool thread when `cache` is the
-    /// shared one and defers its flushes, to be waited for by finishStores(); else now. For
-    /// stage 2's memo and stage 3's (recoverWorkspace).
-    static void storeLater(AnalysisCache &cache, std::function<void()> store);
 };
 
 /// Convenience for a re-run of stage 2 alone: scans `root` again (fast) and runs the analyzer

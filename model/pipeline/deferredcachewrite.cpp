@@ -1,6 +1,5 @@
 #include "deferredcachewrite.h"
 #include "analysiscache.h"
-#include "launchanalyzer.h"
 
 #include <mutex>
 #include <thread>
@@ -19,7 +18,7 @@ public:
     ~Writes()
     {
         wait();
-        LaunchAnalyzer::finishStores(); // the worker's, whose pack is written after its reply
+        AnalysisCache::finishStores(); // the worker's, whose pack is written after its reply
     }
     Writes(const Writes &) = delete;
     Writes &operator=(const Writes &) = delete;
@@ -30,7 +29,7 @@ public:
         if (m_thread.joinable()) // one write at a time; the previous run's is long done
             m_thread.join();
         m_thread = std::thread([cache = m_cache] {
-            LaunchAnalyzer::finishStores();
+            AnalysisCache::finishStores();
             cache->flushDeferred();
         });
     }

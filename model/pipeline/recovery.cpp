@@ -116,7 +116,7 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
     Architecture a = composeOrReuse(r.nodes, r.launch, control, previous);
     if (memo && !a.canceled) {
         // Encoded on a pool thread when the cache's pack is written later (LaunchAnalyzer).
-        LaunchAnalyzer::storeLater(cache, [&cache, key, a] {
+        cache.storeLater([&cache, key, a] {
             cache.store(QStringLiteral("stage3"), key, encodeArchitecture(a));
         });
         cache.flush();

@@ -378,7 +378,7 @@ int main(int argc, char **argv)
         }
         frame(stagestream::Result, RawPayload{payload});
         // The cache's pack is written once the supervisor has its reply.
-        LaunchAnalyzer::finishStores();
+        AnalysisCache::finishStores();
         AnalysisCache::shared().flushDeferred();
         if (warm && !request.last && request.job == StageRequest::Job::Recovery &&
             !result.nodes.canceled)

@@ -161,6 +161,17 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
     const int total = int(sources.size());
     int done = 0;
     QMutex reportMutex;
+    // What the files parsed store in the cache, encoded once every file is done (storeLater):
+    // while the files are parsed, both cores have better things to do.
+    struct Store
+    {
+        QByteArray key;
+        std::optional<CppFileFacts> facts; ///< none: the facts came from the cache
+        QByteArray manifestKey;
+        CppManifest manifest;
+    };
+    std::vector<Store> stores;
+    QMutex storesMutex;
     auto extract = [&](const SourceFile *file) {
         CppFileFacts facts;
         facts.path = file->path;
@@ -239,16 +250,18 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
                     const QByteArray key =
                         AnalysisCache::key({"cpp", file->path.toUtf8(), file->package.toUtf8(),
                                             bytes, CppFactsCodec::digest(preprocessed.macros)});
+                    Store store{key, std::nullopt, manifestKey, {}};
                     const std::optional<QByteArray> entry = cache.load(QStringLiteral("cpp"), key);
                     if (!entry || !CppFactsCodec::decode(*entry, &facts)) {
                         facts = parsed(std::move(bytes), *file, preprocessed.macros);
-                        cache.store(QStringLiteral("cpp"), key, CppFactsCodec::encode(facts));
+                        store.facts = facts; // shares the lists, which nothing changes
                     }
                     manifest.diagnostics = read + preprocessed.diagnostics;
                     manifest.key = key;
-                    cache.store(QStringLiteral("cppmanifest"), manifestKey,
-                                cachecodec::encode(manifest));
                     facts.diagnostics = manifest.diagnostics + facts.diagnostics;
+                    store.manifest = std::move(manifest);
+                    const QMutexLocker lock(&storesMutex);
+                    stores.push_back(std::move(store));
                 }
             } catch (const std::exception &e) { // out of memory: this file, not the run
                 facts = CppFileFacts();
@@ -262,6 +275,16 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
         return facts;
     };
     QList<CppFileFacts> files = mapLargestFirst<CppFileFacts>(sources, extract);
+    if (!stores.empty()) {
+        cache.storeLater([&cache, stores = std::move(stores)] {
+            for (const Store &s : stores) {
+                if (s.facts)
+                    cache.store(QStringLiteral("cpp"), s.key, CppFactsCodec::encode(*s.facts));
+                cache.store(QStringLiteral("cppmanifest"), s.manifestKey,
+                            cachecodec::encode(s.manifest));
+            }
+        });
+    }
     if (control.isCanceled())
         return {};
 

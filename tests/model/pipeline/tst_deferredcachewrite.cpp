@@ -2,13 +2,15 @@
 // them to a thread of its own, whose pack is complete once written (or once the process has
 // ended), so that the next run is warm; the result is the same as without the cache; a canceled
 // run and a caller's own cache are handled as before; the worker's deferral is left alone, and
-// its pack has stage 2's memo, encoded on a pool thread (LaunchAnalyzer::finishStores).
+// its pack has stage 2's memo, encoded on a pool thread (AnalysisCache::finishStores).
 #include "analysiscache.h"
+#include "cppnodeanalyzer.h"
 #include "deferredcachewrite.h"
 #include "recovery.h"
 #include "stageprocess.h"
 #include "testsupport.h"
 #include "workerprocess.h"
+#include "workspacescanner.h"
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -164,6 +166,27 @@ private Q_SLOTS:
         QCOMPARE(packsIn(m_cacheRoot.path()), after);
         QVERIFY(warm.recovery == cold.recovery);
         QVERIFY(cold.recovery == uncached(root));
+    }
+
+    void theCppFactsAreInThePackThoughEncodedAfterTheFiles()
+    {
+        // Stage 1 encodes the facts of the C++ files it parsed once every file is done
+        // (AnalysisCache::storeLater): the pack written after the run has them all, so that a
+        // cache reading it parses no C++ file again and stores nothing.
+        const QString root = test::dataDir(QStringLiteral("cpp_helpers/ws"));
+        const Recovery cold = recoverWorkspace(root);
+        QVERIFY(!cold.nodes.nodes.isEmpty());
+        DeferredCacheWrite::waitForWrites();
+        AnalysisCache again(AnalysisCache::defaultRoot(), AnalysisCache::kDefaultMaxBytes, 0);
+        StageControl control;
+        control.cache = &again;
+        const Workspace ws = WorkspaceScanner::scan(root, control);
+        const CppNodeAnalyzer analyzer(ws);
+        const LanguageAnalysis analysis = analyzer.analyze(control);
+        QVERIFY(!analysis.nodes.isEmpty());
+        QVERIFY(again.statistics().hits > 0);
+        QCOMPARE(again.statistics().misses, 0);
+        QCOMPARE(again.statistics().stores, 0);
     }
 
     void aHeadlessRunLeavesACompleteCacheWhenItExits()
