@@ -3,6 +3,7 @@
 #include "cppsyntax.h"
 
 #include <QRegularExpression>
+#include <QThread>
 
 // Ports created through helpers: classes and free functions that receive the node (`this`,
 // shared_from_this(), a procedural node) and create ports on it.
@@ -53,6 +54,18 @@ CppHelperPorts::CppHelperPorts(
 {
 }
 
+QList<Evidence> CppHelperPorts::takeBoundsHit() const
+{
+    const QMutexLocker lock(&m_boundsMutex);
+    return m_boundsHit.take(QThread::currentThreadId());
+}
+
+void CppHelperPorts::boundHit(const Evidence &where) const
+{
+    const QMutexLocker lock(&m_boundsMutex);
+    m_boundsHit[QThread::currentThreadId()].append(where);
+}
+
 bool CppHelperPorts::isOwner(int cls) const
 {
     return cls >= 0 && cls < int(m_ownedNodes.size()) && m_ownedNodes[size_t(cls)];
@@ -62,7 +75,7 @@ void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkC
                                     int depth, QList<Port> *ports) const
 {
     if (depth > kMaxHelperDepth) {
-        m_boundsHit.append(inst.evidence);
+        boundHit(inst.evidence);
         return;
     }
     bool handsNode = false;
@@ -94,7 +107,7 @@ void CppHelperPorts::addFreeCallPortsAt(const CppFreeCall &call, const CppLinkCo
                                         int depth, QList<Port> *ports) const
 {
     if (depth > kMaxHelperDepth) {
-        m_boundsHit.append(call.evidence);
+        boundHit(call.evidence);
         return;
     }
     bool handsNode = false;
@@ -180,7 +193,7 @@ void CppHelperPorts::addMethodCallPorts(const CppMethodCall &call, const CppLink
                                         int depth, QList<Port> *ports) const
 {
     if (depth > kMaxHelperDepth)
-        m_boundsHit.append(call.evidence);
+        boundHit(call.evidence);
     if (depth > kMaxHelperDepth || ctx.cls < 0)
         return;
     CppInstantiation asMember;

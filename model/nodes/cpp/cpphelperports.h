@@ -7,8 +7,7 @@
 
 #include <QHash>
 #include <QList>
-
-#include <utility>
+#include <QMutex>
 
 #include <vector>
 
@@ -45,9 +44,9 @@ public:
 
     /// Helper chains are followed this deep; what lies deeper is not given to the node.
     static constexpr int kMaxHelperDepth = 3;
-    /// Where the depth bound was hit since the last call (the deepest call site not followed),
-    /// cleared by the call.
-    QList<Evidence> takeBoundsHit() const { return std::exchange(m_boundsHit, {}); }
+    /// Where the depth bound was hit on this thread since its last call (the deepest call site
+    /// not followed), cleared by the call: the linker links classes in parallel.
+    QList<Evidence> takeBoundsHit() const;
 
 private:
     void addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
@@ -67,7 +66,10 @@ private:
     const CppNameResolver &m_names;
     const QHash<QString, QList<CppClassIndex::FunctionRef>> &m_freeFunctionsByName;
     const std::vector<const CppProceduralNode *> &m_ownedNodes;
-    mutable QList<Evidence> m_boundsHit; ///< the linker is single-threaded
+    void boundHit(const Evidence &where) const;
+
+    mutable QMutex m_boundsMutex; ///< the bounds are hit rarely: one lock for all threads
+    mutable QHash<Qt::HANDLE, QList<Evidence>> m_boundsHit; ///< by thread
 };
 
 } // namespace rosarch

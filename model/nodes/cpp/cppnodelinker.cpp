@@ -5,9 +5,13 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QSet>
+#include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
+#include <functional>
 #include <map>
+#include <numeric>
+#include <optional>
 
 namespace rosarch {
 
@@ -120,8 +124,7 @@ LanguageAnalysis CppNodeLinker::link() const
 {
     LanguageAnalysis out;
     // Where a helper chain went deeper than followed, one note per node.
-    const auto reportBounds = [&](const AtomicNode &node) {
-        const QList<Evidence> hit = m_helpers.takeBoundsHit();
+    const auto reportBounds = [&](const AtomicNode &node, const QList<Evidence> &hit) {
         if (hit.isEmpty())
             return;
         Diagnostic d;
@@ -134,14 +137,29 @@ LanguageAnalysis CppNodeLinker::link() const
         d.evidence = hit.front();
         out.diagnostics.append(d);
     };
-    for (int i = 0; i < m_index.size(); ++i) {
+    // The classes each on their own, in parallel (autoware: ~40 ms of one core), in order.
+    struct Linked
+    {
+        std::optional<AtomicNode> node;
+        QList<Evidence> boundsHit;
+    };
+    std::vector<int> classes(size_t(m_index.size()));
+    std::iota(classes.begin(), classes.end(), 0);
+    const std::function<Linked(int)> linkClass = [this](int i) {
+        Linked linked;
         if (m_index.at(i).node)
-            out.nodes.append(classNode(i));
+            linked.node = classNode(i);
         else if (const CppProceduralNode *owned = ownedNode(i))
-            out.nodes.append(classNode(i, owned));
-        else
+            linked.node = classNode(i, owned);
+        linked.boundsHit = m_helpers.takeBoundsHit();
+        return linked;
+    };
+    for (const Linked &linked :
+         QtConcurrent::blockingMapped<std::vector<Linked>>(classes, linkClass)) {
+        if (!linked.node)
             continue;
-        reportBounds(out.nodes.last());
+        out.nodes.append(*linked.node);
+        reportBounds(out.nodes.last(), linked.boundsHit);
     }
     QHash<QString, int> stems;
     for (const auto &ref : m_index.freeFunctions()) {
@@ -149,9 +167,9 @@ LanguageAnalysis CppNodeLinker::link() const
             continue;
         QList<AtomicNode> procedural;
         addProceduralNodes(ref, &procedural, &stems);
+        const QList<Evidence> hit = m_helpers.takeBoundsHit();
         if (!procedural.isEmpty())
-            reportBounds(procedural.first());
-        m_helpers.takeBoundsHit();
+            reportBounds(procedural.first(), hit);
         addEntryPoint(ref, procedural, &out.entryPoints);
         out.nodes += procedural;
     }
@@ -168,11 +186,11 @@ LanguageAnalysis CppNodeLinker::link() const
             // A plugin that creates no ports (a planner's math, a costmap filter) is no part
             // of the communication architecture.
             AtomicNode n = pluginNode(c, e, templateArguments);
+            const QList<Evidence> hit = m_helpers.takeBoundsHit();
             if (!n.ports.isEmpty()) {
                 out.nodes.append(n);
-                reportBounds(n);
+                reportBounds(n, hit);
             }
-            m_helpers.takeBoundsHit();
         }
     }
     for (const CppFileFacts &file : m_files)

@@ -514,6 +514,60 @@ private Q_SLOTS:
         QCOMPARE(bound->evidence.file, QStringLiteral("chain.cpp"));
     }
 
+    // The classes are linked in parallel: each note of a bound hit goes to the class whose chain
+    // hit it, in the classes' order, and a class within the bound gets its port and no note.
+    void eachClassGetsItsOwnHelperDepthNote()
+    {
+        QTemporaryDir dir;
+        QFile f(dir.filePath(QStringLiteral("chains.cpp")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray code;
+        constexpr int kClasses = 40;
+        for (int c = 0; c < kClasses; ++c) {
+            const QByteArray id = QByteArray::number(c);
+            const int depth = c % 2 == 0 ? 5 : 2; // even classes: beyond the bound of 3
+            for (int level = depth; level >= 1; --level) {
+                const QByteArray name = "H" + id + "_" + QByteArray::number(level);
+                const QByteArray inner =
+                    level == depth ? "    pub_ = node->create_publisher<std_msgs::msg::Empty>(\"t" +
+                                         id + "\", 1);\n"
+                                   : "    next_ = std::make_shared<H" + id + "_" +
+                                         QByteArray::number(level + 1) + ">(node);\n";
+                code += "struct " + name + " {\n  explicit " + name + "(rclcpp::Node * node) {\n" +
+                        inner + "  }\n};\n";
+            }
+            code += "class Deep" + id + " : public rclcpp::Node {\npublic:\n  Deep" + id +
+                    "() : Node(\"d" + id + "\") { h_ = std::make_shared<H" + id +
+                    "_1>(this); }\n};\n";
+        }
+        f.write(code);
+        f.close();
+        Workspace ws;
+        ws.root = dir.path();
+        ws.files.append({QStringLiteral("chains.cpp"), QStringLiteral("chains"),
+                         SourceFile::Language::Cpp, f.size()});
+        const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
+        QCOMPARE(a.nodes.size(), kClasses);
+        QStringList noted;
+        for (const Diagnostic &d : a.diagnostics)
+            if (d.code == QLatin1String("helper-depth"))
+                noted.append(
+                    d.message.section(QLatin1Char(' '), 5, 5)); // "... helpers of DeepN here"
+        QStringList deep; // in the classes' order, as the notes are
+        for (int c = 0; c < kClasses; c += 2)
+            deep.append(QStringLiteral("Deep%1").arg(c));
+        for (const AtomicNode &n : a.nodes) {
+            const int c = n.className.mid(4).toInt();
+            if (c % 2 == 0) {
+                QVERIFY2(n.ports.isEmpty(), qPrintable(n.className));
+            } else {
+                QCOMPARE(n.ports.size(), 1);
+                QCOMPARE(n.ports.first().name, QStringLiteral("t%1").arg(c));
+            }
+        }
+        QCOMPARE(noted, deep);
+    }
+
     void interfaceTypes_data()
     {
         QTest::addColumn<QString>("written");
