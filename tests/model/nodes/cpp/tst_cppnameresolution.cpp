@@ -518,9 +518,6 @@ private Q_SLOTS:
     // hit it, in the classes' order, and a class within the bound gets its port and no note.
     void eachClassGetsItsOwnHelperDepthNote()
     {
-        QTemporaryDir dir;
-        QFile f(dir.filePath(QStringLiteral("chains.cpp")));
-        QVERIFY(f.open(QIODevice::WriteOnly));
         QByteArray code;
         constexpr int kClasses = 40;
         for (int c = 0; c < kClasses; ++c) {
@@ -540,13 +537,7 @@ private Q_SLOTS:
                     "() : Node(\"d" + id + "\") { h_ = std::make_shared<H" + id +
                     "_1>(this); }\n};\n";
         }
-        f.write(code);
-        f.close();
-        Workspace ws;
-        ws.root = dir.path();
-        ws.files.append({QStringLiteral("chains.cpp"), QStringLiteral("chains"),
-                         SourceFile::Language::Cpp, f.size()});
-        const LanguageAnalysis a = CppNodeAnalyzer(ws).analyze();
+        const LanguageAnalysis a = analyzeFiles({{"chains.cpp", "chains", code}});
         QCOMPARE(a.nodes.size(), kClasses);
         QStringList noted;
         for (const Diagnostic &d : a.diagnostics)
