@@ -441,7 +441,8 @@ QList<QFuture<void>> pending;
 
 void AnalysisCache::storeLater(std::function<void()> store)
 {
-    if (this == &shared() && defersFlush()) {
+    // Asking for shared() makes it: only a cache that defers asks.
+    if (defersFlush() && this == &shared()) {
         const std::lock_guard lock(pendingMutex);
         pending.append(QtConcurrent::run(std::move(store)));
     } else {
