@@ -13,7 +13,6 @@
 #include <QRandomGenerator>
 #include <QStandardPaths>
 #include <QTemporaryFile>
-#include <QtConcurrent/QtConcurrentRun>
 #include <QtEndian>
 
 #include <unistd.h>
@@ -22,7 +21,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <mutex>
 
 namespace rosarch {
 
@@ -429,33 +427,6 @@ void AnalysisCache::waitForWrites()
     QMutexLocker writer(&m_writerMutex);
     if (m_writer.joinable())
         m_writer.join();
-}
-
-namespace {
-
-/// The stores storeLater() began that finishStores() has not waited for.
-std::mutex pendingMutex;
-QList<QFuture<void>> pending;
-
-} // namespace
-
-void AnalysisCache::storeLater(std::function<void()> store)
-{
-    // Asking for shared() makes it: only a cache that defers asks.
-    if (defersFlush() && this == &shared()) {
-        const std::lock_guard lock(pendingMutex);
-        pending.append(QtConcurrent::run(std::move(store)));
-    } else {
-        store();
-    }
-}
-
-void AnalysisCache::finishStores()
-{
-    const std::lock_guard lock(pendingMutex);
-    for (QFuture<void> &store : pending)
-        store.waitForFinished();
-    pending.clear();
 }
 
 void AnalysisCache::write(bool lowPriority)
