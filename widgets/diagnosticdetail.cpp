@@ -35,6 +35,17 @@ DiagnosticDetail::DiagnosticDetail(QWidget *parent) : QTextBrowser(parent)
     });
 }
 
+QSize DiagnosticDetail::sizeHint() const
+{
+    return {QTextBrowser::sizeHint().width(), fontMetrics().lineSpacing() * 4 + 2 * frameWidth()};
+}
+
+QSize DiagnosticDetail::minimumSizeHint() const
+{
+    return {QTextBrowser::minimumSizeHint().width(),
+            fontMetrics().lineSpacing() * 2 + 2 * frameWidth()};
+}
+
 void DiagnosticDetail::showFinding(const std::optional<Diagnostic> &diagnostic,
                                    const QString &package, const std::optional<FindingMark> &mark)
 {

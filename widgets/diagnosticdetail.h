@@ -23,6 +23,10 @@ public:
                      const std::optional<FindingMark> &mark = std::nullopt);
     const std::optional<Diagnostic> &finding() const { return m_finding; }
 
+    /// A few lines: the pane sits under the findings, which keep most of a short Log.
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
 Q_SIGNALS:
     /// A place of the finding was clicked.
     void evidenceRequested(const rosarch::Evidence &evidence);

@@ -270,6 +270,32 @@ private Q_SLOTS:
         QTRY_COMPARE(w.width(), 1366);
     }
 
+    void theLogShowsSeveralFindingsInTheDefaultLayout()
+    {
+        // Before: in the default layout of a 1,440 x 900 window the explanation pane under
+        // the findings asked for as much height as the table, which showed one row.
+        MainWindow w;
+        w.show();
+        w.resize(1440, 900);
+        QTRY_COMPARE(w.height(), 900);
+        QAction *reset = nullptr;
+        for (QAction *a : w.findChildren<QAction *>())
+            if (a->text() == QStringLiteral("&Reset Layout"))
+                reset = a;
+        QVERIFY(reset);
+        reset->trigger();
+        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTreeView *findings = w.logView()->diagnosticsView();
+        QTRY_VERIFY(findings->model()->rowCount() >= 3);
+        const int rowHeight = findings->sizeHintForRow(0);
+        QVERIFY(rowHeight > 0);
+        QTRY_VERIFY2(findings->viewport()->height() >= 3 * rowHeight,
+                     qPrintable(QStringLiteral("%1 px for rows of %2 px")
+                                    .arg(findings->viewport()->height())
+                                    .arg(rowHeight)));
+    }
+
     void findFiltersTheTree()
     {
         MainWindow w;
