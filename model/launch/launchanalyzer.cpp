@@ -132,6 +132,33 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
         if (!unique.contains(d))
             unique.append(d);
     out.diagnostics = unique;
+    // Findings about an include site: one per site however many systems reach it (a file
+    // included by 46 roots is one finding with 46 contexts, as stage 3's checks do it).
+    QHash<QString, const LaunchFileInstance *> byId;
+    for (const LaunchFileInstance &i : std::as_const(out.instances))
+        byId.insert(i.id, &i);
+    QHash<QString, qsizetype> seen;
+    auto addAtSite = [&](Diagnostic d, const LaunchFileInstance &i) {
+        const LaunchFileInstance *root = &i;
+        // Bounded: parent ids form a tree, but a broken one must not loop.
+        for (qsizetype up = 0; up < out.instances.size() && !root->parentId.isEmpty(); ++up) {
+            const LaunchFileInstance *parent = byId.value(root->parentId);
+            if (!parent)
+                break;
+            root = parent;
+        }
+        const QString system = root->file.isEmpty() ? root->type : root->file;
+        const QString key = d.key() + QLatin1Char('\n') + QString::number(d.evidence.line);
+        if (const auto it = seen.constFind(key); it != seen.cend()) {
+            QStringList &contexts = out.diagnostics[*it].contexts;
+            if (!contexts.contains(system))
+                contexts.append(system);
+            return;
+        }
+        d.contexts = {system};
+        seen.insert(key, out.diagnostics.size());
+        out.diagnostics.append(d);
+    };
     // An include that names no launch file of the workspace (and no package outside it) is
     // said: its nodes are missing from the system.
     for (const LaunchFileInstance &i : std::as_const(out.instances))
@@ -148,7 +175,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
                                "the nodes it would start are missing.")
                     .arg(written);
             d.evidence = i.evidence;
-            out.diagnostics.append(d);
+            addAtSite(d, i);
         }
     // External includes are listed too, so a headless run shows what was not followed.
     for (const LaunchFileInstance &i : std::as_const(out.instances))
@@ -160,7 +187,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
                 QStringLiteral("Include of %1 from package %2, which is not in the workspace.")
                     .arg(i.type, i.package);
             d.evidence = i.evidence;
-            out.diagnostics.append(d);
+            addAtSite(d, i);
         }
     return out;
 }

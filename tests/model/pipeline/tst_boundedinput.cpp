@@ -321,6 +321,36 @@ private Q_SLOTS:
                                    "$(find-pkg-share pkg)/launch/gone.launch.xml was not found")),
                  qPrintable(missing.first()));
     }
+
+    void anIncludeSiteReachedFromTwoSystemsIsOneFinding()
+    {
+        // Before: one finding per instance of the including file, identical rows in the Log.
+        QTemporaryDir dir;
+        healthyPackage(dir.path());
+        writeFile(dir.path() + "/src/pkg/launch/shared.launch.xml",
+                  "<launch>\n  <include file=\"$(find-pkg-share pkg)/launch/gone.launch.xml\"/>\n"
+                  "  <include file=\"$(find-pkg-share nav2_bringup)/launch/rviz.launch.py\"/>\n"
+                  "</launch>\n");
+        for (const char *root : {"first", "second"})
+            writeFile(dir.path() + "/src/pkg/launch/" + root + ".launch.xml",
+                      "<launch>\n  <include file=\"$(find-pkg-share pkg)/launch/"
+                      "shared.launch.xml\"/>\n</launch>\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        for (const char *code : {"no-such-launch-file", "external-include"}) {
+            QList<Diagnostic> found;
+            for (const Diagnostic &d : r.launch.diagnostics)
+                if (d.code == QLatin1String(code))
+                    found.append(d);
+            QCOMPARE(found.size(), 1);
+            QCOMPARE(found.first().evidence.file,
+                     QStringLiteral("src/pkg/launch/shared.launch.xml"));
+            QStringList contexts = found.first().contexts;
+            contexts.sort();
+            // The two systems that reach it (the included file is no system of its own).
+            QCOMPARE(contexts, (QStringList{QStringLiteral("src/pkg/launch/first.launch.xml"),
+                                            QStringLiteral("src/pkg/launch/second.launch.xml")}));
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestBoundedInput)
