@@ -95,6 +95,23 @@ QRectF DiagramScene::sceneRectFor(const QRectF &bounds)
                            kFrameMargin + kSceneMargin, kFrameMargin + kSceneMargin);
 }
 
+QRectF DiagramScene::readingStart() const
+{
+    QRectF best;
+    qreal bestDistance = 0;
+    for (const DiagramItem *item : m_items) {
+        if (!dynamic_cast<const DiagramNodeItem *>(item))
+            continue;
+        const QRectF r = item->sceneBoundingRect();
+        const qreal distance = QLineF(m_frame.topLeft(), r.topLeft()).length();
+        if (best.isNull() || distance < bestDistance) {
+            best = r;
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
 QStringList DiagramScene::keys() const
 {
     QStringList k = m_items.keys();

@@ -1,5 +1,6 @@
 #include "diagramview.h"
 #include "diagramminimap.h"
+#include "diagramscene.h"
 
 #include <QKeyEvent>
 #include <QLabel>
@@ -82,7 +83,19 @@ void DiagramView::fitDiagram()
         centerOn(rect.center());
     } else { // too big to fit legibly: start where reading starts, at the top left
         const QSizeF visible = QSizeF(viewport()->size()) / zoom();
-        centerOn(rect.left() + visible.width() / 2, rect.top() + visible.height() / 2);
+        QPointF corner = rect.topLeft();
+        // Unless no box is in sight from there (a wide layout's corner can be empty frame):
+        // then from the box nearest that corner.
+        const auto *diagram = qobject_cast<const DiagramScene *>(scene());
+        const QRectF first = diagram ? diagram->readingStart() : QRectF();
+        if (!first.isNull() && !QRectF(corner, visible).intersects(first)) {
+            constexpr qreal kMargin = 24;
+            corner = {std::clamp(first.left() - kMargin, rect.left(),
+                                 std::max(rect.left(), rect.right() - visible.width())),
+                      std::clamp(first.top() - kMargin, rect.top(),
+                                 std::max(rect.top(), rect.bottom() - visible.height()))};
+        }
+        centerOn(corner.x() + visible.width() / 2, corner.y() + visible.height() / 2);
     }
     m_minimap->updateVisibility();
 }

@@ -58,6 +58,7 @@ private Q_SLOTS:
     void askingListsTheRoots();
     void tooBigStartsAsAnOverview();
     void minimapShowsAndPans();
+    void fitStartsAtTheFirstBoxWhenTheCornerIsEmpty();
 };
 
 void TestDiagramNavigation::pickerListsAndSwitchesRoots()
@@ -268,6 +269,52 @@ void TestDiagramNavigation::minimapShowsAndPans()
     // Fit again: it all fits, the minimap goes.
     panel.view()->fitDiagram();
     QTRY_VERIFY(!minimap->isVisible()); // once the scroll bars have gone
+}
+
+void TestDiagramNavigation::fitStartsAtTheFirstBoxWhenTheCornerIsEmpty()
+{
+    // Before: too big to fit legibly, Fit showed the frame's top left corner, which a wide
+    // layout (autoware's perception, expanded) leaves empty: a blank view.
+    LayoutGraph graph;
+    LayoutGeometry geometry;
+    geometry.bounds = QRectF(0, 0, 4000, 3000);
+    const std::pair<const char *, QRectF> boxes[] = {{"first", QRectF(1500, 1800, 120, 40)},
+                                                     {"last", QRectF(3800, 2900, 120, 40)}};
+    for (const auto &[id, rect] : boxes) {
+        LayoutNode n;
+        n.id = QString::fromLatin1(id);
+        n.key = QStringLiteral("part:") + n.id;
+        n.label = n.id;
+        n.width = rect.width();
+        n.height = rect.height();
+        graph.nodes.append(n);
+        geometry.nodes.insert(n.id, rect);
+    }
+    DiagramScene scene;
+    scene.setDiagram(graph, geometry, QStringLiteral("wide"), QString());
+    DiagramView view;
+    view.setScene(&scene);
+    view.resize(400, 300);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setLegibleZoom(1.0);
+    view.fitDiagram();
+    QCOMPARE(view.zoom(), 1.0);
+    const QRectF shown = view.mapToScene(view.viewport()->rect()).boundingRect();
+    QVERIFY2(shown.contains(scene.item(QStringLiteral("part:first"))->sceneBoundingRect()),
+             qPrintable(QStringLiteral("shown %1,%2 %3x%4")
+                            .arg(shown.left())
+                            .arg(shown.top())
+                            .arg(shown.width())
+                            .arg(shown.height())));
+
+    // A box in sight of the corner: the corner it is, the frame's title with it.
+    geometry.nodes.insert(QStringLiteral("first"), QRectF(60, 40, 120, 40));
+    scene.setDiagram(graph, geometry, QStringLiteral("wide"), QString());
+    view.fitDiagram();
+    const QRectF corner = view.mapToScene(view.viewport()->rect()).boundingRect();
+    QVERIFY(qAbs(corner.top() - scene.sceneRect().top()) < 2);
+    QVERIFY(qAbs(corner.left() - scene.sceneRect().left()) < 2);
 }
 
 QTEST_MAIN(TestDiagramNavigation)
