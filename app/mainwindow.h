@@ -5,6 +5,7 @@
 #include <QMainWindow>
 
 class QDockWidget;
+class QFrame;
 class QLabel;
 class QMenu;
 class QProgressBar;
@@ -191,6 +192,7 @@ private:
     QMenu *m_recentMenu = nullptr;
 
     QLabel *m_countsLabel = nullptr;
+    QFrame *m_countsSeparator = nullptr;
     QProgressBar *m_progressBar = nullptr;
     QToolButton *m_cancelButton = nullptr;
 

@@ -8,6 +8,7 @@
 #include "stagerunner.h"
 
 #include <QAction>
+#include <QFrame>
 #include <QLabel>
 #include <QLocale>
 #include <QProgressBar>
@@ -27,6 +28,13 @@ void MainWindow::createStatusBar()
     m_cancelButton->setDefaultAction(m_cancelAction);
     m_cancelButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_cancelButton->setAutoRaise(true);
+    // A line between the messages and the counts: a long message is cut where they begin,
+    // and its last number would otherwise read as the first count's.
+    m_countsSeparator = new QFrame(this);
+    m_countsSeparator->setFrameShape(QFrame::VLine);
+    m_countsSeparator->setFrameShadow(QFrame::Sunken);
+    m_countsLabel->setContentsMargins(4, 0, 0, 0);
+    statusBar()->addPermanentWidget(m_countsSeparator);
     statusBar()->addPermanentWidget(m_countsLabel);
     statusBar()->addPermanentWidget(m_progressBar);
     statusBar()->addPermanentWidget(m_cancelButton);
@@ -84,6 +92,12 @@ void MainWindow::updateLaunchPlaceholder()
 
 void MainWindow::setRunning(bool running)
 {
+    // Before a first result the counts would all read 0, as if the workspace were empty.
+    const bool result = !m_document->atomicNodes().nodes.isEmpty() ||
+                        !m_document->launchDependencies().launchFiles.isEmpty() ||
+                        !m_document->atomicNodes().packages.isEmpty();
+    m_countsLabel->setVisible(!running || result);
+    m_countsSeparator->setVisible(!running || result);
     m_progressBar->setVisible(running);
     m_cancelButton->setVisible(running);
     m_cancelAction->setEnabled(running);

@@ -84,7 +84,10 @@ private Q_SLOTS:
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QCOMPARE(started.count(), 1);
         QCOMPARE(w.workspace(), fixture());
+        // Before a first result, no counts: they would all read 0.
+        QVERIFY(!w.countsLabel()->isVisible());
         QVERIFY(finished.wait(60000));
+        QTRY_VERIFY(w.countsLabel()->isVisible());
         QCOMPARE(w.document()->workspaceRoot(), fixture());
         QCOMPARE(AppSettings().recentWorkspaces().value(0), fixture());
         QCOMPARE(AppSettings().lastWorkspace(), fixture());
