@@ -67,13 +67,13 @@ void MainWindow::createActions()
         m_nodePanel->focusFilter();
     });
 
-    m_nextDiagnosticAction = new QAction(tr("&Next Diagnostic"), this);
+    m_nextDiagnosticAction = new QAction(tr("&Next Finding"), this);
     m_nextDiagnosticAction->setShortcut(QKeySequence(Qt::Key_F8));
     connect(m_nextDiagnosticAction, &QAction::triggered, this, [this] {
         m_logDock->show();
         m_logView->selectNextDiagnostic();
     });
-    m_previousDiagnosticAction = new QAction(tr("&Previous Diagnostic"), this);
+    m_previousDiagnosticAction = new QAction(tr("&Previous Finding"), this);
     m_previousDiagnosticAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F8));
     connect(m_previousDiagnosticAction, &QAction::triggered, this, [this] {
         m_logDock->show();

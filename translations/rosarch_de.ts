@@ -3468,13 +3468,13 @@ The file was kept as %2.</source>
     </message>
     <message>
         <location filename="../app/mainwindowactions.cpp" line="70"/>
-        <source>&amp;Next Diagnostic</source>
-        <translation>&amp;Nächste Diagnose</translation>
+        <source>&amp;Next Finding</source>
+        <translation>&amp;Nächster Befund</translation>
     </message>
     <message>
         <location filename="../app/mainwindowactions.cpp" line="76"/>
-        <source>&amp;Previous Diagnostic</source>
-        <translation>&amp;Vorherige Diagnose</translation>
+        <source>&amp;Previous Finding</source>
+        <translation>&amp;Vorheriger Befund</translation>
     </message>
     <message>
         <location filename="../app/mainwindowactions.cpp" line="56"/>

@@ -7,6 +7,8 @@
 #include <QColor>
 #include <QFont>
 
+#include <algorithm>
+
 namespace rosarch {
 
 namespace {
@@ -291,6 +293,12 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
             return g.entries.size() == 1 ? tr("%1 (1 finding)").arg(label)
                                          : tr("%1 (%2 findings)").arg(label).arg(g.entries.size());
         case SortRole:
+            if (index.column() == SeverityColumn) { // by the worst finding in the group
+                int worst = 0;
+                for (int at : g.entries)
+                    worst = std::max(worst, rank(m_entries.at(at).diagnostic->severity));
+                return worst;
+            }
             return index.column() == ContextsColumn ? QVariant(int(g.entries.size()))
                                                     : QVariant(label);
         case GroupRole:
