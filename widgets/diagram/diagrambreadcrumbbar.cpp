@@ -12,6 +12,9 @@ DiagramBreadcrumbBar::DiagramBreadcrumbBar(QWidget *parent)
     m_layout->setContentsMargins(4, 0, 4, 0);
     m_layout->setSpacing(0);
     m_layout->addStretch(1);
+    // A deep path must not widen the diagram's dock (squeezing the panes beside it): what
+    // does not fit is cut at the right, the note first; the tooltips and the picker remain.
+    setMinimumWidth(fontMetrics().averageCharWidth() * 12);
 }
 
 void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path, const QString &note,

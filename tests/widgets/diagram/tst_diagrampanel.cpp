@@ -72,6 +72,7 @@ private Q_SLOTS:
     void drawsTheRootComposite();
     void searchFindsParts();
     void doubleClickOpensTheIncludeAndCrumbsGoBack();
+    void aDeepPathDoesNotWidenThePanel();
     void filtersHideElements();
     void collapseReducesANamespaceToOneBox();
     void clicksCarryIds();
@@ -168,6 +169,26 @@ void TestDiagramPanel::searchFindsParts()
     QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot1/extra"))->isMatched());
     panel.searchField()->setText(QStringLiteral("zzz"));
     QVERIFY(!panel.scene()->item(QStringLiteral("part:part4"))->isMatched());
+}
+
+void TestDiagramPanel::aDeepPathDoesNotWidenThePanel()
+{
+    // Before: the breadcrumbs' width was the panel's minimum, so opening an include with a
+    // long path and note (nav2's tb3_simulation) widened the diagram's dock and squeezed the
+    // panes beside it.
+    ShownPanel s;
+    QVERIFY(s.ok);
+    DiagramPanel &panel = s.panel;
+    const int before = panel.minimumSizeHint().width();
+    QList<DiagramBreadcrumbBar::Crumb> path;
+    for (int i = 0; i < 4; ++i)
+        path.append({QStringLiteral("lf%1").arg(i),
+                     QStringLiteral("unique_multi_tb3_simulation_%1").arg(i), QString()});
+    panel.breadcrumbBar()->setPath(
+        path, QStringLiteral("as included by unique_multi_tb3_simulation_launch.py"), QString());
+    QTRY_VERIFY(panel.breadcrumbBar()->sizeHint().width() > 800); // it would want that much
+    QVERIFY2(panel.minimumSizeHint().width() <= std::max(before, 400),
+             qPrintable(QString::number(panel.minimumSizeHint().width())));
 }
 
 void TestDiagramPanel::doubleClickOpensTheIncludeAndCrumbsGoBack()
