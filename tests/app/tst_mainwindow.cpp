@@ -52,6 +52,17 @@ QModelIndex treeCurrent(MainWindow &w)
     return w.nodePanel()->currentSourceIndex();
 }
 
+/// View → Reset Layout, found by its text as a person finds it; false when it is missing.
+bool resetLayout(MainWindow &w)
+{
+    for (QAction *a : w.findChildren<QAction *>())
+        if (a->text() == QStringLiteral("&Reset Layout")) {
+            a->trigger();
+            return true;
+        }
+    return false;
+}
+
 } // namespace
 
 class TestMainWindow : public QObject
@@ -281,12 +292,7 @@ private Q_SLOTS:
         w.show();
         w.resize(1440, 900);
         QTRY_COMPARE(w.height(), 900);
-        QAction *reset = nullptr;
-        for (QAction *a : w.findChildren<QAction *>())
-            if (a->text() == QStringLiteral("&Reset Layout"))
-                reset = a;
-        QVERIFY(reset);
-        reset->trigger();
+        QVERIFY(resetLayout(w));
         w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTreeView *findings = w.logView()->diagnosticsView();
@@ -489,12 +495,7 @@ private Q_SLOTS:
         QDockWidget *log = again.findChild<QDockWidget *>(QStringLiteral("logDock"));
         QVERIFY(log && !log->isVisible());
         QVERIFY(again.findChild<QDockWidget *>(QStringLiteral("sourceDock"))->isVisible());
-        QAction *reset = nullptr;
-        for (QAction *a : again.findChildren<QAction *>())
-            if (a->text() == QStringLiteral("&Reset Layout"))
-                reset = a;
-        QVERIFY(reset);
-        reset->trigger();
+        QVERIFY(resetLayout(again));
         QVERIFY(log->isVisible());
     }
 
