@@ -13,6 +13,9 @@
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <pwd.h>
+#include <unistd.h>
+
 namespace rosarch {
 
 const Recovery &Document::accepted() const
@@ -174,7 +177,12 @@ QString Document::author()
     if (!configured.isEmpty())
         return configured;
     const QString user = qEnvironmentVariable("USER", qEnvironmentVariable("USERNAME"));
-    return user.isEmpty() ? QStringLiteral("unknown") : user;
+    if (!user.isEmpty())
+        return user;
+    // A session without USER (a desktop launcher, a service): the account's own name.
+    if (const passwd *account = ::getpwuid(::getuid()); account && account->pw_name)
+        return QString::fromLocal8Bit(account->pw_name);
+    return QStringLiteral("unknown");
 }
 
 bool Document::prepare(Correction *correction, int offset) const

@@ -9,6 +9,9 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <pwd.h>
+#include <unistd.h>
+
 using namespace rosarch;
 
 namespace {
@@ -74,6 +77,28 @@ private Q_SLOTS:
         const QString project = ProjectFile::locate(m_ws.path());
         QFile::remove(project);
         QFile::remove(ProjectFile::autosavePath(project));
+    }
+
+    void theAuthorIsTheAccountWithoutUserInTheEnvironment()
+    {
+        // Before: a session without USER (a desktop launcher) recorded "unknown" as who
+        // accepted a finding or made a correction.
+        const QByteArray saved[] = {qgetenv("USER"), qgetenv("USERNAME"),
+                                    qgetenv("ROSARCH_AUTHOR")};
+        const char *names[] = {"USER", "USERNAME", "ROSARCH_AUTHOR"};
+        for (const char *name : names)
+            qunsetenv(name);
+        const passwd *account = ::getpwuid(::getuid());
+        QVERIFY(account && account->pw_name);
+        QCOMPARE(Document::author(), QString::fromLocal8Bit(account->pw_name));
+        qputenv("ROSARCH_AUTHOR", "Ada");
+        QCOMPARE(Document::author(), QStringLiteral("Ada"));
+        for (int i = 0; i < 3; ++i) {
+            if (saved[i].isEmpty())
+                qunsetenv(names[i]);
+            else
+                qputenv(names[i], saved[i]);
+        }
     }
 
     void eachCorrectionUndoesAndRedoes()
