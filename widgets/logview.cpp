@@ -78,7 +78,8 @@ LogView::LogView(QWidget *parent)
 
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(5000);
-    m_log->setLineWrapMode(QPlainTextEdit::NoWrap);
+    // Wrapped: the pane is narrow beside the findings, and a cut line hid the stage times.
+    m_log->setLineWrapMode(QPlainTextEdit::WidgetWidth);
     m_log->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_log->setPlaceholderText(tr("Progress and messages of stage runs appear here."));
     m_log->setFrameShape(QFrame::NoFrame);
