@@ -23,6 +23,19 @@ QRectF DiagramClusterItem::boundingRect() const
                            kDecorationMargin);
 }
 
+DiagramClusterItem::Tab DiagramClusterItem::tab() const
+{
+    const QFontMetricsF fm(style().titleFont);
+    const QFontMetricsF dm(style().smallFont);
+    // The detail gives way when the frame is narrower than the whole tab would be.
+    const qreal room = m_rect.width() - fm.horizontalAdvance(m_label) - 30;
+    Tab t;
+    if (room > dm.horizontalAdvance(QStringLiteral("…")) * 2)
+        t.detail = dm.elidedText(m_detail, Qt::ElideMiddle, room);
+    t.width = fm.horizontalAdvance(m_label) + dm.horizontalAdvance(t.detail) + 30;
+    return t;
+}
+
 void DiagramClusterItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
 {
     const DiagramStyle &s = style();
@@ -50,7 +63,7 @@ void DiagramClusterItem::paint(QPainter *painter, const QStyleOptionGraphicsItem
     if (frame) {
         // The composite's name plus what it is, in a tab on the top-left corner.
         const QFontMetricsF dm(s.smallFont);
-        const qreal width = fm.horizontalAdvance(m_label) + dm.horizontalAdvance(m_detail) + 30;
+        const auto [detail, width] = this->tab();
         const QRectF tab(m_rect.left(), m_rect.top(), width, fm.height() + 10);
         QPainterPath tabPath;
         tabPath.moveTo(tab.bottomLeft());
@@ -67,8 +80,8 @@ void DiagramClusterItem::paint(QPainter *painter, const QStyleOptionGraphicsItem
         painter->setFont(s.smallFont);
         painter->setPen(s.mutedText);
         painter->drawText(
-            QRectF(line.right() + 6, line.top(), dm.horizontalAdvance(m_detail) + 2, line.height()),
-            Qt::AlignLeft | Qt::AlignVCenter, m_detail);
+            QRectF(line.right() + 6, line.top(), dm.horizontalAdvance(detail) + 2, line.height()),
+            Qt::AlignLeft | Qt::AlignVCenter, detail);
     } else {
         if (line.isEmpty())
             line = QRectF(m_rect.left() + 8, m_rect.top() + 4, m_rect.width() - 16, fm.height());

@@ -26,6 +26,15 @@ public:
     void paint(QPainter *painter, const QStyleOptionGraphicsItem *option, QWidget *widget) override;
     QString searchText() const override;
 
+    /// The frame's tab on its top-left corner: the name, then the detail as it fits (the
+    /// launch file's path, elided in the middle so the tab stays inside the frame).
+    struct Tab
+    {
+        QString detail;
+        qreal width = 0;
+    };
+    Tab tab() const;
+
 private:
     Kind m_kind;
     QRectF m_rect;

@@ -5,6 +5,8 @@
 #include <QDir>
 #include <QLineEdit>
 
+#include <algorithm>
+
 namespace rosarch {
 
 namespace {
@@ -52,7 +54,16 @@ void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
     const QSignalBlocker blocker(this);
     m_roots = roots;
     clear();
-    for (const LaunchRoot &r : roots) {
+    // By name, as a person looks a name up (the analysis lists them by path, which put
+    // autoware's roots in no order the list shows).
+    QList<const LaunchRoot *> byName;
+    for (const LaunchRoot &r : roots)
+        byName << &r;
+    std::stable_sort(byName.begin(), byName.end(), [](const LaunchRoot *a, const LaunchRoot *b) {
+        return QString::compare(a->stem, b->stem, Qt::CaseInsensitive) < 0;
+    });
+    for (const LaunchRoot *root : std::as_const(byName)) {
+        const LaunchRoot &r = *root;
         addItem(entryText(r), r.instanceId);
         setItemData(count() - 1,
                     tr("%1\n%2 launch files included, %3 nodes started, %4 unresolved")

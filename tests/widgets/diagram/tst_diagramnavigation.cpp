@@ -2,6 +2,7 @@
 // no root stands out, the overview a diagram too big to read at fit starts in (text never
 // below the legible size), expanding and collapsing its boxes, and the minimap.
 #include "diagramarchitecture.h"
+#include "diagramclusteritem.h"
 #include "diagramlayouter.h"
 #include "diagramminimap.h"
 #include "diagramnodeitem.h"
@@ -59,6 +60,8 @@ private Q_SLOTS:
     void tooBigStartsAsAnOverview();
     void minimapShowsAndPans();
     void fitStartsAtTheFirstBoxWhenTheCornerIsEmpty();
+    void theFramesTabStaysInsideTheFrame();
+    void pickerListsRootsByName();
 };
 
 void TestDiagramNavigation::pickerListsAndSwitchesRoots()
@@ -315,6 +318,58 @@ void TestDiagramNavigation::fitStartsAtTheFirstBoxWhenTheCornerIsEmpty()
     const QRectF corner = view.mapToScene(view.viewport()->rect()).boundingRect();
     QVERIFY(qAbs(corner.top() - scene.sceneRect().top()) < 2);
     QVERIFY(qAbs(corner.left() - scene.sceneRect().left()) < 2);
+}
+
+void TestDiagramNavigation::theFramesTabStaysInsideTheFrame()
+{
+    // Before: a narrow composite's tab ran past its frame with the launch file's whole path.
+    LayoutGraph graph;
+    LayoutNode n;
+    n.id = QStringLiteral("only");
+    n.key = QStringLiteral("part:only");
+    n.label = n.id;
+    graph.nodes.append(n);
+    LayoutGeometry geometry;
+    geometry.bounds = QRectF(0, 0, 260, 80);
+    geometry.nodes.insert(n.id, QRectF(20, 20, 80, 36));
+    const QString detail =
+        QStringLiteral("launch file nav2_bringup/launch/unique_multi_tb3_simulation_launch.py");
+    DiagramScene scene;
+    scene.setDiagram(graph, geometry, QStringLiteral("unique_multi_tb3_simulation"), detail);
+    const DiagramClusterItem *frame = nullptr;
+    for (QGraphicsItem *item : scene.items())
+        if (auto *c = dynamic_cast<const DiagramClusterItem *>(item);
+            c && c->kind() == DiagramClusterItem::Kind::Frame)
+            frame = c;
+    QVERIFY(frame);
+    const DiagramClusterItem::Tab tab = frame->tab();
+    QVERIFY2(tab.width <= scene.frameRect().width(),
+             qPrintable(QStringLiteral("%1 > %2").arg(tab.width).arg(scene.frameRect().width())));
+    QVERIFY(tab.detail.isEmpty() || tab.detail.endsWith(QStringLiteral(".py")));
+    QVERIFY(tab.detail != detail);
+    // Wide enough: all of it.
+    geometry.bounds = QRectF(0, 0, 1200, 80);
+    scene.setDiagram(graph, geometry, QStringLiteral("unique_multi_tb3_simulation"), detail);
+    for (QGraphicsItem *item : scene.items())
+        if (auto *c = dynamic_cast<const DiagramClusterItem *>(item);
+            c && c->kind() == DiagramClusterItem::Kind::Frame)
+            QCOMPARE(c->tab().detail, detail);
+}
+
+void TestDiagramNavigation::pickerListsRootsByName()
+{
+    // Before: in the analysis' order (by path), which the list, showing names, did not show.
+    DiagramRootPicker picker;
+    picker.setRoots(
+        {{QStringLiteral("lf1"), QStringLiteral("zeta"), QStringLiteral("a/zeta.xml")},
+         {QStringLiteral("lf2"), QStringLiteral("Alpha"), QStringLiteral("z/Alpha.xml")},
+         {QStringLiteral("lf3"), QStringLiteral("beta"), QStringLiteral("m/beta.xml")}});
+    QStringList shown;
+    for (int i = 0; i < picker.count(); ++i)
+        shown << picker.itemData(i).toString();
+    QCOMPARE(shown, (QStringList{"lf2", "lf3", "lf1"}));
+    picker.setCurrentRoot(QStringLiteral("lf1"));
+    QCOMPARE(picker.currentRoot(), QStringLiteral("lf1"));
 }
 
 QTEST_MAIN(TestDiagramNavigation)
