@@ -242,14 +242,20 @@ void MainWindow::createPanels()
     createCorrectionController();
 }
 
+void MainWindow::takeOutDock(QDockWidget *dock)
+{
+    // Docked first, then taken out: a floating dock taken out stays a window of its own when
+    // it is split or tabified in again (Reset Layout left a floated Log floating).
+    dock->setFloating(false);
+    removeDockWidget(dock);
+}
+
 void MainWindow::resetLayout()
 {
     const QList<QDockWidget *> docks{m_nodeDock,   m_launchDock, m_diagramDock,
                                      m_sourceDock, m_logDock,    m_suggestionDock};
-    for (QDockWidget *dock : docks) {
-        removeDockWidget(dock);
-        dock->setFloating(false);
-    }
+    for (QDockWidget *dock : docks)
+        takeOutDock(dock);
     // One nested dock area fills the window (there is no central widget): the model views
     // side by side on top (atomic nodes | launch tree | diagram | source), the log across the
     // bottom.
@@ -267,8 +273,7 @@ void MainWindow::resetLayout()
     for (QDockWidget *dock : {m_changesDock, m_talkersDock}) {
         if (!dock)
             continue;
-        removeDockWidget(dock);
-        dock->setFloating(false);
+        takeOutDock(dock);
         tabifyDockWidget(m_logDock, dock);
         dock->hide();
     }

@@ -117,6 +117,7 @@ private:
     void restoreSession();
     void saveSession();
     void resetLayout();
+    void takeOutDock(QDockWidget *dock);
 
     void openWorkspaceDialog();
     void exportArtifactsDialog();

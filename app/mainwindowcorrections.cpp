@@ -40,8 +40,7 @@ void MainWindow::placeCorrectionDocks()
     for (QDockWidget *dock : {m_correctionsDock, m_inspectorDock}) {
         if (!dock)
             return;
-        removeDockWidget(dock);
-        dock->setFloating(false);
+        takeOutDock(dock);
     }
     tabifyDockWidget(m_logDock, m_correctionsDock);
     m_correctionsDock->show();

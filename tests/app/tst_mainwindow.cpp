@@ -497,6 +497,16 @@ private Q_SLOTS:
         QVERIFY(again.findChild<QDockWidget *>(QStringLiteral("sourceDock"))->isVisible());
         QVERIFY(resetLayout(again));
         QVERIFY(log->isVisible());
+        // A floated Log comes back into the window, in front of the tabs sharing its place.
+        log->setFloating(true);
+        QVERIFY(log->isFloating());
+        QVERIFY(resetLayout(again));
+        QVERIFY(!log->isFloating());
+        QVERIFY(log->isVisible());
+        const QList<QDockWidget *> sharing = again.tabifiedDockWidgets(log);
+        QVERIFY(!sharing.isEmpty());
+        for (QDockWidget *other : sharing)
+            QVERIFY2(other->visibleRegion().isEmpty(), qPrintable(other->objectName()));
     }
 
     void logFilterIsRemembered()
