@@ -174,6 +174,13 @@ void LogView::afterReset()
         m_diagnostics->expandAll();
     }
     m_diagnostics->setRootIsDecorated(grouped);
+    if (grouped != m_grouped) { // under a group the severity is indented: its column widens
+        const int indent = m_diagnostics->indentation();
+        m_diagnostics->setColumnWidth(DiagnosticModel::SeverityColumn,
+                                      m_diagnostics->columnWidth(DiagnosticModel::SeverityColumn) +
+                                          (grouped ? indent : -indent));
+        m_grouped = grouped;
+    }
     const QString key = m_currentKey;
     if (!key.isEmpty()) {
         const QModelIndexList found = m_proxy->match(m_proxy->index(0, 0), DiagnosticModel::KeyRole,

@@ -75,7 +75,8 @@ private:
     QAction *m_accept;
     QAction *m_acceptWithReason;
     QAction *m_restore;
-    QString m_currentKey; ///< kept across a reset of the table (a filter change, a re-run)
+    QString m_currentKey;   ///< kept across a reset of the table (a filter change, a re-run)
+    bool m_grouped = false; ///< as the table was last laid out (rows indented under groups)
 };
 
 } // namespace rosarch

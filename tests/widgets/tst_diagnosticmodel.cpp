@@ -458,8 +458,13 @@ private Q_SLOTS:
         QCOMPARE(currentMessage(), QStringLiteral("A file that looks binary."));
 
         // Grouped by kind: steps go group by group, never onto a group row.
+        const int severityWidth = tree->columnWidth(DiagnosticModel::SeverityColumn);
         bar->groupingCombo()->setCurrentIndex(1);
         QCOMPARE(tree->model()->rowCount(), 3);
+        // The rows sit indented under their group: the severity's column widens by as much
+        // (before, "Warning" was cut to "War…").
+        QCOMPARE(tree->columnWidth(DiagnosticModel::SeverityColumn),
+                 severityWidth + tree->indentation());
         tree->setCurrentIndex({});
         QStringList order;
         for (int i = 0; i < 4; ++i) {
@@ -472,6 +477,7 @@ private Q_SLOTS:
 
         // The search field narrows it down after typing stops.
         bar->groupingCombo()->setCurrentIndex(0);
+        QCOMPARE(tree->columnWidth(DiagnosticModel::SeverityColumn), severityWidth);
         bar->searchEdit()->setText(QStringLiteral("braces"));
         QTRY_COMPARE(tree->model()->rowCount(), 1);
         bar->searchEdit()->clear();
