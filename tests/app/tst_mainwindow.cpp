@@ -52,17 +52,6 @@ QModelIndex treeCurrent(MainWindow &w)
     return w.nodePanel()->currentSourceIndex();
 }
 
-/// View → Reset Layout, found by its text as a person finds it; false when it is missing.
-bool resetLayout(MainWindow &w)
-{
-    for (QAction *a : w.findChildren<QAction *>())
-        if (a->text() == QStringLiteral("&Reset Layout")) {
-            a->trigger();
-            return true;
-        }
-    return false;
-}
-
 } // namespace
 
 class TestMainWindow : public QObject
@@ -270,41 +259,6 @@ private Q_SLOTS:
         saveScreenshot(w, QStringLiteral("mainwindow_example.png"));
     }
 
-    void theWindowFitsALaptopScreen()
-    {
-        // Before: the Log's filter bar kept its dock ~1,100 px wide, and the window, opened
-        // on a 1,440 px wide screen, was wider than it (its right-hand docks cut off).
-        MainWindow w;
-        w.show();
-        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY2(w.minimumSizeHint().width() <= 1366,
-                 qPrintable(QString::number(w.minimumSizeHint().width())));
-        w.resize(1366, 768);
-        QTRY_COMPARE(w.width(), 1366);
-    }
-
-    void theLogShowsSeveralFindingsInTheDefaultLayout()
-    {
-        // Before: in the default layout of a 1,440 x 900 window the explanation pane under
-        // the findings asked for as much height as the table, which showed one row.
-        MainWindow w;
-        w.show();
-        w.resize(1440, 900);
-        QTRY_COMPARE(w.height(), 900);
-        QVERIFY(resetLayout(w));
-        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTreeView *findings = w.logView()->diagnosticsView();
-        QTRY_VERIFY(findings->model()->rowCount() >= 3);
-        const int rowHeight = findings->sizeHintForRow(0);
-        QVERIFY(rowHeight > 0);
-        QTRY_VERIFY2(findings->viewport()->height() >= 3 * rowHeight,
-                     qPrintable(QStringLiteral("%1 px for rows of %2 px")
-                                    .arg(findings->viewport()->height())
-                                    .arg(rowHeight)));
-    }
-
     void findFiltersTheTree()
     {
         MainWindow w;
@@ -478,67 +432,6 @@ private Q_SLOTS:
         QVERIFY(box);
         QVERIFY(box->text().contains(QStringLiteral("not_a_folder")));
         box->close();
-    }
-
-    void layoutIsRestored()
-    {
-        {
-            MainWindow w;
-            w.show();
-            QDockWidget *log = w.findChild<QDockWidget *>(QStringLiteral("logDock"));
-            QVERIFY(log);
-            log->hide();
-            w.close();
-        }
-        MainWindow again;
-        again.show();
-        QDockWidget *log = again.findChild<QDockWidget *>(QStringLiteral("logDock"));
-        QVERIFY(log && !log->isVisible());
-        QVERIFY(again.findChild<QDockWidget *>(QStringLiteral("sourceDock"))->isVisible());
-        QVERIFY(resetLayout(again));
-        QVERIFY(log->isVisible());
-        // A floated Log comes back into the window, in front of the tabs sharing its place.
-        log->setFloating(true);
-        QVERIFY(log->isFloating());
-        QVERIFY(resetLayout(again));
-        QVERIFY(!log->isFloating());
-        QVERIFY(log->isVisible());
-        const QList<QDockWidget *> sharing = again.tabifiedDockWidgets(log);
-        QVERIFY(!sharing.isEmpty());
-        for (QDockWidget *other : sharing)
-            QVERIFY2(other->visibleRegion().isEmpty(), qPrintable(other->objectName()));
-    }
-
-    void logFilterIsRemembered()
-    {
-        {
-            MainWindow w;
-            w.show();
-            DiagnosticFilterBar *bar = w.logView()->filterBar();
-            bar->severityButton(Diagnostic::Severity::Info)->setChecked(false);
-            bar->searchEdit()->setText(QStringLiteral("braces"));
-            bar->groupingCombo()->setCurrentIndex(
-                bar->groupingCombo()->findData(int(DiagnosticModel::Grouping::Package)));
-            w.close();
-        }
-        MainWindow again;
-        again.show();
-        DiagnosticFilterBar *bar = again.logView()->filterBar();
-        QVERIFY(!bar->severityButton(Diagnostic::Severity::Info)->isChecked());
-        QVERIFY(bar->severityButton(Diagnostic::Severity::Error)->isChecked());
-        QCOMPARE(bar->searchEdit()->text(), QStringLiteral("braces"));
-        QCOMPARE(bar->groupingCombo()->currentData().toInt(),
-                 int(DiagnosticModel::Grouping::Package));
-        // and the table follows what the bar says
-        const auto *model = qobject_cast<const DiagnosticModel *>(
-            qobject_cast<QSortFilterProxyModel *>(again.logView()->diagnosticsView()->model())
-                ->sourceModel());
-        QVERIFY(model);
-        QVERIFY(!model->filter().infos);
-        QCOMPARE(model->filter().text, QStringLiteral("braces"));
-        QCOMPARE(model->grouping(), DiagnosticModel::Grouping::Package);
-        bar->restoreState({{QStringLiteral("infos"), true}}); // back to all for the next tests
-        again.close();
     }
 
     void windowStaysResponsiveWhileRunning()
