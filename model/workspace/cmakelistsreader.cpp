@@ -4,6 +4,8 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 
+#include <optional>
+
 namespace rosarch {
 
 namespace {
@@ -123,6 +125,64 @@ QList<CMakeListsReader::Command> CMakeListsReader::tokenize(const QByteArray &co
     return out;
 }
 
+bool CMakeListsReader::takeBodyRun(const Evidence &where, QList<Diagnostic> *diagnostics)
+{
+    if (m_bodyRuns++ < kMaxBodyRuns)
+        return true;
+    if (m_bodyRuns == kMaxBodyRuns + 1) {
+        Diagnostic d;
+        d.code = QStringLiteral("cmake-depth");
+        d.message = QStringLiteral("%1 runs more than %2 function calls and loop iterations; "
+                                   "the rest were not followed.")
+                        .arg(where.file)
+                        .arg(kMaxBodyRuns);
+        d.evidence = where;
+        diagnostics->append(d);
+    }
+    return false;
+}
+
+QStringList CMakeListsReader::foreachItems(const QStringList &rawArgs) const
+{
+    if (rawArgs.value(0) == QLatin1String("RANGE")) {
+        // RANGE stop | start stop [step], inclusive.
+        const QStringList n = expandArgs(rawArgs.mid(1));
+        bool ok[3] = {true, true, true};
+        const int start = n.size() >= 2 ? n[0].toInt(&ok[0]) : 0;
+        const int stop = n.value(n.size() >= 2 ? 1 : 0).toInt(&ok[1]);
+        const int step = n.size() >= 3 ? n[2].toInt(&ok[2]) : 1;
+        QStringList out;
+        if (!ok[0] || !ok[1] || !ok[2] || step <= 0)
+            return out;
+        // One past the cap, so that the caller says the rest was skipped.
+        for (qint64 i = start; i <= stop && out.size() <= kMaxForeachItems; i += step)
+            out << QString::number(i);
+        return out;
+    }
+    if (rawArgs.value(0) != QLatin1String("IN"))
+        return expandArgs(rawArgs);
+    QStringList out;
+    enum class Mode
+    {
+        None,
+        Lists,
+        Items
+    } mode = Mode::None;
+    for (const QString &a : rawArgs.mid(1)) {
+        if (a == QLatin1String("LISTS"))
+            mode = Mode::Lists;
+        else if (a == QLatin1String("ITEMS"))
+            mode = Mode::Items;
+        else if (a == QLatin1String("ZIP_LISTS"))
+            return {}; // several variables at once: not followed
+        else if (mode == Mode::Lists)
+            out << m_vars.value(expand(a)).split(QLatin1Char(';'), Qt::SkipEmptyParts);
+        else if (mode == Mode::Items)
+            out << expandArgs({a});
+    }
+    return out;
+}
+
 QString CMakeListsReader::expand(const QString &text) const
 {
     static const QRegularExpression var(QStringLiteral("\\$\\{([A-Za-z0-9_]+)\\}"));
@@ -165,6 +225,7 @@ QList<Executable> CMakeListsReader::read(const QString &file, QList<Diagnostic> 
     m_plugins.clear();
     m_functions.clear();
     m_read.clear();
+    m_bodyRuns = 0;
     readFile(file, 0, diagnostics);
     // A plugin registered on a library target is implemented by that target's sources.
     for (Executable &p : m_plugins) {
@@ -221,9 +282,50 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
             m_functions.insert(c.args.first().toLower(), f);
             continue;
         }
+        if (c.name == QLatin1String("foreach") && !c.args.isEmpty()) {
+            // The body runs once per item, the loop variable set to it (as CMake does, and
+            // restored after): `add_executable(${name} ${name}.cpp)` over a list of names.
+            QList<Command> body;
+            int nesting = 0;
+            for (++index; index < commands.size(); ++index) {
+                if (commands[index].name == c.name)
+                    ++nesting;
+                if (commands[index].name == QLatin1String("endforeach") && nesting-- == 0)
+                    break;
+                body.append(commands[index]);
+            }
+            if (depth >= kMaxSubdirectoryDepth)
+                continue;
+            QStringList items = foreachItems(c.args.mid(1));
+            if (items.size() > kMaxForeachItems) {
+                Diagnostic d;
+                d.code = QStringLiteral("cmake-depth");
+                d.message = QStringLiteral("A foreach loop in %1 runs over more than %2 items; "
+                                           "only the first %2 were followed.")
+                                .arg(file)
+                                .arg(kMaxForeachItems);
+                d.evidence = evidence(c);
+                diagnostics->append(d);
+                items = items.mid(0, kMaxForeachItems);
+            }
+            const QString variable = expand(c.args.first());
+            const std::optional<QString> saved =
+                m_vars.contains(variable) ? std::optional(m_vars.value(variable)) : std::nullopt;
+            for (const QString &item : std::as_const(items)) {
+                if (!takeBodyRun(evidence(c), diagnostics))
+                    break;
+                m_vars.insert(variable, item);
+                execute(body, depth + 1, diagnostics);
+            }
+            if (saved)
+                m_vars.insert(variable, *saved);
+            else
+                m_vars.remove(variable);
+            continue;
+        }
         const QStringList args = expandArgs(c.args);
         if (m_functions.contains(c.name)) {
-            if (depth >= kMaxSubdirectoryDepth)
+            if (depth >= kMaxSubdirectoryDepth || !takeBodyRun(evidence(c), diagnostics))
                 continue;
             const Function f = m_functions.value(c.name);
             const QHash<QString, QString> saved = m_vars;

@@ -14,7 +14,7 @@ namespace rosarch {
 
 /// Reads the executables and component plugins a package's CMakeLists.txt declares:
 /// add_executable, ament_auto_add_executable, add_library (for plugin sources),
-/// rclcpp_components_register_node(s), set() variables and add_subdirectory.
+/// rclcpp_components_register_node(s), set() variables, foreach loops and add_subdirectory.
 /// Not a CMake interpreter: conditions are ignored (every branch counts).
 class CMakeListsReader
 {
@@ -23,6 +23,12 @@ public:
     using Loader = std::function<bool(const QString &relativePath, QByteArray *content)>;
 
     explicit CMakeListsReader(Loader load);
+
+    /// A foreach loop runs its body for at most this many items; the rest is said and skipped.
+    static constexpr int kMaxForeachItems = 256;
+    /// Function calls and loop iterations per read, together: nested loops and recursive
+    /// functions multiply, and a file must not make that a hang. Past it, they are skipped.
+    static constexpr int kMaxBodyRuns = 10000;
 
     /// Reads `file` (workspace-relative CMakeLists.txt) and the subdirectories it adds.
     QList<Executable> read(const QString &file, QList<Diagnostic> *diagnostics);
@@ -46,6 +52,8 @@ private:
     void readFile(const QString &file, int depth, QList<Diagnostic> *diagnostics);
     void execute(const QList<Command> &commands, int depth, QList<Diagnostic> *diagnostics);
     void parseArguments(const QStringList &rawArgs);
+    /// The items a foreach(...) header loops over (its arguments after the loop variable).
+    QStringList foreachItems(const QStringList &rawArgs) const;
     QString expand(const QString &text) const;
     QStringList expandArgs(const QStringList &args) const;
 
@@ -54,6 +62,9 @@ private:
     QSet<QString> m_read; ///< every CMakeLists.txt read in this run (no file is read twice)
     QString m_dir;        ///< its folder, relative to the workspace root
     QHash<QString, Function> m_functions;
+    int m_bodyRuns = 0; ///< function bodies and loop bodies run in this read
+    /// Takes one run from the budget; false (and said once) when it is spent.
+    bool takeBodyRun(const Evidence &where, QList<Diagnostic> *diagnostics);
     QHash<QString, QString> m_vars;
     QHash<QString, QStringList> m_targetSources; ///< target -> workspace-relative sources
     QList<Executable> m_executables;

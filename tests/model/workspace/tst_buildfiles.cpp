@@ -114,6 +114,61 @@ private Q_SLOTS:
                  (QStringList{"pkg/src/timers/one_off.cpp", "pkg/src/timers/util.cpp"}));
     }
 
+    void cmakeForeachLoops()
+    {
+        // A benchmark folder that builds one executable per name of a list: before, the
+        // loop was not run and `add_executable(${name} ${name}.cpp)` made one named ".cpp".
+        QList<Diagnostic> diagnostics;
+        const auto exes = readCMake(
+            {{"pkg/CMakeLists.txt",
+              "set(TOOLS first_tool second_tool)\n"
+              "foreach(name IN LISTS TOOLS)\n"
+              "  add_executable(${name}\n    ${name}.cpp\n  )\n"
+              "endforeach()\n"
+              "foreach(kind IN ITEMS server client)\n"
+              "  foreach(side left right)\n"
+              "    add_executable(${kind}_${side} src/${kind}.cpp)\n"
+              "  endforeach()\n"
+              "endforeach()\n"
+              "foreach(i RANGE 1 2)\n  add_executable(worker${i} worker.cpp)\nendforeach()\n"
+              "foreach(i RANGE 100000)\n  set(last ${i})\nendforeach()\n"
+              "add_executable(after ${name}after.cpp)\n"}},
+            &diagnostics);
+        QStringList names;
+        for (const Executable &e : exes)
+            names << e.name;
+        QCOMPARE(names,
+                 (QStringList{"first_tool", "second_tool", "server_left", "server_right",
+                              "client_left", "client_right", "worker1", "worker2", "after"}));
+        QCOMPARE(exes[0].sources, QStringList{"pkg/first_tool.cpp"});
+        QCOMPARE(exes[3].sources, QStringList{"pkg/src/server.cpp"});
+        // The loop variable is gone after the loop; the long range is cut, and said.
+        QCOMPARE(exes.last().sources, QStringList{"pkg/after.cpp"});
+        QCOMPARE(diagnostics.size(), 1);
+        QVERIFY2(diagnostics.first().message.contains(QStringLiteral("only the first 256")),
+                 qPrintable(diagnostics.first().message));
+    }
+
+    void cmakeLoopsAndCallsHaveABudget()
+    {
+        // Nested loops multiply: four levels of 200 items would run 1.6 billion bodies.
+        QByteArray cmake = "set(L";
+        for (int i = 0; i < 200; ++i)
+            cmake += " i" + QByteArray::number(i);
+        cmake += ")\n";
+        for (const char *v : {"a", "b", "c", "d"})
+            cmake += QByteArray("foreach(") + v + " IN LISTS L)\n";
+        cmake += "add_executable(x_${a}_${b}_${c}_${d} x.cpp)\n";
+        cmake += "endforeach()\nendforeach()\nendforeach()\nendforeach()\n";
+        QList<Diagnostic> diagnostics;
+        const auto exes = readCMake({{"pkg/CMakeLists.txt", cmake}}, &diagnostics);
+        QVERIFY(!exes.isEmpty());
+        QVERIFY(exes.size() < CMakeListsReader::kMaxBodyRuns);
+        QCOMPARE(diagnostics.size(), 1);
+        QVERIFY2(diagnostics.first().message.contains(QStringLiteral("were not followed")),
+                 qPrintable(diagnostics.first().message));
+    }
+
     void setupPyEntryPoints()
     {
         QList<Diagnostic> diagnostics;
