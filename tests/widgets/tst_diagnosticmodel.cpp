@@ -415,19 +415,6 @@ private Q_SLOTS:
         QVERIFY(!titles.isEmpty());
         QTreeView *tree = view.diagnosticsView();
         DiagnosticFilterBar *bar = view.filterBar();
-        // Worst first (before: the stages' order, notes on top of warnings and errors), and
-        // within one severity the stages' order.
-        QStringList severities;
-        for (int row = 0; row < tree->model()->rowCount(); ++row)
-            severities
-                << tree->model()->index(row, DiagnosticModel::SeverityColumn).data().toString();
-        QCOMPARE(severities.first(), QStringLiteral("Error"));
-        QVERIFY2(std::is_sorted(severities.cbegin(), severities.cend(),
-                                [](const QString &a, const QString &b) {
-                                    const QStringList order{"Error", "Warning", "Info"};
-                                    return order.indexOf(a) < order.indexOf(b);
-                                }),
-                 qPrintable(severities.join(QStringLiteral(", "))));
         QVERIFY(bar->kindCombo()->itemText(0).contains(QStringLiteral("(5)")));
 
         // Errors off: the title counts what is shown.
