@@ -11,6 +11,35 @@ namespace rosarch {
 namespace {
 constexpr int kMaxSubdirectoryDepth = 8;
 
+/// A note that the reader did not follow something (too deep, too many, already read).
+void notFollowed(const QString &message, const Evidence &where, QList<Diagnostic> *diagnostics)
+{
+    Diagnostic d;
+    d.code = QStringLiteral("cmake-depth");
+    d.message = message;
+    d.evidence = where;
+    diagnostics->append(d);
+}
+
+/// The commands of the block (function, macro, foreach) opened at `*index`, up to the `end...`
+/// that closes it, blocks of the same kind nested inside counted; `*index` ends on that `end`.
+QList<CMakeListsReader::Command> blockBody(const QList<CMakeListsReader::Command> &commands,
+                                           qsizetype *index)
+{
+    const QString open = commands[*index].name;
+    const QString end = QStringLiteral("end") + open;
+    QList<CMakeListsReader::Command> body;
+    int nesting = 0;
+    for (++*index; *index < commands.size(); ++*index) {
+        if (commands[*index].name == open)
+            ++nesting;
+        if (commands[*index].name == end && nesting-- == 0)
+            break;
+        body.append(commands[*index]);
+    }
+    return body;
+}
+
 QString joinPath(const QString &dir, const QString &path)
 {
     if (dir.isEmpty())
@@ -130,14 +159,11 @@ bool CMakeListsReader::takeBodyRun(const Evidence &where, QList<Diagnostic> *dia
     if (m_bodyRuns++ < kMaxBodyRuns)
         return true;
     if (m_bodyRuns == kMaxBodyRuns + 1) {
-        Diagnostic d;
-        d.code = QStringLiteral("cmake-depth");
-        d.message = QStringLiteral("%1 runs more than %2 function calls and loop iterations; "
+        notFollowed(QStringLiteral("%1 runs more than %2 function calls and loop iterations; "
                                    "the rest were not followed.")
                         .arg(where.file)
-                        .arg(kMaxBodyRuns);
-        d.evidence = where;
-        diagnostics->append(d);
+                        .arg(kMaxBodyRuns),
+                    where, diagnostics);
     }
     return false;
 }
@@ -268,44 +294,25 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
         if ((c.name == QLatin1String("function") || c.name == QLatin1String("macro")) &&
             !c.args.isEmpty()) {
             // Record the body; it runs when the function is called.
-            const QString end = QStringLiteral("end") + c.name;
             Function f;
             f.params = c.args.mid(1);
-            int nesting = 0;
-            for (++index; index < commands.size(); ++index) {
-                if (commands[index].name == c.name)
-                    ++nesting;
-                if (commands[index].name == end && nesting-- == 0)
-                    break;
-                f.body.append(commands[index]);
-            }
+            f.body = blockBody(commands, &index);
             m_functions.insert(c.args.first().toLower(), f);
             continue;
         }
         if (c.name == QLatin1String("foreach") && !c.args.isEmpty()) {
             // The body runs once per item, the loop variable set to it (as CMake does, and
             // restored after): `add_executable(${name} ${name}.cpp)` over a list of names.
-            QList<Command> body;
-            int nesting = 0;
-            for (++index; index < commands.size(); ++index) {
-                if (commands[index].name == c.name)
-                    ++nesting;
-                if (commands[index].name == QLatin1String("endforeach") && nesting-- == 0)
-                    break;
-                body.append(commands[index]);
-            }
+            const QList<Command> body = blockBody(commands, &index);
             if (depth >= kMaxSubdirectoryDepth)
                 continue;
             QStringList items = foreachItems(c.args.mid(1));
             if (items.size() > kMaxForeachItems) {
-                Diagnostic d;
-                d.code = QStringLiteral("cmake-depth");
-                d.message = QStringLiteral("A foreach loop in %1 runs over more than %2 items; "
+                notFollowed(QStringLiteral("A foreach loop in %1 runs over more than %2 items; "
                                            "only the first %2 were followed.")
                                 .arg(file)
-                                .arg(kMaxForeachItems);
-                d.evidence = evidence(c);
-                diagnostics->append(d);
+                                .arg(kMaxForeachItems),
+                            evidence(c), diagnostics);
                 items = items.mid(0, kMaxForeachItems);
             }
             const QString variable = expand(c.args.first());
@@ -407,27 +414,20 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
             }
         } else if (c.name == QLatin1String("add_subdirectory") && !args.isEmpty()) {
             if (depth >= kMaxSubdirectoryDepth) {
-                Diagnostic d;
-                d.code = QStringLiteral("cmake-depth");
-                d.message =
-                    QStringLiteral(
-                        "add_subdirectory nested deeper than %1 levels in %2; not followed.")
-                        .arg(kMaxSubdirectoryDepth)
-                        .arg(file);
-                d.evidence = evidence(c);
-                diagnostics->append(d);
+                notFollowed(QStringLiteral("add_subdirectory nested deeper than %1 levels in %2; "
+                                           "not followed.")
+                                .arg(kMaxSubdirectoryDepth)
+                                .arg(file),
+                            evidence(c), diagnostics);
                 continue;
             }
             const QString sub =
                 joinPath(joinPath(dir, args.first()), QStringLiteral("CMakeLists.txt"));
             if (m_read.contains(sub)) {
-                Diagnostic d;
-                d.code = QStringLiteral("cmake-depth");
-                d.message = QStringLiteral("add_subdirectory(%1) in %2 names %3, which was "
+                notFollowed(QStringLiteral("add_subdirectory(%1) in %2 names %3, which was "
                                            "already read; not read again.")
-                                .arg(args.first(), file, sub);
-                d.evidence = evidence(c);
-                diagnostics->append(d);
+                                .arg(args.first(), file, sub),
+                            evidence(c), diagnostics);
                 continue;
             }
             readFile(sub, depth + 1, diagnostics);
