@@ -31,9 +31,8 @@ public:
     /// else, or an unresolved expression, counts as true (the best guess) and is reported.
     bool isTrue(const Substitution &s, QList<Unresolved> *unresolved) const;
 
-    /// Evaluates the small Python expressions launch files put in PythonExpression / $(eval):
-    /// literals, ==, !=, not, and, or, parentheses, `in` over a literal list. Returns false
-    /// when the expression is beyond that.
+    /// Evaluates the small Python expressions launch files put in PythonExpression / $(eval)
+    /// (the subset PythonExpression describes). Returns false when the expression is beyond it.
     static bool evaluatePython(const QString &expression, QString *value);
 
 private:

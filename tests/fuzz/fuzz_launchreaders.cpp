@@ -1,8 +1,9 @@
-// libFuzzer target: the three launch-file readers (XML, YAML, Python), each on the input, and
-// the YAML parameter-file reader with its node matching and rewrites. The first byte picks the
-// reader, so one corpus covers all three formats.
+// libFuzzer target: the three launch-file readers (XML, YAML, Python), each on the input, the
+// YAML parameter-file reader with its node matching and rewrites, and the evaluator of
+// `$(eval ...)` expressions. The first byte picks one, so one corpus covers them all.
 #include "fuzzsupport.h"
 #include "parameterfile.h"
+#include "pythonexpression.h"
 #include "pythonlaunchreader.h"
 #include "xmllaunchreader.h"
 #include "yamllaunchreader.h"
@@ -12,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size == 0)
         return 0;
     const QByteArray content = rosarch::fuzz::bytes(data + 1, size - 1);
-    switch (data[0] % 3) {
+    switch (data[0] % 4) {
     case 0:
         rosarch::XmlLaunchReader::isLaunchFile(content);
         rosarch::XmlLaunchReader::read(content, QStringLiteral("f.launch.xml"));
@@ -30,10 +31,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             params.forNode(QStringLiteral("/root/ns/node"));
         }
         break;
-    default:
+    case 2:
         rosarch::PythonLaunchReader::isLaunchFile(content);
         rosarch::PythonLaunchReader::read(content, QStringLiteral("f.launch.py"));
         break;
+    default: {
+        QString value;
+        rosarch::PythonExpression::evaluate(QString::fromUtf8(content), &value);
+        break;
+    }
     }
     return 0;
 }

@@ -144,6 +144,42 @@ private Q_SLOTS:
         QVERIFY(d.nodes[3].unresolved.isEmpty());
     }
 
+    // autoware's perception launch: a node named from a part of an argument, and a node started
+    // only when an argument, compared as a string, reaches a count.
+    void evalNamesANodeAndDecidesACondition()
+    {
+        Fixture fx;
+        LaunchAction named =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("x"), 2);
+        named.name.kind = Substitution::Kind::Eval;
+        named.name.parts = {lit(QStringLiteral("'")), var(QStringLiteral("model")),
+                            lit(QStringLiteral("'.split('/')[1] if '/' in '")),
+                            var(QStringLiteral("model")), lit(QStringLiteral("' else 'plain'"))};
+        named.name.text.clear();
+        LaunchAction counted =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("second"), 3);
+        counted.condition.expression.kind = Substitution::Kind::Eval;
+        counted.condition.expression.parts = {
+            lit(QStringLiteral("'")), var(QStringLiteral("count")), lit(QStringLiteral("'>='2'"))};
+        counted.condition.text = QStringLiteral("$(eval '$(var count)'>='2')");
+        const QString model = QStringLiteral("centerpoint/tiny");
+        const QString count = QStringLiteral("1");
+        fx.add(QStringLiteral("bringup/launch/e.launch.py"),
+               {declare(QStringLiteral("model"), &model), declare(QStringLiteral("count"), &count),
+                named, counted});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/e.launch.py"));
+        QCOMPARE(d.nodes.size(), 2);
+        QCOMPARE(d.nodes[0].nodeName, QStringLiteral("tiny"));
+        QVERIFY(d.nodes[0].unresolved.isEmpty());
+        QCOMPARE(d.nodes[1].active, false);
+        QVERIFY(d.nodes[1].unresolved.isEmpty());
+
+        const LaunchDependencies other = fx.run(QStringLiteral("bringup/launch/e.launch.py"),
+                                                {{"model", "pointpainting"}, {"count", "3"}});
+        QCOMPARE(other.nodes[0].nodeName, QStringLiteral("plain"));
+        QCOMPARE(other.nodes[1].active, true);
+    }
+
     void composableNodesAndContainers()
     {
         Fixture fx;
@@ -250,6 +286,41 @@ private Q_SLOTS:
                                 << "true";
         QTest::newRow("number") << "2 == 2.0"
                                 << "true";
+        // What autoware's XML launch files compute in $(eval ...), once $(var ...) is text.
+        QTest::newRow("split index") << "'centerpoint/tiny'.split('/')[0]"
+                                     << "centerpoint";
+        QTest::newRow("split of nothing") << "''.split('/')[0]"
+                                          << "";
+        QTest::newRow("conditional") << "'a/b'.split('/')[1] if '/' in 'a/b' else ''"
+                                     << "b";
+        QTest::newRow("conditional else") << "'x'.split('/')[1] if '/' in 'x' else 'none'"
+                                          << "none";
+        QTest::newRow("default name") << "'transfusion' if ''=='' else ''"
+                                      << "transfusion";
+        QTest::newRow("concatenation") << "'ModuleA, ' + 'ModuleB, '"
+                                       << "ModuleA, ModuleB, ";
+        QTest::newRow("string order") << "'2'>='1'"
+                                      << "true";
+        QTest::newRow("list membership") << "'ndt' in ['ndt', 'yabloc']"
+                                         << "true";
+        QTest::newRow("substring") << "'ndt' in 'ndt_yabloc'"
+                                   << "true";
+        QTest::newRow("len") << "len(['a', 'b', 'c']) == 3"
+                             << "true";
+        QTest::newRow("last item") << "'a_b_c'.split('_')[-1]"
+                                   << "c";
+        QTest::newRow("methods") << "' Fast '.strip().lower().replace('f', 'v')"
+                                 << "vast";
+        QTest::newRow("or gives an operand") << "'' or 'default'"
+                                             << "default";
+        QTest::newRow("or short-circuits") << "'x' or 'a'.split('/')[5]"
+                                           << "x";
+        QTest::newRow("and short-circuits") << "'' and 'a'.split('/')[5]"
+                                            << "";
+        QTest::newRow("list text") << "'a b'.split()"
+                                   << "['a', 'b']";
+        QTest::newRow("arithmetic") << "2 + 3 - 1"
+                                    << "4";
     }
 
     void pythonExpressions()
@@ -266,6 +337,19 @@ private Q_SLOTS:
         QString out;
         QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("os.environ['X']"), &out));
         QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a' =="), &out));
+        // An index past the end is an IndexError, an unknown method or a chain no value.
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.split('/')[1]"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.format(1)"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("1 < 2 < 3"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a' < 1"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(
+            QStringLiteral("list(set('a_b'.split('_')))"), &out));
+        // Deep nesting is refused, not a stack overflow.
+        const QString deep = QString(100000, QLatin1Char('(')) + QStringLiteral("1") +
+                             QString(100000, QLatin1Char(')'));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(deep, &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(
+            QString(100000, QLatin1Char('-')) + QStringLiteral("1"), &out));
     }
 
     void sameSystemInThreeFormats()
