@@ -919,170 +919,170 @@ Wrote %12 files to %13
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="149"/>
+        <location filename="../app/correctioncontroller.cpp" line="145"/>
         <source>%1: %2 (Ctrl+Z undoes it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="308"/>
+        <location filename="../app/correctioncontroller.cpp" line="304"/>
         <source>Plugin class</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="308"/>
+        <location filename="../app/correctioncontroller.cpp" line="304"/>
         <source>Node class</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="319"/>
+        <location filename="../app/correctioncontroller.cpp" line="315"/>
         <source>Port (%1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="331"/>
+        <location filename="../app/correctioncontroller.cpp" line="327"/>
         <source>Node instance</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="331"/>
+        <location filename="../app/correctioncontroller.cpp" line="327"/>
         <source>Connection</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="335"/>
+        <location filename="../app/correctioncontroller.cpp" line="331"/>
         <source>%1 %2 [%3]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="343"/>
+        <location filename="../app/correctioncontroller.cpp" line="339"/>
         <source>Launch file</source>
         <translation type="unfinished">Launch-File</translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="349"/>
+        <location filename="../app/correctioncontroller.cpp" line="345"/>
         <source>Topic</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="350"/>
+        <location filename="../app/correctioncontroller.cpp" line="346"/>
         <source>Service</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="351"/>
+        <location filename="../app/correctioncontroller.cpp" line="347"/>
         <source>Action</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="360"/>
+        <location filename="../app/correctioncontroller.cpp" line="356"/>
         <source>(being worked out…)</source>
         <translation>(wird ermittelt…)</translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="372"/>
+        <location filename="../app/correctioncontroller.cpp" line="368"/>
         <source>removed by %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="374"/>
+        <location filename="../app/correctioncontroller.cpp" line="370"/>
         <source>corrected by %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="376"/>
+        <location filename="../app/correctioncontroller.cpp" line="372"/>
         <source>suggested (an accepted suggestion)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="378"/>
+        <location filename="../app/correctioncontroller.cpp" line="374"/>
         <source>corrected</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="380"/>
+        <location filename="../app/correctioncontroller.cpp" line="376"/>
         <source>recovered by analysis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="405"/>
+        <location filename="../app/correctioncontroller.cpp" line="401"/>
         <source>Restore (Revert %1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="409"/>
-        <location filename="../app/correctioncontroller.cpp" line="519"/>
+        <location filename="../app/correctioncontroller.cpp" line="405"/>
+        <location filename="../app/correctioncontroller.cpp" line="514"/>
         <source>Ctrl+R</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="410"/>
+        <location filename="../app/correctioncontroller.cpp" line="406"/>
         <source>Unmark Reviewed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="410"/>
+        <location filename="../app/correctioncontroller.cpp" line="406"/>
         <source>Mark Re&amp;viewed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="413"/>
+        <location filename="../app/correctioncontroller.cpp" line="409"/>
         <source>Add &amp;Port…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="414"/>
+        <location filename="../app/correctioncontroller.cpp" line="410"/>
         <source>Re&amp;move Class…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="420"/>
+        <location filename="../app/correctioncontroller.cpp" line="416"/>
         <source>Set &amp;Name…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="420"/>
-        <location filename="../app/correctioncontroller.cpp" line="430"/>
-        <location filename="../app/correctioncontroller.cpp" line="438"/>
+        <location filename="../app/correctioncontroller.cpp" line="416"/>
+        <location filename="../app/correctioncontroller.cpp" line="426"/>
+        <location filename="../app/correctioncontroller.cpp" line="434"/>
         <source>Re&amp;name…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="422"/>
+        <location filename="../app/correctioncontroller.cpp" line="418"/>
         <source>Set &amp;Type…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="424"/>
+        <location filename="../app/correctioncontroller.cpp" line="420"/>
         <source>Set &amp;Type… (unknown)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="425"/>
+        <location filename="../app/correctioncontroller.cpp" line="421"/>
         <source>Re&amp;move Port…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="431"/>
+        <location filename="../app/correctioncontroller.cpp" line="427"/>
         <source>Re&amp;move…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="432"/>
+        <location filename="../app/correctioncontroller.cpp" line="428"/>
         <source>Add &amp;Connection…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="435"/>
+        <location filename="../app/correctioncontroller.cpp" line="431"/>
         <source>Add &amp;Part…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="442"/>
+        <location filename="../app/correctioncontroller.cpp" line="438"/>
         <source>Remove &amp;Connection…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/correctioncontroller.cpp" line="457"/>
+        <location filename="../app/correctioncontroller.cpp" line="453"/>
         <source>Correct</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1492,57 +1492,57 @@ Wrote %12 files to %13
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="53"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="64"/>
         <source>package %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="56"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="67"/>
         <source>At %1</source>
         <translation type="unfinished">In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="58"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="69"/>
         <source>Related places</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="68"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="79"/>
         <source>Seen in 1 system (root launch file)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="69"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="80"/>
         <source>Seen in %1 systems (root launch files)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="75"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="86"/>
         <source>What this means</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="77"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="88"/>
         <source>someone</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="80"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="91"/>
         <source>Accepted by %1 on %2.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="81"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="92"/>
         <source>Hidden by %1 on %2.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="83"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="94"/>
         <source>Reason: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticdetail.cpp" line="87"/>
+        <location filename="../widgets/diagnosticdetail.cpp" line="98"/>
         <source>Key: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1653,87 +1653,102 @@ Wrote %12 files to %13
 <context>
     <name>rosarch::DiagnosticModel</name>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="258"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="267"/>
         <source>Info</source>
         <translation>Info</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="260"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="269"/>
         <source>Warning</source>
         <translation>Warnung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="262"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="271"/>
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="278"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="287"/>
         <source>(no package)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="284"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="293"/>
         <source>%1 (1 finding)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="285"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="294"/>
         <source>%1 (%2 findings)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="312"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="328"/>
         <source>%1 (accepted)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="313"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="329"/>
         <source>%1 (hidden)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="361"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="381"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="363"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="383"/>
         <source>Seen in %1 systems</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="376"/>
-        <source>The number of systems (root launch files) the finding was seen in</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="381"/>
-        <source>Severity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="383"/>
-        <source>Kind</source>
-        <translation type="unfinished">Art</translation>
-    </message>
-    <message>
         <location filename="../widgets/diagnosticmodel.cpp" line="385"/>
-        <source>Package</source>
+        <source>someone</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../widgets/diagnosticmodel.cpp" line="387"/>
+        <source>Accepted by %1</source>
+        <translation>Akzeptiert von %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="387"/>
+        <source>Hidden by %1</source>
+        <translation>Ausgeblendet von %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="404"/>
+        <source>The number of systems (root launch files) the finding was seen in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="409"/>
+        <source>Severity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="411"/>
+        <source>Kind</source>
+        <translation type="unfinished">Art</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="413"/>
+        <source>Package</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnosticmodel.cpp" line="415"/>
         <source>File</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="389"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="417"/>
         <source>Message</source>
         <translation>Meldung</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnosticmodel.cpp" line="391"/>
+        <location filename="../widgets/diagnosticmodel.cpp" line="419"/>
         <source>Systems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2114,27 +2129,27 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::DiagramRootPicker</name>
     <message>
-        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="23"/>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="32"/>
         <source>Root launch file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="24"/>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="33"/>
         <source>The root launch file whose system the diagram shows; type to find one</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="34"/>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="45"/>
         <source>%1 — 1 include</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="35"/>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="46"/>
         <source>%1 — %2 includes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="49"/>
+        <location filename="../widgets/diagram/diagramrootpicker.cpp" line="69"/>
         <source>%1
 %2 launch files included, %3 nodes started, %4 unresolved</source>
         <translation type="unfinished"></translation>
@@ -2156,7 +2171,7 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
 <context>
     <name>rosarch::DiagramScene</name>
     <message>
-        <location filename="../widgets/diagram/diagramscene.cpp" line="236"/>
+        <location filename="../widgets/diagram/diagramscene.cpp" line="253"/>
         <source>Composed diagram exported by rosarch</source>
         <translation>Von rosarch exportiertes Kompositionsdiagramm</translation>
     </message>
@@ -3363,32 +3378,32 @@ The file was kept as %2.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="83"/>
+        <location filename="../widgets/logview.cpp" line="84"/>
         <source>Progress and messages of stage runs appear here.</source>
         <translation>Hier erscheinen Fortschritt und Meldungen der Stufenausführungen.</translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="133"/>
+        <location filename="../widgets/logview.cpp" line="136"/>
         <source>Log</source>
         <translation type="unfinished">Protokoll</translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="136"/>
+        <location filename="../widgets/logview.cpp" line="139"/>
         <source>Log — %1 findings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="137"/>
+        <location filename="../widgets/logview.cpp" line="140"/>
         <source>Log — %1 findings, %2 shown</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="259"/>
+        <location filename="../widgets/logview.cpp" line="271"/>
         <source>Accept Finding</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="260"/>
+        <location filename="../widgets/logview.cpp" line="272"/>
         <source>Why is this finding fine as it is?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3396,28 +3411,28 @@ The file was kept as %2.</source>
 <context>
     <name>rosarch::MainWindow</name>
     <message>
-        <location filename="../app/mainwindow.cpp" line="163"/>
+        <location filename="../app/mainwindow.cpp" line="164"/>
         <source>Atomic nodes</source>
         <translation>Atomare Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="164"/>
+        <location filename="../app/mainwindow.cpp" line="165"/>
         <source>Launch tree</source>
         <translation>Launch-Baum</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="165"/>
+        <location filename="../app/mainwindow.cpp" line="166"/>
         <source>Composed diagram</source>
         <translation>Kompositionsdiagramm</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="166"/>
+        <location filename="../app/mainwindow.cpp" line="167"/>
         <source>Source</source>
         <translation>Quelltext</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="167"/>
-        <location filename="../app/mainwindow.cpp" line="171"/>
+        <location filename="../app/mainwindow.cpp" line="168"/>
+        <location filename="../app/mainwindow.cpp" line="172"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
@@ -3637,22 +3652,22 @@ The file was kept as %2.</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="177"/>
+        <location filename="../app/mainwindow.cpp" line="178"/>
         <source>Suggestions</source>
         <translation>Vorschläge</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="352"/>
+        <location filename="../app/mainwindow.cpp" line="358"/>
         <source>Open ROS 2 Workspace</source>
         <translation>ROS-2-Workspace öffnen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="363"/>
+        <location filename="../app/mainwindow.cpp" line="369"/>
         <source>Cannot open workspace</source>
         <translation>Workspace kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="364"/>
+        <location filename="../app/mainwindow.cpp" line="370"/>
         <source>The folder “%1” does not exist or is not a folder.
 
 Choose a ROS 2 workspace (a folder containing packages with a package.xml) with File → Open Workspace, or drop one onto the window.</source>
@@ -3662,12 +3677,12 @@ Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordne
     </message>
     <message>
         <location filename="../app/mainwindow.cpp" line="64"/>
-        <location filename="../app/mainwindow.cpp" line="399"/>
+        <location filename="../app/mainwindow.cpp" line="405"/>
         <source>rosarch[*]</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/mainwindow.cpp" line="75"/>
+        <location filename="../app/mainwindow.cpp" line="76"/>
         <source>%n file(s) changed on disk (%1); analysing again</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3675,62 +3690,62 @@ Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordne
         </translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="90"/>
+        <location filename="../app/mainwindow.cpp" line="91"/>
         <source>This workspace has more than %L1 files and folders to watch, so only its folders are watched: files added, removed or replaced (as most editors save) start a new analysis, a file edited in place does not. Press F5 after such an edit.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="180"/>
+        <location filename="../app/mainwindow.cpp" line="181"/>
         <source>Architecture changes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="182"/>
+        <location filename="../app/mainwindow.cpp" line="183"/>
         <source>Talkers</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="407"/>
+        <location filename="../app/mainwindow.cpp" line="413"/>
         <source>%1 (new project)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="409"/>
+        <location filename="../app/mainwindow.cpp" line="415"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="410"/>
+        <location filename="../app/mainwindow.cpp" line="416"/>
         <source>%1[*] — rosarch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="452"/>
+        <location filename="../app/mainwindow.cpp" line="458"/>
         <source>No recent workspaces</source>
         <translation>Keine zuletzt geöffneten Workspaces</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="457"/>
+        <location filename="../app/mainwindow.cpp" line="463"/>
         <source>&amp;%1 %2 — %3</source>
         <translation>&amp;%1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="465"/>
+        <location filename="../app/mainwindow.cpp" line="471"/>
         <source>&amp;Clear Menu</source>
         <translation>Menü &amp;leeren</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="476"/>
+        <location filename="../app/mainwindow.cpp" line="482"/>
         <source>Export Artifacts To</source>
         <translation>Artefakte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="490"/>
+        <location filename="../app/mainwindow.cpp" line="496"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="491"/>
+        <location filename="../app/mainwindow.cpp" line="497"/>
         <source>The artifacts could not be written to “%1”:
 %2
 
@@ -3741,112 +3756,112 @@ Choose a folder you can write to, or free some space, and export again.</source>
 Wählen Sie einen Ordner, in den Sie schreiben dürfen, oder geben Sie Speicherplatz frei, und exportieren Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="494"/>
+        <location filename="../app/mainwindow.cpp" line="500"/>
         <source>Export to %1 failed: %2</source>
         <translation>Export nach %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="497"/>
+        <location filename="../app/mainwindow.cpp" line="503"/>
         <source>Exported 1 file to %1</source>
         <translation>1 Datei nach %1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="498"/>
+        <location filename="../app/mainwindow.cpp" line="504"/>
         <source>Exported %1 files to %2</source>
         <translation>%1 Dateien nach %2 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="45"/>
+        <location filename="../app/mainwindowstatus.cpp" line="53"/>
         <source>1 package</source>
         <translation>1 Paket</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="45"/>
+        <location filename="../app/mainwindowstatus.cpp" line="53"/>
         <source>%1 packages</source>
         <translation>%1 Pakete</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="46"/>
+        <location filename="../app/mainwindowstatus.cpp" line="54"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="46"/>
+        <location filename="../app/mainwindowstatus.cpp" line="54"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="48"/>
+        <location filename="../app/mainwindowstatus.cpp" line="56"/>
         <source>1 plugin</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="48"/>
+        <location filename="../app/mainwindowstatus.cpp" line="56"/>
         <source>%1 plugins</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="49"/>
+        <location filename="../app/mainwindowstatus.cpp" line="57"/>
         <source>1 port</source>
         <translation>1 Port</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="49"/>
+        <location filename="../app/mainwindowstatus.cpp" line="57"/>
         <source>%1 ports</source>
         <translation>%1 Ports</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="50"/>
+        <location filename="../app/mainwindowstatus.cpp" line="58"/>
         <source>1 launch file</source>
         <translation>1 Launch-File</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="50"/>
+        <location filename="../app/mainwindowstatus.cpp" line="58"/>
         <source>%1 launch files</source>
         <translation>%1 Launch-Files</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="51"/>
+        <location filename="../app/mainwindowstatus.cpp" line="59"/>
         <source>1 instance</source>
         <translation>1 Instanz</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="51"/>
+        <location filename="../app/mainwindowstatus.cpp" line="59"/>
         <source>%1 instances</source>
         <translation>%1 Instanzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="52"/>
+        <location filename="../app/mainwindowstatus.cpp" line="60"/>
         <source>1 unresolved</source>
         <translation>1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="52"/>
+        <location filename="../app/mainwindowstatus.cpp" line="60"/>
         <source>%1 unresolved</source>
         <translation>%1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="53"/>
+        <location filename="../app/mainwindowstatus.cpp" line="61"/>
         <source>1 composite</source>
         <translation>1 Komposit</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="53"/>
+        <location filename="../app/mainwindowstatus.cpp" line="61"/>
         <source>%1 composites</source>
         <translation>%1 Komposite</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="54"/>
+        <location filename="../app/mainwindowstatus.cpp" line="62"/>
         <source>1 diagnostic</source>
         <translation>1 Diagnose</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="54"/>
+        <location filename="../app/mainwindowstatus.cpp" line="62"/>
         <source>%1 diagnostics</source>
         <translation>%1 Diagnosen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="56"/>
+        <location filename="../app/mainwindowstatus.cpp" line="64"/>
         <source>Stage 1: packages, atomic node classes and their ports.
 Stage 2: launch files found, node instances they start and expressions that could not be resolved statically.
 Stage 3: composites, one per launch-file instance.</source>
@@ -3855,17 +3870,17 @@ Stufe 2: gefundene Launch-Files, die von ihnen gestarteten Knoteninstanzen und A
 Stufe 3: Komposite, eines pro Launch-File-Instanz.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="71"/>
+        <location filename="../app/mainwindowstatus.cpp" line="79"/>
         <source>Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.</source>
         <translation>Öffnen Sie einen ROS-2-Workspace (Datei → Workspace öffnen), um seinen Launch-Baum zu sehen.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="73"/>
+        <location filename="../app/mainwindowstatus.cpp" line="81"/>
         <source>Reading the launch files…</source>
         <translation>Die Launch-Files werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="76"/>
+        <location filename="../app/mainwindowstatus.cpp" line="84"/>
         <source>No launch files found in this workspace.
 
 Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file holding a launch description.</source>
@@ -3874,7 +3889,7 @@ Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file hol
 Stufe 2 liest *.launch.py-, *.launch.xml- und *.launch.yaml-Dateien sowie jede Datei, die eine Launch-Beschreibung enthält.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="81"/>
+        <location filename="../app/mainwindowstatus.cpp" line="89"/>
         <source>No launch file was analysed as a root.
 
 Choose one in Stages → Launch Arguments…</source>
@@ -3883,42 +3898,42 @@ Choose one in Stages → Launch Arguments…</source>
 Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <location filename="../app/mainwindowstatus.cpp" line="125"/>
         <source>atomic nodes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <location filename="../app/mainwindowstatus.cpp" line="125"/>
         <source>launch files</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="111"/>
+        <location filename="../app/mainwindowstatus.cpp" line="125"/>
         <source>composition</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="115"/>
+        <location filename="../app/mainwindowstatus.cpp" line="129"/>
         <source>Stage %1: %2 — %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="117"/>
+        <location filename="../app/mainwindowstatus.cpp" line="131"/>
         <source>Stage %1: %2 — %3/%4 composites</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="121"/>
+        <location filename="../app/mainwindowstatus.cpp" line="135"/>
         <source>Stage %1: %2 — %3/%4 files</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowstatus.cpp" line="131"/>
+        <location filename="../app/mainwindowstatus.cpp" line="145"/>
         <source>[%1/%2] %3</source>
         <translation>[%1/%2] %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="192"/>
+        <location filename="../app/mainwindow.cpp" line="193"/>
         <source>Cannot show %1</source>
         <translation>%1 kann nicht angezeigt werden</translation>
     </message>
@@ -3933,23 +3948,23 @@ Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="70"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="69"/>
         <source>&amp;Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="77"/>
-        <location filename="../app/mainwindowcorrections.cpp" line="93"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="76"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="92"/>
         <source>Select an element to correct it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="82"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="81"/>
         <source>Show &amp;Corrections</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="87"/>
+        <location filename="../app/mainwindowcorrections.cpp" line="86"/>
         <source>Show &amp;Inspector</source>
         <translation type="unfinished"></translation>
     </message>

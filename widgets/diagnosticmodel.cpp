@@ -318,14 +318,15 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
     const Entry &e = m_entries.at(at);
     const Diagnostic &d = *e.diagnostic;
     const std::optional<FindingMark> m = mark(index);
+    const bool accepted = m && m->status == FindingMark::Status::Accepted;
+    const bool hidden = m && !accepted;
     switch (role) {
     case Qt::DisplayRole:
         switch (index.column()) {
         case SeverityColumn:
             if (m)
-                return m->status == FindingMark::Status::Accepted
-                           ? tr("%1 (accepted)").arg(severityLabel(d.severity))
-                           : tr("%1 (hidden)").arg(severityLabel(d.severity));
+                return accepted ? tr("%1 (accepted)").arg(severityLabel(d.severity))
+                                : tr("%1 (hidden)").arg(severityLabel(d.severity));
             return severityLabel(d.severity);
         case KindColumn:
             return QStringLiteral("%1 — %2").arg(d.code, DiagnosticKind::of(d.code).title);
@@ -357,12 +358,16 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
         return keyOf(e);
     case GroupRole:
         return false;
+    // An accepted finding was looked at and is fine: a tick, in the normal colour. A hidden one
+    // was set aside: greyed and italic.
     case Qt::DecorationRole:
-        return index.column() == SeverityColumn ? Icons::severity(d.severity) : QVariant();
+        if (index.column() != SeverityColumn)
+            return {};
+        return accepted ? Icons::accepted() : Icons::severity(d.severity);
     case Qt::ForegroundRole:
-        return m ? QVariant(QColor(Qt::gray)) : QVariant();
+        return hidden ? QVariant(QColor(Qt::gray)) : QVariant();
     case Qt::FontRole:
-        if (m) {
+        if (hidden) {
             QFont f;
             f.setItalic(true);
             return f;
@@ -376,6 +381,14 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
             tip += QStringLiteral("<br/>") + tr("At %1").arg(place(d.evidence).toHtmlEscaped());
         if (d.contexts.size() > 1)
             tip += QStringLiteral("<br/>") + tr("Seen in %1 systems").arg(d.contexts.size());
+        if (m) {
+            const QString who = m->author.isEmpty() ? tr("someone") : m->author;
+            tip += QStringLiteral("<br/><i>") +
+                   (accepted ? tr("Accepted by %1") : tr("Hidden by %1")).arg(who.toHtmlEscaped());
+            if (!m->reason.isEmpty())
+                tip += QStringLiteral(": ") + m->reason.toHtmlEscaped();
+            tip += QStringLiteral("</i>");
+        }
         return tip;
     }
     default:

@@ -130,6 +130,11 @@ QIcon Icons::severity(Diagnostic::Severity severity)
     return {};
 }
 
+QIcon Icons::accepted()
+{
+    return fromResource("accepted");
+}
+
 void Icons::warmUp(QObject *context)
 {
     using Make = std::function<QIcon()>;
@@ -153,6 +158,7 @@ void Icons::warmUp(QObject *context)
         [] { return Icons::severity(Diagnostic::Severity::Info); },
         [] { return Icons::severity(Diagnostic::Severity::Warning); },
         [] { return Icons::severity(Diagnostic::Severity::Error); },
+        [] { return Icons::accepted(); },
     };
     auto *timer = new QTimer(context);
     timer->setInterval(0);

@@ -17,6 +17,8 @@ public:
     static QIcon node();
     static QIcon port(PortKind kind);
     static QIcon severity(Diagnostic::Severity severity);
+    /// A finding a person accepted (a green tick).
+    static QIcon accepted();
     static QIcon diagnostics();
     static QIcon open();
     static QIcon run();

@@ -5,6 +5,7 @@
 #include "diagnosticfilterbar.h"
 #include "diagnosticmodel.h"
 #include "document.h"
+#include "icons.h"
 #include "logview.h"
 #include "recovery.h"
 #include "testsupport.h"
@@ -291,6 +292,23 @@ private Q_SLOTS:
         QVERIFY(model.index(0, 0).data().toString().contains(QStringLiteral("hidden")));
         QVERIFY(model.index(0, 0).data(Qt::ForegroundRole).isValid());
         QCOMPARE(model.mark(model.index(0, 0))->status, FindingMark::Status::Hidden);
+        QCOMPARE(model.index(0, 0).data(Qt::DecorationRole).value<QIcon>().cacheKey(),
+                 Icons::severity(model.diagnostic(model.index(0, 0))->severity).cacheKey());
+        // An accepted finding does not look set aside: a tick, the normal colour, and who
+        // accepted it and why in its tooltip.
+        f.showHidden = false;
+        f.showAccepted = true;
+        model.setFilter(f);
+        const QModelIndex acceptedRow = model.index(0, 0);
+        QCOMPARE(acceptedRow.data(DiagnosticModel::KeyRole).toString(), second);
+        QVERIFY(acceptedRow.data().toString().contains(QStringLiteral("accepted")));
+        QCOMPARE(acceptedRow.data(Qt::DecorationRole).value<QIcon>().cacheKey(),
+                 Icons::accepted().cacheKey());
+        QVERIFY(!acceptedRow.data(Qt::ForegroundRole).isValid());
+        QVERIFY(!acceptedRow.data(Qt::FontRole).isValid());
+        QVERIFY(acceptedRow.data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("the map comes from a bag")));
         model.setFilter({});
 
         // Undo takes the accept back, redo puts it back.
