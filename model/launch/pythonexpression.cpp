@@ -187,7 +187,7 @@ private:
     {
         const Nested nested(&m_depth);
         const int thenStart = m_unknown;
-        if (nested.tooDeep() || !orExpr(v))
+        if (nested.tooDeep() || !logical(v, true))
             return false;
         const qsizetype before = m_i;
         if (!keyword(QLatin1StringView("if"))) {
@@ -196,7 +196,7 @@ private:
         }
         const int thenEnd = m_unknown;
         Value condition;
-        if (!orExpr(&condition) || !keyword(QLatin1StringView("else")))
+        if (!logical(&condition, true) || !keyword(QLatin1StringView("else")))
             return false;
         const int conditionEnd = m_unknown;
         Value otherwise;
@@ -211,35 +211,22 @@ private:
         }
         return true;
     }
-    bool orExpr(Value *v)
+    /// `a or b` (`either`) and `a and b`, which give an operand as Python does, and do not
+    /// evaluate the right one when the left decides.
+    bool logical(Value *v, bool either)
     {
-        if (!andExpr(v))
+        const auto operand = [&](Value *o) { return either ? logical(o, false) : notExpr(o); };
+        if (!operand(v))
             return false;
-        while (keyword(QLatin1StringView("or"))) {
+        while (keyword(either ? QLatin1StringView("or") : QLatin1StringView("and"))) {
             const int start = m_unknown;
             Value r;
-            if (!andExpr(&r))
+            if (!operand(&r))
                 return false;
-            if (!v->truthy())
-                *v = r;
-            else
+            if (v->truthy() == either)
                 skipped(start, m_unknown); // short-circuited
-        }
-        return true;
-    }
-    bool andExpr(Value *v)
-    {
-        if (!notExpr(v))
-            return false;
-        while (keyword(QLatin1StringView("and"))) {
-            const int start = m_unknown;
-            Value r;
-            if (!notExpr(&r))
-                return false;
-            if (v->truthy())
-                *v = r;
             else
-                skipped(start, m_unknown); // short-circuited
+                *v = r;
         }
         return true;
     }
