@@ -3,6 +3,8 @@
 #include <QList>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace rosarch {
 
@@ -243,52 +245,51 @@ private:
         }
         return comparison(v);
     }
+    enum Op
+    {
+        Eq,
+        Ne,
+        Le,
+        Ge,
+        Lt,
+        Gt,
+        In,
+        NotIn
+    };
+    /// The comparison operator at the position, consumed; none (nothing consumed) otherwise.
+    std::optional<Op> comparisonOperator()
+    {
+        static const std::pair<QLatin1StringView, Op> symbols[] = {
+            {QLatin1StringView("=="), Eq}, {QLatin1StringView("!="), Ne},
+            {QLatin1StringView("<="), Le}, {QLatin1StringView(">="), Ge},
+            {QLatin1StringView("<"), Lt},  {QLatin1StringView(">"), Gt}};
+        for (const auto &[text, op] : symbols)
+            if (symbol(text))
+                return op;
+        if (keyword(QLatin1StringView("in")))
+            return In;
+        const qsizetype at = m_i;
+        if (keyword(QLatin1StringView("not")) && keyword(QLatin1StringView("in")))
+            return NotIn;
+        m_i = at;
+        return std::nullopt;
+    }
     bool comparison(Value *v)
     {
         if (!sum(v))
             return false;
         for (bool compared = false;; compared = true) {
-            enum Op
-            {
-                Eq,
-                Ne,
-                Le,
-                Ge,
-                Lt,
-                Gt,
-                In,
-                NotIn
-            } op;
-            if (symbol(QLatin1StringView("==")))
-                op = Eq;
-            else if (symbol(QLatin1StringView("!=")))
-                op = Ne;
-            else if (symbol(QLatin1StringView("<=")))
-                op = Le;
-            else if (symbol(QLatin1StringView(">=")))
-                op = Ge;
-            else if (symbol(QLatin1StringView("<")))
-                op = Lt;
-            else if (symbol(QLatin1StringView(">")))
-                op = Gt;
-            else if (keyword(QLatin1StringView("in")))
-                op = In;
-            else if (const qsizetype at = m_i; keyword(QLatin1StringView("not"))) {
-                if (!keyword(QLatin1StringView("in"))) {
-                    m_i = at;
-                    return true;
-                }
-                op = NotIn;
-            } else
+            const std::optional<Op> op = comparisonOperator();
+            if (!op)
                 return true;
             Value r;
             if (compared || !sum(&r)) // a chain (a < b < c) is beyond the subset
                 return false;
             bool result = false;
-            switch (op) {
+            switch (*op) {
             case Eq:
             case Ne:
-                result = v->equals(r) == (op == Eq);
+                result = v->equals(r) == (*op == Eq);
                 break;
             case In:
             case NotIn:
@@ -300,7 +301,7 @@ private:
                 } else {
                     return unknown(v);
                 }
-                result = result != (op == NotIn);
+                result = result != (*op == NotIn);
                 break;
             default: {
                 int order = 0;
@@ -310,10 +311,10 @@ private:
                     order = v->n < r.n ? -1 : (v->n > r.n ? 1 : 0);
                 else
                     return unknown(v); // Python refuses to order a string and a number
-                result = op == Le   ? order <= 0
-                         : op == Ge ? order >= 0
-                         : op == Lt ? order < 0
-                                    : order > 0;
+                result = *op == Le   ? order <= 0
+                         : *op == Ge ? order >= 0
+                         : *op == Lt ? order < 0
+                                     : order > 0;
             }
             }
             *v = Value::boolean(result);
