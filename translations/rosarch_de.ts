@@ -2933,175 +2933,185 @@ The file was kept as %2.</source>
         <translation>Argument</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="66"/>
+        <location filename="../widgets/launchtreetext.cpp" line="67"/>
+        <source>Python expression</source>
+        <translation>Python-Ausdruck</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="69"/>
+        <source>Python expression nested too deeply to evaluate</source>
+        <translation>Python-Ausdruck zu tief verschachtelt für die Auswertung</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="70"/>
         <source>Expression</source>
         <translation>Ausdruck</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="90"/>
-        <location filename="../widgets/launchtreetext.cpp" line="112"/>
+        <location filename="../widgets/launchtreetext.cpp" line="94"/>
+        <location filename="../widgets/launchtreetext.cpp" line="116"/>
         <source>if: %1</source>
         <translation>wenn: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="92"/>
+        <location filename="../widgets/launchtreetext.cpp" line="96"/>
         <source>container of 1 component</source>
         <translation>Container mit 1 Komponente</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="93"/>
+        <location filename="../widgets/launchtreetext.cpp" line="97"/>
         <source>container of %1 components</source>
         <translation>Container mit %1 Komponenten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="95"/>
+        <location filename="../widgets/launchtreetext.cpp" line="99"/>
         <source>lifecycle</source>
         <translation>Lifecycle</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="97"/>
+        <location filename="../widgets/launchtreetext.cpp" line="101"/>
         <source>remap: %1</source>
         <translation>Remap: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="99"/>
+        <location filename="../widgets/launchtreetext.cpp" line="103"/>
         <source>param: %1</source>
         <translation>Param: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="101"/>
+        <location filename="../widgets/launchtreetext.cpp" line="105"/>
         <source>1 unresolved</source>
         <translation>1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="102"/>
+        <location filename="../widgets/launchtreetext.cpp" line="106"/>
         <source>%1 unresolved</source>
         <translation>%1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="110"/>
+        <location filename="../widgets/launchtreetext.cpp" line="114"/>
         <source>external</source>
         <translation>extern</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="116"/>
+        <location filename="../widgets/launchtreetext.cpp" line="120"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="117"/>
+        <location filename="../widgets/launchtreetext.cpp" line="121"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="120"/>
+        <location filename="../widgets/launchtreetext.cpp" line="124"/>
         <source>1 include</source>
         <translation>1 Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="121"/>
+        <location filename="../widgets/launchtreetext.cpp" line="125"/>
         <source>%1 includes</source>
         <translation>%1 Includes</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="131"/>
+        <location filename="../widgets/launchtreetext.cpp" line="135"/>
         <source>unresolved (%1)</source>
         <translation>unaufgelöst (%1)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="132"/>
+        <location filename="../widgets/launchtreetext.cpp" line="136"/>
         <source>unresolved (%1) · guess: %2</source>
         <translation>unaufgelöst (%1) · Annahme: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="138"/>
+        <location filename="../widgets/launchtreetext.cpp" line="142"/>
         <source>Composable node</source>
         <translation>Komponierbarer Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="139"/>
+        <location filename="../widgets/launchtreetext.cpp" line="143"/>
         <source>Lifecycle node</source>
         <translation>Lifecycle-Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="140"/>
+        <location filename="../widgets/launchtreetext.cpp" line="144"/>
         <source>Node</source>
         <translation>Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="144"/>
-        <location filename="../widgets/launchtreetext.cpp" line="212"/>
+        <location filename="../widgets/launchtreetext.cpp" line="148"/>
+        <location filename="../widgets/launchtreetext.cpp" line="216"/>
         <source>Package: %1</source>
         <translation>Paket: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="147"/>
+        <location filename="../widgets/launchtreetext.cpp" line="151"/>
         <source>Plugin: %1</source>
         <translation>Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="147"/>
+        <location filename="../widgets/launchtreetext.cpp" line="151"/>
         <source>Executable: %1</source>
         <translation>Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="150"/>
+        <location filename="../widgets/launchtreetext.cpp" line="154"/>
         <source>Class: %1</source>
         <translation>Klasse: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="155"/>
+        <location filename="../widgets/launchtreetext.cpp" line="159"/>
         <source>Class: not found in the workspace</source>
         <translation>Klasse: nicht im Workspace gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="156"/>
+        <location filename="../widgets/launchtreetext.cpp" line="160"/>
         <source>Class: not analysed; package %1 is not in the workspace</source>
         <translation>Klasse: nicht analysiert; Paket %1 liegt nicht im Workspace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="160"/>
+        <location filename="../widgets/launchtreetext.cpp" line="164"/>
         <source>Loaded into container: %1</source>
         <translation>Geladen in Container: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="163"/>
-        <location filename="../widgets/launchtreetext.cpp" line="215"/>
+        <location filename="../widgets/launchtreetext.cpp" line="167"/>
+        <location filename="../widgets/launchtreetext.cpp" line="219"/>
         <source>Condition: %1 (true)</source>
         <translation>Bedingung: %1 (wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="164"/>
+        <location filename="../widgets/launchtreetext.cpp" line="168"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not started)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht gestartet)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="166"/>
+        <location filename="../widgets/launchtreetext.cpp" line="170"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that declares it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das ihn deklariert, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="171"/>
+        <location filename="../widgets/launchtreetext.cpp" line="175"/>
         <source>Remappings:</source>
         <translation>Remaps:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="177"/>
+        <location filename="../widgets/launchtreetext.cpp" line="181"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="179"/>
+        <location filename="../widgets/launchtreetext.cpp" line="183"/>
         <source>Parameters given:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="185"/>
+        <location filename="../widgets/launchtreetext.cpp" line="189"/>
         <source>Loads plugins:</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../widgets/launchtreetext.cpp" line="188"/>
+        <location filename="../widgets/launchtreetext.cpp" line="192"/>
         <source>Parameters in effect: %n (listed under the node, each with its source)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3109,119 +3119,119 @@ The file was kept as %2.</source>
         </translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="261"/>
+        <location filename="../widgets/launchtreetext.cpp" line="265"/>
         <source>default in code</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="267"/>
+        <location filename="../widgets/launchtreetext.cpp" line="271"/>
         <source>launch file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="276"/>
+        <location filename="../widgets/launchtreetext.cpp" line="280"/>
         <source>No launch value or parameter file sets it: the default declared in code, at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="280"/>
+        <location filename="../widgets/launchtreetext.cpp" line="284"/>
         <source>From the parameter file %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="282"/>
+        <location filename="../widgets/launchtreetext.cpp" line="286"/>
         <source>Set by the launch file at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="191"/>
-        <location filename="../widgets/launchtreetext.cpp" line="226"/>
+        <location filename="../widgets/launchtreetext.cpp" line="195"/>
+        <location filename="../widgets/launchtreetext.cpp" line="230"/>
         <source>Not resolved statically:</source>
         <translation>Nicht statisch aufgelöst:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="193"/>
+        <location filename="../widgets/launchtreetext.cpp" line="197"/>
         <source>Declared at %1</source>
         <translation>Deklariert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="201"/>
+        <location filename="../widgets/launchtreetext.cpp" line="205"/>
         <source>Launch file</source>
         <translation>Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="202"/>
+        <location filename="../widgets/launchtreetext.cpp" line="206"/>
         <source>External include</source>
         <translation>Externes Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="203"/>
+        <location filename="../widgets/launchtreetext.cpp" line="207"/>
         <source>Included launch file</source>
         <translation>Eingebundenes Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="207"/>
+        <location filename="../widgets/launchtreetext.cpp" line="211"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="209"/>
+        <location filename="../widgets/launchtreetext.cpp" line="213"/>
         <source>Package %1 is not in the workspace; its nodes are not analysed.</source>
         <translation>Paket %1 liegt nicht im Workspace; seine Knoten werden nicht analysiert.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="216"/>
+        <location filename="../widgets/launchtreetext.cpp" line="220"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not included)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht eingebunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="218"/>
+        <location filename="../widgets/launchtreetext.cpp" line="222"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that includes it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das es einbindet, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="223"/>
+        <location filename="../widgets/launchtreetext.cpp" line="227"/>
         <source>Launch arguments:</source>
         <translation>Launch-Argumente:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="228"/>
-        <location filename="../widgets/launchtreetext.cpp" line="253"/>
+        <location filename="../widgets/launchtreetext.cpp" line="232"/>
+        <location filename="../widgets/launchtreetext.cpp" line="257"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="228"/>
+        <location filename="../widgets/launchtreetext.cpp" line="232"/>
         <source>Included at %1</source>
         <translation>Eingebunden in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="236"/>
+        <location filename="../widgets/launchtreetext.cpp" line="240"/>
         <source>&lt;b&gt;Namespace&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Namespace&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="237"/>
+        <location filename="../widgets/launchtreetext.cpp" line="241"/>
         <source>Pushed in %1</source>
         <translation>Gesetzt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="239"/>
+        <location filename="../widgets/launchtreetext.cpp" line="243"/>
         <source>1 instance inside this scope</source>
         <translation>1 Instanz in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="240"/>
+        <location filename="../widgets/launchtreetext.cpp" line="244"/>
         <source>%1 instances inside this scope</source>
         <translation>%1 Instanzen in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="247"/>
+        <location filename="../widgets/launchtreetext.cpp" line="251"/>
         <source>&lt;b&gt;Not resolved statically:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Nicht statisch aufgelöst:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="251"/>
+        <location filename="../widgets/launchtreetext.cpp" line="255"/>
         <source>The analysis continued with: %1</source>
         <translation>Die Analyse wurde fortgesetzt mit: %1</translation>
     </message>

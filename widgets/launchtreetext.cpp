@@ -63,6 +63,10 @@ QString LaunchTreeText::unresolvedKindLabel(const QString &kind)
         return tr("Opaque function");
     if (kind == QLatin1String("argument"))
         return tr("Argument");
+    if (kind == QLatin1String("eval"))
+        return tr("Python expression");
+    if (kind == QLatin1String("eval-too-deep"))
+        return tr("Python expression nested too deeply to evaluate");
     return kind.isEmpty() ? tr("Expression") : kind;
 }
 

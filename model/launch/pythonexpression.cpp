@@ -10,8 +10,6 @@ namespace rosarch {
 
 namespace {
 
-constexpr int kMaxDepth = 64; // nested parentheses, lists and calls
-
 struct Value
 {
     enum Kind
@@ -120,6 +118,9 @@ class Parser
 public:
     explicit Parser(const QString &text) : m_s(text) {}
 
+    /// Whether the nesting bound refused the expression.
+    bool wentTooDeep() const { return m_tooDeep; }
+
     bool parse(Value *v)
     {
         if (!expression(v))
@@ -179,15 +180,20 @@ private:
     /// Guards every rule that can recurse.
     struct Nested
     {
-        explicit Nested(int *depth) : m_depth(depth) { ++*m_depth; }
-        ~Nested() { --*m_depth; }
-        bool tooDeep() const { return *m_depth > kMaxDepth; }
-        int *m_depth;
+        explicit Nested(Parser *parser) : m_parser(parser) { ++m_parser->m_depth; }
+        ~Nested() { --m_parser->m_depth; }
+        bool tooDeep() const
+        {
+            const bool deep = m_parser->m_depth > PythonExpression::kMaxDepth;
+            m_parser->m_tooDeep = m_parser->m_tooDeep || deep;
+            return deep;
+        }
+        Parser *m_parser;
     };
 
     bool expression(Value *v)
     {
-        const Nested nested(&m_depth);
+        const Nested nested(this);
         const int thenStart = m_unknown;
         if (nested.tooDeep() || !logical(v, true))
             return false;
@@ -234,7 +240,7 @@ private:
     }
     bool notExpr(Value *v)
     {
-        const Nested nested(&m_depth);
+        const Nested nested(this);
         if (nested.tooDeep())
             return false;
         if (keyword(QLatin1StringView("not"))) {
@@ -472,7 +478,7 @@ private:
     }
     bool atom(Value *v)
     {
-        const Nested nested(&m_depth);
+        const Nested nested(this);
         skip();
         if (nested.tooDeep() || m_i >= m_s.size())
             return false;
@@ -557,15 +563,20 @@ private:
     const QString &m_s;
     qsizetype m_i = 0;
     int m_depth = 0;
+    bool m_tooDeep = false;
     int m_unknown = 0; ///< evaluated parts without a value
 };
 
 } // namespace
 
-bool PythonExpression::evaluate(const QString &expression, QString *value)
+bool PythonExpression::evaluate(const QString &expression, QString *value, bool *tooDeep)
 {
     Value v;
-    if (!Parser(expression).parse(&v))
+    Parser parser(expression);
+    const bool parsed = parser.parse(&v);
+    if (tooDeep)
+        *tooDeep = parser.wentTooDeep();
+    if (!parsed)
         return false;
     *value = v.text();
     return true;

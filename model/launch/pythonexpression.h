@@ -13,9 +13,13 @@ namespace rosarch {
 class PythonExpression
 {
 public:
+    /// Nesting deeper than this (parentheses, lists, calls, `not`) is refused.
+    static constexpr int kMaxDepth = 64;
+
     /// The value of `expression` as Python's str() would print it, except that booleans are
-    /// "true" and "false" as launch conditions read them; false when it is beyond the subset.
-    static bool evaluate(const QString &expression, QString *value);
+    /// "true" and "false" as launch conditions read them; false when it is beyond the subset,
+    /// with `tooDeep` set when the reason is nesting past kMaxDepth.
+    static bool evaluate(const QString &expression, QString *value, bool *tooDeep = nullptr);
 };
 
 } // namespace rosarch

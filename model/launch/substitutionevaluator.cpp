@@ -98,10 +98,16 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
         for (const Substitution &p : s.parts)
             expression += sub(p);
         QString value;
-        if (evaluatePython(expression, &value)) {
+        bool tooDeep = false;
+        if (PythonExpression::evaluate(expression, &value, &tooDeep)) {
             r->value += value;
         } else {
-            r->unresolved.append({QStringLiteral("eval"), expression, expression, {}});
+            // Past the nesting bound the expression is said to be so, not only unknown.
+            r->unresolved.append(
+                {tooDeep ? QStringLiteral("eval-too-deep") : QStringLiteral("eval"),
+                 expression,
+                 expression,
+                 {}});
             r->value += expression;
         }
         return;
@@ -129,7 +135,8 @@ bool SubstitutionEvaluator::isTrue(const Substitution &s, QList<Unresolved> *unr
     const QString v = r.value.trimmed().toLower();
     if (!r.isResolved()) {
         for (Unresolved u : r.unresolved) {
-            u.kind = QStringLiteral("condition");
+            if (u.kind != QLatin1String("eval-too-deep")) // a bound hit keeps saying so
+                u.kind = QStringLiteral("condition");
             u.guess = QStringLiteral("true");
             unresolved->append(u);
         }

@@ -348,6 +348,23 @@ private Q_SLOTS:
         const QString deep = QString(100000, QLatin1Char('(')) + QStringLiteral("1") +
                              QString(100000, QLatin1Char(')'));
         QVERIFY(!SubstitutionEvaluator::evaluatePython(deep, &out));
+        // and says so where the expression is evaluated: a kind of its own among the unresolved.
+        Substitution eval;
+        eval.kind = Substitution::Kind::Eval;
+        eval.parts << lit(deep);
+        const QMap<QString, QString> none;
+        const SubstitutionEvaluator::Result r =
+            SubstitutionEvaluator(none, QString()).evaluate(eval);
+        QCOMPARE(r.unresolved.size(), 1);
+        QCOMPARE(r.unresolved[0].kind, QStringLiteral("eval-too-deep"));
+        QList<Unresolved> asCondition;
+        QVERIFY(SubstitutionEvaluator(none, QString()).isTrue(eval, &asCondition));
+        QCOMPARE(asCondition.size(), 1);
+        QCOMPARE(asCondition[0].kind, QStringLiteral("eval-too-deep"));
+        QCOMPARE(asCondition[0].guess, QStringLiteral("true"));
+        eval.parts = {lit(QStringLiteral("os.getcwd()"))};
+        QCOMPARE(SubstitutionEvaluator(none, QString()).evaluate(eval).unresolved[0].kind,
+                 QStringLiteral("eval"));
         QVERIFY(!SubstitutionEvaluator::evaluatePython(
             QString(100000, QLatin1Char('-')) + QStringLiteral("1"), &out));
     }
