@@ -2280,81 +2280,86 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
     </message>
     <message>
         <location filename="../widgets/diagram/diagramtext.cpp" line="86"/>
+        <source>Remapped to a name built from a launch value nobody sets; the name is a guess.</source>
+        <translation>Umbenannt auf einen Namen aus einem Launch-Wert, den niemand setzt; der Name ist eine Vermutung.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
         <source>The name comes from a parameter.</source>
         <translation>Der Name stammt aus einem Parameter.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="88"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
         <source>Remapped by the launch file.</source>
         <translation>Vom Launch-File per Remap umbenannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="90"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
         <source>Guard: %1</source>
         <translation>Bedingung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="94"/>
         <source>Guard (false here): %1</source>
         <translation>Bedingung (hier falsch): %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="96"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="108"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="111"/>
         <source>Namespace %1 — right-click to collapse or expand</source>
         <translation>Namespace %1 – Rechtsklick zum Ein- oder Ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="111"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="114"/>
         <source>Topic %1</source>
         <translation>Topic %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="112"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="115"/>
         <source>Service %1</source>
         <translation>Service %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="113"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="116"/>
         <source>Action %1</source>
         <translation>Action %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="119"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="122"/>
         <source>Boundary port %1: %2 %3</source>
         <translation>Randport %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="120"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="123"/>
         <source>Promoted: nothing inside this launch file is on the other side.</source>
         <translation>Nach außen geführt: Innerhalb dieses Launch-Files gibt es keine Gegenseite.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="129"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="132"/>
         <source>%1 (%2) %3 %4 — click to see the code</source>
         <translation>%1 (%2) %3 %4 – Klicken, um den Code zu sehen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="144"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="147"/>
         <source>1 element of the reference is missing: %1</source>
         <translation>1 Element der Referenz fehlt: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="145"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="148"/>
         <source>%1 elements of the reference are missing: %2</source>
         <translation>%1 Elemente der Referenz fehlen: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="150"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="153"/>
         <source>launch file (outside the workspace)</source>
         <translation>Launch-File (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="151"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="154"/>
         <source>launch file %1</source>
         <translation>Launch-File %1</translation>
     </message>
@@ -2908,210 +2913,215 @@ The file was kept as %2.</source>
 <context>
     <name>rosarch::LaunchTreeText</name>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="57"/>
+        <location filename="../widgets/launchtreetext.cpp" line="59"/>
         <source>Substitution</source>
         <translation>Substitution</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="59"/>
+        <location filename="../widgets/launchtreetext.cpp" line="61"/>
         <source>Condition</source>
         <translation>Bedingung</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="61"/>
+        <location filename="../widgets/launchtreetext.cpp" line="63"/>
         <source>Include</source>
         <translation>Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="63"/>
+        <location filename="../widgets/launchtreetext.cpp" line="65"/>
         <source>Opaque function</source>
         <translation>Opake Funktion</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="65"/>
+        <location filename="../widgets/launchtreetext.cpp" line="67"/>
         <source>Argument</source>
         <translation>Argument</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="67"/>
+        <location filename="../widgets/launchtreetext.cpp" line="69"/>
         <source>Python expression</source>
         <translation>Python-Ausdruck</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="69"/>
+        <location filename="../widgets/launchtreetext.cpp" line="71"/>
         <source>Python expression nested too deeply to evaluate</source>
         <translation>Python-Ausdruck zu tief verschachtelt für die Auswertung</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="70"/>
+        <location filename="../widgets/launchtreetext.cpp" line="72"/>
         <source>Expression</source>
         <translation>Ausdruck</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="94"/>
-        <location filename="../widgets/launchtreetext.cpp" line="116"/>
+        <location filename="../widgets/launchtreetext.cpp" line="96"/>
+        <location filename="../widgets/launchtreetext.cpp" line="118"/>
         <source>if: %1</source>
         <translation>wenn: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="96"/>
+        <location filename="../widgets/launchtreetext.cpp" line="98"/>
         <source>container of 1 component</source>
         <translation>Container mit 1 Komponente</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="97"/>
+        <location filename="../widgets/launchtreetext.cpp" line="99"/>
         <source>container of %1 components</source>
         <translation>Container mit %1 Komponenten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="99"/>
+        <location filename="../widgets/launchtreetext.cpp" line="101"/>
         <source>lifecycle</source>
         <translation>Lifecycle</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="101"/>
+        <location filename="../widgets/launchtreetext.cpp" line="103"/>
         <source>remap: %1</source>
         <translation>Remap: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="103"/>
+        <location filename="../widgets/launchtreetext.cpp" line="105"/>
         <source>param: %1</source>
         <translation>Param: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="105"/>
+        <location filename="../widgets/launchtreetext.cpp" line="107"/>
         <source>1 unresolved</source>
         <translation>1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="106"/>
+        <location filename="../widgets/launchtreetext.cpp" line="108"/>
         <source>%1 unresolved</source>
         <translation>%1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="114"/>
+        <location filename="../widgets/launchtreetext.cpp" line="116"/>
         <source>external</source>
         <translation>extern</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="120"/>
+        <location filename="../widgets/launchtreetext.cpp" line="122"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="121"/>
+        <location filename="../widgets/launchtreetext.cpp" line="123"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="124"/>
+        <location filename="../widgets/launchtreetext.cpp" line="126"/>
         <source>1 include</source>
         <translation>1 Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="125"/>
+        <location filename="../widgets/launchtreetext.cpp" line="127"/>
         <source>%1 includes</source>
         <translation>%1 Includes</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="135"/>
+        <location filename="../widgets/launchtreetext.cpp" line="137"/>
         <source>unresolved (%1)</source>
         <translation>unaufgelöst (%1)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="136"/>
+        <location filename="../widgets/launchtreetext.cpp" line="138"/>
         <source>unresolved (%1) · guess: %2</source>
         <translation>unaufgelöst (%1) · Annahme: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="142"/>
+        <location filename="../widgets/launchtreetext.cpp" line="144"/>
         <source>Composable node</source>
         <translation>Komponierbarer Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="143"/>
+        <location filename="../widgets/launchtreetext.cpp" line="145"/>
         <source>Lifecycle node</source>
         <translation>Lifecycle-Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="144"/>
+        <location filename="../widgets/launchtreetext.cpp" line="146"/>
         <source>Node</source>
         <translation>Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="148"/>
-        <location filename="../widgets/launchtreetext.cpp" line="216"/>
+        <location filename="../widgets/launchtreetext.cpp" line="150"/>
+        <location filename="../widgets/launchtreetext.cpp" line="227"/>
         <source>Package: %1</source>
         <translation>Paket: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="151"/>
+        <location filename="../widgets/launchtreetext.cpp" line="153"/>
         <source>Plugin: %1</source>
         <translation>Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="151"/>
+        <location filename="../widgets/launchtreetext.cpp" line="153"/>
         <source>Executable: %1</source>
         <translation>Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="154"/>
+        <location filename="../widgets/launchtreetext.cpp" line="156"/>
         <source>Class: %1</source>
         <translation>Klasse: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="159"/>
+        <location filename="../widgets/launchtreetext.cpp" line="161"/>
         <source>Class: not found in the workspace</source>
         <translation>Klasse: nicht im Workspace gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="160"/>
+        <location filename="../widgets/launchtreetext.cpp" line="162"/>
         <source>Class: not analysed; package %1 is not in the workspace</source>
         <translation>Klasse: nicht analysiert; Paket %1 liegt nicht im Workspace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="164"/>
+        <location filename="../widgets/launchtreetext.cpp" line="166"/>
         <source>Loaded into container: %1</source>
         <translation>Geladen in Container: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="167"/>
-        <location filename="../widgets/launchtreetext.cpp" line="219"/>
+        <location filename="../widgets/launchtreetext.cpp" line="172"/>
+        <source>Condition: %1 (undecidable: kept, as if true)</source>
+        <translation>Bedingung: %1 (nicht entscheidbar: beibehalten, als wäre sie wahr)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="174"/>
+        <location filename="../widgets/launchtreetext.cpp" line="230"/>
         <source>Condition: %1 (true)</source>
         <translation>Bedingung: %1 (wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="168"/>
+        <location filename="../widgets/launchtreetext.cpp" line="171"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not started)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht gestartet)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="170"/>
+        <location filename="../widgets/launchtreetext.cpp" line="176"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that declares it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das ihn deklariert, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="175"/>
+        <location filename="../widgets/launchtreetext.cpp" line="186"/>
         <source>Remappings:</source>
         <translation>Remaps:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="181"/>
+        <location filename="../widgets/launchtreetext.cpp" line="192"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="183"/>
+        <location filename="../widgets/launchtreetext.cpp" line="194"/>
         <source>Parameters given:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="189"/>
+        <location filename="../widgets/launchtreetext.cpp" line="200"/>
         <source>Loads plugins:</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../widgets/launchtreetext.cpp" line="192"/>
+        <location filename="../widgets/launchtreetext.cpp" line="203"/>
         <source>Parameters in effect: %n (listed under the node, each with its source)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3119,119 +3129,124 @@ The file was kept as %2.</source>
         </translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="265"/>
+        <location filename="../widgets/launchtreetext.cpp" line="276"/>
         <source>default in code</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="271"/>
+        <location filename="../widgets/launchtreetext.cpp" line="282"/>
         <source>launch file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="280"/>
+        <location filename="../widgets/launchtreetext.cpp" line="291"/>
         <source>No launch value or parameter file sets it: the default declared in code, at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="284"/>
+        <location filename="../widgets/launchtreetext.cpp" line="295"/>
         <source>From the parameter file %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="286"/>
+        <location filename="../widgets/launchtreetext.cpp" line="297"/>
         <source>Set by the launch file at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="195"/>
-        <location filename="../widgets/launchtreetext.cpp" line="230"/>
+        <location filename="../widgets/launchtreetext.cpp" line="206"/>
+        <location filename="../widgets/launchtreetext.cpp" line="241"/>
         <source>Not resolved statically:</source>
         <translation>Nicht statisch aufgelöst:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="197"/>
+        <location filename="../widgets/launchtreetext.cpp" line="182"/>
+        <source>%1 → %2 (a guess: built from a launch value nobody sets)</source>
+        <translation>%1 → %2 (eine Vermutung: aus einem Launch-Wert, den niemand setzt)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="208"/>
         <source>Declared at %1</source>
         <translation>Deklariert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="205"/>
+        <location filename="../widgets/launchtreetext.cpp" line="216"/>
         <source>Launch file</source>
         <translation>Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="206"/>
+        <location filename="../widgets/launchtreetext.cpp" line="217"/>
         <source>External include</source>
         <translation>Externes Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="207"/>
+        <location filename="../widgets/launchtreetext.cpp" line="218"/>
         <source>Included launch file</source>
         <translation>Eingebundenes Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="211"/>
+        <location filename="../widgets/launchtreetext.cpp" line="222"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="213"/>
+        <location filename="../widgets/launchtreetext.cpp" line="224"/>
         <source>Package %1 is not in the workspace; its nodes are not analysed.</source>
         <translation>Paket %1 liegt nicht im Workspace; seine Knoten werden nicht analysiert.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="220"/>
+        <location filename="../widgets/launchtreetext.cpp" line="231"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not included)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht eingebunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="222"/>
+        <location filename="../widgets/launchtreetext.cpp" line="233"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that includes it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das es einbindet, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="227"/>
+        <location filename="../widgets/launchtreetext.cpp" line="238"/>
         <source>Launch arguments:</source>
         <translation>Launch-Argumente:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="232"/>
-        <location filename="../widgets/launchtreetext.cpp" line="257"/>
+        <location filename="../widgets/launchtreetext.cpp" line="243"/>
+        <location filename="../widgets/launchtreetext.cpp" line="268"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="232"/>
+        <location filename="../widgets/launchtreetext.cpp" line="243"/>
         <source>Included at %1</source>
         <translation>Eingebunden in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="240"/>
+        <location filename="../widgets/launchtreetext.cpp" line="251"/>
         <source>&lt;b&gt;Namespace&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Namespace&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="241"/>
+        <location filename="../widgets/launchtreetext.cpp" line="252"/>
         <source>Pushed in %1</source>
         <translation>Gesetzt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="243"/>
+        <location filename="../widgets/launchtreetext.cpp" line="254"/>
         <source>1 instance inside this scope</source>
         <translation>1 Instanz in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="244"/>
+        <location filename="../widgets/launchtreetext.cpp" line="255"/>
         <source>%1 instances inside this scope</source>
         <translation>%1 Instanzen in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="251"/>
+        <location filename="../widgets/launchtreetext.cpp" line="262"/>
         <source>&lt;b&gt;Not resolved statically:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Nicht statisch aufgelöst:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="255"/>
+        <location filename="../widgets/launchtreetext.cpp" line="266"/>
         <source>The analysis continued with: %1</source>
         <translation>Die Analyse wurde fortgesetzt mit: %1</translation>
     </message>

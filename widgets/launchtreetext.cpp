@@ -1,6 +1,8 @@
 #include "launchtreetext.h"
 #include "atomicnode.h"
 
+#include <algorithm>
+
 namespace rosarch {
 
 namespace {
@@ -162,16 +164,26 @@ QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *
     }
     if (!node.container.isEmpty())
         line(tr("Loaded into container: %1").arg(html(node.container)));
+    const bool undecided =
+        std::any_of(node.unresolved.cbegin(), node.unresolved.cend(),
+                    [](const Unresolved &u) { return u.kind == QLatin1String("condition"); });
     if (!node.condition.isEmpty())
-        line(node.active
-                 ? tr("Condition: %1 (true)").arg(html(node.condition))
-                 : tr("Condition: %1 (<b>false</b>: not started)").arg(html(node.condition)));
+        line(!node.active
+                 ? tr("Condition: %1 (<b>false</b>: not started)").arg(html(node.condition))
+             : undecided
+                 ? tr("Condition: %1 (undecidable: kept, as if true)").arg(html(node.condition))
+                 : tr("Condition: %1 (true)").arg(html(node.condition)));
     if (node.active && !parentActive)
         line(tr("<b>Inactive:</b> the launch file that declares it is not included"));
     if (!node.remaps.isEmpty()) {
         QStringList entries;
-        for (const auto &r : node.remaps)
-            entries << QStringLiteral("%1 → %2").arg(html(r.first), html(r.second));
+        for (qsizetype i = 0; i < node.remaps.size(); ++i) {
+            const auto &[from, to] = node.remaps.at(i);
+            entries << (node.guessedRemaps.contains(int(i))
+                            ? tr("%1 → %2 (a guess: built from a launch value nobody sets)")
+                                  .arg(html(from), html(to))
+                            : QStringLiteral("%1 → %2").arg(html(from), html(to)));
+        }
         line(tr("Remappings:") + htmlList(entries));
     }
     if (!node.parameters.isEmpty()) {

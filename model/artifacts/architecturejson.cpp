@@ -18,7 +18,7 @@ Json portJson(const PartPort &p)
     if (!p.nameAsWritten.isEmpty())
         j["name_as_written"] = utf8(p.nameAsWritten);
     j["type"] = utf8(p.type);
-    if (!p.resolved)
+    if (!p.resolved || p.guessed)
         j["unresolved"] = true;
     if (p.parameterDerived)
         j["parameter_derived"] = true;
@@ -87,12 +87,16 @@ Json compositeJson(const Composite &c, const QString &ccd)
     }
     j["channels"] = channels;
     Json boundary = Json::array();
-    for (const BoundaryPort &b : c.boundary)
-        boundary.push_back({{"id", utf8(b.id)},
-                            {"direction", b.isInput() ? "in" : "out"},
-                            {"kind", utf8(portKindName(b.kind))},
-                            {"name", utf8(b.name)},
-                            {"type", utf8(b.type)}});
+    for (const BoundaryPort &b : c.boundary) {
+        Json bj = {{"id", utf8(b.id)},
+                   {"direction", b.isInput() ? "in" : "out"},
+                   {"kind", utf8(portKindName(b.kind))},
+                   {"name", utf8(b.name)},
+                   {"type", utf8(b.type)}};
+        if (b.guessed)
+            bj["unresolved"] = true;
+        boundary.push_back(bj);
+    }
     j["boundary_ports"] = boundary;
     Json connections = Json::array();
     for (const Connection &k : c.connections)

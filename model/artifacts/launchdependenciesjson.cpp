@@ -80,6 +80,9 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["container"] = utf8(n.container);
         j["lifecycle"] = n.lifecycle;
         j["remaps"] = pairs(n.remaps, "from", "to");
+        for (int i : n.guessedRemaps) // the target rests on a guess
+            if (i >= 0 && i < int(j["remaps"].size()))
+                j["remaps"][size_t(i)]["unresolved"] = true;
         j["parameters"] = pairs(n.parameters, "name", "value");
         Json effective = Json::array();
         for (const ParameterSetting &p : n.effectiveParameters) {

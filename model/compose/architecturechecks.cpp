@@ -75,8 +75,8 @@ private:
                 m_named[fq].append(&part);
             }
             for (const PartPort &port : part.ports) {
-                if (!port.active || !port.resolved)
-                    continue;
+                if (!port.active || !port.resolved || port.guessed)
+                    continue; // a guessed name proves nothing about who hears whom
                 const QString key = portFamilyName(port.kind) + QLatin1Char(' ') + port.name;
                 if (!m_system.contains(key))
                     m_order.append(key);

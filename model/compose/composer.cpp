@@ -140,7 +140,7 @@ void wire(Composite *c)
         for (const Endpoint &e : eps) {
             const QString prefix = portIdPrefix(e.port->kind);
             const QString id = prefix + QString::number(++counters[prefix]);
-            c->boundary.append({id, e.port->kind, name, e.port->type});
+            c->boundary.append({id, e.port->kind, name, e.port->type, e.port->guessed});
             const bool in = c->boundary.constLast().isInput();
             c->connections.append(
                 {in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut, e.part->id,
@@ -227,6 +227,11 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             int used = -1;
             pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);
             pp.remapped = used >= 0;
+            // A rule past the instance's own is the container's (process-wide).
+            pp.guessed = used >= 0 && (used < instance.remaps.size()
+                                           ? instance.guessedRemaps.contains(used)
+                                           : container && container->guessedRemaps.contains(
+                                                              used - int(instance.remaps.size())));
             if (used >= 0 && rulesUsed)
                 rulesUsed->append(used);
         } else {
@@ -391,6 +396,7 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                         pp.kind = b.kind;
                         pp.name = b.name;
                         pp.type = b.type;
+                        pp.guessed = b.guessed;
                         part.ports.append(pp);
                     }
                 }

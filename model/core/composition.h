@@ -21,6 +21,10 @@ struct PartPort
     QString name; ///< the resolved absolute name ("/robot_ns/scan"); the guess when unresolved
     QString type; ///< canonical "pkg/msg/T"
     bool resolved = true; ///< false when the name is an expression the analysis could not decide
+    /// The name comes from a remapping whose target rests on a launch value the analysis had to
+    /// guess (an argument nobody sets): wired under the guess, but not a name to draw
+    /// conclusions from, so the checks leave it out and the artifacts mark it unresolved.
+    bool guessed = false;
     bool parameterDerived = false; ///< the name comes from a parameter (default or launch value)
     bool remapped = false;
     bool active = true; ///< the guard holds for this instance (or is undecidable)
@@ -82,6 +86,7 @@ struct BoundaryPort
     PortKind kind = PortKind::Publisher; ///< the kind of the inner port(s)
     QString name; ///< resolved absolute name (what wiring at the next level up matches)
     QString type;
+    bool guessed = false; ///< the inner port's name rests on a guessed launch value
     bool isInput() const; ///< subscriber, service server, action server
     bool operator==(const BoundaryPort &) const = default;
 };

@@ -49,7 +49,8 @@ struct NodeInstance
     QString nameSpace; ///< effective namespace ("/" at the root)
     QString container; ///< composable: the container instance id (or its name when not found)
     bool lifecycle = false;
-    QList<QPair<QString, QString>> remaps;       ///< evaluated from -> to (scope remaps first)
+    QList<QPair<QString, QString>> remaps; ///< evaluated from -> to (scope remaps first)
+    QList<int> guessedRemaps; ///< indices into remaps whose target rests on a guess (unresolved)
     QList<QPair<QString, QString>> parameters;   ///< name -> value; parameter files as ("", path)
     QList<ParameterSetting> effectiveParameters; ///< the final values, one per name, sorted
     /// The plugins the instance loads, named by its parameters the pluginlib way

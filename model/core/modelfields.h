@@ -64,8 +64,8 @@ template <class F> void fields(ParameterSetting &v, F f)
 template <class F> void fields(NodeInstance &v, F f)
 {
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
-      v.nameSpace, v.container, v.lifecycle, v.remaps, v.parameters, v.effectiveParameters,
-      v.plugins, v.condition, v.active, v.unresolved, v.evidence);
+      v.nameSpace, v.container, v.lifecycle, v.remaps, v.guessedRemaps, v.parameters,
+      v.effectiveParameters, v.plugins, v.condition, v.active, v.unresolved, v.evidence);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {
@@ -84,8 +84,8 @@ template <class F> void fields(LaunchDependencies &v, F f)
 }
 template <class F> void fields(PartPort &v, F f)
 {
-    f(v.id, v.kind, v.nameAsWritten, v.name, v.type, v.resolved, v.parameterDerived, v.remapped,
-      v.active, v.guard, v.qos, v.evidence);
+    f(v.id, v.kind, v.nameAsWritten, v.name, v.type, v.resolved, v.guessed, v.parameterDerived,
+      v.remapped, v.active, v.guard, v.qos, v.evidence);
 }
 template <class F> void fields(RosNodePart &v, F f)
 {
@@ -98,7 +98,7 @@ template <class F> void fields(Channel &v, F f)
 }
 template <class F> void fields(BoundaryPort &v, F f)
 {
-    f(v.id, v.kind, v.name, v.type);
+    f(v.id, v.kind, v.name, v.type, v.guessed);
 }
 template <class F> void fields(Connection &v, F f)
 {

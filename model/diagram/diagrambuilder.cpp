@@ -125,7 +125,8 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, bool com
         p.key = DiagramBuilder::portKey(part.id, port.id);
         p.label = portLabel(port);
         p.input = isInputPort(port.kind);
-        p.flags = (port.active ? 0 : LayoutInactive) | (port.resolved ? 0 : LayoutUnresolved) |
+        p.flags = (port.active ? 0 : LayoutInactive) |
+                  (port.resolved && !port.guessed ? 0 : LayoutUnresolved) |
                   (port.parameterDerived ? LayoutParameterDerived : 0) | marksFlags(port.marks);
         double &side = p.input ? inputWidth : outputWidth;
         side = std::max(side, m.smallWidth(p.label));

@@ -191,10 +191,13 @@ QStringList LaunchExecutor::directIncludes(const QString &file)
 }
 
 QString LaunchExecutor::evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
-                                 QList<Unresolved> *unresolved, const Evidence &evidence) const
+                                 QList<Unresolved> *unresolved, const Evidence &evidence,
+                                 bool *guessed) const
 {
-    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file));
+    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file), &scope.guessed);
     SubstitutionEvaluator::Result r = eval.evaluate(s);
+    if (guessed)
+        *guessed = !r.isResolved();
     for (Unresolved &u : r.unresolved) {
         u.evidence = evidence;
         if (u.guess.isEmpty())
@@ -210,7 +213,7 @@ bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, c
 {
     if (!a.condition.isSet())
         return true;
-    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file));
+    const SubstitutionEvaluator eval(scope.configurations, dirOf(frame.file), &scope.guessed);
     QList<Unresolved> found;
     bool holds = eval.isTrue(a.condition.expression, &found);
     if (!found.isEmpty()) {
@@ -255,6 +258,16 @@ bool LaunchExecutor::ContainerName::matches(const NodeInstance &n) const
     return fq == m_target || fq == m_scoped;
 }
 
+void LaunchExecutor::configure(Scope &scope, const QString &name, const QString &value,
+                               bool guessed)
+{
+    scope.configurations.insert(name, value);
+    if (guessed)
+        scope.guessed.insert(name);
+    else
+        scope.guessed.remove(name);
+}
+
 void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QString &id)
 {
     if (instance >= 0)
@@ -285,8 +298,10 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             if (scope.configurations.contains(name))
                 break; // given by the person or by the including file
             if (a.hasValue) {
-                scope.configurations.insert(
-                    name, evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+                bool guessed = false;
+                const QString value =
+                    evaluate(a.value, scope, frame, unresolvedSink(), a.evidence, &guessed);
+                configure(scope, name, value, guessed);
             } else if (!frame.collectOnly && frame.instance >= 0) {
                 m_out->instances[frame.instance].unresolved.append(
                     {QStringLiteral("argument"),
@@ -295,11 +310,14 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             }
             break;
         }
-        case LaunchAction::Kind::SetLaunchConfiguration:
-            scope.configurations.insert(
-                evaluate(a.name, scope, frame, nullptr, a.evidence),
-                evaluate(a.value, scope, frame, unresolvedSink(), a.evidence));
+        case LaunchAction::Kind::SetLaunchConfiguration: {
+            const QString name = evaluate(a.name, scope, frame, nullptr, a.evidence);
+            bool guessed = false;
+            const QString value =
+                evaluate(a.value, scope, frame, unresolvedSink(), a.evidence, &guessed);
+            configure(scope, name, value, guessed);
             break;
+        }
         case LaunchAction::Kind::PushNamespace:
             if (conditionHolds(a, scope, frame, unresolvedSink()))
                 scope.nameSpace =
@@ -307,9 +325,15 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                                                             unresolvedSink(), a.evidence));
             break;
         case LaunchAction::Kind::SetRemap:
-            for (const LaunchRemap &r : a.remaps)
-                scope.remaps.append({evaluate(r.from, scope, frame, unresolvedSink(), r.evidence),
-                                     evaluate(r.to, scope, frame, unresolvedSink(), r.evidence)});
+            for (const LaunchRemap &r : a.remaps) {
+                bool guessed = false;
+                const QString to =
+                    evaluate(r.to, scope, frame, unresolvedSink(), r.evidence, &guessed);
+                if (guessed)
+                    scope.guessedRemaps.append(int(scope.remaps.size()));
+                scope.remaps.append(
+                    {evaluate(r.from, scope, frame, unresolvedSink(), r.evidence), to});
+            }
             break;
         case LaunchAction::Kind::SetParameter:
             for (const LaunchParameter &p : a.parameters)
@@ -324,9 +348,11 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             if (!inner.active && frame.collectOnly)
                 break;
             execute(a.children, inner, frame, depth + 1);
-            if (!a.scoped)
-                scope = Scope{inner.configurations, inner.nameSpace, inner.remaps, inner.parameters,
-                              scope.active};
+            if (!a.scoped) {
+                const bool active = scope.active;
+                scope = inner;
+                scope.active = active;
+            }
             break;
         }
         case LaunchAction::Kind::Node:
@@ -481,9 +507,14 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         }
     }
     n.remaps = scope.remaps;
-    for (const LaunchRemap &r : a.remaps)
-        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence),
-                         evaluate(r.to, scope, frame, &u, r.evidence)});
+    n.guessedRemaps = scope.guessedRemaps;
+    for (const LaunchRemap &r : a.remaps) {
+        bool guessed = false;
+        const QString to = evaluate(r.to, scope, frame, &u, r.evidence, &guessed);
+        if (guessed)
+            n.guessedRemaps.append(int(n.remaps.size()));
+        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence), to});
+    }
     for (const ParameterSetting &p : scope.parameters)
         n.parameters.append({p.name, p.value});
     for (const LaunchParameter &p : a.parameters)
@@ -539,8 +570,9 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     inner.active = active;
     for (const auto &[name, value] : a.arguments) {
         const QString n = evaluate(name, scope, frame, &inst.unresolved, a.evidence);
-        const QString v = evaluate(value, scope, frame, &inst.unresolved, a.evidence);
-        inner.configurations.insert(n, v);
+        bool guessed = false;
+        const QString v = evaluate(value, scope, frame, &inst.unresolved, a.evidence, &guessed);
+        configure(inner, n, v, guessed);
         inst.arguments.append({n, v});
     }
     if (target.file.isEmpty() && !target.external) {

@@ -83,8 +83,13 @@ private:
     struct Scope
     {
         QMap<QString, QString> configurations;
+        /// Configurations whose value rests on something unresolved (an argument without a
+        /// value, an expression beyond the evaluator): reading one reports it again, so the
+        /// mark follows the value through `let`, arguments of includes and remaps.
+        QSet<QString> guessed;
         QString nameSpace; ///< "" = root
         QList<QPair<QString, QString>> remaps;
+        QList<int> guessedRemaps;           ///< indices into remaps whose target is a guess
         QList<ParameterSetting> parameters; ///< SetParameter: source "launch"
         bool active = true;
     };
@@ -102,8 +107,12 @@ private:
     void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                      const QString &container);
     void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
+    /// `guessed`, when given, tells whether the value rests on something unresolved.
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
-                     QList<Unresolved> *unresolved, const Evidence &evidence) const;
+                     QList<Unresolved> *unresolved, const Evidence &evidence,
+                     bool *guessed = nullptr) const;
+    /// Sets a configuration from an evaluated value, keeping whether it is a guess.
+    static void configure(Scope &scope, const QString &name, const QString &value, bool guessed);
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
                         QList<Unresolved> *unresolved) const;
     /// The classes an executable starts (several when its main spins more than one node).

@@ -22,8 +22,9 @@ QString joinPath(const QString &a, const QString &b)
 } // namespace
 
 SubstitutionEvaluator::SubstitutionEvaluator(const QMap<QString, QString> &configurations,
-                                             QString launchFileDir)
-    : m_configurations(configurations), m_launchFileDir(std::move(launchFileDir))
+                                             QString launchFileDir, const QSet<QString> *guessed)
+    : m_configurations(configurations), m_launchFileDir(std::move(launchFileDir)),
+      m_guessed(guessed)
 {
 }
 
@@ -54,6 +55,9 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
         const auto it = m_configurations.constFind(s.text);
         if (it != m_configurations.constEnd()) {
             r->value += *it;
+            if (m_guessed && m_guessed->contains(s.text))
+                r->unresolved.append(
+                    {QStringLiteral("launch-configuration"), s.describe(), *it, {}});
         } else if (!s.parts.isEmpty()) {
             r->value += sub(s.parts.first());
         } else {

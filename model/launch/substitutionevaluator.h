@@ -4,6 +4,7 @@
 #include "substitution.h"
 
 #include <QMap>
+#include <QSet>
 #include <QString>
 #include <QStringList>
 
@@ -24,7 +25,10 @@ public:
         bool isResolved() const { return unresolved.isEmpty(); }
     };
 
-    SubstitutionEvaluator(const QMap<QString, QString> &configurations, QString launchFileDir);
+    /// `guessed` names the configurations whose value is itself a guess (it was evaluated from
+    /// something unresolved): a value read from one of them is reported as unresolved too.
+    SubstitutionEvaluator(const QMap<QString, QString> &configurations, QString launchFileDir,
+                          const QSet<QString> *guessed = nullptr);
 
     Result evaluate(const Substitution &s) const;
     /// A launch condition's truth: "true"/"1" and "false"/"0"/"" (case-insensitive). Anything
@@ -40,6 +44,7 @@ private:
 
     const QMap<QString, QString> &m_configurations;
     QString m_launchFileDir;
+    const QSet<QString> *m_guessed;
 };
 
 } // namespace rosarch

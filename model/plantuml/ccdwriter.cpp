@@ -60,8 +60,9 @@ QString partBlock(const RosNodePart &part, const QString &indent)
             continue;
         // PlantUML rejects a comment after an element's alias: it stands on its own line, above.
         QString line =
-            p.resolved ? QString()
-                       : QStringLiteral("%1  ' name unresolved: %2\n").arg(indent, label(p.name));
+            p.resolved && !p.guessed
+                ? QString()
+                : QStringLiteral("%1  ' name unresolved: %2\n").arg(indent, label(p.name));
         line += QStringLiteral("%1  %2 \"%3\" as %4_%3")
                     .arg(indent,
                          isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),

@@ -288,6 +288,19 @@ private Q_SLOTS:
         QCOMPARE(LaunchTreeText::nodeDetails(n, 0), QStringLiteral("if: $(var on)"));
         QCOMPARE(LaunchTreeText::unresolvedKindLabel(QStringLiteral("opaque-function")),
                  QStringLiteral("Opaque function"));
+
+        // A remapping onto a guess and an undecidable condition say so in the tooltip.
+        n.remaps = {{QStringLiteral("out"), QStringLiteral("//cmd")},
+                    {QStringLiteral("in"), QStringLiteral("/points")}};
+        n.guessedRemaps = {0};
+        n.unresolved = {{QStringLiteral("condition"), n.condition, QStringLiteral("true"), {}}};
+        const QString tip = LaunchTreeText::nodeToolTip(n, nullptr, true, true);
+        QVERIFY2(tip.contains(QStringLiteral(
+                     "out → //cmd (a guess: built from a launch value nobody sets)")),
+                 qPrintable(tip));
+        QVERIFY(tip.contains(QStringLiteral("in → /points</li>")));
+        QVERIFY(
+            tip.contains(QStringLiteral("Condition: $(var on) (undecidable: kept, as if true)")));
     }
 };
 

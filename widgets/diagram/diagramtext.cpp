@@ -82,6 +82,9 @@ QString portToolTip(const PartPort &port)
         l << DiagramText::tr("Written as: %1").arg(port.nameAsWritten);
     if (!port.resolved)
         l << DiagramText::tr("The name could not be resolved statically; this is a guess.");
+    else if (port.guessed)
+        l << DiagramText::tr("Remapped to a name built from a launch value nobody sets; the name "
+                             "is a guess.");
     if (port.parameterDerived)
         l << DiagramText::tr("The name comes from a parameter.");
     if (port.remapped)

@@ -256,6 +256,40 @@ private Q_SLOTS:
         QVERIFY(ports.at(1).active);
     }
 
+    // A remapping onto a guessed launch value (an argument nobody sets) names the port with the
+    // guess and marks it; the container's process-wide rules count as well.
+    void aRemapOntoAGuessMarksThePort()
+    {
+        AtomicNode node;
+        node.nodeName = QStringLiteral("relay");
+        node.ports = {
+            test::gui::port(QStringLiteral("p1"), PortKind::Publisher, QStringLiteral("out"),
+                            QStringLiteral("std_msgs/msg/String"), QString(), {}),
+            test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("in"),
+                            QStringLiteral("std_msgs/msg/String"), QString(), {})};
+        NodeInstance instance;
+        instance.nodeName = QStringLiteral("relay");
+        instance.remaps = {{QStringLiteral("out"), QStringLiteral("//cmd")},
+                           {QStringLiteral("other"), QStringLiteral("/known")}};
+        instance.guessedRemaps = {0};
+        NodeInstance container;
+        container.remaps = {{QStringLiteral("/in"), QStringLiteral("/points")},
+                            {QStringLiteral("/unused"), QStringLiteral("/x")}};
+        QList<PartPort> ports = Composer::resolvePorts(node, instance, &container);
+        QCOMPARE(ports.at(0).name, QStringLiteral("//cmd"));
+        QVERIFY(ports.at(0).guessed);
+        QVERIFY(ports.at(0).resolved); // wired under the guess, unlike an expression in code
+        QCOMPARE(ports.at(1).name, QStringLiteral("/points"));
+        QVERIFY(!ports.at(1).guessed);
+
+        container.guessedRemaps = {0};
+        ports = Composer::resolvePorts(node, instance, &container);
+        QVERIFY(ports.at(1).guessed);
+        instance.guessedRemaps.clear();
+        ports = Composer::resolvePorts(node, instance, &container);
+        QVERIFY(!ports.at(0).guessed);
+    }
+
     // A parameter declared with "" and never set leaves the port's name unknown: it is not a
     // topic "/" that every such port would meet on.
     void anEmptyParameterNameIsUnresolved()

@@ -93,6 +93,67 @@ private Q_SLOTS:
         QCOMPARE(d.nodes[1].unresolved[0].kind, QStringLiteral("launch-configuration"));
     }
 
+    // autoware's detection launch: an argument nobody sets reaches a remapping through an
+    // include and a `let`. The guess ('') is used, and the mark follows it all the way.
+    void aGuessedValueStaysUnresolvedThroughIncludesAndLets()
+    {
+        Fixture fx;
+        Substitution target;
+        target.kind = Substitution::Kind::Concat;
+        target.parts = {lit(QStringLiteral("/detection/")), var(QStringLiteral("model_here")),
+                        lit(QStringLiteral("/objects"))};
+        LaunchAction let;
+        let.kind = LaunchAction::Kind::SetLaunchConfiguration;
+        let.name = lit(QStringLiteral("output"));
+        let.value = target;
+        LaunchAction detector =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("detector"), 4);
+        detector.remaps
+            << LaunchRemap{lit(QStringLiteral("~/in")), lit(QStringLiteral("/points")), {}}
+            << LaunchRemap{lit(QStringLiteral("~/out")), var(QStringLiteral("output")), {}};
+        LaunchAction chosen =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("chosen"), 5);
+        chosen.condition.expression.kind = Substitution::Kind::Eval;
+        chosen.condition.expression.parts = {lit(QStringLiteral("'")),
+                                             var(QStringLiteral("model_here")),
+                                             lit(QStringLiteral("' == 'centerpoint'"))};
+        chosen.condition.text = QStringLiteral("$(eval '$(var model_here)' == 'centerpoint')");
+        fx.add(QStringLiteral("bringup/launch/detector.launch.py"),
+               {declare(QStringLiteral("model_here"), nullptr), let, detector, chosen});
+        fx.add(
+            QStringLiteral("bringup/launch/root.launch.py"),
+            {declare(QStringLiteral("model"), nullptr),
+             include(share(QStringLiteral("bringup"), QStringLiteral("launch/detector.launch.py")),
+                     {{lit(QStringLiteral("model_here")), var(QStringLiteral("model"))}})});
+
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/root.launch.py"));
+        QCOMPARE(d.nodes.size(), 2);
+        const NodeInstance &det = d.nodes[0];
+        QCOMPARE(det.remaps.at(1).second, QStringLiteral("/detection//objects")); // the guess
+        QCOMPARE(det.guessedRemaps, QList<int>{1}); // the first remapping is known
+        QVERIFY(!det.unresolved.isEmpty());
+        QCOMPARE(det.unresolved[0].kind, QStringLiteral("launch-configuration"));
+        QCOMPARE(det.unresolved[0].expression, QStringLiteral("$(var output)"));
+        QCOMPARE(det.unresolved[0].guess, QStringLiteral("/detection//objects"));
+        // A condition on the guess cannot be decided: the node is kept, marked, as at the root.
+        QCOMPARE(d.nodes[1].active, true);
+        QCOMPARE(d.nodes[1].unresolved.size(), 1);
+        QCOMPARE(d.nodes[1].unresolved[0].kind, QStringLiteral("condition"));
+
+        // Given a value, nothing is a guess any more.
+        const LaunchDependencies given =
+            fx.run(QStringLiteral("bringup/launch/root.launch.py"), {{"model", "centerpoint"}});
+        QCOMPARE(given.nodes[0].remaps.at(1).second,
+                 QStringLiteral("/detection/centerpoint/objects"));
+        QVERIFY(given.nodes[0].guessedRemaps.isEmpty());
+        QVERIFY(given.nodes[0].unresolved.isEmpty());
+        QCOMPARE(given.nodes[1].active, true);
+        QVERIFY(given.nodes[1].unresolved.isEmpty());
+        const LaunchDependencies other =
+            fx.run(QStringLiteral("bringup/launch/root.launch.py"), {{"model", "apollo"}});
+        QCOMPARE(other.nodes[1].active, false);
+    }
+
     void includeCyclesAreReported()
     {
         Fixture fx;
