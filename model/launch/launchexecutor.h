@@ -157,6 +157,9 @@ private:
     QList<UnfoundContainer> *m_unfound = nullptr;
 };
 
+/// The folder of a workspace-relative launch file ("" at the top).
+QString launchFileDir(const QString &file);
+
 /// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.
 QString joinNamespace(const QString &outer, const QString &inner);
 
