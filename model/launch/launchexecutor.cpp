@@ -192,6 +192,21 @@ void LaunchExecutor::configure(Scope &scope, const QString &name, const QString 
         scope.guessed.remove(name);
 }
 
+void LaunchExecutor::appendRemaps(const QList<LaunchRemap> &rules, const Scope &scope,
+                                  const Frame &frame, QList<Unresolved> *unresolved,
+                                  QList<QPair<QString, QString>> *remaps,
+                                  QList<int> *guessedRemaps) const
+{
+    for (const LaunchRemap &r : rules) {
+        const QString from = evaluate(r.from, scope, frame, unresolved, r.evidence);
+        bool guessed = false;
+        const QString to = evaluate(r.to, scope, frame, unresolved, r.evidence, &guessed);
+        if (guessed)
+            guessedRemaps->append(int(remaps->size()));
+        remaps->append({from, to});
+    }
+}
+
 void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QString &id)
 {
     if (instance >= 0)
@@ -249,15 +264,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                                                             unresolvedSink(), a.evidence));
             break;
         case LaunchAction::Kind::SetRemap:
-            for (const LaunchRemap &r : a.remaps) {
-                bool guessed = false;
-                const QString to =
-                    evaluate(r.to, scope, frame, unresolvedSink(), r.evidence, &guessed);
-                if (guessed)
-                    scope.guessedRemaps.append(int(scope.remaps.size()));
-                scope.remaps.append(
-                    {evaluate(r.from, scope, frame, unresolvedSink(), r.evidence), to});
-            }
+            appendRemaps(a.remaps, scope, frame, unresolvedSink(), &scope.remaps,
+                         &scope.guessedRemaps);
             break;
         case LaunchAction::Kind::SetParameter:
             for (const LaunchParameter &p : a.parameters)
@@ -432,13 +440,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     }
     n.remaps = scope.remaps;
     n.guessedRemaps = scope.guessedRemaps;
-    for (const LaunchRemap &r : a.remaps) {
-        bool guessed = false;
-        const QString to = evaluate(r.to, scope, frame, &u, r.evidence, &guessed);
-        if (guessed)
-            n.guessedRemaps.append(int(n.remaps.size()));
-        n.remaps.append({evaluate(r.from, scope, frame, &u, r.evidence), to});
-    }
+    appendRemaps(a.remaps, scope, frame, &u, &n.remaps, &n.guessedRemaps);
     for (const ParameterSetting &p : scope.parameters)
         n.parameters.append({p.name, p.value});
     for (const LaunchParameter &p : a.parameters)

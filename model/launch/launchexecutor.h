@@ -111,6 +111,11 @@ private:
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence,
                      bool *guessed = nullptr) const;
+    /// Evaluates remapping rules onto `remaps`, noting in `guessedRemaps` the index of each
+    /// one whose target rests on a guess.
+    void appendRemaps(const QList<LaunchRemap> &rules, const Scope &scope, const Frame &frame,
+                      QList<Unresolved> *unresolved, QList<QPair<QString, QString>> *remaps,
+                      QList<int> *guessedRemaps) const;
     /// Sets a configuration from an evaluated value, keeping whether it is a guess.
     static void configure(Scope &scope, const QString &name, const QString &value, bool guessed);
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
