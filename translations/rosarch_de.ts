@@ -2279,87 +2279,97 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
         <translation>Der Name konnte nicht statisch aufgelöst werden; dies ist eine Annahme.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="86"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="87"/>
         <source>Remapped to a name built from a launch value nobody sets; the name is a guess.</source>
         <translation>Umbenannt auf einen Namen aus einem Launch-Wert, den niemand setzt; der Name ist eine Vermutung.</translation>
     </message>
     <message>
         <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
+        <source>Its namespace or node name is built from a launch value nobody sets; the name is a guess, wired only to names that rest on a guess too.</source>
+        <translation>Sein Namespace oder Knotenname ist aus einem Launch-Wert gebildet, den niemand setzt; der Name ist eine Vermutung und nur mit Namen verbunden, die ebenfalls auf einer Vermutung beruhen.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
         <source>The name comes from a parameter.</source>
         <translation>Der Name stammt aus einem Parameter.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="95"/>
         <source>Remapped by the launch file.</source>
         <translation>Vom Launch-File per Remap umbenannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="97"/>
         <source>Guard: %1</source>
         <translation>Bedingung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="94"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="98"/>
         <source>Guard (false here): %1</source>
         <translation>Bedingung (hier falsch): %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="96"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="100"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="111"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="115"/>
         <source>Namespace %1 — right-click to collapse or expand</source>
         <translation>Namespace %1 – Rechtsklick zum Ein- oder Ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="114"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="118"/>
         <source>Topic %1</source>
         <translation>Topic %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="115"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="119"/>
         <source>Service %1</source>
         <translation>Service %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="116"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="120"/>
         <source>Action %1</source>
         <translation>Action %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="122"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="124"/>
         <source>Boundary port %1: %2 %3</source>
         <translation>Randport %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="123"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="125"/>
         <source>Promoted: nothing inside this launch file is on the other side.</source>
         <translation>Nach außen geführt: Innerhalb dieses Launch-Files gibt es keine Gegenseite.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="132"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="127"/>
+        <source>The name rests on a launch value nobody sets; it is a guess.</source>
+        <translation>Der Name beruht auf einem Launch-Wert, den niemand setzt; er ist eine Vermutung.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="138"/>
         <source>%1 (%2) %3 %4 — click to see the code</source>
         <translation>%1 (%2) %3 %4 – Klicken, um den Code zu sehen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="147"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="153"/>
         <source>1 element of the reference is missing: %1</source>
         <translation>1 Element der Referenz fehlt: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="148"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="154"/>
         <source>%1 elements of the reference are missing: %2</source>
         <translation>%1 Elemente der Referenz fehlen: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="153"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="159"/>
         <source>launch file (outside the workspace)</source>
         <translation>Launch-File (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="154"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="160"/>
         <source>launch file %1</source>
         <translation>Launch-File %1</translation>
     </message>
@@ -3045,83 +3055,98 @@ The file was kept as %2.</source>
     </message>
     <message>
         <location filename="../widgets/launchtreetext.cpp" line="150"/>
-        <location filename="../widgets/launchtreetext.cpp" line="227"/>
+        <source>Namespace and name: guesses, built from a launch value nobody sets; so are the relative and private names of its ports</source>
+        <translation>Namespace und Name: Vermutungen, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die relativen und privaten Namen seiner Ports</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="153"/>
+        <source>Namespace: a guess, built from a launch value nobody sets; so are the relative and private names of its ports</source>
+        <translation>Namespace: eine Vermutung, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die relativen und privaten Namen seiner Ports</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="156"/>
+        <source>Name: a guess, built from a launch value nobody sets; so are the private names of its ports</source>
+        <translation>Name: eine Vermutung, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die privaten Namen seiner Ports</translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="159"/>
+        <location filename="../widgets/launchtreetext.cpp" line="237"/>
         <source>Package: %1</source>
         <translation>Paket: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="153"/>
+        <location filename="../widgets/launchtreetext.cpp" line="162"/>
         <source>Plugin: %1</source>
         <translation>Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="153"/>
+        <location filename="../widgets/launchtreetext.cpp" line="162"/>
         <source>Executable: %1</source>
         <translation>Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="156"/>
+        <location filename="../widgets/launchtreetext.cpp" line="165"/>
         <source>Class: %1</source>
         <translation>Klasse: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="161"/>
+        <location filename="../widgets/launchtreetext.cpp" line="170"/>
         <source>Class: not found in the workspace</source>
         <translation>Klasse: nicht im Workspace gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="162"/>
+        <location filename="../widgets/launchtreetext.cpp" line="171"/>
         <source>Class: not analysed; package %1 is not in the workspace</source>
         <translation>Klasse: nicht analysiert; Paket %1 liegt nicht im Workspace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="166"/>
+        <location filename="../widgets/launchtreetext.cpp" line="175"/>
         <source>Loaded into container: %1</source>
         <translation>Geladen in Container: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="172"/>
+        <location filename="../widgets/launchtreetext.cpp" line="183"/>
         <source>Condition: %1 (undecidable: kept, as if true)</source>
         <translation>Bedingung: %1 (nicht entscheidbar: beibehalten, als wäre sie wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="174"/>
-        <location filename="../widgets/launchtreetext.cpp" line="230"/>
+        <location filename="../widgets/launchtreetext.cpp" line="184"/>
+        <location filename="../widgets/launchtreetext.cpp" line="240"/>
         <source>Condition: %1 (true)</source>
         <translation>Bedingung: %1 (wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="171"/>
+        <location filename="../widgets/launchtreetext.cpp" line="181"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not started)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht gestartet)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="176"/>
+        <location filename="../widgets/launchtreetext.cpp" line="186"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that declares it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das ihn deklariert, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="186"/>
+        <location filename="../widgets/launchtreetext.cpp" line="196"/>
         <source>Remappings:</source>
         <translation>Remaps:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="192"/>
+        <location filename="../widgets/launchtreetext.cpp" line="202"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="194"/>
+        <location filename="../widgets/launchtreetext.cpp" line="204"/>
         <source>Parameters given:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="200"/>
+        <location filename="../widgets/launchtreetext.cpp" line="210"/>
         <source>Loads plugins:</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../widgets/launchtreetext.cpp" line="203"/>
+        <location filename="../widgets/launchtreetext.cpp" line="213"/>
         <source>Parameters in effect: %n (listed under the node, each with its source)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3129,124 +3154,124 @@ The file was kept as %2.</source>
         </translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="276"/>
+        <location filename="../widgets/launchtreetext.cpp" line="286"/>
         <source>default in code</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="282"/>
+        <location filename="../widgets/launchtreetext.cpp" line="292"/>
         <source>launch file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="291"/>
+        <location filename="../widgets/launchtreetext.cpp" line="301"/>
         <source>No launch value or parameter file sets it: the default declared in code, at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="295"/>
+        <location filename="../widgets/launchtreetext.cpp" line="305"/>
         <source>From the parameter file %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="297"/>
+        <location filename="../widgets/launchtreetext.cpp" line="307"/>
         <source>Set by the launch file at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="206"/>
-        <location filename="../widgets/launchtreetext.cpp" line="241"/>
+        <location filename="../widgets/launchtreetext.cpp" line="216"/>
+        <location filename="../widgets/launchtreetext.cpp" line="251"/>
         <source>Not resolved statically:</source>
         <translation>Nicht statisch aufgelöst:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="182"/>
+        <location filename="../widgets/launchtreetext.cpp" line="192"/>
         <source>%1 → %2 (a guess: built from a launch value nobody sets)</source>
         <translation>%1 → %2 (eine Vermutung: aus einem Launch-Wert, den niemand setzt)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="208"/>
+        <location filename="../widgets/launchtreetext.cpp" line="218"/>
         <source>Declared at %1</source>
         <translation>Deklariert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="216"/>
+        <location filename="../widgets/launchtreetext.cpp" line="226"/>
         <source>Launch file</source>
         <translation>Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="217"/>
+        <location filename="../widgets/launchtreetext.cpp" line="227"/>
         <source>External include</source>
         <translation>Externes Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="218"/>
+        <location filename="../widgets/launchtreetext.cpp" line="228"/>
         <source>Included launch file</source>
         <translation>Eingebundenes Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="222"/>
+        <location filename="../widgets/launchtreetext.cpp" line="232"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="224"/>
+        <location filename="../widgets/launchtreetext.cpp" line="234"/>
         <source>Package %1 is not in the workspace; its nodes are not analysed.</source>
         <translation>Paket %1 liegt nicht im Workspace; seine Knoten werden nicht analysiert.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="231"/>
+        <location filename="../widgets/launchtreetext.cpp" line="241"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not included)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht eingebunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="233"/>
+        <location filename="../widgets/launchtreetext.cpp" line="243"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that includes it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das es einbindet, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="238"/>
+        <location filename="../widgets/launchtreetext.cpp" line="248"/>
         <source>Launch arguments:</source>
         <translation>Launch-Argumente:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="243"/>
-        <location filename="../widgets/launchtreetext.cpp" line="268"/>
+        <location filename="../widgets/launchtreetext.cpp" line="253"/>
+        <location filename="../widgets/launchtreetext.cpp" line="278"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="243"/>
+        <location filename="../widgets/launchtreetext.cpp" line="253"/>
         <source>Included at %1</source>
         <translation>Eingebunden in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="251"/>
+        <location filename="../widgets/launchtreetext.cpp" line="261"/>
         <source>&lt;b&gt;Namespace&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Namespace&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="252"/>
+        <location filename="../widgets/launchtreetext.cpp" line="262"/>
         <source>Pushed in %1</source>
         <translation>Gesetzt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="254"/>
+        <location filename="../widgets/launchtreetext.cpp" line="264"/>
         <source>1 instance inside this scope</source>
         <translation>1 Instanz in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="255"/>
+        <location filename="../widgets/launchtreetext.cpp" line="265"/>
         <source>%1 instances inside this scope</source>
         <translation>%1 Instanzen in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="262"/>
+        <location filename="../widgets/launchtreetext.cpp" line="272"/>
         <source>&lt;b&gt;Not resolved statically:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Nicht statisch aufgelöst:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="266"/>
+        <location filename="../widgets/launchtreetext.cpp" line="276"/>
         <source>The analysis continued with: %1</source>
         <translation>Die Analyse wurde fortgesetzt mit: %1</translation>
     </message>

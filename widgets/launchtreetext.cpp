@@ -146,6 +146,15 @@ QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *
                                                                       : tr("Node");
     QString tip = QStringLiteral("<b>%1</b> %2").arg(what, html(fullyQualifiedName(node)));
     const auto line = [&tip](const QString &text) { tip += QStringLiteral("<br/>") + text; };
+    if (node.guessedNamespace && node.guessedName)
+        line(tr("Namespace and name: guesses, built from a launch value nobody sets; so are the "
+                "relative and private names of its ports"));
+    else if (node.guessedNamespace)
+        line(tr("Namespace: a guess, built from a launch value nobody sets; so are the relative "
+                "and private names of its ports"));
+    else if (node.guessedName)
+        line(tr("Name: a guess, built from a launch value nobody sets; so are the private names "
+                "of its ports"));
     if (!node.package.isEmpty())
         line(tr("Package: %1").arg(html(node.package)));
     if (!node.execName.isEmpty())

@@ -74,6 +74,10 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["class_name"] = utf8(n.className);
         j["node_name"] = utf8(n.nodeName);
         j["namespace"] = utf8(n.nameSpace);
+        if (n.guessedNamespace)
+            j["namespace_unresolved"] = true;
+        if (n.guessedName)
+            j["node_name_unresolved"] = true;
         j["package"] = utf8(n.package);
         j["class_id"] = utf8(n.classId);
         j["launch_file"] = utf8(n.launchFileId);

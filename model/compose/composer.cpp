@@ -79,9 +79,19 @@ struct Endpoint
 /// Binds ports with a counterpart into channels and promotes the rest to the boundary.
 void wire(Composite *c)
 {
-    QList<QPair<Family, QString>> order;
+    struct Group
+    {
+        Family family;
+        QString name;
+        bool guessed;
+    };
+    QList<Group> order;
     QHash<QString, QList<Endpoint>> groups;
-    auto keyOf = [](Family f, const QString &name) { return QString::number(int(f)) + name; };
+    // A name built on a guess meets only names built on a guess: under another value of the
+    // launch argument, it would not be the decided name it happens to equal under the guess.
+    auto keyOf = [](Family f, const QString &name, bool guessed) {
+        return QString::number(int(f)) + (guessed ? u'?' : u':') + name;
+    };
     for (const RosNodePart &part : c->parts) {
         if (!part.active)
             continue;
@@ -89,16 +99,16 @@ void wire(Composite *c)
             if (!port.active || !port.resolved)
                 continue;
             const Family f = familyOf(port.kind);
-            const QString key = keyOf(f, port.name);
+            const QString key = keyOf(f, port.name, port.guessed);
             if (!groups.contains(key))
-                order.append({f, port.name});
+                order.append({f, port.name, port.guessed});
             groups[key].append({&part, &port});
         }
     }
     QSet<QString> aliases;
     QHash<QString, int> counters;
-    for (const auto &[family, name] : order) {
-        const QList<Endpoint> &eps = groups.value(keyOf(family, name));
+    for (const auto &[family, name, guessed] : order) {
+        const QList<Endpoint> &eps = groups.value(keyOf(family, name, guessed));
         const bool providers = std::any_of(eps.begin(), eps.end(), [](const Endpoint &e) {
             return isProvidingPort(e.port->kind);
         });
@@ -232,6 +242,13 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
                                            ? instance.guessedRemaps.contains(used)
                                            : container && container->guessedRemaps.contains(
                                                               used - int(instance.remaps.size())));
+            // A relative name takes the namespace, a private one the node's name too: when
+            // those rest on a guess, so does the name.
+            const QString written = (used >= 0 ? rules.at(used).second : base).trimmed();
+            if (!written.startsWith(QLatin1Char('/')) &&
+                (instance.guessedNamespace ||
+                 (written.startsWith(QLatin1Char('~')) && instance.guessedName)))
+                pp.guessed = true;
             if (used >= 0 && rulesUsed)
                 rulesUsed->append(used);
         } else {

@@ -47,6 +47,10 @@ struct NodeInstance
     QString classId;   ///< that ARC's id in the List of Atomic ROS Nodes
     QString nodeName;  ///< runtime name: from the launch file, else the name in code
     QString nameSpace; ///< effective namespace ("/" at the root)
+    /// The namespace, or the launch file's node name, rests on a guessed launch value (an
+    /// argument nobody sets): the names built from it are guesses too.
+    bool guessedNamespace = false;
+    bool guessedName = false;
     QString container; ///< composable: the container instance id (or its name when not found)
     bool lifecycle = false;
     QList<QPair<QString, QString>> remaps; ///< evaluated from -> to (scope remaps first)

@@ -418,6 +418,8 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
                 continue;
             LayoutNode n =
                 labelledNode(boundaryKey(b.id), b.name, b.type, LayoutNode::Shape::Tag, m);
+            if (b.guessed)
+                n.flags |= LayoutUnresolved;
             n.rank = input ? LayoutNode::Rank::Source : LayoutNode::Rank::Sink;
             g.nodes << n;
         }

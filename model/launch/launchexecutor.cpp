@@ -258,10 +258,15 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             break;
         }
         case LaunchAction::Kind::PushNamespace:
-            if (conditionHolds(a, scope, frame, unresolvedSink()))
-                scope.nameSpace =
-                    joinNamespace(scope.nameSpace, evaluate(a.nameSpace, scope, frame,
-                                                            unresolvedSink(), a.evidence));
+            if (conditionHolds(a, scope, frame, unresolvedSink())) {
+                bool guessed = false;
+                const QString pushed =
+                    evaluate(a.nameSpace, scope, frame, unresolvedSink(), a.evidence, &guessed);
+                // An absolute namespace replaces the one around it, a guess and all.
+                scope.guessedNamespace =
+                    guessed || (scope.guessedNamespace && !pushed.trimmed().startsWith(u'/'));
+                scope.nameSpace = joinNamespace(scope.nameSpace, pushed);
+            }
             break;
         case LaunchAction::Kind::SetRemap:
             appendRemaps(a.remaps, scope, frame, unresolvedSink(), &scope.remaps,
@@ -398,9 +403,12 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.package = evaluate(a.package, scope, frame, &u, a.evidence);
     const bool composable = a.kind == LaunchAction::Kind::ComposableNode;
     n.execName = evaluate(composable ? a.plugin : a.executable, scope, frame, &u, a.evidence);
-    const QString launchName = evaluate(a.name, scope, frame, &u, a.evidence);
-    const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence);
+    const QString launchName = evaluate(a.name, scope, frame, &u, a.evidence, &n.guessedName);
+    bool nsGuessed = false;
+    const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence, &nsGuessed);
     n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));
+    n.guessedNamespace =
+        nsGuessed || (scope.guessedNamespace && !ns.trimmed().startsWith(QLatin1Char('/')));
     n.condition = a.condition.text;
     n.active = scope.active && conditionHolds(a, scope, frame, &u);
     if (a.condition.isSet() && !n.active)

@@ -87,7 +87,8 @@ private:
         /// value, an expression beyond the evaluator): reading one reports it again, so the
         /// mark follows the value through `let`, arguments of includes and remaps.
         QSet<QString> guessed;
-        QString nameSpace; ///< "" = root
+        QString nameSpace;             ///< "" = root
+        bool guessedNamespace = false; ///< nameSpace rests on a guess (a pushed guessed value)
         QList<QPair<QString, QString>> remaps;
         QList<int> guessedRemaps;           ///< indices into remaps whose target is a guess
         QList<ParameterSetting> parameters; ///< SetParameter: source "launch"

@@ -301,6 +301,20 @@ private Q_SLOTS:
         QVERIFY(tip.contains(QStringLiteral("in → /points</li>")));
         QVERIFY(
             tip.contains(QStringLiteral("Condition: $(var on) (undecidable: kept, as if true)")));
+        QVERIFY(!tip.contains(QStringLiteral("Namespace")));
+
+        // A namespace and a name from guesses: the tooltip says which names that makes guesses.
+        n.guessedNamespace = true;
+        QVERIFY(LaunchTreeText::nodeToolTip(n, nullptr, true, true)
+                    .contains(QStringLiteral("Namespace: a guess, built from a launch value nobody "
+                                             "sets; so are the relative and private names")));
+        n.guessedName = true;
+        QVERIFY(LaunchTreeText::nodeToolTip(n, nullptr, true, true)
+                    .contains(QStringLiteral("Namespace and name: guesses")));
+        n.guessedNamespace = false;
+        QVERIFY(LaunchTreeText::nodeToolTip(n, nullptr, true, true)
+                    .contains(QStringLiteral("Name: a guess, built from a launch value nobody "
+                                             "sets; so are the private names of its ports")));
     }
 };
 

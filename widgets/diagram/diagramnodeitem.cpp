@@ -200,7 +200,11 @@ void DiagramNodeItem::paintTexts(QPainter *painter) const
     const DiagramStyle &s = style();
     const bool box = m_node.shape == LayoutNode::Shape::Box;
     const bool folder = m_node.shape == LayoutNode::Shape::Folder;
-    const QFont labelFont = box || folder ? s.titleFont : s.textFont;
+    // A boundary port's label is its name: in italics when the name rests on a guess.
+    const QFont labelFont = box || folder
+                                ? s.titleFont
+                                : italic(s.textFont, m_node.shape == LayoutNode::Shape::Tag &&
+                                                         has(m_node.flags, LayoutUnresolved));
     const QFontMetricsF lm(labelFont);
     const QFontMetricsF dm(s.smallFont);
     QRectF area = rect();
@@ -226,7 +230,8 @@ void DiagramNodeItem::paintTexts(QPainter *painter) const
         return;
     line = QRectF(line.left(), line.bottom(), line.width(), dm.height());
     painter->setPen(s.mutedText);
-    painter->setFont(italic(s.smallFont, has(m_node.flags, LayoutUnresolved)));
+    painter->setFont(italic(s.smallFont, has(m_node.flags, LayoutUnresolved) &&
+                                             m_node.shape != LayoutNode::Shape::Tag));
     painter->drawText(line, Qt::AlignCenter,
                       dm.elidedText(m_node.detail, Qt::ElideMiddle, line.width()));
     if (box && !m_node.ports.isEmpty()) {

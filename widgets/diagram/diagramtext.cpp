@@ -83,8 +83,12 @@ QString portToolTip(const PartPort &port)
     if (!port.resolved)
         l << DiagramText::tr("The name could not be resolved statically; this is a guess.");
     else if (port.guessed)
-        l << DiagramText::tr("Remapped to a name built from a launch value nobody sets; the name "
-                             "is a guess.");
+        l << (port.remapped
+                  ? DiagramText::tr("Remapped to a name built from a launch value nobody sets; "
+                                    "the name is a guess.")
+                  : DiagramText::tr("Its namespace or node name is built from a launch value "
+                                    "nobody sets; the name is a guess, wired only to names that "
+                                    "rest on a guess too."));
     if (port.parameterDerived)
         l << DiagramText::tr("The name comes from a parameter.");
     if (port.remapped)
@@ -116,11 +120,13 @@ QHash<QString, QString> DiagramText::toolTips(const Composite &c)
                                                            : tr("Action %1");
         out.insert(DiagramBuilder::channelKey(ch.id), lines({kind.arg(ch.name), ch.type}));
     }
-    for (const BoundaryPort &b : c.boundary)
-        out.insert(
-            DiagramBuilder::boundaryKey(b.id),
-            lines({tr("Boundary port %1: %2 %3").arg(b.id, portKindText(b.kind), b.name), b.type,
-                   tr("Promoted: nothing inside this launch file is on the other side.")}));
+    for (const BoundaryPort &b : c.boundary) {
+        QStringList l{tr("Boundary port %1: %2 %3").arg(b.id, portKindText(b.kind), b.name), b.type,
+                      tr("Promoted: nothing inside this launch file is on the other side.")};
+        if (b.guessed)
+            l << tr("The name rests on a launch value nobody sets; it is a guess.");
+        out.insert(DiagramBuilder::boundaryKey(b.id), lines(l));
+    }
     for (int i = 0; i < c.connections.size(); ++i) {
         const Connection &conn = c.connections[i];
         const RosNodePart *part = c.part(conn.partId);

@@ -290,6 +290,48 @@ private Q_SLOTS:
         QVERIFY(!ports.at(0).guessed);
     }
 
+    // Under a guessed namespace, relative and private names are guesses; absolute names are
+    // not, and neither is a relative name remapped onto an absolute one.
+    void aGuessedNamespaceOrNameMarksTheNamesBuiltOnIt()
+    {
+        AtomicNode node;
+        node.nodeName = QStringLiteral("driver");
+        const QString type = QStringLiteral("std_msgs/msg/String");
+        node.ports = {test::gui::port(QStringLiteral("p1"), PortKind::Publisher,
+                                      QStringLiteral("odom"), type, QString(), {}),
+                      test::gui::port(QStringLiteral("p2"), PortKind::Publisher,
+                                      QStringLiteral("~/state"), type, QString(), {}),
+                      test::gui::port(QStringLiteral("p3"), PortKind::Publisher,
+                                      QStringLiteral("/tf"), type, QString(), {}),
+                      test::gui::port(QStringLiteral("s1"), PortKind::Subscriber,
+                                      QStringLiteral("cmd"), type, QString(), {}),
+                      test::gui::port(QStringLiteral("s2"), PortKind::Subscriber,
+                                      QStringLiteral("/clock"), type, QString(), {})};
+        NodeInstance instance;
+        instance.nodeName = QStringLiteral("driver");
+        instance.nameSpace = QStringLiteral("/"); // the guess was ''
+        instance.remaps = {{QStringLiteral("cmd"), QStringLiteral("/cmd_vel")},
+                           {QStringLiteral("/clock"), QStringLiteral("sim_clock")}};
+        instance.guessedNamespace = true;
+        QList<PartPort> ports = Composer::resolvePorts(node, instance, nullptr);
+        QCOMPARE(ports.size(), 5);
+        QVERIFY(ports.at(0).guessed);         // odom
+        QVERIFY(ports.at(1).guessed);         // ~/state
+        QVERIFY(!ports.at(2).guessed);        // /tf
+        QVERIFY(!ports.at(3).guessed);        // cmd -> /cmd_vel
+        QVERIFY(ports.at(4).guessed);         // /clock -> sim_clock
+        QCOMPARE(ports.at(0).resolved, true); // still wired under the guess
+        QCOMPARE(ports.at(0).name, QStringLiteral("/odom"));
+
+        instance.guessedNamespace = false;
+        instance.guessedName = true; // only the private name rests on the node's name
+        ports = Composer::resolvePorts(node, instance, nullptr);
+        QVERIFY(!ports.at(0).guessed);
+        QVERIFY(ports.at(1).guessed);
+        QVERIFY(!ports.at(2).guessed);
+        QVERIFY(!ports.at(4).guessed);
+    }
+
     // A parameter declared with "" and never set leaves the port's name unknown: it is not a
     // topic "/" that every such port would meet on.
     void anEmptyParameterNameIsUnresolved()

@@ -292,6 +292,7 @@ void TestGraphLayout::builderKeysEveryElement()
     QCOMPARE(g.node(QStringLiteral("channel:a_navigate"))->shape, LayoutNode::Shape::Hexagon);
     QCOMPARE(g.node(QStringLiteral("boundary:s1"))->rank, LayoutNode::Rank::Source);
     QCOMPARE(g.node(QStringLiteral("boundary:p1"))->rank, LayoutNode::Rank::Sink);
+    QVERIFY(!(g.node(QStringLiteral("boundary:s1"))->flags & LayoutUnresolved));
     // Publish leaves the part's port; subscribe and server arrive at a port; delegations dash.
     QCOMPARE(g.edges[0].tail, QStringLiteral("part:part1"));
     QCOMPARE(g.edges[0].tailPort, QStringLiteral("p1"));
@@ -306,6 +307,13 @@ void TestGraphLayout::builderKeysEveryElement()
     QCOMPARE(child.node(QStringLiteral("part:part1"))->ports[2].label,
              QStringLiteral("?topic_name"));
     QVERIFY(child.node(QStringLiteral("part:part1"))->ports[2].flags & LayoutUnresolved);
+    // A boundary port whose name rests on a guessed launch value is drawn as unresolved too.
+    Composite guessed = arch.composites[0];
+    for (BoundaryPort &b : guessed.boundary)
+        b.guessed = b.id == QLatin1String("s1");
+    const LayoutGraph marked = DiagramBuilder::build(guessed);
+    QVERIFY(marked.node(QStringLiteral("boundary:s1"))->flags & LayoutUnresolved);
+    QVERIFY(!(marked.node(QStringLiteral("boundary:p1"))->flags & LayoutUnresolved));
 
     const DiagramKey port = DiagramKey::parse(QStringLiteral("port:part1/s1"));
     QCOMPARE(port.kind, DiagramKey::Kind::Port);

@@ -154,6 +154,56 @@ private Q_SLOTS:
         QCOMPARE(other.nodes[1].active, false);
     }
 
+    // A robot's namespace pushed from an argument nobody sets: the namespace the nodes get is a
+    // guess, and so is the name of one that reads its name from such an argument.
+    void aNamespaceOrNameFromAGuessMarksTheInstance()
+    {
+        Fixture fx;
+        LaunchAction push;
+        push.kind = LaunchAction::Kind::PushNamespace;
+        push.nameSpace = var(QStringLiteral("robot"));
+        LaunchAction reset; // an absolute namespace replaces the guess around it
+        reset.kind = LaunchAction::Kind::PushNamespace;
+        reset.nameSpace = lit(QStringLiteral("/fixed"));
+        LaunchAction named =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QString(), 4); // name below
+        named.name = var(QStringLiteral("who"));
+        LaunchAction absolute =
+            node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("abs"), 5);
+        absolute.nameSpace = lit(QStringLiteral("/known"));
+        LaunchAction group;
+        group.kind = LaunchAction::Kind::Group;
+        group.children << push << named << absolute;
+        LaunchAction later;
+        later.kind = LaunchAction::Kind::Group;
+        later.children << push << reset
+                       << node(QStringLiteral("demo"), QStringLiteral("talker"),
+                               QStringLiteral("after_reset"), 7);
+        fx.add(
+            QStringLiteral("bringup/launch/robot.launch.py"),
+            {declare(QStringLiteral("robot"), nullptr), declare(QStringLiteral("who"), nullptr),
+             group, later,
+             node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("outside"), 8)});
+        const LaunchDependencies d = fx.run(QStringLiteral("bringup/launch/robot.launch.py"));
+        QCOMPARE(d.nodes.size(), 4);
+        QCOMPARE(d.nodes[0].guessedNamespace, true);
+        QCOMPARE(d.nodes[0].guessedName, true);
+        QCOMPARE(d.nodes[1].nameSpace, QStringLiteral("/known"));
+        QCOMPARE(d.nodes[1].guessedNamespace, false);
+        QCOMPARE(d.nodes[1].guessedName, false);
+        QCOMPARE(d.nodes[2].nameSpace, QStringLiteral("/fixed"));
+        QCOMPARE(d.nodes[2].guessedNamespace, false);
+        QCOMPARE(d.nodes[3].guessedNamespace, false); // the group's namespace ended with it
+
+        // Given values, nothing is a guess.
+        const LaunchDependencies given = fx.run(QStringLiteral("bringup/launch/robot.launch.py"),
+                                                {{"robot", "r1"}, {"who", "scout"}});
+        QCOMPARE(given.nodes[0].nameSpace, QStringLiteral("/r1"));
+        QCOMPARE(given.nodes[0].nodeName, QStringLiteral("scout"));
+        QCOMPARE(given.nodes[0].guessedNamespace, false);
+        QCOMPARE(given.nodes[0].guessedName, false);
+    }
+
     void includeCyclesAreReported()
     {
         Fixture fx;

@@ -6,6 +6,7 @@
 #include "diagramnodeitem.h"
 #include "diagrampanel.h"
 #include "diagramscene.h"
+#include "diagramtext.h"
 #include "diagramview.h"
 #include "diagramwait.h"
 #include "screenshot.h"
@@ -78,6 +79,7 @@ private Q_SLOTS:
     void clicksCarryIds();
     void selectInstanceCentresThePart();
     void marksAndMissingBanner();
+    void toolTipsSayWhatIsAGuess();
     void exportsSvgAndPng();
     void layoutFailuresAreShownInTheView();
     void staleLayoutsAreDropped();
@@ -371,6 +373,30 @@ void TestDiagramPanel::marksAndMissingBanner()
     QVERIFY(laidOut(panel, [&] { panel.showComposite(QStringLiteral("lf2")); }));
     QVERIFY(panel.view()->banner().isEmpty());
     QCOMPARE(panel.scene()->item(QStringLiteral("part:part1"))->mark(), DiagramMark::None);
+}
+
+// A name built on a guessed launch value says so where the person points at it: a port remapped
+// onto a guess, a port under a guessed namespace, and a boundary port they are promoted to.
+void TestDiagramPanel::toolTipsSayWhatIsAGuess()
+{
+    Composite c = test::diagram::architecture().composites[0];
+    QVERIFY(c.parts.size() > 0 && c.parts[0].ports.size() > 1 && !c.boundary.isEmpty());
+    c.parts[0].ports[0].guessed = true;
+    c.parts[0].ports[0].remapped = true;
+    c.parts[0].ports[1].guessed = true;
+    c.parts[0].ports[1].remapped = false;
+    c.boundary[0].guessed = true;
+    const QHash<QString, QString> tips = DiagramText::toolTips(c);
+    const QString part = c.parts[0].id;
+    QVERIFY(tips.value(DiagramBuilder::portKey(part, c.parts[0].ports[0].id))
+                .contains(QStringLiteral("Remapped to a name built from a launch value")));
+    QVERIFY(tips.value(DiagramBuilder::portKey(part, c.parts[0].ports[1].id))
+                .contains(QStringLiteral("Its namespace or node name is built from a launch")));
+    QVERIFY(tips.value(DiagramBuilder::boundaryKey(c.boundary[0].id))
+                .contains(QStringLiteral("it is a guess")));
+    if (c.boundary.size() > 1)
+        QVERIFY(!tips.value(DiagramBuilder::boundaryKey(c.boundary[1].id))
+                     .contains(QStringLiteral("guess")));
 }
 
 void TestDiagramPanel::exportsSvgAndPng()
