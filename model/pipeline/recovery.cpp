@@ -5,6 +5,7 @@
 #include "evidenceshift.h"
 #include "launchreadahead.h"
 #include "nodeanalyzer.h"
+#include "parsehandoff.h"
 #include "recoverystream.h"
 #include "stagememo.h"
 #include "workspacescanner.h"
@@ -140,6 +141,9 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     // The cache's packs are written once the run is over, while the caller goes on with it.
     const DeferredCacheWrite deferred(control.cache ? *control.cache : AnalysisCache::shared());
     const StageControl stage1 = control.forStage(1);
+    // Stages 1 and 2 both read the Python launch files: parsed once, by whichever comes first.
+    std::optional<ParseHandoff::Run> handoff;
+    handoff.emplace();
     const Workspace ws = WorkspaceScanner::scan(root, stage1);
     const StageControl stage2 = control.forStage(2);
     // Stage 2's reading of the launch files runs in what stage 1 leaves of the cores.
@@ -157,6 +161,7 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
     r.launch = LaunchAnalyzer::run(ws, r.nodes, options, stage2, readAhead ? &*readAhead : nullptr,
                                    &launchKey);
     readAhead.reset();
+    handoff.reset(); // what stage 2 did not take
     if (r.launch.canceled || control.isCanceled())
         return r;
     timed(2);

@@ -1,5 +1,6 @@
 #include "pythonlaunchreader.h"
 
+#include "parsehandoff.h"
 #include "pythonlaunchevaluator.h"
 #include "syntaxtree.h"
 
@@ -41,10 +42,17 @@ std::optional<LaunchFileDescription> PythonLaunchReader::readIfLaunchFile(const 
 {
     if (!content.contains("generate_launch_description"))
         return std::nullopt;
-    const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
-    if (ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree)))
-        return std::nullopt;
-    return describe(tree, file);
+    // Stage 1 reads the same file for node classes: one parse for both (ParseHandoff).
+    std::optional<SyntaxTree> taken = ParseHandoff::take(file, content);
+    const bool parsedHere = !taken;
+    SyntaxTree tree =
+        taken ? std::move(*taken) : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    std::optional<LaunchFileDescription> d;
+    if (!ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree)))
+        d = describe(tree, file);
+    if (parsedHere)
+        ParseHandoff::offer(std::move(tree));
+    return d;
 }
 
 } // namespace rosarch

@@ -3,6 +3,7 @@
 #include "analysiscache.h"
 #include "filedigests.h"
 #include "largestfirst.h"
+#include "parsehandoff.h"
 #include "pythonerrorrecovery.h"
 #include "pythonfactscodec.h"
 #include "pythonmodulereader.h"
@@ -178,18 +179,30 @@ PythonFileResult PythonNodeAnalyzer::analyzeContent(const QByteArray &content, c
                                                     const QString &package, const QString &module)
 {
     PythonFileResult r;
-    SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    // A launch file is parsed once for both stages: by whichever reads it first.
+    const bool shared = ParseHandoff::wanted(content);
+    std::optional<SyntaxTree> taken =
+        shared ? ParseHandoff::take(file, content) : std::optional<SyntaxTree>();
+    const bool parsedHere = !taken;
+    SyntaxTree tree =
+        taken ? std::move(*taken) : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    bool repaired = false;
     if (!ts::isNull(tree.root()) && ts_node_has_error(tree.root())) {
         QList<Diagnostic> isolated;
-        const QByteArray repaired = PythonErrorRecovery::isolate(content, file, &isolated);
+        const QByteArray text = PythonErrorRecovery::isolate(content, file, &isolated);
         if (!isolated.isEmpty()) {
             r.diagnostics.append(isolated);
-            tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, repaired, file);
+            if (shared && parsedHere)
+                ParseHandoff::offer(std::move(tree)); // the text as written, for stage 2
+            tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, text, file);
+            repaired = true;
         }
     }
     r.diagnostics.append(tree.syntaxErrors());
     if (!ts::isNull(tree.root()))
         r.module = PythonModuleReader(tree, module).read(package);
+    if (shared && parsedHere && !repaired)
+        ParseHandoff::offer(std::move(tree));
     return r;
 }
 
