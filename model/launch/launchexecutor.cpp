@@ -26,6 +26,14 @@ QString nsKey(const QString &ns)
 {
     return ns.isEmpty() ? QStringLiteral("/") : ns;
 }
+
+/// Whether a namespace joined onto one that may rest on a guess rests on one.
+bool joinedNamespaceGuessed(bool outerGuessed, const QString &inner, bool innerGuessed)
+{
+    // An absolute namespace replaces the one around it, a guess and all.
+    return innerGuessed || (outerGuessed && !inner.trimmed().startsWith(QLatin1Char('/')));
+}
+
 } // namespace
 
 QString launchFileDir(const QString &file)
@@ -262,9 +270,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                 bool guessed = false;
                 const QString pushed =
                     evaluate(a.nameSpace, scope, frame, unresolvedSink(), a.evidence, &guessed);
-                // An absolute namespace replaces the one around it, a guess and all.
                 scope.guessedNamespace =
-                    guessed || (scope.guessedNamespace && !pushed.trimmed().startsWith(u'/'));
+                    joinedNamespaceGuessed(scope.guessedNamespace, pushed, guessed);
                 scope.nameSpace = joinNamespace(scope.nameSpace, pushed);
             }
             break;
@@ -407,8 +414,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     bool nsGuessed = false;
     const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence, &nsGuessed);
     n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));
-    n.guessedNamespace =
-        nsGuessed || (scope.guessedNamespace && !ns.trimmed().startsWith(QLatin1Char('/')));
+    n.guessedNamespace = joinedNamespaceGuessed(scope.guessedNamespace, ns, nsGuessed);
     n.condition = a.condition.text;
     n.active = scope.active && conditionHolds(a, scope, frame, &u);
     if (a.condition.isSet() && !n.active)

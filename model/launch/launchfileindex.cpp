@@ -3,6 +3,7 @@
 #include "analysiscache.h"
 #include "launchanalyzer.h"
 #include "launchfilecodec.h"
+#include "pythonsyntax.h"
 #include "sourcereader.h"
 #include "stagememo.h"
 
@@ -42,8 +43,7 @@ LaunchFileRead LaunchFileIndex::read(const SourceFile &f, const SourceReader &re
         return r;
     r.readable = true;
     // Only a Python file that names the launch function can be one; the test is cheap.
-    if (f.language == SourceFile::Language::Python &&
-        !content.contains("generate_launch_description"))
+    if (f.language == SourceFile::Language::Python && !py::namesLaunchFunction(content))
         return r;
     const QByteArray key = AnalysisCache::key(
         {"launch", f.path.toUtf8(), QByteArray::number(int(f.language)), content});

@@ -1,5 +1,7 @@
 #include "parsehandoff.h"
 
+#include "pythonsyntax.h"
+
 #include <QHash>
 
 #include <mutex>
@@ -55,7 +57,7 @@ ParseHandoff::Run::~Run()
 
 bool ParseHandoff::wanted(const QByteArray &content)
 {
-    return content.contains("generate_launch_description");
+    return py::namesLaunchFunction(content);
 }
 
 std::optional<SyntaxTree> ParseHandoff::take(const QString &file, const QByteArray &content)
@@ -72,6 +74,15 @@ std::optional<SyntaxTree> ParseHandoff::take(const QString &file, const QByteArr
     if (!tree || tree->source() != content)
         return std::nullopt;
     return std::move(*tree);
+}
+
+SyntaxTree ParseHandoff::takeOrParse(const QString &file, const QByteArray &content,
+                                     bool *parsedHere)
+{
+    std::optional<SyntaxTree> taken = take(file, content);
+    *parsedHere = !taken;
+    return taken ? std::move(*taken)
+                 : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
 }
 
 void ParseHandoff::offer(SyntaxTree tree)

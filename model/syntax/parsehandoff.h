@@ -34,6 +34,8 @@ public:
     static bool wanted(const QByteArray &content);
     /// The tree of `file` another reader parsed from exactly `content`, taken; none otherwise.
     static std::optional<SyntaxTree> take(const QString &file, const QByteArray &content);
+    /// take(), else a Python parse of `content`; `*parsedHere` says which (offer it when done).
+    static SyntaxTree takeOrParse(const QString &file, const QByteArray &content, bool *parsedHere);
     /// Hands over a tree the caller is done with (dropped outside a Run, or when what waits
     /// to be taken is at its bound).
     static void offer(SyntaxTree tree);

@@ -10,6 +10,13 @@
 // Small readers over the tree-sitter-python grammar, shared by the Python analyzer parts.
 namespace rosarch::py {
 
+/// Whether Python text names the launch function: only then can it be a launch file (a cheap
+/// test before any parse).
+inline bool namesLaunchFunction(const QByteArray &content)
+{
+    return content.contains("generate_launch_description");
+}
+
 /// Like ts::walk (pre-order, return false to skip children) but with a tree cursor, which
 /// visits wide nodes in linear time.
 template <typename F> void walk(TSNode root, F &&visit)

@@ -2,13 +2,14 @@
 
 #include "parsehandoff.h"
 #include "pythonlaunchevaluator.h"
+#include "pythonsyntax.h"
 #include "syntaxtree.h"
 
 namespace rosarch {
 
 bool PythonLaunchReader::isLaunchFile(const QByteArray &content)
 {
-    if (!content.contains("generate_launch_description"))
+    if (!py::namesLaunchFunction(content))
         return false;
     const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, QString());
     return !ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree));
@@ -40,13 +41,11 @@ LaunchFileDescription PythonLaunchReader::read(const QByteArray &content, const 
 std::optional<LaunchFileDescription> PythonLaunchReader::readIfLaunchFile(const QByteArray &content,
                                                                           const QString &file)
 {
-    if (!content.contains("generate_launch_description"))
+    if (!py::namesLaunchFunction(content))
         return std::nullopt;
     // Stage 1 reads the same file for node classes: one parse for both (ParseHandoff).
-    std::optional<SyntaxTree> taken = ParseHandoff::take(file, content);
-    const bool parsedHere = !taken;
-    SyntaxTree tree =
-        taken ? std::move(*taken) : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    bool parsedHere = true;
+    SyntaxTree tree = ParseHandoff::takeOrParse(file, content, &parsedHere);
     std::optional<LaunchFileDescription> d;
     if (!ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree)))
         d = describe(tree, file);

@@ -181,11 +181,9 @@ PythonFileResult PythonNodeAnalyzer::analyzeContent(const QByteArray &content, c
     PythonFileResult r;
     // A launch file is parsed once for both stages: by whichever reads it first.
     const bool shared = ParseHandoff::wanted(content);
-    std::optional<SyntaxTree> taken =
-        shared ? ParseHandoff::take(file, content) : std::optional<SyntaxTree>();
-    const bool parsedHere = !taken;
-    SyntaxTree tree =
-        taken ? std::move(*taken) : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
+    bool parsedHere = true;
+    SyntaxTree tree = shared ? ParseHandoff::takeOrParse(file, content, &parsedHere)
+                             : SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file);
     bool repaired = false;
     if (!ts::isNull(tree.root()) && ts_node_has_error(tree.root())) {
         QList<Diagnostic> isolated;
