@@ -1,5 +1,7 @@
 #include "rosnames.h"
 
+#include <optional>
+
 #include <QRegularExpression>
 
 namespace rosarch::RosNames {
@@ -92,27 +94,95 @@ bool truthy(const QString &value, bool *known)
     return true;
 }
 
+namespace {
+
+/// `text` without parentheses that wrap all of it: "((x))" -> "x"; "(a) && (b)" stays.
+QString unwrapped(QString text)
+{
+    for (int bound = 0; bound < 16; ++bound) {
+        text = text.trimmed();
+        if (!text.startsWith(QLatin1Char('(')) || !text.endsWith(QLatin1Char(')')))
+            return text;
+        int depth = 0;
+        for (qsizetype i = 0; i < text.size(); ++i) {
+            depth += text.at(i) == QLatin1Char('(') ? 1 : text.at(i) == QLatin1Char(')') ? -1 : 0;
+            if (depth == 0 && i + 1 < text.size())
+                return text; // the first parenthesis closes before the end
+        }
+        text = text.mid(1, text.size() - 2);
+    }
+    return text;
+}
+
+/// The literal a guard compares with: a bool, a number or a quoted string, as its text.
+std::optional<QString> literalOf(const QString &text)
+{
+    const QString t = text.trimmed();
+    if (t.size() >= 2 && (t.front() == QLatin1Char('"') || t.front() == QLatin1Char('\'')) &&
+        t.back() == t.front() && !t.mid(1, t.size() - 2).contains(t.front()))
+        return t.mid(1, t.size() - 2);
+    static const QRegularExpression plain(
+        QStringLiteral(R"(^(true|false|True|False|-?\d+(\.\d+)?)$)"));
+    if (plain.match(t).hasMatch())
+        return t;
+    return std::nullopt;
+}
+
+} // namespace
+
 bool evaluateGuard(const QString &guard, const QString &parameterValue, bool *known)
 {
     // a variable, or the parameter read in place: self.get_parameter('x').value,
     // this->get_parameter("x").as_bool(), node->get_parameter("x").get_value<bool>()
     static const QRegularExpression single(QStringLiteral(
-        R"(^\s*(!|not\s+)?\s*(?:(?:this->|self\.)?[A-Za-z_][A-Za-z0-9_]*|)"
+        R"(^\s*(?:(?:this->|self\.)?[A-Za-z_][A-Za-z0-9_]*|)"
         R"((?:[A-Za-z_][A-Za-z0-9_]*(?:->|\.))*get_parameter\s*\(\s*['"][^'"]+['"]\s*\))"
-        R"((?:(?:->|\.)[A-Za-z_][A-Za-z0-9_<>]*(?:\(\s*\))?)*)\s*)"
-        R"((?:==\s*(true|false|True|False))?\s*$)"));
-    const auto m = single.match(guard);
-    if (!m.hasMatch()) {
-        *known = false;
-        return true;
+        R"((?:(?:->|\.)[A-Za-z_][A-Za-z0-9_<>]*(?:\(\s*\))?)*)\s*$)"));
+    *known = false;
+    QString text = unwrapped(guard);
+    bool negated = false;
+    for (int bound = 0; bound < 16; ++bound) { // !x, not x, !(x), !!x
+        if (text.startsWith(QLatin1Char('!')) && !text.startsWith(QLatin1String("!="))) {
+            text = unwrapped(text.mid(1));
+        } else if (text.startsWith(QLatin1String("not ")) ||
+                   text.startsWith(QLatin1String("not("))) {
+            text = unwrapped(text.mid(3));
+        } else {
+            break;
+        }
+        negated = !negated;
     }
-    bool value = truthy(parameterValue, known);
-    if (!*known)
+    // x == literal, x != literal (a bool, a number, or a string: an enum-like parameter)
+    static const QRegularExpression comparison(QStringLiteral(R"(^(.+?)\s*(==|!=)\s*(.+)$)"));
+    QString operand = text;
+    std::optional<QString> literal;
+    bool equal = true;
+    if (const auto m = comparison.match(text); m.hasMatch()) {
+        literal = literalOf(m.captured(3));
+        if (!literal)
+            return true;
+        operand = unwrapped(m.captured(1));
+        equal = m.captured(2) == QLatin1String("==");
+    }
+    if (!single.match(operand).hasMatch())
         return true;
-    const QString compared = m.captured(2).toLower();
-    if (compared == QLatin1String("false"))
+    bool value = false;
+    bool boolLiteral = false;
+    const bool wanted = literal ? truthy(*literal, &boolLiteral) : true;
+    if (!literal || (boolLiteral && !literal->front().isDigit())) { // x, x == true
+        value = truthy(parameterValue, known);
+        if (!*known)
+            return true;
+        value = value == wanted;
+    } else { // x == 3, x == "fast": compared as numbers when both are, else as text
+        bool okA = false, okB = false;
+        const double a = parameterValue.trimmed().toDouble(&okA), b = literal->toDouble(&okB);
+        value = okA && okB ? a == b : parameterValue == *literal;
+        *known = true;
+    }
+    if (!equal)
         value = !value;
-    return m.captured(1).isEmpty() ? value : !value;
+    return negated ? !value : value;
 }
 
 } // namespace rosarch::RosNames

@@ -35,9 +35,10 @@ bool isNameRule(const QString &from);
 /// Returns false in `*known` when the value is not a boolean literal.
 bool truthy(const QString &value, bool *known);
 
-/// Evaluates a port guard as written ("use_x", "!use_x", "this->use_x_", "not self.use_x")
-/// given the value of the parameter behind it; `*known` is false when the guard is more than
-/// a single (possibly negated) variable, or the value is not a boolean.
+/// Evaluates a port guard as written ("use_x", "!use_x", "!(use_x)", "not self.use_x",
+/// "mode_ == \"fast\"", "rate != 0") given the value of the parameter behind it; `*known` is
+/// false when the guard is more than a single, possibly negated, variable or a comparison of
+/// one with a literal, or when a boolean guard's value is not a boolean.
 bool evaluateGuard(const QString &guard, const QString &parameterValue, bool *known);
 
 } // namespace rosarch::RosNames

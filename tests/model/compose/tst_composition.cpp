@@ -199,6 +199,22 @@ private Q_SLOTS:
                                   << "true" << false << true;
         QTest::newRow("not a bool") << "use_x"
                                     << "maybe" << false << true;
+        // a negation of a parenthesised guard, as an else branch is recorded
+        QTest::newRow("negated in parentheses") << "!(is_stamped_)"
+                                                << "true" << true << false;
+        QTest::newRow("double negation") << "!(!(use_x))"
+                                         << "true" << true << true;
+        // string and number parameters compared with a literal
+        QTest::newRow("string equal") << "mode_ == \"fast\""
+                                      << "fast" << true << true;
+        QTest::newRow("string unequal") << "(mode_ != 'fast')"
+                                        << "fast" << true << false;
+        QTest::newRow("negated comparison") << "!(mode_ == \"slow\")"
+                                            << "fast" << true << true;
+        QTest::newRow("number") << "rate != 0"
+                                << "0.0" << true << false;
+        QTest::newRow("compared with an expression") << "mode_ == other_"
+                                                     << "fast" << false << true;
     }
 
     void evaluatesGuards()
