@@ -38,6 +38,15 @@ Substitution Substitution::concat(QList<Substitution> parts)
     return s;
 }
 
+Substitution Substitution::function(const QString &name, QList<Substitution> arguments)
+{
+    Substitution s;
+    s.kind = Kind::Function;
+    s.text = name;
+    s.parts = std::move(arguments);
+    return s;
+}
+
 QString Substitution::describe() const
 {
     auto joined = [&](const QString &sep) {
@@ -71,6 +80,12 @@ QString Substitution::describe() const
         return QStringLiteral("RewrittenYaml(%1)").arg(joined(QStringLiteral(", ")));
     case Kind::Unknown:
         return text;
+    case Kind::Function: {
+        QStringList args;
+        for (const Substitution &p : parts)
+            args << p.describe();
+        return QStringLiteral("$(%1 %2)").arg(text, args.join(QLatin1Char(' ')));
+    }
     }
     return text;
 }

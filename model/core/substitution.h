@@ -28,6 +28,10 @@ struct Substitution
                            ///< key, then each rewrite as a name and a value (a value
                            ///< rewrite's name starts with '='); evaluates to the file
         Unknown, ///< anything else (Command, OpaqueFunction results, ...): `text` = the expression
+        /// A launch function of its arguments, evaluated as ROS 2 launch does: `text` = "equals",
+        /// "not-equals", "and", "or", "not", "all", "any" or "if"; parts = the arguments
+        /// (EqualsSubstitution / $(equals a b), IfElseSubstitution / $(if c a b), ...).
+        Function,
     };
 
     Kind kind = Kind::Text;
@@ -38,6 +42,7 @@ struct Substitution
     static Substitution unknown(const QString &expression);
     static Substitution configuration(const QString &name);
     static Substitution concat(QList<Substitution> parts);
+    static Substitution function(const QString &name, QList<Substitution> arguments);
 
     bool isEmpty() const { return kind == Kind::Text && text.isEmpty(); }
     bool isLiteral() const { return kind == Kind::Text; }

@@ -2,6 +2,10 @@
 
 #include "pythonexpression.h"
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
 namespace rosarch {
 
 namespace {
@@ -17,6 +21,42 @@ QString joinPath(const QString &a, const QString &b)
     if (a.endsWith(QLatin1Char('/')))
         return a + b;
     return a + QLatin1Char('/') + b;
+}
+
+/// A launch function's boolean argument: "true"/"1" or "false"/"0" (any case), as launch's
+/// typed substitutions read them; anything else is no boolean.
+std::optional<bool> launchBool(const QString &value)
+{
+    const QString v = value.trimmed().toLower();
+    if (v == QLatin1String("true") || v == QLatin1String("1"))
+        return true;
+    if (v == QLatin1String("false") || v == QLatin1String("0"))
+        return false;
+    return std::nullopt;
+}
+
+/// $(equals a b) as launch compares: two booleans as booleans, two numbers as close floats,
+/// anything else as text.
+bool launchEquals(const QString &a, const QString &b)
+{
+    const QString la = a.toLower(), lb = b.toLower();
+    auto isBool = [](const QString &v) {
+        return v == QLatin1String("true") || v == QLatin1String("false") ||
+               v == QLatin1String("1") || v == QLatin1String("0");
+    };
+    if (isBool(la) && isBool(lb))
+        return (la == QLatin1String("true") || la == QLatin1String("1")) ==
+               (lb == QLatin1String("true") || lb == QLatin1String("1"));
+    bool okA = false, okB = false;
+    const double x = a.trimmed().toDouble(&okA), y = b.trimmed().toDouble(&okB);
+    if (okA && okB && !a.trimmed().isEmpty() && !b.trimmed().isEmpty())
+        return x == y || std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y));
+    return a == b;
+}
+
+QString boolText(bool b)
+{
+    return b ? QStringLiteral("true") : QStringLiteral("false");
 }
 
 } // namespace
@@ -130,7 +170,50 @@ void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int d
         r->unresolved.append({QStringLiteral("substitution"), s.text, s.text, {}});
         r->value += s.text;
         return;
+    case Substitution::Kind::Function:
+        r->value += function(s, r, depth);
+        return;
     }
+}
+
+QString SubstitutionEvaluator::function(const Substitution &s, Result *r, int depth) const
+{
+    QStringList args;
+    for (const Substitution &p : s.parts) {
+        Result inner;
+        evaluateInto(p, &inner, depth + 1);
+        r->unresolved.append(inner.unresolved); // a guess in, a guess out
+        args << inner.value;
+    }
+    const QString &name = s.text;
+    const auto count = args.size();
+    // Booleans of all arguments from `first` on; empty when one is no boolean.
+    auto booleans = [&](qsizetype first) {
+        QList<bool> out;
+        for (qsizetype i = first; i < count; ++i) {
+            const std::optional<bool> b = launchBool(args.at(i));
+            if (!b)
+                return QList<bool>{};
+            out << *b;
+        }
+        return out;
+    };
+    if ((name == QLatin1String("equals") || name == QLatin1String("not-equals")) && count == 2)
+        return boolText(launchEquals(args.at(0), args.at(1)) == (name == QLatin1String("equals")));
+    if (name == QLatin1String("if") && (count == 2 || count == 3)) {
+        if (const std::optional<bool> c = launchBool(args.at(0)))
+            return *c ? args.at(1) : (count == 3 ? args.at(2) : QString());
+    } else if (const QList<bool> b = booleans(0); !b.isEmpty() || count == 0) {
+        if (name == QLatin1String("not") && count == 1)
+            return boolText(!b.first());
+        if ((name == QLatin1String("and") && count == 2) || name == QLatin1String("all"))
+            return boolText(!b.contains(false));
+        if ((name == QLatin1String("or") && count == 2) || name == QLatin1String("any"))
+            return boolText(b.contains(true));
+    }
+    // Not a form launch evaluates (a non-boolean operand, a wrong argument count): undecided.
+    r->unresolved.append({QStringLiteral("substitution"), s.describe(), s.describe(), {}});
+    return s.describe();
 }
 
 bool SubstitutionEvaluator::isTrue(const Substitution &s, QList<Unresolved> *unresolved) const

@@ -41,6 +41,8 @@ public:
 
 private:
     void evaluateInto(const Substitution &s, Result *r, int depth) const;
+    /// The value of a launch function (Substitution::Kind::Function).
+    QString function(const Substitution &s, Result *r, int depth) const;
 
     const QMap<QString, QString> &m_configurations;
     QString m_launchFileDir;

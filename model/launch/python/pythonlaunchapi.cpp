@@ -5,6 +5,8 @@
 
 #include "pythonsyntax.h"
 
+#include <QHash>
+
 #include <functional>
 
 namespace rosarch::pylaunch {
@@ -124,28 +126,41 @@ std::optional<Value> PythonLaunchApi::callSubstitutionApi(const QString &name, c
         const Value *t = args.get(0, {"text"});
         return t ? Value::substitution(t->toSubstitution()) : Value::string(QString());
     }
-    if (oneOf(name, {"EqualsSubstitution", "NotEqualsSubstitution"})) {
+    if (oneOf(name, {"EqualsSubstitution", "NotEqualsSubstitution", "AndSubstitution",
+                     "OrSubstitution"})) {
         const Value *l = args.get(0, {"left"}), *r = args.get(1, {"right"});
         if (!l || !r)
             return std::nullopt;
-        const QString op = name.startsWith(QLatin1String("Not")) ? QStringLiteral("' != '")
-                                                                 : QStringLiteral("' == '");
-        return Value::substitution(evaluation({Substitution::literal(kQuote), l->toSubstitution(),
-                                               Substitution::literal(op), r->toSubstitution(),
-                                               Substitution::literal(kQuote)}));
-    }
-    if (oneOf(name, {"AndSubstitution", "OrSubstitution"})) {
-        const Value *l = args.get(0, {"left"}), *r = args.get(1, {"right"});
-        if (!l || !r)
-            return std::nullopt;
-        const QString op = name.startsWith(QLatin1String("And")) ? QStringLiteral(" and ")
-                                                                 : QStringLiteral(" or ");
-        return Value::substitution(
-            evaluation({l->toSubstitution(), Substitution::literal(op), r->toSubstitution()}));
+        static const QHash<QString, QString> functions{
+            {QStringLiteral("EqualsSubstitution"), QStringLiteral("equals")},
+            {QStringLiteral("NotEqualsSubstitution"), QStringLiteral("not-equals")},
+            {QStringLiteral("AndSubstitution"), QStringLiteral("and")},
+            {QStringLiteral("OrSubstitution"), QStringLiteral("or")}};
+        return Value::substitution(Substitution::function(
+            functions.value(name), {l->toSubstitution(), r->toSubstitution()}));
     }
     if (name == QLatin1String("NotSubstitution") && a0)
         return Value::substitution(
-            evaluation({Substitution::literal(QStringLiteral("not ")), a0->toSubstitution()}));
+            Substitution::function(QStringLiteral("not"), {a0->toSubstitution()}));
+    if (oneOf(name, {"AllSubstitution", "AnySubstitution"})) {
+        QList<Substitution> all;
+        for (int i = 0; const Value *v = args.get(i); ++i)
+            all << v->toSubstitution();
+        return Value::substitution(Substitution::function(
+            name.startsWith(QLatin1String("All")) ? QStringLiteral("all") : QStringLiteral("any"),
+            all));
+    }
+    if (name == QLatin1String("IfElseSubstitution")) {
+        const Value *c = args.get(0, {"condition"});
+        const Value *t = args.get(1, {"if_value"}), *e = args.get(2, {"else_value"});
+        if (!c)
+            return std::nullopt;
+        QList<Substitution> parts{c->toSubstitution(), given(t) ? t->toSubstitution()
+                                                                : Substitution::literal(QString())};
+        if (given(e))
+            parts << e->toSubstitution();
+        return Value::substitution(Substitution::function(QStringLiteral("if"), parts));
+    }
     if (name == QLatin1String("RewrittenYaml")) { // nav2_common: a parameter file rewritten
         const Value *source = args.get(0, {"source_file"});
         if (!source)

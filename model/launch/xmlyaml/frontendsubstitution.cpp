@@ -258,7 +258,12 @@ private:
             s.parts = f.take();
             return s;
         }
-        // command, anon, if, equals, param, file-content, ...: kept as written, with the
+        const bool binary =
+            name == u"equals" || name == u"not-equals" || name == u"and" || name == u"or";
+        if ((binary && count == 2) || (name == u"not" && count == 1) ||
+            (name == u"if" && (count == 2 || count == 3)) || name == u"all" || name == u"any")
+            return Substitution::function(name, values);
+        // command, anon, param, file-content, ...: kept as written, with the
         // parsed arguments for whoever wants to look inside.
         s = Substitution::unknown(raw);
         s.parts = values;
