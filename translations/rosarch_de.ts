@@ -2255,121 +2255,131 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
     </message>
     <message>
         <location filename="../widgets/diagram/diagramtext.cpp" line="68"/>
+        <source>Outside the workspace; its ports come from an interface model.</source>
+        <translation>Außerhalb des Arbeitsbereichs; ihre Ports stammen aus einem Schnittstellenmodell.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="103"/>
+        <source>From the interface model %1 (code outside the workspace), started at %2</source>
+        <translation>Aus dem Schnittstellenmodell %1 (Code außerhalb des Arbeitsbereichs), gestartet in %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="70"/>
         <source>Namespace: %1</source>
         <translation>Namespace: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="71"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="73"/>
         <source>Inactive: its launch condition is false.</source>
         <translation>Inaktiv: Die Launch-Bedingung ist falsch.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="72"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="74"/>
         <source>Started at %1</source>
         <translation>Gestartet in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="82"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="84"/>
         <source>Written as: %1</source>
         <translation>Geschrieben als: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="84"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="86"/>
         <source>The name could not be resolved statically; this is a guess.</source>
         <translation>Der Name konnte nicht statisch aufgelöst werden; dies ist eine Annahme.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="87"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
         <source>Remapped to a name built from a launch value nobody sets; the name is a guess.</source>
         <translation>Umbenannt auf einen Namen aus einem Launch-Wert, den niemand setzt; der Name ist eine Vermutung.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
         <source>Its namespace or node name is built from a launch value nobody sets; the name is a guess, wired only to names that rest on a guess too.</source>
         <translation>Sein Namespace oder Knotenname ist aus einem Launch-Wert gebildet, den niemand setzt; der Name ist eine Vermutung und nur mit Namen verbunden, die ebenfalls auf einer Vermutung beruhen.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="93"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="95"/>
         <source>The name comes from a parameter.</source>
         <translation>Der Name stammt aus einem Parameter.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="95"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="97"/>
         <source>Remapped by the launch file.</source>
         <translation>Vom Launch-File per Remap umbenannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="97"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="99"/>
         <source>Guard: %1</source>
         <translation>Bedingung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="98"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="100"/>
         <source>Guard (false here): %1</source>
         <translation>Bedingung (hier falsch): %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="100"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="107"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="115"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="122"/>
         <source>Namespace %1 — right-click to collapse or expand</source>
         <translation>Namespace %1 – Rechtsklick zum Ein- oder Ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="118"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="125"/>
         <source>Topic %1</source>
         <translation>Topic %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="119"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="126"/>
         <source>Service %1</source>
         <translation>Service %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="120"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="127"/>
         <source>Action %1</source>
         <translation>Action %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="124"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="131"/>
         <source>Boundary port %1: %2 %3</source>
         <translation>Randport %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="125"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="132"/>
         <source>Promoted: nothing inside this launch file is on the other side.</source>
         <translation>Nach außen geführt: Innerhalb dieses Launch-Files gibt es keine Gegenseite.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="127"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="134"/>
         <source>The name rests on a launch value nobody sets; it is a guess.</source>
         <translation>Der Name beruht auf einem Launch-Wert, den niemand setzt; er ist eine Vermutung.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="138"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="145"/>
         <source>%1 (%2) %3 %4 — click to see the code</source>
         <translation>%1 (%2) %3 %4 – Klicken, um den Code zu sehen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="153"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="160"/>
         <source>1 element of the reference is missing: %1</source>
         <translation>1 Element der Referenz fehlt: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="154"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="161"/>
         <source>%1 elements of the reference are missing: %2</source>
         <translation>%1 Elemente der Referenz fehlen: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="159"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="166"/>
         <source>launch file (outside the workspace)</source>
         <translation>Launch-File (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="160"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="167"/>
         <source>launch file %1</source>
         <translation>Launch-File %1</translation>
     </message>

@@ -24,6 +24,8 @@ Json portJson(const PartPort &p)
         j["parameter_derived"] = true;
     if (p.remapped)
         j["remapped"] = true;
+    if (!p.model.isEmpty())
+        j["interface_model"] = utf8(p.model);
     if (!p.guard.isEmpty()) {
         j["guard"] = utf8(p.guard);
         j["active"] = p.active;

@@ -63,6 +63,8 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["active"] = i.active;
         j["unresolved"] = unresolvedJson(i.unresolved);
         j["evidence"] = EvidenceJson::toJson(i.evidence);
+        if (!i.interfaceModel.isEmpty())
+            j["interface_model"] = utf8(i.interfaceModel);
         files.push_back(j);
     }
     Json nodes = Json::array();
@@ -78,6 +80,8 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
             j["namespace_unresolved"] = true;
         if (n.guessedName)
             j["node_name_unresolved"] = true;
+        if (!n.interfaceModel.isEmpty())
+            j["interface_model"] = utf8(n.interfaceModel);
         j["package"] = utf8(n.package);
         j["class_id"] = utf8(n.classId);
         j["launch_file"] = utf8(n.launchFileId);
@@ -129,6 +133,7 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
     Json root;
     root["list_launch_file"] = files;
     root["list_atom_node_instances"] = nodes;
+    root["entry_points"] = strings(launch.entryPoints);
     root["launch_arguments"] = args;
     root["launch_files"] = strings(launch.launchFiles);
     return QByteArray::fromStdString(root.dump(2)) + '\n';

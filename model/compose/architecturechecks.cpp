@@ -1,6 +1,7 @@
 #include "architecturechecks.h"
 #include "composer.h"
 #include "editdistance.h"
+#include "observability.h"
 #include "qos.h"
 #include "rosnames.h"
 
@@ -34,12 +35,33 @@ class Checker
 {
 public:
     Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
-            QList<Diagnostic> *out)
-        : m_nodes(nodes), m_launch(launch), m_out(out)
+            const Observability &observability, QList<Diagnostic> *out)
+        : m_nodes(nodes), m_launch(launch), m_observability(observability), m_out(out)
     {
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
                 m_composites.insert(c.instanceId, &c);
+        // The helper that creates a port, by the port's place in the code (a part's port
+        // carries the evidence of the atomic port it comes from).
+        for (const AtomicNode &n : nodes.nodes)
+            for (const Port &p : n.ports)
+                if (!p.via.isEmpty())
+                    m_helpers.insert(place(p.evidence), p.via);
+        // Every remap rule a launch file gives a port, by the port's place in the code (one
+        // helper may create the port for several classes), in launch order.
+        for (const NodeInstance &n : launch.nodes) {
+            const AtomicNode *cls = nodes.node(n.classId);
+            if (!cls)
+                continue;
+            for (const auto &[from, to] : n.remaps) {
+                if (!RosNames::isNameRule(from))
+                    continue;
+                const QString rule = probed(from);
+                for (const Port &p : cls->ports)
+                    if (probed(p.name) == rule)
+                        m_remapsAt[place(p.evidence)].append({n.id, from, to, n.evidence});
+            }
+        }
     }
 
     void checkRoot(const Composite &root)
@@ -48,8 +70,12 @@ public:
         m_order.clear();
         m_named.clear();
         m_nodeOrder.clear();
+        m_nodeCount = 0;
         m_current = systemName(root);
         collect(root, 0);
+        // A launch file that starts one node is a building block, not a system: every port
+        // of that node is its interface to whatever runs beside it, so nothing is missing.
+        m_lone = m_nodeCount < 2;
         for (const QString &key : std::as_const(m_order))
             checkName(key);
         checkNodeNames();
@@ -64,25 +90,33 @@ private:
             if (!part.active)
                 continue;
             if (part.kind == RosNodePart::Kind::Launch) {
-                if (const Composite *child = m_composites.value(part.typeId))
+                if (part.external) // an interface model's ports, if one describes it
+                    addPorts(part);
+                else if (const Composite *child = m_composites.value(part.typeId))
                     collect(*child, depth + 1);
                 continue;
             }
+            ++m_nodeCount;
             if (nameIsKnown(part)) {
                 const QString fq = who(part);
                 if (!m_named.contains(fq))
                     m_nodeOrder.append(fq);
                 m_named[fq].append(&part);
             }
-            for (const PartPort &port : part.ports) {
-                if (!port.active || !port.resolved || port.guessed)
-                    continue; // a guessed name proves nothing about who hears whom
-                const QString key = portFamilyName(port.kind) + QLatin1Char(' ') + port.name;
-                if (!m_system.contains(key))
-                    m_order.append(key);
-                Family &f = m_system[key];
-                (isProvidingPort(port.kind) ? f.providers : f.users).append({&part, &port});
-            }
+            addPorts(part);
+        }
+    }
+
+    void addPorts(const RosNodePart &part)
+    {
+        for (const PartPort &port : part.ports) {
+            if (!port.active || !port.resolved || port.guessed)
+                continue; // a guessed name proves nothing about who hears whom
+            const QString key = portFamilyName(port.kind) + QLatin1Char(' ') + port.name;
+            if (!m_system.contains(key))
+                m_order.append(key);
+            Family &f = m_system[key];
+            (isProvidingPort(port.kind) ? f.providers : f.users).append({&part, &port});
         }
     }
 
@@ -121,6 +155,57 @@ private:
         }
         m_seen.insert(key, int(m_out->size()));
         m_out->append({severity, code, text, evidence, related, {m_current}, {old.key()}});
+    }
+
+    /// Whether an open port is open by design, and not a finding: a port an interface model
+    /// gives (code outside the workspace may use only some of it), and any port of a launch
+    /// file that starts one node (a building block: its ports are its interface), unless
+    /// another launch file remaps that port when it starts the same class. Then this file
+    /// probably misses the remap: `hint` and `related` say which and where.
+    bool openByDesign(const Use &u, QList<Diagnostic::Related> *related, QString *hint) const
+    {
+        if (!u.port->model.isEmpty())
+            return true;
+        if (!m_lone)
+            return false;
+        if (u.port->remapped || u.port->nameAsWritten.isEmpty())
+            return true;
+        const QString written = probed(u.port->nameAsWritten);
+        for (const RemapElsewhere &r : m_remapsAt.value(place(u.port->evidence))) {
+            if (r.instanceId == u.part->instanceId || probed(r.from) != written)
+                continue;
+            related->append({QStringLiteral("another launch file remaps %1 to %2 where it "
+                                            "starts a node with this port")
+                                 .arg(r.from, r.to),
+                             r.evidence});
+            *hint = QStringLiteral(" %1:%2 remaps it (%3:=%4) where it starts a node with this "
+                                   "port; this launch file may be missing that remap.")
+                        .arg(r.evidence.file)
+                        .arg(r.evidence.line)
+                        .arg(r.from, r.to);
+            return false;
+        }
+        return true;
+    }
+
+    /// A debug, visualisation, diagnostics or processing-time output, by its resolved name or
+    /// its name as written (`~/debug/x` remapped to `/x`), its type or its helper.
+    bool isObservability(const PartPort &port) const
+    {
+        const QString helper = m_helpers.value(place(port.evidence));
+        return m_observability.covers(port.name, port.type, helper) ||
+               m_observability.covers(port.nameAsWritten, port.type, helper);
+    }
+
+    /// A name expanded in one made-up namespace and node name, to compare two spellings.
+    static QString probed(const QString &name)
+    {
+        return RosNames::expand(name, QStringLiteral("/__probe"), QStringLiteral("__node"));
+    }
+
+    static QString place(const Evidence &e)
+    {
+        return QStringLiteral("%1:%2:%3").arg(e.file).arg(e.line).arg(e.column);
     }
 
     static QString systemName(const Composite &root)
@@ -211,12 +296,16 @@ private:
             checkQos(name, f);
             if (f.providers.isEmpty())
                 for (const Use &u : f.users) {
+                    QList<Diagnostic::Related> rel;
+                    QString h;
+                    if (openByDesign(u, &rel, &h))
+                        continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("publishes"));
                         continue;
                     }
-                    QList<Diagnostic::Related> rel;
-                    const QString h = hint(kind, name, true, &rel);
+                    if (h.isEmpty())
+                        h = hint(kind, name, true, &rel);
                     add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
                         QStringLiteral(
                             "%1 subscribes to %2, which no node started {by} publishes.%3")
@@ -225,12 +314,20 @@ private:
                 }
             if (f.users.isEmpty())
                 for (const Use &u : f.providers) {
+                    // Meant for tools (RViz, ros2 bag, plotters): nobody in the system needs
+                    // to hear it.
+                    if (isObservability(*u.port))
+                        continue;
+                    QList<Diagnostic::Related> rel;
+                    QString h;
+                    if (openByDesign(u, &rel, &h))
+                        continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("subscribes to"));
                         continue;
                     }
-                    QList<Diagnostic::Related> rel;
-                    const QString h = hint(kind, name, false, &rel);
+                    if (h.isEmpty())
+                        h = hint(kind, name, false, &rel);
                     add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
                         QStringLiteral(
                             "%1 publishes %2, which no node started {by} subscribes to.%3")
@@ -256,12 +353,16 @@ private:
         }
         if (f.providers.isEmpty())
             for (const Use &u : f.users) {
+                QList<Diagnostic::Related> rel;
+                QString h;
+                if (openByDesign(u, &rel, &h))
+                    continue;
                 if (u.port->remapped) {
                     remapTargetUnused(u, name, QStringLiteral("serves"));
                     continue;
                 }
-                QList<Diagnostic::Related> rel;
-                const QString h = hint(kind, name, true, &rel);
+                if (h.isEmpty())
+                    h = hint(kind, name, true, &rel);
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
                     QStringLiteral("%1 calls the %2 %3, which no node started {by} serves.%4")
                         .arg(who(*u.part), kind, name, h),
@@ -344,6 +445,14 @@ private:
     QHash<QString, const Composite *> m_composites; ///< by instance id
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
+    const Observability &m_observability;
+    QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
+    struct RemapElsewhere
+    {
+        QString instanceId, from, to;
+        Evidence evidence; ///< the node in its launch file
+    };
+    QHash<QString, QList<RemapElsewhere>> m_remapsAt; ///< a port's place -> remaps of it
     QList<Diagnostic> *m_out;
     QHash<QString, Family> m_system;
     QStringList m_order;
@@ -351,13 +460,33 @@ private:
     QStringList m_nodeOrder;
     QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out
     QString m_current;          ///< the system being checked
+    int m_nodeCount = 0;        ///< active node parts of the system being checked
+    bool m_lone = false;        ///< the system starts fewer than two nodes
 };
+
+/// A system the checks judge: a root launch-file instance of an entry point. Without entry
+/// points (a composition of given instances), every root.
+bool judged(const LaunchDependencies &launch, const QString &rootFile)
+{
+    return launch.entryPoints.isEmpty() || launch.entryPoints.contains(rootFile);
+}
+
+/// The launch-file instances of the judged systems: each root and what it includes.
+QSet<QString> judgedInstances(const LaunchDependencies &launch)
+{
+    QSet<QString> in;
+    for (const LaunchFileInstance &i : launch.instances) // roots first, then their includes
+        if (i.parentId.isEmpty() ? judged(launch, i.file) : in.contains(i.parentId))
+            in.insert(i.id);
+    return in;
+}
 
 /// A remap rule is reported when no instance carrying it has a port it renames; the
 /// evidence is the first node the rule applies to.
 void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
                  QList<Diagnostic> *out)
 {
+    const QSet<QString> systems = judgedInstances(launch);
     struct Rule
     {
         QString text;
@@ -369,7 +498,7 @@ void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
     QHash<QString, int> index;
     for (const NodeInstance &n : launch.nodes) {
         const AtomicNode *cls = nodes.node(n.classId);
-        if (!cls || !n.active)
+        if (!cls || !n.active || !systems.contains(n.launchFileId))
             continue;
         QList<int> used;
         Composer::resolvePorts(*cls, n, nullptr, &used);
@@ -404,12 +533,13 @@ void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
 } // namespace
 
 QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const AtomicNodeList &nodes,
-                                          const LaunchDependencies &launch)
+                                          const LaunchDependencies &launch,
+                                          const Observability &observability)
 {
     QList<Diagnostic> out;
-    Checker checker(arch, nodes, launch, &out);
+    Checker checker(arch, nodes, launch, observability, &out);
     for (const Composite &c : arch.composites)
-        if (c.parentId.isEmpty())
+        if (c.parentId.isEmpty() && judged(launch, c.file))
             checker.checkRoot(c);
     checkRemaps(nodes, launch, &out);
     // A file included twice reports the same remap (same launch line) twice.

@@ -206,6 +206,8 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         if (!instance.removedPorts.contains(p.id))
             ports.append(p);
     ports += instance.addedPorts;
+    const qsizetype firstModelled = ports.size();
+    ports += instance.modelledPorts;
     for (const Port &p : std::as_const(ports)) {
         PartPort pp;
         pp.id = p.id;
@@ -216,6 +218,8 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         pp.qos = p.qos;
         pp.evidence = p.evidence;
         pp.marks = p.marks;
+        if (&p - ports.constData() >= firstModelled)
+            pp.model = instance.interfaceModel;
         pp.resolved = p.isResolved();
         QString base = p.name;
         if (p.nameOrigin == NameOrigin::Parameter) {
@@ -382,8 +386,9 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 part.active = n.active && lf.active;
                 part.typed = cls != nullptr;
                 part.marks = n.marks;
-                if (!cls && !n.addedPorts.isEmpty()) {
-                    AtomicNode added; // an unknown class with ports a person added
+                if (!cls && (!n.addedPorts.isEmpty() || !n.modelledPorts.isEmpty())) {
+                    // an unknown class with ports a person added, or an interface model's
+                    AtomicNode added;
                     part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;
                     part.ports = resolvePorts(added, n, nullptr);
                 } else if (cls) {
@@ -405,6 +410,20 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                 part.active = child.active && lf.active;
                 part.external = child.external;
                 part.typed = !child.external;
+                // An external launch file an interface model describes: the ports of its
+                // nodes, under the namespace the include gives them.
+                for (const Port &p : child.modelledPorts) {
+                    PartPort pp;
+                    pp.id = p.id;
+                    pp.kind = p.kind;
+                    pp.nameAsWritten = p.name;
+                    pp.name = RosNames::scopeRelative(
+                        RosNames::expand(p.name, child.modelNamespace, QString()));
+                    pp.type = p.type;
+                    pp.evidence = p.evidence;
+                    pp.model = child.interfaceModel;
+                    part.ports.append(pp);
+                }
                 const auto it = built.constFind(child.id);
                 if (it != built.constEnd()) {
                     for (const BoundaryPort &b : it->boundary) {

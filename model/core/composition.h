@@ -32,6 +32,9 @@ struct PartPort
     QString qos;        ///< the QoS argument at the creating call, as written ("" = none)
     Evidence evidence;  ///< the port's creation in code (or the inner port for a boundary)
     Marks marks = {};   ///< provenance and review (blueprint §5); set by the corrected model
+    /// The interface model the port comes from (code outside the workspace; its evidence is the
+    /// launch action); "" for a port found in the workspace's code.
+    QString model = {};
     bool operator==(const PartPort &) const = default;
 };
 

@@ -15,18 +15,22 @@ DiagnosticKind kind(const char *code, const char *title, const char *help, const
 const QList<DiagnosticKind> &DiagnosticKind::all()
 {
     static const QList<DiagnosticKind> kinds = {
-        // Architecture checks (stage 3), per root system
+        // Architecture checks (stage 3), per system started from an entry point: a launch file
+        // no other file includes under any condition. A launch file that starts one node is a
+        // building block, and its open ports are not reported.
         kind("topic-unpublished", "Subscription that nobody publishes",
-             "A node subscribes to a topic that no node started by the same root launch file "
+             "A node subscribes to a topic that no node started from the same entry point "
              "publishes, so its callback never runs in that system. Usually a misspelt or "
              "unremapped name (the message names the most similar published topic), or a "
              "publisher outside the workspace (a driver, a simulator). Fix the name, add the "
              "remap, or accept the finding when the publisher is external.",
              "warning"),
         kind("topic-unheard", "Publisher that nobody subscribes to",
-             "A node publishes a topic that no node of the same system subscribes to. Often "
-             "fine (a topic for tools, rosbag or RViz); worth a look when the name is close to "
-             "a subscribed one.",
+             "A node publishes a topic that no node of the same system subscribes to. Outputs "
+             "meant for tools (debug, visualisation, diagnostics, processing time: recognised "
+             "by message package, name and helper, see interfaces/observability.json) are not "
+             "reported. Worth a look when the name is close to a subscribed one; otherwise "
+             "remove the publisher, or accept the finding when a tool outside reads it.",
              "note"),
         kind("type-mismatch", "One name, several interface types",
              "The publishers, subscriptions, servers or clients of one name use different "
@@ -66,6 +70,13 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "(e.g. SensorDataQoS on both sides).",
              "warning"),
         // Reading the workspace
+        kind("duplicate-package", "Two packages with one name",
+             "Two folders of the workspace declare the same package name. colcon refuses to "
+             "build such a workspace, and every lookup by name would pick one copy or the other. "
+             "The analysis uses the newer version (the first by path when they agree) and "
+             "ignores the other copy; remove one, or put a COLCON_IGNORE file in the copy you "
+             "do not build.",
+             "error"),
         kind("syntax-error", "Syntax error",
              "Part of a source or launch file could not be parsed. Analysis continues with what "
              "could be read, so ports or nodes in the broken region may be missing.",

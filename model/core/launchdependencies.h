@@ -69,6 +69,10 @@ struct NodeInstance
     QList<Port> addedPorts = {};
     QStringList removedPorts = {};
     Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
+    /// An executable outside the workspace described by an interface model (blueprint §1):
+    /// the model's name and its ports, which cite this launch action as their evidence.
+    QString interfaceModel = {};
+    QList<Port> modelledPorts = {};
     bool operator==(const NodeInstance &) const = default;
 };
 
@@ -90,6 +94,12 @@ struct LaunchFileInstance
     bool active = true;
     QList<Unresolved> unresolved;
     Evidence evidence; ///< the include (or the file itself for a root)
+    /// An external launch file described by an interface model: its name and the ports of the
+    /// nodes it starts, with `modelNamespace` (the includer's scope and the model's namespace
+    /// argument) applied to their relative names.
+    QString interfaceModel = {};
+    QList<Port> modelledPorts = {};
+    QString modelNamespace = {};
     bool operator==(const LaunchFileInstance &) const = default;
 };
 
@@ -113,6 +123,10 @@ struct LaunchDependencies
         instances; ///< roots first, each followed by its includes (depth first)
     QList<NodeInstance> nodes;
     QList<LaunchArgument> arguments; ///< declared by the analysed roots
+    /// The systems the architecture checks judge (blueprint §1, "Checks run on entry points"):
+    /// the launch files no other file includes under any condition, or the chosen root.
+    /// Workspace-relative, sorted.
+    QStringList entryPoints;
     /// Each launch file analysed on its own with its declared defaults, in the classifier scope
     /// (RosNames::kClassifierScope), for its CCD: the runs' launch-file instances ("clf1", ...)
     /// and node instances ("cn1", ...). Not part of the system; not in the JSON.

@@ -47,7 +47,7 @@ template <class F> void fields(Executable &v, F f)
 }
 template <class F> void fields(RosPackage &v, F f)
 {
-    f(v.name, v.buildType, v.path, v.evidence, v.executables);
+    f(v.name, v.buildType, v.path, v.version, v.evidence, v.executables);
 }
 template <class F> void fields(AtomicNodeList &v, F f)
 {
@@ -66,13 +66,13 @@ template <class F> void fields(NodeInstance &v, F f)
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
       v.nameSpace, v.guessedNamespace, v.guessedName, v.container, v.lifecycle, v.remaps,
       v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition, v.active,
-      v.unresolved, v.evidence);
+      v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {
     f(v.id, v.type, v.file, v.package, v.format, v.parentId, v.external, v.nodes,
       v.includedLaunchFiles, v.namespaces, v.arguments, v.condition, v.active, v.unresolved,
-      v.evidence);
+      v.evidence, v.interfaceModel, v.modelledPorts, v.modelNamespace);
 }
 template <class F> void fields(LaunchArgument &v, F f)
 {
@@ -80,13 +80,13 @@ template <class F> void fields(LaunchArgument &v, F f)
 }
 template <class F> void fields(LaunchDependencies &v, F f)
 {
-    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.classifierInstances, v.classifierNodes,
-      v.diagnostics, v.canceled);
+    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.entryPoints, v.classifierInstances,
+      v.classifierNodes, v.diagnostics, v.canceled);
 }
 template <class F> void fields(PartPort &v, F f)
 {
     f(v.id, v.kind, v.nameAsWritten, v.name, v.type, v.resolved, v.guessed, v.parameterDerived,
-      v.remapped, v.active, v.guard, v.qos, v.evidence);
+      v.remapped, v.active, v.guard, v.qos, v.evidence, v.model);
 }
 template <class F> void fields(RosNodePart &v, F f)
 {

@@ -34,6 +34,7 @@ struct RosPackage
     QString name;
     QString buildType; ///< ament_python, ament_cmake, ...
     QString path;      ///< folder relative to the workspace root ("" for the root itself)
+    QString version;   ///< package.xml's <version>, as written
     Evidence evidence; ///< the <name> element of package.xml
     QList<Executable> executables;
 

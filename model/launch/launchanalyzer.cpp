@@ -71,6 +71,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     if (!options.rootFile.isEmpty()) {
         if (index.find(options.rootFile)) {
             roots << options.rootFile;
+            out.entryPoints << options.rootFile;
         } else {
             Diagnostic d;
             d.severity = Diagnostic::Severity::Error;
@@ -82,15 +83,24 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             out.diagnostics.append(d);
         }
     } else {
-        // Top-level launch files: those no other launch file includes.
-        QSet<QString> included;
-        for (const QString &f : std::as_const(out.launchFiles))
-            for (const QString &inc : executor.directIncludes(f))
+        // Top-level launch files: those no other launch file includes with its defaults. Of
+        // these, the entry points are those no file includes under any condition either.
+        QSet<QString> included, conditional;
+        for (const QString &f : std::as_const(out.launchFiles)) {
+            QStringList underCondition;
+            for (const QString &inc : executor.directIncludes(f, &underCondition))
                 if (inc != f)
                     included.insert(inc);
+            for (const QString &inc : std::as_const(underCondition))
+                if (inc != f)
+                    conditional.insert(inc);
+        }
         for (const QString &f : std::as_const(out.launchFiles))
-            if (!included.contains(f))
+            if (!included.contains(f)) {
                 roots << f;
+                if (!conditional.contains(f))
+                    out.entryPoints << f;
+            }
     }
     for (const QString &root : std::as_const(roots)) {
         if (control.isCanceled()) {
@@ -186,6 +196,9 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             d.message =
                 QStringLiteral("Include of %1 from package %2, which is not in the workspace.")
                     .arg(i.type, i.package);
+            if (!i.interfaceModel.isEmpty())
+                d.message += QStringLiteral(" The interface model %1 gives the ports of its nodes.")
+                                 .arg(i.interfaceModel);
             d.evidence = i.evidence;
             addAtSite(d, i);
         }

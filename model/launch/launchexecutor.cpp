@@ -1,4 +1,5 @@
 #include "launchexecutor.h"
+#include "interfacemodel.h"
 #include "substitutionevaluator.h"
 
 #include <QFileInfo>
@@ -104,7 +105,7 @@ void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &
         m_out->instances[frame.instance].arguments.append({it.key(), it.value()});
 }
 
-QStringList LaunchExecutor::directIncludes(const QString &file)
+QStringList LaunchExecutor::directIncludes(const QString &file, QStringList *conditional)
 {
     QStringList includes;
     const LaunchFileDescription *d = m_load(file);
@@ -116,6 +117,7 @@ QStringList LaunchExecutor::directIncludes(const QString &file)
     frame.chain = QStringList{file};
     frame.collectOnly = true;
     frame.includes = &includes;
+    frame.conditionalIncludes = conditional;
     execute(d->actions, scope, frame, 0);
     return includes;
 }
@@ -288,11 +290,14 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             break;
         case LaunchAction::Kind::Group: {
             Scope inner = scope;
-            inner.active = scope.active && conditionHolds(a, scope, frame, unresolvedSink());
-            if (!inner.active && frame.collectOnly)
+            const bool holds = conditionHolds(a, scope, frame, unresolvedSink());
+            inner.active = scope.active && holds;
+            if (!inner.active && frame.collectOnly && !frame.conditionalIncludes)
                 break;
             execute(a.children, inner, frame, depth + 1);
-            if (!a.scoped) {
+            // A group whose condition is false never runs its actions: its `let`s and pushes
+            // stay inside, whether it is scoped or not.
+            if (!a.scoped && holds) {
                 const bool active = scope.active;
                 scope = inner;
                 scope.active = active;
@@ -443,6 +448,13 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         n.nodeName = launchName.isEmpty() ? cls->nodeName : launchName;
     } else {
         n.nodeName = launchName;
+        if (const InterfaceModel *model =
+                classes.isEmpty() && !m_workspace.package(n.package)
+                    ? InterfaceModels::builtIn().executable(n.package, n.execName)
+                    : nullptr) {
+            n.interfaceModel = model->name;
+            n.modelledPorts = model->portsAt(a.evidence);
+        }
         if (composable) {
             n.nodeKind = QStringLiteral("composable");
         } else if (a.kind == LaunchAction::Kind::ComposableContainer) {
@@ -483,6 +495,30 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     }
 }
 
+namespace {
+
+/// Whether `path` finds a package share whose package name comes from a launch argument.
+bool namesPackageByArgument(const Substitution &path, int depth = 0)
+{
+    if (depth > 32)
+        return false;
+    const bool share = path.kind == Substitution::Kind::FindPackageShare ||
+                       path.kind == Substitution::Kind::FindPackagePrefix;
+    for (const Substitution &p : path.parts) {
+        if (share && p.kind == Substitution::Kind::LaunchConfiguration)
+            return true;
+        if (share && p.kind == Substitution::Kind::Concat)
+            for (const Substitution &q : p.parts)
+                if (q.kind == Substitution::Kind::LaunchConfiguration)
+                    return true;
+        if (namesPackageByArgument(p, depth + 1))
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
 void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
 {
     QList<Unresolved> found;
@@ -492,6 +528,15 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     if (frame.collectOnly) {
         if (!target.file.isEmpty() && active)
             frame.includes->append(target.file);
+        else if (!target.file.isEmpty() && frame.conditionalIncludes)
+            frame.conditionalIncludes->append(target.file);
+        // `$(find-pkg-share $(var pkg))/launch/x.launch.xml`: another value of the argument
+        // includes the same file of another package (a sensor kit, a vehicle).
+        if (frame.conditionalIncludes && !target.shareRelative.isEmpty() &&
+            namesPackageByArgument(a.path))
+            for (const QString &f : std::as_const(m_out->launchFiles))
+                if (f.endsWith(QLatin1Char('/') + target.shareRelative) && f != target.file)
+                    frame.conditionalIncludes->append(f);
         return;
     }
     LaunchFileInstance inst;
@@ -505,6 +550,17 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     inst.condition = a.condition.text;
     inst.active = active;
     inst.unresolved = found;
+    if (const InterfaceModel *model = target.external ? InterfaceModels::builtIn().launchFile(
+                                                            target.package, target.shareRelative)
+                                                      : nullptr) {
+        inst.interfaceModel = model->name;
+        inst.modelledPorts = model->portsAt(a.evidence);
+        QString ns = scope.nameSpace;
+        for (const auto &[name, value] : a.arguments)
+            if (evaluate(name, scope, frame, nullptr, a.evidence) == model->namespaceArgument)
+                ns = joinNamespace(ns, evaluate(value, scope, frame, nullptr, a.evidence));
+        inst.modelNamespace = nsKey(ns);
+    }
 
     Scope inner = scope;
     inner.active = active;

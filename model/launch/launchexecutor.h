@@ -22,6 +22,7 @@ struct IncludeTarget
     QString file;          ///< workspace-relative launch file ("" when not found)
     QString package;       ///< the package named by the path, if any
     bool external = false; ///< the package is not in the workspace
+    QString shareRelative; ///< the path within the package's share folder, for a package
 };
 
 /// Executes launch descriptions symbolically, the way `ros2 launch` would walk them: launch
@@ -74,8 +75,10 @@ public:
     IncludeTarget resolveInclude(const QString &path, const QString &fromFile) const;
 
     /// Every workspace launch file an include of `file` points to, without running them
-    /// (defaults only); used to find the top-level launch files.
-    QStringList directIncludes(const QString &file);
+    /// (defaults only); used to find the top-level launch files. `conditional`, when given,
+    /// receives the files included under a condition that is false with the defaults (a file
+    /// included that way is no entry point: some configuration of its includer starts it).
+    QStringList directIncludes(const QString &file, QStringList *conditional = nullptr);
 
 private:
     IncludeTarget findInclude(const QString &path, const QString &fromFile) const;
@@ -102,6 +105,7 @@ private:
         bool root = false;
         bool collectOnly = false; ///< directIncludes(): no instances, no recursion
         QStringList *includes = nullptr;
+        QStringList *conditionalIncludes = nullptr; ///< collecting: those under a false condition
     };
 
     void execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame, int depth);

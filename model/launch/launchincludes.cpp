@@ -40,6 +40,7 @@ IncludeTarget LaunchExecutor::findInclude(const QString &rawPath, const QString 
         QString rest = m.captured(2);
         if (rest.startsWith(QLatin1String("share/") + t.package + QLatin1Char('/')))
             rest = rest.mid(7 + t.package.size()); // find-pkg-prefix + share/<pkg>/...
+        t.shareRelative = rest;
         if (!m_packagePaths.contains(t.package)) {
             t.external = true;
             return t;

@@ -97,6 +97,7 @@ void deltaFields(quint8 part, R &v, B &base, L list, F scalar)
         list(v.launch.instances, base.launch.instances);
         list(v.launch.nodes, base.launch.nodes);
         list(v.launch.arguments, base.launch.arguments);
+        list(v.launch.entryPoints, base.launch.entryPoints);
         list(v.launch.classifierInstances, base.launch.classifierInstances);
         list(v.launch.classifierNodes, base.launch.classifierNodes);
         list(v.launch.diagnostics, base.launch.diagnostics);

@@ -63,6 +63,8 @@ QString partBlock(const RosNodePart &part, const QString &indent)
             p.resolved && !p.guessed
                 ? QString()
                 : QStringLiteral("%1  ' name unresolved: %2\n").arg(indent, label(p.name));
+        if (!p.model.isEmpty())
+            line += QStringLiteral("%1  ' from interface model %2\n").arg(indent, label(p.model));
         line += QStringLiteral("%1  %2 \"%3\" as %4_%3")
                     .arg(indent,
                          isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),

@@ -125,13 +125,16 @@ void BuildFileParser::readPackageXml(const QByteArray &content, const QString &f
         const auto token = xml.readNext();
         if (token == QXmlStreamReader::StartElement) {
             path.append(xml.name().toString());
-            // Only package/name and package/export/build_type are read: deeper elements are
-            // not joined (a deeply nested file would make this quadratic).
+            // Only package/name, package/version and package/export/build_type are read: deeper
+            // elements are not joined (a deeply nested file would make this quadratic).
             const QString joined = path.size() <= 3 ? path.join(QLatin1Char('/')) : QString();
             if (joined == QLatin1String("package/name")) {
                 const int line = int(xml.lineNumber());
                 package->name = xml.readElementText().trimmed();
                 package->evidence = lineEvidence(file, line);
+                path.removeLast();
+            } else if (joined == QLatin1String("package/version")) {
+                package->version = xml.readElementText().trimmed();
                 path.removeLast();
             } else if (joined == QLatin1String("package/export/build_type")) {
                 package->buildType = xml.readElementText().trimmed();

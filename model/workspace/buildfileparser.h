@@ -13,8 +13,8 @@ namespace rosarch {
 /// Paths given and returned are relative to the workspace root.
 namespace BuildFileParser {
 
-/// Fills name, buildType and evidence from package.xml; a malformed file gives a diagnostic
-/// and the folder name as the package name.
+/// Fills name, version, buildType and evidence from package.xml; a malformed file gives a
+/// diagnostic and the folder name as the package name.
 void readPackageXml(const QByteArray &content, const QString &file, RosPackage *package,
                     QList<Diagnostic> *diagnostics);
 

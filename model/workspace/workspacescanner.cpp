@@ -12,6 +12,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <functional>
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -324,6 +325,73 @@ Looked look(const Workspace &ws, const QString &rel, FileDigests &digests)
     return l;
 }
 
+/// -1, 0 or 1 as version `a` is older than, the same as or newer than `b`, comparing the
+/// dot-separated numbers (a missing or non-numeric part counts as 0).
+int compareVersions(const QString &a, const QString &b)
+{
+    const QStringList x = a.split(QLatin1Char('.')), y = b.split(QLatin1Char('.'));
+    for (qsizetype i = 0; i < std::max(x.size(), y.size()); ++i) {
+        const qlonglong u = i < x.size() ? x.at(i).toLongLong() : 0;
+        const qlonglong v = i < y.size() ? y.at(i).toLongLong() : 0;
+        if (u != v)
+            return u < v ? -1 : 1;
+    }
+    return 0;
+}
+
+/// Two folders that declare one package name: colcon refuses to build such a workspace, and
+/// every name lookup would pick one copy or the other. The analysis keeps one copy, the newer
+/// `<version>` (the first by path when they agree), as if the other had a COLCON_IGNORE, and
+/// says so in an error that names both. `ws.packages` is sorted by name, then path.
+void dropDuplicatePackages(Workspace &ws, const std::function<RosPackage *(const QString &)> &owner)
+{
+    QSet<QString> dropped; // package folders
+    for (qsizetype i = 0; i < ws.packages.size();) {
+        qsizetype end = i + 1;
+        while (end < ws.packages.size() && ws.packages.at(end).name == ws.packages.at(i).name)
+            ++end;
+        qsizetype kept = i;
+        for (qsizetype j = i + 1; j < end; ++j)
+            if (compareVersions(ws.packages.at(j).version, ws.packages.at(kept).version) > 0)
+                kept = j;
+        for (qsizetype j = i; j < end; ++j) {
+            if (j == kept)
+                continue;
+            const RosPackage &used = ws.packages.at(kept), &other = ws.packages.at(j);
+            const auto where = [](const RosPackage &p) {
+                return p.path.isEmpty() ? QStringLiteral(".") : p.path;
+            };
+            const auto version = [](const RosPackage &p) {
+                return p.version.isEmpty() ? QString()
+                                           : QStringLiteral(" (version %1)").arg(p.version);
+            };
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Error;
+            d.code = QStringLiteral("duplicate-package");
+            d.message = QStringLiteral("The package %1 is declared twice: here%2 and in %3%4. "
+                                       "colcon refuses to build both; the analysis uses %3, %5, "
+                                       "and ignores this copy. Remove one, or put a "
+                                       "COLCON_IGNORE file in the copy you do not build.")
+                            .arg(used.name, version(other), where(used), version(used),
+                                 compareVersions(used.version, other.version) > 0
+                                     ? QStringLiteral("the newer version")
+                                     : QStringLiteral("the first by path"));
+            d.evidence = other.evidence;
+            d.related.append({QStringLiteral("the copy the analysis uses"), used.evidence});
+            ws.diagnostics.append(d);
+            dropped.insert(other.path);
+        }
+        i = end;
+    }
+    if (dropped.isEmpty())
+        return;
+    ws.files.removeIf([&](const SourceFile &f) {
+        const RosPackage *p = owner(f.path);
+        return p && dropped.contains(p->path);
+    });
+    ws.packages.removeIf([&](const RosPackage &p) { return dropped.contains(p.path); });
+}
+
 /// The packages (one per package.xml; its folder owns every file below it) and what their
 /// build files declare. Each file looked at is added to `looked` (when given), with what it held
 /// before it was read: a change after that is seen by the next scan.
@@ -381,6 +449,7 @@ void readPackages(Workspace &ws, const StageControl &control, FileDigests *diges
     for (SourceFile &f : ws.files)
         if (RosPackage *p = owner(f.path))
             f.package = p->name;
+    dropDuplicatePackages(ws, owner);
 
     // Build files at a package's root declare its executables and plugins.
     for (RosPackage &pkg : ws.packages) {

@@ -347,7 +347,7 @@ private Q_SLOTS:
     void checksFollowTheCorrectedModel()
     {
         // The Log shows the checks of the model a person corrected, as the diagram and the
-        // exports do: removing the node that publishes /odom_debug takes "no one hears it" away.
+        // exports do: removing the node that publishes /odom_raw takes "no one hears it" away.
         Document doc;
         doc.setAutosaveInterval(60000);
         DiagnosticModel model(&doc);
@@ -355,7 +355,7 @@ private Q_SLOTS:
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
         doc.setRecovery(m_recovered);
         const auto unheard = [&model] {
-            return messages(model).filter(QStringLiteral("/odom_debug")).size();
+            return messages(model).filter(QStringLiteral("/odom_raw")).size();
         };
         QCOMPARE(unheard(), 1);
         const QStringList before = messages(model);

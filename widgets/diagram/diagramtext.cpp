@@ -62,8 +62,10 @@ QString partToolTip(const RosNodePart &part)
                  .arg(part.typeName);
     } else {
         l << DiagramText::tr("Node %1 : %2").arg(part.name, part.typeName);
-        if (!part.typed)
+        if (!part.typed && part.ports.isEmpty())
             l << DiagramText::tr("The class was not found; its ports are unknown.");
+        else if (!part.typed)
+            l << DiagramText::tr("Outside the workspace; its ports come from an interface model.");
     }
     l << DiagramText::tr("Namespace: %1")
              .arg(part.nameSpace.isEmpty() ? QStringLiteral("/") : part.nameSpace);
@@ -97,7 +99,12 @@ QString portToolTip(const PartPort &port)
         l << (port.active ? DiagramText::tr("Guard: %1")
                           : DiagramText::tr("Guard (false here): %1"))
                  .arg(port.guard);
-    l << DiagramText::tr("Created at %1").arg(where(port.evidence));
+    if (!port.model.isEmpty()) // code outside the workspace: the place is the launch action
+        l << DiagramText::tr("From the interface model %1 (code outside the workspace), "
+                             "started at %2")
+                 .arg(port.model, where(port.evidence));
+    else
+        l << DiagramText::tr("Created at %1").arg(where(port.evidence));
     return lines(l);
 }
 

@@ -235,7 +235,7 @@ private Q_SLOTS:
         QCOMPARE(
             found,
             (QStringList{
-                QStringLiteral("topic-unheard | /odometry publishes /odom_debug, which no node "
+                QStringLiteral("topic-unheard | /odometry publishes /odom_raw, which no node "
                                "started alongside it subscribes to. | %1field.launch.py,%1sim."
                                "launch.py")
                     .arg(launch),
@@ -263,6 +263,58 @@ private Q_SLOTS:
                 QVERIFY(d.isIn(QSet<QString>{old.key()}));
             }
         }
+    }
+
+    void judgeEntryPointsAndLeaveToolsOutputsAndBuildingBlocksAlone()
+    {
+        // check_scope: robot.launch.xml is the one entry point; mapping.launch.py is included
+        // only in another mode, lone.launch.py starts one node, and an older copy of the
+        // package sits in src/vendor. See the fixture's comments for what each line tests.
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("check_scope/ws")));
+        QCOMPARE(r.launch.entryPoints,
+                 (QStringList{QStringLiteral("src/depot/launch/lone.launch.py"),
+                              QStringLiteral("src/depot/launch/robot.launch.xml")}));
+        QStringList found;
+        for (const QList<Diagnostic> *list :
+             {&r.nodes.diagnostics, &r.launch.diagnostics, &r.architecture.diagnostics})
+            for (const Diagnostic &d : *list)
+                if (d.code != QLatin1String("external-include"))
+                    found << QStringLiteral("%1 %2:%3 | %4 | %5")
+                                 .arg(d.code, d.evidence.file)
+                                 .arg(d.evidence.line)
+                                 .arg(d.message, d.contexts.join(QLatin1Char(',')));
+        found.sort();
+        QCOMPARE(
+            found,
+            (QStringList{
+                QStringLiteral(
+                    "duplicate-package src/vendor/depot/package.xml:3 | The package depot is "
+                    "declared twice: here (version 1.0.3) and in src/depot (version 1.2.0). "
+                    "colcon refuses to build both; the analysis uses src/depot, the newer "
+                    "version, and ignores this copy. Remove one, or put a COLCON_IGNORE file in "
+                    "the copy you do not build. | "),
+                QStringLiteral("remap-unmatched src/depot/launch/lone.launch.py:10 | The remap "
+                               "mapp:=/map matches no port of the nodes it applies to. | "),
+                QStringLiteral("topic-unheard src/depot/depot/lidar.py:16 | /lidar publishes "
+                               "/scan_raw, which no node started alongside it subscribes to. | "
+                               "src/depot/launch/robot.launch.xml"),
+                // A building block's open port is reported only when another launch file
+                // remaps it: lone.launch.py misspells the rule mapping.launch.py gives.
+                QStringLiteral("topic-unpublished src/depot/depot/planner.py:12 | /planner "
+                               "subscribes to /map, which no node started alongside it "
+                               "publishes. src/depot/launch/mapping.launch.py:10 remaps it "
+                               "(map:=/slam/map) where it starts a node with this port; this "
+                               "launch file may be missing that remap. | "
+                               "src/depot/launch/lone.launch.py"),
+                QStringLiteral("topic-unpublished src/depot/depot/planner.py:13 | /planner "
+                               "subscribes to /odom, which no node started alongside it "
+                               "publishes. | src/depot/launch/robot.launch.xml")}));
+        // The exclusive branches: one scan_mapper is active, the other is kept inactive.
+        QStringList mappers;
+        for (const NodeInstance &n : r.launch.nodes)
+            if (n.nodeName == QLatin1String("scan_mapper"))
+                mappers << QStringLiteral("%1 %2").arg(n.evidence.line).arg(n.active);
+        QCOMPARE(mappers, (QStringList{QStringLiteral("18 1"), QStringLiteral("19 0")}));
     }
 
 private:

@@ -7,7 +7,9 @@
 #   it publishes /robo/cmd_vel (absolute in the code), promoted: one boundary port;
 #   an info diagnostic that the executable is built by rules_nodes, not rules_bringup.
 # A node of a package outside the workspace is a part typed `package/executable`, named by
-# name= when given, else by its executable: here `joy_node: joy/joy_node`, without ports.
+# name= when given, else by its executable: here `joy_node: joy/joy_node`, with the ports of
+# its interface model (interfaces/models/joy_node.json): it publishes joy and subscribes to
+# joy/set_feedback, both promoted.
 from launch import LaunchDescription
 from launch_ros.actions import Node
 

@@ -1,0 +1,182 @@
+// Interface models (blueprint §1): the data files under interfaces/ load and validate against
+// their schemas with a real JSON-schema validator, and a workspace whose launch file starts
+// code outside it (tests/data/interface_models: a simulator's spawn file, robot_state_publisher,
+// rviz2) is wired through the models' ports, which are marked as modelled and never findings.
+#include "interfacemodel.h"
+#include "observability.h"
+#include "recovery.h"
+#include "testsupport.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+/// Runs the schema validator on `files`; its exit code (0: all valid) and output.
+int validate(const QString &schema, const QStringList &files, QString *output)
+{
+    QProcess node;
+    node.start(
+        QStringLiteral(ROSARCH_NODE),
+        QStringList{QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                        .filePath(QStringLiteral("tests/support/validate-json-schema.cjs")),
+                    QDir(QStringLiteral(ROSARCH_SARIF_DIR)).filePath(QStringLiteral("json-schema")),
+                    schema} +
+            files);
+    if (!node.waitForFinished(60000))
+        return -1;
+    *output = QString::fromUtf8(node.readAllStandardOutput() + node.readAllStandardError());
+    return node.exitStatus() == QProcess::NormalExit ? node.exitCode() : -2;
+}
+
+QString source(const QString &rel)
+{
+    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(rel);
+}
+
+} // namespace
+
+class TestInterfaceModels : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void everyModelLoadsAndValidates()
+    {
+        const QDir dir(source(QStringLiteral("interfaces/models")));
+        QStringList files;
+        for (const QString &f : dir.entryList({QStringLiteral("*.json")}, QDir::Files))
+            files << dir.filePath(f);
+        QVERIFY(files.size() >= 7);
+        QString output;
+        QCOMPARE(
+            validate(source(QStringLiteral("schemas/interface-model.schema.json")), files, &output),
+            0);
+        // The same files, as the tool reads them (from its resources), without a problem.
+        QStringList problems;
+        const InterfaceModels fromSource = InterfaceModels::fromFolder(dir.path(), &problems);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        QCOMPARE(fromSource.all().size(), files.size());
+        QCOMPARE(InterfaceModels::builtIn().all(), fromSource.all());
+        // The validator is not a yes-man: a port without a type is refused by both.
+        QTemporaryDir tmp;
+        QFile bad(tmp.filePath(QStringLiteral("bad.json")));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write(R"({"name": "x", "package": "x", "executables": ["x"],
+                      "ports": [{"kind": "publisher", "name": "out"}]})");
+        bad.close();
+        QCOMPARE(validate(source(QStringLiteral("schemas/interface-model.schema.json")),
+                          {bad.fileName()}, &output),
+                 1);
+        InterfaceModels::fromFolder(tmp.path(), &problems);
+        QCOMPARE(problems, (QStringList{QStringLiteral(
+                               "bad.json: x: a port needs a known kind, a name and a type "
+                               "pkg/msg/T")}));
+    }
+
+    void observabilityRulesValidateAndRecognise()
+    {
+        QString output;
+        QCOMPARE(validate(source(QStringLiteral("schemas/observability.schema.json")),
+                          {source(QStringLiteral("interfaces/observability.json"))}, &output),
+                 0);
+        const Observability &o = Observability::builtIn();
+        QVERIFY(!o.isEmpty());
+        QVERIFY(o.covers(QStringLiteral("/planning/debug/path"),
+                         QStringLiteral("nav_msgs/msg/Path"), {}));
+        QVERIFY(o.covers(QStringLiteral("/lidar/processing_time_ms"),
+                         QStringLiteral("std_msgs/msg/Float64"), {}));
+        QVERIFY(o.covers(QStringLiteral("/outline"),
+                         QStringLiteral("visualization_msgs/msg/Marker"), {}));
+        QVERIFY(o.covers(QStringLiteral("/x"), QStringLiteral("std_msgs/msg/String"),
+                         QStringLiteral("autoware_utils::DebugPublisher")));
+        // "debug" only as a whole segment or its prefix: debugger_state is not an output.
+        QVERIFY(!o.covers(QStringLiteral("/debugger_state"), QStringLiteral("std_msgs/msg/String"),
+                          {}));
+        QVERIFY(
+            !o.covers(QStringLiteral("/scan"), QStringLiteral("sensor_msgs/msg/LaserScan"), {}));
+        QStringList problems;
+        const Observability own = Observability::fromJson(
+            QJsonObject{{QStringLiteral("name_segments"),
+                         QJsonArray{QStringLiteral("^trace$"), QStringLiteral("(")}}},
+            &problems);
+        QCOMPARE(problems.size(), 1);
+        QVERIFY(own.covers(QStringLiteral("/a/trace"), QString(), {}));
+    }
+
+    void lookupsByExecutableAndLaunchFile()
+    {
+        const InterfaceModels &m = InterfaceModels::builtIn();
+        QCOMPARE(m.executable(QStringLiteral("joint_state_publisher_gui"),
+                              QStringLiteral("joint_state_publisher_gui"))
+                     ->name,
+                 QStringLiteral("joint_state_publisher"));
+        QVERIFY(!m.executable(QStringLiteral("rviz2"), QStringLiteral("other")));
+        QCOMPARE(m.launchFile(QStringLiteral("nav2_minimal_tb3_sim"),
+                              QStringLiteral("/launch/spawn_tb3.launch.py"))
+                     ->namespaceArgument,
+                 QStringLiteral("namespace"));
+        const QList<Port> ports =
+            m.executable(QStringLiteral("tf2_ros"), QStringLiteral("static_transform_publisher"))
+                ->portsAt(Evidence{QStringLiteral("a.launch.py"), 3, 1, 3, 9});
+        QCOMPARE(ports.size(), 1);
+        QCOMPARE(ports.first().id, QStringLiteral("m1"));
+        QCOMPARE(ports.first().name, QStringLiteral("/tf_static"));
+        QCOMPARE(ports.first().via, QStringLiteral("interface model static_transform_publisher"));
+        QCOMPARE(ports.first().evidence.line, 3);
+    }
+
+    void aWorkspaceIsWiredThroughTheModels()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("interface_models/ws")));
+        const Composite *sim = nullptr;
+        for (const Composite &c : r.architecture.composites)
+            if (c.parentId.isEmpty())
+                sim = &c;
+        QVERIFY(sim);
+        QStringList channels;
+        for (const Channel &ch : sim->channels)
+            channels << ch.name;
+        channels.sort();
+        QCOMPARE(
+            channels,
+            (QStringList{QStringLiteral("/robot1/cmd_vel"), QStringLiteral("/robot1/joint_states"),
+                         QStringLiteral("/robot1/odom"), QStringLiteral("/robot1/scan"),
+                         QStringLiteral("/tf"), QStringLiteral("/tf_static")}));
+        QStringList modelled;
+        for (const RosNodePart &part : sim->parts)
+            for (const PartPort &p : part.ports)
+                if (!p.model.isEmpty())
+                    modelled
+                        << QStringLiteral("%1 %2 %3").arg(p.model, portKindName(p.kind), p.name);
+        QCOMPARE(modelled.size(), 16);
+        QVERIFY(
+            modelled.contains(QStringLiteral("nav2_minimal_tb3_sim subscriber /robot1/cmd_vel")));
+        QVERIFY(modelled.contains(QStringLiteral("rviz2 publisher /goal_pose")));
+        // The models' open ports (robot_description, /initialpose, /clock, ...) are no findings;
+        // the robot's goal under its namespace, which RViz at the root does not feed, is.
+        QStringList found;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            found << QStringLiteral("%1 %2:%3 | %4")
+                         .arg(d.code, d.evidence.file)
+                         .arg(d.evidence.line)
+                         .arg(d.message);
+        QCOMPARE(found, (QStringList{QStringLiteral(
+                            "topic-unpublished src/sim_bringup/sim_bringup/follower.py:16 | "
+                            "/robot1/follower subscribes to /robot1/goal_pose, which no node "
+                            "started alongside it publishes.")}));
+        QStringList external;
+        for (const Diagnostic &d : r.launch.diagnostics)
+            if (d.code == QLatin1String("external-include"))
+                external << d.message;
+        QCOMPARE(external, (QStringList{QStringLiteral(
+                               "Include of spawn_tb3.launch.py from package nav2_minimal_tb3_sim, "
+                               "which is not in the workspace. The interface model "
+                               "nav2_minimal_tb3_sim gives the ports of its nodes.")}));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestInterfaceModels)
+#include "tst_interfacemodels.moc"
