@@ -2244,142 +2244,147 @@ Klappen Sie Namespaces ein oder blenden Sie Elemente aus, um das Diagramm zu ver
         <translation>Eingebundenes Launch-File %1 – Doppelklick zum Öffnen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="64"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="67"/>
         <source>Node %1 : %2</source>
         <translation>Knoten %1 : %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="66"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="69"/>
         <source>The class was not found; its ports are unknown.</source>
         <translation>Die Klasse wurde nicht gefunden; ihre Ports sind unbekannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="68"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="64"/>
+        <source>The ports of its nodes come from the interface model %1.</source>
+        <translation>Die Ports ihrer Knoten stammen aus dem Schnittstellenmodell %1.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="71"/>
         <source>Outside the workspace; its ports come from an interface model.</source>
         <translation>Außerhalb des Arbeitsbereichs; ihre Ports stammen aus einem Schnittstellenmodell.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="103"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="106"/>
         <source>From the interface model %1 (code outside the workspace), started at %2</source>
         <translation>Aus dem Schnittstellenmodell %1 (Code außerhalb des Arbeitsbereichs), gestartet in %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="70"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="73"/>
         <source>Namespace: %1</source>
         <translation>Namespace: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="73"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="76"/>
         <source>Inactive: its launch condition is false.</source>
         <translation>Inaktiv: Die Launch-Bedingung ist falsch.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="74"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="77"/>
         <source>Started at %1</source>
         <translation>Gestartet in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="84"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="87"/>
         <source>Written as: %1</source>
         <translation>Geschrieben als: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="86"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
         <source>The name could not be resolved statically; this is a guess.</source>
         <translation>Der Name konnte nicht statisch aufgelöst werden; dies ist eine Annahme.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="89"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="92"/>
         <source>Remapped to a name built from a launch value nobody sets; the name is a guess.</source>
         <translation>Umbenannt auf einen Namen aus einem Launch-Wert, den niemand setzt; der Name ist eine Vermutung.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="91"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="94"/>
         <source>Its namespace or node name is built from a launch value nobody sets; the name is a guess, wired only to names that rest on a guess too.</source>
         <translation>Sein Namespace oder Knotenname ist aus einem Launch-Wert gebildet, den niemand setzt; der Name ist eine Vermutung und nur mit Namen verbunden, die ebenfalls auf einer Vermutung beruhen.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="95"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="98"/>
         <source>The name comes from a parameter.</source>
         <translation>Der Name stammt aus einem Parameter.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="97"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="100"/>
         <source>Remapped by the launch file.</source>
         <translation>Vom Launch-File per Remap umbenannt.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="99"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="102"/>
         <source>Guard: %1</source>
         <translation>Bedingung: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="100"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="103"/>
         <source>Guard (false here): %1</source>
         <translation>Bedingung (hier falsch): %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="107"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="110"/>
         <source>Created at %1</source>
         <translation>Erzeugt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="122"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="125"/>
         <source>Namespace %1 — right-click to collapse or expand</source>
         <translation>Namespace %1 – Rechtsklick zum Ein- oder Ausklappen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="125"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="128"/>
         <source>Topic %1</source>
         <translation>Topic %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="126"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="129"/>
         <source>Service %1</source>
         <translation>Service %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="127"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="130"/>
         <source>Action %1</source>
         <translation>Action %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="131"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="134"/>
         <source>Boundary port %1: %2 %3</source>
         <translation>Randport %1: %2 %3</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="132"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="135"/>
         <source>Promoted: nothing inside this launch file is on the other side.</source>
         <translation>Nach außen geführt: Innerhalb dieses Launch-Files gibt es keine Gegenseite.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="134"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="137"/>
         <source>The name rests on a launch value nobody sets; it is a guess.</source>
         <translation>Der Name beruht auf einem Launch-Wert, den niemand setzt; er ist eine Vermutung.</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="145"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="148"/>
         <source>%1 (%2) %3 %4 — click to see the code</source>
         <translation>%1 (%2) %3 %4 – Klicken, um den Code zu sehen</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="160"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="163"/>
         <source>1 element of the reference is missing: %1</source>
         <translation>1 Element der Referenz fehlt: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="161"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="164"/>
         <source>%1 elements of the reference are missing: %2</source>
         <translation>%1 Elemente der Referenz fehlen: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="166"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="169"/>
         <source>launch file (outside the workspace)</source>
         <translation>Launch-File (außerhalb des Workspaces)</translation>
     </message>
     <message>
-        <location filename="../widgets/diagram/diagramtext.cpp" line="167"/>
+        <location filename="../widgets/diagram/diagramtext.cpp" line="170"/>
         <source>launch file %1</source>
         <translation>Launch-File %1</translation>
     </message>

@@ -60,6 +60,9 @@ QString partToolTip(const RosNodePart &part)
         l << (part.external ? DiagramText::tr("Included launch file %1 (outside the workspace)")
                             : DiagramText::tr("Included launch file %1 — double-click to open"))
                  .arg(part.typeName);
+        if (part.external && !part.ports.isEmpty() && !part.ports.first().model.isEmpty())
+            l << DiagramText::tr("The ports of its nodes come from the interface model %1.")
+                     .arg(part.ports.first().model);
     } else {
         l << DiagramText::tr("Node %1 : %2").arg(part.name, part.typeName);
         if (!part.typed && part.ports.isEmpty())

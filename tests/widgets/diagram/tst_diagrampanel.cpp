@@ -397,6 +397,22 @@ void TestDiagramPanel::toolTipsSayWhatIsAGuess()
     if (c.boundary.size() > 1)
         QVERIFY(!tips.value(DiagramBuilder::boundaryKey(c.boundary[1].id))
                      .contains(QStringLiteral("guess")));
+    // A port of code outside the workspace names its interface model and the launch line.
+    Composite modelled = test::diagram::architecture().composites[0];
+    modelled.parts[0].typed = false;
+    modelled.parts[0].ports[0].model = QStringLiteral("robot_state_publisher");
+    modelled.parts[0].ports[0].evidence = {QStringLiteral("src/b/launch/b.launch.py"), 12, 5, 12,
+                                           40};
+    const QHash<QString, QString> modelledTips = DiagramText::toolTips(modelled);
+    const QString portTip =
+        modelledTips.value(DiagramBuilder::portKey(part, modelled.parts[0].ports[0].id));
+    QVERIFY2(portTip.contains(QStringLiteral("From the interface model robot_state_publisher (code "
+                                             "outside the workspace), started at "
+                                             "src/b/launch/b.launch.py:12")),
+             qPrintable(portTip));
+    QVERIFY(!portTip.contains(QStringLiteral("Created at")));
+    QVERIFY(modelledTips.value(DiagramBuilder::partKey(part))
+                .contains(QStringLiteral("its ports come from an interface model")));
 }
 
 void TestDiagramPanel::exportsSvgAndPng()
