@@ -72,6 +72,9 @@ struct LaunchAction
                             ///< SetLaunchConfiguration
     Substitution nameSpace; ///< node namespace; the pushed namespace for PushNamespace
     bool lifecycle = false;
+    /// Node: its command-line arguments (`arguments=[...]`, `args="..."`), one per word; the
+    /// `--ros-args` rules among them are also read into remaps and parameters.
+    QList<Substitution> commandLine;
     QList<LaunchRemap> remaps;
     QList<LaunchParameter> parameters;
 

@@ -73,6 +73,7 @@ struct NodeInstance
     /// the model's name and its ports, which cite this launch action as their evidence.
     QString interfaceModel = {};
     QList<Port> modelledPorts = {};
+    QString modelConfig = {}; ///< the configuration file the model read more ports from
     bool operator==(const NodeInstance &) const = default;
 };
 

@@ -54,6 +54,12 @@ bool InterfaceModel::fromJson(const QJsonObject &o, InterfaceModel *model, QStri
         m.executables.append({package, exes});
     }
     m.launchFiles = strings(o.value(QLatin1String("launch_files")));
+    const QJsonObject config = o.value(QLatin1String("config")).toObject();
+    m.configArgument = config.value(QLatin1String("argument")).toString();
+    m.configFormat = config.value(QLatin1String("format")).toString();
+    const QJsonObject types = config.value(QLatin1String("types")).toObject();
+    for (auto it = types.begin(); it != types.end(); ++it)
+        m.configTypes.append({it.key(), it.value().toString()});
     m.namespaceArgument = o.value(QLatin1String("namespace_argument")).toString();
     if (m.executables.isEmpty() && m.launchFiles.isEmpty()) {
         *error = QStringLiteral("%1: a model names executables or launch files").arg(m.name);
@@ -88,6 +94,74 @@ QList<Port> InterfaceModel::portsAt(const Evidence &evidence) const
         p.via = QStringLiteral("interface model %1").arg(name);
         p.evidence = evidence;
         out.append(p);
+    }
+    return out;
+}
+
+QList<Port> InterfaceModel::portsFromConfig(const QByteArray &text, const QString &file,
+                                            int firstId) const
+{
+    QList<Port> out;
+    if (configFormat != QLatin1String("rviz"))
+        return out;
+    // An RViz configuration is YAML whose displays say `Class: <plugin>` and, below, one or
+    // more `<...> Topic:` maps with a `Value:` (the topic); the tools under `Tools:` publish
+    // theirs. Indentation says what belongs to what; a line is read on its own, so a broken
+    // file gives what it has.
+    QString displayClass;
+    int classIndent = -1;
+    int toolsIndent = -1; ///< inside `Tools:` (the tools publish what their Topic names)
+    int topicIndent = -1; ///< the indentation of the open `... Topic:` key, -1 when none
+    QString topicKey;
+    const QList<QByteArray> lines = text.split('\n');
+    constexpr qsizetype kMaxPorts = 1000; // a configuration is small; bound the list anyway
+    for (qsizetype i = 0; i < lines.size() && out.size() < kMaxPorts; ++i) {
+        const QString line = QString::fromUtf8(lines.at(i));
+        QString trimmed = line.trimmed();
+        if (trimmed.startsWith(QLatin1String("- ")))
+            trimmed = trimmed.mid(2).trimmed(); // a list item's first key
+        if (trimmed.isEmpty() || trimmed.startsWith(QLatin1Char('#')))
+            continue;
+        int indent = 0;
+        while (indent < line.size() && (line.at(indent) == u' ' || line.at(indent) == u'-'))
+            ++indent;
+        if (topicIndent >= 0 && indent <= topicIndent)
+            topicIndent = -1;
+        if (toolsIndent >= 0 && indent <= toolsIndent && !line.trimmed().startsWith(u'-'))
+            toolsIndent = -1;
+        if (trimmed == QLatin1String("Tools:"))
+            toolsIndent = indent;
+        if (classIndent >= 0 && indent < classIndent) {
+            classIndent = -1;
+            displayClass.clear();
+        }
+        if (trimmed.startsWith(QLatin1String("Class:"))) {
+            displayClass = trimmed.mid(6).trimmed();
+            classIndent = indent;
+        } else if (trimmed.endsWith(QLatin1String("Topic:"))) {
+            topicIndent = indent;
+            topicKey = trimmed.chopped(1);
+        } else if (topicIndent >= 0 && trimmed.startsWith(QLatin1String("Value:"))) {
+            QString topic = trimmed.mid(6).trimmed();
+            if (topic.size() >= 2 && (topic.front() == u'"' || topic.front() == u'\'') &&
+                topic.back() == topic.front())
+                topic = topic.mid(1, topic.size() - 2);
+            topicIndent = -1;
+            if (topic.isEmpty() || topic.contains(QLatin1Char(' ')))
+                continue;
+            Port p;
+            p.id = QStringLiteral("m%1").arg(firstId + out.size());
+            p.kind = toolsIndent >= 0 ? PortKind::Publisher : PortKind::Subscriber;
+            p.name = topic;
+            // "Update Topic" of a map display carries the updates, not the map.
+            if (topicKey == QLatin1String("Topic"))
+                for (const auto &[cls, type] : configTypes)
+                    if (cls == displayClass)
+                        p.type = type;
+            p.via = QStringLiteral("interface model %1 (%2)").arg(name, topicKey.toLower());
+            p.evidence = Evidence{file, int(i) + 1, indent + 1, int(i) + 1, int(line.size()) + 1};
+            out.append(p);
+        }
     }
     return out;
 }

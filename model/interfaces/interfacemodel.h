@@ -31,12 +31,21 @@ struct InterfaceModel
     QStringList launchFiles;   ///< relative to the package's share folder
     QString namespaceArgument; ///< launch files: the argument that namespaces their nodes
     QList<ModelPort> ports;
+    /// Executables that read a configuration file named on their command line (rviz2's `-d`):
+    /// the flag, and the display class -> message type table for its "rviz" format.
+    QString configArgument;
+    QString configFormat;
+    QList<QPair<QString, QString>> configTypes;
 
     /// The model in `o` (the schema's shape); false with `error` when it is not one.
     static bool fromJson(const QJsonObject &o, InterfaceModel *model, QString *error);
     /// The model's ports as atomic ports ("m1", "m2", ...), each citing `evidence` (where the
     /// launch file starts or includes what the model describes) and naming the model as `via`.
     QList<Port> portsAt(const Evidence &evidence) const;
+    /// The subscriptions a configuration file of the model's format sets up (an RViz
+    /// configuration: every display's topics), each citing its line of `file`; ids go on from
+    /// `firstId`. Read as text, tolerant of anything it does not know.
+    QList<Port> portsFromConfig(const QByteArray &text, const QString &file, int firstId) const;
     bool operator==(const InterfaceModel &) const = default;
 };
 

@@ -248,12 +248,16 @@ ExtraFiles extraFiles(const Workspace &workspace, const LaunchDependencies &out,
     QSet<QString> seen;
     ExtraFiles extra;
     for (const QList<NodeInstance> *list : {&out.nodes, &out.classifierNodes})
-        for (const NodeInstance &n : *list)
+        for (const NodeInstance &n : *list) {
+            QStringList files{n.modelConfig}; // an interface model's configuration file
             for (const ParameterSetting &p : n.effectiveParameters)
-                if (!p.file.isEmpty() && !scanned.contains(p.file) && !seen.contains(p.file)) {
-                    seen.insert(p.file);
-                    extra.append({p.file, digests.digest(workspace.absolutePath(p.file))});
+                files << p.file;
+            for (const QString &file : std::as_const(files))
+                if (!file.isEmpty() && !scanned.contains(file) && !seen.contains(file)) {
+                    seen.insert(file);
+                    extra.append({file, digests.digest(workspace.absolutePath(file))});
                 }
+        }
     std::sort(extra.begin(), extra.end());
     return extra;
 }

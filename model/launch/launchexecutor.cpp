@@ -1,9 +1,12 @@
 #include "launchexecutor.h"
 #include "interfacemodel.h"
+#include "rosnames.h"
+#include "sourcereader.h"
 #include "substitutionevaluator.h"
 
 #include <QFileInfo>
 #include <QSet>
+#include <algorithm>
 
 namespace rosarch {
 
@@ -454,6 +457,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
                     : nullptr) {
             n.interfaceModel = model->name;
             n.modelledPorts = model->portsAt(a.evidence);
+            if (!model->configArgument.isEmpty())
+                addConfigPorts(*model, a, scope, frame, &n);
         }
         if (composable) {
             n.nodeKind = QStringLiteral("composable");
@@ -493,6 +498,40 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         addToNamespace(frame.instance, more.nameSpace, more.id);
         m_out->nodes.append(more);
     }
+}
+
+void LaunchExecutor::addConfigPorts(const InterfaceModel &model, const LaunchAction &a,
+                                    const Scope &scope, const Frame &frame, NodeInstance *n)
+{
+    QString path;
+    for (qsizetype i = 0; i + 1 < a.commandLine.size() && path.isEmpty(); ++i)
+        if (evaluate(a.commandLine.at(i), scope, frame, nullptr, a.evidence) ==
+            model.configArgument)
+            path = evaluate(a.commandLine.at(i + 1), scope, frame, &n->unresolved, a.evidence);
+    if (path.isEmpty())
+        return;
+    const IncludeTarget target = resolveInclude(path, frame.file);
+    if (target.file.isEmpty())
+        return; // a file outside the workspace: only the model's own ports
+    auto it = m_configFiles.constFind(target.file);
+    if (it == m_configFiles.cend()) {
+        QByteArray content;
+        QList<Diagnostic> problems;
+        if (!SourceReader(m_workspace.root).read(target.file, &content, &problems))
+            m_out->diagnostics.append(problems);
+        it = m_configFiles.insert(target.file, content);
+    }
+    for (const Port &p :
+         model.portsFromConfig(*it, target.file, int(n->modelledPorts.size()) + 1)) {
+        const bool known =
+            std::any_of(n->modelledPorts.cbegin(), n->modelledPorts.cend(), [&](const Port &q) {
+                return q.kind == p.kind && RosNames::expand(q.name, n->nameSpace, n->nodeName) ==
+                                               RosNames::expand(p.name, n->nameSpace, n->nodeName);
+            });
+        if (!known) // a tool the model already lists (RViz's goal pose)
+            n->modelledPorts.append(p);
+    }
+    n->modelConfig = target.file;
 }
 
 namespace {

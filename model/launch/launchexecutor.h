@@ -16,6 +16,8 @@
 
 namespace rosarch {
 
+struct InterfaceModel;
+
 /// Where an include points, once its path is evaluated.
 struct IncludeTarget
 {
@@ -112,6 +114,10 @@ private:
     void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                      const QString &container);
     void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
+    /// The ports an interface model reads from the configuration file the node's command line
+    /// names (rviz2 -d file.rviz), when that file is in the workspace.
+    void addConfigPorts(const InterfaceModel &model, const LaunchAction &a, const Scope &scope,
+                        const Frame &frame, NodeInstance *n);
     /// `guessed`, when given, tells whether the value rests on something unresolved.
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence,
@@ -149,8 +155,9 @@ private:
     const Workspace &m_workspace;
     Loader m_load;
     LaunchDependencies *m_out;
-    QHash<QString, QString> m_packagePaths; ///< package -> folder
-    QHash<QString, QString> m_filePackages; ///< workspace file -> its package
+    QHash<QString, QString> m_packagePaths;   ///< package -> folder
+    QHash<QString, QByteArray> m_configFiles; ///< interface models' configuration files read
+    QHash<QString, QString> m_filePackages;   ///< workspace file -> its package
     /// Classes by package + '\0' + executable, in stage 1's order; plugin classes by name
     /// (the first); the classes of each executable name, in order.
     QHash<QString, QList<const AtomicNode *>> m_classesByExecutable;

@@ -19,8 +19,8 @@ template <class F> void cacheFields(Tag, LaunchCondition &v, F f)
 template <class F> void cacheFields(Tag, LaunchAction &v, F f)
 {
     f(v.kind, v.evidence, v.condition, v.package, v.executable, v.plugin, v.name, v.nameSpace,
-      v.lifecycle, v.remaps, v.parameters, v.children, v.scoped, v.target, v.path, v.arguments,
-      v.value, v.hasValue, v.description, v.expression);
+      v.lifecycle, v.commandLine, v.remaps, v.parameters, v.children, v.scoped, v.target, v.path,
+      v.arguments, v.value, v.hasValue, v.description, v.expression);
 }
 template <class F> void cacheFields(Tag, LaunchFileDescription &v, F f)
 {

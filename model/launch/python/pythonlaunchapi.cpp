@@ -293,6 +293,9 @@ void PythonLaunchApi::readNodeFields(LaunchAction &a, const CallArgs &args,
         a.parameters = parameters(*p, evidence);
     if (const Value *r = args.get(-1, {"remappings"}); given(r))
         a.remaps = remaps(*r, evidence);
+    if (const Value *list = args.get(-1, {"arguments"}); given(list))
+        for (const Value &word : list->items())
+            a.commandLine << word.toSubstitution();
     // `-r from:=to` in the node's command-line arguments
     for (const char *key : {"arguments", "ros_arguments"}) {
         const Value *list = args.get(-1, {key});

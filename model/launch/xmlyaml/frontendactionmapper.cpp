@@ -280,8 +280,14 @@ LaunchAction FrontendActionMapper::node(const FrontendEntity &e, LaunchAction::K
     a.lifecycle = e.type == u"lifecycle_node";
     a.remaps = remaps(e);
     parameters(e, {}, &a.parameters);
-    if (const FrontendAttribute *args = e.attribute(QStringLiteral("args")))
+    if (const FrontendAttribute *args = e.attribute(QStringLiteral("args"))) {
         commandLine(e, *args, true, &a);
+        for (const QString &word : splitCommandLine(args->value)) {
+            FrontendAttribute piece = *args;
+            piece.value = word;
+            a.commandLine << value(e, piece);
+        }
+    }
     if (const FrontendAttribute *args = e.attribute(QStringLiteral("ros_args")))
         commandLine(e, *args, false, &a);
     if (kind == Kind::ComposableContainer) {

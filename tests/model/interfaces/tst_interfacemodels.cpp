@@ -128,6 +128,52 @@ private Q_SLOTS:
         QCOMPARE(ports.first().evidence.line, 3);
     }
 
+    void anRvizConfigurationGivesTheDisplayedTopics()
+    {
+        const InterfaceModel *rviz =
+            InterfaceModels::builtIn().executable(QStringLiteral("rviz2"), QStringLiteral("rviz2"));
+        QVERIFY(rviz);
+        QCOMPARE(rviz->configArgument, QStringLiteral("-d"));
+        const QByteArray config = R"(Visualization Manager:
+  Displays:
+    - Class: rviz_default_plugins/Path
+      Name: Plan
+      Topic:
+        Depth: 5
+        Value: plan
+    - Class: rviz_default_plugins/Map
+      Topic:
+        Value: "/map"
+      Update Topic:
+        Value: /map_updates
+    - Class: rviz_default_plugins/Grid
+      Name: Grid
+  Tools:
+    - Class: rviz_default_plugins/SetInitialPose
+      Topic:
+        Value: /initialpose
+broken: [
+)";
+        QStringList ports;
+        for (const Port &p : rviz->portsFromConfig(config, QStringLiteral("a.rviz"), 7))
+            ports << QStringLiteral("%1 %2 %3 %4 line %5")
+                         .arg(p.id, portKindName(p.kind), p.name, p.type)
+                         .arg(p.evidence.line);
+        QCOMPARE(
+            ports,
+            (QStringList{QStringLiteral("m7 subscriber plan nav_msgs/msg/Path line 7"),
+                         QStringLiteral("m8 subscriber /map nav_msgs/msg/OccupancyGrid line 10"),
+                         // the updates of a map are not the map: their type is not guessed
+                         QStringLiteral("m9 subscriber /map_updates  line 12"),
+                         QStringLiteral("m10 publisher /initialpose "
+                                        "geometry_msgs/msg/PoseWithCovarianceStamped line 18")}));
+        // Another format, or a model without one, reads nothing.
+        QVERIFY(InterfaceModels::builtIn()
+                    .executable(QStringLiteral("joy"), QStringLiteral("joy_node"))
+                    ->portsFromConfig(config, QStringLiteral("a.rviz"), 1)
+                    .isEmpty());
+    }
+
     void aWorkspaceIsWiredThroughTheModels()
     {
         const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("interface_models/ws")));
@@ -151,10 +197,21 @@ private Q_SLOTS:
                 if (!p.model.isEmpty())
                     modelled
                         << QStringLiteral("%1 %2 %3").arg(p.model, portKindName(p.kind), p.name);
-        QCOMPARE(modelled.size(), 16);
+        // the simulator's 7, robot_state_publisher's 4, rviz2's 5 and the 4 its configuration
+        // displays (its goal tool is the model's own /goal_pose, not a second one)
+        QCOMPARE(modelled.size(), 20);
         QVERIFY(
             modelled.contains(QStringLiteral("nav2_minimal_tb3_sim subscriber /robot1/cmd_vel")));
         QVERIFY(modelled.contains(QStringLiteral("rviz2 publisher /goal_pose")));
+        QVERIFY(modelled.contains(QStringLiteral("rviz2 subscriber /robot1/scan")));
+        QVERIFY(modelled.contains(QStringLiteral("rviz2 subscriber /vendor/status")));
+        QCOMPARE(modelled.filter(QStringLiteral("/goal_pose")).size(), 1);
+        // The configuration file is named as the instance's, for the analysis cache to watch.
+        QStringList configs;
+        for (const NodeInstance &n : r.launch.nodes)
+            if (!n.modelConfig.isEmpty())
+                configs << n.interfaceModel + QLatin1Char(' ') + n.modelConfig;
+        QCOMPARE(configs, QStringList{QStringLiteral("rviz2 src/sim_bringup/rviz/sim.rviz")});
         // The models' open ports (robot_description, /initialpose, /clock, ...) are no findings;
         // the robot's goal under its namespace, which RViz at the root does not feed, is.
         QStringList found;

@@ -9,6 +9,7 @@ setup(
     data_files=[
         ('share/' + package_name, ['package.xml']),
         ('share/' + package_name + '/launch', ['launch/sim.launch.py']),
+        ('share/' + package_name + '/rviz', ['rviz/sim.rviz']),
     ],
     install_requires=['setuptools'],
     entry_points={

@@ -9,6 +9,7 @@ from launch_ros.actions import Node, PushRosNamespace
 
 def generate_launch_description():
     sim = get_package_share_directory('nav2_minimal_tb3_sim')
+    share = get_package_share_directory('sim_bringup')
     return LaunchDescription([
         # A launch file of a package outside the workspace: its interface model gives the
         # simulated robot's sensors and velocity input, under the namespace passed to it.
@@ -20,6 +21,8 @@ def generate_launch_description():
             Node(package='sim_bringup', executable='follower'),
             Node(package='robot_state_publisher', executable='robot_state_publisher'),
         ]),
-        # RViz at the root publishes /goal_pose, not the robot's /robot1/goal_pose.
-        Node(package='rviz2', executable='rviz2'),
+        # RViz at the root publishes /goal_pose, not the robot's /robot1/goal_pose; it
+        # subscribes to what its configuration displays.
+        Node(package='rviz2', executable='rviz2',
+             arguments=['-d', os.path.join(share, 'rviz', 'sim.rviz')]),
     ])
