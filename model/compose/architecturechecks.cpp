@@ -160,8 +160,9 @@ private:
     /// Whether an open port is open by design, and not a finding: a port an interface model
     /// gives (code outside the workspace may use only some of it), and any port of a launch
     /// file that starts one node (a building block: its ports are its interface), unless
-    /// another launch file remaps that port when it starts the same class. Then this file
-    /// probably misses the remap: `hint` and `related` say which and where.
+    /// another launch file remaps that port (created at the same place in the code) where it
+    /// starts a node. Then this file probably misses the remap: `hint` and `related` say which
+    /// and where.
     bool openByDesign(const Use &u, QList<Diagnostic::Related> *related, QString *hint) const
     {
         if (!u.port->model.isEmpty())
