@@ -379,10 +379,48 @@ Value PythonLaunchEvaluator::combineReturns(const GuardPtr &guard, const Value &
         return taken;
     Value out = m_ctx.newList({});
     out.list->launchDescription = true;
-    out.list->items << taken;
+    // An action both alternatives return (`if c: return [node]` ... `return [node, more]`)
+    // runs whichever is taken: it goes once, unguarded, and only the rest is under the guard.
+    const auto actionsOf = [](const Value &v) {
+        QList<const QList<LaunchAction> *> out;
+        if (v.type == Value::Type::List && v.list)
+            for (const Value &item : v.list->items)
+                if (item.type == Value::Type::Action && item.actions)
+                    out << item.actions.get();
+        return out;
+    };
+    const QList<const QList<LaunchAction> *> inTaken = actionsOf(taken);
+    const QList<const QList<LaunchAction> *> inOther = actionsOf(other);
+    QList<const QList<LaunchAction> *> common;
+    for (const QList<LaunchAction> *a : inTaken)
+        if (inOther.contains(a) && !common.contains(a))
+            common << a;
+    const auto without = [&](const Value &v) {
+        if (common.isEmpty() || v.type != Value::Type::List || !v.list)
+            return v;
+        Value rest = m_ctx.newList({});
+        rest.list->launchDescription = v.list->launchDescription;
+        for (qsizetype i = 0; i < v.list->items.size(); ++i) {
+            const Value &item = v.list->items.at(i);
+            if (item.type == Value::Type::Action && common.contains(item.actions.get()))
+                continue;
+            rest.list->items << item;
+            rest.list->guards << v.list->guards.value(i);
+        }
+        return rest;
+    };
+    if (!common.isEmpty())
+        for (qsizetype i = 0; i < taken.list->items.size(); ++i) {
+            const Value &item = taken.list->items.at(i);
+            if (item.type == Value::Type::Action && common.contains(item.actions.get())) {
+                out.list->items << item;
+                out.list->guards << taken.list->guards.value(i);
+            }
+        }
+    out.list->items << without(taken);
     out.list->guards << GuardPath{guard};
     if (other.type != Value::Type::None) {
-        out.list->items << other;
+        out.list->items << without(other);
         out.list->guards << GuardPath{negated(guard)};
     }
     return out;

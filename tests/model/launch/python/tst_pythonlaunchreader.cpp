@@ -51,6 +51,7 @@ private Q_SLOTS:
     void conditions();
     void decidedAndUndecidedIfs();
     void undecidedNamesAndReturns();
+    void anActionBothReturnsHoldRunsOnce();
     void loopsComprehensionsAndHelpers();
     void opaqueFunctions();
     void unknownAndHarmlessActions();
@@ -270,6 +271,19 @@ void TestPythonLaunchReader::undecidedNamesAndReturns()
                           QStringLiteral("  Node pkg=p exe=first name=x @14"),
                           QStringLiteral("Group unscoped unless(?{len(sys.argv) > 2}) @15"),
                           QStringLiteral("  Node pkg=p exe=fallback @17")}));
+}
+
+void TestPythonLaunchReader::anActionBothReturnsHoldRunsOnce()
+{
+    // `if c: return [simulator]` ... `return [simulator, converter]`: the simulator runs
+    // whichever return is taken, so it is one action, not one per branch.
+    QCOMPARE(readFixtureDump("shared_returns_launch.py"),
+             (QStringList{QStringLiteral("Unresolved expr=OpaqueFunction(setup) @18"),
+                          QStringLiteral("Group unscoped @18"),
+                          QStringLiteral("  Node pkg=sim exe=simulator name=simulator @10"),
+                          QStringLiteral("  Group unscoped unless(?{'no_converter' in sys.argv}) "
+                                         "@11"),
+                          QStringLiteral("    Node pkg=sim exe=converter name=converter @13")}));
 }
 
 void TestPythonLaunchReader::loopsComprehensionsAndHelpers()
