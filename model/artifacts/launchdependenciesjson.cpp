@@ -114,6 +114,8 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["plugins"] = plugins;
         j["condition"] = utf8(n.condition);
         j["active"] = n.active;
+        if (n.activeByGuess)
+            j["active_by_guess"] = true;
         j["unresolved"] = unresolvedJson(n.unresolved);
         j["evidence"] = EvidenceJson::toJson(n.evidence);
         JsonSupport::putMarks(j, n.marks);

@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QSet>
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace rosarch {
@@ -337,7 +338,11 @@ private:
                 }
             return;
         }
-        if (f.providers.size() > 1) {
+        // Two servers of which one may not run (its condition is a guess) may be alternatives.
+        const bool twoServersRun =
+            std::count_if(f.providers.cbegin(), f.providers.cend(),
+                          [&](const Use &u) { return !runsByGuess(*u.part); }) > 1;
+        if (f.providers.size() > 1 && twoServersRun) {
             QStringList servers;
             QList<Diagnostic::Related> rel;
             for (const Use &u : f.providers) {
@@ -418,7 +423,10 @@ private:
     {
         for (const QString &fq : std::as_const(m_nodeOrder)) {
             const QList<const RosNodePart *> &parts = m_named[fq];
-            if (parts.size() < 2)
+            // Nodes of which one may not run (its condition is a guess) may be alternatives.
+            if (parts.size() < 2 ||
+                std::count_if(parts.cbegin(), parts.cend(),
+                              [&](const RosNodePart *p) { return !runsByGuess(*p); }) < 2)
                 continue;
             QList<Diagnostic::Related> rel;
             for (const RosNodePart *p : parts.mid(1))
@@ -428,6 +436,14 @@ private:
                 QStringLiteral("%1 nodes are named %2{in}.").arg(parts.size()).arg(fq),
                 parts.first()->evidence, rel);
         }
+    }
+
+    /// Whether the part runs only by the best guess: its condition, or that of a group or
+    /// include around it, could not be decided (an argument nobody sets, say).
+    bool runsByGuess(const RosNodePart &part) const
+    {
+        const NodeInstance *n = m_launch.node(part.instanceId);
+        return n && n->activeByGuess;
     }
 
     /// The node name is what runs: given in the launch file, or in the node's code. A name

@@ -62,6 +62,9 @@ struct NodeInstance
     QList<ParameterSetting> plugins;
     QString condition;  ///< as written ("" when none)
     bool active = true; ///< the condition's value (true when undecidable: best guess)
+    /// Active only by that best guess: its condition, or a group's or include's around it,
+    /// could not be decided, so it may be one of alternatives that never run together.
+    bool activeByGuess = false;
     QList<Unresolved> unresolved;
     Evidence evidence;
     /// A person's corrections of this instance (blueprint §5), applied by stage 3: ports added

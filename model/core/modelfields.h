@@ -66,7 +66,7 @@ template <class F> void fields(NodeInstance &v, F f)
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
       v.nameSpace, v.guessedNamespace, v.guessedName, v.container, v.lifecycle, v.remaps,
       v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition, v.active,
-      v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig);
+      v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {

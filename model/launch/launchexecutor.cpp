@@ -145,7 +145,7 @@ QString LaunchExecutor::evaluate(const Substitution &s, const Scope &scope, cons
 }
 
 bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
-                                    QList<Unresolved> *unresolved) const
+                                    QList<Unresolved> *unresolved, bool *undecided) const
 {
     if (!a.condition.isSet())
         return true;
@@ -160,6 +160,8 @@ bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, c
         }
         if (unresolved)
             unresolved->append(found);
+        if (undecided)
+            *undecided = true;
         return true; // undecidable: keep it (the best guess), marked unresolved
     }
     return a.condition.unless ? !holds : holds;
@@ -293,8 +295,10 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             break;
         case LaunchAction::Kind::Group: {
             Scope inner = scope;
-            const bool holds = conditionHolds(a, scope, frame, unresolvedSink());
+            bool undecided = false;
+            const bool holds = conditionHolds(a, scope, frame, unresolvedSink(), &undecided);
             inner.active = scope.active && holds;
+            inner.activeByGuess = scope.activeByGuess || undecided;
             if (!inner.active && frame.collectOnly && !frame.conditionalIncludes)
                 break;
             execute(a.children, inner, frame, depth + 1);
@@ -318,6 +322,7 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             const QString containerId = m_out->nodes.last().id;
             Scope inner = scope;
             inner.active = m_out->nodes.last().active;
+            inner.activeByGuess = m_out->nodes.last().activeByGuess;
             for (const LaunchAction &c : a.children)
                 executeNode(c, inner, frame, containerId);
             break;
@@ -337,7 +342,9 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                     found = true;
                 }
             Scope inner = scope;
-            inner.active = scope.active && conditionHolds(a, scope, frame, sink);
+            bool undecided = false;
+            inner.active = scope.active && conditionHolds(a, scope, frame, sink, &undecided);
+            inner.activeByGuess = scope.activeByGuess || undecided;
             const qsizetype first = m_out->nodes.size();
             for (const LaunchAction &c : a.children)
                 executeNode(c, inner, frame, containerId);
@@ -424,7 +431,9 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));
     n.guessedNamespace = joinedNamespaceGuessed(scope.guessedNamespace, ns, nsGuessed);
     n.condition = a.condition.text;
-    n.active = scope.active && conditionHolds(a, scope, frame, &u);
+    bool undecided = false;
+    n.active = scope.active && conditionHolds(a, scope, frame, &u, &undecided);
+    n.activeByGuess = scope.activeByGuess || undecided;
     if (a.condition.isSet() && !n.active)
         n.active = false;
     QList<const AtomicNode *> classes = resolveClasses(n.package, n.execName, composable);
@@ -562,7 +571,8 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
 {
     QList<Unresolved> found;
     const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
-    const bool active = scope.active && conditionHolds(a, scope, frame, &found);
+    bool undecided = false;
+    const bool active = scope.active && conditionHolds(a, scope, frame, &found, &undecided);
     const IncludeTarget target = resolveInclude(path, frame.file);
     if (frame.collectOnly) {
         if (!target.file.isEmpty() && active)
@@ -603,6 +613,7 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
 
     Scope inner = scope;
     inner.active = active;
+    inner.activeByGuess = scope.activeByGuess || undecided;
     for (const auto &[name, value] : a.arguments) {
         const QString n = evaluate(name, scope, frame, &inst.unresolved, a.evidence);
         bool guessed = false;

@@ -98,6 +98,7 @@ private:
         QList<int> guessedRemaps;           ///< indices into remaps whose target is a guess
         QList<ParameterSetting> parameters; ///< SetParameter: source "launch"
         bool active = true;
+        bool activeByGuess = false; ///< active only because a condition was undecidable
     };
     struct Frame
     {
@@ -130,7 +131,7 @@ private:
     /// Sets a configuration from an evaluated value, keeping whether it is a guess.
     static void configure(Scope &scope, const QString &name, const QString &value, bool guessed);
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
-                        QList<Unresolved> *unresolved) const;
+                        QList<Unresolved> *unresolved, bool *undecided = nullptr) const;
     /// The classes an executable starts (several when its main spins more than one node).
     QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable,
                                              bool plugin) const;

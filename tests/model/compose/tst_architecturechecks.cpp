@@ -314,7 +314,16 @@ private Q_SLOTS:
         for (const NodeInstance &n : r.launch.nodes)
             if (n.nodeName == QLatin1String("scan_mapper"))
                 mappers << QStringLiteral("%1 %2").arg(n.evidence.line).arg(n.active);
-        QCOMPARE(mappers, (QStringList{QStringLiteral("18 1"), QStringLiteral("19 0")}));
+        QCOMPARE(mappers, (QStringList{QStringLiteral("20 1"), QStringLiteral("21 0")}));
+        // The alternatives on an argument nobody sets run only by the best guess.
+        QStringList backups;
+        for (const NodeInstance &n : r.launch.nodes)
+            if (n.nodeName == QLatin1String("backup_mapper"))
+                backups << QStringLiteral("%1 %2 %3")
+                               .arg(n.evidence.line)
+                               .arg(n.active)
+                               .arg(n.activeByGuess);
+        QCOMPARE(backups, (QStringList{QStringLiteral("24 1 1"), QStringLiteral("25 1 1")}));
     }
 
 private:
