@@ -131,6 +131,8 @@ QString substitution(const Substitution &s)
         return QStringLiteral("RewrittenYaml(%1)").arg(joined(QStringLiteral(", ")));
     case SK::Unknown:
         return QStringLiteral("?{%1}").arg(s.text);
+    case SK::Function:
+        return QStringLiteral("$(%1 %2)").arg(s.text, joined(QStringLiteral(" ")));
     }
     return {};
 }
