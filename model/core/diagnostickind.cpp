@@ -39,7 +39,9 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "warning"),
         kind("duplicate-server", "Several servers for one service or action",
              "More than one node of a system serves the same service or action; which one "
-             "answers a request is undefined. Rename or remap one of them, or start only one.",
+             "answers a request is undefined. Nodes that run only because a launch condition "
+             "could not be decided may be alternatives and are not counted. Rename or remap one "
+             "of them, or start only one.",
              "warning"),
         kind("unserved-client", "Client that no node serves",
              "A node calls a service or action that no node of the same system serves; the "
@@ -48,8 +50,9 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "note"),
         kind("duplicate-node-name", "Two nodes with one name",
              "Two nodes of a system have the same fully qualified name. ROS 2 starts both, but "
-             "parameters, services and tools then reach either one. Give one of them another "
-             "name or namespace.",
+             "parameters, services and tools then reach either one. Nodes that run only because "
+             "a launch condition could not be decided may be alternatives and are not counted. "
+             "Give one of them another name or namespace.",
              "warning"),
         kind("remap-target-unused", "Remap to a name nobody uses",
              "A launch file remaps a port to a name that no other node of the system uses on "
