@@ -47,6 +47,24 @@ Substitution Substitution::function(const QString &name, QList<Substitution> arg
     return s;
 }
 
+bool Substitution::findsPackageByConfiguration(int depth) const
+{
+    if (depth > 32)
+        return false;
+    const bool share = kind == Kind::FindPackageShare || kind == Kind::FindPackagePrefix;
+    for (const Substitution &p : parts) {
+        if (share && p.kind == Kind::LaunchConfiguration)
+            return true;
+        if (share && p.kind == Kind::Concat)
+            for (const Substitution &q : p.parts)
+                if (q.kind == Kind::LaunchConfiguration)
+                    return true;
+        if (p.findsPackageByConfiguration(depth + 1))
+            return true;
+    }
+    return false;
+}
+
 QString Substitution::describe() const
 {
     auto joined = [&](const QString &sep) {

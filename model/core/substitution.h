@@ -46,6 +46,9 @@ struct Substitution
 
     bool isEmpty() const { return kind == Kind::Text && text.isEmpty(); }
     bool isLiteral() const { return kind == Kind::Text; }
+    /// Whether it finds a package's share (or prefix) whose package name comes from a launch
+    /// configuration: `$(find-pkg-share $(var pkg))/...` names a file of several packages.
+    bool findsPackageByConfiguration(int depth = 0) const;
     /// A readable form for diagnostics and tooltips, e.g. "$(var ns)/robot".
     QString describe() const;
     bool operator==(const Substitution &) const = default;

@@ -1,7 +1,5 @@
 #include "launchexecutor.h"
-#include "interfacemodel.h"
 #include "rosnames.h"
-#include "sourcereader.h"
 #include "substitutionevaluator.h"
 
 #include <QFileInfo>
@@ -60,7 +58,7 @@ QString joinNamespace(const QString &outer, const QString &inner)
 
 LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes,
                                Loader loader, LaunchDependencies *out)
-    : m_workspace(workspace), m_load(std::move(loader)), m_out(out)
+    : m_workspace(workspace), m_load(std::move(loader)), m_out(out), m_modelled(workspace.root)
 {
     for (const RosPackage &p : workspace.packages)
         m_packagePaths.insert(p.name, p.path);
@@ -460,14 +458,14 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         n.nodeName = launchName.isEmpty() ? cls->nodeName : launchName;
     } else {
         n.nodeName = launchName;
-        if (const InterfaceModel *model =
-                classes.isEmpty() && !m_workspace.package(n.package)
-                    ? InterfaceModels::builtIn().executable(n.package, n.execName)
-                    : nullptr) {
-            n.interfaceModel = model->name;
-            n.modelledPorts = model->portsAt(a.evidence);
-            if (!model->configArgument.isEmpty())
-                addConfigPorts(*model, a, scope, frame, &n);
+        if (classes.isEmpty() && !m_workspace.package(n.package)) { // code outside
+            QStringList commandLine;
+            for (const Substitution &word : a.commandLine)
+                commandLine << evaluate(word, scope, frame, nullptr, a.evidence);
+            m_modelled.forNode(
+                &n, commandLine, a.evidence,
+                [&](const QString &path) { return resolveInclude(path, frame.file).file; },
+                &m_out->diagnostics);
         }
         if (composable) {
             n.nodeKind = QStringLiteral("composable");
@@ -509,64 +507,6 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     }
 }
 
-void LaunchExecutor::addConfigPorts(const InterfaceModel &model, const LaunchAction &a,
-                                    const Scope &scope, const Frame &frame, NodeInstance *n)
-{
-    QString path;
-    for (qsizetype i = 0; i + 1 < a.commandLine.size() && path.isEmpty(); ++i)
-        if (evaluate(a.commandLine.at(i), scope, frame, nullptr, a.evidence) ==
-            model.configArgument)
-            path = evaluate(a.commandLine.at(i + 1), scope, frame, &n->unresolved, a.evidence);
-    if (path.isEmpty())
-        return;
-    const IncludeTarget target = resolveInclude(path, frame.file);
-    if (target.file.isEmpty())
-        return; // a file outside the workspace: only the model's own ports
-    auto it = m_configFiles.constFind(target.file);
-    if (it == m_configFiles.cend()) {
-        QByteArray content;
-        QList<Diagnostic> problems;
-        if (!SourceReader(m_workspace.root).read(target.file, &content, &problems))
-            m_out->diagnostics.append(problems);
-        it = m_configFiles.insert(target.file, content);
-    }
-    for (const Port &p :
-         model.portsFromConfig(*it, target.file, int(n->modelledPorts.size()) + 1)) {
-        const bool known =
-            std::any_of(n->modelledPorts.cbegin(), n->modelledPorts.cend(), [&](const Port &q) {
-                return q.kind == p.kind && RosNames::expand(q.name, n->nameSpace, n->nodeName) ==
-                                               RosNames::expand(p.name, n->nameSpace, n->nodeName);
-            });
-        if (!known) // a tool the model already lists (RViz's goal pose)
-            n->modelledPorts.append(p);
-    }
-    n->modelConfig = target.file;
-}
-
-namespace {
-
-/// Whether `path` finds a package share whose package name comes from a launch argument.
-bool namesPackageByArgument(const Substitution &path, int depth = 0)
-{
-    if (depth > 32)
-        return false;
-    const bool share = path.kind == Substitution::Kind::FindPackageShare ||
-                       path.kind == Substitution::Kind::FindPackagePrefix;
-    for (const Substitution &p : path.parts) {
-        if (share && p.kind == Substitution::Kind::LaunchConfiguration)
-            return true;
-        if (share && p.kind == Substitution::Kind::Concat)
-            for (const Substitution &q : p.parts)
-                if (q.kind == Substitution::Kind::LaunchConfiguration)
-                    return true;
-        if (namesPackageByArgument(p, depth + 1))
-            return true;
-    }
-    return false;
-}
-
-} // namespace
-
 void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
 {
     QList<Unresolved> found;
@@ -582,7 +522,7 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         // `$(find-pkg-share $(var pkg))/launch/x.launch.xml`: another value of the argument
         // includes the same file of another package (a sensor kit, a vehicle).
         if (frame.conditionalIncludes && !target.shareRelative.isEmpty() &&
-            namesPackageByArgument(a.path))
+            a.path.findsPackageByConfiguration())
             for (const QString &f : std::as_const(m_out->launchFiles))
                 if (f.endsWith(QLatin1Char('/') + target.shareRelative) && f != target.file)
                     frame.conditionalIncludes->append(f);
@@ -599,18 +539,6 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     inst.condition = a.condition.text;
     inst.active = active;
     inst.unresolved = found;
-    if (const InterfaceModel *model = target.external ? InterfaceModels::builtIn().launchFile(
-                                                            target.package, target.shareRelative)
-                                                      : nullptr) {
-        inst.interfaceModel = model->name;
-        inst.modelledPorts = model->portsAt(a.evidence);
-        QString ns = scope.nameSpace;
-        for (const auto &[name, value] : a.arguments)
-            if (evaluate(name, scope, frame, nullptr, a.evidence) == model->namespaceArgument)
-                ns = joinNamespace(ns, evaluate(value, scope, frame, nullptr, a.evidence));
-        inst.modelNamespace = nsKey(ns);
-    }
-
     Scope inner = scope;
     inner.active = active;
     inner.activeByGuess = scope.activeByGuess || undecided;
@@ -621,6 +549,8 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         configure(inner, n, v, guessed);
         inst.arguments.append({n, v});
     }
+    if (target.external)
+        ModelledPorts::forInclude(&inst, target.package, target.shareRelative, scope.nameSpace);
     if (target.file.isEmpty() && !target.external) {
         inst.unresolved.append({QStringLiteral("include"), path, QString(), a.evidence});
     }

@@ -3,6 +3,7 @@
 #include "atomicnodelist.h"
 #include "launchaction.h"
 #include "launchdependencies.h"
+#include "modelledports.h"
 #include "parameterfile.h"
 #include "workspace.h"
 
@@ -15,8 +16,6 @@
 #include <functional>
 
 namespace rosarch {
-
-struct InterfaceModel;
 
 /// Where an include points, once its path is evaluated.
 struct IncludeTarget
@@ -115,10 +114,6 @@ private:
     void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                      const QString &container);
     void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
-    /// The ports an interface model reads from the configuration file the node's command line
-    /// names (rviz2 -d file.rviz), when that file is in the workspace.
-    void addConfigPorts(const InterfaceModel &model, const LaunchAction &a, const Scope &scope,
-                        const Frame &frame, NodeInstance *n);
     /// `guessed`, when given, tells whether the value rests on something unresolved.
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence,
@@ -156,9 +151,9 @@ private:
     const Workspace &m_workspace;
     Loader m_load;
     LaunchDependencies *m_out;
-    QHash<QString, QString> m_packagePaths;   ///< package -> folder
-    QHash<QString, QByteArray> m_configFiles; ///< interface models' configuration files read
-    QHash<QString, QString> m_filePackages;   ///< workspace file -> its package
+    QHash<QString, QString> m_packagePaths; ///< package -> folder
+    ModelledPorts m_modelled; ///< interface models of what comes from outside the workspace
+    QHash<QString, QString> m_filePackages; ///< workspace file -> its package
     /// Classes by package + '\0' + executable, in stage 1's order; plugin classes by name
     /// (the first); the classes of each executable name, in order.
     QHash<QString, QList<const AtomicNode *>> m_classesByExecutable;
