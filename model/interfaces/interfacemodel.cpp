@@ -114,8 +114,7 @@ QList<Port> InterfaceModel::portsFromConfig(const QByteArray &text, const QStrin
     int topicIndent = -1; ///< the indentation of the open `... Topic:` key, -1 when none
     QString topicKey;
     const QList<QByteArray> lines = text.split('\n');
-    constexpr qsizetype kMaxPorts = 1000; // a configuration is small; bound the list anyway
-    for (qsizetype i = 0; i < lines.size() && out.size() < kMaxPorts; ++i) {
+    for (qsizetype i = 0; i < lines.size() && out.size() < kMaxConfigPorts; ++i) {
         const QString line = QString::fromUtf8(lines.at(i));
         QString trimmed = line.trimmed();
         if (trimmed.startsWith(QLatin1String("- ")))

@@ -46,6 +46,8 @@ struct InterfaceModel
     /// configuration: every display's topics), each citing its line of `file`; ids go on from
     /// `firstId`. Read as text, tolerant of anything it does not know.
     QList<Port> portsFromConfig(const QByteArray &text, const QString &file, int firstId) const;
+    /// At most this many ports are read from one configuration file.
+    static constexpr qsizetype kMaxConfigPorts = 1000;
     bool operator==(const InterfaceModel &) const = default;
 };
 

@@ -36,7 +36,20 @@ void ModelledPorts::forNode(NodeInstance *n, const QStringList &commandLine,
     const auto expanded = [&](const QString &name) {
         return RosNames::expand(name, n->nameSpace, n->nodeName);
     };
-    for (const Port &p : model->portsFromConfig(*it, file, int(n->modelledPorts.size()) + 1)) {
+    const QList<Port> read = model->portsFromConfig(*it, file, int(n->modelledPorts.size()) + 1);
+    if (read.size() >= InterfaceModel::kMaxConfigPorts) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.code = QStringLiteral("launch-evaluation-limit");
+        d.message = QStringLiteral("%1 names more than %2 topics; the interface model %3 reads "
+                                   "the first %2.")
+                        .arg(file)
+                        .arg(InterfaceModel::kMaxConfigPorts)
+                        .arg(model->name);
+        d.evidence = evidence;
+        diagnostics->append(d);
+    }
+    for (const Port &p : read) {
         const bool known =
             std::any_of(n->modelledPorts.cbegin(), n->modelledPorts.cend(), [&](const Port &q) {
                 return q.kind == p.kind && expanded(q.name) == expanded(p.name);

@@ -167,6 +167,13 @@ broken: [
                          QStringLiteral("m9 subscriber /map_updates  line 12"),
                          QStringLiteral("m10 publisher /initialpose "
                                         "geometry_msgs/msg/PoseWithCovarianceStamped line 18")}));
+        // A configuration with more topics than the bound gives the first kMaxConfigPorts.
+        QByteArray huge("Visualization Manager:\n  Displays:\n");
+        for (int i = 0; i < 1200; ++i)
+            huge += "    - Class: rviz_default_plugins/Path\n      Topic:\n        Value: /t" +
+                    QByteArray::number(i) + '\n';
+        QCOMPARE(rviz->portsFromConfig(huge, QStringLiteral("a.rviz"), 1).size(),
+                 InterfaceModel::kMaxConfigPorts);
         // Another format, or a model without one, reads nothing.
         QVERIFY(InterfaceModels::builtIn()
                     .executable(QStringLiteral("joy"), QStringLiteral("joy_node"))
