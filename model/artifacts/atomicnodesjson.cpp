@@ -78,6 +78,15 @@ Json nodeJson(const AtomicNode &n)
     for (const Port &p : n.ports)
         ports.push_back(portJson(p));
     j["ports"] = ports;
+    if (!n.children.isEmpty()) {
+        Json children = Json::array();
+        for (const ChildNode &c : n.children)
+            children.push_back({{"class", utf8(c.className)},
+                                {"node_name", utf8(c.nodeName)},
+                                {"namespace", utf8(c.nameSpace)},
+                                {"evidence", EvidenceJson::toJson(c.evidence)}});
+        j["child_nodes"] = children;
+    }
     JsonSupport::putMarks(j, n.marks);
     return j;
 }
@@ -202,6 +211,19 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                     if (!readPort(portJson, &p, error))
                         return false;
                     n.ports.append(p);
+                }
+            }
+            if (nj.contains("child_nodes") && nj["child_nodes"].is_array()) {
+                for (const Json &cj : nj["child_nodes"]) {
+                    if (!cj.is_object())
+                        continue;
+                    ChildNode c;
+                    c.className = JsonSupport::string(cj, "class");
+                    c.nodeName = JsonSupport::string(cj, "node_name");
+                    c.nameSpace = JsonSupport::string(cj, "namespace");
+                    if (cj.contains("evidence"))
+                        c.evidence = EvidenceJson::fromJson(cj["evidence"]);
+                    n.children.append(c);
                 }
             }
             out.nodes.append(n);

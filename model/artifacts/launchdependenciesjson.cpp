@@ -116,6 +116,8 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
         j["active"] = n.active;
         if (n.activeByGuess)
             j["active_by_guess"] = true;
+        if (!n.parentNode.isEmpty())
+            j["parent_node"] = utf8(n.parentNode);
         j["unresolved"] = unresolvedJson(n.unresolved);
         j["evidence"] = EvidenceJson::toJson(n.evidence);
         JsonSupport::putMarks(j, n.marks);

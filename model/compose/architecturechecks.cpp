@@ -39,6 +39,8 @@ public:
             const Observability &observability, QList<Diagnostic> *out)
         : m_nodes(nodes), m_launch(launch), m_observability(observability), m_out(out)
     {
+        for (const Port &p : launch.viewedTopics) // relative: in whichever namespace
+            m_viewed.insert(p.name.startsWith(u'/') ? p.name : QLatin1Char('/') + p.name);
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
                 m_composites.insert(c.instanceId, &c);
@@ -196,7 +198,17 @@ private:
     {
         const QString helper = m_helpers.value(place(port.evidence));
         return m_observability.covers(port.name, port.type, helper) ||
-               m_observability.covers(port.nameAsWritten, port.type, helper);
+               m_observability.covers(port.nameAsWritten, port.type, helper) || isViewed(port.name);
+    }
+
+    /// Displayed by an RViz configuration of the workspace, also in a namespace the
+    /// configuration does not write (`/global_costmap/costmap` for `/robot1/global_costmap/...`).
+    bool isViewed(const QString &name) const
+    {
+        for (qsizetype at = 0; at >= 0 && at < name.size(); at = name.indexOf(u'/', at + 1))
+            if (m_viewed.contains(name.mid(at)))
+                return true;
+        return false;
     }
 
     /// A name expanded in one made-up namespace and node name, to compare two spellings.
@@ -463,6 +475,7 @@ private:
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     const Observability &m_observability;
+    QSet<QString> m_viewed;            ///< topics an RViz configuration of the workspace displays
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
     struct RemapElsewhere
     {

@@ -10,6 +10,19 @@
 
 namespace rosarch {
 
+/// A node that a node creates inside itself (blueprint §1, "Child nodes"): nav2's
+/// `Costmap2DROS` made by the planner server, a member node built with a name.
+struct ChildNode
+{
+    QString className; ///< the child's class, qualified as in the List of Atomic ROS Nodes
+    QString nodeName;  ///< its node name ("" when the construction does not decide it)
+    /// Its namespace relative to the parent's ("" = the parent's own namespace); absolute
+    /// when the construction names an absolute one.
+    QString nameSpace;
+    Evidence evidence; ///< the construction
+    bool operator==(const ChildNode &) const = default;
+};
+
 /// An AtomicRosNodeClassifier: one node class (or procedurally built node) with its ports.
 struct AtomicNode
 {
@@ -37,6 +50,7 @@ struct AtomicNode
     QString pluginInterface;
     Evidence evidence; ///< the class definition (or the create_node call)
     QList<Port> ports;
+    QList<ChildNode> children = {}; ///< nodes it creates inside itself
 
     Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     /// The blueprint's `execution`: the first executable, else the first plugin.

@@ -77,6 +77,8 @@ struct NodeInstance
     QString interfaceModel = {};
     QList<Port> modelledPorts = {};
     QString modelConfig = {}; ///< the configuration file the model read more ports from
+    /// A child node (blueprint §1): the instance whose node created it ("" for a launched node).
+    QString parentNode = {};
     bool operator==(const NodeInstance &) const = default;
 };
 
@@ -131,6 +133,9 @@ struct LaunchDependencies
     /// the launch files no other file includes under any condition, or the chosen root.
     /// Workspace-relative, sorted.
     QStringList entryPoints;
+    /// The topics the workspace's RViz configurations display (subscribers, by name as
+    /// written, with the configuration's line): outputs that exist to be viewed.
+    QList<Port> viewedTopics;
     /// Each launch file analysed on its own with its declared defaults, in the classifier scope
     /// (RosNames::kClassifierScope), for its CCD: the runs' launch-file instances ("clf1", ...)
     /// and node instances ("cn1", ...). Not part of the system; not in the JSON.

@@ -35,11 +35,15 @@ template <class F> void fields(Port &v, F f)
       v.parameterPrefix, v.parameterSuffix, v.guard, v.guardParameter, v.guardDefault, v.via, v.qos,
       v.inherited, v.evidence, v.viaEvidence);
 }
+template <class F> void fields(ChildNode &v, F f)
+{
+    f(v.className, v.nodeName, v.nameSpace, v.evidence);
+}
 template <class F> void fields(AtomicNode &v, F f)
 {
     f(v.id, v.className, v.qualifiedName, v.nodeName, v.packageName, v.headerFiles, v.sourceFiles,
       v.description, v.compileType, v.baseClasses, v.lifecycle, v.procedural, v.executables,
-      v.plugins, v.pluginInterface, v.evidence, v.ports);
+      v.plugins, v.pluginInterface, v.evidence, v.ports, v.children);
 }
 template <class F> void fields(Executable &v, F f)
 {
@@ -66,7 +70,8 @@ template <class F> void fields(NodeInstance &v, F f)
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
       v.nameSpace, v.guessedNamespace, v.guessedName, v.container, v.lifecycle, v.remaps,
       v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition, v.active,
-      v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig);
+      v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig,
+      v.parentNode);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {
@@ -80,8 +85,8 @@ template <class F> void fields(LaunchArgument &v, F f)
 }
 template <class F> void fields(LaunchDependencies &v, F f)
 {
-    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.entryPoints, v.classifierInstances,
-      v.classifierNodes, v.diagnostics, v.canceled);
+    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.entryPoints, v.viewedTopics,
+      v.classifierInstances, v.classifierNodes, v.diagnostics, v.canceled);
 }
 template <class F> void fields(PartPort &v, F f)
 {

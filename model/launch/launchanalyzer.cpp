@@ -2,6 +2,7 @@
 #include "analysiscache.h"
 #include "classifierruns.h"
 #include "evidenceshift.h"
+#include "interfacemodel.h"
 #include "launchexecutor.h"
 #include "launchfileindex.h"
 #include "launchreadahead.h"
@@ -34,6 +35,30 @@ void runClassifiers(ClassifierRuns &runs, const LaunchExecutor &system, LaunchDe
             files.append(i.file);
         }
     runs.finish(files, out, &system);
+}
+
+/// What the workspace's RViz configurations display, read the way rviz2's interface model
+/// reads the configuration its `-d` names; names as written (relative ones are relative to
+/// wherever rviz2 runs).
+QList<Port> viewedTopics(const Workspace &workspace, QList<Diagnostic> *diagnostics)
+{
+    QList<Port> out;
+    const InterfaceModel *rviz =
+        InterfaceModels::builtIn().executable(QStringLiteral("rviz2"), QStringLiteral("rviz2"));
+    if (!rviz)
+        return out;
+    const SourceReader reader(workspace.root);
+    for (const SourceFile &f : workspace.files) {
+        if (!f.path.endsWith(QLatin1String(".rviz")))
+            continue;
+        QByteArray content;
+        if (!reader.read(f.path, &content, diagnostics))
+            continue;
+        for (const Port &p : rviz->portsFromConfig(content, f.path, 1))
+            if (p.kind == PortKind::Subscriber && !p.name.startsWith(QLatin1Char('~')))
+                out.append(p);
+    }
+    return out;
 }
 
 /// The index of the launch files, from what `readAhead` read when it did.
@@ -130,6 +155,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             }
     }
     runClassifiers(classifiers, executor, &out);
+    out.viewedTopics = viewedTopics(workspace, &out.diagnostics);
     // Canceled while the files ran on their own: their lists are incomplete, so the result
     // is not one to keep (nor to store as stage 2's memo).
     if (control.isCanceled()) {
@@ -207,10 +233,10 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
 
 /// Exactly what the launch executor uses of stage 1's result (LaunchExecutor::resolveClasses,
 /// resolveElsewhere, executeNode, effectiveParameters): each class's id, name, package,
-/// executables, plugins, lifecycle, compile type, node name, and the ports whose parameters
-/// give defaults, with the files of their evidence; the evidence itself goes to `locations`, in
-/// order. No other source location: an edit that moves lines of a node's file and changes none
-/// of this leaves stage 2's result as it was but for these locations (EvidenceShift).
+/// executables, plugins, lifecycle, compile type, node name, child nodes, and the ports whose
+/// parameters give defaults, with the files of their evidence; the evidence itself goes to
+/// `locations`, in order. No other source location: an edit that moves lines of a node's file and
+/// changes none of this leaves stage 2's result as it was but for these locations (EvidenceShift).
 QByteArray nodesPart(const AtomicNodeList &nodes, QList<Evidence> *locations)
 {
     QByteArray bytes;
@@ -218,8 +244,13 @@ QByteArray nodesPart(const AtomicNodeList &nodes, QList<Evidence> *locations)
     s.setVersion(QDataStream::Qt_6_4);
     s << quint32(nodes.nodes.size());
     for (const AtomicNode &n : nodes.nodes) {
-        s << n.id << n.className << n.packageName << n.executables << n.plugins << n.lifecycle
-          << qint32(n.compileType) << n.nodeName;
+        s << n.id << n.className << n.qualifiedName << n.packageName << n.executables << n.plugins
+          << n.lifecycle << qint32(n.compileType) << n.nodeName << n.procedural
+          << n.pluginInterface;
+        for (const ChildNode &c : n.children) { // a child instance cites its construction
+            s << quint8(3) << c.className << c.nodeName << c.nameSpace << c.evidence.file;
+            locations->append(c.evidence);
+        }
         for (const Port &p : n.ports) {
             if (p.nameOrigin == NameOrigin::Parameter && !p.parameter.isEmpty()) {
                 s << quint8(1) << p.parameter << p.name << p.evidence.file;

@@ -75,6 +75,9 @@ LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList 
         for (const QString &p : n.plugins)
             if (!m_classesByPlugin.contains(p))
                 m_classesByPlugin.insert(p, &n);
+        if (!n.isPlugin() && !n.procedural &&
+            !m_nodeClassesByQualifiedName.contains(n.qualifiedName))
+            m_nodeClassesByQualifiedName.insert(n.qualifiedName, &n);
     }
 }
 
@@ -489,6 +492,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     m_out->instances[frame.instance].nodes.append(n.id);
     addToNamespace(frame.instance, n.nameSpace, n.id);
     m_out->nodes.append(n);
+    if (!classes.isEmpty())
+        addChildNodes(n, *classes.front(), a, scope, frame, 0);
     // An executable whose main spins several nodes starts one instance of each.
     for (qsizetype k = 1; k < classes.size(); ++k) {
         NodeInstance more = n;
@@ -504,6 +509,63 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         m_out->instances[frame.instance].nodes.append(more.id);
         addToNamespace(frame.instance, more.nameSpace, more.id);
         m_out->nodes.append(more);
+        addChildNodes(more, *classes[k], a, scope, frame, 0);
+    }
+}
+
+// A child node runs in its parent's process: the launch action's remaps and parameter files
+// apply to it as to every node of the process, matched by its own fully qualified name.
+void LaunchExecutor::addChildNodes(const NodeInstance &parent, const AtomicNode &cls,
+                                   const LaunchAction &a, const Scope &scope, const Frame &frame,
+                                   int depth)
+{
+    if (cls.children.isEmpty())
+        return;
+    if (depth >= kMaxChildDepth) {
+        Diagnostic diag;
+        diag.severity = Diagnostic::Severity::Warning;
+        diag.code = QStringLiteral("child-depth");
+        diag.message = QStringLiteral("Stopped following the nodes that %1 creates inside itself "
+                                      "(bound: %2 generations of child nodes).")
+                           .arg(cls.className)
+                           .arg(kMaxChildDepth);
+        diag.evidence = cls.children.front().evidence;
+        m_out->diagnostics.append(diag);
+        return;
+    }
+    for (const ChildNode &c : cls.children) {
+        const AtomicNode *childClass = m_nodeClassesByQualifiedName.value(c.className);
+        if (!childClass)
+            continue;
+        NodeInstance n;
+        n.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
+        n.launchFileId = parent.launchFileId;
+        n.parentNode = parent.id;
+        n.nodeKind = compileTypeName(childClass->compileType);
+        n.package = childClass->packageName;
+        n.execName = parent.execName;
+        n.className = childClass->className;
+        n.classId = childClass->id;
+        n.lifecycle = childClass->lifecycle;
+        n.nodeName = c.nodeName.isEmpty() ? childClass->nodeName : c.nodeName;
+        const QString outer = parent.nameSpace == QLatin1String("/") ? QString() : parent.nameSpace;
+        n.nameSpace = nsKey(joinNamespace(outer, c.nameSpace));
+        n.guessedNamespace = parent.guessedNamespace;
+        n.container = parent.container;
+        n.remaps = parent.remaps;
+        n.guessedRemaps = parent.guessedRemaps;
+        n.parameters = parent.parameters;
+        n.condition = parent.condition;
+        n.active = parent.active;
+        n.activeByGuess = parent.activeByGuess;
+        n.evidence = c.evidence;
+        QList<Unresolved> reported; // the launch line's: already on the parent
+        n.effectiveParameters = effectiveParameters(a, scope, frame, n, childClass, &reported);
+        n.plugins = pluginsOf(n.effectiveParameters);
+        m_out->instances[frame.instance].nodes.append(n.id);
+        addToNamespace(frame.instance, n.nameSpace, n.id);
+        m_out->nodes.append(n);
+        addChildNodes(n, *childClass, a, scope, frame, depth + 1);
     }
 }
 

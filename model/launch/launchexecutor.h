@@ -114,6 +114,11 @@ private:
     void executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                      const QString &container);
     void executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth);
+    /// The nodes an instance's class creates inside itself (blueprint §1, "Child nodes"), each
+    /// an instance of its own in the same process, down to kMaxChildDepth generations.
+    void addChildNodes(const NodeInstance &parent, const AtomicNode &cls, const LaunchAction &a,
+                       const Scope &scope, const Frame &frame, int depth);
+    static constexpr int kMaxChildDepth = 4;
     /// `guessed`, when given, tells whether the value rests on something unresolved.
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence,
@@ -158,6 +163,7 @@ private:
     /// (the first); the classes of each executable name, in order.
     QHash<QString, QList<const AtomicNode *>> m_classesByExecutable;
     QHash<QString, const AtomicNode *> m_classesByPlugin;
+    QHash<QString, const AtomicNode *> m_nodeClassesByQualifiedName; ///< for child nodes
     QHash<QString, QList<const AtomicNode *>> m_classesByExecutableName;
     /// resolveInclude's answers by path + '\0' + including file, and whether a path is a file:
     /// a stack includes the same files and parameter files from many places.

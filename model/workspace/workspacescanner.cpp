@@ -45,7 +45,9 @@ SourceFile::Language languageOf(const QString &fileName)
         return SourceFile::Language::Python;
     if (suffix == QLatin1String("xml"))
         return SourceFile::Language::Xml; // launch files are told apart by content later
-    if (suffix == QLatin1String("yaml") || suffix == QLatin1String("yml"))
+    // RViz configurations are YAML: what they display are observability outputs.
+    if (suffix == QLatin1String("yaml") || suffix == QLatin1String("yml") ||
+        suffix == QLatin1String("rviz"))
         return SourceFile::Language::Yaml;
     static const QSet<QString> cpp{
         QStringLiteral("cpp"), QStringLiteral("cc"), QStringLiteral("cxx"), QStringLiteral("hpp"),

@@ -246,7 +246,89 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
     for (const Port &p : std::as_const(ports))
         if (!containsPort(node.ports, p))
             node.ports.append(p);
+    node.children = childNodesOf(index);
     return node;
+}
+
+// The nodes a node class (or one of its project bases) constructs in its own code:
+// `costmap_ros_ = std::make_shared<nav2_costmap_2d::Costmap2DROS>("global_costmap", ...)`.
+QList<ChildNode> CppNodeLinker::childNodesOf(int index) const
+{
+    const QList<int> lineage = m_index.lineage(index);
+    QList<ChildNode> out;
+    for (int c : lineage) {
+        for (const auto &ref : m_index.at(c).functions) {
+            const CppLinkContext ctx{c, ref.function, ref.file, nullptr};
+            for (const CppInstantiation &inst : ref.function->instantiations) {
+                if (inst.className.isEmpty() || !inst.member.isEmpty())
+                    continue;
+                const int t = m_index.lookup(withoutTemplateArguments(inst.className).remove(u' '),
+                                             m_names.scopeOf(ctx), ref.file);
+                if (t < 0 || !m_index.at(t).node || lineage.contains(t))
+                    continue;
+                const ChildNode child = childNode(t, inst, ctx);
+                if (!out.contains(child))
+                    out.append(child);
+            }
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const ChildNode &a, const ChildNode &b) {
+        return evidenceLess(a.evidence, b.evidence);
+    });
+    return out;
+}
+
+// A child's name is the argument its constructor hands to the base-class initializer
+// (`nav2::LifecycleNode(name, ...)`), else the name its class gives itself. A namespace
+// argument that is the parent's own (`get_namespace()`) puts the child in the parent's
+// namespace; handed to a constructor parameter named for a parent (`parent_namespace`), the
+// child nests under it in a namespace of its own name, as nav2's child nodes do.
+ChildNode CppNodeLinker::childNode(int child, const CppInstantiation &inst,
+                                   const CppLinkContext &ctx) const
+{
+    const CppClassIndex::ClassInfo &info = m_index.at(child);
+    ChildNode out;
+    out.className = info.cls->qualifiedName;
+    out.evidence = inst.evidence;
+    out.nodeName = nodeNameOf(child, 0);
+    const auto argumentText = [&](int i) -> QString {
+        const CppValue &arg = inst.arguments.at(i);
+        if (arg.kind == CppValue::Kind::Literal ||
+            (arg.kind == CppValue::Kind::Local && !arg.literal.isEmpty()))
+            return arg.literal;
+        const CppResolvedName r = m_names.resolve(arg, ctx);
+        return r.origin == NameOrigin::Literal || r.origin == NameOrigin::Member ||
+                       r.origin == NameOrigin::Local
+                   ? r.name
+                   : QString();
+    };
+    // The constructor called: the one with the fewest parameters that takes every argument
+    // (defaults may be written only at the declaration, out of sight of the definition).
+    const auto argumentCount = int(inst.arguments.size());
+    const CppFunction *called = nullptr;
+    for (const auto &ref : info.functions) {
+        const CppFunction &ctor = *ref.function;
+        if (ctor.isConstructor && argumentCount <= ctor.parameterNames.size() &&
+            (!called || ctor.parameterNames.size() < called->parameterNames.size()))
+            called = &ctor;
+    }
+    if (!called)
+        return out;
+    for (const CppBaseInitializer &init : called->baseInitializers)
+        if (init.firstArgument.kind == CppValue::Kind::FunctionParameter &&
+            init.firstArgument.index >= 0 && init.firstArgument.index < argumentCount)
+            out.nodeName = argumentText(init.firstArgument.index);
+    for (int i = 0; i < argumentCount; ++i) {
+        const QString parameter = called->parameterNames.at(i).toLower();
+        if (!parameter.contains(QLatin1String("namespace")) && parameter != QLatin1String("ns"))
+            continue;
+        const CppValue &arg = inst.arguments.at(i);
+        if (arg.text.contains(QLatin1String("get_namespace")))
+            out.nameSpace = parameter.contains(QLatin1String("parent")) ? out.nodeName : QString();
+        else
+            out.nameSpace = argumentText(i);
+    }
+    return out;
 }
 
 // The exported class, also when it is an alias of a template instance

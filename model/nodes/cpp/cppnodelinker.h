@@ -30,6 +30,8 @@ private:
     AtomicNode classNode(int index, const CppProceduralNode *ownedNode = nullptr) const;
     const CppProceduralNode *ownedNode(int cls) const;
     QString nodeNameOf(int index, int depth) const;
+    QList<ChildNode> childNodesOf(int index) const;
+    ChildNode childNode(int child, const CppInstantiation &inst, const CppLinkContext &ctx) const;
     QList<Port> portsOf(int cls, bool inherited) const;
     /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
     int pluginClass(const QString &written, const CppFileFacts &file,

@@ -265,6 +265,38 @@ private Q_SLOTS:
         }
     }
 
+    void childNodesTakePartAndViewedTopicsAreNoFindings()
+    {
+        // cpp_child_nodes: two servers each create a grid-map node inside themselves; a
+        // watcher reads both grids, and an RViz configuration displays one grid's outline.
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("cpp_child_nodes/ws")));
+        QStringList children;
+        for (const NodeInstance &n : r.launch.nodes)
+            if (!n.parentNode.isEmpty())
+                children << QStringLiteral("%1 %2 in %3, child of %4")
+                                .arg(n.id, n.nodeName, n.nameSpace, n.parentNode);
+        QCOMPARE(children,
+                 (QStringList{QStringLiteral("n2 world_grid in /rover/world_grid, child of n1"),
+                              QStringLiteral("n4 near_grid in /rover/near_grid, child of n3")}));
+        QStringList found;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            found << QStringLiteral("%1 %2:%3 | %4")
+                         .arg(d.code, d.evidence.file)
+                         .arg(d.evidence.line)
+                         .arg(d.message);
+        found.sort();
+        QCOMPARE(
+            found,
+            (QStringList{
+                QStringLiteral("topic-unheard src/yard_grid/src/grid_map_node.cpp:42 | "
+                               "/rover/near_grid/near_grid publishes /rover/near_grid/outline, "
+                               "which no node started alongside it subscribes to."),
+                QStringLiteral("topic-unpublished src/yard_grid/src/scan_layer.cpp:15 | "
+                               "/rover/world_grid/world_grid subscribes to /scan, which no "
+                               "node started alongside it publishes.")}));
+        QCOMPARE(r.launch.viewedTopics.size(), qsizetype(2));
+    }
+
     void judgeEntryPointsAndLeaveToolsOutputsAndBuildingBlocksAlone()
     {
         // check_scope: robot.launch.xml is the one entry point; mapping.launch.py is included
