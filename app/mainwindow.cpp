@@ -53,6 +53,8 @@
 #include <QTreeView>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace rosarch {
 
 MainWindow::MainWindow(QWidget *parent)
@@ -197,6 +199,7 @@ void MainWindow::createPanels()
         m_nodeDock->raise();
     });
     connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
+    connect(m_logView, &LogView::externalsAccepted, this, &MainWindow::acceptExternals);
     m_diagrams = new DiagramController(m_document, m_diagramPanel, m_launchPanel, m_traceability,
                                        m_talkersPanel, m_logView, this);
     connect(m_diagrams, &DiagramController::statusMessage, statusBar(), &QStatusBar::showMessage);
@@ -431,6 +434,29 @@ void MainWindow::runLaunchStage()
         openWorkspaceDialog();
     else
         m_stages->runLaunch();
+}
+
+void MainWindow::acceptExternals(const QStringList &declarations)
+{
+    LaunchOptions options = m_document->launchOptions();
+    QStringList names;
+    for (const QString &d : declarations) {
+        const qsizetype space = d.indexOf(QLatin1Char(' '));
+        const ExpectedExternal e{d.mid(space + 1), d.startsWith(QLatin1String("output")),
+                                 tr("accepted in the Log")};
+        const bool declared = std::any_of(
+            options.externals.cbegin(), options.externals.cend(),
+            [&](const ExpectedExternal &x) { return x.name == e.name && x.output == e.output; });
+        if (space < 0 || declared)
+            continue;
+        options.externals.append(e);
+        names << e.name;
+    }
+    if (names.isEmpty())
+        return;
+    statusBar()->showMessage(
+        tr("Declared %1 as expected external; checking again.").arg(names.join(tr(", "))), 8000);
+    applyLaunchOptions(options);
 }
 
 void MainWindow::applyLaunchOptions(const LaunchOptions &options)

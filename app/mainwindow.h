@@ -62,6 +62,9 @@ public:
     void runLaunchStage();
     /// Stores `options` (Document and settings) and runs stage 2 with them.
     void applyLaunchOptions(const LaunchOptions &options);
+    /// Declares ports as expected externals in the project ("input /scan", ...) and runs the
+    /// launch stage and the checks again.
+    void acceptExternals(const QStringList &declarations);
     /// Opens Stages → Launch Arguments… (window-modal; OK applies the options).
     void showLaunchArgumentsDialog();
     QString workspace() const;

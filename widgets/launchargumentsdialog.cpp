@@ -134,6 +134,7 @@ void LaunchArgumentsDialog::setLaunchDependencies(const LaunchDependencies &laun
 void LaunchArgumentsDialog::setOptions(const LaunchOptions &options)
 {
     m_values = options.arguments;
+    m_externals = options.externals; // not edited here: kept as they were
     m_rebuilding = true;
     int index = m_root->findData(options.rootFile);
     if (index < 0) {
@@ -149,6 +150,7 @@ LaunchOptions LaunchArgumentsDialog::options() const
 {
     LaunchOptions options;
     options.rootFile = selectedRoot();
+    options.externals = m_externals;
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const QTableWidgetItem *name = m_table->item(row, NameColumn);
         const QTableWidgetItem *value = m_table->item(row, ValueColumn);

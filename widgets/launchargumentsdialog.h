@@ -57,6 +57,7 @@ private:
     QMap<QString, QString> m_values; ///< name → value the person typed, kept across roots
     QStringList m_tableNames;        ///< the names the table showed when last read
     QComboBox *m_root;
+    QList<ExpectedExternal> m_externals; ///< the project's, handed back unchanged
     QTableWidget *m_table;
     QLabel *m_hint;
     QPushButton *m_removeButton;

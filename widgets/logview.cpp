@@ -7,6 +7,7 @@
 #include <QFontDatabase>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QItemSelectionModel>
 #include <QLocale>
 #include <QPlainTextEdit>
 #include <QSortFilterProxyModel>
@@ -26,7 +27,8 @@ LogView::LogView(QWidget *parent)
       m_hide(new QAction(tr("&Hide Finding"), this)),
       m_accept(new QAction(tr("&Accept Finding"), this)),
       m_acceptWithReason(new QAction(tr("Accept Finding with &Reason\u2026"), this)),
-      m_restore(new QAction(tr("Re&store Finding"), this))
+      m_restore(new QAction(tr("Re&store Finding"), this)),
+      m_acceptExternal(new QAction(tr("Accept as E&xpected External"), this))
 {
     m_proxy->setSortRole(DiagnosticModel::SortRole);
     m_proxy->setSortCaseSensitivity(Qt::CaseInsensitive);
@@ -50,7 +52,13 @@ LogView::LogView(QWidget *parent)
                             "rosarch check no longer counts them as new"));
     m_restore->setShortcut(QKeySequence(tr("U")));
     m_restore->setToolTip(tr("Show the selected hidden or accepted findings again"));
-    for (QAction *a : {m_hide, m_accept, m_acceptWithReason, m_restore}) {
+    m_acceptExternal->setShortcut(QKeySequence(tr("X")));
+    m_acceptExternal->setToolTip(
+        tr("Declare the port of the selected findings as meeting something outside the "
+           "workspace (a driver, teleoperation, a tool): the project records it and the checks "
+           "no longer report it in any system"));
+    m_acceptExternal->setEnabled(false);
+    for (QAction *a : {m_hide, m_accept, m_acceptWithReason, m_acceptExternal, m_restore}) {
         a->setShortcutContext(Qt::WidgetShortcut);
         m_diagnostics->addAction(a);
     }
@@ -60,6 +68,11 @@ LogView::LogView(QWidget *parent)
             [this] { markSelected(int(FindingMark::Status::Accepted), false); });
     connect(m_acceptWithReason, &QAction::triggered, this,
             [this] { markSelected(int(FindingMark::Status::Accepted), true); });
+    connect(m_acceptExternal, &QAction::triggered, this, [this] {
+        const QStringList declarations = selectedExternals();
+        if (!declarations.isEmpty())
+            Q_EMIT externalsAccepted(declarations);
+    });
     connect(m_restore, &QAction::triggered, this, [this] {
         if (m_model)
             m_model->restoreFindings(selectedFindings());
@@ -105,6 +118,14 @@ void LogView::setModel(DiagnosticModel *model)
     m_filterBar = new DiagnosticFilterBar(model, m_findings);
     static_cast<QVBoxLayout *>(m_findings->layout())->insertWidget(0, m_filterBar);
     m_diagnostics->setModel(m_proxy);
+    const auto updateExternal = [this] {
+        m_acceptExternal->setEnabled(!selectedExternals().isEmpty());
+    };
+    connect(m_diagnostics->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            updateExternal);
+    connect(m_diagnostics->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            updateExternal);
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, updateExternal);
     QHeaderView *header = m_diagnostics->header();
     header->setStretchLastSection(false);
     header->setSectionResizeMode(QHeaderView::Interactive);
@@ -255,6 +276,18 @@ QModelIndexList LogView::selectedFindings() const
         out.append(m_proxy->mapToSource(i));
     if (out.isEmpty() && m_diagnostics->currentIndex().isValid())
         out.append(m_proxy->mapToSource(m_diagnostics->currentIndex()));
+    return out;
+}
+
+QStringList LogView::selectedExternals() const
+{
+    QStringList out;
+    if (!m_model)
+        return out;
+    for (const QModelIndex &i : selectedFindings())
+        if (const Diagnostic *d = m_model->diagnostic(i);
+            d && !d->external.isEmpty() && !out.contains(d->external))
+            out.append(d->external);
     return out;
 }
 

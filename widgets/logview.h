@@ -35,6 +35,7 @@ public:
     QAction *hideAction() const { return m_hide; }
     QAction *acceptAction() const { return m_accept; }
     QAction *restoreAction() const { return m_restore; }
+    QAction *acceptExternalAction() const { return m_acceptExternal; }
 
     /// Appends one line (with the time) to the run log.
     void appendLog(const QString &line);
@@ -53,6 +54,9 @@ Q_SIGNALS:
     void evidenceRequested(const Evidence &evidence);
     /// The counts in title() changed.
     void titleChanged(const QString &title);
+    /// The person accepted the selected findings' ports as expected externals: the
+    /// declarations for the project ("input /scan" and the like, see Diagnostic::external).
+    void externalsAccepted(const QStringList &declarations);
 
 private:
     void step(int delta);
@@ -61,6 +65,7 @@ private:
     void afterReset();
     void markSelected(int status, bool askReason);
     QModelIndexList selectedFindings() const;
+    QStringList selectedExternals() const;
 
     DiagnosticModel *m_model = nullptr;
     QSortFilterProxyModel *m_proxy;
@@ -75,6 +80,7 @@ private:
     QAction *m_accept;
     QAction *m_acceptWithReason;
     QAction *m_restore;
+    QAction *m_acceptExternal;
     QString m_currentKey;   ///< kept across a reset of the table (a filter change, a re-run)
     bool m_grouped = false; ///< as the table was last laid out (rows indented under groups)
 };

@@ -73,6 +73,7 @@ bool WorkspaceRun::read(const QCommandLineParser &parser, const QString &command
              ++it)
             if (!m_launch.arguments.contains(it.key()))
                 m_launch.arguments.insert(it.key(), it.value());
+        m_launch.externals = m_project.launch.externals; // the project's declarations
     }
     return true;
 }

@@ -6,6 +6,7 @@
 #include "rosnames.h"
 
 #include <QHash>
+#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -39,6 +40,13 @@ public:
             const Observability &observability, QList<Diagnostic> *out)
         : m_nodes(nodes), m_launch(launch), m_observability(observability), m_out(out)
     {
+        // `**` any segments, `*` within one, as parameter files match node names
+        for (const ExpectedExternal &e : launch.externals) {
+            QString rx = QRegularExpression::escape(e.name);
+            rx.replace(QLatin1String("\\*\\*"), QLatin1String(".*"))
+                .replace(QLatin1String("\\*"), QLatin1String("[^/]*"));
+            m_externalPatterns.append(QRegularExpression(QRegularExpression::anchoredPattern(rx)));
+        }
         for (const Port &p : launch.viewedTopics) // relative: in whichever namespace
             m_viewed.insert(p.name.startsWith(u'/') ? p.name : QLatin1Char('/') + p.name);
         for (const Composite &c : arch.composites)
@@ -129,7 +137,8 @@ private:
     /// systems is reported once with N contexts. The per-system wording it had before is kept
     /// as an alias key (old baselines and project files still match it).
     void add(Diagnostic::Severity severity, const QString &code, const QString &message,
-             const Evidence &evidence, const QList<Diagnostic::Related> &related = {})
+             const Evidence &evidence, const QList<Diagnostic::Related> &related = {},
+             const QString &external = {})
     {
         const QString text = QString(message)
                                  .replace(QLatin1String("{by}"), QLatin1String("alongside it"))
@@ -157,7 +166,8 @@ private:
             return;
         }
         m_seen.insert(key, int(m_out->size()));
-        m_out->append({severity, code, text, evidence, related, {m_current}, {old.key()}});
+        m_out->append(
+            {severity, code, text, evidence, related, {m_current}, {old.key()}, external});
     }
 
     /// Whether an open port is open by design, and not a finding: a port an interface model
@@ -209,6 +219,26 @@ private:
             if (m_viewed.contains(name.mid(at)))
                 return true;
         return false;
+    }
+
+    /// Declared in the project as expected to meet something outside the workspace.
+    bool isExpectedExternal(const QString &name, bool output) const
+    {
+        for (qsizetype i = 0; i < m_launch.externals.size(); ++i)
+            if (m_launch.externals.at(i).output == output &&
+                m_externalPatterns.at(i).match(name).hasMatch())
+                return true;
+        return false;
+    }
+
+    /// The declaration that accepts a finding about `name` as an expected external. Only a
+    /// fully qualified name can be declared (not one resting on an unresolved expression).
+    static QString externalOf(const QString &name, bool output)
+    {
+        if (!name.startsWith(QLatin1Char('/')) || name.contains(QLatin1Char(' ')) ||
+            name.contains(QLatin1Char('{')))
+            return {};
+        return (output ? QLatin1String("output ") : QLatin1String("input ")) + name;
     }
 
     /// A name expanded in one made-up namespace and node name, to compare two spellings.
@@ -312,7 +342,7 @@ private:
                 for (const Use &u : f.users) {
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (openByDesign(u, &rel, &h))
+                    if (isExpectedExternal(name, false) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("publishes"));
@@ -324,7 +354,7 @@ private:
                         QStringLiteral(
                             "%1 subscribes to %2, which no node started {by} publishes.%3")
                             .arg(who(*u.part), name, h),
-                        u.port->evidence, rel);
+                        u.port->evidence, rel, externalOf(name, false));
                 }
             if (f.users.isEmpty())
                 for (const Use &u : f.providers) {
@@ -334,7 +364,7 @@ private:
                         continue;
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (openByDesign(u, &rel, &h))
+                    if (isExpectedExternal(name, true) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("subscribes to"));
@@ -346,7 +376,7 @@ private:
                         QStringLiteral(
                             "%1 publishes %2, which no node started {by} subscribes to.%3")
                             .arg(who(*u.part), name, h),
-                        u.port->evidence, rel);
+                        u.port->evidence, rel, externalOf(name, true));
                 }
             return;
         }
@@ -373,7 +403,7 @@ private:
             for (const Use &u : f.users) {
                 QList<Diagnostic::Related> rel;
                 QString h;
-                if (openByDesign(u, &rel, &h))
+                if (isExpectedExternal(name, false) || openByDesign(u, &rel, &h))
                     continue;
                 if (u.port->remapped) {
                     remapTargetUnused(u, name, QStringLiteral("serves"));
@@ -384,7 +414,7 @@ private:
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
                     QStringLiteral("%1 calls the %2 %3, which no node started {by} serves.%4")
                         .arg(who(*u.part), kind, name, h),
-                    u.port->evidence, rel);
+                    u.port->evidence, rel, externalOf(name, false));
             }
     }
 
@@ -405,7 +435,7 @@ private:
             QStringLiteral("%1 remaps its %2 %3 to %4, which no node started {by} %5.%6")
                 .arg(who(*u.part), portKindName(u.port->kind), u.port->nameAsWritten, name,
                      counterpart, h),
-            u.part->evidence, rel);
+            u.part->evidence, rel, externalOf(name, isProvidingPort(u.port->kind)));
     }
 
     /// Publisher and subscription pairs whose literal QoS cannot match (ROS 2's request/offer
@@ -475,7 +505,8 @@ private:
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     const Observability &m_observability;
-    QSet<QString> m_viewed;            ///< topics an RViz configuration of the workspace displays
+    QSet<QString> m_viewed; ///< topics an RViz configuration of the workspace displays
+    QList<QRegularExpression> m_externalPatterns; ///< launch.externals', in order
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
     struct RemapElsewhere
     {

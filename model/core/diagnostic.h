@@ -39,6 +39,9 @@ struct Diagnostic
     /// (their messages named the system), so baselines and project files written before the
     /// merge still recognise it.
     QStringList aliases = {};
+    /// A finding about a port whose counterpart may be outside the system: the expected
+    /// external that would accept it, "input /scan" or "output /cmd_vel" ("" otherwise).
+    QString external = {};
 
     static QString severityName(Severity s);
     /// The finding's stable key (blueprint §5): its code, file and message, with no line or

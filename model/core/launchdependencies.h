@@ -121,6 +121,21 @@ struct LaunchArgument
     bool operator==(const LaunchArgument &) const = default;
 };
 
+/// A port whose counterpart is expected outside the workspace (blueprint §1, "Expected
+/// external inputs and outputs"): a driver, teleoperation, a bag, a tool. Declared in the
+/// project; such a port is no finding.
+struct ExpectedExternal
+{
+    /// A fully qualified topic, service or action name, or a pattern of one with `*` (within a
+    /// segment) and `**` (any segments), as parameter files write node names.
+    QString name;
+    /// True: something outside reads it (an output); false: something outside provides it (a
+    /// topic the system subscribes to, a service or action it calls).
+    bool output = false;
+    QString reason; ///< why, as the person said it
+    bool operator==(const ExpectedExternal &) const = default;
+};
+
 /// Stage 2's result: the Launch File Dependency Description.
 struct LaunchDependencies
 {
@@ -136,6 +151,9 @@ struct LaunchDependencies
     /// The topics the workspace's RViz configurations display (subscribers, by name as
     /// written, with the configuration's line): outputs that exist to be viewed.
     QList<Port> viewedTopics;
+    /// The ports the project expects to meet something outside the workspace (from the
+    /// analysis options): the checks do not report them.
+    QList<ExpectedExternal> externals;
     /// Each launch file analysed on its own with its declared defaults, in the classifier scope
     /// (RosNames::kClassifierScope), for its CCD: the runs' launch-file instances ("clf1", ...)
     /// and node instances ("cn1", ...). Not part of the system; not in the JSON.

@@ -27,7 +27,7 @@ template <class F> void fields(Diagnostic::Related &v, F f)
 }
 template <class F> void fields(Diagnostic &v, F f)
 {
-    f(v.severity, v.code, v.message, v.evidence, v.related, v.contexts, v.aliases);
+    f(v.severity, v.code, v.message, v.evidence, v.related, v.contexts, v.aliases, v.external);
 }
 template <class F> void fields(Port &v, F f)
 {
@@ -83,9 +83,13 @@ template <class F> void fields(LaunchArgument &v, F f)
 {
     f(v.name, v.defaultValue, v.hasDefault, v.description, v.launchFile, v.evidence);
 }
+template <class F> void fields(ExpectedExternal &v, F f)
+{
+    f(v.name, v.output, v.reason);
+}
 template <class F> void fields(LaunchDependencies &v, F f)
 {
-    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.entryPoints, v.viewedTopics,
+    f(v.launchFiles, v.instances, v.nodes, v.arguments, v.entryPoints, v.viewedTopics, v.externals,
       v.classifierInstances, v.classifierNodes, v.diagnostics, v.canceled);
 }
 template <class F> void fields(PartPort &v, F f)

@@ -156,6 +156,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     }
     runClassifiers(classifiers, executor, &out);
     out.viewedTopics = viewedTopics(workspace, &out.diagnostics);
+    out.externals = options.externals;
     // Canceled while the files ran on their own: their lists are incomplete, so the result
     // is not one to keep (nor to store as stage 2's memo).
     if (control.isCanceled()) {
@@ -317,6 +318,8 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
         QByteArray optionsPart;
         QDataStream s(&optionsPart, QIODevice::WriteOnly);
         s << options.rootFile << options.arguments;
+        for (const ExpectedExternal &e : options.externals)
+            s << e.name << e.output << e.reason;
         key = AnalysisCache::key({"stage2", stagememo::workspacePart(workspace, control, false),
                                   cache.digests().digestAll(workspace.root, paths), optionsPart,
                                   nodesPart(nodes, &locations)});

@@ -18,10 +18,13 @@ namespace rosarch {
 class LaunchReadAhead;
 
 /// What a person chose for stage 2: the root launch file and launch argument values.
+/// What a person chose for the analysis (kept in the project): the launch root and argument
+/// values stage 2 runs with, and the ports expected to meet something outside the workspace.
 struct LaunchOptions
 {
     QString rootFile;                 ///< workspace-relative; "" = every top-level launch file
     QMap<QString, QString> arguments; ///< name -> value (`--launch-arg name:=value`)
+    QList<ExpectedExternal> externals = {};
     bool operator==(const LaunchOptions &) const = default;
 };
 

@@ -8,7 +8,7 @@ namespace rosarch {
 namespace cachecodec {
 template <class F> void cacheFields(Tag, LaunchOptions &v, F f)
 {
-    f(v.rootFile, v.arguments);
+    f(v.rootFile, v.arguments, v.externals);
 }
 template <class F> void cacheFields(Tag, StageRequest &v, F f)
 {
@@ -98,6 +98,8 @@ void deltaFields(quint8 part, R &v, B &base, L list, F scalar)
         list(v.launch.nodes, base.launch.nodes);
         list(v.launch.arguments, base.launch.arguments);
         list(v.launch.entryPoints, base.launch.entryPoints);
+        list(v.launch.viewedTopics, base.launch.viewedTopics);
+        list(v.launch.externals, base.launch.externals);
         list(v.launch.classifierInstances, base.launch.classifierInstances);
         list(v.launch.classifierNodes, base.launch.classifierNodes);
         list(v.launch.diagnostics, base.launch.diagnostics);

@@ -149,6 +149,17 @@ QByteArray toJson(const Project &project)
         f.append(mark.toJson());
     if (!f.isEmpty())
         o.insert(QLatin1String("findings"), f);
+    QJsonArray externals;
+    for (const ExpectedExternal &e : project.launch.externals) {
+        QJsonObject x{{QLatin1String("name"), e.name},
+                      {QLatin1String("direction"),
+                       e.output ? QLatin1String("output") : QLatin1String("input")}};
+        if (!e.reason.isEmpty())
+            x.insert(QLatin1String("reason"), e.reason);
+        externals.append(x);
+    }
+    if (!externals.isEmpty())
+        o.insert(QLatin1String("externals"), externals);
     // QJsonObject keeps its keys sorted: the file diffs line by line
     return QJsonDocument(o).toJson(QJsonDocument::Indented);
 }
@@ -220,6 +231,18 @@ bool fromJson(const QByteArray &data, Project *project, QString *error)
     }
     std::sort(p.findings.begin(), p.findings.end(),
               [](const FindingMark &a, const FindingMark &b) { return a.key < b.key; });
+    for (const QJsonValue &v : o.value(QLatin1String("externals")).toArray()) {
+        const QJsonObject x = v.toObject();
+        if (!x.value(QLatin1String("name")).toString().startsWith(QLatin1Char('/'))) {
+            *error = QStringLiteral("the expected external %1 is not a fully qualified name")
+                         .arg(x.value(QLatin1String("name")).toString());
+            return false;
+        }
+        p.launch.externals.append(
+            {x.value(QLatin1String("name")).toString(),
+             x.value(QLatin1String("direction")).toString() == QLatin1String("output"),
+             x.value(QLatin1String("reason")).toString()});
+    }
     *project = p;
     return true;
 }

@@ -18,8 +18,8 @@ struct Project
 {
     /// The newest version this build reads and writes; files of a newer version are refused,
     /// not guessed at. A project is written as version 1 unless it uses what version 2 added
-    /// (findings), so that older builds still read it.
-    static constexpr int kVersion = 2;
+    /// (findings) or version 3 added (expected externals), so that older builds still read it.
+    static constexpr int kVersion = 3;
 
     LaunchOptions launch;
     /// Where the workspace is, as the file says it: "" = the file's folder, else a path relative
@@ -43,8 +43,9 @@ struct Project
     const Correction *correction(const QString &id) const;
     /// The mark of the finding with `key`, or null.
     const FindingMark *finding(const QString &key) const;
-    /// The version the file of this project needs: 2 when it marks findings, else 1.
-    int version() const { return findings.isEmpty() ? 1 : 2; }
+    /// The version the file of this project needs: 3 when it declares expected externals, 2
+    /// when it marks findings, else 1.
+    int version() const { return !launch.externals.isEmpty() ? 3 : findings.isEmpty() ? 1 : 2; }
     bool operator==(const Project &) const = default;
 };
 

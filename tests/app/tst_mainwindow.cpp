@@ -233,6 +233,42 @@ private Q_SLOTS:
         QCOMPARE(w.sourceView()->highlighted().line, 19);
     }
 
+    void aFindingIsAcceptedAsAnExpectedExternal()
+    {
+        // cpp_child_nodes reports /scan, which only a driver outside the workspace publishes.
+        MainWindow w;
+        w.resize(1400, 900);
+        w.show();
+        w.openWorkspace(test::dataDir(QStringLiteral("cpp_child_nodes/ws")));
+        const auto scanFinding = [&w]() -> QModelIndex {
+            QAbstractItemModel *m = w.logView()->diagnosticsView()->model();
+            for (int r = 0; r < m->rowCount(); ++r)
+                if (m->index(r, DiagnosticModel::MessageColumn)
+                        .data()
+                        .toString()
+                        .contains(QStringLiteral("subscribes to /scan,")))
+                    return m->index(r, 0);
+            return {};
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(scanFinding().isValid(), 60000);
+        QAction *accept = w.logView()->acceptExternalAction();
+        w.logView()->diagnosticsView()->setCurrentIndex(scanFinding());
+        QVERIFY(accept->isEnabled());
+        accept->trigger();
+        QCOMPARE(w.document()->launchOptions().externals.size(), qsizetype(1));
+        const ExpectedExternal &e = w.document()->launchOptions().externals.front();
+        QCOMPARE(e.name, QStringLiteral("/scan"));
+        QVERIFY(!e.output);
+        // The checks run again, without it; the project keeps the declaration.
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !scanFinding().isValid() && !w.document()->architecture().diagnostics.isEmpty(), 60000);
+        QCOMPARE(w.document()->project().launch.externals.size(), qsizetype(1));
+        QStringList left;
+        for (const Diagnostic &d : w.document()->architecture().diagnostics)
+            left << d.external;
+        QCOMPARE(left, QStringList{QStringLiteral("output /rover/near_grid/outline")});
+    }
+
     void exampleWorkspace()
     {
         MainWindow w;

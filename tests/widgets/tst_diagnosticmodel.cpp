@@ -396,7 +396,7 @@ private Q_SLOTS:
         QVERIFY(!ProjectFile::fromJson(
             "{\"version\": 2, \"findings\": [{\"key\": \"x\", \"status\": \"maybe\"}]}", &back,
             &error));
-        QVERIFY(!ProjectFile::fromJson("{\"version\": 3}", &back, &error));
+        QVERIFY(!ProjectFile::fromJson("{\"version\": 4}", &back, &error));
         QVERIFY(error.contains(QStringLiteral("newer")));
     }
 

@@ -179,6 +179,30 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QLatin1String("1 in the baseline")), qPrintable(r.out));
     }
 
+    void expectedExternalsOfTheProjectAreNoFindings()
+    {
+        // check_roots: the planner's /map comes from a map server outside the workspace.
+        QTemporaryDir dir;
+        const QString ws = workspace(QStringLiteral("check_roots/ws"));
+        Run r = runRosarch({QStringLiteral("check"), ws, QStringLiteral("--no-decisions")});
+        QVERIFY2(r.out.contains(QLatin1String("subscribes to /map,")), qPrintable(r.out));
+        const QString project = dir.filePath(QStringLiteral("rosarch.project.json"));
+        rosarch::test::writeFile(
+            project,
+            QJsonDocument(
+                QJsonObject{{QStringLiteral("version"), 3},
+                            {QStringLiteral("workspace"), ws},
+                            {QStringLiteral("externals"),
+                             QJsonArray{QJsonObject{
+                                 {QStringLiteral("name"), QStringLiteral("/map")},
+                                 {QStringLiteral("direction"), QStringLiteral("input")},
+                                 {QStringLiteral("reason"), QStringLiteral("map server")}}}}})
+                .toJson());
+        r = runRosarch({QStringLiteral("check"), ws, QStringLiteral("--project"), project});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(!r.out.contains(QLatin1String("subscribes to /map,")), qPrintable(r.out));
+    }
+
     void jsonAndJunit()
     {
         const QString ws = workspace(QStringLiteral("check_system/ws"));

@@ -295,6 +295,31 @@ private Q_SLOTS:
                                "/rover/world_grid/world_grid subscribes to /scan, which no "
                                "node started alongside it publishes.")}));
         QCOMPARE(r.launch.viewedTopics.size(), qsizetype(2));
+        QStringList externals;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            externals << d.external;
+        externals.sort();
+        QCOMPARE(externals, (QStringList{QStringLiteral("input /scan"),
+                                         QStringLiteral("output /rover/near_grid/outline")}));
+    }
+
+    void expectedExternalsAreNoFindings()
+    {
+        // The two findings of cpp_child_nodes, declared as expected externals: one by its
+        // name, one by a pattern; a declaration of the other direction accepts nothing.
+        const QString ws = test::dataDir(QStringLiteral("cpp_child_nodes/ws"));
+        LaunchOptions options;
+        options.externals = {{QStringLiteral("/scan"), true, QString()}};
+        QCOMPARE(recoverWorkspace(ws, options).architecture.diagnostics.size(), qsizetype(2));
+        options.externals = {{QStringLiteral("/scan"), false, QStringLiteral("lidar driver")},
+                             {QStringLiteral("/rover/*/outline"), true, QString()}};
+        const Recovery r = recoverWorkspace(ws, options);
+        QVERIFY2(r.architecture.diagnostics.isEmpty(),
+                 qPrintable(r.architecture.diagnostics.value(0).message));
+        options.externals = {{QStringLiteral("/**"), true, QString()}};
+        const QList<Diagnostic> left = recoverWorkspace(ws, options).architecture.diagnostics;
+        QCOMPARE(left.size(), qsizetype(1));
+        QCOMPARE(left.front().code, QStringLiteral("topic-unpublished"));
     }
 
     void judgeEntryPointsAndLeaveToolsOutputsAndBuildingBlocksAlone()

@@ -303,6 +303,23 @@ private Q_SLOTS:
         QCOMPARE(ProjectFile::autosavePath(copy), dir.filePath(QStringLiteral(".p.json.autosave")));
     }
 
+    void expectedExternalsRoundTripAsVersion3()
+    {
+        Project p;
+        QCOMPARE(p.version(), 1);
+        p.launch.externals = {{QStringLiteral("/scan"), false, QStringLiteral("lidar driver")},
+                              {QStringLiteral("/**/debug/*"), true, QString()}};
+        QCOMPARE(p.version(), 3);
+        const QByteArray json = ProjectFile::toJson(p);
+        QVERIFY(json.contains("\"direction\": \"input\""));
+        QVERIFY(json.contains("\"direction\": \"output\""));
+        Project again;
+        QString error;
+        QVERIFY2(ProjectFile::fromJson(json, &again, &error), qPrintable(error));
+        QCOMPARE(again.launch.externals, p.launch.externals);
+        QCOMPARE(again, p);
+    }
+
     void aBadProjectFileGetsAClearMessage_data()
     {
         QTest::addColumn<QByteArray>("content");
@@ -326,6 +343,13 @@ private Q_SLOTS:
                           "\"review\", \"target\": \"topic:/a\"}, {\"id\": \"c1\", \"kind\": "
                           "\"review\", \"target\": \"topic:/b\"}]}")
             << QStringLiteral("two corrections have the id c1");
+        QTest::newRow("external not fully qualified")
+            << QByteArray("{\"version\": 3, \"externals\": [{\"name\": \"scan\", "
+                          "\"direction\": \"input\"}]}")
+            << QStringLiteral("the expected external scan is not a fully qualified name");
+        QTest::newRow("external without direction")
+            << QByteArray("{\"version\": 3, \"externals\": [{\"name\": \"/scan\"}]}")
+            << QStringLiteral("missing required property \"direction\"");
         QTest::newRow("argument not text")
             << QByteArray("{\"version\": 1, \"launch\": {\"arguments\": {\"sim\": true}}}")
             << QStringLiteral("$.launch.arguments.sim: expected string");
