@@ -89,8 +89,12 @@ void wire(Composite *c)
     QHash<QString, QList<Endpoint>> groups;
     // A name built on a guess meets only names built on a guess: under another value of the
     // launch argument, it would not be the decided name it happens to equal under the guess.
+    // A launch file's own CCD lives in the root namespace (blueprint §1, "Wiring in a launch
+    // file's own CCD"): its relative `a/b` and an absolute `/a/b` are one channel; the names
+    // keep their spelling, the first one met names the channel.
     auto keyOf = [](Family f, const QString &name, bool guessed) {
-        return QString::number(int(f)) + (guessed ? u'?' : u':') + name;
+        return QString::number(int(f)) + (guessed ? u'?' : u':') +
+               (name.startsWith(QLatin1Char('/')) ? name : QLatin1Char('/') + name);
     };
     for (const RosNodePart &part : c->parts) {
         if (!part.active)
@@ -150,7 +154,7 @@ void wire(Composite *c)
         for (const Endpoint &e : eps) {
             const QString prefix = portIdPrefix(e.port->kind);
             const QString id = prefix + QString::number(++counters[prefix]);
-            c->boundary.append({id, e.port->kind, name, e.port->type, e.port->guessed});
+            c->boundary.append({id, e.port->kind, e.port->name, e.port->type, e.port->guessed});
             const bool in = c->boundary.constLast().isInput();
             c->connections.append(
                 {in ? Connection::Kind::DelegationIn : Connection::Kind::DelegationOut, e.part->id,

@@ -63,7 +63,10 @@ void collect(const Architecture &arch, const Composite &c, Graph *g, int depth)
                 ++g->unresolved;
                 continue;
             }
-            const QString channel = portFamilyName(p.kind) + QLatin1Char(' ') + p.name;
+            // One wiring rule with the CCDs: a name built on a guess meets only names built on
+            // a guess ("?" marks it; the label says so).
+            const QString channel = portFamilyName(p.kind) + QLatin1Char(' ') + p.name +
+                                    (p.guessed ? QStringLiteral("?") : QString());
             if (!g->channels.contains(channel) || g->channels.value(channel).isEmpty())
                 g->channels.insert(channel, p.type);
             const QString n = quoted(QStringLiteral("node ") + node);
@@ -99,7 +102,9 @@ QString CommunicationGraph::dot(const Architecture &architecture, const Composit
                         quoted(it.key() + QLatin1Char('\n') + it.value()));
     for (auto it = g.channels.cbegin(); it != g.channels.cend(); ++it) {
         const QString kind = it.key().section(QLatin1Char(' '), 0, 0);
-        const QString name = it.key().section(QLatin1Char(' '), 1);
+        QString name = it.key().section(QLatin1Char(' '), 1);
+        if (name.endsWith(QLatin1Char('?')))
+            name = name.chopped(1) + QStringLiteral(" (guessed)");
         const QString shape = kind == QLatin1String("topic")     ? QStringLiteral("box")
                               : kind == QLatin1String("service") ? QStringLiteral("hexagon")
                                                                  : QStringLiteral("octagon");

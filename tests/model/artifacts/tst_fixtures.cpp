@@ -7,6 +7,7 @@
 #include "architecturejson.h"
 #include "atomicnodesjson.h"
 #include "ccdwriter.h"
+#include "communicationgraph.h"
 #include "launchdependenciesjson.h"
 #include "nodeanalyzer.h"
 #include "recovery.h"
@@ -105,6 +106,86 @@ private Q_SLOTS:
             ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"),
                         CcdWriter::write(*c).toUtf8());
         compareDiagrams(ccds, QDir(caseDir).filePath(QStringLiteral("expected/ccd")));
+    }
+
+    void ccdChannelsAreTheGraphs_data() { recovery_data(); }
+
+    // One wiring rule (blueprint §1): for every system, the channels of its CCDs (the root's
+    // and its includes') are the names the communication graph shows with both sides; for a
+    // root that includes nothing, so are the channels of the launch file's own CCD, whose
+    // relative and absolute spellings of one name are one channel.
+    void ccdChannelsAreTheGraphs()
+    {
+        QFETCH(QString, caseDir);
+        const Recovery r = recoverWorkspace(workspaceOf(caseDir));
+        const Architecture &arch = r.architecture;
+        const auto absolute = [](const Channel &ch) {
+            const QString family = ch.kind == Channel::Kind::Topic     ? QStringLiteral("topic")
+                                   : ch.kind == Channel::Kind::Service ? QStringLiteral("service")
+                                                                       : QStringLiteral("action");
+            return family + QLatin1Char(' ') +
+                   (ch.name.startsWith(QLatin1Char('/')) ? ch.name : QLatin1Char('/') + ch.name);
+        };
+        for (const Composite &root : arch.composites) {
+            if (!root.parentId.isEmpty())
+                continue;
+            // the graph: channel nodes with an edge in and an edge out
+            const QString dot = CommunicationGraph::dot(arch, root);
+            static const QRegularExpression edge(QStringLiteral(R"re(^  "(.+)" -> "(.+)" \[)re"));
+            QSet<QString> into, outOf;
+            for (const QString &line : dot.split(QLatin1Char('\n'))) {
+                const QRegularExpressionMatch m = edge.match(line);
+                if (!m.hasMatch())
+                    continue;
+                // a guessed name ("topic /x?") is a channel of its own, as in the CCD
+                if (!m.captured(1).startsWith(QLatin1String("node ")))
+                    outOf.insert(m.captured(1));
+                if (!m.captured(2).startsWith(QLatin1String("node ")))
+                    into.insert(m.captured(2));
+            }
+            QStringList graph;
+            const QSet<QString> both = QSet<QString>(into).intersect(outOf);
+            for (const QString &name : both)
+                graph << (name.endsWith(QLatin1Char('?')) ? name.chopped(1) : name);
+            graph.sort();
+            // the system's CCDs: the root and every composite below it
+            QSet<QString> below{root.instanceId};
+            QSet<QString> channels;
+            qsizetype composites = 0;
+            for (bool grew = true; grew;) {
+                grew = false;
+                for (const Composite &c : arch.composites)
+                    if (below.contains(c.parentId) && !below.contains(c.instanceId)) {
+                        below.insert(c.instanceId);
+                        grew = true;
+                    }
+            }
+            for (const Composite &c : arch.composites)
+                if (below.contains(c.instanceId)) {
+                    ++composites;
+                    for (const Channel &ch : c.channels)
+                        channels.insert(absolute(ch));
+                }
+            QStringList system = channels.values();
+            system.sort();
+            QVERIFY2(system == graph,
+                     qPrintable(root.file + QStringLiteral(": CCDs ") + system.join(u',') +
+                                QStringLiteral(" / graph ") + graph.join(u',')));
+            if (composites != 1)
+                continue;
+            for (const Composite &own : arch.classifiers) {
+                if (own.file != root.file)
+                    continue;
+                QSet<QString> names;
+                for (const Channel &ch : own.channels)
+                    names.insert(absolute(ch));
+                QStringList file = names.values();
+                file.sort();
+                QVERIFY2(file == graph,
+                         qPrintable(root.file + QStringLiteral(": own CCD ") + file.join(u',') +
+                                    QStringLiteral(" / graph ") + graph.join(u',')));
+            }
+        }
     }
 
     void outputIsDeterministic()
