@@ -40,6 +40,10 @@ public:
             const Observability &observability, QList<Diagnostic> *out)
         : m_nodes(nodes), m_launch(launch), m_observability(observability), m_out(out)
     {
+        for (const LaunchArgument &a : launch.arguments)
+            if (a.hasDefault && a.defaultValue.startsWith(QLatin1Char('/')) &&
+                a.defaultValue.size() > 1)
+                m_argumentDefaults[a.launchFile].insert(a.defaultValue);
         // `**` any segments, `*` within one, as parameter files match node names
         for (const ExpectedExternal &e : launch.externals) {
             QString rx = QRegularExpression::escape(e.name);
@@ -83,9 +87,12 @@ public:
         m_nodeOrder.clear();
         m_nodeCount = 0;
         m_current = systemName(root);
+        m_rootArguments = m_argumentDefaults.value(root.file);
         collect(root, 0);
         // A launch file that starts one node is a building block, not a system: every port
         // of that node is its interface to whatever runs beside it, so nothing is missing.
+        // Its child nodes run in its process, and a component container (a node without
+        // ports or a class) only hosts it: neither makes the file a system.
         m_lone = m_nodeCount < 2;
         for (const QString &key : std::as_const(m_order))
             checkName(key);
@@ -107,7 +114,8 @@ private:
                     collect(*child, depth + 1);
                 continue;
             }
-            ++m_nodeCount;
+            if (startsProcessWithPorts(part))
+                ++m_nodeCount;
             if (nameIsKnown(part)) {
                 const QString fq = who(part);
                 if (!m_named.contains(fq))
@@ -219,6 +227,14 @@ private:
             if (m_viewed.contains(name.mid(at)))
                 return true;
         return false;
+    }
+
+    /// A name the system's other side is expected outside of: declared so in the project, or
+    /// the default of a launch argument the entry point declares (the file takes the name
+    /// from whoever includes it: `<arg name="output/objects" default="/perception/rois"/>`).
+    bool isInterface(const QString &name, bool output) const
+    {
+        return isExpectedExternal(name, output) || m_rootArguments.contains(name);
     }
 
     /// Declared in the project as expected to meet something outside the workspace.
@@ -342,7 +358,7 @@ private:
                 for (const Use &u : f.users) {
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (isExpectedExternal(name, false) || openByDesign(u, &rel, &h))
+                    if (isInterface(name, false) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("publishes"));
@@ -364,7 +380,7 @@ private:
                         continue;
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (isExpectedExternal(name, true) || openByDesign(u, &rel, &h))
+                    if (isInterface(name, true) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("subscribes to"));
@@ -403,7 +419,7 @@ private:
             for (const Use &u : f.users) {
                 QList<Diagnostic::Related> rel;
                 QString h;
-                if (isExpectedExternal(name, false) || openByDesign(u, &rel, &h))
+                if (isInterface(name, false) || openByDesign(u, &rel, &h))
                     continue;
                 if (u.port->remapped) {
                     remapTargetUnused(u, name, QStringLiteral("serves"));
@@ -482,6 +498,14 @@ private:
 
     /// Whether the part runs only by the best guess: its condition, or that of a group or
     /// include around it, could not be decided (an argument nobody sets, say).
+    /// A node the launch file starts itself (not a child node made by another node's code)
+    /// that can take part in wiring: its class is known, or it has ports.
+    bool startsProcessWithPorts(const RosNodePart &part) const
+    {
+        const NodeInstance *n = m_launch.node(part.instanceId);
+        return (!n || n->parentNode.isEmpty()) && (part.typed || !part.ports.isEmpty());
+    }
+
     bool runsByGuess(const RosNodePart &part) const
     {
         const NodeInstance *n = m_launch.node(part.instanceId);
@@ -506,7 +530,9 @@ private:
     const LaunchDependencies &m_launch;
     const Observability &m_observability;
     QSet<QString> m_viewed; ///< topics an RViz configuration of the workspace displays
-    QList<QRegularExpression> m_externalPatterns; ///< launch.externals', in order
+    QHash<QString, QSet<QString>> m_argumentDefaults; ///< entry point -> absolute defaults
+    QSet<QString> m_rootArguments;                    ///< those of the system being checked
+    QList<QRegularExpression> m_externalPatterns;     ///< launch.externals', in order
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
     struct RemapElsewhere
     {
@@ -521,8 +547,8 @@ private:
     QStringList m_nodeOrder;
     QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out
     QString m_current;          ///< the system being checked
-    int m_nodeCount = 0;        ///< active node parts of the system being checked
-    bool m_lone = false;        ///< the system starts fewer than two nodes
+    int m_nodeCount = 0; ///< active node parts of the system being checked that it starts itself
+    bool m_lone = false; ///< the system starts fewer than two nodes
 };
 
 /// A system the checks judge: a root launch-file instance of an entry point. Without entry

@@ -23,14 +23,17 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "publishes, so its callback never runs in that system. Usually a misspelt or "
              "unremapped name (the message names the most similar published topic), or a "
              "publisher outside the workspace (a driver, a simulator). Fix the name, add the "
-             "remap, or accept the finding when the publisher is external.",
+             "remap, or, when the publisher is outside the workspace, accept the topic as an "
+             "expected external input (X): the project records it for every system.",
              "warning"),
         kind("topic-unheard", "Publisher that nobody subscribes to",
              "A node publishes a topic that no node of the same system subscribes to. Outputs "
              "meant for tools (debug, visualisation, diagnostics, processing time: recognised "
              "by message package, name and helper, see interfaces/observability.json) are not "
-             "reported. Worth a look when the name is close to a subscribed one; otherwise "
-             "remove the publisher, or accept the finding when a tool outside reads it.",
+             "reported, nor topics an RViz configuration of the workspace displays. Worth a "
+             "look when the name is close to a subscribed one; otherwise remove the publisher, "
+             "or, when something outside reads it, accept it as an expected external output "
+             "(X).",
              "note"),
         kind("type-mismatch", "One name, several interface types",
              "The publishers, subscriptions, servers or clients of one name use different "
@@ -45,8 +48,8 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "warning"),
         kind("unserved-client", "Client that no node serves",
              "A node calls a service or action that no node of the same system serves; the "
-             "call waits forever. Check the name and the remaps, or accept the finding when the "
-             "server is outside the workspace.",
+             "call waits forever. Check the name and the remaps, or, when the server is outside "
+             "the workspace, accept it as an expected external input (X).",
              "note"),
         kind("duplicate-node-name", "Two nodes with one name",
              "Two nodes of a system have the same fully qualified name. ROS 2 starts both, but "
@@ -57,7 +60,9 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
         kind("remap-target-unused", "Remap to a name nobody uses",
              "A launch file remaps a port to a name that no other node of the system uses on "
              "the other side, so the remap connects nothing. The target is often misspelt (the "
-             "message names the most similar existing one) or the counterpart is not started.",
+             "message names the most similar existing one) or the counterpart is not started; "
+             "when the counterpart is outside the workspace, accept the name as an expected "
+             "external (X).",
              "warning"),
         kind("remap-unmatched", "Remap that matches no port",
              "A remap rule given to a node renames none of its ports: after ROS 2 expands both "

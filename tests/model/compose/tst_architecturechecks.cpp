@@ -303,6 +303,21 @@ private Q_SLOTS:
                                          QStringLiteral("output /rover/near_grid/outline")}));
     }
 
+    void namesAnEntryPointTakesAsArgumentsAreItsInterface()
+    {
+        // launch_root_wiring: avoidance.launch.xml remaps the avoider's input to an argument
+        // whose default is /front/range; robot.launch.py wires everything it starts.
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("launch_root_wiring/ws")));
+        QStringList found;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            found << QStringLiteral("%1 %2 | %3")
+                         .arg(d.code, d.message, d.contexts.join(QLatin1Char(',')));
+        QCOMPARE(found, QStringList{QStringLiteral(
+                            "topic-unheard /range_sim publishes /sim/range, which no node "
+                            "started alongside it subscribes to. | "
+                            "src/pad_robot/launch/avoidance.launch.xml")});
+    }
+
     void expectedExternalsAreNoFindings()
     {
         // The two findings of cpp_child_nodes, declared as expected externals: one by its

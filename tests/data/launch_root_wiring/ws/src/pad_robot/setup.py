@@ -8,7 +8,7 @@ setup(
     packages=[package_name],
     data_files=[
         ('share/' + package_name, ['package.xml']),
-        ('share/' + package_name + '/launch', ['launch/robot.launch.py']),
+        ('share/' + package_name + '/launch', ['launch/robot.launch.py', 'launch/avoidance.launch.xml']),
     ],
     install_requires=['setuptools'],
     entry_points={
