@@ -112,6 +112,8 @@ struct CppMethodCall
     QString method;
     QStringList templateArguments; ///< as written
     QList<CppValue> arguments;
+    QString guard;       ///< enclosing `if` conditions, as for a port call
+    CppValue guardValue; ///< the variable (or parameter read) the guard tests
     Evidence evidence;
 };
 

@@ -38,7 +38,7 @@ template <class F> void fields(CppInstantiation &v, F f)
 }
 template <class F> void fields(CppMethodCall &v, F f)
 {
-    f(v.member, v.method, v.templateArguments, v.arguments, v.evidence);
+    f(v.member, v.method, v.templateArguments, v.arguments, v.guard, v.guardValue, v.evidence);
 }
 template <class F> void fields(CppFreeCall &v, F f)
 {

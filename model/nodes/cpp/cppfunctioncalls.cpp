@@ -163,6 +163,7 @@ void CppFunctionExtractor::addMethodCall(TSNode call, const CallShape &shape,
     }
     if (!named && c.templateArguments.isEmpty())
         return; // `pub_->publish(msg)`: nothing a lazy helper would key a port by
+    m_portCalls.guardOf(call, &c.guard, &c.guardValue);
     c.evidence = m_tree.evidence(call);
     m_function.methodCalls.append(c);
 }
