@@ -54,7 +54,19 @@ QList<Port> viewedTopics(const Workspace &workspace, QList<Diagnostic> *diagnost
         QByteArray content;
         if (!reader.read(f.path, &content, diagnostics))
             continue;
-        for (const Port &p : rviz->portsFromConfig(content, f.path, 1))
+        const QList<Port> read = rviz->portsFromConfig(content, f.path, 1);
+        if (read.size() >= InterfaceModel::kMaxConfigPorts) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Warning;
+            d.code = QStringLiteral("launch-evaluation-limit");
+            d.message = QStringLiteral("%1 names more than %2 topics; the first %2 are taken as "
+                                       "displayed (observability outputs), the rest are not.")
+                            .arg(f.path)
+                            .arg(InterfaceModel::kMaxConfigPorts);
+            d.evidence = Evidence::startOf(f.path);
+            diagnostics->append(d);
+        }
+        for (const Port &p : read)
             if (p.kind == PortKind::Subscriber && !p.name.startsWith(QLatin1Char('~')))
                 out.append(p);
     }

@@ -6,6 +6,7 @@
 #include "recovery.h"
 #include "testsupport.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace rosarch;
@@ -316,6 +317,32 @@ private Q_SLOTS:
                             "topic-unheard /range_sim publishes /sim/range, which no node "
                             "started alongside it subscribes to. | "
                             "src/pad_robot/launch/avoidance.launch.xml")});
+    }
+
+    void rvizConfigurationsAreReadWithinBounds()
+    {
+        // A configuration naming 3,000 topics gives the first 1,000 and says so; a binary one
+        // is skipped with a diagnostic, like any binary file.
+        QTemporaryDir dir;
+        const QString root = dir.path();
+        test::writeFile(root + "/src/p/package.xml",
+                        "<package format=\"3\"><name>p</name><export><build_type>ament_cmake"
+                        "</build_type></export></package>");
+        QByteArray big = "Visualization Manager:\n  Displays:\n";
+        for (int i = 0; i < 3000; ++i)
+            big += "    - Class: rviz_default_plugins/Map\n      Topic:\n        Value: /t" +
+                   QByteArray::number(i) + "\n";
+        test::writeFile(root + "/src/p/rviz/big.rviz", big);
+        test::writeFile(root + "/src/p/rviz/bin.rviz", QByteArray("Panels:\0\x01\xff", 11));
+        const Recovery r = recoverWorkspace(root);
+        QCOMPARE(r.launch.viewedTopics.size(), qsizetype(1000));
+        QStringList codes;
+        for (const Diagnostic &d : r.nodes.diagnostics + r.launch.diagnostics)
+            codes << d.code + QLatin1Char(' ') + d.evidence.file;
+        QVERIFY2(codes.contains(QStringLiteral("launch-evaluation-limit src/p/rviz/big.rviz")),
+                 qPrintable(codes.join(u',')));
+        QVERIFY2(codes.contains(QStringLiteral("binary-file src/p/rviz/bin.rviz")),
+                 qPrintable(codes.join(u',')));
     }
 
     void expectedExternalsAreNoFindings()
