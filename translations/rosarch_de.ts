@@ -823,7 +823,7 @@ Wrote %12 files to %13
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/commands/workspacerun.cpp" line="85"/>
+        <location filename="../app/commands/workspacerun.cpp" line="86"/>
         <source>The project cannot be used: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2796,37 +2796,37 @@ The file was kept as %2.</source>
         <translation>Alle Launch-Files der obersten Ebene</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="214"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="216"/>
         <source>The value stage 2 gives %1; leave empty for the default</source>
         <translation>Der Wert, den Stufe 2 für %1 verwendet; leer lassen für den Standardwert</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="224"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="226"/>
         <source>Not declared by a top-level launch file</source>
         <translation>Von keinem Launch-File der obersten Ebene deklariert</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="225"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="227"/>
         <source>Not declared by this launch file</source>
         <translation>Nicht von diesem Launch-File deklariert</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="231"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="233"/>
         <source>(none)</source>
         <translation>(keiner)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="235"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="237"/>
         <source>%1 has no default: without a value the analysis continues with a guess.</source>
         <translation>%1 hat keinen Standardwert: Ohne Wert arbeitet die Analyse mit einer Annahme weiter.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="261"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="263"/>
         <source>The arguments %1 declares are listed once stage 2 has run with it as the root: run it, then open this dialog again. Values you add here are used.</source>
         <translation>Die Argumente, die %1 deklariert, werden aufgeführt, sobald Stufe 2 mit dieser Datei als Wurzel gelaufen ist: Führen Sie Stufe 2 aus und öffnen Sie dann diesen Dialog erneut. Hier hinzugefügte Werte werden verwendet.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchargumentsdialog.cpp" line="266"/>
+        <location filename="../widgets/launchargumentsdialog.cpp" line="268"/>
         <source>No launch arguments are declared. Add one to give it a value.</source>
         <translation>Es sind keine Launch-Argumente deklariert. Fügen Sie eines hinzu, um ihm einen Wert zu geben.</translation>
     </message>
@@ -2979,189 +2979,199 @@ The file was kept as %2.</source>
     </message>
     <message>
         <location filename="../widgets/launchtreetext.cpp" line="96"/>
-        <location filename="../widgets/launchtreetext.cpp" line="118"/>
+        <source>child node, created in code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="98"/>
+        <location filename="../widgets/launchtreetext.cpp" line="120"/>
         <source>if: %1</source>
         <translation>wenn: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="98"/>
+        <location filename="../widgets/launchtreetext.cpp" line="100"/>
         <source>container of 1 component</source>
         <translation>Container mit 1 Komponente</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="99"/>
+        <location filename="../widgets/launchtreetext.cpp" line="101"/>
         <source>container of %1 components</source>
         <translation>Container mit %1 Komponenten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="101"/>
+        <location filename="../widgets/launchtreetext.cpp" line="103"/>
         <source>lifecycle</source>
         <translation>Lifecycle</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="103"/>
+        <location filename="../widgets/launchtreetext.cpp" line="105"/>
         <source>remap: %1</source>
         <translation>Remap: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="105"/>
+        <location filename="../widgets/launchtreetext.cpp" line="107"/>
         <source>param: %1</source>
         <translation>Param: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="107"/>
+        <location filename="../widgets/launchtreetext.cpp" line="109"/>
         <source>1 unresolved</source>
         <translation>1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="108"/>
+        <location filename="../widgets/launchtreetext.cpp" line="110"/>
         <source>%1 unresolved</source>
         <translation>%1 unaufgelöst</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="116"/>
+        <location filename="../widgets/launchtreetext.cpp" line="118"/>
         <source>external</source>
         <translation>extern</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="122"/>
+        <location filename="../widgets/launchtreetext.cpp" line="124"/>
         <source>1 node</source>
         <translation>1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="123"/>
+        <location filename="../widgets/launchtreetext.cpp" line="125"/>
         <source>%1 nodes</source>
         <translation>%1 Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="126"/>
+        <location filename="../widgets/launchtreetext.cpp" line="128"/>
         <source>1 include</source>
         <translation>1 Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="127"/>
+        <location filename="../widgets/launchtreetext.cpp" line="129"/>
         <source>%1 includes</source>
         <translation>%1 Includes</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="137"/>
+        <location filename="../widgets/launchtreetext.cpp" line="139"/>
         <source>unresolved (%1)</source>
         <translation>unaufgelöst (%1)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="138"/>
+        <location filename="../widgets/launchtreetext.cpp" line="140"/>
         <source>unresolved (%1) · guess: %2</source>
         <translation>unaufgelöst (%1) · Annahme: %2</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="144"/>
+        <location filename="../widgets/launchtreetext.cpp" line="146"/>
         <source>Composable node</source>
         <translation>Komponierbarer Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="145"/>
+        <location filename="../widgets/launchtreetext.cpp" line="147"/>
         <source>Lifecycle node</source>
         <translation>Lifecycle-Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="146"/>
+        <location filename="../widgets/launchtreetext.cpp" line="148"/>
         <source>Node</source>
         <translation>Knoten</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="150"/>
+        <location filename="../widgets/launchtreetext.cpp" line="152"/>
         <source>Namespace and name: guesses, built from a launch value nobody sets; so are the relative and private names of its ports</source>
         <translation>Namespace und Name: Vermutungen, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die relativen und privaten Namen seiner Ports</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="153"/>
+        <location filename="../widgets/launchtreetext.cpp" line="155"/>
         <source>Namespace: a guess, built from a launch value nobody sets; so are the relative and private names of its ports</source>
         <translation>Namespace: eine Vermutung, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die relativen und privaten Namen seiner Ports</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="156"/>
+        <location filename="../widgets/launchtreetext.cpp" line="158"/>
         <source>Name: a guess, built from a launch value nobody sets; so are the private names of its ports</source>
         <translation>Name: eine Vermutung, gebildet aus einem Launch-Wert, den niemand setzt; ebenso die privaten Namen seiner Ports</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="159"/>
-        <location filename="../widgets/launchtreetext.cpp" line="237"/>
+        <location filename="../widgets/launchtreetext.cpp" line="161"/>
+        <source>Child node: created in code at %1; it runs in the process of the node that creates it, with that launch line&apos;s remaps and parameter files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/launchtreetext.cpp" line="165"/>
+        <location filename="../widgets/launchtreetext.cpp" line="243"/>
         <source>Package: %1</source>
         <translation>Paket: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="162"/>
+        <location filename="../widgets/launchtreetext.cpp" line="168"/>
         <source>Plugin: %1</source>
         <translation>Plugin: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="162"/>
+        <location filename="../widgets/launchtreetext.cpp" line="168"/>
         <source>Executable: %1</source>
         <translation>Executable: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="165"/>
+        <location filename="../widgets/launchtreetext.cpp" line="171"/>
         <source>Class: %1</source>
         <translation>Klasse: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="170"/>
+        <location filename="../widgets/launchtreetext.cpp" line="176"/>
         <source>Class: not found in the workspace</source>
         <translation>Klasse: nicht im Workspace gefunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="171"/>
+        <location filename="../widgets/launchtreetext.cpp" line="177"/>
         <source>Class: not analysed; package %1 is not in the workspace</source>
         <translation>Klasse: nicht analysiert; Paket %1 liegt nicht im Workspace</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="175"/>
+        <location filename="../widgets/launchtreetext.cpp" line="181"/>
         <source>Loaded into container: %1</source>
         <translation>Geladen in Container: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="183"/>
+        <location filename="../widgets/launchtreetext.cpp" line="189"/>
         <source>Condition: %1 (undecidable: kept, as if true)</source>
         <translation>Bedingung: %1 (nicht entscheidbar: beibehalten, als wäre sie wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="184"/>
-        <location filename="../widgets/launchtreetext.cpp" line="240"/>
+        <location filename="../widgets/launchtreetext.cpp" line="190"/>
+        <location filename="../widgets/launchtreetext.cpp" line="246"/>
         <source>Condition: %1 (true)</source>
         <translation>Bedingung: %1 (wahr)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="181"/>
+        <location filename="../widgets/launchtreetext.cpp" line="187"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not started)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht gestartet)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="186"/>
+        <location filename="../widgets/launchtreetext.cpp" line="192"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that declares it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das ihn deklariert, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="196"/>
+        <location filename="../widgets/launchtreetext.cpp" line="202"/>
         <source>Remappings:</source>
         <translation>Remaps:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="202"/>
+        <location filename="../widgets/launchtreetext.cpp" line="208"/>
         <source>file %1</source>
         <translation>Datei %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="204"/>
+        <location filename="../widgets/launchtreetext.cpp" line="210"/>
         <source>Parameters given:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="210"/>
+        <location filename="../widgets/launchtreetext.cpp" line="216"/>
         <source>Loads plugins:</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../widgets/launchtreetext.cpp" line="213"/>
+        <location filename="../widgets/launchtreetext.cpp" line="219"/>
         <source>Parameters in effect: %n (listed under the node, each with its source)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3169,124 +3179,124 @@ The file was kept as %2.</source>
         </translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="286"/>
+        <location filename="../widgets/launchtreetext.cpp" line="292"/>
         <source>default in code</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="292"/>
+        <location filename="../widgets/launchtreetext.cpp" line="298"/>
         <source>launch file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="301"/>
+        <location filename="../widgets/launchtreetext.cpp" line="307"/>
         <source>No launch value or parameter file sets it: the default declared in code, at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="305"/>
+        <location filename="../widgets/launchtreetext.cpp" line="311"/>
         <source>From the parameter file %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="307"/>
+        <location filename="../widgets/launchtreetext.cpp" line="313"/>
         <source>Set by the launch file at %1.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="216"/>
-        <location filename="../widgets/launchtreetext.cpp" line="251"/>
+        <location filename="../widgets/launchtreetext.cpp" line="222"/>
+        <location filename="../widgets/launchtreetext.cpp" line="257"/>
         <source>Not resolved statically:</source>
         <translation>Nicht statisch aufgelöst:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="192"/>
+        <location filename="../widgets/launchtreetext.cpp" line="198"/>
         <source>%1 → %2 (a guess: built from a launch value nobody sets)</source>
         <translation>%1 → %2 (eine Vermutung: aus einem Launch-Wert, den niemand setzt)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="218"/>
+        <location filename="../widgets/launchtreetext.cpp" line="224"/>
         <source>Declared at %1</source>
         <translation>Deklariert in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="226"/>
+        <location filename="../widgets/launchtreetext.cpp" line="232"/>
         <source>Launch file</source>
         <translation>Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="227"/>
+        <location filename="../widgets/launchtreetext.cpp" line="233"/>
         <source>External include</source>
         <translation>Externes Include</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="228"/>
+        <location filename="../widgets/launchtreetext.cpp" line="234"/>
         <source>Included launch file</source>
         <translation>Eingebundenes Launch-File</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="232"/>
+        <location filename="../widgets/launchtreetext.cpp" line="238"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="234"/>
+        <location filename="../widgets/launchtreetext.cpp" line="240"/>
         <source>Package %1 is not in the workspace; its nodes are not analysed.</source>
         <translation>Paket %1 liegt nicht im Workspace; seine Knoten werden nicht analysiert.</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="241"/>
+        <location filename="../widgets/launchtreetext.cpp" line="247"/>
         <source>Condition: %1 (&lt;b&gt;false&lt;/b&gt;: not included)</source>
         <translation>Bedingung: %1 (&lt;b&gt;falsch&lt;/b&gt;: nicht eingebunden)</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="243"/>
+        <location filename="../widgets/launchtreetext.cpp" line="249"/>
         <source>&lt;b&gt;Inactive:&lt;/b&gt; the launch file that includes it is not included</source>
         <translation>&lt;b&gt;Inaktiv:&lt;/b&gt; Das Launch-File, das es einbindet, wird nicht eingebunden</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="248"/>
+        <location filename="../widgets/launchtreetext.cpp" line="254"/>
         <source>Launch arguments:</source>
         <translation>Launch-Argumente:</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="253"/>
-        <location filename="../widgets/launchtreetext.cpp" line="278"/>
+        <location filename="../widgets/launchtreetext.cpp" line="259"/>
+        <location filename="../widgets/launchtreetext.cpp" line="284"/>
         <source>At %1</source>
         <translation>In %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="253"/>
+        <location filename="../widgets/launchtreetext.cpp" line="259"/>
         <source>Included at %1</source>
         <translation>Eingebunden in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="261"/>
+        <location filename="../widgets/launchtreetext.cpp" line="267"/>
         <source>&lt;b&gt;Namespace&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Namespace&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="262"/>
+        <location filename="../widgets/launchtreetext.cpp" line="268"/>
         <source>Pushed in %1</source>
         <translation>Gesetzt in %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="264"/>
+        <location filename="../widgets/launchtreetext.cpp" line="270"/>
         <source>1 instance inside this scope</source>
         <translation>1 Instanz in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="265"/>
+        <location filename="../widgets/launchtreetext.cpp" line="271"/>
         <source>%1 instances inside this scope</source>
         <translation>%1 Instanzen in diesem Bereich</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="272"/>
+        <location filename="../widgets/launchtreetext.cpp" line="278"/>
         <source>&lt;b&gt;Not resolved statically:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Nicht statisch aufgelöst:&lt;/b&gt; %1</translation>
     </message>
     <message>
-        <location filename="../widgets/launchtreetext.cpp" line="276"/>
+        <location filename="../widgets/launchtreetext.cpp" line="282"/>
         <source>The analysis continued with: %1</source>
         <translation>Die Analyse wurde fortgesetzt mit: %1</translation>
     </message>
@@ -3393,82 +3403,97 @@ The file was kept as %2.</source>
 <context>
     <name>rosarch::LogView</name>
     <message>
-        <location filename="../widgets/logview.cpp" line="26"/>
+        <location filename="../widgets/logview.cpp" line="27"/>
         <source>&amp;Hide Finding</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="27"/>
+        <location filename="../widgets/logview.cpp" line="28"/>
         <source>&amp;Accept Finding</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="28"/>
+        <location filename="../widgets/logview.cpp" line="29"/>
         <source>Accept Finding with &amp;Reason…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="29"/>
+        <location filename="../widgets/logview.cpp" line="30"/>
         <source>Re&amp;store Finding</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="46"/>
-        <source>H</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../widgets/logview.cpp" line="47"/>
-        <source>Hide the selected findings: they leave the list (Hidden shows them)</source>
+        <location filename="../widgets/logview.cpp" line="31"/>
+        <source>Accept as E&amp;xpected External</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../widgets/logview.cpp" line="48"/>
-        <source>A</source>
+        <source>H</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../widgets/logview.cpp" line="49"/>
-        <source>Accept the selected findings as they are: they leave the list and rosarch check no longer counts them as new</source>
+        <source>Hide the selected findings: they leave the list (Hidden shows them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="50"/>
+        <source>A</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../widgets/logview.cpp" line="51"/>
+        <source>Accept the selected findings as they are: they leave the list and rosarch check no longer counts them as new</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="53"/>
         <source>U</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="52"/>
+        <location filename="../widgets/logview.cpp" line="54"/>
         <source>Show the selected hidden or accepted findings again</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="84"/>
+        <location filename="../widgets/logview.cpp" line="55"/>
+        <source>X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="57"/>
+        <source>Declare the port of the selected findings as meeting something outside the workspace (a driver, teleoperation, a tool): the project records it and the checks no longer report it in any system</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../widgets/logview.cpp" line="97"/>
         <source>Progress and messages of stage runs appear here.</source>
         <translation>Hier erscheinen Fortschritt und Meldungen der Stufenausführungen.</translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="136"/>
+        <location filename="../widgets/logview.cpp" line="157"/>
         <source>Log</source>
         <translation type="unfinished">Protokoll</translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="139"/>
+        <location filename="../widgets/logview.cpp" line="160"/>
         <source>Log — %1 findings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="140"/>
+        <location filename="../widgets/logview.cpp" line="161"/>
         <source>Log — %1 findings, %2 shown</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="271"/>
+        <location filename="../widgets/logview.cpp" line="304"/>
         <source>Accept Finding</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../widgets/logview.cpp" line="272"/>
+        <location filename="../widgets/logview.cpp" line="305"/>
         <source>Why is this finding fine as it is?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3476,28 +3501,28 @@ The file was kept as %2.</source>
 <context>
     <name>rosarch::MainWindow</name>
     <message>
-        <location filename="../app/mainwindow.cpp" line="164"/>
+        <location filename="../app/mainwindow.cpp" line="166"/>
         <source>Atomic nodes</source>
         <translation>Atomare Knoten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="165"/>
+        <location filename="../app/mainwindow.cpp" line="167"/>
         <source>Launch tree</source>
         <translation>Launch-Baum</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="166"/>
+        <location filename="../app/mainwindow.cpp" line="168"/>
         <source>Composed diagram</source>
         <translation>Kompositionsdiagramm</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="167"/>
+        <location filename="../app/mainwindow.cpp" line="169"/>
         <source>Source</source>
         <translation>Quelltext</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="168"/>
-        <location filename="../app/mainwindow.cpp" line="172"/>
+        <location filename="../app/mainwindow.cpp" line="170"/>
+        <location filename="../app/mainwindow.cpp" line="174"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
@@ -3717,22 +3742,22 @@ The file was kept as %2.</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="178"/>
+        <location filename="../app/mainwindow.cpp" line="180"/>
         <source>Suggestions</source>
         <translation>Vorschläge</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="358"/>
+        <location filename="../app/mainwindow.cpp" line="361"/>
         <source>Open ROS 2 Workspace</source>
         <translation>ROS-2-Workspace öffnen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="369"/>
+        <location filename="../app/mainwindow.cpp" line="372"/>
         <source>Cannot open workspace</source>
         <translation>Workspace kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="370"/>
+        <location filename="../app/mainwindow.cpp" line="373"/>
         <source>The folder “%1” does not exist or is not a folder.
 
 Choose a ROS 2 workspace (a folder containing packages with a package.xml) with File → Open Workspace, or drop one onto the window.</source>
@@ -3741,13 +3766,13 @@ Choose a ROS 2 workspace (a folder containing packages with a package.xml) with 
 Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordner mit Paketen, die eine package.xml enthalten) aus, oder ziehen Sie einen Workspace auf das Fenster.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="64"/>
-        <location filename="../app/mainwindow.cpp" line="405"/>
+        <location filename="../app/mainwindow.cpp" line="66"/>
+        <location filename="../app/mainwindow.cpp" line="408"/>
         <source>rosarch[*]</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/mainwindow.cpp" line="76"/>
+        <location filename="../app/mainwindow.cpp" line="78"/>
         <source>%n file(s) changed on disk (%1); analysing again</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3755,62 +3780,77 @@ Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordne
         </translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="91"/>
+        <location filename="../app/mainwindow.cpp" line="93"/>
         <source>This workspace has more than %L1 files and folders to watch, so only its folders are watched: files added, removed or replaced (as most editors save) start a new analysis, a file edited in place does not. Press F5 after such an edit.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="181"/>
+        <location filename="../app/mainwindow.cpp" line="183"/>
         <source>Architecture changes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="183"/>
+        <location filename="../app/mainwindow.cpp" line="185"/>
         <source>Talkers</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="413"/>
+        <location filename="../app/mainwindow.cpp" line="416"/>
         <source>%1 (new project)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="415"/>
+        <location filename="../app/mainwindow.cpp" line="418"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="416"/>
+        <location filename="../app/mainwindow.cpp" line="419"/>
         <source>%1[*] — rosarch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../app/mainwindow.cpp" line="446"/>
+        <source>accepted in the Log</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../app/mainwindow.cpp" line="458"/>
+        <source>Declared %1 as expected external; checking again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="458"/>
+        <source>, </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="484"/>
         <source>No recent workspaces</source>
         <translation>Keine zuletzt geöffneten Workspaces</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="463"/>
+        <location filename="../app/mainwindow.cpp" line="489"/>
         <source>&amp;%1 %2 — %3</source>
         <translation>&amp;%1 %2 — %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="471"/>
+        <location filename="../app/mainwindow.cpp" line="497"/>
         <source>&amp;Clear Menu</source>
         <translation>Menü &amp;leeren</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="482"/>
+        <location filename="../app/mainwindow.cpp" line="508"/>
         <source>Export Artifacts To</source>
         <translation>Artefakte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="496"/>
+        <location filename="../app/mainwindow.cpp" line="522"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="497"/>
+        <location filename="../app/mainwindow.cpp" line="523"/>
         <source>The artifacts could not be written to “%1”:
 %2
 
@@ -3821,17 +3861,17 @@ Choose a folder you can write to, or free some space, and export again.</source>
 Wählen Sie einen Ordner, in den Sie schreiben dürfen, oder geben Sie Speicherplatz frei, und exportieren Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="500"/>
+        <location filename="../app/mainwindow.cpp" line="526"/>
         <source>Export to %1 failed: %2</source>
         <translation>Export nach %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="503"/>
+        <location filename="../app/mainwindow.cpp" line="529"/>
         <source>Exported 1 file to %1</source>
         <translation>1 Datei nach %1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="504"/>
+        <location filename="../app/mainwindow.cpp" line="530"/>
         <source>Exported %1 files to %2</source>
         <translation>%1 Dateien nach %2 exportiert</translation>
     </message>
@@ -3998,7 +4038,7 @@ Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
         <translation>[%1/%2] %3</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="193"/>
+        <location filename="../app/mainwindow.cpp" line="195"/>
         <source>Cannot show %1</source>
         <translation>%1 kann nicht angezeigt werden</translation>
     </message>

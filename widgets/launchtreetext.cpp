@@ -92,6 +92,8 @@ QString LaunchTreeText::fullyQualifiedName(const NodeInstance &node)
 QString LaunchTreeText::nodeDetails(const NodeInstance &node, int composableCount)
 {
     QStringList parts;
+    if (!node.parentNode.isEmpty())
+        parts << tr("child node, created in code");
     if (!node.condition.isEmpty())
         parts << tr("if: %1").arg(node.condition);
     if (composableCount > 0)
@@ -155,6 +157,10 @@ QString LaunchTreeText::nodeToolTip(const NodeInstance &node, const AtomicNode *
     else if (node.guessedName)
         line(tr("Name: a guess, built from a launch value nobody sets; so are the private names "
                 "of its ports"));
+    if (!node.parentNode.isEmpty())
+        line(tr("Child node: created in code at %1; it runs in the process of the node that "
+                "creates it, with that launch line's remaps and parameter files")
+                 .arg(html(location(node.evidence))));
     if (!node.package.isEmpty())
         line(tr("Package: %1").arg(html(node.package)));
     if (!node.execName.isEmpty())

@@ -315,6 +315,15 @@ private Q_SLOTS:
         QVERIFY(LaunchTreeText::nodeToolTip(n, nullptr, true, true)
                     .contains(QStringLiteral("Name: a guess, built from a launch value nobody "
                                              "sets; so are the private names of its ports")));
+
+        // A child node says where its parent's code creates it.
+        n.parentNode = QStringLiteral("n1");
+        n.evidence = {QStringLiteral("src/planner/src/planner_server.cpp"), 53, 18, 55, 54};
+        QVERIFY(LaunchTreeText::nodeDetails(n, 0).startsWith(
+            QStringLiteral("child node, created in code · if: $(var on)")));
+        QVERIFY(LaunchTreeText::nodeToolTip(n, nullptr, true, true)
+                    .contains(QStringLiteral(
+                        "Child node: created in code at src/planner/src/planner_server.cpp:53")));
     }
 };
 
