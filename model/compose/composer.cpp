@@ -226,6 +226,12 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             pp.model = instance.interfaceModel;
         pp.resolved = p.isResolved();
         QString base = p.name;
+        // `get_name() + "/map"`: the instance's own node name (a guess when that is one)
+        const bool namedByNode = base.contains(QLatin1String(kNodeNamePlaceholder));
+        if (namedByNode && !nodeName.isEmpty())
+            base.replace(QLatin1String(kNodeNamePlaceholder), nodeName);
+        else if (namedByNode)
+            pp.resolved = false;
         if (p.nameOrigin == NameOrigin::Parameter) {
             pp.parameterDerived = true;
             bool set = false;
@@ -256,6 +262,8 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             if (!written.startsWith(QLatin1Char('/')) &&
                 (instance.guessedNamespace ||
                  (written.startsWith(QLatin1Char('~')) && instance.guessedName)))
+                pp.guessed = true;
+            if (namedByNode && instance.guessedName)
                 pp.guessed = true;
             if (used >= 0 && rulesUsed)
                 rulesUsed->append(used);

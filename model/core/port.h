@@ -45,6 +45,8 @@ QString nameOriginName(NameOrigin origin);
 /// In a pluginlib plugin's port name, the name the plugin is loaded under
 /// (`{plugin}/toggle_filter`); an instance that loads the plugin fills it in.
 inline constexpr char kPluginNamePlaceholder[] = "{plugin}";
+/// In a port name, the name of the node that runs it (`get_name()`): each instance fills it in.
+inline constexpr char kNodeNamePlaceholder[] = "{node}";
 
 /// One communication port of an atomic node: publisher, subscriber, service, action.
 struct Port

@@ -58,6 +58,8 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         if (const CppLinkContext at = selfMethod(value.variable, ctx);
             at.fn && depth < kMaxLinkDepth)
             return resolve(at.fn->returnValue, at, depth + 1);
+        if (value.variable == QLatin1String("get_name")) // rclcpp's: the instance's name
+            return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), value.text, QString()};
         return r;
     case CppValue::Kind::FunctionParameter:
         if (const CppSubstitution *subst = substitutionFor(ctx); subst && depth < kMaxLinkDepth) {

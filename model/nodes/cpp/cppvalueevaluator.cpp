@@ -10,6 +10,14 @@ using namespace cppsyntax;
 
 namespace {
 
+// A variable that by its name holds a node: `node`, `node_`, `parent`, `node_ptr`.
+bool isNodeHandleName(const QString &variable)
+{
+    static const QRegularExpression name(
+        QStringLiteral(R"(^(this->)?(node|parent|parent_node|node_ptr|nh|node_handle)_?$)"));
+    return name.match(variable).hasMatch();
+}
+
 // A part of a concatenation; a concatenation inside one is flattened into it.
 void appendPart(CppValue *whole, CppValue part)
 {
@@ -235,6 +243,16 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 CppValue r = inner;
                 r.text = v.text;
                 return r;
+            }
+            // `node->get_name()`: the name of the node a helper or plugin is handed
+            if (shape.name == QLatin1String("get_name") && args.empty() &&
+                (inner.kind == CppValue::Kind::SelfNode ||
+                 ((inner.kind == CppValue::Kind::FunctionParameter ||
+                   inner.kind == CppValue::Kind::Member) &&
+                  isNodeHandleName(inner.variable.isEmpty() ? inner.text : inner.variable)))) {
+                v.kind = CppValue::Kind::SelfCall;
+                v.variable = shape.name;
+                return v;
             }
             if (shape.name == QLatin1String("lock") &&
                 (inner.kind == CppValue::Kind::SelfNode ||

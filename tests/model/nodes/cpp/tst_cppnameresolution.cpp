@@ -304,17 +304,19 @@ private Q_SLOTS:
                 QStringLiteral("publisher status std_msgs/msg/String cb= origin=local "
                                "expr=kStatusTopic param= guard= gp= via= @%1:44")
                     .arg(f),
+                // get_name(): the running node's name, which each instance fills in
                 QStringLiteral(
-                    "publisher std::string(get_name()) + \"/heartbeat\" std_msgs/msg/String cb= "
-                    "origin=expression expr=std::string(get_name()) + \"/heartbeat\" param= guard= "
-                    "gp= via= @%1:45")
+                    "publisher {node}/heartbeat std_msgs/msg/String cb= origin=member "
+                    "expr=std::string(get_name()) + \"/heartbeat\" param= guard= gp= via= @%1:45")
                     .arg(f),
                 QStringLiteral("publisher late std_msgs/msg/String cb= origin=member "
                                "expr=late_topic_ param= guard= gp= via= @%1:51")
                     .arg(f),
             }));
         QVERIFY(a.nodes[0].ports.last().isResolved());
-        QVERIFY(!a.nodes[0].ports[9].isResolved());
+        // a name each instance completes with its node name, as `{plugin}` with the plugin's
+        QVERIFY(a.nodes[0].ports[9].isResolved());
+        QVERIFY(a.nodes[0].ports[9].name.startsWith(QLatin1String(kNodeNamePlaceholder)));
     }
 
     void helpers()
