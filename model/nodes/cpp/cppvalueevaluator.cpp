@@ -113,6 +113,10 @@ int CppValueEvaluator::literalParameterIndex(const std::vector<TSNode> &args, QS
 {
     for (size_t i = 0; i < args.size() && i < 3; ++i) {
         const CppValue v = evaluate(args[i], depth + 1);
+        // `declare_or_get_parameter(name_ + "." + "map_topic", std::string("map"))`: the name
+        // is built at run time; the literal after it is the default, not the name.
+        if (v.kind == CppValue::Kind::Concatenation)
+            return -1;
         if (v.kind != CppValue::Kind::Literal && v.kind != CppValue::Kind::Local)
             continue;
         // A bool or a number (or nothing) is not a parameter name.
