@@ -244,8 +244,8 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     return out;
 }
 
-/// Exactly what the launch executor uses of stage 1's result (LaunchExecutor::resolveClasses,
-/// resolveElsewhere, executeNode, effectiveParameters): each class's id, name, package,
+/// Exactly what the launch executor uses of stage 1's result (NodeClasses,
+/// LaunchExecutor::executeNode, effectiveParameters): each class's id, name, package,
 /// executables, plugins, lifecycle, compile type, node name, child nodes, and the ports whose
 /// parameters give defaults, with the files of their evidence; the evidence itself goes to
 /// `locations`, in order. No other source location: an edit that moves lines of a node's file and

@@ -58,27 +58,13 @@ QString joinNamespace(const QString &outer, const QString &inner)
 
 LaunchExecutor::LaunchExecutor(const Workspace &workspace, const AtomicNodeList &nodes,
                                Loader loader, LaunchDependencies *out)
-    : m_workspace(workspace), m_load(std::move(loader)), m_out(out), m_modelled(workspace.root)
+    : m_workspace(workspace), m_load(std::move(loader)), m_out(out), m_classes(nodes),
+      m_modelled(workspace.root)
 {
     for (const RosPackage &p : workspace.packages)
         m_packagePaths.insert(p.name, p.path);
     for (const SourceFile &f : workspace.files)
         m_filePackages.insert(f.path, f.package); // the last of a path, as a scan would find
-    for (const AtomicNode &n : nodes.nodes) {
-        QSet<QString> seen;
-        for (const QString &e : n.executables)
-            if (!seen.contains(e)) {
-                seen.insert(e);
-                m_classesByExecutable[n.packageName + QChar(0) + e].append(&n);
-                m_classesByExecutableName[e].append(&n);
-            }
-        for (const QString &p : n.plugins)
-            if (!m_classesByPlugin.contains(p))
-                m_classesByPlugin.insert(p, &n);
-        if (!n.isPlugin() && !n.procedural &&
-            !m_nodeClassesByQualifiedName.contains(n.qualifiedName))
-            m_nodeClassesByQualifiedName.insert(n.qualifiedName, &n);
-    }
 }
 
 void LaunchExecutor::runRoot(const QString &file, const QMap<QString, QString> &arguments,
@@ -372,47 +358,6 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
     }
 }
 
-QList<const AtomicNode *>
-LaunchExecutor::resolveClasses(const QString &package, const QString &executable, bool plugin) const
-{
-    QString wanted = executable;
-    if (plugin && wanted.startsWith(QLatin1String("::")))
-        wanted.remove(0, 2);
-    if (plugin) {
-        const AtomicNode *n = m_classesByPlugin.value(wanted);
-        return n ? QList<const AtomicNode *>{n} : QList<const AtomicNode *>{};
-    }
-    return m_classesByExecutable.value(package + QChar(0) + executable);
-}
-
-namespace {
-bool declaresExecutable(const RosPackage *package, const QString &name)
-{
-    if (!package)
-        return false;
-    for (const Executable &e : package->executables)
-        if (e.name == name)
-            return true;
-    return false;
-}
-} // namespace
-
-QList<const AtomicNode *> LaunchExecutor::resolveElsewhere(const QString &executable,
-                                                           QString *builtBy) const
-{
-    // A package may install an executable under another package's name
-    // (`install(TARGETS x DESTINATION lib/other)`): the one package of the workspace that
-    // builds it, when there is exactly one.
-    const QList<const AtomicNode *> out = m_classesByExecutableName.value(executable);
-    QSet<QString> packages;
-    for (const AtomicNode *n : out)
-        packages.insert(n->packageName);
-    if (packages.size() != 1)
-        return {};
-    *builtBy = *packages.cbegin();
-    return out;
-}
-
 void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                                  const QString &container)
 {
@@ -437,11 +382,11 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.activeByGuess = scope.activeByGuess || undecided;
     if (a.condition.isSet() && !n.active)
         n.active = false;
-    QList<const AtomicNode *> classes = resolveClasses(n.package, n.execName, composable);
+    QList<const AtomicNode *> classes = m_classes.started(n.package, n.execName, composable);
     QString builtBy;
     if (classes.isEmpty() && !composable && a.kind == LaunchAction::Kind::Node &&
-        !n.execName.isEmpty() && !declaresExecutable(m_workspace.package(n.package), n.execName))
-        classes = resolveElsewhere(n.execName, &builtBy);
+        !n.execName.isEmpty() && !NodeClasses::declares(m_workspace.package(n.package), n.execName))
+        classes = m_classes.elsewhere(n.execName, &builtBy);
     if (!builtBy.isEmpty()) {
         Diagnostic diag;
         diag.severity = Diagnostic::Severity::Info;
@@ -534,32 +479,25 @@ void LaunchExecutor::addChildNodes(const NodeInstance &parent, const AtomicNode 
         return;
     }
     for (const ChildNode &c : cls.children) {
-        const AtomicNode *childClass = m_nodeClassesByQualifiedName.value(c.className);
+        const AtomicNode *childClass = m_classes.node(c.className);
         if (!childClass)
             continue;
-        NodeInstance n;
+        // In the parent's process: its launch file, condition, container, remaps and parameters.
+        NodeInstance n = parent;
         n.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
-        n.launchFileId = parent.launchFileId;
         n.parentNode = parent.id;
         n.nodeKind = compileTypeName(childClass->compileType);
         n.package = childClass->packageName;
-        n.execName = parent.execName;
         n.className = childClass->className;
         n.classId = childClass->id;
         n.lifecycle = childClass->lifecycle;
         n.nodeName = c.nodeName.isEmpty() ? childClass->nodeName : c.nodeName;
+        n.guessedName = false; // named in code
         const QString outer = parent.nameSpace == QLatin1String("/") ? QString() : parent.nameSpace;
         n.nameSpace = nsKey(joinNamespace(outer, c.nameSpace));
-        n.guessedNamespace = parent.guessedNamespace;
-        n.container = parent.container;
-        n.remaps = parent.remaps;
-        n.guessedRemaps = parent.guessedRemaps;
-        n.parameters = parent.parameters;
-        n.condition = parent.condition;
-        n.active = parent.active;
-        n.activeByGuess = parent.activeByGuess;
+        n.unresolved.clear(); // the launch line's: on the parent
         n.evidence = c.evidence;
-        QList<Unresolved> reported; // the launch line's: already on the parent
+        QList<Unresolved> reported;
         n.effectiveParameters = effectiveParameters(a, scope, frame, n, childClass, &reported);
         n.plugins = pluginsOf(n.effectiveParameters);
         m_out->instances[frame.instance].nodes.append(n.id);

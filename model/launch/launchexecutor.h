@@ -4,6 +4,7 @@
 #include "launchaction.h"
 #include "launchdependencies.h"
 #include "modelledports.h"
+#include "nodeclasses.h"
 #include "parameterfile.h"
 #include "workspace.h"
 
@@ -132,12 +133,6 @@ private:
     static void configure(Scope &scope, const QString &name, const QString &value, bool guessed);
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
                         QList<Unresolved> *unresolved, bool *undecided = nullptr) const;
-    /// The classes an executable starts (several when its main spins more than one node).
-    QList<const AtomicNode *> resolveClasses(const QString &package, const QString &executable,
-                                             bool plugin) const;
-    /// The classes of `executable` when exactly one workspace package builds it (a launch file
-    /// may name it under another package, which it is installed into); `builtBy` names it.
-    QList<const AtomicNode *> resolveElsewhere(const QString &executable, QString *builtBy) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
     /// The parameters a node instance ends up with (blueprint §1): scope values, then the
     /// node's own values and parameter files in order, a later value over an earlier one; the
@@ -156,15 +151,12 @@ private:
     const Workspace &m_workspace;
     Loader m_load;
     LaunchDependencies *m_out;
+    NodeClasses m_classes;                  ///< which classes a launch action starts
     QHash<QString, QString> m_packagePaths; ///< package -> folder
     ModelledPorts m_modelled; ///< interface models of what comes from outside the workspace
     QHash<QString, QString> m_filePackages; ///< workspace file -> its package
     /// Classes by package + '\0' + executable, in stage 1's order; plugin classes by name
     /// (the first); the classes of each executable name, in order.
-    QHash<QString, QList<const AtomicNode *>> m_classesByExecutable;
-    QHash<QString, const AtomicNode *> m_classesByPlugin;
-    QHash<QString, const AtomicNode *> m_nodeClassesByQualifiedName; ///< for child nodes
-    QHash<QString, QList<const AtomicNode *>> m_classesByExecutableName;
     /// resolveInclude's answers by path + '\0' + including file, and whether a path is a file:
     /// a stack includes the same files and parameter files from many places.
     mutable QHash<QString, IncludeTarget> m_includeTargets;
