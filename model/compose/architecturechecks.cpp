@@ -1,4 +1,5 @@
 #include "architecturechecks.h"
+#include "checkscope.h"
 #include "composer.h"
 #include "editdistance.h"
 #include "observability.h"
@@ -6,7 +7,6 @@
 #include "rosnames.h"
 
 #include <QHash>
-#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -38,21 +38,9 @@ class Checker
 public:
     Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
             const Observability &observability, QList<Diagnostic> *out)
-        : m_nodes(nodes), m_launch(launch), m_observability(observability), m_out(out)
+        : m_nodes(nodes), m_launch(launch), m_observability(observability), m_scope(launch),
+          m_out(out)
     {
-        for (const LaunchArgument &a : launch.arguments)
-            if (a.hasDefault && a.defaultValue.startsWith(QLatin1Char('/')) &&
-                a.defaultValue.size() > 1)
-                m_argumentDefaults[a.launchFile].insert(a.defaultValue);
-        // `**` any segments, `*` within one, as parameter files match node names
-        for (const ExpectedExternal &e : launch.externals) {
-            QString rx = QRegularExpression::escape(e.name);
-            rx.replace(QLatin1String("\\*\\*"), QLatin1String(".*"))
-                .replace(QLatin1String("\\*"), QLatin1String("[^/]*"));
-            m_externalPatterns.append(QRegularExpression(QRegularExpression::anchoredPattern(rx)));
-        }
-        for (const Port &p : launch.viewedTopics) // relative: in whichever namespace
-            m_viewed.insert(p.name.startsWith(u'/') ? p.name : QLatin1Char('/') + p.name);
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
                 m_composites.insert(c.instanceId, &c);
@@ -87,7 +75,7 @@ public:
         m_nodeOrder.clear();
         m_nodeCount = 0;
         m_current = systemName(root);
-        m_rootArguments = m_argumentDefaults.value(root.file);
+        m_scope.enterSystem(root.file);
         collect(root, 0);
         // A launch file that starts one node is a building block, not a system: every port
         // of that node is its interface to whatever runs beside it, so nothing is missing.
@@ -216,45 +204,8 @@ private:
     {
         const QString helper = m_helpers.value(place(port.evidence));
         return m_observability.covers(port.name, port.type, helper) ||
-               m_observability.covers(port.nameAsWritten, port.type, helper) || isViewed(port.name);
-    }
-
-    /// Displayed by an RViz configuration of the workspace, also in a namespace the
-    /// configuration does not write (`/global_costmap/costmap` for `/robot1/global_costmap/...`).
-    bool isViewed(const QString &name) const
-    {
-        for (qsizetype at = 0; at >= 0 && at < name.size(); at = name.indexOf(u'/', at + 1))
-            if (m_viewed.contains(name.mid(at)))
-                return true;
-        return false;
-    }
-
-    /// A name the system's other side is expected outside of: declared so in the project, or
-    /// the default of a launch argument the entry point declares (the file takes the name
-    /// from whoever includes it: `<arg name="output/objects" default="/perception/rois"/>`).
-    bool isInterface(const QString &name, bool output) const
-    {
-        return isExpectedExternal(name, output) || m_rootArguments.contains(name);
-    }
-
-    /// Declared in the project as expected to meet something outside the workspace.
-    bool isExpectedExternal(const QString &name, bool output) const
-    {
-        for (qsizetype i = 0; i < m_launch.externals.size(); ++i)
-            if (m_launch.externals.at(i).output == output &&
-                m_externalPatterns.at(i).match(name).hasMatch())
-                return true;
-        return false;
-    }
-
-    /// The declaration that accepts a finding about `name` as an expected external. Only a
-    /// fully qualified name can be declared (not one resting on an unresolved expression).
-    static QString externalOf(const QString &name, bool output)
-    {
-        if (!name.startsWith(QLatin1Char('/')) || name.contains(QLatin1Char(' ')) ||
-            name.contains(QLatin1Char('{')))
-            return {};
-        return (output ? QLatin1String("output ") : QLatin1String("input ")) + name;
+               m_observability.covers(port.nameAsWritten, port.type, helper) ||
+               m_scope.isViewed(port.name);
     }
 
     /// A name expanded in one made-up namespace and node name, to compare two spellings.
@@ -358,7 +309,7 @@ private:
                 for (const Use &u : f.users) {
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (isInterface(name, false) || openByDesign(u, &rel, &h))
+                    if (m_scope.isInterface(name, false) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("publishes"));
@@ -370,7 +321,7 @@ private:
                         QStringLiteral(
                             "%1 subscribes to %2, which no node started {by} publishes.%3")
                             .arg(who(*u.part), name, h),
-                        u.port->evidence, rel, externalOf(name, false));
+                        u.port->evidence, rel, CheckScope::externalOf(name, false));
                 }
             if (f.users.isEmpty())
                 for (const Use &u : f.providers) {
@@ -380,7 +331,7 @@ private:
                         continue;
                     QList<Diagnostic::Related> rel;
                     QString h;
-                    if (isInterface(name, true) || openByDesign(u, &rel, &h))
+                    if (m_scope.isInterface(name, true) || openByDesign(u, &rel, &h))
                         continue;
                     if (u.port->remapped) {
                         remapTargetUnused(u, name, QStringLiteral("subscribes to"));
@@ -392,7 +343,7 @@ private:
                         QStringLiteral(
                             "%1 publishes %2, which no node started {by} subscribes to.%3")
                             .arg(who(*u.part), name, h),
-                        u.port->evidence, rel, externalOf(name, true));
+                        u.port->evidence, rel, CheckScope::externalOf(name, true));
                 }
             return;
         }
@@ -419,7 +370,7 @@ private:
             for (const Use &u : f.users) {
                 QList<Diagnostic::Related> rel;
                 QString h;
-                if (isInterface(name, false) || openByDesign(u, &rel, &h))
+                if (m_scope.isInterface(name, false) || openByDesign(u, &rel, &h))
                     continue;
                 if (u.port->remapped) {
                     remapTargetUnused(u, name, QStringLiteral("serves"));
@@ -430,7 +381,7 @@ private:
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
                     QStringLiteral("%1 calls the %2 %3, which no node started {by} serves.%4")
                         .arg(who(*u.part), kind, name, h),
-                    u.port->evidence, rel, externalOf(name, false));
+                    u.port->evidence, rel, CheckScope::externalOf(name, false));
             }
     }
 
@@ -451,7 +402,7 @@ private:
             QStringLiteral("%1 remaps its %2 %3 to %4, which no node started {by} %5.%6")
                 .arg(who(*u.part), portKindName(u.port->kind), u.port->nameAsWritten, name,
                      counterpart, h),
-            u.part->evidence, rel, externalOf(name, isProvidingPort(u.port->kind)));
+            u.part->evidence, rel, CheckScope::externalOf(name, isProvidingPort(u.port->kind)));
     }
 
     /// Publisher and subscription pairs whose literal QoS cannot match (ROS 2's request/offer
@@ -529,10 +480,7 @@ private:
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     const Observability &m_observability;
-    QSet<QString> m_viewed; ///< topics an RViz configuration of the workspace displays
-    QHash<QString, QSet<QString>> m_argumentDefaults; ///< entry point -> absolute defaults
-    QSet<QString> m_rootArguments;                    ///< those of the system being checked
-    QList<QRegularExpression> m_externalPatterns;     ///< launch.externals', in order
+    CheckScope m_scope;                ///< what is left to something outside the system
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
     struct RemapElsewhere
     {
