@@ -357,4 +357,51 @@ bool CppHelperPorts::constructorApplies(const CppFunction &fn, const QList<CppVa
     return fits(&fn) && score(&fn) == best;
 }
 
+// A member `message_filters::Subscriber<T>` subscribes where it is constructed with a node
+// and a name (`sub_(this, "input/x", qos)` in a constructor's initializer list) or told to
+// (`sub_.subscribe(this, "~/input/x", qos)`); its messages go to a synchronizer.
+void CppHelperPorts::addMessageFilterPorts(int cls, const CppClassIndex::FunctionRef &ref,
+                                           QList<Port> *ports) const
+{
+    const auto subscriberType = [&](const QString &member) -> QString {
+        for (int c : m_index.lineage(cls)) {
+            const QString type = m_index.at(c).cls->memberTypes.value(member);
+            if (type.isEmpty())
+                continue;
+            const QString plain = withoutTemplateArguments(type).remove(u' ');
+            return plain == QLatin1String("message_filters::Subscriber") ||
+                           plain == QLatin1String("::message_filters::Subscriber")
+                       ? templateArgumentsOf(type.simplified()).value(0)
+                       : QString();
+        }
+        return {};
+    };
+    const CppLinkContext ctx{cls, ref.function, ref.file, nullptr};
+    const auto add = [&](const QString &member, const QList<CppValue> &arguments,
+                         const Evidence &evidence, const QString &guard = {},
+                         const CppValue &guardValue = {}) {
+        if (arguments.size() < 2 || arguments.front().kind != CppValue::Kind::SelfNode)
+            return;
+        const QString type = subscriberType(member);
+        if (type.isEmpty())
+            return;
+        CppPortCall call;
+        call.kind = PortKind::Subscriber;
+        call.name = arguments.at(1);
+        call.typeWritten = type;
+        if (arguments.size() > 2)
+            call.qos = arguments.at(2).text;
+        call.guard = guard;
+        call.guardValue = guardValue;
+        call.evidence = evidence;
+        ports->append(m_names.port(call, ctx));
+    };
+    for (const CppInstantiation &inst : ref.function->instantiations)
+        if (!inst.member.isEmpty())
+            add(inst.member, inst.arguments, inst.evidence);
+    for (const CppMethodCall &call : ref.function->methodCalls)
+        if (call.method == QLatin1String("subscribe"))
+            add(call.member, call.arguments, call.evidence, call.guard, call.guardValue);
+}
+
 } // namespace rosarch

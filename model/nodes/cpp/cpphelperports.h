@@ -41,6 +41,9 @@ public:
                       QList<Port> *ports) const;
     /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
     void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;
+    /// Subscriptions of the class's `message_filters::Subscriber<T>` members, made in `ref`.
+    void addMessageFilterPorts(int cls, const CppClassIndex::FunctionRef &ref,
+                               QList<Port> *ports) const;
 
     /// Helper chains are followed this deep; what lies deeper is not given to the node.
     static constexpr int kMaxHelperDepth = 3;

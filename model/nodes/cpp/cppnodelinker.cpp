@@ -462,53 +462,6 @@ QString CppNodeLinker::nodeNameOf(int index, int depth) const
     return {};
 }
 
-// A member `message_filters::Subscriber<T>` subscribes where it is constructed with a node
-// and a name (`sub_(this, "input/x", qos)` in a constructor's initializer list) or told to
-// (`sub_.subscribe(this, "~/input/x", qos)`); its messages go to a synchronizer.
-void CppNodeLinker::addMessageFilterPorts(int cls, const CppClassIndex::FunctionRef &ref,
-                                          QList<Port> *ports) const
-{
-    const auto subscriberType = [&](const QString &member) -> QString {
-        for (int c : m_index.lineage(cls)) {
-            const QString type = m_index.at(c).cls->memberTypes.value(member);
-            if (type.isEmpty())
-                continue;
-            const QString plain = withoutTemplateArguments(type).remove(u' ');
-            return plain == QLatin1String("message_filters::Subscriber") ||
-                           plain == QLatin1String("::message_filters::Subscriber")
-                       ? templateArgumentsOf(type.simplified()).value(0)
-                       : QString();
-        }
-        return {};
-    };
-    const CppLinkContext ctx{cls, ref.function, ref.file, nullptr};
-    const auto add = [&](const QString &member, const QList<CppValue> &arguments,
-                         const Evidence &evidence, const QString &guard = {},
-                         const CppValue &guardValue = {}) {
-        if (arguments.size() < 2 || arguments.front().kind != CppValue::Kind::SelfNode)
-            return;
-        const QString type = subscriberType(member);
-        if (type.isEmpty())
-            return;
-        CppPortCall call;
-        call.kind = PortKind::Subscriber;
-        call.name = arguments.at(1);
-        call.typeWritten = type;
-        if (arguments.size() > 2)
-            call.qos = arguments.at(2).text;
-        call.guard = guard;
-        call.guardValue = guardValue;
-        call.evidence = evidence;
-        ports->append(m_names.port(call, ctx));
-    };
-    for (const CppInstantiation &inst : ref.function->instantiations)
-        if (!inst.member.isEmpty())
-            add(inst.member, inst.arguments, inst.evidence);
-    for (const CppMethodCall &call : ref.function->methodCalls)
-        if (call.method == QLatin1String("subscribe"))
-            add(call.member, call.arguments, call.evidence, call.guard, call.guardValue);
-}
-
 QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
 {
     QList<Port> ports;
@@ -517,7 +470,7 @@ QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
         for (const CppPortCall &call : ref.function->ports)
             if (!call.typeIsTemplateParameter)
                 ports.append(m_names.port(call, ctx));
-        addMessageFilterPorts(cls, ref, &ports);
+        m_helpers.addMessageFilterPorts(cls, ref, &ports);
         m_helpers.addCallPorts(*ref.function, ctx, 0, &ports);
     }
     m_helpers.addMemberHelperPorts(cls, -1, &ports);

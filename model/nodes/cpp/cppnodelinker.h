@@ -33,8 +33,6 @@ private:
     QList<ChildNode> childNodesOf(int index) const;
     ChildNode childNode(int child, const CppInstantiation &inst, const CppLinkContext &ctx) const;
     QList<Port> portsOf(int cls, bool inherited) const;
-    void addMessageFilterPorts(int cls, const CppClassIndex::FunctionRef &ref,
-                               QList<Port> *ports) const;
     /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
     int pluginClass(const QString &written, const CppFileFacts &file,
                     QHash<QString, QString> *templateArguments) const;
