@@ -314,8 +314,7 @@ private Q_SLOTS:
                     .arg(f),
             }));
         QVERIFY(a.nodes[0].ports.last().isResolved());
-        // a name each instance completes with its node name, as `{plugin}` with the plugin's
-        QVERIFY(a.nodes[0].ports[9].isResolved());
+        QVERIFY(a.nodes[0].ports[9].isResolved()); // a template each instance completes
         QVERIFY(a.nodes[0].ports[9].name.startsWith(QLatin1String(kNodeNamePlaceholder)));
     }
 
