@@ -368,7 +368,7 @@ private Q_SLOTS:
     {
         // check_scope: robot.launch.xml is the one entry point; mapping.launch.py is included
         // only in another mode, lone.launch.py starts one node, and an older copy of the
-        // package sits in src/vendor. See the fixture's comments for what each line tests.
+        // package sits in src/older_copy. See the fixture's comments for what each line tests.
         const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("check_scope/ws")));
         QCOMPARE(r.launch.entryPoints,
                  (QStringList{QStringLiteral("src/depot/launch/lone.launch.py"),
@@ -387,7 +387,7 @@ private Q_SLOTS:
             found,
             (QStringList{
                 QStringLiteral(
-                    "duplicate-package src/vendor/depot/package.xml:3 | The package depot is "
+                    "duplicate-package src/older_copy/depot/package.xml:3 | The package depot is "
                     "declared twice: here (version 1.0.3) and in src/depot (version 1.2.0). "
                     "colcon refuses to build both; the analysis uses src/depot, the newer "
                     "version, and ignores this copy. Remove one, or put a COLCON_IGNORE file in "
