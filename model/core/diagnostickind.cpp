@@ -202,6 +202,11 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "Evaluating a Python launch file ran out of its step budget; what comes after "
              "that point was not evaluated.",
              "warning"),
+        kind("evaluation-limit", "Value too large",
+             "Evaluating a value (a CMake variable, a launch argument or substitution) made it "
+             "longer than the size budget, usually by doubling it in a loop; it is left "
+             "unresolved.",
+             "warning"),
         kind("include-cycle", "Include cycle",
              "A launch file includes itself, directly or through others; the cycle was cut.",
              "error"),

@@ -1,6 +1,7 @@
 #include "launchexecutor.h"
 #include "rosnames.h"
 #include "substitutionevaluator.h"
+#include "valuebudget.h"
 
 #include <QFileInfo>
 #include <QSet>
@@ -123,12 +124,30 @@ QString LaunchExecutor::evaluate(const Substitution &s, const Scope &scope, cons
         *guessed = !r.isResolved();
     for (Unresolved &u : r.unresolved) {
         u.evidence = evidence;
+        if (u.kind == QLatin1String(SubstitutionEvaluator::kEvaluationLimit))
+            sayValueLimit(evidence);
         if (u.guess.isEmpty())
             u.guess = r.value;
         if (unresolved)
             unresolved->append(u);
     }
     return r.value;
+}
+
+void LaunchExecutor::sayValueLimit(const Evidence &evidence) const
+{
+    const QString where = evidence.file + QLatin1Char(':') + QString::number(evidence.line);
+    if (!m_out || m_valueLimitSaid.contains(where))
+        return;
+    m_valueLimitSaid.insert(where);
+    Diagnostic diag;
+    diag.severity = Diagnostic::Severity::Warning;
+    diag.code = QStringLiteral("evaluation-limit");
+    diag.message = QStringLiteral("A value here grows past %1 characters (an argument built "
+                                  "from itself, doubled?); it is left unresolved.")
+                       .arg(kMaxValueChars);
+    diag.evidence = evidence;
+    m_out->diagnostics.append(diag);
 }
 
 bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,

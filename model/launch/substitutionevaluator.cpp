@@ -1,6 +1,7 @@
 #include "substitutionevaluator.h"
 
 #include "pythonexpression.h"
+#include "valuebudget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +77,21 @@ SubstitutionEvaluator::Result SubstitutionEvaluator::evaluate(const Substitution
 }
 
 void SubstitutionEvaluator::evaluateInto(const Substitution &s, Result *r, int depth) const
+{
+    const qsizetype before = r->value.size();
+    evaluateOne(s, r, depth);
+    // Every part is bounded, so a value exceeds the budget by at most its parts' sizes.
+    if (r->value.size() > kMaxValueChars) {
+        r->value.truncate(before);
+        r->unresolved.append(
+            {QString::fromLatin1(kEvaluationLimit),
+             QStringLiteral("a value longer than %1 characters").arg(kMaxValueChars),
+             QString(),
+             {}});
+    }
+}
+
+void SubstitutionEvaluator::evaluateOne(const Substitution &s, Result *r, int depth) const
 {
     if (depth > 32) {
         r->unresolved.append({QStringLiteral("substitution"), s.describe(), QString(), {}});

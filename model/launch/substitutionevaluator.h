@@ -18,6 +18,9 @@ namespace rosarch {
 class SubstitutionEvaluator
 {
 public:
+    /// The kind of Unresolved entry for a value past the size budget (kMaxValueChars).
+    static constexpr const char *kEvaluationLimit = "evaluation-limit";
+
     struct Result
     {
         QString value;
@@ -40,7 +43,10 @@ public:
     static bool evaluatePython(const QString &expression, QString *value);
 
 private:
+    /// Appends the value of `s` to r->value, or nothing (and an Unresolved entry) when that
+    /// would exceed the size budget.
     void evaluateInto(const Substitution &s, Result *r, int depth) const;
+    void evaluateOne(const Substitution &s, Result *r, int depth) const;
     /// The value of a launch function (Substitution::Kind::Function).
     QString function(const Substitution &s, Result *r, int depth) const;
 

@@ -1,5 +1,7 @@
 #include "cmakelistsreader.h"
 
+#include "valuebudget.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -209,6 +211,28 @@ QStringList CMakeListsReader::foreachItems(const QStringList &rawArgs) const
     return out;
 }
 
+bool CMakeListsReader::valueTooLarge(const Evidence &where, QList<Diagnostic> *diagnostics)
+{
+    if (!m_valueTooLarge)
+        return false;
+    m_valueTooLarge = false;
+    const QString place = where.file + QLatin1Char(':') + QString::number(where.line);
+    if (m_valueLimitSaid.contains(place))
+        return true; // once per command: a loop repeats it
+    m_valueLimitSaid.insert(place);
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.code = QStringLiteral("evaluation-limit");
+    d.message = QStringLiteral("A value in %1 grows past %2 characters (a variable built from "
+                               "itself, doubled in a loop?); the command was skipped and the "
+                               "variable left empty.")
+                    .arg(m_file)
+                    .arg(kMaxValueChars);
+    d.evidence = where;
+    diagnostics->append(d);
+    return true;
+}
+
 QString CMakeListsReader::expand(const QString &text) const
 {
     static const QRegularExpression var(QStringLiteral("\\$\\{([A-Za-z0-9_]+)\\}"));
@@ -222,8 +246,14 @@ QString CMakeListsReader::expand(const QString &text) const
             next += s.mid(last, m.capturedStart() - last);
             next += m_vars.value(m.captured(1));
             last = m.capturedEnd();
+            if (next.size() > kMaxValueChars)
+                break;
         }
         next += s.mid(last);
+        if (next.size() > kMaxValueChars) {
+            m_valueTooLarge = true; // said by execute(), which knows the command
+            return {};
+        }
         if (next == s)
             break;
         s = next;
@@ -251,6 +281,7 @@ QList<Executable> CMakeListsReader::read(const QString &file, QList<Diagnostic> 
     m_plugins.clear();
     m_functions.clear();
     m_read.clear();
+    m_valueLimitSaid.clear();
     m_bodyRuns = 0;
     readFile(file, 0, diagnostics);
     // A plugin registered on a library target is implemented by that target's sources.
@@ -331,6 +362,8 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
             continue;
         }
         const QStringList args = expandArgs(c.args);
+        if (valueTooLarge(evidence(c), diagnostics))
+            continue;
         if (m_functions.contains(c.name)) {
             if (depth >= kMaxSubdirectoryDepth || !takeBodyRun(evidence(c), diagnostics))
                 continue;
@@ -357,7 +390,13 @@ void CMakeListsReader::execute(const QList<Command> &commands, int depth,
             const qsizetype cache = values.indexOf(QStringLiteral("CACHE"));
             if (cache >= 0)
                 values = values.mid(0, cache);
-            m_vars.insert(args.first(), values.join(QLatin1Char(';')));
+            QString value = values.join(QLatin1Char(';'));
+            if (value.size() > kMaxValueChars) {
+                m_valueTooLarge = true;
+                valueTooLarge(evidence(c), diagnostics);
+                value.clear();
+            }
+            m_vars.insert(args.first(), value);
         } else if ((c.name == QLatin1String("add_executable") ||
                     c.name == QLatin1String("ament_auto_add_executable") ||
                     c.name == QLatin1String("add_library") ||

@@ -54,7 +54,12 @@ private:
     void parseArguments(const QStringList &rawArgs);
     /// The items a foreach(...) header loops over (its arguments after the loop variable).
     QStringList foreachItems(const QStringList &rawArgs) const;
+    /// `text` with its variables expanded; empty, and m_valueTooLarge set, past the size budget.
     QString expand(const QString &text) const;
+    /// Says (an evaluation-limit warning at `where`) and clears a value past the size budget.
+    bool valueTooLarge(const Evidence &where, QList<Diagnostic> *diagnostics);
+    mutable bool m_valueTooLarge = false;
+    QSet<QString> m_valueLimitSaid; ///< file:line of each evaluation-limit said
     QStringList expandArgs(const QStringList &args) const;
 
     Loader m_load;
