@@ -281,7 +281,7 @@ QString CommandLine::nearestCommand(const QString &written)
         const QString command = QString::fromLatin1(cmd);
         const int d = written.startsWith(command) || command.startsWith(written)
                           ? 1
-                          : editDistance(written.toLower(), command);
+                          : editDistance(written.toLower(), command, bestDistance + 1);
         if (d < bestDistance) {
             best = command;
             bestDistance = d;

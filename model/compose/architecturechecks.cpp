@@ -239,11 +239,16 @@ private:
     const Use *nearest(const QString &family, const QString &name, bool wantProviders,
                        QString *found) const
     {
+        // A name this long is no misspelling a person would make; and past a run's budget of
+        // work (cells of the distance and names looked at), hints stop, so they stay linear.
+        if (name.size() > 256 || m_hintWork > 50'000'000)
+            return nullptr;
         const QString bare = name.section(QLatin1Char('/'), -1);
         int best = std::max(2, int(bare.size()) / 3) + 1;
         const Use *use = nullptr;
         const QString prefix = family + QLatin1Char(' ');
         for (const QString &key : m_order) {
+            ++m_hintWork;
             if (!key.startsWith(prefix))
                 continue;
             const QStringView other = QStringView(key).mid(prefix.size());
@@ -254,6 +259,7 @@ private:
             const QList<Use> &side = wantProviders ? it->providers : it->users;
             if (side.isEmpty())
                 continue;
+            m_hintWork += other.size() * (2 * best + 1);
             const int d = editDistance(name, other.toString(), best);
             if (d < best) {
                 best = d;
@@ -491,6 +497,7 @@ private:
     QList<Diagnostic> *m_out;
     QHash<QString, Family> m_system;
     QStringList m_order;
+    mutable qint64 m_hintWork = 0;                      ///< of nearest(), in this run
     QHash<QString, QList<const RosNodePart *>> m_named; ///< fully qualified name -> parts
     QStringList m_nodeOrder;
     QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out

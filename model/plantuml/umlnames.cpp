@@ -26,7 +26,7 @@ QString stereotype(const QString &written, QString *note)
     int bestDistance = 3;
     bool tie = false;
     for (const QString &k : known) {
-        const int d = editDistance(k.toLower(), w.toLower());
+        const int d = editDistance(k.toLower(), w.toLower(), bestDistance + 1);
         if (d < bestDistance) {
             best = k;
             bestDistance = d;
