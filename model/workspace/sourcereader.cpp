@@ -38,7 +38,22 @@ bool SourceReader::read(const QString &relativePath, QByteArray *content,
         return fail(QStringLiteral("unreadable-file"),
                     QStringLiteral("Skipped: %1 cannot be read (%2).")
                         .arg(relativePath, file.errorString()));
-    *content = file.read(m_maxBytes + 1);
+    // Room for what the file holds, not for the cap: a thousand small files read ahead must not
+    // hold a thousand caps. A file that grows while it is read is read on, up to the cap.
+    content->resize(qMin(info.size(), m_maxBytes) + 1);
+    qint64 got = 0;
+    for (;;) {
+        if (got == content->size()) {
+            if (got > m_maxBytes)
+                break;
+            content->resize(qMin(got * 2 + 64 * 1024, m_maxBytes + 1));
+        }
+        const qint64 n = file.read(content->data() + got, content->size() - got);
+        if (n <= 0)
+            break;
+        got += n;
+    }
+    content->resize(got);
     if (content->size() > m_maxBytes)
         return fail(
             QStringLiteral("file-too-large"),
