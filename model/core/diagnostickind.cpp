@@ -130,6 +130,11 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "A file could not be read (permissions, a broken link); it was skipped.", "warning"),
         kind("unreadable-folder", "Unreadable folder",
              "A folder could not be listed; what it holds was not analysed.", "warning"),
+        kind("special-file", "Not a regular file",
+             "A file named like a source, launch or package file is a named pipe, a socket, a "
+             "device, a dangling symbolic link or a link loop; it was skipped without being "
+             "opened.",
+             "warning"),
         kind("symlink-loop", "Symbolic link loop or escape",
              "A symbolic link points back into a folder already visited, or out of the "
              "workspace; it was not followed.",

@@ -12,6 +12,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <cerrno>
 #include <functional>
 
 #include <dirent.h>
@@ -221,8 +222,20 @@ public:
                 continue;
             }
             const bool link = type == DT_LNK;
-            if (link && stat(QFile::encodeName(abs).constData(), &st) != 0)
-                continue; // a dangling link is not a source file
+            if (link && stat(QFile::encodeName(abs).constData(), &st) != 0) {
+                if (e.language != SourceFile::Language::Other)
+                    skip(
+                        QStringLiteral("special-file"),
+                        errno == ELOOP
+                            ? QStringLiteral("Skipped %1: it is a symbolic link that never reaches "
+                                             "a file (a link loop).")
+                                  .arg(rel)
+                            : QStringLiteral("Skipped %1: it is a symbolic link to %2, which "
+                                             "does not exist.")
+                                  .arg(rel, QFile::symLinkTarget(abs)),
+                        rel);
+                continue;
+            }
             if (link && S_ISDIR(st.st_mode)) {
                 if (!isSkippedFolder(e.name))
                     walk(abs, rel, QString(), depth + 1);
@@ -241,12 +254,21 @@ public:
             const SourceFile::Language lang = e.language;
             if (lang == SourceFile::Language::Other)
                 continue;
-            if (type != DT_REG && !link)
-                continue; // fifos, sockets, devices
+            // Fifos, sockets and devices are never opened: reading one could block forever.
+            if (type != DT_REG && !link) {
+                skipSpecial(rel, type == DT_FIFO   ? QStringLiteral("a named pipe (FIFO)")
+                                 : type == DT_SOCK ? QStringLiteral("a socket")
+                                                   : QStringLiteral("a device or special file"));
+                continue;
+            }
             if (!link && e.size < 0)
                 continue; // gone since the listing, or no longer a regular file
-            if (link && !S_ISREG(st.st_mode))
-                continue; // a link to a fifo, a socket, a device
+            if (link && !S_ISREG(st.st_mode)) {
+                skipSpecial(rel, S_ISFIFO(st.st_mode)   ? QStringLiteral("a link to a named pipe")
+                                 : S_ISSOCK(st.st_mode) ? QStringLiteral("a link to a socket")
+                                                        : QStringLiteral("a link to a device"));
+                continue;
+            }
             SourceFile f;
             f.path = rel;
             f.language = lang;
@@ -262,6 +284,15 @@ private:
     {
         return canonical == m_canonicalRoot ||
                canonical.startsWith(m_canonicalRoot + QLatin1Char('/'));
+    }
+
+    /// A file where a source, launch or package file is expected that is no regular file.
+    void skipSpecial(const QString &rel, const QString &what)
+    {
+        skip(QStringLiteral("special-file"),
+             QStringLiteral("Skipped %1: it is %2, not a regular file, so it was not read.")
+                 .arg(rel, what),
+             rel);
     }
 
     void skip(const QString &code, const QString &message, const QString &rel)

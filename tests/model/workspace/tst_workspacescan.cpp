@@ -99,9 +99,12 @@ private Q_SLOTS:
                               QStringLiteral("pkg/alias/b.py"),
                               QStringLiteral("pkg/launch/x.launch.xml"),
                               QStringLiteral("pkg/package.xml"), QStringLiteral("pkg/same.hpp")}));
-        // The link to src/ is walked first (by name); src/ itself is then the duplicate.
-        QCOMPARE(said(ws), QStringList({QStringLiteral("symlink-outside pkg/elsewhere"),
+        // The link to src/ is walked first (by name); src/ itself is then the duplicate. The
+        // dangling link and the pipe named as sources are said, never opened.
+        QCOMPARE(said(ws), QStringList({QStringLiteral("special-file pkg/dangling.cpp"),
+                                        QStringLiteral("symlink-outside pkg/elsewhere"),
                                         QStringLiteral("symlink-outside pkg/far.cpp"),
+                                        QStringLiteral("special-file pkg/pipe.py"),
                                         QStringLiteral("symlink-loop pkg/src")}));
         for (const SourceFile &f : ws.files) {
             QCOMPARE(f.size, QFileInfo(root + QLatin1Char('/') + f.path).size());
