@@ -1,6 +1,7 @@
 #include "diagnosticdetail.h"
 #include "diagnostickind.h"
 #include "diagnosticmodel.h"
+#include "visibletext.h"
 
 #include <QLocale>
 #include <QUrl>
@@ -62,7 +63,7 @@ void DiagnosticDetail::showFinding(const std::optional<Diagnostic> &diagnostic,
                             package.isEmpty() ? QString()
                                               : QStringLiteral(" · ") +
                                                     tr("package %1").arg(package.toHtmlEscaped()),
-                            d.message.toHtmlEscaped());
+                            visibleText(d.message).toHtmlEscaped());
     if (!d.evidence.file.isEmpty())
         html += QStringLiteral("<p>%1</p>").arg(tr("At %1").arg(link(0, d.evidence)));
     if (!d.related.isEmpty()) {
@@ -70,7 +71,7 @@ void DiagnosticDetail::showFinding(const std::optional<Diagnostic> &diagnostic,
         for (int i = 0; i < d.related.size(); ++i)
             html += QStringLiteral("<li>%1 — %2</li>")
                         .arg(link(i + 1, d.related.at(i).evidence),
-                             d.related.at(i).message.toHtmlEscaped());
+                             visibleText(d.related.at(i).message).toHtmlEscaped());
         html += QStringLiteral("</ul>");
     }
     if (!d.contexts.isEmpty()) {

@@ -3,6 +3,7 @@
 #include "document.h"
 #include "icons.h"
 #include "stallprobe.h"
+#include "visibletext.h"
 
 #include <QColor>
 #include <QFont>
@@ -20,7 +21,8 @@ int rank(Diagnostic::Severity s)
 
 QString place(const Evidence &e)
 {
-    return e.isValid() ? QStringLiteral("%1:%2").arg(e.file).arg(e.line) : e.file;
+    const QString file = visibleText(e.file); // one line, whatever the name holds
+    return e.isValid() ? QStringLiteral("%1:%2").arg(file).arg(e.line) : file;
 }
 
 } // namespace
@@ -335,7 +337,7 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
         case FileColumn:
             return place(d.evidence);
         case MessageColumn:
-            return d.message;
+            return visibleText(d.message);
         case ContextsColumn:
             return d.contexts.isEmpty() ? QVariant() : QVariant(int(d.contexts.size()));
         default:

@@ -1,6 +1,7 @@
 #include "checkcommand.h"
 #include "checkreport.h"
 #include "commandline.h"
+#include "terminalstream.h"
 #include "workspacerun.h"
 
 #include <QCommandLineParser>
@@ -32,7 +33,7 @@ bool writeAtomically(const QString &path, const QByteArray &data, QString *error
 
 int runCheck(const QStringList &arguments)
 {
-    QTextStream err(stderr);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(
         tr("Recover a ROS 2 workspace and report the diagnostics and architecture checks, for "

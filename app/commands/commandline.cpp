@@ -8,6 +8,8 @@
 #include "projectcommand.h"
 #include "recovery.h"
 #include "suggestcommand.h"
+#include "terminalstream.h"
+#include "visibletext.h"
 #include "workspacerun.h"
 
 #include <QCommandLineParser>
@@ -85,8 +87,8 @@ QString usageText()
 
 int recover(const QStringList &arguments)
 {
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    TerminalStream out(stdout);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "rosarch::CommandLine",
@@ -175,7 +177,9 @@ int recover(const QStringList &arguments)
             : d.evidence.line > 0
                 ? QStringLiteral("%1:%2: ").arg(d.evidence.file).arg(d.evidence.line)
                 : d.evidence.file + QStringLiteral(": ");
-        err << where << Diagnostic::severityName(d.severity) << ": " << d.message << '\n';
+        // One line each, whatever the file name or message holds.
+        err << visibleText(where) << Diagnostic::severityName(d.severity) << ": "
+            << visibleText(d.message) << '\n';
     }
     for (const Orphan &o : std::as_const(orphans))
         err << ProjectCommand::describe(o, run.projectFile()) << '\n';
@@ -243,13 +247,13 @@ int CommandLine::parseOrFinish(QCommandLineParser &parser, const QStringList &ar
                                const QString &usage)
 {
     if (!parser.parse(arguments)) {
-        QTextStream(stderr) << parser.errorText()
-                            << (usage.isEmpty() ? QStringLiteral("\n")
-                                                : QStringLiteral("\n\n") + usage);
+        TerminalStream(stderr) << parser.errorText()
+                               << (usage.isEmpty() ? QStringLiteral("\n")
+                                                   : QStringLiteral("\n\n") + usage);
         return UsageError;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << parser.helpText();
+        TerminalStream(stdout) << parser.helpText();
         return Ok;
     }
     return -1;
@@ -292,8 +296,8 @@ QString CommandLine::nearestCommand(const QString &written)
 
 int CommandLine::run(const QStringList &arguments)
 {
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    TerminalStream out(stdout);
+    TerminalStream err(stderr);
     const QString first = arguments.value(1);
     if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
         out << QCoreApplication::applicationName() << ' ' << QCoreApplication::applicationVersion()

@@ -3,6 +3,7 @@
 #include "commandline.h"
 #include "gitrevision.h"
 #include "recovery.h"
+#include "terminalstream.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -43,7 +44,7 @@ bool snapshot(const QString &path, ArchitectureSnapshot *out, QString *error)
 
 int runDiff(const QStringList &arguments)
 {
-    QTextStream err(stderr);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(
         tr("Show what changed between two recoveries: node classes and ports, and per launch "

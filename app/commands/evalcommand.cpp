@@ -3,6 +3,7 @@
 #include "evaluationjson.h"
 #include "evaluationreport.h"
 #include "evaluator.h"
+#include "terminalstream.h"
 #include "umlmodel.h"
 
 #include <QCommandLineParser>
@@ -40,8 +41,8 @@ void printMessages(QTextStream &err, const UmlModel &model)
 
 int runEval(const QStringList &arguments)
 {
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    TerminalStream out(stdout);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(
         EvalText::tr("Score a recovered PlantUML model against a reference model."));

@@ -1,5 +1,6 @@
 #include "projectcommand.h"
 #include "commandline.h"
+#include "terminalstream.h"
 #include "workspacerun.h"
 
 #include <QCommandLineParser>
@@ -37,8 +38,8 @@ QString ProjectCommand::describe(const Orphan &orphan, const QString &file)
 
 int ProjectCommand::run(const QStringList &arguments)
 {
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    TerminalStream out(stdout);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "rosarch::CommandLine",

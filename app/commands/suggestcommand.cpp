@@ -3,6 +3,7 @@
 #include "recovery.h"
 #include "suggestionengine.h"
 #include "suggestionsjson.h"
+#include "terminalstream.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -15,8 +16,8 @@ namespace rosarch {
 
 int runSuggest(const QStringList &arguments)
 {
-    QTextStream out(stdout);
-    QTextStream err(stderr);
+    TerminalStream out(stdout);
+    TerminalStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "rosarch::SuggestCommand", "Recover a ROS 2 workspace and propose checked suggestions "

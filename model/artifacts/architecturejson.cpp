@@ -1,6 +1,7 @@
 #include "architecturejson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 namespace rosarch {
 
@@ -122,7 +123,7 @@ QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString,
             compositeJson(c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem)));
     }
     root["list_composed_ros_node_classifiers"] = list;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 } // namespace rosarch

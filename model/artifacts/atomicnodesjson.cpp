@@ -1,6 +1,7 @@
 #include "atomicnodesjson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 #include <nlohmann/json.hpp>
 
@@ -153,7 +154,7 @@ QByteArray AtomicNodesJson::write(const AtomicNodeList &list)
         packageEntry(QString(), QString(), QString());
     Json root;
     root["list_packages"] = packages;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString *error)
@@ -259,7 +260,7 @@ QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
     }
     Json root;
     root["diagnostics"] = a;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 } // namespace rosarch

@@ -2,6 +2,7 @@
 #include "diagnostickind.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 #include <QDir>
 #include <QUrl>
@@ -32,7 +33,7 @@ QString place(const Evidence &e)
 {
     if (e.file.isEmpty())
         return {};
-    QString out = e.file;
+    QString out = visibleText(e.file);
     if (e.line > 0) {
         out += QLatin1Char(':') + QString::number(e.line);
         if (e.column > 0)
@@ -110,15 +111,16 @@ QString CheckReport::text() const
         const Diagnostic &d = f.diagnostic;
         const QString where = place(d.evidence);
         out += (where.isEmpty() ? QString() : where + QStringLiteral(": ")) +
-               Diagnostic::severityName(d.severity) + QStringLiteral(": ") + d.message +
-               QStringLiteral(" [") + d.code +
+               Diagnostic::severityName(d.severity) + QStringLiteral(": ") +
+               visibleText(d.message) + QStringLiteral(" [") + d.code +
                (f.baselined ? QStringLiteral(", baseline]\n") : QStringLiteral("]\n"));
         for (const Diagnostic::Related &r : d.related)
-            out += QStringLiteral("  %1: note: %2\n").arg(place(r.evidence), r.message);
+            out +=
+                QStringLiteral("  %1: note: %2\n").arg(place(r.evidence), visibleText(r.message));
         if (d.contexts.size() > 1)
             out += QStringLiteral("  seen in %1 systems: %2\n")
                        .arg(d.contexts.size())
-                       .arg(d.contexts.join(QStringLiteral(", ")));
+                       .arg(visibleText(d.contexts.join(QStringLiteral(", "))));
     }
     out += QStringLiteral("%1 findings (%2 errors, %3 warnings, %4 notes); %5 in the baseline; "
                           "%6 fail the check.\n")
@@ -167,7 +169,7 @@ QByteArray CheckReport::json(const QString &toolVersion) const
                        {"baselined", baselined()},
                        {"failing", failing()}};
     root["findings"] = findings;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 QByteArray CheckReport::sarif(const QString &workspace, const QString &toolVersion) const
@@ -254,7 +256,7 @@ QByteArray CheckReport::sarif(const QString &workspace, const QString &toolVersi
     log["$schema"] = "https://json.schemastore.org/sarif-2.1.0.json";
     log["version"] = "2.1.0";
     log["runs"] = Json::array({run});
-    return QByteArray::fromStdString(log.dump(2)) + '\n';
+    return visibleJson(log.dump(2)) + '\n';
 }
 
 QByteArray CheckReport::junit() const
@@ -303,9 +305,10 @@ QByteArray CheckReport::junit() const
             xml.writeAttribute(QStringLiteral("classname"), QStringLiteral("rosarch.") + code);
             const QString where = place(d.evidence);
             xml.writeAttribute(QStringLiteral("name"),
-                               where.isEmpty() ? d.message : where + QStringLiteral(" ") + f->key);
+                               where.isEmpty() ? visibleText(d.message)
+                                               : where + QStringLiteral(" ") + visibleText(f->key));
             if (!d.evidence.file.isEmpty())
-                xml.writeAttribute(QStringLiteral("file"), d.evidence.file);
+                xml.writeAttribute(QStringLiteral("file"), visibleText(d.evidence.file));
             if (d.evidence.line > 0)
                 xml.writeAttribute(QStringLiteral("line"), QString::number(d.evidence.line));
             if (f->baselined) {
@@ -314,18 +317,19 @@ QByteArray CheckReport::junit() const
                 xml.writeEndElement();
             } else if (f->failing) {
                 xml.writeStartElement(QStringLiteral("failure"));
-                xml.writeAttribute(QStringLiteral("message"), d.message);
+                xml.writeAttribute(QStringLiteral("message"), visibleText(d.message));
                 xml.writeAttribute(QStringLiteral("type"), code);
                 QString body = Diagnostic::severityName(d.severity) + QStringLiteral(": ") +
-                               d.message + QLatin1Char('\n');
+                               visibleText(d.message) + QLatin1Char('\n');
                 for (const Diagnostic::Related &r : d.related)
-                    body += QStringLiteral("%1: %2\n").arg(place(r.evidence), r.message);
+                    body +=
+                        QStringLiteral("%1: %2\n").arg(place(r.evidence), visibleText(r.message));
                 xml.writeCharacters(body);
                 xml.writeEndElement();
             } else {
                 xml.writeTextElement(QStringLiteral("system-out"),
                                      Diagnostic::severityName(d.severity) + QStringLiteral(": ") +
-                                         d.message);
+                                         visibleText(d.message));
             }
             xml.writeEndElement();
         }

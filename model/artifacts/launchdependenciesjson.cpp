@@ -1,6 +1,7 @@
 #include "launchdependenciesjson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 #include <nlohmann/json.hpp>
 
@@ -140,7 +141,7 @@ QByteArray LaunchDependenciesJson::write(const LaunchDependencies &launch)
     root["entry_points"] = strings(launch.entryPoints);
     root["launch_arguments"] = args;
     root["launch_files"] = strings(launch.launchFiles);
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 } // namespace rosarch

@@ -1,5 +1,6 @@
 #include "architecturediff.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 #include <QHash>
 #include <QSet>
@@ -270,7 +271,7 @@ QByteArray ArchitectureDiff::json(const QList<ArchitectureChange> &changes)
                        {"changed", counts[2]},
                        {"renamed", counts[3]}};
     root["changes"] = list;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 } // namespace rosarch

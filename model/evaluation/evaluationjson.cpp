@@ -1,5 +1,6 @@
 #include "evaluationjson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 #include <cmath>
 
@@ -112,7 +113,7 @@ QByteArray EvaluationJson::write(const Evaluation &evaluation, const UmlModel &r
     root["levels"] = levels;
     root["reference"] = input(reference);
     root["recovered"] = input(recovered);
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 } // namespace rosarch

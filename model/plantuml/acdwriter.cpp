@@ -1,5 +1,6 @@
 #include "acdwriter.h"
 #include "plantumltext.h"
+#include "visibletext.h"
 
 #include <QHash>
 #include <QSet>
@@ -113,10 +114,9 @@ QMap<QString, QString> AcdWriter::fileStems(const AtomicNodeList &list)
     QMap<QString, QString> stems;
     QSet<QString> used;
     for (const AtomicNode &n : list.nodes) {
-        QString stem = byClass.value(n.className) > 1 && !n.packageName.isEmpty()
-                           ? n.packageName + QLatin1Char('.') + n.className
-                           : n.className;
-        stem.replace(QLatin1Char('/'), QLatin1Char('_'));
+        QString stem = fileStemOf(byClass.value(n.className) > 1 && !n.packageName.isEmpty()
+                                      ? n.packageName + QLatin1Char('.') + n.className
+                                      : n.className);
         const QString base = stem;
         for (int k = 2; used.contains(stem); ++k)
             stem = base + QLatin1Char('_') + QString::number(k);

@@ -1,5 +1,6 @@
 #include "ccdwriter.h"
 #include "plantumltext.h"
+#include "visibletext.h"
 
 #include <QHash>
 #include <QSet>
@@ -205,9 +206,9 @@ QMap<QString, QString> CcdWriter::fileStems(const Architecture &arch)
     QMap<QString, QString> stems;
     QSet<QString> taken;
     for (const Composite *c : reps) {
-        QString stem = uses.value(c->stem) > 1 && !c->package.isEmpty()
-                           ? QStringLiteral("%1__%2").arg(c->package, c->stem)
-                           : c->stem;
+        QString stem = fileStemOf(uses.value(c->stem) > 1 && !c->package.isEmpty()
+                                      ? QStringLiteral("%1__%2").arg(c->package, c->stem)
+                                      : c->stem);
         const QString base = stem;
         for (int n = 2; taken.contains(stem); ++n)
             stem = QStringLiteral("%1_%2").arg(base).arg(n);

@@ -1,6 +1,7 @@
 #include "suggestionsjson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "visibletext.h"
 
 namespace rosarch {
 
@@ -108,7 +109,7 @@ QByteArray SuggestionsJson::write(const SuggestionReport &report)
     llm["used"] = report.llmUsed;
     llm["model"] = utf8(report.llmModel);
     root["llm"] = llm;
-    return QByteArray::fromStdString(root.dump(2)) + '\n';
+    return visibleJson(root.dump(2)) + '\n';
 }
 
 bool SuggestionsJson::read(const QByteArray &json, SuggestionReport *report, QString *error)
