@@ -12,9 +12,9 @@ namespace rosarch {
 /// atomic_nodes.json, launch_dependencies.json, architecture.json, diagnostics.json,
 /// acd/<ClassName>.puml, ccd/<launch stem>.puml, mermaid/<launch stem>.md (the CCD as a
 /// Mermaid flowchart) and graph/<root launch stem>.dot (a root system's communication graph).
-/// Earlier diagrams (and their rendered pictures) in those folders are removed. Files are
-/// written into a staging folder and moved into place only when all were written, so a failed
-/// run (a full disk) leaves the previous artifacts intact.
+/// Earlier diagrams (and their rendered pictures) in those folders are removed; other files of
+/// the folder stay. The folder is replaced as ArtifactCommit describes: a failed or killed run
+/// (a full disk, a kill) leaves the previous artifacts intact, never a mix of old and new.
 class ArtifactWriter
 {
 public:

@@ -267,6 +267,12 @@ private Q_SLOTS:
         QVERIFY(QDir(out.path())
                     .entryList({QStringLiteral(".rosarch-writing-*")}, QDir::Dirs | QDir::Hidden)
                     .isEmpty());
+        QVERIFY(
+            QDir(QFileInfo(out.path()).path())
+                .entryList(
+                    {QStringLiteral(".%1.rosarch-writing-*").arg(QFileInfo(out.path()).fileName())},
+                    QDir::Dirs | QDir::Hidden)
+                .isEmpty());
     }
 
     void unwritableOutputIsReported()

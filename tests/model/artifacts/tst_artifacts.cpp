@@ -1,10 +1,14 @@
 #include "acdwriter.h"
+#include "artifactcommit.h"
 #include "artifactwriter.h"
 #include "atomicnodesjson.h"
 #include "testsupport.h"
 
 #include <QTemporaryDir>
+
 #include <QtTest>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace rosarch;
 
@@ -191,6 +195,55 @@ private Q_SLOTS:
         const QByteArray diag = test::readFile(dir.filePath(QStringLiteral("diagnostics.json")));
         QVERIFY(diag.contains("\"code\": \"syntax-error\""));
         QVERIFY(diag.contains("\"line\": 2"));
+    }
+
+    void theFolderIsSwappedWholeAndUnchangedFilesStay()
+    {
+        // Issue 43: the artifacts go into a fresh folder beside the output folder, swapped in
+        // with one rename; a file equal to its previous version is linked, not written again;
+        // what is not an artifact stays; staging folders of dead runs are removed.
+        QTemporaryDir parent;
+        const QString out = parent.filePath(QStringLiteral("out"));
+        auto inode = [](const QString &path) {
+            struct stat st = {};
+            return ::stat(QFile::encodeName(path).constData(), &st) == 0 ? st.st_ino : ino_t(0);
+        };
+        auto write = [&](const QByteArray &a, const QByteArray &b) {
+            ArtifactCommit commit(out);
+            QString error;
+            QStringList written;
+            QVERIFY2(commit.begin(&error) &&
+                         commit.add(QStringLiteral("atomic_nodes.json"), a, &error) &&
+                         commit.add(QStringLiteral("acd/A.puml"), b, &error) &&
+                         commit.commit(&written, &error),
+                     qPrintable(error));
+            QCOMPARE(written.size(), 2);
+        };
+        write("{}", "@startuml\n@enduml\n");
+        test::writeFile(out + QStringLiteral("/notes.txt"), "mine\n");
+        test::writeFile(out + QStringLiteral("/acd/A.svg"), "<svg/>");
+        test::writeFile(out + QStringLiteral("/render/x.png"), "png");
+        // A staging folder of a killed run (no such process) and one of a live process.
+        const QString dead = parent.filePath(QStringLiteral(".out.rosarch-writing-999999999-x"));
+        const QString live =
+            parent.filePath(QStringLiteral(".out.rosarch-writing-%1-y").arg(getppid()));
+        QVERIFY(QDir().mkpath(dead) && QDir().mkpath(live));
+        const ino_t json = inode(out + QStringLiteral("/atomic_nodes.json"));
+        const ino_t acd = inode(out + QStringLiteral("/acd/A.puml"));
+        write("{}", "@startuml\nchanged\n@enduml\n");
+        QCOMPARE(inode(out + QStringLiteral("/atomic_nodes.json")), json); // unchanged: linked
+        QVERIFY(inode(out + QStringLiteral("/acd/A.puml")) != acd);
+        QCOMPARE(test::readFile(out + QStringLiteral("/acd/A.puml")),
+                 QByteArray("@startuml\nchanged\n@enduml\n"));
+        QCOMPARE(test::readFile(out + QStringLiteral("/notes.txt")), QByteArray("mine\n"));
+        QCOMPARE(test::readFile(out + QStringLiteral("/render/x.png")), QByteArray("png"));
+        QVERIFY(!QFile::exists(out + QStringLiteral("/acd/A.svg"))); // a picture of the old ACD
+        QVERIFY(!QFileInfo::exists(dead));
+        QVERIFY(QFileInfo::exists(live));
+        QDir(live).removeRecursively();
+        QCOMPARE(
+            QDir(parent.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot),
+            QStringList{QStringLiteral("out")});
     }
 
     void writerReportsUnwritableFolder()
