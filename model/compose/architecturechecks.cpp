@@ -44,6 +44,8 @@ public:
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
                 m_composites.insert(c.instanceId, &c);
+        for (const NodeInstance &n : launch.nodes)
+            m_instances.insert(n.id, &n); // LaunchDependencies::node() is a linear search
         // The helper that creates a port, by the port's place in the code (a part's port
         // carries the evidence of the atomic port it comes from).
         for (const AtomicNode &n : nodes.nodes)
@@ -459,13 +461,13 @@ private:
     /// that can take part in wiring: its class is known, or it has ports.
     bool startsProcessWithPorts(const RosNodePart &part) const
     {
-        const NodeInstance *n = m_launch.node(part.instanceId);
+        const NodeInstance *n = m_instances.value(part.instanceId);
         return (!n || n->parentNode.isEmpty()) && (part.typed || !part.ports.isEmpty());
     }
 
     bool runsByGuess(const RosNodePart &part) const
     {
-        const NodeInstance *n = m_launch.node(part.instanceId);
+        const NodeInstance *n = m_instances.value(part.instanceId);
         return n && n->activeByGuess;
     }
 
@@ -475,14 +477,15 @@ private:
     {
         if (part.name.isEmpty())
             return false;
-        const NodeInstance *instance = m_launch.node(part.instanceId);
+        const NodeInstance *instance = m_instances.value(part.instanceId);
         if (instance && !instance->nodeName.isEmpty())
             return true;
         const AtomicNode *cls = instance ? m_nodes.node(instance->classId) : nullptr;
         return cls && !cls->nodeName.isEmpty();
     }
 
-    QHash<QString, const Composite *> m_composites; ///< by instance id
+    QHash<QString, const Composite *> m_composites;   ///< by instance id
+    QHash<QString, const NodeInstance *> m_instances; ///< by id
     const AtomicNodeList &m_nodes;
     const LaunchDependencies &m_launch;
     const Observability &m_observability;
@@ -585,11 +588,8 @@ QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const Atomic
             checker.checkRoot(c);
     checkRemaps(nodes, launch, &out);
     // A file included twice reports the same remap (same launch line) twice.
-    QList<Diagnostic> unique;
-    for (const Diagnostic &d : std::as_const(out))
-        if (!unique.contains(d))
-            unique.append(d);
-    return unique;
+    Diagnostic::removeDuplicates(&out);
+    return out;
 }
 
 } // namespace rosarch

@@ -1,6 +1,9 @@
 #include "diagnostic.h"
 
 #include <QCryptographicHash>
+#include <QHash>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -24,6 +27,23 @@ QString Diagnostic::key() const
     return code + QLatin1Char(':') +
            QString::fromLatin1(
                QCryptographicHash::hash(text, QCryptographicHash::Sha1).toHex().left(16));
+}
+
+void Diagnostic::removeDuplicates(QList<Diagnostic> *list)
+{
+    QHash<QString, QList<qsizetype>> kept; // code, place and message -> indices in `unique`
+    QList<Diagnostic> unique;
+    unique.reserve(list->size());
+    for (Diagnostic &d : *list) {
+        const QString bucket = d.code + QLatin1Char('\n') + d.evidence.file + QLatin1Char(':') +
+                               QString::number(d.evidence.line) + QLatin1Char('\n') + d.message;
+        QList<qsizetype> &same = kept[bucket];
+        if (std::any_of(same.cbegin(), same.cend(), [&](qsizetype i) { return unique.at(i) == d; }))
+            continue;
+        same.append(unique.size());
+        unique.append(std::move(d));
+    }
+    *list = std::move(unique);
 }
 
 } // namespace rosarch

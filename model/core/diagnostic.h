@@ -59,6 +59,10 @@ struct Diagnostic
         return false;
     }
     bool operator==(const Diagnostic &) const = default;
+
+    /// Drops every diagnostic equal to an earlier one, keeping the order: in linear time (by a
+    /// hash of code, place and message), where a list's contains() made it quadratic.
+    static void removeDuplicates(QList<Diagnostic> *list);
 };
 
 } // namespace rosarch

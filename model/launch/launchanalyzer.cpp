@@ -176,11 +176,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
         return out;
     }
     // The same problem met through two include chains is one diagnostic.
-    QList<Diagnostic> unique;
-    for (const Diagnostic &d : std::as_const(out.diagnostics))
-        if (!unique.contains(d))
-            unique.append(d);
-    out.diagnostics = unique;
+    Diagnostic::removeDuplicates(&out.diagnostics);
     // Findings about an include site: one per site however many systems reach it (a file
     // included by 46 roots is one finding with 46 contexts, as stage 3's checks do it).
     QHash<QString, const LaunchFileInstance *> byId;

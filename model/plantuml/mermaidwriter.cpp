@@ -100,8 +100,11 @@ QString MermaidWriter::flowchart(const Composite &c)
     }
     QStringList styles;
     int index = 0;
+    QHash<QString, const RosNodePart *> parts; // Composite::part() is a linear search
+    for (const RosNodePart &p : c.parts)
+        parts.insert(p.id, &p);
     for (const Connection &k : c.connections) {
-        const RosNodePart *part = c.part(k.partId);
+        const RosNodePart *part = parts.value(k.partId);
         if (!part || !part->active)
             continue;
         const QString from = idOf(k.partId);
