@@ -1,7 +1,6 @@
 #include "launchexecutor.h"
 #include "rosnames.h"
 #include "substitutionevaluator.h"
-#include "valuebudget.h"
 
 #include <QFileInfo>
 #include <QSet>
@@ -125,29 +124,13 @@ QString LaunchExecutor::evaluate(const Substitution &s, const Scope &scope, cons
     for (Unresolved &u : r.unresolved) {
         u.evidence = evidence;
         if (u.kind == QLatin1String(SubstitutionEvaluator::kEvaluationLimit))
-            sayValueLimit(evidence);
+            m_budget.sayValueLimit(m_out, evidence);
         if (u.guess.isEmpty())
             u.guess = r.value;
         if (unresolved)
             unresolved->append(u);
     }
     return r.value;
-}
-
-void LaunchExecutor::sayValueLimit(const Evidence &evidence) const
-{
-    const QString where = evidence.file + QLatin1Char(':') + QString::number(evidence.line);
-    if (!m_out || m_valueLimitSaid.contains(where))
-        return;
-    m_valueLimitSaid.insert(where);
-    Diagnostic diag;
-    diag.severity = Diagnostic::Severity::Warning;
-    diag.code = QStringLiteral("evaluation-limit");
-    diag.message = QStringLiteral("A value here grows past %1 characters (an argument built "
-                                  "from itself, doubled?); it is left unresolved.")
-                       .arg(kMaxValueChars);
-    diag.evidence = evidence;
-    m_out->diagnostics.append(diag);
 }
 
 bool LaunchExecutor::conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
@@ -184,8 +167,7 @@ bool LaunchExecutor::ContainerName::matches(const NodeInstance &n) const
         return false;
     if (n.nodeName == m_target)
         return true;
-    // The length of joinNamespace(n.nameSpace, n.nodeName), worked out as it joins them: a
-    // name of another length is neither the target nor the scoped target.
+    // The length of joinNamespace(namespace, name): another length matches no target.
     QStringView name = QStringView(n.nodeName).trimmed();
     qsizetype length = 0;
     if (name.startsWith(u'/')) {
@@ -380,6 +362,8 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
 void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Frame &frame,
                                  const QString &container)
 {
+    if (m_budget.overBudget(m_out, a.evidence))
+        return;
     NodeInstance n;
     n.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
     n.launchFileId = m_out->instances[frame.instance].id;
@@ -528,6 +512,8 @@ void LaunchExecutor::addChildNodes(const NodeInstance &parent, const AtomicNode 
 
 void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
 {
+    if (!frame.collectOnly && m_budget.overBudget(m_out, a.evidence))
+        return;
     QList<Unresolved> found;
     const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
     bool undecided = false;

@@ -2,6 +2,7 @@
 
 #include "atomicnodelist.h"
 #include "launchaction.h"
+#include "launchbudget.h"
 #include "launchdependencies.h"
 #include "modelledports.h"
 #include "nodeclasses.h"
@@ -120,12 +121,11 @@ private:
     void addChildNodes(const NodeInstance &parent, const AtomicNode &cls, const LaunchAction &a,
                        const Scope &scope, const Frame &frame, int depth);
     static constexpr int kMaxChildDepth = 4;
+
     /// `guessed`, when given, tells whether the value rests on something unresolved.
     QString evaluate(const Substitution &s, const Scope &scope, const Frame &frame,
                      QList<Unresolved> *unresolved, const Evidence &evidence,
                      bool *guessed = nullptr) const;
-    /// An evaluation-limit warning at `evidence`, once per place.
-    void sayValueLimit(const Evidence &evidence) const;
     /// Evaluates remapping rules onto `remaps`, noting in `guessedRemaps` the index of each
     /// one whose target rests on a guess.
     void appendRemaps(const QList<LaunchRemap> &rules, const Scope &scope, const Frame &frame,
@@ -163,7 +163,7 @@ private:
     /// a stack includes the same files and parameter files from many places.
     mutable QHash<QString, IncludeTarget> m_includeTargets;
     mutable QHash<QString, bool> m_isFile;
-    mutable QSet<QString> m_valueLimitSaid;         ///< file:line of each evaluation-limit said
+    mutable LaunchBudget m_budget; ///< the sizes and counts one execution may reach
     QHash<QString, ParameterFile> m_parameterFiles; ///< by workspace-relative path
     QHash<QString, ParameterFile> m_rewrittenFiles; ///< RewrittenYaml results, by file and rewrites
     QSet<QString> m_missingParameterFiles;          ///< reported once per path

@@ -167,6 +167,39 @@ private Q_SLOTS:
         QCOMPARE(editDistance(QStringLiteral("scan"), QStringLiteral("scna"), 3), 2);
     }
 
+    void includesMultiplyingIncludesStopAtTheInstanceBudget()
+    {
+        // Before: three 3 KB files including each other 30 x 30 times, 100 nodes each, made
+        // 90,000 instances; the rosarch command died (3.2 GB) printing their warnings.
+        QTemporaryDir dir;
+        test::healthyPythonPackage(dir.path());
+        const QStringList names = {QStringLiteral("a"), QStringLiteral("b"), QStringLiteral("c")};
+        for (int f = 0; f < 3; ++f) {
+            QByteArray body = "<launch>\n";
+            for (int i = 0; f < 2 && i < 30; ++i)
+                body += QStringLiteral("  <group><push-ros-namespace namespace=\"%1%2\"/><include "
+                                       "file=\"$(find-pkg-share pkg)/launch/%3.launch.xml\"/>"
+                                       "</group>\n")
+                            .arg(names[f])
+                            .arg(i)
+                            .arg(names[f + 1])
+                            .toUtf8();
+            for (int i = 0; i < 100; ++i)
+                body += QStringLiteral("  <node pkg=\"pkg\" exec=\"good\" name=\"n%1\"/>\n")
+                            .arg(i)
+                            .toUtf8();
+            writeFile(dir.path() + "/src/pkg/launch/" + names[f].toUtf8() + ".launch.xml",
+                      body + "</launch>\n");
+        }
+        const Recovery r = recoverWorkspace(dir.path());
+        QVERIFY(r.launch.nodes.size() + r.launch.instances.size() <= 20000);
+        QVERIFY(r.launch.nodes.size() > 10000);
+        const QStringList said =
+            test::diagnosticsWithCode(r, QStringLiteral("launch-evaluation-limit"));
+        QVERIFY2(!said.isEmpty() && said.first().contains(QLatin1String("more than 20000 nodes")),
+                 qPrintable(said.join('\n')));
+    }
+
     void manySmallLaunchFilesAreAllRead()
     {
         // Before: every read reserved the 4 MB file cap, and the read-ahead of 1,500 small
