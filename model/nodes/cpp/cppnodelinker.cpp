@@ -3,6 +3,7 @@
 #include "cppsyntax.h"
 
 #include <QFileInfo>
+#include <QHash>
 #include <QRegularExpression>
 #include <QSet>
 #include <QtConcurrent/QtConcurrentMap>
@@ -40,14 +41,29 @@ bool isMacroFunction(const QString &name)
 }
 
 // One call can be reached twice (a helper built twice with the same arguments, or through two
-// chains of calls): the same port, kept with the first chain.
-bool containsPort(const QList<Port> &ports, const Port &p)
+// chains of calls): the same port, kept with the first chain. Linear: ports are compared only
+// with those of the same name and place (a class with 60,000 ports took minutes before).
+void appendUnique(QList<Port> *into, const QList<Port> &ports)
 {
-    return std::any_of(ports.begin(), ports.end(), [&](const Port &q) {
-        Port same = p;
-        same.viaEvidence = q.viaEvidence;
-        return q == same;
-    });
+    auto placeOf = [](const Port &p) {
+        return p.name + QLatin1Char('\n') + p.evidence.file + QLatin1Char(':') +
+               QString::number(p.evidence.line) + QLatin1Char(':') +
+               QString::number(p.evidence.column);
+    };
+    QHash<QString, QList<qsizetype>> byPlace;
+    for (qsizetype i = 0; i < into->size(); ++i)
+        byPlace[placeOf(into->at(i))].append(i);
+    for (const Port &p : ports) {
+        QList<qsizetype> &same = byPlace[placeOf(p)];
+        if (std::any_of(same.cbegin(), same.cend(), [&](qsizetype i) {
+                Port copy = p;
+                copy.viaEvidence = into->at(i).viaEvidence;
+                return into->at(i) == copy;
+            }))
+            continue;
+        same.append(into->size());
+        into->append(p);
+    }
 }
 
 } // namespace
@@ -243,9 +259,7 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
         return evidenceLess(a.evidence, b.evidence);
     });
     // One call can be reached twice (a helper instantiated twice with the same arguments).
-    for (const Port &p : std::as_const(ports))
-        if (!containsPort(node.ports, p))
-            node.ports.append(p);
+    appendUnique(&node.ports, ports);
     node.children = childNodesOf(index);
     return node;
 }
@@ -376,9 +390,7 @@ AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported,
     std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
         return evidenceLess(a.evidence, b.evidence);
     });
-    for (const Port &p : std::as_const(ports))
-        if (!containsPort(node.ports, p))
-            node.ports.append(p);
+    appendUnique(&node.ports, ports);
     return node;
 }
 
