@@ -120,10 +120,13 @@ void StableKeys::addDeclarations()
         if (!it.key().startsWith(QLatin1String("instance:")))
             continue;
         QStringList ids = it.value();
+        QSet<QString> listed(ids.cbegin(), ids.cend()); // a key may stand for 90,000 instances
         for (const QString &id : it.value())
             for (const QString &declared : m_classifierIdsOfPart.value(m_partOfInstance.value(id)))
-                if (!ids.contains(declared))
+                if (!listed.contains(declared)) {
+                    listed.insert(declared);
                     ids.append(declared);
+                }
         it.value() = ids;
     }
 }
