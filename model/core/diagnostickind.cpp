@@ -207,6 +207,10 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "Evaluating a Python launch file ran out of its step budget; what comes after "
              "that point was not evaluated.",
              "warning"),
+        kind("analysis-incomplete", "Analysis incomplete",
+             "The analysis worker stopped outside the work on any one file; the stages it "
+             "finished are kept and the later ones have no result.",
+             "error"),
         kind("evaluation-limit", "Value too large",
              "Evaluating a value (a CMake variable, a launch argument or substitution) made it "
              "longer than the size budget, usually by doubling it in a loop; it is left "

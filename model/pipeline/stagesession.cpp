@@ -56,6 +56,7 @@ struct StageSession::Attempt
     QByteArray stderrBytes;
     QString timedOut;     ///< the file that overran its time budget (the worker was killed)
     QStringList inFlight; ///< files being analysed when the worker stopped
+    quint8 parts = 0;     ///< the parts of `recovery` that arrived (stages finished)
 };
 
 namespace {
@@ -278,12 +279,34 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
     a.stderrBytes = m_worker.errors();
     a.crashed = m_worker.crashed();
     a.exitCode = m_worker.exitCode();
+    a.parts = (parts & kDamaged) ? 0 : parts;
     m_worker.stop(0);
     for (const auto &stack : std::as_const(flight))
         if (!stack.isEmpty())
             a.inFlight.append(stack.constLast().first);
     a.inFlight.sort();
     return a;
+}
+
+Recovery StageSession::partial(const Attempt &a, const QString &why)
+{
+    // What the stages before the stop finished, and an error that says the rest is missing.
+    Recovery r = a.recovery;
+    const bool launched = a.parts & stagestream::LaunchPart;
+    if (!launched)
+        r.launch = {};
+    r.architecture = {};
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Error;
+    d.code = QStringLiteral("analysis-incomplete");
+    d.message = QStringLiteral("The analysis stopped during stage %1, outside the work on any one "
+                               "file (%2); what stage %3 found is kept, stages %1 to 3 have no "
+                               "result.")
+                    .arg(launched ? 3 : 2)
+                    .arg(why)
+                    .arg(launched ? QStringLiteral("1 and 2") : QStringLiteral("1"));
+    (launched ? r.architecture.diagnostics : r.launch.diagnostics).append(d);
+    return r;
 }
 
 StageProcess::Result StageSession::supervise(StageRequest request, const StageControl &control)
@@ -316,6 +339,10 @@ StageProcess::Result StageSession::supervise(StageRequest request, const StageCo
             return result;
         }
         if (a.inFlight.isEmpty()) {
+            if (request.job == StageRequest::Job::Recovery && (a.parts & stagestream::NodesPart)) {
+                result.recovery = partial(a, failure(a, m_options, false));
+                return result;
+            }
             result.error = QStringLiteral("The analysis stopped outside the work on any one file, "
                                           "so there is no result: %1.")
                                .arg(failure(a, m_options, false));

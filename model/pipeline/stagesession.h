@@ -46,6 +46,8 @@ private:
     struct Attempt;
     StageProcess::Result supervise(StageRequest request, const StageControl &control);
     Attempt attempt(const StageRequest &request, const StageControl &control);
+    /// The result of the stages an attempt finished before its worker stopped outside any file.
+    static Recovery partial(const Attempt &a, const QString &why);
     bool ensureWorker(QString *error);
 
     QMutex m_mutex; ///< one run at a time

@@ -239,6 +239,18 @@ private:
     QList<QFuture<void>> m_writes;
 };
 
+/// For tests: ROSARCH_STAGES_TEST_CRASH_AFTER_STAGE=N crashes the worker outside any file once
+/// stage N's result is sent.
+void testStageFault(int stage, ReplyAhead *ahead)
+{
+    static const int after = qEnvironmentVariableIntValue("ROSARCH_STAGES_TEST_CRASH_AFTER_STAGE");
+    if (after > 0 && stage == after) {
+        ahead->finish();
+        std::fflush(stdout);
+        std::raise(SIGSEGV);
+    }
+}
+
 /// `composed`: the last complete run's stage 3 with its inputs, reused when they are equal.
 Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *ahead)
 {
@@ -273,9 +285,11 @@ Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *
                 control.stageTimed(3, clock.elapsed());
         }
     } else {
-        result = recoverWorkspace(
-            request.root, request.options, control, composed,
-            [ahead](int stage, const Recovery &sofar) { ahead->send(stage, sofar); });
+        result = recoverWorkspace(request.root, request.options, control, composed,
+                                  [ahead](int stage, const Recovery &sofar) {
+                                      ahead->send(stage, sofar);
+                                      testStageFault(stage, ahead);
+                                  });
     }
     return result;
 }

@@ -225,6 +225,24 @@ private Q_SLOTS:
                  qPrintable(r.error));
     }
 
+    void aWorkerThatDiesAfterStageOneKeepsStageOne()
+    {
+        // Issue 43: a worker dying outside any one file wrote no artifacts at all. What the
+        // stages before the stop finished is kept, with an error that says the rest is missing.
+        const Fault fault("ROSARCH_STAGES_TEST_CRASH_AFTER_STAGE", "1");
+        const StageProcess::Result r =
+            StageProcess::recover(test::dataDir(QStringLiteral("py_basic")), {}, {}, {});
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QVERIFY(!r.recovery.nodes.nodes.isEmpty());
+        QVERIFY(r.recovery.launch.nodes.isEmpty());
+        const QStringList said =
+            test::diagnosticsWithCode(r.recovery, QStringLiteral("analysis-incomplete"));
+        QCOMPARE(said.size(), 1);
+        QVERIFY2(said.first().contains(QLatin1String("stopped during stage 2")) &&
+                     said.first().contains(QLatin1String("crashed (signal 11)")),
+                 qPrintable(said.first()));
+    }
+
     void aMissingWorkerIsSaid()
     {
         StageProcess::Options options;
