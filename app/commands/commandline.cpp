@@ -156,7 +156,8 @@ int recover(const QStringList &arguments)
     int decisions = 0;
     QString failure;
     QList<Orphan> orphans;
-    const Recovery recovery = run.recover(&decisions, &failure, &orphans);
+    QByteArray madeFrom;
+    const Recovery recovery = run.recover(&decisions, &failure, &orphans, &madeFrom);
     const qint64 elapsed = timer.elapsed();
     if (!failure.isEmpty()) {
         err << failure << '\n'
@@ -185,7 +186,7 @@ int recover(const QStringList &arguments)
         err << ProjectCommand::describe(o, run.projectFile()) << '\n';
     QStringList written;
     QString error;
-    if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error)) {
+    if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error, madeFrom)) {
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }

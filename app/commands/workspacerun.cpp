@@ -3,6 +3,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QFile>
 #include <QFileInfo>
 
 namespace rosarch {
@@ -89,7 +91,7 @@ bool WorkspaceRun::readProject(const QString &file, Project *project, QString *e
 }
 
 Recovery WorkspaceRun::recovered(const QString &workspace, const LaunchOptions &launch,
-                                 bool inProcess, QString *failure)
+                                 bool inProcess, QString *failure, QByteArray *replyDigest)
 {
     if (!inProcess && !StageProcess::helperPath().isEmpty()) {
         StageProcess::Result r =
@@ -99,6 +101,8 @@ Recovery WorkspaceRun::recovered(const QString &workspace, const LaunchOptions &
                 *failure = r.error;
             return {};
         }
+        if (replyDigest)
+            *replyDigest = r.replyDigest;
         return std::move(r.recovery);
     }
     Recovery recovery = recoverWorkspace(workspace, launch);
@@ -107,10 +111,20 @@ Recovery WorkspaceRun::recovered(const QString &workspace, const LaunchOptions &
     return recovery;
 }
 
-Recovery WorkspaceRun::recover(int *applied, QString *failure, QList<Orphan> *orphans) const
+Recovery WorkspaceRun::recover(int *applied, QString *failure, QList<Orphan> *orphans,
+                               QByteArray *madeFrom) const
 {
     QString why;
-    Recovery recovery = recovered(m_workspace, m_launch, m_inProcess, &why);
+    QByteArray reply;
+    Recovery recovery = recovered(m_workspace, m_launch, m_inProcess, &why, &reply);
+    if (madeFrom) {
+        madeFrom->clear();
+        QFile project(m_projectFile);
+        if (!reply.isEmpty() && (m_projectFile.isEmpty() || project.open(QIODevice::ReadOnly)))
+            *madeFrom = reply + QCryptographicHash::hash(
+                                    m_projectFile.isEmpty() ? QByteArray() : project.readAll(),
+                                    QCryptographicHash::Sha1);
+    }
     if (!why.isEmpty()) {
         if (failure)
             *failure = why;

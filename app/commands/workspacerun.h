@@ -26,8 +26,10 @@ public:
     /// `applied` counts its accepted decisions and corrections, `orphans` gets what matched
     /// nothing. When the worker stops without a result (outside any one file's analysis),
     /// `failure` says why and the recovery is empty.
+    /// `madeFrom` gets a digest of what decided the result (the worker's reply and the project
+    /// file), for ArtifactWriter to know unchanged artifacts cheaply; "" when there is none.
     Recovery recover(int *applied = nullptr, QString *failure = nullptr,
-                     QList<Orphan> *orphans = nullptr) const;
+                     QList<Orphan> *orphans = nullptr, QByteArray *madeFrom = nullptr) const;
     const QString &workspace() const { return m_workspace; }
     /// The project applied (empty without one).
     const Project &project() const { return m_project; }
@@ -37,7 +39,7 @@ public:
     /// Runs stages 1 to 3 on `workspace` as recovered (no project), in the analysis worker
     /// unless `inProcess`; `failure` as for recover().
     static Recovery recovered(const QString &workspace, const LaunchOptions &launch, bool inProcess,
-                              QString *failure);
+                              QString *failure, QByteArray *replyDigest = nullptr);
     /// Reads the project `file`; false with a message naming the file when it cannot be used.
     static bool readProject(const QString &file, Project *project, QString *error);
 

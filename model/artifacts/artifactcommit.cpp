@@ -123,7 +123,8 @@ bool ArtifactCommit::isArtifact(const QString &topName)
                                      QStringLiteral("ccd"),
                                      QStringLiteral("mermaid"),
                                      QStringLiteral("graph")};
-    return ours.contains(topName) || topName.startsWith(QLatin1String(".rosarch-writing-"));
+    return ours.contains(topName) || topName == QLatin1String(kStampFile) ||
+           topName.startsWith(QLatin1String(".rosarch-writing-"));
 }
 
 void ArtifactCommit::removeStale() const
@@ -246,10 +247,66 @@ bool ArtifactCommit::syncFolders(QString *error) const
     return true;
 }
 
-bool ArtifactCommit::commit(QStringList *written, QString *error)
+namespace {
+
+/// "size mtime" of a file, as the stamp records it; "" when it is no regular file.
+QByteArray fileStamp(const QString &path)
+{
+    struct stat st = {};
+    if (stat(native(path).constData(), &st) != 0 || !S_ISREG(st.st_mode))
+        return {};
+    return QByteArray::number(qint64(st.st_size)) + ' ' +
+           QByteArray::number(qint64(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec);
+}
+
+} // namespace
+
+bool ArtifactCommit::writeStamp(const QByteArray &stamp, QString *error)
+{
+    // Renames and links keep a file's time: what is recorded here is what the folder will hold.
+    QByteArray record = stamp + '\n';
+    for (const QString &relative : std::as_const(m_files))
+        record +=
+            relative.toUtf8() + '\t' + fileStamp(m_staging + QLatin1Char('/') + relative) + '\n';
+    const QString path = m_staging + QLatin1Char('/') + QLatin1String(kStampFile);
+    if (!writeNew(path, record)) {
+        *error = QStringLiteral("Cannot write %1: %2").arg(path, systemError());
+        return false;
+    }
+    return true;
+}
+
+bool ArtifactCommit::unchanged(const QString &dir, const QByteArray &stamp, QStringList *written)
+{
+    if (stamp.isEmpty())
+        return false;
+    QFile f(dir + QLatin1Char('/') + QLatin1String(kStampFile));
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    const QList<QByteArray> lines = f.readAll().split('\n');
+    if (lines.isEmpty() || lines.first() != stamp)
+        return false;
+    QStringList files;
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        if (lines.at(i).isEmpty())
+            continue;
+        const qsizetype tab = lines.at(i).indexOf('\t');
+        const QString path = dir + QLatin1Char('/') + QString::fromUtf8(lines.at(i).left(tab));
+        if (tab < 0 || fileStamp(path) != lines.at(i).mid(tab + 1))
+            return false;
+        files << path;
+    }
+    if (written)
+        written->append(files);
+    return true;
+}
+
+bool ArtifactCommit::commit(QStringList *written, QString *error, const QByteArray &stamp)
 {
     if (m_inPlace)
         return commitInPlace(written, error);
+    if (!stamp.isEmpty() && !writeStamp(stamp, error))
+        return false;
     int budget = kMaxCarried;
     bool carried = true;
     for (const QString &name : namesIn(m_dir))
@@ -290,6 +347,7 @@ bool ArtifactCommit::commit(QStringList *written, QString *error)
 
 bool ArtifactCommit::commitInPlace(QStringList *written, QString *error)
 {
+    QFile::remove(m_dir + QLatin1Char('/') + QLatin1String(kStampFile)); // files change one by one
     // Diagrams of an earlier run (and their pictures) would otherwise linger beside the new
     // ones; then each file replaces its old version by a rename.
     for (const QString &sub : {QStringLiteral("acd"), QStringLiteral("ccd"),

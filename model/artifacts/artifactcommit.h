@@ -33,7 +33,16 @@ public:
     /// Writes `content` as `relative` (a path below the output folder).
     bool add(const QString &relative, const QByteArray &content, QString *error);
     /// Puts every file added in place; `written` lists them (absolute paths in the output folder).
-    bool commit(QStringList *written, QString *error);
+    /// `stamp` (a digest of what the artifacts were made from) is kept beside them, with each
+    /// file's size and time, for unchanged().
+    bool commit(QStringList *written, QString *error, const QByteArray &stamp = {});
+
+    /// True when the output folder `dir` holds the artifacts of `stamp` as a commit left them:
+    /// the same stamp, every file there with its size and time. Then nothing needs writing, and
+    /// `written` lists the files. (A file edited or removed since makes it false.)
+    static bool unchanged(const QString &dir, const QByteArray &stamp, QStringList *written);
+    /// The name of that record in the output folder.
+    static constexpr const char *kStampFile = ".rosarch-artifacts";
 
     /// True for the names at the top of an output folder that belong to the artifacts (and are
     /// replaced as a whole): the JSON files, the diagram folders, staging folders.
@@ -44,6 +53,7 @@ public:
 private:
     bool carryOver(const QString &from, const QString &to, int *budget) const;
     bool syncFolders(QString *error) const;
+    bool writeStamp(const QByteArray &stamp, QString *error);
     bool commitInPlace(QStringList *written, QString *error);
     void removeStale() const;
 

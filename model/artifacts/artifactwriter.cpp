@@ -7,28 +7,72 @@
 #include "communicationgraph.h"
 #include "launchdependenciesjson.h"
 #include "mermaidwriter.h"
+#include "recoverystream.h"
 #include "visibletext.h"
 
+#include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QDataStream>
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+
+#include <dlfcn.h>
+
 namespace rosarch {
+
+namespace {
+
+/// What the artifacts are made from: the recovery (as the worker sends it) and this build of
+/// the writers (the program's and this library's files). Equal stamps, equal artifacts.
+QByteArray stampOf(const Recovery &recovery, bool withLaunch, const QByteArray &madeFrom)
+{
+    QByteArray bytes = madeFrom;
+    if (madeFrom.isEmpty()) {
+        QDataStream out(&bytes, QIODevice::WriteOnly);
+        out.setVersion(stagestream::kStreamVersion);
+        stagestream::writeParts(out, withLaunch ? stagestream::AllParts : stagestream::NodesPart,
+                                recovery, Recovery{});
+    }
+    QCryptographicHash hash(QCryptographicHash::Sha1);
+    hash.addData(bytes);
+    hash.addData(QCoreApplication::applicationVersion().toUtf8());
+    QString library;
+    Dl_info info = {};
+    if (dladdr(reinterpret_cast<const void *>(&stampOf), &info) != 0 && info.dli_fname)
+        library = QFile::decodeName(info.dli_fname);
+    for (const QString &binary : {QCoreApplication::applicationFilePath(), library}) {
+        const QFileInfo f(binary);
+        hash.addData(QByteArray::number(f.lastModified().toMSecsSinceEpoch()) +
+                     f.filePath().toUtf8());
+    }
+    return QByteArrayLiteral("rosarch-artifacts 1 ") + hash.result().toHex();
+}
+
+} // namespace
 
 bool ArtifactWriter::writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
                               QString *error)
 {
     Recovery r;
     r.nodes = nodes;
-    return writeAll(r, dir, written, error, false);
+    return writeAll(r, dir, written, error, false, {});
 }
 
 bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                              QString *error)
+                              QString *error, const QByteArray &madeFrom)
 {
-    return writeAll(recovery, dir, written, error, true);
+    return writeAll(recovery, dir, written, error, true, madeFrom);
 }
 
 bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                              QString *error, bool withLaunch)
+                              QString *error, bool withLaunch, const QByteArray &madeFrom)
 {
     const AtomicNodeList &nodes = recovery.nodes;
+    // The folder holds these artifacts already, untouched since: nothing to write (a warm run).
+    const QByteArray stamp = stampOf(recovery, withLaunch, madeFrom);
+    if (ArtifactCommit::unchanged(dir, stamp, written))
+        return true;
     // Everything goes into a fresh folder first, swapped in when every file is written: a
     // full disk, a failure or a kill leaves the previous artifacts as they were, never a mix.
     ArtifactCommit commit(dir);
@@ -77,7 +121,7 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
                 return false;
     }
 
-    return commit.commit(written, error);
+    return commit.commit(written, error, stamp);
 }
 
 } // namespace rosarch

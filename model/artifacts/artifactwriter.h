@@ -19,15 +19,18 @@ class ArtifactWriter
 {
 public:
     /// Returns false with a message when a file cannot be written; `written` lists the files.
+    /// `madeFrom`, when given, is a digest of what decided `recovery` (WorkspaceRun::recover):
+    /// the artifacts' stamp is then made from it, not from the recovery (which costs a tenth of
+    /// a warm run on navigation2).
     static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                         QString *error);
+                         QString *error, const QByteArray &madeFrom = {});
     /// Stage 1 only (no launch_dependencies.json).
     static bool writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
                          QString *error);
 
 private:
     static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                         QString *error, bool withLaunch);
+                         QString *error, bool withLaunch, const QByteArray &madeFrom);
 };
 
 } // namespace rosarch

@@ -36,6 +36,9 @@ public:
         bool canceled = false;
         QString error; ///< why there is no result ("" when there is one)
         int attempts = 0;
+        /// A digest of the worker's reply when it alone decides `recovery` (a worker's first
+        /// reply, in full): equal digests, equal results. "" otherwise.
+        QByteArray replyDigest;
     };
 
     /// The worker: $ROSARCH_STAGES, else rosarch-stages next to the application, else the one

@@ -1,5 +1,6 @@
 #include "stagesession.h"
 #include "recoverystream.h"
+#include "sha1.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -7,6 +8,7 @@
 #include <QtEndian>
 
 #include <chrono>
+#include <memory>
 #include <thread>
 
 namespace rosarch {
@@ -57,6 +59,8 @@ struct StageSession::Attempt
     QString timedOut;     ///< the file that overran its time budget (the worker was killed)
     QStringList inFlight; ///< files being analysed when the worker stopped
     quint8 parts = 0;     ///< the parts of `recovery` that arrived (stages finished)
+    /// Of the result frames, when the reply was relative to no earlier one (else empty).
+    std::shared_ptr<Sha1> digest;
 };
 
 namespace {
@@ -107,6 +111,7 @@ void StageSession::releaseWorker()
     QMutexLocker lock(&m_mutex);
     m_worker.release();
     m_base = {};
+    m_baseIsEmpty = true;
 }
 
 void StageSession::setOptions(const StageProcess::Options &options)
@@ -143,6 +148,7 @@ bool StageSession::ensureWorker(QString *error)
         return true;
     m_worker.stop(0);
     m_base = {}; // a new worker replies in full
+    m_baseIsEmpty = true;
     if (m_helper.isEmpty())
         return false;
     if (!m_worker.start(m_helper, error))
@@ -164,7 +170,9 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
     a.started = true;
     m_worker.output().clear();
     m_worker.errors().clear();
-    m_worker.write(encode(request)); // a worker gone already is seen below
+    if (m_baseIsEmpty)
+        a.digest = std::make_shared<Sha1>(); // a reply in full: its bytes decide the result
+    m_worker.write(encode(request));         // a worker gone already is seen below
 
     // Per worker thread, the files it is in, innermost last, with when each began.
     QHash<quint64, QList<QPair<QString, qint64>>> flight;
@@ -217,13 +225,17 @@ StageSession::Attempt StageSession::attempt(const StageRequest &request,
                         }
                 }
             } else if (type == stagestream::Ahead || type == stagestream::Result) {
+                if (a.digest)
+                    a.digest->addData(QByteArrayView(buffer.constData() + read - length, length));
                 // Parts sent ahead are decoded while the worker runs the next stage.
                 if (!stagestream::readParts(frame, &a.recovery, m_base, &parts))
                     parts |= kDamaged;
                 if (type == stagestream::Result)
                     a.hasResult = parts == stagestream::AllParts;
-                if (a.hasResult)
+                if (a.hasResult) {
                     m_base = a.recovery;
+                    m_baseIsEmpty = false;
+                }
             }
         }
         if (read > 0) {
@@ -336,6 +348,8 @@ StageProcess::Result StageSession::supervise(StageRequest request, const StageCo
         }
         if (a.hasResult) {
             result.recovery = a.recovery;
+            if (a.digest)
+                result.replyDigest = a.digest->result();
             return result;
         }
         if (a.inFlight.isEmpty()) {

@@ -54,7 +54,8 @@ private:
     StageProcess::Options m_options;
     QString m_helper;
     WorkerProcess m_worker;
-    Recovery m_base; ///< the worker's previous reply, which its next one is relative to
+    Recovery m_base;           ///< the worker's previous reply, which its next one is relative to
+    bool m_baseIsEmpty = true; ///< no previous reply: the next one comes in full
     int m_started = 0;
 };
 

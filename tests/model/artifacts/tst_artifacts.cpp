@@ -246,6 +246,43 @@ private Q_SLOTS:
             QStringList{QStringLiteral("out")});
     }
 
+    void anUnchangedResultIsNotWrittenAgain()
+    {
+        // Issue 43: a warm run wrote 20 MB of unchanged artifacts again. A stamp of what they
+        // were made from, with each file's size and time, lets the next run skip the writing.
+        QTemporaryDir dir;
+        auto inode = [&](const QString &relative) {
+            struct stat st = {};
+            return ::stat(QFile::encodeName(dir.filePath(relative)).constData(), &st) == 0
+                       ? st.st_ino
+                       : ino_t(0);
+        };
+        QStringList written;
+        QString error;
+        QVERIFY2(ArtifactWriter::writeAll(sampleList(), dir.path(), &written, &error),
+                 qPrintable(error));
+        const QString stamp = QString::fromLatin1(ArtifactCommit::kStampFile);
+        const ino_t first = inode(stamp);
+        QVERIFY(first != 0);
+        written.clear();
+        QVERIFY(ArtifactWriter::writeAll(sampleList(), dir.path(), &written, &error));
+        QCOMPARE(written.size(), 4);
+        QCOMPARE(inode(stamp), first); // nothing written
+        // An artifact edited since is noticed: everything is written again.
+        const QString acd = dir.filePath(QStringLiteral("acd/Talker.puml"));
+        const QByteArray original = test::readFile(acd);
+        test::writeFile(acd, original + "' edited\n");
+        QVERIFY(ArtifactWriter::writeAll(sampleList(), dir.path(), &written, &error));
+        QVERIFY(inode(stamp) != first);
+        QCOMPARE(test::readFile(acd), original);
+        // Another result: written again.
+        AtomicNodeList other = sampleList();
+        other.nodes.removeLast();
+        const ino_t second = inode(stamp);
+        QVERIFY(ArtifactWriter::writeAll(other, dir.path(), &written, &error));
+        QVERIFY(inode(stamp) != second);
+    }
+
     void writerReportsUnwritableFolder()
     {
         QTemporaryDir dir;
