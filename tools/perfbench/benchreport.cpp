@@ -42,6 +42,8 @@ QString pathName(Path p)
         return QStringLiteral("in-process");
     case Path::Session:
         return QStringLiteral("gui-session");
+    case Path::Command:
+        return QStringLiteral("recover-command");
     }
     return {};
 }

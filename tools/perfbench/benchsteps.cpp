@@ -9,6 +9,7 @@
 #include "workerprocess.h"
 #include "workspacescanner.h"
 
+#include <QCoreApplication>
 #include <QDirIterator>
 #include <QElapsedTimer>
 #include <QFile>
@@ -93,10 +94,11 @@ RunResult runChild(const QString &program, Path path, const QString &root, const
 {
     QProcess child;
     child.setProcessEnvironment(childEnvironment(cacheDir));
-    child.start(program,
-                {QStringLiteral("--child"),
-                 path == Path::Worker ? QStringLiteral("worker") : QStringLiteral("inprocess"),
-                 root});
+    child.start(program, {QStringLiteral("--child"),
+                          path == Path::Worker    ? QStringLiteral("worker")
+                          : path == Path::Command ? QStringLiteral("command")
+                                                  : QStringLiteral("inprocess"),
+                          root});
     RunResult r;
     const QStringList fields = childFigures(child, &r);
     if (!r.error.isEmpty())
@@ -123,7 +125,22 @@ int childMain(const QString &path, const QString &root)
             QTextStream(stderr) << "stage " << stage << ' ' << stageMs << " ms (at "
                                 << timer.elapsed() << " ms)\n";
         };
-    if (path == QLatin1String("worker")) {
+    if (path == QLatin1String("command")) {
+        // The command next to this program, writing beside the copied workspace, as a user
+        // runs it again and again into one folder.
+        QProcess rosarch;
+        rosarch.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        rosarch.setStandardOutputFile(QProcess::nullDevice());
+        rosarch.start(QCoreApplication::applicationDirPath() + QStringLiteral("/rosarch"),
+                      {QStringLiteral("recover"), root, QStringLiteral("--quiet"),
+                       QStringLiteral("--out"), root + QStringLiteral("-artifacts")});
+        if (!rosarch.waitForFinished(30 * 60 * 1000) || rosarch.exitCode() > 1) {
+            QTextStream(stderr) << "rosarch-perfbench: rosarch recover failed\n";
+            return 1;
+        }
+        ms = timer.elapsed();
+        rss = maxRssKb(RUSAGE_CHILDREN); // the command or its worker, whichever was larger
+    } else if (path == QLatin1String("worker")) {
         const StageProcess::Result r = StageProcess::recover(root, {}, control, {});
         ms = timer.elapsed(); // the worker writes its cache after that, on its own
         if (!r.error.isEmpty()) {

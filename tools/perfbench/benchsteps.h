@@ -24,6 +24,7 @@ enum class Path
     Worker,    ///< through rosarch-stages, as the GUI runs it
     InProcess, ///< recoverWorkspace() in the measuring process
     Session,   ///< one StageSession kept across the runs, as the GUI's StageRunner keeps it
+    Command,   ///< the `rosarch recover` command, end to end: artifacts written included
 };
 
 /// One recovery, measured in a child process of its own.

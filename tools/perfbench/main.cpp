@@ -1,6 +1,7 @@
 // rosarch-perfbench: how fast recovery is, in one run on one workspace.
 //
 //   rosarch-perfbench <workspace> [--runs N] [--edit <file>] [--json]
+//   rosarch-perfbench --generate packages:N | launch-files:N [--runs N] [--json]
 //
 // The workspace is copied to a temporary folder first (nothing is written into it). Reported:
 // the baseline (a single-core tree-sitter parse of every Python and C++ file the stages
@@ -16,6 +17,7 @@
 // ROSARCH_PERFBENCH_PAUSE_MS=N waits N ms before each run (a person's pause before an edit).
 #include "benchreport.h"
 #include "benchsteps.h"
+#include "syntheticworkspace.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -73,15 +75,40 @@ int main(int argc, char **argv)
         QStringLiteral("file"));
     const QCommandLineOption jsonOption(QStringLiteral("json"),
                                         QStringLiteral("Print the report as JSON."));
-    parser.addOptions({runsOption, editOption, jsonOption});
+    const QCommandLineOption generateOption(
+        QStringLiteral("generate"),
+        QStringLiteral("Measure a generated workspace instead of a folder: packages:N (N "
+                       "packages, as the large-workspace test makes them) or launch-files:N (one "
+                       "package with N small launch files)."),
+        QStringLiteral("kind:N"));
+    parser.addOptions({runsOption, editOption, jsonOption, generateOption});
     parser.process(app);
     QTextStream err(stderr);
     QTextStream out(stdout);
-    if (parser.positionalArguments().size() != 1) {
+    QTemporaryDir generated;
+    QString source;
+    if (parser.isSet(generateOption)) {
+        const QString kind = parser.value(generateOption).section(QLatin1Char(':'), 0, 0);
+        const int count = parser.value(generateOption).section(QLatin1Char(':'), 1).toInt();
+        QString error;
+        const bool ok =
+            count > 0 &&
+            (kind == QLatin1String("packages")
+                 ? rosarch::SyntheticWorkspace::generate(generated.path(), count, 10, &error)
+             : kind == QLatin1String("launch-files")
+                 ? rosarch::SyntheticWorkspace::generateLaunchFiles(generated.path(), count, &error)
+                 : (error = QStringLiteral("unknown kind"), false));
+        if (!ok) {
+            err << "--generate packages:N or launch-files:N: " << error << '\n';
+            return 2;
+        }
+        source = generated.path();
+    } else if (parser.positionalArguments().size() != 1) {
         err << parser.helpText();
         return 2;
+    } else {
+        source = QFileInfo(parser.positionalArguments().first()).absoluteFilePath();
     }
-    const QString source = QFileInfo(parser.positionalArguments().first()).absoluteFilePath();
     if (!QFileInfo(source).isDir()) {
         err << "Not a folder: " << source << '\n';
         return 2;
@@ -135,6 +162,9 @@ int main(int argc, char **argv)
          0},
         {QStringLiteral("one-file-edit"), Path::Session, true, Plan::Edit,
          QStringLiteral("<= 0.1x, < 200 ms"), 0.1, 200},
+        // The command a user runs, end to end: the artifacts written (or kept) included.
+        {QStringLiteral("warm"), Path::Command, true, Plan::Warm, QStringLiteral("<= 0.2x"), 0.2,
+         0},
     };
     int edits = 0;
     for (const Plan &plan : plans) {
@@ -144,6 +174,7 @@ int main(int argc, char **argv)
         err << plan.name
             << (plan.path == Path::Worker      ? " (worker)"
                 : plan.path == Path::InProcess ? " (in-process)"
+                : plan.path == Path::Command   ? " (recover command)"
                                                : " (gui session)")
             << "...\n";
         if (plan.path == Path::Session) {

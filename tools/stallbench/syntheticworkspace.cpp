@@ -142,4 +142,55 @@ def main(args=None):
     return ok;
 }
 
+bool SyntheticWorkspace::generateLaunchFiles(const QString &root, int files, QString *error)
+{
+    const QString dir = root + QStringLiteral("/src/many_launch");
+    bool ok = ::rosarch::write(dir + QStringLiteral("/package.xml"),
+                               packageXml(QStringLiteral("many_launch"), false), error) &&
+              ::rosarch::write(dir + QStringLiteral("/setup.py"),
+                               QStringLiteral("from setuptools import setup\n\nsetup(name="
+                                              "'many_launch', packages=['many_launch'], "
+                                              "entry_points={'console_scripts': ['node = "
+                                              "many_launch.node:main']})\n"),
+                               error) &&
+              ::rosarch::write(dir + QStringLiteral("/many_launch/__init__.py"), {}, error) &&
+              ::rosarch::write(dir + QStringLiteral("/many_launch/node.py"),
+                               QStringLiteral("from rclpy.node import Node\nfrom std_msgs.msg "
+                                              "import String\n\n\nclass Relay(Node):\n    def "
+                                              "__init__(self):\n        super().__init__('relay')"
+                                              "\n        self.create_publisher(String, 'out', "
+                                              "10)\n"),
+                               error);
+    for (int i = 0; ok && i < files; ++i) {
+        const QString name = QStringLiteral("relay_%1").arg(i);
+        const QString base = dir + QStringLiteral("/launch/l%1").arg(i, 5, 10, QLatin1Char('0'));
+        switch (i % 3) {
+        case 0:
+            ok = ::rosarch::write(
+                base + QStringLiteral(".launch.py"),
+                QStringLiteral("from launch import LaunchDescription\nfrom launch_ros.actions "
+                               "import Node\n\n\ndef generate_launch_description():\n    return "
+                               "LaunchDescription([Node(package='many_launch', executable='node', "
+                               "name='%1')])\n")
+                    .arg(name),
+                error);
+            break;
+        case 1:
+            ok = ::rosarch::write(base + QStringLiteral(".launch.xml"),
+                                  QStringLiteral("<launch>\n  <node pkg=\"many_launch\" "
+                                                 "exec=\"node\" name=\"%1\"/>\n</launch>\n")
+                                      .arg(name),
+                                  error);
+            break;
+        default:
+            ok = ::rosarch::write(base + QStringLiteral(".launch.yaml"),
+                                  QStringLiteral("launch:\n- node: {pkg: many_launch, exec: node, "
+                                                 "name: %1}\n")
+                                      .arg(name),
+                                  error);
+        }
+    }
+    return ok;
+}
+
 } // namespace rosarch

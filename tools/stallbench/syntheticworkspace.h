@@ -13,6 +13,9 @@ namespace SyntheticWorkspace {
 /// Writes `packages` packages under `root`/src; false (and `error`) when a file cannot be
 /// written.
 bool generate(const QString &root, int packages, int group, QString *error);
+/// One Python package under `root`/src whose `files` launch files (alternately Python, XML and
+/// YAML) each start its node once: a workspace of many small launch files.
+bool generateLaunchFiles(const QString &root, int files, QString *error);
 } // namespace SyntheticWorkspace
 
 } // namespace rosarch
