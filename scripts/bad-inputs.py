@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs rosarch on the hostile inputs of issue 13, one generated workspace per row, and prints
+"""Runs rosarch on the hostile inputs of issues 13 and 43, one generated workspace per row, and prints
 what happened: exit code, wall time, peak memory, and the diagnostics that say what was skipped.
 
     scripts/bad-inputs.py [path/to/rosarch]      (default: build/bin/rosarch)
@@ -168,6 +168,119 @@ def binary_file(ws):
     write(f"{ws}/src/pkg/pkg/blob.py", bytes(range(256)) * 64)
 
 
+# Issue 43: sizes, fan-out, many files, special files, control bytes.
+def cmake_doubling(ws):
+    cpp(ws, 'project(cpp)\nset(x "ab")\nforeach(i RANGE 40)\n  set(x "${x}${x}")\nendforeach()\n'
+            'add_executable(worker src/worker.cpp)\n')
+
+
+def launch_doubling(ws, kind):
+    if kind == "xml":
+        args = ['  <arg name="a0" default="ab"/>'] + [
+            f'  <arg name="a{i}" default="$(var a{i-1})$(var a{i-1})"/>' for i in range(1, 26)]
+        write(f"{ws}/src/pkg/launch/double.launch.xml", "<launch>\n" + "\n".join(args) +
+              '\n  <node pkg="pkg" exec="good" name="good" namespace="$(var a25)"/>\n</launch>\n')
+        return
+    if kind == "yaml":
+        body = "launch:\n- arg: {name: a0, default: ab}\n" + "".join(
+            f'- arg: {{name: a{i}, default: "$(var a{i-1})$(var a{i-1})"}}\n' for i in range(1, 26))
+        write(f"{ws}/src/pkg/launch/double.launch.yaml",
+              body + '- node: {pkg: pkg, exec: good, name: good, namespace: "$(var a25)"}\n')
+        return
+    body = "    ld = [DeclareLaunchArgument('a0', default_value='ab')]\n" + "".join(
+        f"    ld.append(DeclareLaunchArgument('a{i}', default_value=[C('a{i-1}'), C('a{i-1}')]))\n"
+        for i in range(1, 26))
+    write(f"{ws}/src/pkg/launch/double.launch.py",
+          "from launch.actions import DeclareLaunchArgument\n"
+          "from launch.substitutions import LaunchConfiguration as C\n" +
+          launch_py(body + "    ld.append(Node(package='pkg', executable='good', name='good', "
+                    "namespace=C('a25')))\n    return LaunchDescription(ld)\n"))
+
+
+def long_namespace(ws):
+    write(f"{ws}/src/pkg/launch/long.launch.xml",
+          '<launch>\n  <node pkg="pkg" exec="good" name="good" namespace="' + "n" * 131072 +
+          '"/>\n  <node pkg="pkg" exec="good" name="near"/>\n</launch>\n')
+
+
+def many_launch_files(ws, n=1500):
+    for i in range(n):
+        write(f"{ws}/src/pkg/launch/l{i}.launch.py",
+              launch_py(f"    return LaunchDescription([Node(package='pkg', executable='good', "
+                        f"name='g{i}')])\n"))
+
+
+def many_packages(ws, n=2000):
+    for i in range(n):
+        write(f"{ws}/src/p{i}/package.xml", f'<package format="3"><name>p{i}</name></package>\n')
+        write(f"{ws}/src/p{i}/launch/l.launch.py",
+              launch_py(f"    return LaunchDescription([Node(package='pkg', executable='good', "
+                        f"name='g{i}')])\n"))
+
+
+def control_bytes(ws):
+    write(f"{ws}/src/pkg/launch/red\x1b[31mbell\x07.launch.xml",
+          '<launch>\n  <include file="gone\x1b]0;pwned\x07.xml"/>\n</launch>\n')
+    write(f"{ws}/src/pkg/launch/new\nline.launch.xml",
+          '<launch>\n  <include file="gone.xml"/>\n</launch>\n')
+    cpp(ws, "project(cpp)\nadd_executable(clear\x1b[2J src/worker.cpp)\n")
+    write(f"{ws}/src/pkg/launch/title.launch.py",
+          launch_py("    return LaunchDescription([Node(package='pkg', "
+                    "executable='nope\\x1b]0;title\\x07', name='t')])\n"))
+
+
+def special_files(ws):
+    os.makedirs(f"{ws}/src/pkg/launch", exist_ok=True)
+    os.mkfifo(f"{ws}/src/pkg/pkg/fifo.py")
+    os.mkfifo(f"{ws}/src/pkg/launch/fifo.launch.xml")
+    sock = socket.socket(socket.AF_UNIX)
+    sock.bind(f"{ws}/src/pkg/pkg/sock.py")
+    sock.close()
+    os.symlink("nowhere.py", f"{ws}/src/pkg/pkg/dangling.py")
+    os.symlink("loop_b.py", f"{ws}/src/pkg/pkg/loop_a.py")
+    os.symlink("loop_a.py", f"{ws}/src/pkg/pkg/loop_b.py")
+    os.symlink("self.py", f"{ws}/src/pkg/pkg/self.py")
+    os.makedirs(f"{ws}/src/fifo_pkg")
+    os.mkfifo(f"{ws}/src/fifo_pkg/package.xml")
+
+
+def duplicate_package(ws):
+    write(f"{ws}/src/copy/package.xml",
+          '<package format="3"><name>pkg</name><export><build_type>ament_python'
+          '</build_type></export></package>\n')
+    write(f"{ws}/src/copy/pkg/good.py", "from rclpy.node import Node\n\nclass Good(Node):\n"
+          "    def __init__(self):\n        super().__init__('good')\n")
+
+
+def include_fanout(ws):
+    for name, nxt in (("a", "b"), ("b", "c"), ("c", None)):
+        body = "<launch>\n"
+        if nxt:
+            body += "".join(f'  <group><push-ros-namespace namespace="{name}{i}"/><include '
+                            f'file="$(find-pkg-share pkg)/launch/{nxt}.launch.xml"/></group>\n'
+                            for i in range(30))
+        body += "".join(f'  <node pkg="pkg" exec="good" name="n{i}"/>\n' for i in range(100))
+        write(f"{ws}/src/pkg/launch/{name}.launch.xml", body + "</launch>\n")
+
+
+def many_nodes(ws, kind):
+    if kind == "xml":
+        write(f"{ws}/src/pkg/launch/many.launch.xml", "<launch>\n" + "".join(
+            f'  <node pkg="pkg" exec="good" name="n{i}"/>\n' for i in range(60000)) + "</launch>\n")
+    else:
+        write(f"{ws}/src/pkg/launch/many.launch.yaml", "launch:\n" + "".join(
+            f"- node: {{pkg: pkg, exec: good, name: n{i}}}\n" for i in range(60000)))
+
+
+def many_ports(ws):
+    cpp(ws)
+    body = "".join(f'    p{i}_ = create_publisher<std_msgs::msg::String>("t{i}", 10);\n'
+                   for i in range(60000))
+    write(f"{ws}/src/cpp/src/worker.cpp",
+          '#include "rclcpp/rclcpp.hpp"\nclass Worker : public rclcpp::Node {\npublic:\n'
+          '  Worker() : Node("worker") {\n' + body + '  }\n};\n')
+
+
 CASES = [
     ("self-referencing parameter default (C++)", self_reference, None),
     ("50,000 nested parentheses in a C++ file", cpp_parens, None),
@@ -186,7 +299,31 @@ CASES = [
     ("one Latin-1 byte in an XML launch file", latin1_xml, "not-utf8"),
     ("include of a missing launch file", missing_include, "no-such-launch-file"),
     ("binary file named .py", binary_file, "binary-file"),
+    ("CMake variable doubled 41 times", cmake_doubling, "evaluation-limit"),
+    ("XML launch argument doubled 25 times", lambda ws: launch_doubling(ws, "xml"),
+     "evaluation-limit"),
+    ("YAML launch argument doubled 25 times", lambda ws: launch_doubling(ws, "yaml"),
+     "evaluation-limit"),
+    ("Python launch argument doubled 25 times", lambda ws: launch_doubling(ws, "py"),
+     "evaluation-limit"),
+    ("128 KB namespace literal", long_namespace, None),
+    ("1,500 small Python launch files", many_launch_files, None),
+    ("2,000 packages of one launch file", many_packages, None),
+    ("control bytes in file names and values", control_bytes, "no-such-launch-file"),
+    ("FIFOs, a socket, dangling and looping links", special_files, "special-file"),
+    ("two folders declaring one package", duplicate_package, "duplicate-package"),
+    ("includes 30 x 30 x 100 nodes (90,000 instances)", include_fanout,
+     "launch-evaluation-limit"),
+    ("XML launch file of 60,000 nodes", lambda ws: many_nodes(ws, "xml"),
+     "launch-evaluation-limit"),
+    ("YAML launch file of 60,000 nodes", lambda ws: many_nodes(ws, "yaml"),
+     "launch-evaluation-limit"),
+    ("one class with 60,000 publishers", many_ports, None),
 ]
+
+
+CONTROLS = [chr(c) for c in range(32) if chr(c) not in "\n\t"] + ["\x7f"] + [
+    chr(c) for c in range(0x80, 0xa0)]
 
 
 def run(args, env=None, shell_prefix=None):
@@ -233,7 +370,11 @@ def recover_cases():
             note = (f"diagnostic `{expected}` {'given' if said else 'MISSING'}" if expected
                     else "")
             crashed = code < 0 or "Segmentation" in err
-            row(name, code, secs, peak, code in (0, 1) and found and said and not crashed, note)
+            raw = any(c in err for c in CONTROLS)
+            if raw:
+                note += " raw control byte in the output"
+            row(name, code, secs, peak,
+                code in (0, 1) and found and said and not crashed and not raw and secs < 30, note)
 
 
 def full_disk():
@@ -256,6 +397,45 @@ def full_disk():
         ok = code == 1 and before == after and not leftovers and "Cannot write" in err
         row("full disk while writing (1 KB file-size limit)", code, secs, peak, ok,
             f"{len(after)} earlier artifacts unchanged, {len(leftovers)} staging folders left")
+
+
+def kill_during_commit():
+    """Kills `rosarch recover` at moments spread over a run of 2,000 ACDs, alternating two
+    workspaces: the output folder must hold one of them whole every time."""
+    with tempfile.TemporaryDirectory() as tmp:
+        for tag in "AB":
+            ws = os.path.join(tmp, tag)
+            healthy(ws)
+            write(f"{ws}/src/pkg/pkg/nodes.py", "from rclpy.node import Node\n" + "".join(
+                f"class N{tag}{i}(Node):\n    def __init__(self):\n"
+                f"        super().__init__('n{i}')\n" for i in range(2000)))
+        out = os.path.join(tmp, "out")
+
+        def holds():
+            acds = [f for f in os.listdir(f"{out}/acd") if f.startswith("N")]
+            tag = "A" if '"NA0"' in open(f"{out}/atomic_nodes.json").read() else "B"
+            return tag if len(acds) == 2000 and all(f[1] == tag for f in acds) else "mixed"
+
+        start = time.monotonic()
+        run([ROSARCH, "recover", os.path.join(tmp, "A"), "--out", out])
+        full = time.monotonic() - start
+        seen = {"old": 0, "new": 0, "mixed": 0}
+        for k in range(16):
+            before = holds()
+            p = subprocess.Popen([ROSARCH, "recover", os.path.join(tmp, "B" if before == "A"
+                                                                    else "A"), "--out", out],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            time.sleep(full * (0.3 + 0.1 * k))
+            p.kill()
+            p.wait()
+            after = holds()
+            seen["mixed" if after == "mixed" else "old" if after == before else "new"] += 1
+        code, secs, peak, err, _ = run([ROSARCH, "recover", os.path.join(tmp, "A"), "--out", out])
+        left = [f for f in os.listdir(tmp) + os.listdir(out) if "rosarch-writing" in f]
+        ok = seen["mixed"] == 0 and not left and holds() == "A" and code in (0, 1)
+        row("kill during the artifact commit (16 kills, 2,000 ACDs)", code, secs, peak, ok,
+            f"old {seen['old']}, new {seen['new']}, mixed {seen['mixed']}; "
+            f"{len(left)} staging folders left after the next run")
 
 
 class Huge(http.server.BaseHTTPRequestHandler):
@@ -314,5 +494,6 @@ if __name__ == "__main__":
     print("|---|---|---|---|---|---|")
     recover_cases()
     full_disk()
+    kill_during_commit()
     huge_llm_reply()
     docstring_instructions()
