@@ -389,8 +389,11 @@ def full_disk():
         run([ROSARCH, "recover", ws, "--out", out])
         before = {f: open(os.path.join(out, f), "rb").read() for f in os.listdir(out)
                   if os.path.isfile(os.path.join(out, f))}
-        code, secs, peak, err, _ = run([ROSARCH, "recover", ws, "--out", out, "--launch-arg",
-                                        "x:=1"], shell_prefix="trap '' XFSZ; ulimit -f 1; exec")
+        # A changed result (a run with an unchanged one writes nothing at all).
+        write(f"{ws}/src/pkg/pkg/late.py", "from rclpy.node import Node\n\nclass Late(Node):\n"
+              "    def __init__(self):\n        super().__init__('late')\n")
+        code, secs, peak, err, _ = run([ROSARCH, "recover", ws, "--out", out],
+                                       shell_prefix="trap '' XFSZ; ulimit -f 1; exec")
         after = {f: open(os.path.join(out, f), "rb").read() for f in os.listdir(out)
                  if os.path.isfile(os.path.join(out, f))}
         leftovers = [f for f in os.listdir(out) if f.startswith(".rosarch-writing")]
