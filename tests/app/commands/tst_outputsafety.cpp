@@ -154,6 +154,35 @@ private Q_SLOTS:
         QVERIFY(files > 8);
     }
 
+    void evalPrintsNoRawByteOfTheDiagramsItReads()
+    {
+        // Before: `rosarch eval` printed NUL, ESC and BEL from the names in the diagrams.
+        QTemporaryDir dir;
+        const QByteArray acd = "@startuml\ncomponent \"<<AtomicRosNodeClassifier>>\\nGood\" as "
+                               "node {\n  portout \" \" as p1\n}\nframe \"p1\\nout\" as t {\n"
+                               "  rectangle \"**std_msgs::msg::String**\" as r\n}\n"
+                               "p1 -[#green,bold]-> t\n@enduml\n";
+        writeFile(dir.filePath(QStringLiteral("ref.puml")), acd);
+        QByteArray hostile = acd;
+        hostile.replace("nGood", "nGo\x1b]0;t\x07od\x01");
+        hostile.replace("nout", "nout\x1b[2J\x9b");
+        writeFile(dir.filePath(QStringLiteral("rec.puml")), hostile);
+        for (const QStringList &extra : {QStringList{}, QStringList{QStringLiteral("--json")}}) {
+            const rosarch::test::Run r = runRosarch(
+                QStringList{QStringLiteral("eval"), QStringLiteral("--reference"),
+                            dir.filePath(QStringLiteral("ref.puml")), QStringLiteral("--recovered"),
+                            dir.filePath(QStringLiteral("rec.puml"))} +
+                extra);
+            QVERIFY2(r.exitCode == 0 || r.exitCode == 1, qPrintable(r.err));
+            QVERIFY2(firstControl(r.out).isEmpty(), qPrintable(firstControl(r.out)));
+            QVERIFY2(firstControl(r.err).isEmpty(), qPrintable(firstControl(r.err)));
+            // The names are there, escaped (text) or as JSON escapes.
+            QVERIFY2(r.out.contains(QLatin1String("\\x1b]0;t\\x07")) ||
+                         r.out.contains(QLatin1String("\\u001b]0;t\\u0007")),
+                     qPrintable(r.out.left(2000)));
+        }
+    }
+
     void aKillDuringARunLeavesTheOldResultOrTheNew()
     {
         // Before: a SIGKILL while the artifacts were moved into place left the new JSON beside
