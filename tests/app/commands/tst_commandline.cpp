@@ -191,7 +191,9 @@ private Q_SLOTS:
         // The same pictures the published pipeline gets: every ACD and CCD rendered by the real
         // PlantUML, next to its .puml; plus the Mermaid and DOT exports.
         QTemporaryDir out;
-        const QString ws = rosarch::test::dataDir(QStringLiteral("compose_system/ws"));
+        QTemporaryDir copy;
+        const QString ws = copy.filePath(QStringLiteral("ws"));
+        rosarch::test::copyTree(rosarch::test::dataDir(QStringLiteral("compose_system/ws")), ws);
         const QString jar = QStringLiteral(ROSARCH_PLANTUML_JAR);
         Run r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
                             QStringLiteral("--render"), QStringLiteral("svg"),
@@ -213,9 +215,21 @@ private Q_SLOTS:
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("mermaid/system.md"))));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("mermaid/vision.md"))));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("graph/system.dot"))));
-        // A later run without --render leaves no stale picture behind.
+        // A later run with the same result writes nothing: the pictures are still those of
+        // the diagrams. Once the result changes, no stale picture is left behind.
         r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path()});
         QCOMPARE(r.exitCode, 0);
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("ccd/system.svg"))));
+        QDirIterator python(ws, {QStringLiteral("*.py")}, QDir::Files,
+                            QDirIterator::Subdirectories);
+        QVERIFY(python.hasNext());
+        const QString added = QFileInfo(python.next()).path() + QStringLiteral("/added_node.py");
+        rosarch::test::writeFile(added,
+                                 "from rclpy.node import Node\n\nclass Added(Node):\n"
+                                 "    def __init__(self):\n        super().__init__('added')\n");
+        r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path()});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(QFile::exists(out.filePath(QStringLiteral("acd/Added.puml"))));
         QVERIFY(!QFile::exists(out.filePath(QStringLiteral("ccd/system.svg"))));
         // A jar that is not there is said before anything runs, and no other jar is used.
         r = runRosarch({QStringLiteral("recover"), ws, QStringLiteral("--out"), out.path(),
@@ -239,7 +253,7 @@ private Q_SLOTS:
                      .exitCode,
                  0);
         QMap<QString, QByteArray> before;
-        QDirIterator it(out.path(), QDir::Files, QDirIterator::Subdirectories);
+        QDirIterator it(out.path(), QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
         while (it.hasNext()) {
             const QString f = it.next();
             before.insert(f, rosarch::test::readFile(f));
