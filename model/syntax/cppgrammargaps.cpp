@@ -1,6 +1,7 @@
 // Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
 #include "cppcodescan.h"
 #include "cppgapstarts.h"
+#include "cppmacrogaps.h"
 #include "cppsyntax.h"
 
 #include <QRegularExpression>
@@ -13,6 +14,8 @@ namespace rosarch::cppsyntax {
 namespace {
 
 using namespace scan;
+using macros::atStatementStart;
+using macros::isMacroWord;
 
 // The matches of `re` that start at one of `starts` (ascending), as globalMatch finds them when
 // no match can start elsewhere: a start inside the previous match is passed over.
@@ -327,32 +330,6 @@ void blankDeclarationBodies(const QByteArray &code, Text text, const std::vector
     }
 }
 
-bool isMacroWord(std::string_view word)
-{
-    bool underscore = false;
-    for (char c : word) {
-        if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'))
-            return false;
-        underscore = underscore || c == '_';
-    }
-    return word.size() > 3 && underscore && !(word.front() >= '0' && word.front() <= '9');
-}
-
-// True when the code before `i` ends a statement or a member: `;`, `{`, `}`, or an access
-// specifier's `:`.
-bool atStatementStart(const QByteArray &code, qsizetype i)
-{
-    const qsizetype before = previousCode(code, i);
-    if (before < 0 || std::strchr(";{}", code.at(before)))
-        return true;
-    if (code.at(before) != ':' || (before > 0 && code.at(before - 1) == ':'))
-        return false;
-    const qsizetype word = previousCode(code, before);
-    return word >= 0 &&
-           (isWordAt(code, word - 5, "public") || isWordAt(code, word - 6, "private") ||
-            isWordAt(code, word - 8, "protected"));
-}
-
 // True when an argument in the parentheses at [open, close] is a built-in type, `int`,
 // `unsigned char`: no function takes that, only a macro.
 bool hasBuiltinTypeArgument(const QByteArray &code, qsizetype open, qsizetype close)
@@ -439,6 +416,7 @@ void blankGrammarGaps(QByteArray *source)
             if (code.at(i) != '\n' && code.at(i) != '\r')
                 code[i] = ' ';
     });
+    macros::rewriteMacroGaps(&code, data);
     const GapStarts starts = findGapStarts(code);
     // Latin-1 maps every byte to one character, so match offsets are byte offsets. Made only
     // for a file with a place where an expression can match.

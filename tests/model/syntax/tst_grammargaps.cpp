@@ -384,6 +384,68 @@ private Q_SLOTS:
             << QByteArray("void f() { void (C::*pm)(int) = &C::g; (obj->*pm)(1); }")
             << QByteArray("void f() { void (   *pm)(int) = &C::g; (obj-> pm)(1); }");
     }
+    void macrosTheGrammarCannotReadWhereTheyStand_data()
+    {
+        // Issue 43: each class of syntax error seen in moveit2, rviz, ros2_controllers,
+        // geometry2 and rosbag2, in our own words. Each fails to parse as written.
+        QTest::addColumn<QByteArray>("source");
+        QTest::addColumn<QByteArray>("expected");
+        QTest::newRow("constants joined to string literals")
+            << QByteArray("void f() { g(\"/ns/\" TOPIC_NAME \"/x\"); h(\"a\" SUFFIX_TEXT); }")
+            << QByteArray("void f() { g(\"/ns/\"+TOPIC_NAME+\"/x\"); h(\"a\"+SUFFIX_TEXT); }");
+        QTest::newRow("a unit after a number")
+            << QByteArray("const double kTolerance = 0.01f METERS, kStep = 2 UNIT_MM;")
+            << QByteArray("const double kTolerance = 0.01f       , kStep = 2        ;");
+        QTest::newRow("test macros in a class")
+            << QByteArray("class T {\n  FRIEND_TEST(Suite, 3_wheels);\n  MOCK_METHOD(int, f, (), "
+                          "(const, override));\n};")
+            << QByteArray("class T {\n                              ;\n                          "
+                          "                  ;\n};");
+        QTest::newRow("type caster macro in a struct")
+            << QByteArray("namespace n {\nstruct caster {\n  TYPE_CASTER_OF(a::Time, _(\"x\"));"
+                          "\n};\n}")
+            << QByteArray("namespace n {\nstruct caster {\n                                 ;"
+                          "\n};\n}");
+        QTest::newRow("thread-safety annotations")
+            << QByteArray("class C {\n  int x_ TSA_GUARDED_BY(m_);\n  bool b_ TSA_GUARDED_BY(\n"
+                          "    m_) = false;\n  void f(int a) const TSA_REQUIRES(m_);\n  "
+                          "std::map<int, int> t_ TSA_GUARDED_BY(m_);\n};")
+            << QByteArray("class C {\n  int x_                   ;\n  bool b_                \n"
+                          "        = false;\n  void f(int a) const                 ;\n  "
+                          "std::map<int, int> t_                   ;\n};");
+        QTest::newRow("attribute macros before declarations")
+            << QByteArray("template <class T>\nSIMD_FORCE_INLINE const T & lesser(const T & a) "
+                          "{ return a; }\nclass V {\n  explicit SIMD_FORCE_INLINE V(int a) {}\n"
+                          "};\nALIGNED_16(class) Q\n{\n};")
+            << QByteArray("template <class T>\n                  const T & lesser(const T & a) "
+                          "{ return a; }\nclass V {\n  explicit                   V(int a) {}\n"
+                          "};\n           class  Q\n{\n};");
+    }
+    void macrosTheGrammarCannotReadWhereTheyStand()
+    {
+        QFETCH(QByteArray, source);
+        QFETCH(QByteArray, expected);
+        QVERIFY(!parsesCleanly(source));
+        const QByteArray out = rewritten(source);
+        QCOMPARE(out, expected);
+        QVERIFY2(parsesCleanly(out), out.constData());
+    }
+    void macrosThatAreCodeStay()
+    {
+        // A constant initialised in capitals, a call guarded by an if, a registration macro,
+        // a macro in a function body: as written.
+        for (const QByteArray &source :
+             {QByteArray("static const std::string DEFAULT_TOPIC(\"scan\");"),
+              QByteArray("int DEFAULT_SIZE(3);"),
+              QByteArray(
+                  "void f() { if (x) LOG_ERROR(\"a\"); MY_MACRO(1, 2); return CALL_IT(y); }"),
+              QByteArray("RCLCPP_COMPONENTS_REGISTER_NODE(pkg::Node)\n"),
+              QByteArray("void f() { auto v = MAKE_VALUE(3); }"),
+              QByteArray("LOAD_STATUS loadMap(const std::string & file);"),
+              QByteArray("inline Consumer LOG_VERBOSE(const Logger & l)\n{\n  return {};\n}")})
+            QCOMPARE(rewritten(source), source);
+    }
+
     void rewritesAtTheirWords()
     {
         QFETCH(QByteArray, source);
