@@ -119,37 +119,55 @@ public:
         for (; m_next < at && m_next < m_code.size(); ++m_next) {
             const char c = m_code.at(m_next);
             if (c == '{')
-                m_stack.push_back(opensDeclarations(m_next));
+                m_stack.push_back(opened(m_next));
             else if (c == '}' && !m_stack.empty())
                 m_stack.pop_back();
         }
-        return m_stack.empty() || m_stack.back();
+        return m_stack.empty() || m_stack.back().declarations;
+    }
+    /// The class whose body the last declarationsAt() was in ("" when none): its constructors
+    /// are named for it.
+    std::string_view className() const
+    {
+        return m_stack.empty() ? std::string_view() : m_stack.back().className;
     }
 
 private:
-    bool opensDeclarations(qsizetype brace) const
+    struct Scope
+    {
+        bool declarations = false;
+        std::string className;
+    };
+
+    Scope opened(qsizetype brace) const
     {
         const qsizetype last = previousCode(m_code, brace);
         if (last < 0 || m_code.at(last) == ')' || m_code.at(last) == '=' ||
             m_code.at(last) == ',' || m_code.at(last) == '(' || m_code.at(last) == ']')
-            return false;
+            return {};
         // The head: back to the previous statement's end, at most 512 bytes.
         qsizetype from = last;
         while (from > 0 && brace - from < 512 && !std::strchr(";{}", m_code.at(from - 1)))
             --from;
         for (qsizetype i = from; i < last + 1;) {
             const std::string_view w = nextWord(m_code, &i);
-            if (w == "class" || w == "struct" || w == "union" || w == "namespace" || w == "extern")
-                return true;
+            if (w == "namespace" || w == "extern")
+                return {true, {}};
+            if (w == "class" || w == "struct" || w == "union") {
+                std::string_view name = nextWord(m_code, &i);
+                if (isMacroWord(name) && i < last + 1) // `class EXPORT_MACRO Name`
+                    name = nextWord(m_code, &i);
+                return {true, std::string(name)};
+            }
             if (w.empty() || i > last + 1)
                 break;
         }
-        return false;
+        return {};
     }
 
     const QByteArray &m_code;
     qsizetype m_next = 0;
-    std::vector<bool> m_stack;
+    std::vector<Scope> m_stack;
 };
 
 /// True when the `)` at `close` ends the condition of `if`, `for`, `while` or `switch`: a
@@ -254,13 +272,15 @@ void rewriteMacroGaps(QByteArray *codeBuffer, char *data)
             qsizetype k = next;
             const std::string_view type = nextWord(code, &k);
             const qsizetype more = nextCode(code, k);
-            // `(` after the name: a constructor only after `explicit` (`CAPS_TYPE f(` is a
-            // function returning a type named in capitals).
+            // `(` after the name: a constructor only, after `explicit` or named for its class
+            // (`CAPS_TYPE f(` is a function returning a type named in capitals).
+            const bool constructor =
+                wordEndingAt(code, previousCode(code, start) + 1) == "explicit" ||
+                (!type.empty() && type == scopes.className());
             const bool declaration =
-                more < n && (isIdentifierChar(code.at(more)) ||
-                             std::strchr("&*<:", code.at(more)) || (call && code.at(more) == '{') ||
-                             (code.at(more) == '(' &&
-                              wordEndingAt(code, previousCode(code, start) + 1) == "explicit"));
+                more < n &&
+                (isIdentifierChar(code.at(more)) || std::strchr("&*<:", code.at(more)) ||
+                 (call && code.at(more) == '{') || (code.at(more) == '(' && constructor));
             if (!declaration)
                 continue;
             if (call && (type == "class" || type == "struct"))

@@ -416,9 +416,11 @@ private Q_SLOTS:
         QTest::newRow("attribute macros before declarations")
             << QByteArray("template <class T>\nSIMD_FORCE_INLINE const T & lesser(const T & a) "
                           "{ return a; }\nclass V {\n  explicit SIMD_FORCE_INLINE V(int a) {}\n"
+                          "  SIMD_FORCE_INLINE V (const V & o) : a_(o.a_) {}\n"
                           "};\nALIGNED_16(class) Q\n{\n};")
             << QByteArray("template <class T>\n                  const T & lesser(const T & a) "
                           "{ return a; }\nclass V {\n  explicit                   V(int a) {}\n"
+                          "                    V (const V & o) : a_(o.a_) {}\n"
                           "};\n           class  Q\n{\n};");
     }
     void macrosTheGrammarCannotReadWhereTheyStand()
