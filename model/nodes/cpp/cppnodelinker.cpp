@@ -246,8 +246,9 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
 
     node.nodeName = nodeNameOf(index, 0);
     if (owned) { // a component that owns its rclcpp::Node instead of deriving from it
-        node.nodeName = owned->nodeName.kind == CppValue::Kind::Literal ? owned->nodeName.literal
-                                                                        : owned->nodeName.text;
+        node.nodeName = owned->nodeName.kind == CppValue::Kind::Literal
+                            ? owned->nodeName.literal
+                            : literalName(owned->nodeName, {index, nullptr, nullptr, nullptr});
         node.lifecycle = owned->lifecycle;
     }
 
@@ -445,6 +446,19 @@ QList<Port> CppNodeLinker::pluginPorts(int plugin,
 
 // The first argument of the base-class initializer in a constructor; without one, the base's
 // default constructor names the node.
+QString CppNodeLinker::literalName(const CppValue &value, const CppLinkContext &ctx) const
+{
+    using K = CppValue::Kind;
+    if (value.kind == K::Literal)
+        return value.literal;
+    if (value.kind != K::Local && value.kind != K::Member && value.kind != K::Constant &&
+        value.kind != K::Concatenation)
+        return {};
+    const CppResolvedName r = m_names.resolve(value, ctx);
+    return r.origin == NameOrigin::Expression || r.origin == NameOrigin::Parameter ? QString()
+                                                                                   : r.name;
+}
+
 QString CppNodeLinker::nodeNameOf(int index, int depth) const
 {
     const CppClassIndex::ClassInfo &info = m_index.at(index);
@@ -461,8 +475,12 @@ QString CppNodeLinker::nodeNameOf(int index, int depth) const
                 continue;
             if (init.firstArgument.kind == CppValue::Kind::Literal)
                 return init.firstArgument.literal;
+            // A constant, a member or a local holding a literal names the node; a constructor
+            // parameter (`node_name`, `options`) is the instance's to decide: no name here, never
+            // the parameter's own name.
             if (fallback.isEmpty())
-                fallback = init.firstArgument.text;
+                fallback =
+                    literalName(init.firstArgument, {index, ref.function, ref.file, nullptr});
             break;
         }
     }
@@ -513,10 +531,7 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
         node.lifecycle = pn.lifecycle;
         node.evidence = fn.evidence;
         (isHeaderPath(ref.file->path) ? node.headerFiles : node.sourceFiles).append(ref.file->path);
-        if (pn.nodeName.kind == CppValue::Kind::Literal)
-            node.nodeName = pn.nodeName.literal;
-        else if (!pn.nodeName.isNone())
-            node.nodeName = m_names.resolve(pn.nodeName, ctx).name;
+        node.nodeName = literalName(pn.nodeName, ctx);
         if (pn.variable.isEmpty()) {
             nodes->append(node);
             continue;

@@ -30,6 +30,9 @@ private:
     AtomicNode classNode(int index, const CppProceduralNode *ownedNode = nullptr) const;
     const CppProceduralNode *ownedNode(int cls) const;
     QString nodeNameOf(int index, int depth) const;
+    /// The name `value` (a node's name argument) stands for when a literal decides it; "" for a
+    /// constructor parameter or an expression.
+    QString literalName(const CppValue &value, const CppLinkContext &ctx) const;
     QList<ChildNode> childNodesOf(int index) const;
     ChildNode childNode(int child, const CppInstantiation &inst, const CppLinkContext &ctx) const;
     QList<Port> portsOf(int cls, bool inherited) const;

@@ -212,8 +212,9 @@ bool PythonModuleReader::proceduralNode(TSNode expr, PythonProcedural *procedura
         if (target != QLatin1String(factory))
             continue;
         TSNode name = py::argument(m_tree, expr, 0, "node_name");
+        // A name the code computes is the run's to decide: unresolved, never a variable's name.
         if (!PythonResolver::stringLiteral(m_tree, name, &procedural->nodeName))
-            procedural->nodeName = m_tree.text(name);
+            procedural->nodeName.clear();
         procedural->lifecycle = lifecycle;
         return true;
     }

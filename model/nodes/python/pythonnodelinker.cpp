@@ -355,6 +355,8 @@ bool PythonNodeLinker::agreedArgument(int id, int index, const QString &name,
 QString PythonNodeLinker::nodeName(int id) const
 {
     const NameInfo info = nameInfo(id, 0);
+    if (info.kind == NameInfo::Kind::Expression)
+        return {}; // decided at run time: unresolved, never the expression's text
     if (info.kind != NameInfo::Kind::Parameter)
         return info.text;
     // the name is a constructor parameter: take it from the instantiations when they agree
@@ -363,7 +365,9 @@ QString PythonNodeLinker::nodeName(int id) const
     PythonArgument agreed;
     if (agreedArgument(id, info.index, param.name, fallback, &agreed))
         return agreed.value;
-    return param.defaultIsString ? param.defaultValue : info.text;
+    // Instantiations disagree or none is known: the instance decides (unresolved), never the
+    // parameter's own name.
+    return param.defaultIsString ? param.defaultValue : QString();
 }
 
 void PythonNodeLinker::nameProcedurals()

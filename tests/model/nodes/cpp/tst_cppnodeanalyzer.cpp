@@ -143,8 +143,8 @@ private Q_SLOTS:
                                              QStringLiteral("robot_pkg/SafeDriver")}));
         const AtomicNode *base = findNode(a, QStringLiteral("ManagedNode"));
         QVERIFY(base->lifecycle);
-        QCOMPARE(base->nodeName,
-                 QStringLiteral("name")); // a constructor parameter: kept as written
+        // A constructor parameter: the instance decides; never the parameter's own name.
+        QCOMPARE(base->nodeName, QString());
         QCOMPARE(
             describePorts(*base),
             QStringList{QStringLiteral("publisher /diagnostics diagnostic_msgs/msg/DiagnosticArray "
