@@ -280,8 +280,15 @@ QString CppNameResolver::parameterDefault(const QString &parameter, const CppLin
         const CppResolvedName r = resolve(v, declared, depth + 1);
         return r.origin == NameOrigin::Expression ? v.text : r.name;
     }
-    default:
-        return v.text;
+    default: {
+        // A constant holding a literal is the default; anything else (an expression, an enum
+        // such as rclcpp::ParameterType::PARAMETER_STRING, which declares no default) is none:
+        // never C++ text as a name.
+        if (depth > kMaxLinkDepth)
+            return QString();
+        const CppResolvedName r = resolve(v, declared, depth + 1);
+        return r.origin == NameOrigin::Expression ? QString() : r.name;
+    }
     }
 }
 

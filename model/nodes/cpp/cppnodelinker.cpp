@@ -56,8 +56,9 @@ void appendUnique(QList<Port> *into, const QList<Port> &ports)
     for (const Port &p : ports) {
         QList<qsizetype> &same = byPlace[placeOf(p)];
         if (std::any_of(same.cbegin(), same.cend(), [&](qsizetype i) {
-                Port copy = p;
+                Port copy = p; // the same call reached through another helper: the same port
                 copy.viaEvidence = into->at(i).viaEvidence;
+                copy.via = into->at(i).via;
                 return into->at(i) == copy;
             }))
             continue;
