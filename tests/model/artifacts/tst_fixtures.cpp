@@ -9,6 +9,7 @@
 #include "ccdwriter.h"
 #include "communicationgraph.h"
 #include "launchdependenciesjson.h"
+#include "modelinvariants.h"
 #include "nodeanalyzer.h"
 #include "recovery.h"
 #include "testsupport.h"
@@ -106,6 +107,17 @@ private Q_SLOTS:
             ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"),
                         CcdWriter::write(*c).toUtf8());
         compareDiagrams(ccds, QDir(caseDir).filePath(QStringLiteral("expected/ccd")));
+    }
+
+    void modelInvariantsHold_data() { recovery_data(); }
+
+    // Issue 43: names are names, ports are listed once, whatever the fixture.
+    void modelInvariantsHold()
+    {
+        QFETCH(QString, caseDir);
+        const QStringList violations =
+            modelInvariantViolations(recoverWorkspace(workspaceOf(caseDir)).nodes);
+        QVERIFY2(violations.isEmpty(), qPrintable(violations.join(QLatin1Char('\n'))));
     }
 
     void ccdChannelsAreTheGraphs_data() { recovery_data(); }

@@ -1,0 +1,41 @@
+#include "modelinvariants.h"
+
+#include <QRegularExpression>
+#include <QSet>
+
+namespace rosarch {
+
+namespace {
+
+bool isRosName(const QString &name)
+{
+    static const QRegularExpression ros(QStringLiteral("^(~/?|/)?[A-Za-z_{][A-Za-z0-9_{}/~]*$"));
+    return ros.match(name).hasMatch();
+}
+
+} // namespace
+
+QStringList modelInvariantViolations(const AtomicNodeList &nodes)
+{
+    QStringList out;
+    for (const AtomicNode &n : nodes.nodes) {
+        if (!n.nodeName.isEmpty() && !isRosName(n.nodeName))
+            out << QStringLiteral("%1: node name '%2' is no ROS name").arg(n.className, n.nodeName);
+        QSet<QString> seen;
+        for (const Port &p : n.ports) {
+            if (p.nameOrigin != NameOrigin::Expression && !p.name.isEmpty() && !isRosName(p.name))
+                out << QStringLiteral("%1: port name '%2' is no ROS name").arg(n.className, p.name);
+            const QString key = QStringLiteral("%1 %2 %3 %4:%5:%6")
+                                    .arg(int(p.kind))
+                                    .arg(p.name, p.type, p.evidence.file)
+                                    .arg(p.evidence.line)
+                                    .arg(p.evidence.column);
+            if (seen.contains(key))
+                out << QStringLiteral("%1: port '%2' listed twice").arg(n.className, p.name);
+            seen.insert(key);
+        }
+    }
+    return out;
+}
+
+} // namespace rosarch
