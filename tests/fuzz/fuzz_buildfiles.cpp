@@ -3,6 +3,7 @@
 #include "buildfileparser.h"
 #include "cmakelistsreader.h"
 #include "fuzzsupport.h"
+#include "structuremutator.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -35,3 +36,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     return 0;
 }
+
+ROSARCH_STRUCTURE_MUTATOR

@@ -5,6 +5,7 @@
 #include "parameterfile.h"
 #include "pythonexpression.h"
 #include "pythonlaunchreader.h"
+#include "structuremutator.h"
 #include "xmllaunchreader.h"
 #include "yamllaunchreader.h"
 
@@ -43,3 +44,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     return 0;
 }
+
+ROSARCH_STRUCTURE_MUTATOR
