@@ -220,7 +220,7 @@ void rewriteMacroGaps(QByteArray *codeBuffer, char *data)
             continue;
         const qsizetype after = nextCode(code, i);
         // A constant joined to string literals by the preprocessor.
-        const bool literalBefore = before == start - 2 && code.at(before) == '"';
+        const bool literalBefore = before >= 0 && before == start - 2 && code.at(before) == '"';
         const bool literalAfter = after == i + 1 && after < n && code.at(after) == '"';
         if (literalBefore || literalAfter) {
             if (literalBefore)

@@ -432,6 +432,14 @@ private Q_SLOTS:
         QCOMPARE(out, expected);
         QVERIFY2(parsesCleanly(out), out.constData());
     }
+    void aMacroWithNothingBeforeIt()
+    {
+        // Found by fuzz_nodeanalyzers: a macro word at offset 1, with no code before it, was
+        // read as following a string literal at offset -1.
+        QCOMPARE(rewritten(" FIRST_WORD(x);"), QByteArray("              ;"));
+        QCOMPARE(rewritten(" SUFFIX_TEXT \"a\";"), QByteArray(" SUFFIX_TEXT+\"a\";"));
+    }
+
     void macrosThatAreCodeStay()
     {
         // A constant initialised in capitals, a call guarded by an if, a registration macro,
