@@ -3,6 +3,7 @@
 #include "document.h"
 #include "icons.h"
 #include "stallprobe.h"
+#include "visibletext.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -401,6 +402,16 @@ QModelIndex AtomicNodeModel::indexAt(const QString &file, int line) const
 }
 
 QVariant AtomicNodeModel::data(const QModelIndex &index, int role) const
+{
+    // Names and file names come from the workspace: a control character in one is shown as an
+    // escape, and a newline never makes a row two lines.
+    QVariant value = rawData(index, role);
+    if (role == Qt::DisplayRole && value.typeId() == QMetaType::QString)
+        return visibleText(value.toString());
+    return value;
+}
+
+QVariant AtomicNodeModel::rawData(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.model() != this)
         return {};

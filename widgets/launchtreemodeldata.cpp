@@ -4,6 +4,7 @@
 #include "icons.h"
 #include "launchtreemodel.h"
 #include "launchtreetext.h"
+#include "visibletext.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -15,6 +16,16 @@
 namespace rosarch {
 
 QVariant LaunchTreeModel::data(const QModelIndex &index, int role) const
+{
+    // Names and file names come from the workspace: a control character in one is shown as an
+    // escape, and a newline never makes a row two lines.
+    QVariant value = rawData(index, role);
+    if (role == Qt::DisplayRole && value.typeId() == QMetaType::QString)
+        return visibleText(value.toString());
+    return value;
+}
+
+QVariant LaunchTreeModel::rawData(const QModelIndex &index, int role) const
 {
     const QList<Item> &items = m_layout.items();
     int k = -1;

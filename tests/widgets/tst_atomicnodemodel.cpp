@@ -233,6 +233,22 @@ private Q_SLOTS:
         QVERIFY(!sub.data(Qt::FontRole).value<QFont>().italic());
     }
 
+    void controlCharactersAreShownAsEscapes()
+    {
+        // Issue 43: a class or port named with a terminal sequence or a newline shows escaped,
+        // one line per row.
+        AtomicNodeList list = sampleList();
+        list.nodes[0].className = QStringLiteral("Talk\x1b[2Jer\nTwo");
+        list.nodes[0].ports[0].name = QStringLiteral("chat\x07ter");
+        Document doc;
+        doc.setAtomicNodes(list);
+        AtomicNodeModel model(&doc);
+        QCOMPARE(model.nodeIndex(QStringLiteral("arc_1")).data().toString(),
+                 QStringLiteral("Talk\\x1b[2Jer\\x0aTwo"));
+        QCOMPARE(model.portIndex(QStringLiteral("arc_1"), QStringLiteral("p1")).data().toString(),
+                 QStringLiteral("chat\\x07ter"));
+    }
+
     void iconsAreDrawnAndDistinct()
     {
         Document doc;
