@@ -385,8 +385,9 @@ template <typename Blank> void blankStandaloneMacros(const QByteArray &code, Bla
         const qsizetype newline = code.indexOf('\n', end);
         const bool later = newline >= 0 && newline < next;
         // A name alone before `}` closes a class only after a member, not as an enumerator.
+        const qsizetype previous = previousCode(code, start); // -1 at the start of the file
         const bool ends = next >= n || (code.at(next) == '}' &&
-                                        (end > i || code.at(previousCode(code, start)) != '{'));
+                                        (end > i || previous < 0 || code.at(previous) != '{'));
         const bool declaration = typeArgument && next < n && code.at(next) == ';';
         if (!declaration && (!later || !(ends || isIdentifierChar(code.at(next)))))
             continue;

@@ -438,6 +438,8 @@ private Q_SLOTS:
         // read as following a string literal at offset -1.
         QCOMPARE(rewritten(" FIRST_WORD(x);"), QByteArray("              ;"));
         QCOMPARE(rewritten(" SUFFIX_TEXT \"a\";"), QByteArray(" SUFFIX_TEXT+\"a\";"));
+        // Also found by it: a standalone macro first in the file, before a `}`.
+        QCOMPARE(rewritten("SOME_MACRO\n}"), QByteArray("          \n}"));
     }
 
     void macrosThatAreCodeStay()
