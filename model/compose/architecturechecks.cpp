@@ -38,8 +38,7 @@ class Checker
 public:
     Checker(const Architecture &arch, const AtomicNodeList &nodes, const LaunchDependencies &launch,
             const Observability &observability, QList<Diagnostic> *out)
-        : m_nodes(nodes), m_launch(launch), m_observability(observability), m_scope(launch),
-          m_out(out)
+        : m_nodes(nodes), m_observability(observability), m_scope(launch), m_out(out)
     {
         for (const Composite &c : arch.composites)
             if (!m_composites.contains(c.instanceId)) // the first, as Architecture::composite()
@@ -487,7 +486,6 @@ private:
     QHash<QString, const Composite *> m_composites;   ///< by instance id
     QHash<QString, const NodeInstance *> m_instances; ///< by id
     const AtomicNodeList &m_nodes;
-    const LaunchDependencies &m_launch;
     const Observability &m_observability;
     CheckScope m_scope;                ///< what is left to something outside the system
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
