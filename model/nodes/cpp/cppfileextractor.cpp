@@ -160,6 +160,8 @@ private:
         context.className = scope.className;
         context.namespaces = scope.namespaces;
         context.templateParameters = scope.templateParameters;
+        if (scope.classIndex >= 0)
+            context.classAliases = m_facts.classes.at(scope.classIndex).aliases;
         context.rclcppNodeInScope = m_rclcppNode;
         context.lifecycleNodeInScope = m_lifecycleNode;
         context.macros = &m_macros;

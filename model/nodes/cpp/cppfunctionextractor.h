@@ -24,6 +24,8 @@ public:
         QString className;              ///< inline member: the class's unqualified name
         QStringList namespaces;         ///< enclosing namespaces
         QStringList templateParameters; ///< of enclosing class templates
+        /// inline member: the class's `using X = ...;` declared before it
+        QHash<QString, QString> classAliases;
         bool rclcppNodeInScope = false; ///< `using rclcpp::Node` / `using namespace rclcpp`
         bool lifecycleNodeInScope = false;
         const CppMacros *macros = nullptr; ///< in effect in the file (function-like ones expand)
@@ -68,8 +70,13 @@ private:
     std::vector<TSNode> m_path; ///< while visiting: the ancestors of the node visited
     QStringList m_returned;     ///< locals the function returns (node factories are no nodes)
     CppValueEvaluator m_values{m_tree, m_locals, m_function, m_context.macros};
-    CppPortCallReader m_portCalls{m_tree,       m_values,  m_locals, m_templateParameters,
-                                  m_definition, m_function};
+    CppPortCallReader m_portCalls{m_tree,
+                                  m_values,
+                                  m_locals,
+                                  m_templateParameters,
+                                  m_definition,
+                                  m_function,
+                                  m_context.classAliases};
 };
 
 } // namespace rosarch

@@ -359,18 +359,24 @@ bool CppHelperPorts::constructorApplies(const CppFunction &fn, const QList<CppVa
 
 // A member `message_filters::Subscriber<T>` subscribes where it is constructed with a node
 // and a name (`sub_(this, "input/x", qos)` in a constructor's initializer list) or told to
-// (`sub_.subscribe(this, "~/input/x", qos)`); its messages go to a synchronizer.
+// (`sub_.subscribe(this, "~/input/x", qos)`); its messages go to a synchronizer. An
+// `image_transport::SubscriberFilter` does the same for images, with the transport before the
+// QoS (`sub_.subscribe(this, "~/input/image", "raw", qos)`).
 void CppHelperPorts::addMessageFilterPorts(int cls, const CppClassIndex::FunctionRef &ref,
                                            QList<Port> *ports) const
 {
-    const auto subscriberType = [&](const QString &member) -> QString {
+    const auto subscriberType = [&](const QString &member, bool *image) -> QString {
         for (int c : m_index.lineage(cls)) {
             const QString type = m_index.at(c).cls->memberTypes.value(member);
             if (type.isEmpty())
                 continue;
-            const QString plain = withoutTemplateArguments(type).remove(u' ');
-            return plain == QLatin1String("message_filters::Subscriber") ||
-                           plain == QLatin1String("::message_filters::Subscriber")
+            QString plain = withoutTemplateArguments(type).remove(u' ');
+            if (plain.startsWith(QLatin1String("::")))
+                plain = plain.mid(2);
+            *image = plain == QLatin1String("image_transport::SubscriberFilter");
+            if (*image)
+                return QStringLiteral("sensor_msgs::msg::Image");
+            return plain == QLatin1String("message_filters::Subscriber")
                        ? templateArgumentsOf(type.simplified()).value(0)
                        : QString();
         }
@@ -382,15 +388,16 @@ void CppHelperPorts::addMessageFilterPorts(int cls, const CppClassIndex::Functio
                          const CppValue &guardValue = {}) {
         if (arguments.size() < 2 || arguments.front().kind != CppValue::Kind::SelfNode)
             return;
-        const QString type = subscriberType(member);
+        bool image = false;
+        const QString type = subscriberType(member, &image);
         if (type.isEmpty())
             return;
         CppPortCall call;
         call.kind = PortKind::Subscriber;
         call.name = arguments.at(1);
         call.typeWritten = type;
-        if (arguments.size() > 2)
-            call.qos = arguments.at(2).text;
+        if (const int qos = image ? 3 : 2; arguments.size() > qos)
+            call.qos = arguments.at(qos).text;
         call.guard = guard;
         call.guardValue = guardValue;
         call.evidence = evidence;

@@ -156,14 +156,17 @@ bool looksLikeNonCallback(const QString &text)
 CppPortCallReader::CppPortCallReader(const SyntaxTree &tree, const CppValueEvaluator &values,
                                      const QHash<QString, CppLocal> &locals,
                                      const QStringList &templateParameters,
-                                     const TSNode &definition, CppFunction &function)
+                                     const TSNode &definition, CppFunction &function,
+                                     const QHash<QString, QString> &classAliases)
     : m_tree(tree), m_values(values), m_locals(locals), m_templateParameters(templateParameters),
-      m_definition(definition), m_function(function)
+      m_definition(definition), m_function(function), m_classAliases(classAliases)
 {
 }
 
 // `std::make_shared<message_filters::Subscriber<Imu>>(node, "imu")`: a subscription whose
-// messages go to a synchronizer rather than a callback.
+// messages go to a synchronizer rather than a callback. Autoware's GPU pipeline makes its
+// point cloud ports the same way (`cuda_blackboard::CudaBlackboardPublisher<CudaPointCloud2>`
+// and `CudaBlackboardSubscriber`, on an ordinary sensor_msgs/msg/PointCloud2 topic).
 bool CppPortCallReader::readMessageFilter(TSNode call, const CallShape &shape,
                                           const std::vector<TSNode> &args)
 {
@@ -171,11 +174,26 @@ bool CppPortCallReader::readMessageFilter(TSNode call, const CallShape &shape,
          shape.name != QLatin1String("make_unique")) ||
         ts::isNull(shape.templateArguments) || args.size() < 2)
         return false;
-    const QString made = firstTemplateArgument(m_tree, shape.templateArguments);
-    if (withoutTemplateArguments(made).remove(u' ') != QLatin1String("message_filters::Subscriber"))
-        return false;
+    QString made = firstTemplateArgument(m_tree, shape.templateArguments);
+    // `using Sub1 = message_filters::Subscriber<Msg1>;` in the function or its class
+    if (const QString local = m_function.aliases.value(made); !local.isEmpty())
+        made = local;
+    else if (const QString member = m_classAliases.value(made); !member.isEmpty())
+        made = member;
+    QString plain = withoutTemplateArguments(made).remove(u' ');
+    if (plain.startsWith(QLatin1String("::")))
+        plain = plain.mid(2);
     CppPortCall port;
-    port.kind = PortKind::Subscriber;
+    if (plain == QLatin1String("cuda_blackboard::CudaBlackboardPublisher") ||
+        plain == QLatin1String("cuda_blackboard::CudaBlackboardSubscriber")) {
+        port.transportType = pointCloudType;
+        port.kind =
+            plain.endsWith(QLatin1String("Publisher")) ? PortKind::Publisher : PortKind::Subscriber;
+    } else if (plain == QLatin1String("message_filters::Subscriber")) {
+        port.kind = PortKind::Subscriber;
+    } else {
+        return false;
+    }
     port.evidence = m_tree.evidence(call);
     port.name = m_values.evaluate(args[1]);
     port.typeWritten = templateArgumentsOf(made).value(0);

@@ -20,7 +20,8 @@ public:
     /// Reads the extractor's state as it is when asked; ports go to `function`.
     CppPortCallReader(const SyntaxTree &tree, const CppValueEvaluator &values,
                       const QHash<QString, CppLocal> &locals, const QStringList &templateParameters,
-                      const TSNode &definition, CppFunction &function);
+                      const TSNode &definition, CppFunction &function,
+                      const QHash<QString, QString> &classAliases);
 
     /// Adds the port `call` creates to the function; false when it creates none.
     bool read(TSNode call, const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
@@ -38,6 +39,7 @@ private:
     const QStringList &m_templateParameters;
     const TSNode &m_definition;
     CppFunction &m_function;
+    const QHash<QString, QString> &m_classAliases; ///< of an inline member's class
 };
 
 } // namespace rosarch
