@@ -516,6 +516,7 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         return;
     QList<Unresolved> found;
     const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
+    const bool pathUndecided = !found.isEmpty();
     bool undecided = false;
     const bool active = scope.active && conditionHolds(a, scope, frame, &found, &undecided);
     const IncludeTarget target = resolveInclude(path, frame.file);
@@ -525,9 +526,11 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
         else if (!target.file.isEmpty() && frame.conditionalIncludes)
             frame.conditionalIncludes->append(target.file);
         // `$(find-pkg-share $(var pkg))/launch/x.launch.xml`: another value of the argument
-        // includes the same file of another package (a sensor kit, a vehicle).
+        // includes the same file of another package (a sensor kit, a vehicle); so does a
+        // package path the file keeps in a variable made from an argument nobody sets
+        // (`<let name="pkg" value="$(find-pkg-share $(var vehicle_model)_launch)"/>`).
         if (frame.conditionalIncludes && !target.shareRelative.isEmpty() &&
-            a.path.findsPackageByConfiguration())
+            (a.path.findsPackageByConfiguration() || pathUndecided))
             for (const QString &f : std::as_const(m_out->launchFiles))
                 if (f.endsWith(QLatin1Char('/') + target.shareRelative) && f != target.file)
                     frame.conditionalIncludes->append(f);
