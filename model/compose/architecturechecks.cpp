@@ -1,10 +1,11 @@
 #include "architecturechecks.h"
 #include "checkscope.h"
 #include "composer.h"
-#include "editdistance.h"
 #include "observability.h"
 #include "qos.h"
+#include "remapchecks.h"
 #include "rosnames.h"
+#include "systemports.h"
 
 #include <QHash>
 #include <QSet>
@@ -16,17 +17,8 @@ namespace rosarch {
 
 namespace {
 
-struct Use
-{
-    const RosNodePart *part;
-    const PartPort *port;
-};
-
-struct Family
-{
-    QList<Use> providers; ///< publishers, servers
-    QList<Use> users;     ///< subscribers, clients
-};
+using Use = PortUse;
+using Family = PortFamily;
 
 QString who(const RosNodePart &part)
 {
@@ -63,15 +55,15 @@ public:
                 const QString rule = probed(from);
                 for (const Port &p : cls->ports)
                     if (probed(p.name) == rule)
-                        m_remapsAt[place(p.evidence)].append({n.id, from, to, n.evidence});
+                        m_remapsAt[place(p.evidence)].append(
+                            {n.id, n.classId, from, to, n.evidence});
             }
         }
     }
 
     void checkRoot(const Composite &root)
     {
-        m_system.clear();
-        m_order.clear();
+        m_ports.clear();
         m_named.clear();
         m_nodeOrder.clear();
         m_nodeCount = 0;
@@ -83,7 +75,7 @@ public:
         // Its child nodes run in its process, and a component container (a node without
         // ports or a class) only hosts it: neither makes the file a system.
         m_lone = m_nodeCount < 2;
-        for (const QString &key : std::as_const(m_order))
+        for (const QString &key : m_ports.keys())
             checkName(key);
         checkNodeNames();
     }
@@ -98,7 +90,7 @@ private:
                 continue;
             if (part.kind == RosNodePart::Kind::Launch) {
                 if (part.external) // an interface model's ports, if one describes it
-                    addPorts(part);
+                    m_ports.add(part);
                 else if (const Composite *child = m_composites.value(part.typeId))
                     collect(*child, depth + 1);
                 continue;
@@ -111,20 +103,7 @@ private:
                     m_nodeOrder.append(fq);
                 m_named[fq].append(&part);
             }
-            addPorts(part);
-        }
-    }
-
-    void addPorts(const RosNodePart &part)
-    {
-        for (const PartPort &port : part.ports) {
-            if (!port.active || !port.resolved || port.guessed)
-                continue; // a guessed name proves nothing about who hears whom
-            const QString key = portFamilyName(port.kind) + QLatin1Char(' ') + port.name;
-            if (!m_system.contains(key))
-                m_order.append(key);
-            Family &f = m_system[key];
-            (isProvidingPort(port.kind) ? f.providers : f.users).append({&part, &port});
+            m_ports.add(part);
         }
     }
 
@@ -167,36 +146,112 @@ private:
             {severity, code, text, evidence, related, {m_current}, {old.key()}, external});
     }
 
-    /// Whether an open port is open by design, and not a finding: a port an interface model
-    /// gives (code outside the workspace may use only some of it), and any port of a launch
-    /// file that starts one node (a building block: its ports are its interface), unless
-    /// another launch file remaps that port (created at the same place in the code) where it
-    /// starts a node. Then this file probably misses the remap: `hint` and `related` say which
-    /// and where.
-    bool openByDesign(const Use &u, QList<Diagnostic::Related> *related, QString *hint) const
+    /// Why an open port (nobody on the other side in the system) is probably a mistake, and
+    /// not the system's interface to something that runs beside it (a driver, a tool, an
+    /// operator, the rest of a system this launch file is a part of), which the code alone
+    /// cannot tell apart: a finding kind ships only when nine in ten of its findings are true
+    /// (blueprint §1). The evidence, as a hint to append to the finding, with its places in
+    /// `related`:
+    /// - another launch file remaps this port where it starts a node of the same class, and
+    ///   this one keeps the name as written: it may be missing that remap;
+    /// - a name on the other side that this one is likely a misspelling of, of the same type
+    ///   where both types are known, of another node;
+    /// - the same name in another namespace on the other side, open too and of the same type
+    ///   (`/robot1/goal_pose` and `/goal_pose`): a namespace pushed once too often, or not at
+    ///   all.
+    /// "" when there is none, and always for a port an interface model gives (code outside the
+    /// workspace may use only some of it). `like` is the misspelled name found, if any.
+    QString evidenceOfMistake(const QString &family, const QString &name, const Use &u,
+                              QList<Diagnostic::Related> *related, QString *like) const
     {
         if (!u.port->model.isEmpty())
-            return true;
-        if (!m_lone)
-            return false;
-        if (u.port->remapped || u.port->nameAsWritten.isEmpty())
-            return true;
+            return {};
+        if (QString h = missingRemap(family, u, related); !h.isEmpty())
+            return h;
+        if (m_lone) // a building block's ports are its interface
+            return {};
+        const bool wantProviders = !isProvidingPort(u.port->kind);
+        const Use *other = m_ports.misspelling(family, name, wantProviders, u.part, like);
+        if (!other || !typesAgree(*other->port, *u.port))
+            other = m_ports.namespaceSlip(family, name, u, wantProviders, like);
+        // a debug or visualisation output is no counterpart anybody meant
+        if (!other || (wantProviders && isObservability(*other->port))) {
+            like->clear();
+            return {};
+        }
+        const bool topic = family == QLatin1String("topic");
+        related->append(Checker::related(
+            *other, wantProviders
+                        ? (topic ? QStringLiteral("publishes") : QStringLiteral("serves"))
+                        : (topic ? QStringLiteral("subscribes to") : QStringLiteral("calls"))));
+        return QStringLiteral(" Did you mean %1?").arg(*like);
+    }
+
+    /// " <file>:<line> remaps it … <file> starts this one without that remap." when another
+    /// launch file remaps this port (made at the same place in the code) where it starts a
+    /// node of the same class, and this instance keeps the name as written: no rule of its
+    /// own names the port, not even one to a value the analysis could not decide. An output
+    /// left unremapped harms nobody unless the name the other file gives it is heard here. (A
+    /// remapped port whose target differs from another file's is no evidence: generic nodes
+    /// such as filters are wired differently in every place they are started. Nor is a port
+    /// whose guard the analysis could not decide: it may not exist.)
+    QString missingRemap(const QString &family, const Use &u,
+                         QList<Diagnostic::Related> *related) const
+    {
+        if (u.port->remapped || u.port->nameAsWritten.isEmpty() || !existsSurely(u))
+            return {};
         const QString written = probed(u.port->nameAsWritten);
+        const NodeInstance *instance = m_instances.value(u.part->instanceId);
+        if (instance)
+            for (const auto &[from, to] : instance->remaps)
+                if (probed(from) == written)
+                    return {};
+        const bool output = isProvidingPort(u.port->kind);
         for (const RemapElsewhere &r : m_remapsAt.value(place(u.port->evidence))) {
-            if (r.instanceId == u.part->instanceId || probed(r.from) != written)
+            // a rule to an empty name (an argument nobody sets) shows no name to wire to
+            if (r.evidence.file == u.part->evidence.file || r.classId != u.part->typeId ||
+                r.to.isEmpty() || probed(r.from) != written)
+                continue;
+            if (output && m_ports
+                              .family(family + QLatin1Char(' ') +
+                                      RosNames::expand(r.to, u.part->nameSpace, u.part->name))
+                              .users.isEmpty())
                 continue;
             related->append({QStringLiteral("another launch file remaps %1 to %2 where it "
                                             "starts a node with this port")
                                  .arg(r.from, r.to),
                              r.evidence});
-            *hint = QStringLiteral(" %1:%2 remaps it (%3:=%4) where it starts a node with this "
-                                   "port; this launch file may be missing that remap.")
-                        .arg(r.evidence.file)
-                        .arg(r.evidence.line)
-                        .arg(r.from, r.to);
-            return false;
+            return QStringLiteral(" %1:%2 remaps it (%3:=%4) where it starts a node of the "
+                                  "same class; %5 starts this one without that remap.")
+                .arg(r.evidence.file)
+                .arg(r.evidence.line)
+                .arg(r.from, r.to, u.part->evidence.file);
         }
-        return true;
+        return {};
+    }
+
+    /// Whether the port exists in this instance for sure: no guard, or one the composition
+    /// decided (a guard over several values, or on a value nobody gives, may be false).
+    bool existsSurely(const Use &u) const
+    {
+        if (u.port->guard.isEmpty())
+            return true;
+        const AtomicNode *cls = m_nodes.node(u.part->typeId);
+        const NodeInstance *instance = m_instances.value(u.part->instanceId);
+        if (!cls || !instance)
+            return false;
+        for (const Port &p : cls->ports)
+            if (p.id == u.port->id)
+                return Composer::guardDecided(p, *instance);
+        return false; // a plugin's port: its id is prefixed
+    }
+
+    /// Two ports' types are no reason against wiring them: equal, or one not known as ROS
+    /// names it.
+    static bool typesAgree(const PartPort &a, const PartPort &b)
+    {
+        return a.type == b.type || !SystemPorts::isCanonicalType(a.type) ||
+               !SystemPorts::isCanonicalType(b.type);
     }
 
     /// A debug, visualisation, diagnostics or processing-time output, by its resolved name or
@@ -234,74 +289,33 @@ private:
                 u.port->evidence};
     }
 
-    /// The existing name of the same family most like `name` (edit distance), among those
-    /// with a provider when `wantProviders`, else among those with users; "" when none is
-    /// close enough to be a likely misspelling.
-    const Use *nearest(const QString &family, const QString &name, bool wantProviders,
-                       QString *found) const
+    /// The first port of `first`, else of `then`, whose type is known as ROS names it.
+    static const Use &typed(const QList<Use> &first, const QList<Use> &then)
     {
-        // A name this long is no misspelling a person would make; and past a run's budget of
-        // work (cells of the distance and names looked at), hints stop, so they stay linear.
-        if (name.size() > 256 || m_hintWork > 50'000'000)
-            return nullptr;
-        const QString bare = name.section(QLatin1Char('/'), -1);
-        int best = std::max(2, int(bare.size()) / 3) + 1;
-        const Use *use = nullptr;
-        const QString prefix = family + QLatin1Char(' ');
-        for (const QString &key : m_order) {
-            ++m_hintWork;
-            if (!key.startsWith(prefix))
-                continue;
-            const QStringView other = QStringView(key).mid(prefix.size());
-            // the distance is at least the difference in length: most names are out at once
-            if (std::abs(other.size() - name.size()) >= best || other == name)
-                continue;
-            const auto it = m_system.constFind(key);
-            const QList<Use> &side = wantProviders ? it->providers : it->users;
-            if (side.isEmpty())
-                continue;
-            m_hintWork += other.size() * (2 * best + 1);
-            const int d = editDistance(name, other.toString(), best);
-            if (d < best) {
-                best = d;
-                use = &side.first();
-                *found = other.toString();
-            }
-        }
-        return use;
-    }
-
-    /// " Did you mean /x?" and its place, when a name like `name` exists on the other side.
-    QString hint(const QString &family, const QString &name, bool wantProviders,
-                 QList<Diagnostic::Related> *related) const
-    {
-        QString found;
-        const Use *u = nearest(family, name, wantProviders, &found);
-        if (!u)
-            return {};
-        related->append(Checker::related(*u, wantProviders ? (family == QLatin1String("topic")
-                                                                  ? QStringLiteral("publishes")
-                                                                  : QStringLiteral("serves"))
-                                                           : QStringLiteral("subscribes to")));
-        return QStringLiteral(" Did you mean %1?").arg(found);
+        for (const QList<Use> *list : {&first, &then})
+            for (const Use &u : *list)
+                if (SystemPorts::isCanonicalType(u.port->type))
+                    return u;
+        return first.first();
     }
 
     void checkName(const QString &key)
     {
-        const Family &f = m_system.value(key);
+        const Family f = m_ports.family(key);
         const QString kind = key.section(QLatin1Char(' '), 0, 0);
         const QString name = key.section(QLatin1Char(' '), 1);
         QStringList types;
         for (const QList<Use> *list : {&f.providers, &f.users})
-            for (const Use &u : *list)
-                if (!u.port->type.isEmpty() && !types.contains(u.port->type))
+            for (const Use &u : *list) // an expression left as written is no type to compare
+                if (SystemPorts::isCanonicalType(u.port->type) && !types.contains(u.port->type))
                     types.append(u.port->type);
         if (types.size() > 1) {
-            const Use &u = f.providers.isEmpty() ? f.users.first() : f.providers.first();
+            const Use &u = typed(f.providers.isEmpty() ? f.users : f.providers, f.users);
             QList<Diagnostic::Related> others;
             for (const QList<Use> *list : {&f.providers, &f.users})
                 for (const Use &o : *list)
-                    if (o.port != u.port && !o.port->type.isEmpty() && o.port->type != u.port->type)
+                    if (o.port != u.port && SystemPorts::isCanonicalType(o.port->type) &&
+                        o.port->type != u.port->type)
                         others << related(o, isProvidingPort(o.port->kind)
                                                  ? QStringLiteral("provides")
                                                  : QStringLiteral("uses"));
@@ -313,45 +327,9 @@ private:
         if (kind == QLatin1String("topic")) {
             checkQos(name, f);
             if (f.providers.isEmpty())
-                for (const Use &u : f.users) {
-                    QList<Diagnostic::Related> rel;
-                    QString h;
-                    if (m_scope.isInterface(name, false) || openByDesign(u, &rel, &h))
-                        continue;
-                    if (u.port->remapped) {
-                        remapTargetUnused(u, name, QStringLiteral("publishes"));
-                        continue;
-                    }
-                    if (h.isEmpty())
-                        h = hint(kind, name, true, &rel);
-                    add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
-                        QStringLiteral(
-                            "%1 subscribes to %2, which no node started {by} publishes.%3")
-                            .arg(who(*u.part), name, h),
-                        u.port->evidence, rel, CheckScope::externalOf(name, false));
-                }
+                checkOpen(kind, name, f.users);
             if (f.users.isEmpty())
-                for (const Use &u : f.providers) {
-                    // Meant for tools (RViz, ros2 bag, plotters): nobody in the system needs
-                    // to hear it.
-                    if (isObservability(*u.port))
-                        continue;
-                    QList<Diagnostic::Related> rel;
-                    QString h;
-                    if (m_scope.isInterface(name, true) || openByDesign(u, &rel, &h))
-                        continue;
-                    if (u.port->remapped) {
-                        remapTargetUnused(u, name, QStringLiteral("subscribes to"));
-                        continue;
-                    }
-                    if (h.isEmpty())
-                        h = hint(kind, name, false, &rel);
-                    add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
-                        QStringLiteral(
-                            "%1 publishes %2, which no node started {by} subscribes to.%3")
-                            .arg(who(*u.part), name, h),
-                        u.port->evidence, rel, CheckScope::externalOf(name, true));
-                }
+                checkOpen(kind, name, f.providers);
             return;
         }
         // Two servers of which one may not run (its condition is a guess) may be alternatives.
@@ -374,33 +352,68 @@ private:
                 f.providers.at(1).port->evidence, rel);
         }
         if (f.providers.isEmpty())
-            for (const Use &u : f.users) {
-                QList<Diagnostic::Related> rel;
-                QString h;
-                if (m_scope.isInterface(name, false) || openByDesign(u, &rel, &h))
+            checkOpen(kind, name, f.users);
+    }
+
+    /// The ports of `side` on a name nobody uses from the other side that evidence says are
+    /// probably a mistake (evidenceOfMistake): `topic-unpublished`, `topic-unheard` or
+    /// `unserved-client`, or `remap-target-unused` when a remap rule gave the port its name.
+    void checkOpen(const QString &kind, const QString &name, const QList<Use> &side)
+    {
+        const bool topic = kind == QLatin1String("topic");
+        for (const Use &u : side) {
+            const bool output = isProvidingPort(u.port->kind);
+            // Meant for tools (RViz, ros2 bag, plotters): nobody in the system needs to hear it.
+            if ((output && isObservability(*u.port)) || m_scope.isInterface(name, output))
+                continue;
+            QList<Diagnostic::Related> rel;
+            QString like;
+            const QString h = evidenceOfMistake(kind, name, u, &rel, &like);
+            if (h.isEmpty())
+                continue;
+            // A misspelled pair is one finding, at the input that misses its data (unless
+            // that input is an interface model's, which reports nothing).
+            if (output && !like.isEmpty()) {
+                const Family pair = m_ports.family(kind + QLatin1Char(' ') + like);
+                if (pair.providers.isEmpty() &&
+                    std::any_of(pair.users.cbegin(), pair.users.cend(),
+                                [](const Use &o) { return o.port->model.isEmpty(); }))
                     continue;
-                if (u.port->remapped) {
-                    remapTargetUnused(u, name, QStringLiteral("serves"));
-                    continue;
-                }
-                if (h.isEmpty())
-                    h = hint(kind, name, true, &rel);
+            }
+            if (u.port->remapped) {
+                remapTargetUnused(u, name,
+                                  !topic   ? QStringLiteral("serves")
+                                  : output ? QStringLiteral("subscribes to")
+                                           : QStringLiteral("publishes"),
+                                  h, rel);
+                continue;
+            }
+            if (!topic)
                 add(Diagnostic::Severity::Info, QStringLiteral("unserved-client"),
                     QStringLiteral("%1 calls the %2 %3, which no node started {by} serves.%4")
                         .arg(who(*u.part), kind, name, h),
                     u.port->evidence, rel, CheckScope::externalOf(name, false));
-            }
+            else if (output)
+                add(Diagnostic::Severity::Info, QStringLiteral("topic-unheard"),
+                    QStringLiteral("%1 publishes %2, which no node started {by} subscribes to.%3")
+                        .arg(who(*u.part), name, h),
+                    u.port->evidence, rel, CheckScope::externalOf(name, true));
+            else
+                add(Diagnostic::Severity::Warning, QStringLiteral("topic-unpublished"),
+                    QStringLiteral("%1 subscribes to %2, which no node started {by} publishes.%3")
+                        .arg(who(*u.part), name, h),
+                    u.port->evidence, rel, CheckScope::externalOf(name, false));
+        }
     }
 
     /// A port a remap rule renamed, to a name nobody on the other side uses: the finding is
     /// the rule (at the launch line), with the port's creation as the related place.
-    void remapTargetUnused(const Use &u, const QString &name, const QString &counterpart)
+    void remapTargetUnused(const Use &u, const QString &name, const QString &counterpart,
+                           const QString &h, QList<Diagnostic::Related> rel)
     {
-        QList<Diagnostic::Related> rel{{QStringLiteral("%1 %2 as written in the code")
-                                            .arg(portKindName(u.port->kind), u.port->nameAsWritten),
-                                        u.port->evidence}};
-        const QString family = portFamilyName(u.port->kind);
-        const QString h = hint(family, name, !isProvidingPort(u.port->kind), &rel);
+        rel.prepend({QStringLiteral("%1 %2 as written in the code")
+                         .arg(portKindName(u.port->kind), u.port->nameAsWritten),
+                     u.port->evidence});
         // Like the unremapped findings: an input nobody feeds is a warning, an output
         // nobody hears (often meant for something outside the system) is a note.
         add(isProvidingPort(u.port->kind) ? Diagnostic::Severity::Info
@@ -491,14 +504,12 @@ private:
     QHash<QString, QString> m_helpers; ///< a port's place in the code -> the helper creating it
     struct RemapElsewhere
     {
-        QString instanceId, from, to;
+        QString instanceId, classId, from, to;
         Evidence evidence; ///< the node in its launch file
     };
     QHash<QString, QList<RemapElsewhere>> m_remapsAt; ///< a port's place -> remaps of it
     QList<Diagnostic> *m_out;
-    QHash<QString, Family> m_system;
-    QStringList m_order;
-    mutable qint64 m_hintWork = 0;                      ///< of nearest(), in this run
+    SystemPorts m_ports;                                ///< of the system being checked
     QHash<QString, QList<const RosNodePart *>> m_named; ///< fully qualified name -> parts
     QStringList m_nodeOrder;
     QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out
@@ -506,72 +517,6 @@ private:
     int m_nodeCount = 0; ///< active node parts of the system being checked that it starts itself
     bool m_lone = false; ///< the system starts fewer than two nodes
 };
-
-/// A system the checks judge: a root launch-file instance of an entry point. Without entry
-/// points (a composition of given instances), every root.
-bool judged(const LaunchDependencies &launch, const QString &rootFile)
-{
-    return launch.entryPoints.isEmpty() || launch.entryPoints.contains(rootFile);
-}
-
-/// The launch-file instances of the judged systems: each root and what it includes.
-QSet<QString> judgedInstances(const LaunchDependencies &launch)
-{
-    QSet<QString> in;
-    for (const LaunchFileInstance &i : launch.instances) // roots first, then their includes
-        if (i.parentId.isEmpty() ? judged(launch, i.file) : in.contains(i.parentId))
-            in.insert(i.id);
-    return in;
-}
-
-/// A remap rule is reported when no instance carrying it has a port it renames; the
-/// evidence is the first node the rule applies to.
-void checkRemaps(const AtomicNodeList &nodes, const LaunchDependencies &launch,
-                 QList<Diagnostic> *out)
-{
-    const QSet<QString> systems = judgedInstances(launch);
-    struct Rule
-    {
-        QString text;
-        Evidence evidence;
-        bool used = false;
-        bool decidable = true;
-    };
-    QList<Rule> rules;
-    QHash<QString, int> index;
-    for (const NodeInstance &n : launch.nodes) {
-        const AtomicNode *cls = nodes.node(n.classId);
-        if (!cls || !n.active || !systems.contains(n.launchFileId))
-            continue;
-        QList<int> used;
-        Composer::resolvePorts(*cls, n, nullptr, &used);
-        const bool allResolved = std::all_of(cls->ports.begin(), cls->ports.end(),
-                                             [](const Port &p) { return p.isResolved(); });
-        for (qsizetype i = 0; i < n.remaps.size(); ++i) {
-            const auto &[from, to] = n.remaps.at(i);
-            if (!RosNames::isNameRule(from))
-                continue;
-            // A scoped SetRemap reaches nodes of several files: the rule is judged as a whole.
-            const QString key = from + QLatin1Char('\n') + to;
-            int at = index.value(key, -1);
-            if (at < 0) {
-                at = int(rules.size());
-                index.insert(key, at);
-                rules.append({QStringLiteral("%1:=%2").arg(from, to), n.evidence});
-            }
-            rules[at].used = rules[at].used || used.contains(int(i));
-            rules[at].decidable = rules[at].decidable && allResolved;
-        }
-    }
-    for (const Rule &r : std::as_const(rules))
-        if (!r.used && r.decidable)
-            out->append({Diagnostic::Severity::Warning,
-                         QStringLiteral("remap-unmatched"),
-                         QStringLiteral("The remap %1 matches no port of the nodes it applies to.")
-                             .arg(r.text),
-                         r.evidence,
-                         {}});
-}
 
 } // namespace
 
@@ -582,9 +527,9 @@ QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const Atomic
     QList<Diagnostic> out;
     Checker checker(arch, nodes, launch, observability, &out);
     for (const Composite &c : arch.composites)
-        if (c.parentId.isEmpty() && judged(launch, c.file))
+        if (c.parentId.isEmpty() && CheckScope::isJudged(launch, c.file))
             checker.checkRoot(c);
-    checkRemaps(nodes, launch, &out);
+    RemapChecks::run(nodes, launch, &out);
     // A file included twice reports the same remap (same launch line) twice.
     Diagnostic::removeDuplicates(&out);
     return out;

@@ -53,4 +53,18 @@ QString CheckScope::externalOf(const QString &name, bool output)
     return (output ? QLatin1String("output ") : QLatin1String("input ")) + name;
 }
 
+bool CheckScope::isJudged(const LaunchDependencies &launch, const QString &rootFile)
+{
+    return launch.entryPoints.isEmpty() || launch.entryPoints.contains(rootFile);
+}
+
+QSet<QString> CheckScope::judgedInstances(const LaunchDependencies &launch)
+{
+    QSet<QString> in;
+    for (const LaunchFileInstance &i : launch.instances) // roots first, then their includes
+        if (i.parentId.isEmpty() ? isJudged(launch, i.file) : in.contains(i.parentId))
+            in.insert(i.id);
+    return in;
+}
+
 } // namespace rosarch

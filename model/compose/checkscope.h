@@ -35,6 +35,13 @@ public:
     /// an unresolved expression.
     static QString externalOf(const QString &name, bool output);
 
+    /// Whether the checks judge the system of a root launch-file instance: an entry point's.
+    /// Without entry points (a composition of given instances), every root.
+    static bool isJudged(const LaunchDependencies &launch, const QString &rootFile);
+
+    /// The launch-file instances of the judged systems: each root and what it includes.
+    static QSet<QString> judgedInstances(const LaunchDependencies &launch);
+
 private:
     bool isExpectedExternal(const QString &name, bool output) const;
 

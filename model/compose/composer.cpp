@@ -285,6 +285,21 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
     return out;
 }
 
+bool Composer::guardDecided(const Port &p, const NodeInstance &instance)
+{
+    if (p.guard.isEmpty())
+        return true;
+    if (p.guardParameter.isEmpty())
+        return false;
+    bool set = false;
+    QString v = parameterValue(instance, p.guardParameter, &set);
+    if (!set)
+        v = p.guardDefault;
+    bool known = false;
+    RosNames::evaluateGuard(p.guard, v, &known);
+    return known;
+}
+
 // A node instance carries the ports of the pluginlib plugins its parameters load
 // (`FollowPath.plugin: dwb_core::DWBLocalPlanner`), each port id prefixed by the plugin's name.
 QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &pluginClasses,

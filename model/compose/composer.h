@@ -31,6 +31,10 @@ public:
     /// instance's own, their ids prefixed by the plugin's name.
     static QList<PartPort> pluginPorts(const QHash<QString, const AtomicNode *> &pluginClasses,
                                        const NodeInstance &instance, const NodeInstance *container);
+    /// Whether the port's guard is decided for the instance: there is none, or it reads one
+    /// parameter whose value the instance gives or the declaration defaults. (A guard over
+    /// several values, or an unknown one, leaves the port in place as the best guess.)
+    static bool guardDecided(const Port &port, const NodeInstance &instance);
 };
 
 /// "topic:/scan", "service:/map/save", "action:/navigate": what a port of `kind` named

@@ -20,20 +20,24 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
         // building block, and its open ports are not reported.
         kind("topic-unpublished", "Subscription that nobody publishes",
              "A node subscribes to a topic that no node started from the same entry point "
-             "publishes, so its callback never runs in that system. Usually a misspelt or "
-             "unremapped name (the message names the most similar published topic), or a "
-             "publisher outside the workspace (a driver, a simulator). Fix the name, add the "
-             "remap, or, when the publisher is outside the workspace, accept the topic as an "
-             "expected external input (X): the project records it for every system.",
+             "publishes, so its callback never runs in that system, and there is evidence of a "
+             "mistake, which the message gives: another launch file remaps this port where it "
+             "starts the same node class and this one does not, or a published name is a "
+             "misspelling of it or the same name in a namespace pushed once too often or not at "
+             "all. (An open port without such evidence is the system's boundary, no finding.) "
+             "Add the remap or fix the name; when the data really comes from outside, accept "
+             "the topic as an expected external input (X): the project records it for every "
+             "system.",
              "warning"),
         kind("topic-unheard", "Publisher that nobody subscribes to",
-             "A node publishes a topic that no node of the same system subscribes to. Outputs "
-             "meant for tools (debug, visualisation, diagnostics, processing time: recognised "
-             "by message package, name and helper, see interfaces/observability.json) are not "
-             "reported, nor topics an RViz configuration of the workspace displays. Worth a "
-             "look when the name is close to a subscribed one; otherwise remove the publisher, "
-             "or, when something outside reads it, accept it as an expected external output "
-             "(X).",
+             "A node publishes a topic that no node of the same system subscribes to, and there "
+             "is evidence of a mistake, which the message gives: another launch file wires this "
+             "port to a name that this system hears and this one does not, or a subscribed name "
+             "is a misspelling of it or the same name in another namespace. Outputs meant for "
+             "tools (debug, visualisation, diagnostics, processing time, see "
+             "interfaces/observability.json) and topics an RViz configuration displays are "
+             "never reported. Add the remap or fix the name, or, when something outside reads "
+             "it, accept it as an expected external output (X).",
              "note"),
         kind("type-mismatch", "One name, several interface types",
              "The publishers, subscriptions, servers or clients of one name use different "
@@ -47,9 +51,11 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "of them, or start only one.",
              "warning"),
         kind("unserved-client", "Client that no node serves",
-             "A node calls a service or action that no node of the same system serves; the "
-             "call waits forever. Check the name and the remaps, or, when the server is outside "
-             "the workspace, accept it as an expected external input (X).",
+             "A node calls a service or action that no node of the same system serves, so the "
+             "call waits forever, and there is evidence of a mistake, which the message gives: "
+             "a remap another launch file gives and this one lacks, a misspelt name, or a "
+             "namespace slip. Add the remap or fix the name, or, when the server is outside the "
+             "workspace, accept it as an expected external input (X).",
              "note"),
         kind("duplicate-node-name", "Two nodes with one name",
              "Two nodes of a system have the same fully qualified name. ROS 2 starts both, but "
@@ -59,10 +65,10 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "warning"),
         kind("remap-target-unused", "Remap to a name nobody uses",
              "A launch file remaps a port to a name that no other node of the system uses on "
-             "the other side, so the remap connects nothing. The target is often misspelt (the "
-             "message names the most similar existing one) or the counterpart is not started; "
-             "when the counterpart is outside the workspace, accept the name as an expected "
-             "external (X).",
+             "the other side, so the remap connects nothing, and a name on the other side is a "
+             "misspelling of the target or the same name in another namespace (the message "
+             "names it). Fix the target; when the counterpart is outside the workspace, accept "
+             "the name as an expected external (X).",
              "warning"),
         kind("remap-unmatched", "Remap that matches no port",
              "A remap rule given to a node renames none of its ports: after ROS 2 expands both "

@@ -235,18 +235,21 @@ private Q_SLOTS:
 
     void aFindingIsAcceptedAsAnExpectedExternal()
     {
-        // cpp_child_nodes reports /scan, which only a driver outside the workspace publishes.
+        // check_roots reports the planner's /map, which (say) a map server outside the
+        // workspace publishes.
+        QTemporaryDir ws;
+        test::copyTree(test::dataDir(QStringLiteral("check_roots/ws")), ws.path());
         MainWindow w;
         w.resize(1400, 900);
         w.show();
-        w.openWorkspace(test::dataDir(QStringLiteral("cpp_child_nodes/ws")));
+        w.openWorkspace(ws.path());
         const auto scanFinding = [&w]() -> QModelIndex {
             QAbstractItemModel *m = w.logView()->diagnosticsView()->model();
             for (int r = 0; r < m->rowCount(); ++r)
                 if (m->index(r, DiagnosticModel::MessageColumn)
                         .data()
                         .toString()
-                        .contains(QStringLiteral("subscribes to /scan,")))
+                        .contains(QStringLiteral("subscribes to /map,")))
                     return m->index(r, 0);
             return {};
         };
@@ -257,7 +260,7 @@ private Q_SLOTS:
         accept->trigger();
         QCOMPARE(w.document()->launchOptions().externals.size(), qsizetype(1));
         const ExpectedExternal &e = w.document()->launchOptions().externals.front();
-        QCOMPARE(e.name, QStringLiteral("/scan"));
+        QCOMPARE(e.name, QStringLiteral("/map"));
         QVERIFY(!e.output);
         // The checks run again, without it; the project keeps the declaration.
         QTRY_VERIFY_WITH_TIMEOUT(
@@ -266,7 +269,9 @@ private Q_SLOTS:
         QStringList left;
         for (const Diagnostic &d : w.document()->architecture().diagnostics)
             left << d.external;
-        QCOMPARE(left, QStringList{QStringLiteral("output /rover/near_grid/outline")});
+        left.sort();
+        QCOMPARE(left, (QStringList{QStringLiteral("input /odom_raws"),
+                                    QStringLiteral("input /robot1/map")}));
     }
 
     void exampleWorkspace()

@@ -67,7 +67,7 @@ private Q_SLOTS:
         w.resize(1440, 900);
         QTRY_COMPARE(w.height(), 900);
         QVERIFY(resetLayout(w));
-        w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
+        w.openWorkspace(test::dataDir(QStringLiteral("check_system/ws"))); // five findings
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QTreeView *findings = w.logView()->diagnosticsView();
         QTRY_VERIFY(findings->model()->rowCount() >= 3);

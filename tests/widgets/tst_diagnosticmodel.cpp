@@ -347,17 +347,18 @@ private Q_SLOTS:
     void checksFollowTheCorrectedModel()
     {
         // The Log shows the checks of the model a person corrected, as the diagram and the
-        // exports do: removing the node that publishes /odom_raw takes "no one hears it" away.
+        // exports do: removing the node that publishes /odom_raw takes the planner's misspelt
+        // /odom_raws finding away (nothing is like it any more).
         Document doc;
         doc.setAutosaveInterval(60000);
         DiagnosticModel model(&doc);
         QAbstractItemModelTester tester(&model,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
         doc.setRecovery(m_recovered);
-        const auto unheard = [&model] {
-            return messages(model).filter(QStringLiteral("/odom_raw")).size();
+        const auto misspelt = [&model] {
+            return messages(model).filter(QStringLiteral("/odom_raws")).size();
         };
-        QCOMPARE(unheard(), 1);
+        QCOMPARE(misspelt(), 1);
         const QStringList before = messages(model);
         // Odometry runs in two systems, both of which report the finding (two contexts).
         QList<Correction> removals;
@@ -373,7 +374,7 @@ private Q_SLOTS:
         QSignalSpy changed(&model, &DiagnosticModel::findingsChanged);
         QCOMPARE(doc.addCorrections(removals, QStringLiteral("Remove odometry")).size(), 2);
         QVERIFY(changed.count() >= 1);
-        QCOMPARE(unheard(), 0);
+        QCOMPARE(misspelt(), 0);
         QVERIFY(messages(model) != before);
         doc.undoStack()->undo();
         QCOMPARE(messages(model), before);

@@ -82,7 +82,9 @@ def write_table(rows, groups, seed, workspace, stream):
     for i, (code, d) in enumerate(rows, 1):
         e = d.get("evidence", {})
         at = f"{e.get('file', '')}:{e.get('line', 0)}"
-        systems = len(d.get("contexts", [])) or ""
+        # how many systems report it, and the first of them, for the judge to start from
+        contexts = d.get("contexts", [])
+        systems = f"{len(contexts)}: {contexts[0]}" if contexts else ""
         stream.write(f"| {i} | {code} | {cell(d['message'])} | {cell(at)} | {systems} | "
                      f"`{cell(source_line(workspace, e))}` |  |  |\n")
 

@@ -430,14 +430,13 @@ private Q_SLOTS:
     void reportsArchitectureChecks()
     {
         const QList<Diagnostic> &d = m_recovery.architecture.diagnostics;
-        QCOMPARE(codes(d),
-                 (QStringList{
-                     QStringLiteral("duplicate-server"), QStringLiteral("duplicate-server"),
-                     QStringLiteral("remap-target-unused"), QStringLiteral("remap-target-unused"),
-                     QStringLiteral("remap-target-unused"), QStringLiteral("remap-unmatched"),
-                     QStringLiteral("topic-unheard"), QStringLiteral("topic-unpublished"),
-                     QStringLiteral("topic-unpublished"), QStringLiteral("type-mismatch"),
-                     QStringLiteral("unserved-client"), QStringLiteral("unserved-client")}));
+        QCOMPARE(
+            codes(d),
+            (QStringList{QStringLiteral("duplicate-server"), QStringLiteral("duplicate-server"),
+                         QStringLiteral("remap-unmatched"), QStringLiteral("type-mismatch")}));
+        // The ports the system leaves open (the planners' cmd_vel remapped to a topic nobody
+        // subscribes to, a camera's input from a driver) have no evidence of a mistake: they
+        // are the system's boundary, not findings (see tst_architecturechecks).
         for (const Diagnostic &x : d) {
             QVERIFY2(x.evidence.isValid(), qPrintable(x.message));
             if (x.code == QLatin1String("remap-unmatched")) {
@@ -453,16 +452,6 @@ private Q_SLOTS:
                          QStringLiteral("src/planning/planning/commander.py"));
                 QVERIFY(x.related.first().message.contains(
                     QLatin1String("geometry_msgs/msg/TwistStamped")));
-            }
-            // The planners' cmd_vel goes, by a remap, to a topic nobody subscribes to: the
-            // finding is the launch line, the port's creation is related.
-            if (x.code == QLatin1String("remap-target-unused") &&
-                x.message.startsWith(QLatin1String("/planner "))) {
-                QCOMPARE(x.evidence.file, QStringLiteral("src/planning/launch/system.launch.py"));
-                QCOMPARE(x.severity, Diagnostic::Severity::Info);
-                QCOMPARE(x.related.size(), 1);
-                QCOMPARE(x.related.first().evidence.file,
-                         QStringLiteral("src/planning/planning/planner.py"));
             }
         }
     }

@@ -220,7 +220,8 @@ broken: [
                 configs << n.interfaceModel + QLatin1Char(' ') + n.modelConfig;
         QCOMPARE(configs, QStringList{QStringLiteral("rviz2 src/sim_bringup/rviz/sim.rviz")});
         // The models' open ports (robot_description, /initialpose, /clock, ...) are no findings;
-        // the robot's goal under its namespace, which RViz at the root does not feed, is.
+        // the robot's goal under its namespace, which RViz at the root does not feed, is: the
+        // same name at the root, open too, is the evidence.
         QStringList found;
         for (const Diagnostic &d : r.architecture.diagnostics)
             found << QStringLiteral("%1 %2:%3 | %4")
@@ -230,7 +231,7 @@ broken: [
         QCOMPARE(found, (QStringList{QStringLiteral(
                             "topic-unpublished src/sim_bringup/sim_bringup/follower.py:16 | "
                             "/robot1/follower subscribes to /robot1/goal_pose, which no node "
-                            "started alongside it publishes.")}));
+                            "started alongside it publishes. Did you mean /goal_pose?")}));
         QStringList external;
         for (const Diagnostic &d : r.launch.diagnostics)
             if (d.code == QLatin1String("external-include"))

@@ -9,7 +9,8 @@ setup(
     data_files=[
         ('share/' + package_name, ['package.xml']),
         ('share/' + package_name + '/launch', ['launch/planning.launch.py', 'launch/sim.launch.py',
-                                               'launch/field.launch.py', 'launch/fleet.launch.py']),
+                                               'launch/field.launch.py', 'launch/fleet.launch.py',
+                                               'launch/nav.launch.py']),
     ],
     install_requires=['setuptools'],
     entry_points={
