@@ -57,6 +57,14 @@ bool nestedOrDoubled(const QString &a, const QString &b)
     return outer.endsWith(inner) && inner.startsWith(extra);
 }
 
+/// A port whose namespace decides its name: written relative and not remapped. (Names a
+/// launch file wired on purpose, by a remap to an absolute name, slip nowhere.)
+bool placedByNamespace(const PartPort &port)
+{
+    return !port.remapped && !port.nameAsWritten.isEmpty() &&
+           !port.nameAsWritten.startsWith(u'/') && !port.nameAsWritten.startsWith(u'~');
+}
+
 } // namespace
 
 void SystemPorts::clear()
@@ -130,7 +138,8 @@ const PortUse *SystemPorts::namespaceSlip(const QString &family, const QString &
         if (!(wantProviders ? f.users : f.providers).isEmpty())
             continue; // wired already: a name of its own
         for (const PortUse &u : side)
-            if (u.part != use.part && u.port->type == use.port->type) {
+            if (u.part != use.part && u.port->type == use.port->type &&
+                (placedByNamespace(*use.port) || placedByNamespace(*u.port))) {
                 *found = candidate;
                 return &u;
             }

@@ -48,7 +48,8 @@ public:
     /// A name of the family that is `name` in another namespace: one in a namespace nested in
     /// the other's (`/goal_pose` and `/robot1/goal_pose`, `/robot1/battery_state` and
     /// `/robot1/monitoring/battery_state`), or one with its namespace doubled (`/robot1/cmd_vel`
-    /// and `/robot1/robot1/cmd_vel`); open as `name` is (providers when
+    /// and `/robot1/robot1/cmd_vel`), where at least one of the two is written relative and
+    /// not remapped, so that a namespace put it there; open as `name` is (providers when
     /// `wantProviders`, and nobody on their other side), of the same type as `use` (known on both),
     /// of a part other than `use`'s; nullptr when there is none. A namespace pushed once too often
     /// or not at all leaves such pairs.
