@@ -95,9 +95,11 @@ void ProjectController::maybeSave(const std::function<void()> &proceed)
         proceed();
         return;
     }
+    // Where Save writes, not where the project is kept now: a project kept under the
+    // application data moves into the workspace on its first save.
     const QString name = m_document->isUntitled()
                              ? tr("the new project")
-                             : QStringLiteral("“%1”").arg(native(m_document->decisionsPath()));
+                             : QStringLiteral("“%1”").arg(native(defaultTarget()));
     auto *box =
         new QMessageBox(QMessageBox::Warning, tr("Unsaved changes"),
                         tr("The project of “%1” has changes that are not saved.")

@@ -14,6 +14,7 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QDir>
 #include <QDirIterator>
 #include <QMenu>
 #include <QMessageBox>
@@ -231,6 +232,11 @@ private Q_SLOTS:
         QMessageBox *ask = box(w, QStringLiteral("unsavedChangesBox"));
         QVERIFY(ask);
         QVERIFY(ask->text().contains(QStringLiteral("example_ws")));
+        // It names the file Save writes: the workspace's project file, not the one kept
+        // under the application data until then.
+        QVERIFY2(
+            ask->informativeText().contains(QDir::toNativeSeparators(ProjectFile::defaultPath(ws))),
+            qPrintable(ask->informativeText()));
         QVERIFY(w.isVisible());
         answer(ask, QMessageBox::Cancel);
         QVERIFY(w.isVisible());
