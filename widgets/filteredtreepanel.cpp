@@ -1,10 +1,12 @@
 #include "filteredtreepanel.h"
 #include "nodefilterproxymodel.h"
 
+#include <QElapsedTimer>
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QRegularExpression>
+#include <QTimer>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -15,11 +17,22 @@ namespace rosarch {
 
 FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
-      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this))
+      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this)), m_filterDelay(new QTimer(this))
 {
     m_filter->setClearButtonEnabled(true);
     m_filter->installEventFilter(this);
-    connect(m_filter, &QLineEdit::textChanged, this, &FilteredTreePanel::applyFilter);
+    m_filterDelay->setSingleShot(true);
+    m_filterDelay->setInterval(kTypingPauseMs);
+    connect(m_filterDelay, &QTimer::timeout, this, [this] { applyFilter(m_filter->text()); });
+    connect(m_filter, &QLineEdit::textChanged, this, [this](const QString &text) {
+        // Clearing is at once (a row is selected right after), and so is a cheap filter.
+        if (text.trimmed().isEmpty() || m_lastFilterMs < kSlowFilterMs) {
+            m_filterDelay->stop();
+            applyFilter(text);
+        } else {
+            m_filterDelay->start();
+        }
+    });
 
     m_tree->setModel(m_proxy);
     m_tree->setUniformRowHeights(true);
@@ -69,9 +82,12 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
 
 void FilteredTreePanel::applyFilter(const QString &text)
 {
+    QElapsedTimer timer;
+    timer.start();
     m_proxy->setFilterRegularExpression(QRegularExpression(
         QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
     expandRows();
+    m_lastFilterMs = timer.elapsed();
 }
 
 void FilteredTreePanel::expandRows()
@@ -79,7 +95,52 @@ void FilteredTreePanel::expandRows()
     if (m_filter->text().trimmed().isEmpty())
         expandTop();
     else
-        expandAllRows();
+        expandToMatches();
+}
+
+void FilteredTreePanel::expandToMatches()
+{
+    int shown = m_proxy->rowCount();
+    QList<QModelIndex> matching; // kept rows that match themselves, in breadth-first order
+    QList<QModelIndex> level;
+    for (int row = 0; row < m_proxy->rowCount(); ++row)
+        level << m_proxy->index(row, 0);
+    // First the way to the matches: a row kept for a descendant opens.
+    while (!level.isEmpty()) {
+        QList<QModelIndex> next;
+        for (const QModelIndex &index : std::as_const(level)) {
+            if (!m_proxy->hasChildren(index) || !isExpandable(index))
+                continue;
+            if (m_proxy->matchesItself(index)) {
+                matching << index;
+                continue;
+            }
+            const int rows = m_proxy->rowCount(index);
+            if (shown + rows > 4 * kExpandBudget)
+                continue;
+            m_tree->expand(index);
+            shown += rows;
+            for (int row = 0; row < rows; ++row)
+                next << m_proxy->index(row, 0, index);
+        }
+        level = next;
+    }
+    // Then the matches themselves (a matching node shows its ports), while there is room.
+    while (!matching.isEmpty() && shown < kExpandBudget) {
+        QList<QModelIndex> next;
+        for (const QModelIndex &index : std::as_const(matching)) {
+            const int rows = m_proxy->rowCount(index);
+            if (shown + rows > kExpandBudget)
+                continue;
+            m_tree->expand(index);
+            shown += rows;
+            for (int row = 0; row < rows; ++row)
+                if (const QModelIndex child = m_proxy->index(row, 0, index);
+                    m_proxy->hasChildren(child) && isExpandable(child))
+                    next << child;
+        }
+        matching = next;
+    }
 }
 
 bool FilteredTreePanel::isExpandable(const QModelIndex &) const

@@ -5,6 +5,7 @@
 #include <QWidget>
 
 class QLineEdit;
+class QTimer;
 class QTreeView;
 class QVBoxLayout;
 
@@ -57,6 +58,11 @@ protected:
 
 private:
     void applyFilter(const QString &text);
+    /// With a filter: opens the way to every row that matches (the rows kept only because a
+    /// descendant matches), then the matching rows themselves, breadth first, while fewer
+    /// than kExpandBudget rows show. Expanding every kept row of a large tree (a one-letter
+    /// filter keeps most of navigation2's launch tree) froze the window for seconds.
+    void expandToMatches();
 
     /// The key of a row: the names of the rows from the root down to it.
     QString rowKey(const QModelIndex &proxyIndex) const;
@@ -65,6 +71,12 @@ private:
 
     QList<int> m_keptRows;    ///< the current row's place, kept across a reshaping reset
     QSet<QString> m_expanded; ///< the expanded rows by key, kept across a reset
+    /// Keys typed while filtering is slow wait for a pause in typing, so that each key shows at
+    /// once; on a small tree the filter follows every key.
+    QTimer *m_filterDelay;
+    qint64 m_lastFilterMs = 0; ///< how long the last filtering took
+    static constexpr int kSlowFilterMs = 40;
+    static constexpr int kTypingPauseMs = 250;
 };
 
 } // namespace rosarch

@@ -31,4 +31,10 @@ bool NodeFilterProxyModel::filterAcceptsRow(int sourceRow, const QModelIndex &so
     return false;
 }
 
+bool NodeFilterProxyModel::matchesItself(const QModelIndex &proxyIndex) const
+{
+    const QModelIndex source = mapToSource(proxyIndex);
+    return source.isValid() && filterAcceptsRow(source.row(), source.parent());
+}
+
 } // namespace rosarch

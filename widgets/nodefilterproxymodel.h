@@ -15,6 +15,9 @@ public:
 
     /// The columns whose text is matched (default: the node tree's name and type).
     void setFilterColumns(const QList<int> &columns);
+    /// Whether the row's own text matches the filter (not only a descendant's, or its
+    /// parent's): the rows a filter is looking for.
+    bool matchesItself(const QModelIndex &proxyIndex) const;
 
 protected:
     bool filterAcceptsRow(int sourceRow, const QModelIndex &sourceParent) const override;

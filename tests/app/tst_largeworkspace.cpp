@@ -7,14 +7,17 @@
 #include "diagramscene.h"
 #include "document.h"
 #include "launchtreemodel.h"
+#include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "nodefilterproxymodel.h"
 #include "stagerunner.h"
 #include "syntheticworkspace.h"
 
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QSettings>
 #include <QSignalSpy>
@@ -22,7 +25,10 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QTreeView>
 #include <QtTest>
+
+#include <functional>
 
 using namespace rosarch;
 
@@ -149,6 +155,37 @@ private Q_SLOTS:
                                     QStringLiteral("Stage 3 (composition) took "),
                                     QStringLiteral("Showing the result in the window took ")})
             QVERIFY2(log.contains(line), qPrintable(line));
+
+        // Typing into the launch tree's filter, as a person looking for a node: every key
+        // shows at once, the filter follows a pause in typing (filtering a tree this size is
+        // no longer cheap), and then the way to the matches is open, within a budget of rows
+        // (before: every kept row was expanded, for seconds on navigation2).
+        QLineEdit *filter = w.launchPanel()->filterEdit();
+        QTreeView *launchTree = w.launchPanel()->treeView();
+        filter->setFocus();
+        QTest::keyClicks(filter, QStringLiteral("r"));
+        QTRY_COMPARE(w.launchPanel()->proxyModel()->filterRegularExpression().pattern(),
+                     QStringLiteral("r"));
+        QTest::keyClicks(filter, QStringLiteral("elay_999"));
+        QCOMPARE(filter->text(), QStringLiteral("relay_999"));
+        QTRY_COMPARE(w.launchPanel()->proxyModel()->filterRegularExpression().pattern(),
+                     QStringLiteral("relay_999"));
+        QModelIndex match;
+        std::function<void(const QModelIndex &)> find = [&](const QModelIndex &parent) {
+            for (int r = 0; r < launchTree->model()->rowCount(parent) && !match.isValid(); ++r) {
+                const QModelIndex i = launchTree->model()->index(r, 0, parent);
+                if (i.data().toString() == QLatin1String("relay_999"))
+                    match = i;
+                else
+                    find(i);
+            }
+        };
+        find({});
+        QVERIFY(match.isValid());
+        for (QModelIndex p = match.parent(); p.isValid(); p = p.parent())
+            QVERIFY2(launchTree->isExpanded(p), qPrintable(p.data().toString()));
+        filter->clear();
+        QTRY_VERIFY(w.launchPanel()->proxyModel()->filterRegularExpression().pattern().isEmpty());
 
         // A second run finds nothing new: the views stay.
         QTest::keyClick(&w, Qt::Key_F5);

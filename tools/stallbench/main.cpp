@@ -5,7 +5,7 @@
 // them (event dispatches and StallScopes), the time until the first result is usable and how
 // long a cancel takes until the window says so and until the worker process is gone.
 //
-//   rosarch-stallbench <workspace> [--runs N] [--no-cancel]
+//   rosarch-stallbench <workspace> [--runs N] [--no-cancel] [--type-filter TEXT]
 //   rosarch-stallbench --generate <packages> [--runs N] [--no-cancel]
 //
 // --generate measures a generated workspace of that many packages (the one tst_largeworkspace
@@ -24,8 +24,10 @@
 #include <QAction>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
+#include <QLineEdit>
 #include <QSet>
 #include <QSettings>
 #include <QStandardPaths>
@@ -148,7 +150,12 @@ int main(int argc, char **argv)
         QStringLiteral("generate"),
         QStringLiteral("measure a generated workspace of this many packages instead"),
         QStringLiteral("packages"));
-    parser.addOptions({runsOption, noCancel, top, screenshot, generate});
+    const QCommandLineOption typeFilter(
+        QStringLiteral("type-filter"),
+        QStringLiteral("type this text into the launch tree's filter, a key every 150 ms, as a "
+                       "person looking for a node would"),
+        QStringLiteral("text"));
+    parser.addOptions({runsOption, noCancel, top, screenshot, generate, typeFilter});
     parser.process(app);
     QTemporaryDir generated;
     QString workspaceArg;
@@ -248,6 +255,33 @@ int main(int argc, char **argv)
         spinFor(app, 3000);
         out() << "select launch file " << tree->currentIndex().data().toString() << ":\n";
         reportGaps(app, QStringLiteral("select launch file"), topGaps);
+    }
+    if (parser.isSet(typeFilter)) {
+        QLineEdit *filter = w.launchPanel()->filterEdit();
+        const QString text = parser.value(typeFilter);
+        app.beginPhase(QStringLiteral("type in the launch filter"));
+        QElapsedTimer typing;
+        typing.start();
+        qint64 lastKeyShown = 0;
+        for (int i = 0; i < text.size(); ++i)
+            QTimer::singleShot(150 * i, &app, [&, i] {
+                const StallScope scope("a key typed into the launch tree's filter");
+                filter->insert(text.at(i));
+            });
+        // until every key has shown and the view has settled
+        spinUntil(
+            app, [&] { return filter->text() == text; }, 60000);
+        lastKeyShown = typing.elapsed();
+        spinFor(app, 2000);
+        out() << QStringLiteral("type \"%1\" in the launch filter: the last key shown at %2 ms "
+                                "(typed at %3 ms); %4 rows shown\n")
+                     .arg(text)
+                     .arg(lastKeyShown)
+                     .arg(150 * (text.size() - 1))
+                     .arg(w.launchPanel()->treeView()->model()->rowCount());
+        reportGaps(app, QStringLiteral("type in the launch filter"), topGaps);
+        filter->clear();
+        spinFor(app, 500);
     }
     if (parser.isSet(screenshot))
         w.grab().save(parser.value(screenshot));
