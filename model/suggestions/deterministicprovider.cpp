@@ -91,14 +91,29 @@ bool commentAbove(const QStringList &lines, int above, bool python, QStringList 
         return false;
     static const QRegularExpression markers(
         QStringLiteral("^(#+!?|///?<?|//!|/\\*\\*?!?|\\*+/?)\\s*"));
-    static const QRegularExpression brief(QStringLiteral("^[@\\\\]brief\\s+"));
+    // Doxygen's words for what the text is about, not what it says (`@brief` and `@details`
+    // introduce the text itself): their lines are left out, and the description ends at the
+    // first parameter or return value.
+    static const QRegularExpression lead(QStringLiteral("^[@\\\\](brief|details)\\s+"));
+    static const QRegularExpression structural(QStringLiteral(
+        "^[@\\\\](class|struct|file|namespace|fn|author|date|version|copyright|ingroup|"
+        "defgroup|addtogroup|sa|see|note)\\b"));
+    static const QRegularExpression ends(
+        QStringLiteral("^[@\\\\](param|tparam|return|returns|retval|throws|exception)\\b"));
+    // a banner: a line of nothing but rule characters (`*****`, `=====`, `-----`)
+    static const QRegularExpression banner(QStringLiteral("^[-*=#/~_+\\s]*$"));
     text->clear();
     for (int l = i + 1; l <= end; ++l) {
         QString t = lines[l].trimmed();
         if (t.endsWith(QLatin1String("*/")))
             t.chop(2);
         t.remove(markers);
-        t.remove(brief);
+        t = t.trimmed();
+        if (ends.match(t).hasMatch())
+            break;
+        if (structural.match(t).hasMatch() || (!t.isEmpty() && banner.match(t).hasMatch()))
+            continue;
+        t.remove(lead);
         text->append(t.trimmed());
     }
     *first = i + 1;

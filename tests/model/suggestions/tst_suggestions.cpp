@@ -10,6 +10,7 @@
 #include "suggestionsjson.h"
 #include "testsupport.h"
 
+#include <QTemporaryDir>
 #include <QtConcurrent>
 #include <QtTest>
 
@@ -207,6 +208,42 @@ private Q_SLOTS:
             QVERIFY(SuggestionsJson::read(SuggestionsJson::write(report), &back, &error));
             QVERIFY(back.suggestions.first().quoted);
         }
+    }
+
+    void doxygenTagsAndBannersAreNoDescription()
+    {
+        // Before: navigation2's descriptions began "@class nav2_controller::ControllerServer"
+        // and package banners came as "*****". A class comment in their shape says what the
+        // class does, and nothing of Doxygen's bookkeeping.
+        QTemporaryDir dir;
+        const QString pkg = dir.path() + QStringLiteral("/src/follower");
+        test::writeFile(pkg + "/package.xml",
+                        "<package format=\"3\"><name>follower</name><version>1.0.0</version>"
+                        "<export><build_type>ament_cmake</build_type></export></package>");
+        test::writeFile(pkg + "/CMakeLists.txt",
+                        "cmake_minimum_required(VERSION 3.8)\nproject(follower)\n"
+                        "add_executable(follower_node src/follower.cpp)\n");
+        test::writeFile(pkg + "/src/follower.cpp",
+                        "#include <rclcpp/rclcpp.hpp>\n"
+                        "/*********************************************************\n"
+                        " * @class follower::Follower\n"
+                        " * @brief Follows the path it is given\n"
+                        " * by sending velocity commands.\n"
+                        " * =======================================================\n"
+                        " * @param options the node's options\n"
+                        " *********************************************************/\n"
+                        "class Follower : public rclcpp::Node {\npublic:\n"
+                        "  Follower() : Node(\"follower\") {}\n};\n"
+                        "int main(int argc, char **argv) {\n  rclcpp::init(argc, argv);\n"
+                        "  rclcpp::spin(std::make_shared<Follower>());\n}\n");
+        const Recovery recovery = recoverWorkspace(dir.path());
+        const QList<Suggestion> list = DeterministicProvider(dir.path(), recovery).describeNodes();
+        QCOMPARE(list.size(), 1);
+        QCOMPARE(list.first().value,
+                 QStringLiteral("Follows the path it is given by sending velocity commands."));
+        QString reason, detail;
+        QVERIFY2(SuggestionChecker(dir.path(), recovery).check(list.first(), &reason, &detail),
+                 qPrintable(detail));
     }
 
     void deterministicGroups()
