@@ -72,6 +72,7 @@ void SystemPorts::clear()
     m_families.clear();
     m_order.clear();
     m_byLastSegment.clear();
+    m_byLength.clear();
 }
 
 void SystemPorts::add(const RosNodePart &part)
@@ -82,8 +83,9 @@ void SystemPorts::add(const RosNodePart &part)
         const QString key = keyOf(portFamilyName(port.kind), port.name);
         if (!m_families.contains(key)) {
             m_order.append(key);
-            m_byLastSegment[keyOf(portFamilyName(port.kind), port.name.section(u'/', -1))].append(
-                key);
+            const QString family = portFamilyName(port.kind);
+            m_byLastSegment[keyOf(family, port.name.section(u'/', -1))].append(key);
+            m_byLength[keyOf(family, QString::number(port.name.size()))].append(key);
         }
         PortFamily &f = m_families[key];
         (isProvidingPort(port.kind) ? f.providers : f.users).append({&part, &port});
@@ -98,26 +100,23 @@ const PortUse *SystemPorts::misspelling(const QString &family, const QString &na
     // it stops looking.
     if (name.size() > 256 || m_hintWork > 50'000'000)
         return nullptr;
-    const QString prefix = family + QLatin1Char(' ');
-    for (const QString &key : m_order) {
-        ++m_hintWork;
-        if (!key.startsWith(prefix))
-            continue;
-        const QStringView candidate = QStringView(key).mid(prefix.size());
-        // one letter apart: the lengths differ by at most one, and most names are out at once
-        if (std::abs(candidate.size() - name.size()) > 1 || candidate == name)
-            continue;
-        const auto it = m_families.constFind(key);
-        const QList<PortUse> &side = wantProviders ? it->providers : it->users;
-        const auto other = std::find_if(side.cbegin(), side.cend(),
-                                        [&](const PortUse &u) { return u.part != except; });
-        if (other == side.cend())
-            continue;
-        m_hintWork += candidate.size();
-        if (!oneLetterApart(name, candidate))
-            continue;
-        *found = candidate.toString();
-        return &*other;
+    const qsizetype prefix = family.size() + 1;
+    // one letter apart: the lengths differ by at most one
+    for (const qsizetype length : {name.size() - 1, name.size(), name.size() + 1}) {
+        for (const QString &key : m_byLength.value(keyOf(family, QString::number(length)))) {
+            const QStringView candidate = QStringView(key).mid(prefix);
+            m_hintWork += candidate.size();
+            if (candidate == name)
+                continue;
+            const auto it = m_families.constFind(key);
+            const QList<PortUse> &side = wantProviders ? it->providers : it->users;
+            const auto other = std::find_if(side.cbegin(), side.cend(),
+                                            [&](const PortUse &u) { return u.part != except; });
+            if (other == side.cend() || !oneLetterApart(name, candidate))
+                continue;
+            *found = candidate.toString();
+            return &*other;
+        }
     }
     return nullptr;
 }

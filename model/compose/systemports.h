@@ -64,6 +64,7 @@ private:
     QHash<QString, PortFamily> m_families;
     QStringList m_order;
     QHash<QString, QStringList> m_byLastSegment; ///< "topic scan" -> the keys ending so
+    QHash<QString, QStringList> m_byLength;      ///< "topic 5" -> the keys of names that long
     /// Work done by misspelling() in this run (names looked at and letters compared): past a
     /// budget it stops looking, so that it stays linear however many systems and names there
     /// are.
