@@ -43,6 +43,46 @@ bool renamesTransportTopic(const AtomicNode &cls, const QString &from)
     return false;
 }
 
+/// A package.xml version's numbers (`0.52.0` -> 0, 52, 0); empty when it is none.
+QList<int> versionNumbers(const QString &version)
+{
+    QList<int> numbers;
+    for (const QString &part : version.trimmed().split(QLatin1Char('.'))) {
+        bool ok = false;
+        numbers << part.toInt(&ok);
+        if (!ok)
+            return {};
+    }
+    return numbers;
+}
+
+/// " The launch file's package, a 0.52.0, is newer than the node's, b 0.43.0: …" when the
+/// package holding `launchFile` has a newer version than the node's package: a remap written
+/// for a later version of the node, whose port this one does not have yet. "" otherwise.
+QString versionHint(const AtomicNodeList &nodes, const QString &launchFile,
+                    const QString &nodePackage)
+{
+    const RosPackage *holder = nullptr;
+    const RosPackage *node = nullptr;
+    for (const RosPackage &p : nodes.packages) {
+        if (p.name == nodePackage)
+            node = &p;
+        if (launchFile.startsWith(p.path + QLatin1Char('/')) &&
+            (!holder || p.path.size() > holder->path.size()))
+            holder = &p;
+    }
+    if (!holder || !node || holder == node)
+        return {};
+    const QList<int> launchVersion = versionNumbers(holder->version);
+    const QList<int> nodeVersion = versionNumbers(node->version);
+    if (launchVersion.isEmpty() || nodeVersion.isEmpty() || !(nodeVersion < launchVersion))
+        return {};
+    return QStringLiteral(" The launch file's package, %1 %2, is newer than the node's, %3 %4: "
+                          "the remap may be meant for a later version of the node; align the "
+                          "two.")
+        .arg(holder->name, holder->version, node->name, node->version);
+}
+
 } // namespace
 
 void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &launch,
@@ -53,6 +93,7 @@ void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &lau
     {
         QString text;
         Evidence evidence;
+        QString hint; ///< when the launch file's package is newer than the node's
         bool used = false;
         bool decidable = true;
     };
@@ -76,7 +117,8 @@ void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &lau
             if (at < 0) {
                 at = int(rules.size());
                 index.insert(key, at);
-                rules.append({QStringLiteral("%1:=%2").arg(from, to), n.evidence});
+                rules.append({QStringLiteral("%1:=%2").arg(from, to), n.evidence,
+                              versionHint(nodes, n.evidence.file, n.package)});
             }
             rules[at].used =
                 rules[at].used || used.contains(int(i)) || renamesTransportTopic(*cls, from);
@@ -85,12 +127,13 @@ void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &lau
     }
     for (const Rule &r : std::as_const(rules))
         if (!r.used && r.decidable)
-            out->append({Diagnostic::Severity::Warning,
-                         QStringLiteral("remap-unmatched"),
-                         QStringLiteral("The remap %1 matches no port of the nodes it applies to.")
-                             .arg(r.text),
-                         r.evidence,
-                         {}});
+            out->append(
+                {Diagnostic::Severity::Warning,
+                 QStringLiteral("remap-unmatched"),
+                 QStringLiteral("The remap %1 matches no port of the nodes it applies to.%2")
+                     .arg(r.text, r.hint),
+                 r.evidence,
+                 {}});
 }
 
 } // namespace rosarch

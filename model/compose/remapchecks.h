@@ -12,7 +12,9 @@ namespace rosarch {
 /// any node it applies to, reported once at the first node the rule applies to. A port's
 /// transport topics count (`~/output/image/compressed`). A rule whose target is empty (an
 /// argument nobody sets), or that applies to a node with a port whose name the analysis could
-/// not decide, is no judgement on the ports: it is not reported.
+/// not decide, is no judgement on the ports: it is not reported. When the launch file's package
+/// is newer than the node's (package.xml versions), the finding says so: the remap is likely
+/// written for a later version of the node.
 class RemapChecks
 {
 public:

@@ -5,6 +5,7 @@
 // open port with no evidence of a mistake is the system's interface, not a finding.
 #include "qos.h"
 #include "recovery.h"
+#include "recoverytest.h"
 #include "testsupport.h"
 
 #include <QTemporaryDir>
@@ -334,6 +335,43 @@ private Q_SLOTS:
                                     "/lane_marker subscribes to /lane_marker/input/image, which "
                                     "no node started alongside it publishes.") +
                          missing.arg(QStringLiteral("image"), QStringLiteral("/camera/image"))}));
+    }
+
+    void aRemapForALaterVersionOfTheNodeSaysSo()
+    {
+        // A bringup package of version 2.0.0 remaps an input that version 1.0.0 of the node's
+        // package does not have yet (two repositories of different releases side by side): the
+        // finding says which versions; the same package's own launch file gets no such hint.
+        QTemporaryDir dir;
+        test::healthyPythonPackage(dir.path());
+        test::writeFile(dir.path() + "/src/pkg/package.xml",
+                        "<package format=\"3\"><name>pkg</name><version>1.0.0</version><export>"
+                        "<build_type>ament_python</build_type></export></package>\n");
+        test::writeFile(dir.path() + "/src/pkg/launch/good.launch.xml",
+                        "<launch>\n  <node pkg=\"pkg\" exec=\"good\" name=\"good\">\n"
+                        "    <remap from=\"in\" to=\"/x\"/>\n  </node>\n</launch>\n");
+        test::writeFile(dir.path() + "/src/bringup/package.xml",
+                        "<package format=\"3\"><name>bringup</name><version>2.0.0</version>"
+                        "<export><build_type>ament_cmake</build_type></export></package>\n");
+        test::writeFile(dir.path() + "/src/bringup/launch/robot.launch.xml",
+                        "<launch>\n  <node pkg=\"pkg\" exec=\"good\" name=\"good\">\n"
+                        "    <remap from=\"status\" to=\"/robot/status\"/>\n  </node>\n"
+                        "</launch>\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QStringList found;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            if (d.code == QLatin1String("remap-unmatched"))
+                found << d.evidence.file + QStringLiteral(" | ") + d.message;
+        found.sort();
+        QCOMPARE(
+            found,
+            (QStringList{QStringLiteral("src/bringup/launch/robot.launch.xml | The remap "
+                                        "status:=/robot/status matches no port of the nodes it "
+                                        "applies to. The launch file's package, bringup 2.0.0, is "
+                                        "newer than the node's, pkg 1.0.0: the remap may be meant "
+                                        "for a later version of the node; align the two."),
+                         QStringLiteral("src/pkg/launch/good.launch.xml | The remap in:=/x matches "
+                                        "no port of the nodes it applies to.")}));
     }
 
     void rvizConfigurationsAreReadWithinBounds()
