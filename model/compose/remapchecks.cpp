@@ -56,9 +56,10 @@ QList<int> versionNumbers(const QString &version)
     return numbers;
 }
 
-/// " The launch file's package, a 0.52.0, is newer than the node's, b 0.43.0: …" when the
-/// package holding `launchFile` has a newer version than the node's package: a remap written
-/// for a later version of the node, whose port this one does not have yet. "" otherwise.
+/// " The launch file's package, a 0.52.0, is of a newer release than the node's, b 0.43.0: …"
+/// when the package holding `launchFile` has a newer version than the node's package: the
+/// remap may be written for another version of the node (one that has the port, or had it).
+/// "" otherwise.
 QString versionHint(const AtomicNodeList &nodes, const QString &launchFile,
                     const QString &nodePackage)
 {
@@ -77,9 +78,9 @@ QString versionHint(const AtomicNodeList &nodes, const QString &launchFile,
     const QList<int> nodeVersion = versionNumbers(node->version);
     if (launchVersion.isEmpty() || nodeVersion.isEmpty() || !(nodeVersion < launchVersion))
         return {};
-    return QStringLiteral(" The launch file's package, %1 %2, is newer than the node's, %3 %4: "
-                          "the remap may be meant for a later version of the node; align the "
-                          "two.")
+    return QStringLiteral(" The launch file's package, %1 %2, is of a newer release than the "
+                          "node's, %3 %4: the remap may be written for another version of the "
+                          "node.")
         .arg(holder->name, holder->version, node->name, node->version);
 }
 

@@ -13,8 +13,8 @@ namespace rosarch {
 /// transport topics count (`~/output/image/compressed`). A rule whose target is empty (an
 /// argument nobody sets), or that applies to a node with a port whose name the analysis could
 /// not decide, is no judgement on the ports: it is not reported. When the launch file's package
-/// is newer than the node's (package.xml versions), the finding says so: the remap is likely
-/// written for a later version of the node.
+/// is newer than the node's (package.xml versions), the finding says so: the remap may be
+/// written for another version of the node.
 class RemapChecks
 {
 public:

@@ -368,8 +368,8 @@ private Q_SLOTS:
             (QStringList{QStringLiteral("src/bringup/launch/robot.launch.xml | The remap "
                                         "status:=/robot/status matches no port of the nodes it "
                                         "applies to. The launch file's package, bringup 2.0.0, is "
-                                        "newer than the node's, pkg 1.0.0: the remap may be meant "
-                                        "for a later version of the node; align the two."),
+                                        "of a newer release than the node's, pkg 1.0.0: the remap "
+                                        "may be written for another version of the node."),
                          QStringLiteral("src/pkg/launch/good.launch.xml | The remap in:=/x matches "
                                         "no port of the nodes it applies to.")}));
     }
