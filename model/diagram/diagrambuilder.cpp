@@ -1,4 +1,5 @@
 #include "diagrambuilder.h"
+#include "visibletext.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -44,7 +45,7 @@ double even(double v)
 
 QString portLabel(const PartPort &port)
 {
-    const QString name = port.nameAsWritten.isEmpty() ? port.name : port.nameAsWritten;
+    const QString name = visibleText(port.nameAsWritten.isEmpty() ? port.name : port.nameAsWritten);
     return port.resolved ? name : QStringLiteral("?") + name;
 }
 
@@ -94,13 +95,13 @@ LayoutNode partNode(const RosNodePart &part, const Visibility &visible, bool com
     LayoutNode n;
     n.id = n.key = DiagramBuilder::partKey(part.id);
     if (part.kind == RosNodePart::Kind::Launch) {
-        n.label = part.typeName;
+        n.label = visibleText(part.typeName); // names come from files: no control characters
         n.detail = part.external ? tr("external launch file") : tr("launch file");
         if (!part.external)
             n.flags |= LayoutOpenable;
     } else {
-        n.label = part.name.isEmpty() ? part.typeName : part.name;
-        n.detail = part.typed ? part.typeName : QStringLiteral("?") + part.typeName;
+        n.label = visibleText(part.name.isEmpty() ? part.typeName : part.name);
+        n.detail = visibleText(part.typed ? part.typeName : QStringLiteral("?") + part.typeName);
         if (!part.typed)
             n.flags |= LayoutUnresolved;
     }
@@ -148,10 +149,10 @@ LayoutNode labelledNode(const QString &key, const QString &label, const QString 
 {
     LayoutNode n;
     n.id = n.key = key;
-    n.label = label;
-    n.detail = detail;
+    n.label = visibleText(label);
+    n.detail = visibleText(detail);
     n.shape = shape;
-    const double text = std::max(m.textWidth(label), m.smallWidth(detail)) + 2 * kPadding;
+    const double text = std::max(m.textWidth(n.label), m.smallWidth(n.detail)) + 2 * kPadding;
     const double height = m.textHeight + m.smallHeight + 12;
     switch (shape) {
     case LayoutNode::Shape::Ellipse:
@@ -201,7 +202,7 @@ void addClusters(LayoutGraph &g, const QString &nameSpace, const DiagramMetrics 
         if (!g.cluster(key)) {
             LayoutCluster c;
             c.id = c.key = key;
-            c.label = ns;
+            c.label = visibleText(ns);
             c.parent = parent;
             c.labelWidth = std::ceil(m.textWidth(ns) + 12);
             c.labelHeight = std::ceil(m.textHeight + 6);
@@ -223,7 +224,7 @@ QString subsystemCluster(LayoutGraph &g, const RosNodePart &part, const QString 
     LayoutCluster c;
     c.key = key;
     c.id = g.cluster(key) ? key + QLatin1Char('@') + part.nameSpace : key;
-    c.label = part.subsystem;
+    c.label = visibleText(part.subsystem);
     c.parent = parent;
     c.labelWidth = std::ceil(m.textWidth(part.subsystem) + 12);
     c.labelHeight = std::ceil(m.textHeight + 6);
@@ -451,7 +452,8 @@ LayoutGraph DiagramBuilder::build(const Composite &c, const DiagramOptions &opti
                                        ? tr("%1, 1 channel, collapsed").arg(parts)
                                        : tr("%1, %2 channels, collapsed").arg(parts).arg(inner);
             LayoutNode n = labelledNode(namespaceKey(ns), ns, detail, LayoutNode::Shape::Folder, m);
-            n.width = even(std::max(m.titleWidth(ns), m.smallWidth(n.detail)) + 2 * kPadding + 8);
+            n.width =
+                even(std::max(m.titleWidth(n.label), m.smallWidth(n.detail)) + 2 * kPadding + 8);
             n.height = even(m.titleHeight + m.smallHeight + 24); // + the folder tab
             const QStringList chain = namespaceChain(ns);
             if (chain.size() > 1) {

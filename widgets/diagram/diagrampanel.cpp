@@ -8,6 +8,7 @@
 #include "diagramtext.h"
 #include "diagramview.h"
 #include "stallprobe.h"
+#include "visibletext.h"
 
 #include <QAction>
 #include <QEvent>
@@ -273,7 +274,7 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
     }
     m_lastLayoutMs = result.elapsedMs;
     showMessage({});
-    m_scene->setDiagram(graph, result.geometry, c->stem, DiagramText::frameDetail(*c));
+    m_scene->setDiagram(graph, result.geometry, visibleText(c->stem), DiagramText::frameDetail(*c));
     m_scene->setToolTips(DiagramText::toolTips(*c));
     m_scene->setMarks(m_marks);
     updateSearch(false);

@@ -1,5 +1,6 @@
 #include "diagramtext.h"
 #include "diagrambuilder.h"
+#include "visibletext.h"
 
 namespace rosarch {
 
@@ -167,7 +168,7 @@ QString DiagramText::missingBanner(const QStringList &missing)
 QString DiagramText::frameDetail(const Composite &c)
 {
     return c.file.isEmpty() ? tr("launch file (outside the workspace)")
-                            : tr("launch file %1").arg(c.file);
+                            : tr("launch file %1").arg(visibleText(c.file));
 }
 
 } // namespace rosarch

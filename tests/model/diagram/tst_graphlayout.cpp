@@ -314,6 +314,19 @@ void TestGraphLayout::builderKeysEveryElement()
     const LayoutGraph marked = DiagramBuilder::build(guessed);
     QVERIFY(marked.node(QStringLiteral("boundary:s1"))->flags & LayoutUnresolved);
     QVERIFY(!(marked.node(QStringLiteral("boundary:p1"))->flags & LayoutUnresolved));
+    // Names come from files: a newline or an escape in one is drawn as an escape, on one line.
+    Composite hostile = arch.composites[0];
+    hostile.parts[0].name = QStringLiteral("new\nline");
+    hostile.parts[0].ports[0].nameAsWritten = QStringLiteral("red\x1b[31m");
+    hostile.boundary[0].name = QStringLiteral("/a\tb\x07");
+    const LayoutGraph escaped = DiagramBuilder::build(hostile);
+    const LayoutNode *part = escaped.node(QStringLiteral("part:") + hostile.parts[0].id);
+    QVERIFY(part);
+    QCOMPARE(part->label, QStringLiteral("new\\x0aline"));
+    QVERIFY2(part->ports[0].label.endsWith(QStringLiteral("red\\x1b[31m")),
+             qPrintable(part->ports[0].label));
+    QCOMPARE(escaped.node(QStringLiteral("boundary:") + hostile.boundary[0].id)->label,
+             QStringLiteral("/a\\x09b\\x07"));
 
     const DiagramKey port = DiagramKey::parse(QStringLiteral("port:part1/s1"));
     QCOMPARE(port.kind, DiagramKey::Kind::Port);
