@@ -299,7 +299,9 @@ void DiagramPanel::updateBreadcrumbs()
     for (const Composite *c = composite(); c && !seen.contains(c->instanceId);
          c = m_architecture.composite(c->parentId)) {
         seen << c->instanceId;
-        path.prepend({c->instanceId, c->stem, c->file.isEmpty() ? c->stem : c->file});
+        // names of files: shown with their control characters escaped, on one line
+        path.prepend({c->instanceId, visibleText(c->stem),
+                      visibleText(c->file.isEmpty() ? c->stem : c->file)});
     }
     // Whose view: an included file is shown as that include resolves it (blueprint §1); its
     // exported CCD is the file on its own.

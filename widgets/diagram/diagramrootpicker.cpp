@@ -1,4 +1,5 @@
 #include "diagramrootpicker.h"
+#include "visibletext.h"
 
 #include <QAbstractItemView>
 #include <QCompleter>
@@ -42,8 +43,9 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
 
 QString DiagramRootPicker::entryText(const LaunchRoot &root)
 {
-    return root.includes == 1 ? tr("%1 — 1 include").arg(root.stem)
-                              : tr("%1 — %2 includes").arg(root.stem).arg(root.includes);
+    const QString stem = visibleText(root.stem); // from a file name: no control characters
+    return root.includes == 1 ? tr("%1 — 1 include").arg(stem)
+                              : tr("%1 — %2 includes").arg(stem).arg(root.includes);
 }
 
 void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
@@ -65,13 +67,14 @@ void DiagramRootPicker::setRoots(const QList<LaunchRoot> &roots)
     for (const LaunchRoot *root : std::as_const(byName)) {
         const LaunchRoot &r = *root;
         addItem(entryText(r), r.instanceId);
-        setItemData(count() - 1,
-                    tr("%1\n%2 launch files included, %3 nodes started, %4 unresolved")
-                        .arg(QDir::toNativeSeparators(r.file.isEmpty() ? r.stem : r.file))
-                        .arg(r.includes)
-                        .arg(r.nodes)
-                        .arg(r.unresolved),
-                    Qt::ToolTipRole);
+        setItemData(
+            count() - 1,
+            tr("%1\n%2 launch files included, %3 nodes started, %4 unresolved")
+                .arg(visibleText(QDir::toNativeSeparators(r.file.isEmpty() ? r.stem : r.file)))
+                .arg(r.includes)
+                .arg(r.nodes)
+                .arg(r.unresolved),
+            Qt::ToolTipRole);
     }
     setEnabled(!roots.isEmpty());
     m_widthFitted = false; // measuring hundreds of entries is left for when a list opens

@@ -1,5 +1,6 @@
 #include "diagramrootprompt.h"
 #include "diagramrootpicker.h"
+#include "visibletext.h"
 
 #include <QDir>
 #include <QLabel>
@@ -34,9 +35,10 @@ void DiagramRootPrompt::setRoots(const QList<LaunchRoot> &roots)
 {
     m_list->clear();
     for (const LaunchRoot &r : roots) {
-        auto *item = new QListWidgetItem(
-            tr("%1    %2").arg(DiagramRootPicker::entryText(r), QDir::toNativeSeparators(r.file)),
-            m_list);
+        auto *item = new QListWidgetItem(tr("%1    %2")
+                                             .arg(DiagramRootPicker::entryText(r),
+                                                  visibleText(QDir::toNativeSeparators(r.file))),
+                                         m_list);
         item->setData(Qt::UserRole, r.instanceId);
     }
 }
