@@ -100,6 +100,17 @@ void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &lau
     };
     QList<Rule> rules;
     QHash<QString, int> index;
+    // "package\nfrom" of the rules a launch file of the node's own package gives it: such a rule
+    // is in the node's own release too, so a newer launch package is no explanation for it.
+    QHash<QString, QString> packagePaths; // name -> folder
+    for (const RosPackage &p : nodes.packages)
+        packagePaths.insert(p.name, p.path + QLatin1Char('/'));
+    QSet<QString> ownPackageRules;
+    for (const NodeInstance &n : launch.nodes)
+        if (const QString path = packagePaths.value(n.package);
+            !path.isEmpty() && n.evidence.file.startsWith(path))
+            for (const auto &[from, to] : n.remaps)
+                ownPackageRules.insert(n.package + QLatin1Char('\n') + from);
     for (const NodeInstance &n : launch.nodes) {
         const AtomicNode *cls = nodes.node(n.classId);
         if (!cls || !n.active || !systems.contains(n.launchFileId))
@@ -119,7 +130,9 @@ void RemapChecks::run(const AtomicNodeList &nodes, const LaunchDependencies &lau
                 at = int(rules.size());
                 index.insert(key, at);
                 rules.append({QStringLiteral("%1:=%2").arg(from, to), n.evidence,
-                              versionHint(nodes, n.evidence.file, n.package)});
+                              ownPackageRules.contains(n.package + QLatin1Char('\n') + from)
+                                  ? QString()
+                                  : versionHint(nodes, n.evidence.file, n.package)});
             }
             rules[at].used =
                 rules[at].used || used.contains(int(i)) || renamesTransportTopic(*cls, from);

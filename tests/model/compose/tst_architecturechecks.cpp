@@ -341,7 +341,8 @@ private Q_SLOTS:
     {
         // A bringup package of version 2.0.0 remaps an input that version 1.0.0 of the node's
         // package does not have yet (two repositories of different releases side by side): the
-        // finding says which versions; the same package's own launch file gets no such hint.
+        // finding says which versions; the same package's own launch file gets no such hint,
+        // nor does a rule the node's own package gives too (a leftover in both releases).
         QTemporaryDir dir;
         test::healthyPythonPackage(dir.path());
         test::writeFile(dir.path() + "/src/pkg/package.xml",
@@ -355,8 +356,8 @@ private Q_SLOTS:
                         "<export><build_type>ament_cmake</build_type></export></package>\n");
         test::writeFile(dir.path() + "/src/bringup/launch/robot.launch.xml",
                         "<launch>\n  <node pkg=\"pkg\" exec=\"good\" name=\"good\">\n"
-                        "    <remap from=\"status\" to=\"/robot/status\"/>\n  </node>\n"
-                        "</launch>\n");
+                        "    <remap from=\"status\" to=\"/robot/status\"/>\n"
+                        "    <remap from=\"in\" to=\"/robot/x\"/>\n  </node>\n</launch>\n");
         const Recovery r = recoverWorkspace(dir.path());
         QStringList found;
         for (const Diagnostic &d : r.architecture.diagnostics)
@@ -366,6 +367,9 @@ private Q_SLOTS:
         QCOMPARE(
             found,
             (QStringList{QStringLiteral("src/bringup/launch/robot.launch.xml | The remap "
+                                        "in:=/robot/x matches no port of the nodes it applies "
+                                        "to."),
+                         QStringLiteral("src/bringup/launch/robot.launch.xml | The remap "
                                         "status:=/robot/status matches no port of the nodes it "
                                         "applies to. The launch file's package, bringup 2.0.0, is "
                                         "of a newer release than the node's, pkg 1.0.0: the remap "
