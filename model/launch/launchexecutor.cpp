@@ -1,4 +1,5 @@
 #include "launchexecutor.h"
+#include "includereach.h"
 #include "rosnames.h"
 #include "substitutionevaluator.h"
 
@@ -521,19 +522,8 @@ void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &
     const bool active = scope.active && conditionHolds(a, scope, frame, &found, &undecided);
     const IncludeTarget target = resolveInclude(path, frame.file);
     if (frame.collectOnly) {
-        if (!target.file.isEmpty() && active)
-            frame.includes->append(target.file);
-        else if (!target.file.isEmpty() && frame.conditionalIncludes)
-            frame.conditionalIncludes->append(target.file);
-        // `$(find-pkg-share $(var pkg))/launch/x.launch.xml`: another value of the argument
-        // includes the same file of another package (a sensor kit, a vehicle); so does a
-        // package path the file keeps in a variable made from an argument nobody sets
-        // (`<let name="pkg" value="$(find-pkg-share $(var vehicle_model)_launch)"/>`).
-        if (frame.conditionalIncludes && !target.shareRelative.isEmpty() &&
-            (a.path.findsPackageByConfiguration() || pathUndecided))
-            for (const QString &f : std::as_const(m_out->launchFiles))
-                if (f.endsWith(QLatin1Char('/') + target.shareRelative) && f != target.file)
-                    frame.conditionalIncludes->append(f);
+        IncludeReach::note(a, target, active, pathUndecided, m_out->launchFiles, frame.includes,
+                           frame.conditionalIncludes);
         return;
     }
     LaunchFileInstance inst;
