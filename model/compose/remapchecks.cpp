@@ -1,6 +1,7 @@
 #include "remapchecks.h"
 #include "checkscope.h"
 #include "composer.h"
+#include "packageversion.h"
 #include "rosnames.h"
 
 #include <QHash>
@@ -43,19 +44,6 @@ bool renamesTransportTopic(const AtomicNode &cls, const QString &from)
     return false;
 }
 
-/// A package.xml version's numbers (`0.52.0` -> 0, 52, 0); empty when it is none.
-QList<int> versionNumbers(const QString &version)
-{
-    QList<int> numbers;
-    for (const QString &part : version.trimmed().split(QLatin1Char('.'))) {
-        bool ok = false;
-        numbers << part.toInt(&ok);
-        if (!ok)
-            return {};
-    }
-    return numbers;
-}
-
 /// " The launch file's package, a 0.52.0, is of a newer release than the node's, b 0.43.0: …"
 /// when the package holding `launchFile` has a newer version than the node's package: the
 /// remap may be written for another version of the node (one that has the port, or had it).
@@ -74,9 +62,8 @@ QString versionHint(const AtomicNodeList &nodes, const QString &launchFile,
     }
     if (!holder || !node || holder == node)
         return {};
-    const QList<int> launchVersion = versionNumbers(holder->version);
-    const QList<int> nodeVersion = versionNumbers(node->version);
-    if (launchVersion.isEmpty() || nodeVersion.isEmpty() || !(nodeVersion < launchVersion))
+    if (holder->version.isEmpty() || node->version.isEmpty() ||
+        compareVersions(holder->version, node->version) <= 0)
         return {};
     return QStringLiteral(" The launch file's package, %1 %2, is of a newer release than the "
                           "node's, %3 %4: the remap may be written for another version of the "

@@ -1,6 +1,7 @@
 #include "workspacescanner.h"
 #include "buildfileparser.h"
 #include "cmakelistsreader.h"
+#include "packageversion.h"
 #include "sourcereader.h"
 
 #include "analysiscache.h"
@@ -356,20 +357,6 @@ Looked look(const Workspace &ws, const QString &rel, FileDigests &digests)
     Looked l{rel, digests.digest(abs), false};
     l.exists = !l.digest.isEmpty() || QFileInfo::exists(abs);
     return l;
-}
-
-/// -1, 0 or 1 as version `a` is older than, the same as or newer than `b`, comparing the
-/// dot-separated numbers (a missing or non-numeric part counts as 0).
-int compareVersions(const QString &a, const QString &b)
-{
-    const QStringList x = a.split(QLatin1Char('.')), y = b.split(QLatin1Char('.'));
-    for (qsizetype i = 0; i < std::max(x.size(), y.size()); ++i) {
-        const qlonglong u = i < x.size() ? x.at(i).toLongLong() : 0;
-        const qlonglong v = i < y.size() ? y.at(i).toLongLong() : 0;
-        if (u != v)
-            return u < v ? -1 : 1;
-    }
-    return 0;
 }
 
 /// Two folders that declare one package name: colcon refuses to build such a workspace, and
