@@ -135,6 +135,16 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
             set(s);
         }
     }
+    // `"~/" + declare_parameter("name", "report")`: the parameter's default is its own part of
+    // the port's name, not the joined name.
+    auto parameterPart = [](const Port &port) {
+        const qsizetype inner =
+            port.name.size() - port.parameterPrefix.size() - port.parameterSuffix.size();
+        if (inner < 0 || !port.name.startsWith(port.parameterPrefix) ||
+            !port.name.endsWith(port.parameterSuffix))
+            return port.name;
+        return port.name.mid(port.parameterPrefix.size(), inner);
+    };
     if (cls) {
         auto byDefault = [&](const QString &name, const QString &value, const Evidence &e) {
             if (!name.isEmpty() && !at.contains(name))
@@ -142,7 +152,7 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
         };
         for (const Port &port : cls->ports) {
             if (port.nameOrigin == NameOrigin::Parameter)
-                byDefault(port.parameter, port.name, port.evidence);
+                byDefault(port.parameter, parameterPart(port), port.evidence);
             byDefault(port.guardParameter, port.guardDefault, port.evidence);
         }
     }

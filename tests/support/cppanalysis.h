@@ -51,6 +51,16 @@ inline QStringList describePorts(const AtomicNode &n)
     return out;
 }
 
+// "name origin [parameter]" of each port of `n`, in order.
+inline QStringList resolvedPortNames(const AtomicNode &n)
+{
+    QStringList out;
+    for (const Port &p : n.ports)
+        out << p.name + QLatin1Char(' ') + nameOriginName(p.nameOrigin) +
+                   (p.parameter.isEmpty() ? QString() : QLatin1Char(' ') + p.parameter);
+    return out;
+}
+
 // The analysis of a workspace holding one C++ file of package `pkg`.
 inline LanguageAnalysis analyzeFile(const QTemporaryDir &dir, const QString &name,
                                     const QByteArray &content)

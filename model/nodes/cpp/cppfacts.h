@@ -34,7 +34,10 @@ struct CppValue
         Concatenation,     ///< `prefix + "/" + name`: the `parts`, joined
         Field,             ///< `params_->topic`, `p.topic`: `field` of the object `variable`
         Constant,          ///< `ns::kTopic`, `Foo::kTopic`: a constant `variable` (qualified)
-        Expression,        ///< anything else
+        /// A local handed uninitialised to `variable(...)` as its argument `index`: what that
+        /// function assigns to its reference parameter (`getParameters(topic)`)
+        OutArgument,
+        Expression, ///< anything else
     };
     Kind kind = Kind::None;
     QString text;    ///< the expression as written
@@ -162,6 +165,9 @@ struct CppFunction
     QList<CppParameterDeclaration> parameterDeclarations;
     QList<CppMemberBinding> memberBindings;
     QList<CppFieldBinding> fieldBindings;
+    /// Values assigned to the function's own reference parameters (`std::string & topic`), by
+    /// parameter name: what a caller's local holds after the call.
+    QList<CppMemberBinding> outBindings;
     QList<CppInstantiation> instantiations;
     QList<CppFreeCall> freeCalls;
     QList<CppMethodCall> methodCalls;

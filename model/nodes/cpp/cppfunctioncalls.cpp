@@ -24,6 +24,7 @@ void CppFunctionExtractor::onCall(TSNode call)
     const bool makeShared =
         shape.name == QLatin1String("make_shared") || shape.name == QLatin1String("make_unique");
     if (!makeShared) {
+        markOutArguments(shape, args);
         addFreeCall(call, shape, args);
         addMethodCall(call, shape, args);
         return;
@@ -166,6 +167,26 @@ void CppFunctionExtractor::addMethodCall(TSNode call, const CallShape &shape,
     m_portCalls.guardOf(call, &c.guard, &c.guardValue);
     c.evidence = m_tree.evidence(call);
     m_function.methodCalls.append(c);
+}
+
+// `std::string topic; getParameters(topic);`: a local declared without a value and handed to a
+// function of this object (or a free one) may be filled through a reference parameter. The
+// local then holds what that function assigns there, which the linker looks up.
+void CppFunctionExtractor::markOutArguments(const CallShape &shape, const std::vector<TSNode> &args)
+{
+    if (!ts::isNull(shape.receiver) && !ts::is(shape.receiver, "this"))
+        return;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const TSNode a = unwrap(m_tree, args[i]);
+        if (!ts::is(a, "identifier"))
+            continue;
+        const auto it = m_locals.find(m_tree.text(a));
+        if (it == m_locals.end() || !ts::isNull(it->value) || !it->parameter.isEmpty() ||
+            !it->outCall.isEmpty())
+            continue;
+        it->outCall = shape.name;
+        it->outIndex = int(i);
+    }
 }
 
 void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,

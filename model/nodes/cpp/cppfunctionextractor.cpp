@@ -356,8 +356,13 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
             it->setValue(value, plain ? inLoopHead(value, {assignment}) : inLoopHead(value, {}));
             return;
         }
-        if (m_function.parameterNames.contains(name))
+        if (const qsizetype at = m_function.parameterNames.indexOf(name); at >= 0) {
+            // `std::string & topic` filled for the caller (`topic = declare_parameter(...)`)
+            const QString type = m_function.parameterTypes.value(at);
+            if (plain && type.contains(u'&') && !type.contains(QLatin1String("const")))
+                m_function.outBindings.append({name, m_values.evaluate(value)});
             return;
+        }
         if (m_member)
             m_function.memberBindings.append({name, m_values.evaluate(value)});
     } else if (ts::is(left, "field_expression") &&

@@ -58,6 +58,7 @@ private:
                        const std::vector<TSNode> &args);
     void addFreeCall(TSNode where, const cppsyntax::CallShape &shape,
                      const std::vector<TSNode> &args);
+    void markOutArguments(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args);
     QString assignedVariable(TSNode expression) const;
 
     const SyntaxTree &m_tree;

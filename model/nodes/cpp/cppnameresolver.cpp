@@ -79,9 +79,50 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         return resolveField(value, ctx, depth + 1);
     case CppValue::Kind::Constant:
         return resolveConstant(value, ctx, depth + 1);
+    case CppValue::Kind::OutArgument:
+        if (depth < kMaxLinkDepth) {
+            const CppBinding filled = outBinding(value.variable, value.index, ctx);
+            if (filled.fn) {
+                CppResolvedName out = resolve(filled.value,
+                                              CppLinkContext{m_index.ownerOf(filled.fn), filled.fn,
+                                                             filled.file, ctx.subst, ctx.self},
+                                              depth + 1);
+                if (out.origin != NameOrigin::Expression)
+                    out.expression = value.text; // the local, as the call reads it
+                return out;
+            }
+        }
+        return r;
     default:
         return r;
     }
+}
+
+// What `function` (of the object of `ctx`, else a free function of its file) last assigns to
+// its reference parameter `index`; fn null when it assigns nothing there.
+CppBinding CppNameResolver::outBinding(const QString &function, int index,
+                                       const CppLinkContext &ctx) const
+{
+    const auto filled = [&](const CppFunction *fn, const CppFileFacts *file) -> CppBinding {
+        const QString parameter = fn->parameterNames.value(index);
+        for (auto it = fn->outBindings.crbegin(); it != fn->outBindings.crend(); ++it)
+            if (!parameter.isEmpty() && it->member == parameter)
+                return {it->value, fn, file};
+        return {};
+    };
+    const int from = ctx.self >= 0 ? ctx.self : ctx.cls;
+    if (from >= 0)
+        for (int c : m_index.lineage(from))
+            for (const auto &ref : m_index.at(c).functions)
+                if (ref.function->name == function)
+                    if (CppBinding b = filled(ref.function, ref.file); b.fn)
+                        return b;
+    if (ctx.file)
+        for (const CppFunction &fn : ctx.file->functions)
+            if (fn.name == function && fn.ownerClass < 0 && fn.ownerScope.isEmpty())
+                if (CppBinding b = filled(&fn, ctx.file); b.fn)
+                    return b;
+    return {};
 }
 
 // Each part resolved and joined; the whole stays the expression when a part cannot be. A part

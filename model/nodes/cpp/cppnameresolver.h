@@ -59,6 +59,7 @@ private:
     CppResolvedName resolveConstant(const CppValue &value, const CppLinkContext &ctx,
                                     int depth) const;
     QString packageOf(const CppLinkContext &ctx) const;
+    CppBinding outBinding(const QString &function, int index, const CppLinkContext &ctx) const;
 
     const CppClassIndex &m_index;
     const std::vector<CppMemberFacts> &m_facts;

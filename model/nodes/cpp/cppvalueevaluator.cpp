@@ -292,6 +292,12 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             v.parameter = it->parameter;
             return v;
         }
+        if (ts::isNull(it->value) && !it->outCall.isEmpty()) {
+            v.kind = CppValue::Kind::OutArgument;
+            v.variable = it->outCall;
+            v.index = it->outIndex;
+            return v;
+        }
         if (!ts::isNull(it->value) && depth < 6 && !it->loopInitial) {
             const CppValue inner = evaluate(it->value, depth + 1);
             switch (inner.kind) {

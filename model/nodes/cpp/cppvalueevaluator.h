@@ -21,6 +21,10 @@ struct CppLocal
     /// `value` is a for loop's initial value, no value of the variable in the body. Kept with
     /// the value: finding it walks up the tree, and a local is read far more often than set.
     bool loopInitial = false;
+    /// Declared without a value and then handed to `outCall(...)` as argument `outIndex`: the
+    /// function may fill it through a reference parameter.
+    QString outCall;
+    int outIndex = -1;
 
     void setValue(TSNode v);
     /// With `loopInitial` known (CppFunctionExtractor finds it from the path it walked).

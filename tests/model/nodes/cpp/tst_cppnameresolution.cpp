@@ -50,9 +50,7 @@ QStringList resolvedNames(const LanguageAnalysis &a)
 {
     QStringList out;
     for (const AtomicNode &n : a.nodes)
-        for (const Port &p : n.ports)
-            out << p.name + QStringLiteral(" ") + nameOriginName(p.nameOrigin) +
-                       (p.parameter.isEmpty() ? QString() : QStringLiteral(" ") + p.parameter);
+        out += resolvedPortNames(n);
     return out;
 }
 

@@ -331,6 +331,43 @@ private Q_SLOTS:
         QCOMPARE(a.entryPoints[0].evidence.line, 14);
     }
 
+    // A local declared without a value and handed to a method (or a free function) that
+    // assigns its reference parameter holds what the callee assigns; one handed to a function
+    // taking a const reference, or assigned nothing, stays an expression.
+    void namesThroughReferenceParameters()
+    {
+        const LanguageAnalysis fixture = analyzeCase(QStringLiteral("cpp_out_parameters"));
+        const AtomicNode *guard = findNode(fixture, QStringLiteral("SpeedGuard"));
+        QVERIFY(guard);
+        QCOMPARE(resolvedPortNames(*guard),
+                 (QStringList{QStringLiteral("cmd_vel_smoothed parameter input_topic"),
+                              QStringLiteral("cmd_vel parameter output_topic"),
+                              QStringLiteral("~/report parameter report_name"),
+                              QStringLiteral("label expression")}));
+        QCOMPARE(guard->ports[0].nameExpression, QStringLiteral("input_topic"));
+        QCOMPARE(guard->ports[0].via, QStringLiteral("VelocityInput"));
+
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const LanguageAnalysis a = analyzeFile(
+            dir, QStringLiteral("free.cpp"),
+            "void load(rclcpp::Node & node, std::string & topic, std::string & unused) {\n"
+            "  topic = node.declare_parameter(\"scan_topic\", std::string(\"scan\"));\n"
+            "}\n"
+            "class F : public rclcpp::Node {\npublic:\n  F() : Node(\"f\") {\n"
+            "    std::string topic;\n    std::string other;\n"
+            "    load(*this, topic, other);\n"
+            "    a_ = create_publisher<std_msgs::msg::String>(topic, 1);\n"
+            "    b_ = create_publisher<std_msgs::msg::String>(other, 1);\n"
+            "    std::string given = \"given\";\n    load(*this, given, other);\n"
+            "    c_ = create_publisher<std_msgs::msg::String>(given, 1);\n"
+            "  }\n};\n");
+        QCOMPARE(a.nodes.size(), 1);
+        QCOMPARE(resolvedPortNames(a.nodes[0]),
+                 (QStringList{QStringLiteral("scan parameter scan_topic"),
+                              QStringLiteral("other expression"), QStringLiteral("given local")}));
+    }
+
     void unreadableFiles()
     {
         QTemporaryDir dir;
