@@ -71,6 +71,8 @@ Json compositeJson(const Composite &c, const QString &ccd)
     j["id"] = utf8(c.instanceId);
     j["launch_file"] = utf8(c.file);
     j["stem"] = utf8(c.stem);
+    if (!c.executable.isEmpty())
+        j["executable"] = utf8(c.executable);
     j["package"] = utf8(c.package);
     j["parent"] = utf8(c.parentId);
     if (!ccd.isEmpty())

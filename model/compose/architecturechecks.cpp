@@ -461,6 +461,26 @@ private:
             for (const RosNodePart *p : parts.mid(1))
                 rel << Diagnostic::Related{
                     QStringLiteral("another %1 named %2").arg(p->typeName, fq), p->evidence};
+            // One launch action started them all: an executable whose code builds several
+            // nodes, given a name, which ROS 2 applies to every node of the process.
+            const bool oneAction =
+                std::all_of(parts.cbegin() + 1, parts.cend(), [&](const RosNodePart *p) {
+                    return p->evidence == parts.first()->evidence;
+                });
+            if (oneAction) {
+                QStringList types;
+                for (const RosNodePart *p : parts)
+                    types << p->typeName;
+                add(Diagnostic::Severity::Warning, QStringLiteral("process-renamed"),
+                    QStringLiteral("This launch action names the node %1, but its executable "
+                                   "builds %2 nodes in its own code (%3){in}: ROS 2 gives the "
+                                   "name to every node of the process, so they all are %1.")
+                        .arg(fq)
+                        .arg(parts.size())
+                        .arg(types.join(QStringLiteral(", "))),
+                    parts.first()->evidence, rel);
+                continue;
+            }
             add(Diagnostic::Severity::Warning, QStringLiteral("duplicate-node-name"),
                 QStringLiteral("%1 nodes are named %2{in}.").arg(parts.size()).arg(fq),
                 parts.first()->evidence, rel);

@@ -372,6 +372,8 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
         c.file = lf.file;
         c.package = lf.package;
         c.parentId = lf.parentId;
+        if (lf.format == QLatin1String("executable"))
+            c.executable = lf.type;
 
         struct Entry
         {

@@ -122,6 +122,9 @@ struct Composite
     QString file;       ///< workspace-relative path ("" when external)
     QString package;
     QString parentId; ///< the including launch-file instance ("" for a root)
+    /// The executable whose own code builds this system (blueprint §1, "Nodes built in code");
+    /// "" for a launch file. `file` is then its main source.
+    QString executable;
     QList<RosNodePart> parts;
     QList<Channel> channels;
     QList<BoundaryPort> boundary;

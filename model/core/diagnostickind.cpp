@@ -63,6 +63,13 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "a launch condition could not be decided may be alternatives and are not counted. "
              "Give one of them another name or namespace.",
              "warning"),
+        kind("process-renamed", "A name given to every node of a process",
+             "A launch action gives a node name (name=, <node name=...>) to an executable whose "
+             "own code builds several nodes. ROS 2 applies the name to every node of the "
+             "process, so they all run under one name, and parameters, services and tools reach "
+             "any of them. Drop the name and let each node keep its own, or rename one node "
+             "with a node-specific rule (--ros-args -r talker:__node:=new_name).",
+             "warning"),
         kind("remap-target-unused", "Remap to a name nobody uses",
              "A launch file remaps a port to a name that no other node of the system uses on "
              "the other side, so the remap connects nothing, and a name on the other side is a "

@@ -116,8 +116,8 @@ template <class F> void fields(Connection &v, F f)
 }
 template <class F> void fields(Composite &v, F f)
 {
-    f(v.instanceId, v.stem, v.file, v.package, v.parentId, v.parts, v.channels, v.boundary,
-      v.connections);
+    f(v.instanceId, v.stem, v.file, v.package, v.parentId, v.executable, v.parts, v.channels,
+      v.boundary, v.connections);
 }
 template <class F> void fields(Architecture &v, F f)
 {

@@ -2,6 +2,7 @@
 #include "analysiscache.h"
 #include "classifierruns.h"
 #include "evidenceshift.h"
+#include "executablesystems.h"
 #include "interfacemodel.h"
 #include "launchexecutor.h"
 #include "launchfileindex.h"
@@ -167,6 +168,8 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             }
     }
     runClassifiers(classifiers, executor, &out);
+    if (!control.isCanceled())
+        addExecutableSystems(workspace, nodes, &out);
     out.viewedTopics = viewedTopics(workspace, &out.diagnostics);
     out.externals = options.externals;
     // Canceled while the files ran on their own: their lists are incomplete, so the result

@@ -91,8 +91,12 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
         if (elements)
             elements->append({int(out.count(QLatin1Char('\n'))) + 1, kind, id});
     };
-    out += QStringLiteral("' launch file %1 (%2)\n")
-               .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
+    if (!c.executable.isEmpty())
+        out += QStringLiteral("' executable %1 of package %2, built in %3 (%4)\n")
+                   .arg(c.executable, c.package, c.file, c.instanceId);
+    else
+        out += QStringLiteral("' launch file %1 (%2)\n")
+                   .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
     out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n")
                .arg(label(c.stem), top);
     // Comments stand on a line of their own above the element (PlantUML rejects them after an

@@ -495,6 +495,30 @@ private Q_SLOTS:
 private:
     Recovery m_recovery;
     QList<Diagnostic> m_diagnostics;
+
+    // An executable whose main builds three nodes, started with name=: ROS 2 names all three
+    // so, which is one process-renamed finding at the launch action, not a duplicate name; the
+    // same executable started without a name gives none. The executable gets a CCD of its own.
+    void nameGivenToAProcessOfSeveralNodes()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("cpp_nodes_in_main/ws")));
+        const QList<Diagnostic> &all = r.architecture.diagnostics;
+        QCOMPARE(ofCode(all, QStringLiteral("duplicate-node-name")).size(), 0);
+        const QList<Diagnostic> renamed = ofCode(all, QStringLiteral("process-renamed"));
+        QCOMPARE(renamed.size(), 1);
+        QCOMPARE(at(renamed[0].evidence),
+                 QStringLiteral("src/yard_pipeline_bringup/launch/pipelines.launch.xml:7"));
+        QVERIFY2(
+            renamed[0].message.contains(QLatin1String("(CameraStage, DisplayStage, MarkerStage)")),
+            qPrintable(renamed[0].message));
+        QStringList executables;
+        for (const Composite &c : r.architecture.classifiers)
+            if (!c.executable.isEmpty())
+                executables << c.executable + u' ' + c.file + u' ' +
+                                   QString::number(c.channels.size());
+        QCOMPARE(executables, QStringList{QStringLiteral(
+                                  "pipeline_in_one src/yard_pipeline/src/pipeline_in_one.cpp 2")});
+    }
 };
 
 QTEST_GUILESS_MAIN(TestArchitectureChecks)
