@@ -336,7 +336,9 @@ InspectorInfo CorrectionController::describe(const Element &e)
         const LaunchFileInstance *lf = findLaunchFile(now.launch, e.id);
         if (!lf)
             return {};
-        info.kind = tr("Launch file");
+        info.kind = lf->format == QLatin1String("executable")
+                        ? tr("Executable (nodes built in code)")
+                        : tr("Launch file");
         info.type = lf->file;
         break;
     }

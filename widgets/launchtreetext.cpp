@@ -229,9 +229,11 @@ QString LaunchTreeText::launchFileToolTip(const LaunchFileInstance &instance,
                                           const QList<Unresolved> &attributeUnresolved,
                                           bool parentActive)
 {
-    const QString what = instance.parentId.isEmpty() ? tr("Launch file")
-                         : instance.external         ? tr("External include")
-                                                     : tr("Included launch file");
+    const bool executable = instance.format == QLatin1String("executable");
+    const QString what = executable                    ? tr("Executable building its own nodes")
+                         : instance.parentId.isEmpty() ? tr("Launch file")
+                         : instance.external           ? tr("External include")
+                                                       : tr("Included launch file");
     QString tip = QStringLiteral("<b>%1</b> %2").arg(what, html(instance.type));
     const auto line = [&tip](const QString &text) { tip += QStringLiteral("<br/>") + text; };
     if (!instance.file.isEmpty())

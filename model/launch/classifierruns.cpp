@@ -266,19 +266,6 @@ void ClassifierRuns::append(LaunchDependencies *merged, Run &run)
     }
 }
 
-void ClassifierRuns::append(LaunchDependencies *out, LaunchDependencies made)
-{
-    LaunchDependencies merged;
-    merged.instances = std::move(out->classifierInstances);
-    merged.nodes = std::move(out->classifierNodes);
-    Run run;
-    run.ran = true;
-    run.made = std::move(made);
-    append(&merged, run);
-    out->classifierInstances = std::move(merged.instances);
-    out->classifierNodes = std::move(merged.nodes);
-}
-
 void ClassifierRuns::finish(const QStringList &files, LaunchDependencies *out,
                             const LaunchExecutor *warm)
 {

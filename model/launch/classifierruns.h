@@ -42,10 +42,6 @@ public:
     void finish(const QStringList &files, LaunchDependencies *out,
                 const LaunchExecutor *warm = nullptr);
 
-    /// Appends what another executor made on its own in the classifier scope (ids "clf1",
-    /// "cn1", ...) to `out`'s classifier instances and nodes, its ids moved up past theirs.
-    static void append(LaunchDependencies *out, LaunchDependencies made);
-
 private:
     /// What one file's run made, on its own.
     struct Run

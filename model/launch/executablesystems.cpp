@@ -1,10 +1,5 @@
 #include "executablesystems.h"
-#include "classifierruns.h"
-#include "launchexecutor.h"
 #include "nodeclasses.h"
-#include "rosnames.h"
-
-#include <QHash>
 
 namespace rosarch {
 
@@ -31,58 +26,44 @@ QString mainFile(const Workspace &workspace, const RosPackage &package, const Ex
 
 } // namespace
 
-void addExecutableSystems(const Workspace &workspace, const AtomicNodeList &nodes,
-                          LaunchDependencies *out)
+ExecutableSystems::ExecutableSystems(const Workspace &workspace, const AtomicNodeList &nodes)
 {
     const NodeClasses classes(nodes);
-    QHash<QString, LaunchFileDescription> descriptions;
-    struct System
-    {
-        QString file;
-        QString package;
-        QString executable;
-    };
-    QList<System> systems;
     for (const RosPackage &package : workspace.packages)
         for (const Executable &exe : package.executables) {
             if (exe.kind == Executable::Kind::ComponentPlugin ||
                 classes.started(package.name, exe.name, false).size() < 2)
                 continue;
             const QString file = mainFile(workspace, package, exe);
-            if (file.isEmpty() || descriptions.contains(file))
+            if (file.isEmpty() || m_systems.contains(file))
                 continue; // two executables of one main: the first names the system
             LaunchAction node;
             node.kind = LaunchAction::Kind::Node;
             node.package = Substitution::literal(package.name);
             node.executable = Substitution::literal(exe.name);
             node.evidence = exe.evidence;
-            LaunchFileDescription d;
-            d.file = file;
-            d.actions.append(node);
-            descriptions.insert(file, d);
-            systems.append({file, package.name, exe.name});
+            System s{package.name, exe.name, {}};
+            s.description.file = file;
+            s.description.actions.append(node);
+            m_systems.insert(file, s);
+            m_files.append(file);
         }
-    if (systems.isEmpty())
-        return;
-    LaunchDependencies made;
-    LaunchExecutor executor(
-        workspace, nodes,
-        [&descriptions](const QString &file) -> const LaunchFileDescription * {
-            const auto it = descriptions.constFind(file);
-            return it == descriptions.cend() ? nullptr : &*it;
-        },
-        &made);
-    executor.setIdPrefix(QStringLiteral("c"));
-    for (const System &s : std::as_const(systems)) {
-        const qsizetype first = made.instances.size();
-        executor.runRoot(s.file, {}, QLatin1String(RosNames::kClassifierScope));
-        for (qsizetype i = first; i < made.instances.size(); ++i) {
-            made.instances[i].format = QStringLiteral("executable");
-            made.instances[i].type = s.executable;
-            made.instances[i].package = s.package;
+}
+
+const LaunchFileDescription *ExecutableSystems::find(const QString &file) const
+{
+    const auto it = m_systems.constFind(file);
+    return it == m_systems.cend() ? nullptr : &it->description;
+}
+
+void ExecutableSystems::mark(QList<LaunchFileInstance> *instances) const
+{
+    for (LaunchFileInstance &i : *instances)
+        if (const auto it = m_systems.constFind(i.file); it != m_systems.cend()) {
+            i.format = QStringLiteral("executable");
+            i.type = it->executable;
+            i.package = it->package;
         }
-    }
-    ClassifierRuns::append(out, std::move(made));
 }
 
 } // namespace rosarch

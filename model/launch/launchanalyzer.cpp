@@ -98,7 +98,11 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.append(*problem);
     out.launchFiles = index.files();
-    const LaunchExecutor::Loader loader = [&](const QString &f) { return index.find(f); };
+    const ExecutableSystems executables(workspace, nodes);
+    const LaunchExecutor::Loader loader = [&](const QString &f) {
+        const LaunchFileDescription *d = index.find(f);
+        return d ? d : executables.find(f);
+    };
     LaunchExecutor executor(workspace, nodes, loader, &out);
     // The files' own runs begin after the system's, from its executor: begun on the pool during
     // them, with cold caches, they read the same parameter files and resolve the same includes
@@ -167,9 +171,21 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
                     reached.insert(i.file);
             }
     }
+    if (options.rootFile.isEmpty()) {
+        // Executables that build their nodes in their own code are systems too.
+        for (const QString &f : executables.files()) {
+            if (control.isCanceled()) {
+                out.canceled = true;
+                return out;
+            }
+            executor.runRoot(f, options.arguments);
+            out.entryPoints << f;
+        }
+        out.entryPoints.sort();
+    }
     runClassifiers(classifiers, executor, &out);
-    if (!control.isCanceled())
-        addExecutableSystems(workspace, nodes, &out);
+    executables.mark(&out.instances);
+    executables.mark(&out.classifierInstances);
     out.viewedTopics = viewedTopics(workspace, &out.diagnostics);
     out.externals = options.externals;
     // Canceled while the files ran on their own: their lists are incomplete, so the result

@@ -167,6 +167,8 @@ QString DiagramText::missingBanner(const QStringList &missing)
 
 QString DiagramText::frameDetail(const Composite &c)
 {
+    if (!c.executable.isEmpty()) // a main that builds its nodes itself
+        return tr("executable, nodes built in %1").arg(visibleText(c.file));
     return c.file.isEmpty() ? tr("launch file (outside the workspace)")
                             : tr("launch file %1").arg(visibleText(c.file));
 }
