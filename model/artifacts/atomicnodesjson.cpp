@@ -88,6 +88,20 @@ Json nodeJson(const AtomicNode &n)
                                 {"evidence", EvidenceJson::toJson(c.evidence)}});
         j["child_nodes"] = children;
     }
+    if (!n.constructions.isEmpty()) { // built in an executable's own code
+        Json built = Json::array();
+        for (const NodeConstruction &k : n.constructions) {
+            Json ports = Json::array();
+            for (const Port &p : k.ports)
+                ports.push_back(portJson(p));
+            built.push_back({{"class", utf8(k.className)},
+                             {"executable", utf8(k.executable)},
+                             {"node_name", utf8(k.nodeName)},
+                             {"ports", ports},
+                             {"evidence", EvidenceJson::toJson(k.evidence)}});
+        }
+        j["constructions"] = built;
+    }
     JsonSupport::putMarks(j, n.marks);
     return j;
 }
@@ -225,6 +239,26 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                     if (cj.contains("evidence"))
                         c.evidence = EvidenceJson::fromJson(cj["evidence"]);
                     n.children.append(c);
+                }
+            }
+            if (nj.contains("constructions") && nj["constructions"].is_array()) {
+                for (const Json &kj : nj["constructions"]) {
+                    if (!kj.is_object())
+                        continue;
+                    NodeConstruction k;
+                    k.className = JsonSupport::string(kj, "class");
+                    k.executable = JsonSupport::string(kj, "executable");
+                    k.nodeName = JsonSupport::string(kj, "node_name");
+                    if (kj.contains("ports") && kj["ports"].is_array())
+                        for (const Json &pj : kj["ports"]) {
+                            Port p;
+                            if (!readPort(pj, &p, error))
+                                return false;
+                            k.ports.append(p);
+                        }
+                    if (kj.contains("evidence"))
+                        k.evidence = EvidenceJson::fromJson(kj["evidence"]);
+                    n.constructions.append(k);
                 }
             }
             out.nodes.append(n);

@@ -206,9 +206,15 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
     const QString nodeName = runtimeNodeName(node, instance);
     QList<PartPort> out;
     QList<Port> ports;
-    for (const Port &p : node.ports)
-        if (!instance.removedPorts.contains(p.id))
-            ports.append(p);
+    for (const Port &p : node.ports) {
+        if (instance.removedPorts.contains(p.id))
+            continue;
+        // A node built in an executable's code: the port as its constructor's arguments name it.
+        const auto constructed =
+            std::find_if(instance.constructedPorts.cbegin(), instance.constructedPorts.cend(),
+                         [&](const Port &c) { return c.id == p.id; });
+        ports.append(constructed != instance.constructedPorts.cend() ? *constructed : p);
+    }
     ports += instance.addedPorts;
     const qsizetype firstModelled = ports.size();
     ports += instance.modelledPorts;

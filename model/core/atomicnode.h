@@ -23,6 +23,20 @@ struct ChildNode
     bool operator==(const ChildNode &) const = default;
 };
 
+/// A node object that an executable's own code constructs (blueprint §1, "Nodes built in
+/// code"), with what its constructor arguments decide.
+struct NodeConstruction
+{
+    QString className;  ///< the class as written at the construction
+    QString executable; ///< the executable whose code builds it (set when stage 1 links it)
+    QString nodeName;   ///< "" when the arguments do not decide it (the class's name then)
+    /// The class's ports that the arguments name (`create_publisher<T>(output, ...)`, `output`
+    /// a constructor parameter), with the class port's id; the others are the class's.
+    QList<Port> ports;
+    Evidence evidence; ///< the construction
+    bool operator==(const NodeConstruction &) const = default;
+};
+
 /// An AtomicRosNodeClassifier: one node class (or procedurally built node) with its ports.
 struct AtomicNode
 {
@@ -51,6 +65,9 @@ struct AtomicNode
     Evidence evidence; ///< the class definition (or the create_node call)
     QList<Port> ports;
     QList<ChildNode> children = {}; ///< nodes it creates inside itself
+    /// Where executables' own code constructs it, one per construction (several instances of
+    /// one class each get theirs)
+    QList<NodeConstruction> constructions = {};
 
     Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     /// The blueprint's `execution`: the first executable, else the first plugin.

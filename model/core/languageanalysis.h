@@ -14,9 +14,10 @@ namespace rosarch {
 /// node classes it instantiates, so that build-file executables map to classes by evidence.
 struct EntryPoint
 {
-    QString file;                    ///< relative to the workspace root
-    QString function;                ///< "main", ...
-    QStringList instantiatedClasses; ///< class names as written (possibly qualified)
+    QString file;                          ///< relative to the workspace root
+    QString function;                      ///< "main", ...
+    QStringList instantiatedClasses;       ///< class names as written (possibly qualified)
+    QList<NodeConstruction> constructions; ///< each construction of a node class, in order
     Evidence evidence;
 
     bool operator==(const EntryPoint &) const = default;

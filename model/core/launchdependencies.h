@@ -79,6 +79,9 @@ struct NodeInstance
     QString modelConfig = {}; ///< the configuration file the model read more ports from
     /// A child node (blueprint §1): the instance whose node created it ("" for a launched node).
     QString parentNode = {};
+    /// A node an executable's code constructs (blueprint §1, "Nodes built in code"): the
+    /// class's ports its constructor arguments name, by port id, in place of the class's.
+    QList<Port> constructedPorts = {};
     bool operator==(const NodeInstance &) const = default;
 };
 

@@ -39,11 +39,15 @@ template <class F> void fields(ChildNode &v, F f)
 {
     f(v.className, v.nodeName, v.nameSpace, v.evidence);
 }
+template <class F> void fields(NodeConstruction &v, F f)
+{
+    f(v.className, v.executable, v.nodeName, v.ports, v.evidence);
+}
 template <class F> void fields(AtomicNode &v, F f)
 {
     f(v.id, v.className, v.qualifiedName, v.nodeName, v.packageName, v.headerFiles, v.sourceFiles,
       v.description, v.compileType, v.baseClasses, v.lifecycle, v.procedural, v.executables,
-      v.plugins, v.pluginInterface, v.evidence, v.ports, v.children);
+      v.plugins, v.pluginInterface, v.evidence, v.ports, v.children, v.constructions);
 }
 template <class F> void fields(Executable &v, F f)
 {
@@ -71,7 +75,7 @@ template <class F> void fields(NodeInstance &v, F f)
       v.nameSpace, v.guessedNamespace, v.guessedName, v.container, v.lifecycle, v.remaps,
       v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition, v.active,
       v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig,
-      v.parentNode);
+      v.parentNode, v.constructedPorts);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {

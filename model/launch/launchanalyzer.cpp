@@ -279,6 +279,12 @@ QByteArray nodesPart(const AtomicNodeList &nodes, QList<Evidence> *locations)
             s << quint8(3) << c.className << c.nodeName << c.nameSpace << c.evidence.file;
             locations->append(c.evidence);
         }
+        for (const NodeConstruction &k : n.constructions) { // an instance per construction
+            s << quint8(4) << k.executable << k.nodeName << k.evidence.file;
+            locations->append(k.evidence);
+            for (const Port &p : k.ports)
+                s << p.id << p.name << qint32(p.nameOrigin) << p.parameter;
+        }
         for (const Port &p : n.ports) {
             if (p.nameOrigin == NameOrigin::Parameter && !p.parameter.isEmpty()) {
                 s << quint8(1) << p.parameter << p.name << p.evidence.file;

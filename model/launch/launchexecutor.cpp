@@ -1,5 +1,4 @@
 #include "launchexecutor.h"
-#include "includereach.h"
 #include "rosnames.h"
 #include "substitutionevaluator.h"
 
@@ -8,9 +7,6 @@
 #include <algorithm>
 
 namespace rosarch {
-
-namespace {
-constexpr int kMaxIncludeDepth = 40;
 
 QString formatName(LaunchFileDescription::Format f)
 {
@@ -24,6 +20,8 @@ QString formatName(LaunchFileDescription::Format f)
     }
     return {};
 }
+
+namespace {
 
 QString nsKey(const QString &ns)
 {
@@ -402,12 +400,31 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         diag.evidence = a.evidence;
         m_out->diagnostics.append(diag);
     }
+    // What the process runs: one node per class, or, for an executable that builds its nodes
+    // in its own code, one per construction there (blueprint §1, "Nodes built in code").
+    QList<std::pair<const AtomicNode *, const NodeConstruction *>> starts;
+    for (const AtomicNode *cls : std::as_const(classes)) {
+        const qsizetype before = starts.size();
+        if (!composable)
+            for (const NodeConstruction &k : cls->constructions)
+                if (k.executable == n.execName)
+                    starts.append({cls, &k});
+        if (starts.size() == before)
+            starts.append({cls, nullptr});
+    }
+    const auto nodeNameOf = [&](const std::pair<const AtomicNode *, const NodeConstruction *> &s) {
+        if (!launchName.isEmpty())
+            return launchName;
+        return s.second && !s.second->nodeName.isEmpty() ? s.second->nodeName : s.first->nodeName;
+    };
     if (const AtomicNode *cls = classes.value(0)) {
         n.className = cls->className;
         n.classId = cls->id;
         n.lifecycle = n.lifecycle || cls->lifecycle;
         n.nodeKind = composable ? QStringLiteral("composable") : compileTypeName(cls->compileType);
-        n.nodeName = launchName.isEmpty() ? cls->nodeName : launchName;
+        n.nodeName = nodeNameOf(starts.front());
+        if (starts.front().second)
+            n.constructedPorts = starts.front().second->ports;
     } else {
         n.nodeName = launchName;
         if (classes.isEmpty() && !m_workspace.package(n.package)) { // code outside
@@ -444,21 +461,22 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     if (!classes.isEmpty())
         addChildNodes(n, *classes.front(), a, scope, frame, 0);
     // An executable whose main spins several nodes starts one instance of each.
-    for (qsizetype k = 1; k < classes.size(); ++k) {
+    for (qsizetype k = 1; k < starts.size(); ++k) {
+        const AtomicNode *cls = starts[k].first;
         NodeInstance more = n;
         more.id = (m_idPrefix + QStringLiteral("n%1")).arg(m_out->nodes.size() + 1);
-        more.className = classes[k]->className;
-        more.classId = classes[k]->id;
-        more.lifecycle = a.lifecycle || classes[k]->lifecycle;
-        more.nodeName = launchName.isEmpty() ? classes[k]->nodeName : launchName;
+        more.className = cls->className;
+        more.classId = cls->id;
+        more.lifecycle = a.lifecycle || cls->lifecycle;
+        more.nodeName = nodeNameOf(starts[k]);
+        more.constructedPorts = starts[k].second ? starts[k].second->ports : QList<Port>();
         QList<Unresolved> reported; // the same launch line: already on `n`
-        more.effectiveParameters =
-            effectiveParameters(a, scope, frame, more, classes[k], &reported);
+        more.effectiveParameters = effectiveParameters(a, scope, frame, more, cls, &reported);
         more.plugins = pluginsOf(more.effectiveParameters);
         m_out->instances[frame.instance].nodes.append(more.id);
         addToNamespace(frame.instance, more.nameSpace, more.id);
         m_out->nodes.append(more);
-        addChildNodes(more, *classes[k], a, scope, frame, 0);
+        addChildNodes(more, *cls, a, scope, frame, 0);
     }
 }
 
@@ -509,85 +527,6 @@ void LaunchExecutor::addChildNodes(const NodeInstance &parent, const AtomicNode 
         m_out->nodes.append(n);
         addChildNodes(n, *childClass, a, scope, frame, depth + 1);
     }
-}
-
-void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
-{
-    if (!frame.collectOnly && m_budget.overBudget(m_out, a.evidence))
-        return;
-    QList<Unresolved> found;
-    const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
-    const bool pathUndecided = !found.isEmpty();
-    bool undecided = false;
-    const bool active = scope.active && conditionHolds(a, scope, frame, &found, &undecided);
-    const IncludeTarget target = resolveInclude(path, frame.file);
-    if (frame.collectOnly) {
-        IncludeReach::note(a, target, active, pathUndecided, m_out->launchFiles, frame.includes,
-                           frame.conditionalIncludes);
-        return;
-    }
-    LaunchFileInstance inst;
-    inst.id = (m_idPrefix + QStringLiteral("lf%1")).arg(m_out->instances.size() + 1);
-    inst.parentId = m_out->instances[frame.instance].id;
-    inst.type = QFileInfo(target.file.isEmpty() ? path : target.file).fileName();
-    inst.file = target.file;
-    inst.package = target.package;
-    inst.external = target.external;
-    inst.evidence = a.evidence;
-    inst.condition = a.condition.text;
-    inst.active = active;
-    inst.unresolved = found;
-    Scope inner = scope;
-    inner.active = active;
-    inner.activeByGuess = scope.activeByGuess || undecided;
-    for (const auto &[name, value] : a.arguments) {
-        const QString n = evaluate(name, scope, frame, &inst.unresolved, a.evidence);
-        bool guessed = false;
-        const QString v = evaluate(value, scope, frame, &inst.unresolved, a.evidence, &guessed);
-        configure(inner, n, v, guessed);
-        inst.arguments.append({n, v});
-    }
-    if (target.external)
-        ModelledPorts::forInclude(&inst, target.package, target.shareRelative, scope.nameSpace);
-    if (target.file.isEmpty() && !target.external) {
-        inst.unresolved.append({QStringLiteral("include"), path, QString(), a.evidence});
-    }
-    const LaunchFileDescription *d = target.file.isEmpty() ? nullptr : m_load(target.file);
-    if (d)
-        inst.format = formatName(d->format);
-    const bool cycle = !target.file.isEmpty() && frame.chain.contains(target.file);
-    if (cycle) {
-        inst.unresolved.append(
-            {QStringLiteral("cycle"),
-             (frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")), QString(),
-             a.evidence});
-        Diagnostic diag;
-        diag.severity = Diagnostic::Severity::Error;
-        diag.code = QStringLiteral("include-cycle");
-        diag.message =
-            QStringLiteral("Include cycle: %1; the repeated include is not followed.")
-                .arg((frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")));
-        diag.evidence = a.evidence;
-        m_out->diagnostics.append(diag);
-    }
-    const QString parentNs = scope.nameSpace;
-    m_out->instances.append(inst);
-    const int index = int(m_out->instances.size()) - 1;
-    m_out->instances[frame.instance].includedLaunchFiles.append(inst.id);
-    addToNamespace(frame.instance, parentNs, inst.id);
-    if (!d || cycle)
-        return;
-    if (depth >= kMaxIncludeDepth || frame.chain.size() >= kMaxIncludeDepth) {
-        m_out->instances[index].unresolved.append({QStringLiteral("include"),
-                                                   QStringLiteral("include depth limit"), QString(),
-                                                   a.evidence});
-        return;
-    }
-    Frame child;
-    child.instance = index;
-    child.file = target.file;
-    child.chain = frame.chain + QStringList{target.file};
-    execute(d->actions, inner, child, depth + 1);
 }
 
 } // namespace rosarch

@@ -173,6 +173,8 @@ private:
 
 /// The folder of a workspace-relative launch file ("" at the top).
 QString launchFileDir(const QString &file);
+/// "python", "xml" or "yaml", as launch-file instances name their format.
+QString formatName(LaunchFileDescription::Format f);
 
 /// ROS 2 namespace rules: an absolute namespace stays, a relative one is appended.
 QString joinNamespace(const QString &outer, const QString &inner);

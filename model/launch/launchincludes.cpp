@@ -1,5 +1,6 @@
-// LaunchExecutor's includes: where an include's evaluated path points (a workspace launch file,
-// a package outside the workspace, or nothing).
+// LaunchExecutor's includes: running one (its arguments, scope and condition), and where its
+// evaluated path points (a workspace launch file, a package outside the workspace, or nothing).
+#include "includereach.h"
 #include "launchexecutor.h"
 
 #include <QDir>
@@ -7,6 +8,10 @@
 #include <QRegularExpression>
 
 namespace rosarch {
+
+namespace {
+constexpr int kMaxIncludeDepth = 40;
+} // namespace
 
 IncludeTarget LaunchExecutor::resolveInclude(const QString &rawPath, const QString &fromFile) const
 {
@@ -83,6 +88,85 @@ IncludeTarget LaunchExecutor::findInclude(const QString &rawPath, const QString 
         }
     }
     return t;
+}
+
+void LaunchExecutor::executeInclude(const LaunchAction &a, Scope &scope, Frame &frame, int depth)
+{
+    if (!frame.collectOnly && m_budget.overBudget(m_out, a.evidence))
+        return;
+    QList<Unresolved> found;
+    const QString path = evaluate(a.path, scope, frame, &found, a.evidence);
+    const bool pathUndecided = !found.isEmpty();
+    bool undecided = false;
+    const bool active = scope.active && conditionHolds(a, scope, frame, &found, &undecided);
+    const IncludeTarget target = resolveInclude(path, frame.file);
+    if (frame.collectOnly) {
+        IncludeReach::note(a, target, active, pathUndecided, m_out->launchFiles, frame.includes,
+                           frame.conditionalIncludes);
+        return;
+    }
+    LaunchFileInstance inst;
+    inst.id = (m_idPrefix + QStringLiteral("lf%1")).arg(m_out->instances.size() + 1);
+    inst.parentId = m_out->instances[frame.instance].id;
+    inst.type = QFileInfo(target.file.isEmpty() ? path : target.file).fileName();
+    inst.file = target.file;
+    inst.package = target.package;
+    inst.external = target.external;
+    inst.evidence = a.evidence;
+    inst.condition = a.condition.text;
+    inst.active = active;
+    inst.unresolved = found;
+    Scope inner = scope;
+    inner.active = active;
+    inner.activeByGuess = scope.activeByGuess || undecided;
+    for (const auto &[name, value] : a.arguments) {
+        const QString n = evaluate(name, scope, frame, &inst.unresolved, a.evidence);
+        bool guessed = false;
+        const QString v = evaluate(value, scope, frame, &inst.unresolved, a.evidence, &guessed);
+        configure(inner, n, v, guessed);
+        inst.arguments.append({n, v});
+    }
+    if (target.external)
+        ModelledPorts::forInclude(&inst, target.package, target.shareRelative, scope.nameSpace);
+    if (target.file.isEmpty() && !target.external) {
+        inst.unresolved.append({QStringLiteral("include"), path, QString(), a.evidence});
+    }
+    const LaunchFileDescription *d = target.file.isEmpty() ? nullptr : m_load(target.file);
+    if (d)
+        inst.format = formatName(d->format);
+    const bool cycle = !target.file.isEmpty() && frame.chain.contains(target.file);
+    if (cycle) {
+        inst.unresolved.append(
+            {QStringLiteral("cycle"),
+             (frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")), QString(),
+             a.evidence});
+        Diagnostic diag;
+        diag.severity = Diagnostic::Severity::Error;
+        diag.code = QStringLiteral("include-cycle");
+        diag.message =
+            QStringLiteral("Include cycle: %1; the repeated include is not followed.")
+                .arg((frame.chain + QStringList{target.file}).join(QStringLiteral(" → ")));
+        diag.evidence = a.evidence;
+        m_out->diagnostics.append(diag);
+    }
+    const QString parentNs = scope.nameSpace;
+    m_out->instances.append(inst);
+    const int index = int(m_out->instances.size()) - 1;
+    m_out->instances[frame.instance].includedLaunchFiles.append(inst.id);
+    addToNamespace(frame.instance, parentNs, inst.id);
+    if (!d || cycle)
+        return;
+    if (depth >= kMaxIncludeDepth || frame.chain.size() >= kMaxIncludeDepth) {
+        m_out->instances[index].unresolved.append({QStringLiteral("include"),
+                                                   QStringLiteral("include depth limit"), QString(),
+                                                   a.evidence});
+        return;
+    }
+    Frame child;
+    child.instance = index;
+    child.file = target.file;
+    child.chain = frame.chain + QStringList{target.file};
+    execute(d->actions, inner, child, depth + 1);
 }
 
 } // namespace rosarch

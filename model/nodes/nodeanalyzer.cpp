@@ -68,12 +68,13 @@ public:
     void link(const RosPackage &pkg, const Executable &exe)
     {
         QList<AtomicNode *> targets;
+        QList<std::pair<AtomicNode *, NodeConstruction>> constructions;
         switch (exe.kind) {
         case Executable::Kind::ConsoleScript:
             targets = consoleScriptNodes(pkg, exe);
             break;
         case Executable::Kind::CMakeExecutable:
-            targets = sourceNodes(pkg, exe.sources);
+            targets = nodesStartedFrom(pkg.name, exe.sources, QString(), &constructions);
             break;
         case Executable::Kind::ComponentPlugin:
             targets = byQualifiedName(exe.plugin, pkg.name);
@@ -85,6 +86,10 @@ public:
             return;
         for (AtomicNode *n : std::as_const(targets))
             appendUnique(&n->executables, exe.name);
+        for (auto &[n, k] : constructions) {
+            k.executable = exe.name;
+            n->constructions.append(k);
+        }
         if (targets.isEmpty() && exe.kind != Executable::Kind::ComponentPlugin) {
             Diagnostic d;
             d.severity = Diagnostic::Severity::Info;
@@ -120,9 +125,11 @@ private:
         return found;
     }
 
-    /// Node classes an entry point in `file` instantiates, else those defined in it.
-    QList<AtomicNode *> nodesStartedFrom(const QString &pkg, const QStringList &files,
-                                         const QString &function)
+    /// Node classes an entry point in `file` instantiates, else those defined in it. The
+    /// entry points' constructions of them are added to `constructions`, with their class.
+    QList<AtomicNode *>
+    nodesStartedFrom(const QString &pkg, const QStringList &files, const QString &function,
+                     QList<std::pair<AtomicNode *, NodeConstruction>> *constructions = nullptr)
     {
         QList<AtomicNode *> out;
         for (const QString &file : files) {
@@ -134,6 +141,10 @@ private:
                     for (AtomicNode *n : byQualifiedName(cls, pkg))
                         if (!out.contains(n))
                             out.append(n);
+                for (const NodeConstruction &k : it->constructions)
+                    if (constructions)
+                        for (AtomicNode *n : byQualifiedName(k.className, pkg))
+                            constructions->append({n, k});
             }
         }
         if (!out.isEmpty())
@@ -148,11 +159,6 @@ private:
             }
         }
         return out;
-    }
-
-    QList<AtomicNode *> sourceNodes(const RosPackage &pkg, const QStringList &sources)
-    {
-        return nodesStartedFrom(pkg.name, sources, QString());
     }
 
     QList<AtomicNode *> consoleScriptNodes(const RosPackage &pkg, const Executable &exe)
@@ -182,6 +188,37 @@ private:
     QHash<QString, QList<qsizetype>> m_byQualifiedName; ///< without a leading "::"
     QHash<QString, QList<qsizetype>> m_byClassName;
 };
+
+/// A construction keeps the ports its arguments name differently from the class, each with
+/// the id of the class's port made at the same call. One that decides nothing the class does
+/// not (its name, its ports) is dropped, unless its executable builds the class more than once:
+/// then each construction is an instance.
+void nameConstructedPorts(AtomicNode *n)
+{
+    QHash<QString, int> perExecutable;
+    for (const NodeConstruction &k : std::as_const(n->constructions))
+        ++perExecutable[k.executable];
+    for (NodeConstruction &k : n->constructions) {
+        QList<Port> named;
+        for (Port p : std::as_const(k.ports)) {
+            const auto same = std::find_if(n->ports.cbegin(), n->ports.cend(), [&](const Port &c) {
+                return c.kind == p.kind && c.evidence == p.evidence;
+            });
+            if (same == n->ports.cend() || !p.isResolved() ||
+                (same->name == p.name && same->nameOrigin == p.nameOrigin))
+                continue;
+            p.id = same->id;
+            p.via = same->via;
+            p.viaEvidence = same->viaEvidence;
+            named.append(p);
+        }
+        k.ports = named;
+    }
+    n->constructions.removeIf([&](const NodeConstruction &k) {
+        return k.ports.isEmpty() && (k.nodeName.isEmpty() || k.nodeName == n->nodeName) &&
+               perExecutable.value(k.executable) < 2;
+    });
+}
 
 bool diagnosticLess(const Diagnostic &a, const Diagnostic &b)
 {
@@ -248,6 +285,7 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
         QHash<PortKind, int> counters;
         for (Port &p : n.ports)
             p.id = portIdPrefix(p.kind) + QString::number(++counters[p.kind]);
+        nameConstructedPorts(&n);
     }
     std::stable_sort(list.diagnostics.begin(), list.diagnostics.end(), diagnosticLess);
     return list;

@@ -190,6 +190,10 @@ struct CppClass
     QList<CppMemberBinding> memberInitializers;
     /// `Helper<T> member_{this, "name"};`: a helper built in the class body with the node
     QList<CppInstantiation> memberInstantiations;
+    /// Methods declared in the body and defined elsewhere, with literal parameter defaults:
+    /// name -> the defaults by parameter ("" where none). A definition out of the class
+    /// repeats no default (`Relay(const std::string & name = "relay");`).
+    QHash<QString, QStringList> declaredDefaults;
     Evidence evidence;
 };
 

@@ -63,7 +63,7 @@ template <class F> void fields(CppFunction &v, F f)
 template <class F> void fields(CppClass &v, F f)
 {
     f(v.name, v.qualifiedName, v.scope, v.bases, v.templateParameters, v.aliases, v.memberTypes,
-      v.memberInitializers, v.memberInstantiations, v.evidence);
+      v.memberInitializers, v.memberInstantiations, v.declaredDefaults, v.evidence);
 }
 template <class F> void fields(CppPluginExport &v, F f)
 {
@@ -80,7 +80,7 @@ template <class F> void fields(CppFileFacts &v, F f)
 }
 template <class F> void fields(EntryPoint &v, F f)
 {
-    f(v.file, v.function, v.instantiatedClasses, v.evidence);
+    f(v.file, v.function, v.instantiatedClasses, v.constructions, v.evidence);
 }
 template <class F> void fields(LanguageAnalysis &v, F f)
 {

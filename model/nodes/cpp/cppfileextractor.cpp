@@ -106,6 +106,8 @@ public:
                 addClass(type, scope, templateParameters);
             else if (scope.classIndex < 0)
                 addConstant(n);
+            else
+                addDeclaredDefaults(n, scope);
         } else if (t == "linkage_specification") {
             visitScope(ts::field(n, fields().body), scope);
         } else if (t == "preproc_if" || t == "preproc_ifdef" || t == "preproc_else" ||
@@ -203,6 +205,27 @@ private:
     }
 
     // A member: its type (helpers are found by it) and its in-class initializer.
+    // `Relay(const std::string & in, const std::string & name = "relay");` in a class body: the
+    // literal defaults, which the definition elsewhere does not repeat.
+    void addDeclaredDefaults(TSNode n, const Scope &scope)
+    {
+        const TSNode declarator = ts::field(n, fields().declarator);
+        if (!ts::is(declarator, "function_declarator"))
+            return;
+        QStringList defaults;
+        bool any = false;
+        for (TSNode p : ts::namedChildren(ts::field(declarator, fields().parameters))) {
+            if (ts::is(p, "comment"))
+                continue;
+            QString value;
+            any = stringLiteral(m_tree, ts::field(p, fields().defaultValue), &value) || any;
+            defaults.append(value);
+        }
+        const QString name = m_tree.text(ts::field(declarator, fields().declarator));
+        if (any && !name.isEmpty())
+            m_facts.classes[scope.classIndex].declaredDefaults.insert(name, defaults);
+    }
+
     void addField(TSNode n, const Scope &scope)
     {
         const TSNode type = ts::field(n, fields().type);

@@ -39,6 +39,13 @@ public:
     /// methods it calls on helpers (lazily made ports).
     void addCallPorts(const CppFunction &fn, const CppLinkContext &ctx, int depth,
                       QList<Port> *ports) const;
+    /// The ports of class `cls` (a node class) constructed with `arguments` in `outer`: its
+    /// constructors' ports with their parameters standing for the arguments.
+    QList<Port> constructedPorts(int cls, const QList<CppValue> &arguments,
+                                 const CppLinkContext &outer) const
+    {
+        return helperPorts(cls, arguments, {}, outer, 1);
+    }
     /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
     void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;
     /// Subscriptions of the class's `message_filters::Subscriber<T>` members, made in `ref`.

@@ -65,7 +65,11 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         if (const CppSubstitution *subst = substitutionFor(ctx); subst && depth < kMaxLinkDepth) {
             if (value.index >= 0 && value.index < subst->arguments.size())
                 return resolve(subst->arguments.at(value.index), subst->outer, depth + 1);
-            const QString def = ctx.fn->parameterDefaults.value(value.index);
+            QString def = ctx.fn->parameterDefaults.value(value.index);
+            if (def.isEmpty() && ctx.cls >= 0) // written where the class declares it
+                def = m_index.at(ctx.cls)
+                          .cls->declaredDefaults.value(ctx.fn->name)
+                          .value(value.index);
             if (!def.isEmpty())
                 return {NameOrigin::Literal, def, QString(), QString()};
         }

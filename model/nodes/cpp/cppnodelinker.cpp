@@ -72,7 +72,8 @@ void appendUnique(QList<Port> *into, const QList<Port> &ports)
 CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
     : m_files(files), m_index(files), m_shared(files, m_index),
       m_names(m_index, m_facts, m_interfaceAliases, m_shared),
-      m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes)
+      m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes),
+      m_constructions(m_index, m_names, m_helpers)
 {
     for (const CppFileFacts &file : files) {
         for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
@@ -282,7 +283,7 @@ QList<ChildNode> CppNodeLinker::childNodesOf(int index) const
                                              m_names.scopeOf(ctx), ref.file);
                 if (t < 0 || !m_index.at(t).node || lineage.contains(t))
                     continue;
-                const ChildNode child = childNode(t, inst, ctx);
+                const ChildNode child = m_constructions.child(t, inst, ctx, nodeNameOf(t, 0));
                 if (!out.contains(child))
                     out.append(child);
             }
@@ -291,59 +292,6 @@ QList<ChildNode> CppNodeLinker::childNodesOf(int index) const
     std::stable_sort(out.begin(), out.end(), [](const ChildNode &a, const ChildNode &b) {
         return evidenceLess(a.evidence, b.evidence);
     });
-    return out;
-}
-
-// A child's name is the argument its constructor hands to the base-class initializer
-// (`nav2::LifecycleNode(name, ...)`), else the name its class gives itself. A namespace
-// argument that is the parent's own (`get_namespace()`) puts the child in the parent's
-// namespace; handed to a constructor parameter named for a parent (`parent_namespace`), the
-// child nests under it in a namespace of its own name, as nav2's child nodes do.
-ChildNode CppNodeLinker::childNode(int child, const CppInstantiation &inst,
-                                   const CppLinkContext &ctx) const
-{
-    const CppClassIndex::ClassInfo &info = m_index.at(child);
-    ChildNode out;
-    out.className = info.cls->qualifiedName;
-    out.evidence = inst.evidence;
-    out.nodeName = nodeNameOf(child, 0);
-    const auto argumentText = [&](int i) -> QString {
-        const CppValue &arg = inst.arguments.at(i);
-        if (arg.kind == CppValue::Kind::Literal ||
-            (arg.kind == CppValue::Kind::Local && !arg.literal.isEmpty()))
-            return arg.literal;
-        const CppResolvedName r = m_names.resolve(arg, ctx);
-        return r.origin == NameOrigin::Literal || r.origin == NameOrigin::Member ||
-                       r.origin == NameOrigin::Local
-                   ? r.name
-                   : QString();
-    };
-    // The constructor called: the one with the fewest parameters that takes every argument
-    // (defaults may be written only at the declaration, out of sight of the definition).
-    const auto argumentCount = int(inst.arguments.size());
-    const CppFunction *called = nullptr;
-    for (const auto &ref : info.functions) {
-        const CppFunction &ctor = *ref.function;
-        if (ctor.isConstructor && argumentCount <= ctor.parameterNames.size() &&
-            (!called || ctor.parameterNames.size() < called->parameterNames.size()))
-            called = &ctor;
-    }
-    if (!called)
-        return out;
-    for (const CppBaseInitializer &init : called->baseInitializers)
-        if (init.firstArgument.kind == CppValue::Kind::FunctionParameter &&
-            init.firstArgument.index >= 0 && init.firstArgument.index < argumentCount)
-            out.nodeName = argumentText(init.firstArgument.index);
-    for (int i = 0; i < argumentCount; ++i) {
-        const QString parameter = called->parameterNames.at(i).toLower();
-        if (!parameter.contains(QLatin1String("namespace")) && parameter != QLatin1String("ns"))
-            continue;
-        const CppValue &arg = inst.arguments.at(i);
-        if (arg.text.contains(QLatin1String("get_namespace")))
-            out.nameSpace = parameter.contains(QLatin1String("parent")) ? out.nodeName : QString();
-        else
-            out.nameSpace = argumentText(i);
-    }
     return out;
 }
 
@@ -581,12 +529,16 @@ void CppNodeLinker::addEntryPoint(const CppClassIndex::FunctionRef &ref,
     entry.file = ref.file->path;
     entry.function = fn.name;
     entry.evidence = fn.evidence;
+    const CppLinkContext ctx{-1, &fn, ref.file};
     for (const CppInstantiation &inst : fn.instantiations) {
         if (inst.className.isEmpty())
             continue;
         const int c = m_index.lookup(inst.className, fn.namespaces, ref.file);
-        if (c >= 0 && m_index.at(c).node && !entry.instantiatedClasses.contains(inst.className))
+        if (c < 0 || !m_index.at(c).node)
+            continue;
+        if (!entry.instantiatedClasses.contains(inst.className))
             entry.instantiatedClasses.append(inst.className);
+        entry.constructions.append(m_constructions.construction(c, inst, ctx, nodeNameOf(c, 0)));
     }
     for (const AtomicNode &node : procedural)
         if (!entry.instantiatedClasses.contains(node.className))

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cppclassindex.h"
+#include "cppconstructions.h"
 #include "cppfacts.h"
 #include "cpphelperports.h"
 #include "cpplinkcontext.h"
@@ -34,7 +35,6 @@ private:
     /// constructor parameter or an expression.
     QString literalName(const CppValue &value, const CppLinkContext &ctx) const;
     QList<ChildNode> childNodesOf(int index) const;
-    ChildNode childNode(int child, const CppInstantiation &inst, const CppLinkContext &ctx) const;
     QList<Port> portsOf(int cls, bool inherited) const;
     /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
     int pluginClass(const QString &written, const CppFileFacts &file,
@@ -56,8 +56,9 @@ private:
     /// Namespace-level aliases of interface types from any file (typedefs in included
     /// headers): package -> alias -> target, and "" -> alias -> target for the workspace.
     QHash<QString, QHash<QString, QString>> m_interfaceAliases;
-    CppNameResolver m_names;  ///< after the containers it reads
-    CppHelperPorts m_helpers; ///< after the containers it reads
+    CppNameResolver m_names;          ///< after the containers it reads
+    CppHelperPorts m_helpers;         ///< after the containers it reads
+    CppConstructions m_constructions; ///< after the resolver and the helper ports
 };
 
 } // namespace rosarch

@@ -538,6 +538,36 @@ private Q_SLOTS:
             last = done;
         }
     }
+
+    // An executable's main builds two relays and a display: one instance per construction,
+    // named and wired by its own constructor arguments (a default written at the declaration,
+    // a __node rule in NodeOptions), in the executable's own composite.
+    void nodesBuiltInCodeTakeTheirArguments()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("cpp_nodes_in_main/ws")));
+        const Composite *chain = nullptr;
+        for (const Composite &c : r.architecture.composites)
+            if (c.executable == QLatin1String("relay_chain"))
+                chain = &c;
+        QVERIFY(chain);
+        QStringList parts;
+        for (const RosNodePart &p : chain->parts) {
+            QStringList ports;
+            for (const PartPort &pp : p.ports)
+                ports << pp.name;
+            parts << p.name + u' ' + p.typeName + u' ' + ports.join(u',');
+        }
+        QCOMPARE(parts,
+                 (QStringList{QStringLiteral("chain_display DisplayStage /marked_frames"),
+                              QStringLiteral("first_relay RelayStage /marked_copy,/frames"),
+                              QStringLiteral("relay RelayStage /marked_frames,/marked_copy")}));
+        QStringList channels;
+        for (const Channel &ch : chain->channels)
+            channels << ch.name;
+        channels.sort();
+        QCOMPARE(channels,
+                 (QStringList{QStringLiteral("/marked_copy"), QStringLiteral("/marked_frames")}));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestComposition)
