@@ -464,8 +464,9 @@ private:
             // One launch action started them all: an executable whose code builds several
             // nodes, given a name, which ROS 2 applies to every node of the process.
             const bool oneAction =
-                std::all_of(parts.cbegin() + 1, parts.cend(), [&](const RosNodePart *p) {
-                    return p->evidence == parts.first()->evidence;
+                std::all_of(parts.cbegin(), parts.cend(), [&](const RosNodePart *p) {
+                    const NodeInstance *n = m_instances.value(p->instanceId);
+                    return p->evidence == parts.first()->evidence && n && n->namedByLaunch;
                 });
             if (oneAction) {
                 QStringList types;

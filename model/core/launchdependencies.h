@@ -51,6 +51,9 @@ struct NodeInstance
     /// argument nobody sets): the names built from it are guesses too.
     bool guessedNamespace = false;
     bool guessedName = false;
+    /// The launch action named it (`name=`, `<node name=...>`): with an executable that builds
+    /// several nodes, every one of them gets that name.
+    bool namedByLaunch = false;
     QString container; ///< composable: the container instance id (or its name when not found)
     bool lifecycle = false;
     QList<QPair<QString, QString>> remaps; ///< evaluated from -> to (scope remaps first)

@@ -72,10 +72,10 @@ template <class F> void fields(ParameterSetting &v, F f)
 template <class F> void fields(NodeInstance &v, F f)
 {
     f(v.id, v.launchFileId, v.nodeKind, v.package, v.execName, v.className, v.classId, v.nodeName,
-      v.nameSpace, v.guessedNamespace, v.guessedName, v.container, v.lifecycle, v.remaps,
-      v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition, v.active,
-      v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts, v.modelConfig,
-      v.parentNode, v.constructedPorts);
+      v.nameSpace, v.guessedNamespace, v.guessedName, v.namedByLaunch, v.container, v.lifecycle,
+      v.remaps, v.guessedRemaps, v.parameters, v.effectiveParameters, v.plugins, v.condition,
+      v.active, v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts,
+      v.modelConfig, v.parentNode, v.constructedPorts);
 }
 template <class F> void fields(LaunchFileInstance &v, F f)
 {

@@ -374,6 +374,7 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     const bool composable = a.kind == LaunchAction::Kind::ComposableNode;
     n.execName = evaluate(composable ? a.plugin : a.executable, scope, frame, &u, a.evidence);
     const QString launchName = evaluate(a.name, scope, frame, &u, a.evidence, &n.guessedName);
+    n.namedByLaunch = !launchName.isEmpty();
     bool nsGuessed = false;
     const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence, &nsGuessed);
     n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));

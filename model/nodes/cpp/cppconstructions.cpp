@@ -44,14 +44,27 @@ ChildNode CppConstructions::child(int cls, const CppInstantiation &inst, const C
                    ? r.name
                    : QString();
     };
-    // The constructor called: the one with the fewest parameters that takes every argument
+    // The constructor called: of those that take every argument, the one whose string
+    // parameters meet the string arguments best, then the one with the fewest parameters
     // (defaults may be written only at the declaration, out of sight of the definition).
     const auto argumentCount = int(inst.arguments.size());
+    const auto fit = [&](const CppFunction &ctor) {
+        int score = 0;
+        for (int i = 0; i < argumentCount; ++i) {
+            const CppValue &arg = inst.arguments.at(i);
+            const bool text = arg.kind == CppValue::Kind::Literal ||
+                              (arg.kind == CppValue::Kind::Local && !arg.literal.isEmpty());
+            const QString type = ctor.parameterTypes.value(i);
+            score += text == (type.contains(QLatin1String("string")) ||
+                              type.contains(QLatin1String("char")));
+        }
+        return std::pair{score, -int(ctor.parameterNames.size())};
+    };
     const CppFunction *called = nullptr;
     for (const auto &ref : info.functions) {
         const CppFunction &ctor = *ref.function;
         if (ctor.isConstructor && argumentCount <= ctor.parameterNames.size() &&
-            (!called || ctor.parameterNames.size() < called->parameterNames.size()))
+            (!called || fit(ctor) > fit(*called)))
             called = &ctor;
     }
     if (!called)

@@ -37,6 +37,9 @@ struct CppValue
         /// A local handed uninitialised to `variable(...)` as its argument `index`: what that
         /// function assigns to its reference parameter (`getParameters(topic)`)
         OutArgument,
+        /// `costmap_.getName()`: the method `field`, without arguments, of the object `parts[0]`
+        /// (a member or a parameter), resolved when linking if that object is the node
+        ObjectCall,
         Expression, ///< anything else
     };
     Kind kind = Kind::None;

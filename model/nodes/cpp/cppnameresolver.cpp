@@ -62,6 +62,8 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
             return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), value.text, QString()};
         return r;
     case CppValue::Kind::FunctionParameter:
+        if (namesTheNode(value.index, ctx))
+            return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), value.text, QString()};
         if (const CppSubstitution *subst = substitutionFor(ctx); subst && depth < kMaxLinkDepth) {
             if (value.index >= 0 && value.index < subst->arguments.size())
                 return resolve(subst->arguments.at(value.index), subst->outer, depth + 1);
@@ -83,6 +85,19 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         return resolveField(value, ctx, depth + 1);
     case CppValue::Kind::Constant:
         return resolveConstant(value, ctx, depth + 1);
+    case CppValue::Kind::ObjectCall: {
+        // A method of the node itself, handed to a helper (`ClearCostmapService(node, *this)`).
+        CppLinkContext at;
+        if (depth >= kMaxLinkDepth || value.parts.empty() ||
+            !nodeHandleAt(value.parts.front(), ctx, &at, depth + 1))
+            return r;
+        CppValue call;
+        call.kind = CppValue::Kind::SelfCall;
+        call.variable = value.field;
+        call.text = value.text;
+        at.self = at.cls;
+        return resolve(call, at, depth + 1);
+    }
     case CppValue::Kind::OutArgument:
         if (depth < kMaxLinkDepth) {
             const CppBinding filled = outBinding(value.variable, value.index, ctx);
@@ -188,6 +203,11 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
             const QList<CppBinding> bindings = facts(c).bindings.value(member);
             if (bindings.isEmpty())
                 continue;
+            // `name_(name)` beside `LifecycleNode(name, ...)` in every constructor: the node's
+            // own name, whichever constructor made it.
+            if (std::all_of(bindings.cbegin(), bindings.cend(),
+                            [&](const CppBinding &b) { return holdsTheNodeName(b, c); }))
+                return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), text, QString()};
             for (const CppBinding &b : bindings) {
                 if (b.value.kind == CppValue::Kind::Parameter) {
                     const QString def = parameterDefault(b.value.parameter, ctx, depth + 1);
@@ -351,18 +371,60 @@ QString CppNameResolver::guardParameter(const CppValue &value, const CppLinkCont
     return {};
 }
 
+// A node class's constructor parameter that it hands its base class as the node's name
+// (`Costmap2DROS(name, ...) : LifecycleNode(name, ...), name_(name)`): where the class is not
+// constructed with known arguments, it is the instance's own name.
+bool CppNameResolver::namesTheNode(int index, const CppLinkContext &ctx) const
+{
+    if (!ctx.fn || !ctx.fn->isConstructor || substitutes(ctx) || ctx.cls < 0 || index < 0 ||
+        !m_index.at(ctx.cls).node)
+        return false;
+    for (const CppBaseInitializer &init : ctx.fn->baseInitializers)
+        if (init.firstArgument.kind == CppValue::Kind::FunctionParameter &&
+            init.firstArgument.index == index && lastSegment(init.name).contains(u"Node"))
+            return true;
+    return false;
+}
+
+// A member's binding in a constructor of node class `cls` that stores the name the constructor
+// hands its base class: the same parameter, or the same literal.
+bool CppNameResolver::holdsTheNodeName(const CppBinding &b, int cls) const
+{
+    if (!b.fn || !b.fn->isConstructor)
+        return false;
+    if (b.value.kind == CppValue::Kind::FunctionParameter)
+        return namesTheNode(b.value.index, CppLinkContext{cls, b.fn, b.file});
+    if (b.value.kind != CppValue::Kind::Literal || b.value.literal.isEmpty() ||
+        !m_index.at(cls).node)
+        return false;
+    for (const CppBaseInitializer &init : b.fn->baseInitializers)
+        if (init.firstArgument.kind == CppValue::Kind::Literal &&
+            init.firstArgument.literal == b.value.literal &&
+            lastSegment(init.name).contains(u"Node"))
+            return true;
+    return false;
+}
+
 bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &ctx,
                                    int depth) const
+{
+    CppLinkContext unused;
+    return nodeHandleAt(value, ctx, &unused, depth);
+}
+
+bool CppNameResolver::nodeHandleAt(const CppValue &value, const CppLinkContext &ctx,
+                                   CppLinkContext *at, int depth) const
 {
     if (depth > kMaxLinkDepth)
         return false;
     switch (value.kind) {
     case CppValue::Kind::SelfNode:
+        *at = ctx;
         return true;
     case CppValue::Kind::FunctionParameter:
         if (const CppSubstitution *subst = substitutionFor(ctx);
             subst && value.index >= 0 && value.index < subst->arguments.size())
-            return isNodeHandle(subst->arguments.at(value.index), subst->outer, depth + 1);
+            return nodeHandleAt(subst->arguments.at(value.index), subst->outer, at, depth + 1);
         // A plugin's `configure(parent_node, ...)`: a parameter typed as a node handle.
         return ctx.subst && ctx.subst->plugin && !substitutes(ctx) && ctx.fn &&
                isNodeHandleType(ctx.fn->parameterTypes.value(value.index));
@@ -371,11 +433,13 @@ bool CppNameResolver::isNodeHandle(const CppValue &value, const CppLinkContext &
             return false;
         for (int c : m_index.lineage(ctx.cls)) {
             for (const CppBinding &b : facts(c).bindings.value(value.variable)) {
-                if (b.value.kind == CppValue::Kind::SelfNode)
+                if (b.value.kind == CppValue::Kind::SelfNode) {
+                    *at = ctx;
                     return true;
+                }
                 if (b.value.kind == CppValue::Kind::FunctionParameter && b.fn &&
-                    isNodeHandle(b.value,
-                                 CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
+                    nodeHandleAt(b.value,
+                                 CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self}, at,
                                  depth + 1))
                     return true;
             }

@@ -37,6 +37,9 @@ public:
     QString guardParameter(const CppValue &value, const CppLinkContext &ctx) const;
     /// True when `value` is the node (`this`, `shared_from_this()`, a node parameter, ...).
     bool isNodeHandle(const CppValue &value, const CppLinkContext &ctx, int depth = 0) const;
+    /// As isNodeHandle, and where the node is: the context of the class whose `this` it is.
+    bool nodeHandleAt(const CppValue &value, const CppLinkContext &ctx, CppLinkContext *at,
+                      int depth = 0) const;
     /// The canonical interface type of a written type ("pkg/msg/T", or as written).
     QString resolveType(const QString &written, const CppLinkContext &ctx) const;
     /// `written` with namespace-level and member aliases expanded.
@@ -59,6 +62,8 @@ private:
     CppResolvedName resolveConstant(const CppValue &value, const CppLinkContext &ctx,
                                     int depth) const;
     QString packageOf(const CppLinkContext &ctx) const;
+    bool namesTheNode(int index, const CppLinkContext &ctx) const;
+    bool holdsTheNodeName(const CppBinding &b, int cls) const;
     CppBinding outBinding(const QString &function, int index, const CppLinkContext &ctx) const;
 
     const CppClassIndex &m_index;

@@ -266,6 +266,15 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 r.text = v.text;
                 return r;
             }
+            // `costmap_.getName()` on an object that may turn out to be the node itself
+            if (args.empty() && ts::isNull(shape.templateArguments) &&
+                (inner.kind == CppValue::Kind::FunctionParameter ||
+                 inner.kind == CppValue::Kind::Member)) {
+                v.kind = CppValue::Kind::ObjectCall;
+                v.field = shape.name;
+                v.parts.push_back(inner);
+                return v;
+            }
         }
         // `getName()`: a method of this object without arguments, resolved through what it
         // returns in the object's most derived class.
