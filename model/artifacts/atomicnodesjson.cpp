@@ -145,6 +145,20 @@ bool readPort(const Json &j, Port *p, QString *error)
     return true;
 }
 
+/// The "ports" array of `j` (none when absent), appended to `ports`.
+bool readPorts(const Json &j, QList<Port> *ports, QString *error)
+{
+    if (!j.contains("ports") || !j["ports"].is_array())
+        return true;
+    for (const Json &pj : j["ports"]) {
+        Port p;
+        if (!readPort(pj, &p, error))
+            return false;
+        ports->append(p);
+    }
+    return true;
+}
+
 } // namespace
 
 QByteArray AtomicNodesJson::write(const AtomicNodeList &list)
@@ -220,14 +234,8 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                 n.pluginInterface = JsonSupport::string(nj, "plugin_interface");
             if (nj.contains("evidence"))
                 n.evidence = EvidenceJson::fromJson(nj["evidence"]);
-            if (nj.contains("ports") && nj["ports"].is_array()) {
-                for (const Json &portJson : nj["ports"]) {
-                    Port p;
-                    if (!readPort(portJson, &p, error))
-                        return false;
-                    n.ports.append(p);
-                }
-            }
+            if (!readPorts(nj, &n.ports, error))
+                return false;
             if (nj.contains("child_nodes") && nj["child_nodes"].is_array()) {
                 for (const Json &cj : nj["child_nodes"]) {
                     if (!cj.is_object())
@@ -249,13 +257,8 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                     k.className = JsonSupport::string(kj, "class");
                     k.executable = JsonSupport::string(kj, "executable");
                     k.nodeName = JsonSupport::string(kj, "node_name");
-                    if (kj.contains("ports") && kj["ports"].is_array())
-                        for (const Json &pj : kj["ports"]) {
-                            Port p;
-                            if (!readPort(pj, &p, error))
-                                return false;
-                            k.ports.append(p);
-                        }
+                    if (!readPorts(kj, &k.ports, error))
+                        return false;
                     if (kj.contains("evidence"))
                         k.evidence = EvidenceJson::fromJson(kj["evidence"]);
                     n.constructions.append(k);
