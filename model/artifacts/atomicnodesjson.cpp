@@ -94,11 +94,14 @@ Json nodeJson(const AtomicNode &n)
             Json ports = Json::array();
             for (const Port &p : k.ports)
                 ports.push_back(portJson(p));
-            built.push_back({{"class", utf8(k.className)},
-                             {"executable", utf8(k.executable)},
-                             {"node_name", utf8(k.nodeName)},
-                             {"ports", ports},
-                             {"evidence", EvidenceJson::toJson(k.evidence)}});
+            Json kj = {{"class", utf8(k.className)},
+                       {"executable", utf8(k.executable)},
+                       {"node_name", utf8(k.nodeName)}};
+            if (!k.guard.isEmpty())
+                kj["guard"] = utf8(k.guard);
+            kj["ports"] = ports;
+            kj["evidence"] = EvidenceJson::toJson(k.evidence);
+            built.push_back(kj);
         }
         j["constructions"] = built;
     }
@@ -257,6 +260,7 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                     k.className = JsonSupport::string(kj, "class");
                     k.executable = JsonSupport::string(kj, "executable");
                     k.nodeName = JsonSupport::string(kj, "node_name");
+                    k.guard = JsonSupport::string(kj, "guard");
                     if (!readPorts(kj, &k.ports, error))
                         return false;
                     if (kj.contains("evidence"))

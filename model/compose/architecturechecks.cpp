@@ -305,9 +305,13 @@ private:
         const QString kind = key.section(QLatin1Char(' '), 0, 0);
         const QString name = key.section(QLatin1Char(' '), 1);
         QStringList types;
+        // An expression left as written is no type to compare; a node that runs only by a
+        // guess may be the alternative of the other type (an `if` in the launch file or in the
+        // main that builds the nodes).
         for (const QList<Use> *list : {&f.providers, &f.users})
-            for (const Use &u : *list) // an expression left as written is no type to compare
-                if (SystemPorts::isCanonicalType(u.port->type) && !types.contains(u.port->type))
+            for (const Use &u : *list)
+                if (SystemPorts::isCanonicalType(u.port->type) && !types.contains(u.port->type) &&
+                    !runsByGuess(*u.part))
                     types.append(u.port->type);
         if (types.size() > 1) {
             const Use &u = typed(f.providers.isEmpty() ? f.users : f.providers, f.users);

@@ -30,6 +30,9 @@ struct NodeConstruction
     QString className;  ///< the class as written at the construction
     QString executable; ///< the executable whose code builds it (set when stage 1 links it)
     QString nodeName;   ///< "" when the arguments do not decide it (the class's name then)
+    /// The `if` conditions the construction is under, as written ("" = always): constructions
+    /// in two branches are alternatives that may never run together.
+    QString guard;
     /// The class's ports that the arguments name (`create_publisher<T>(output, ...)`, `output`
     /// a constructor parameter), with the class port's id; the others are the class's.
     QList<Port> ports;

@@ -41,7 +41,7 @@ template <class F> void fields(ChildNode &v, F f)
 }
 template <class F> void fields(NodeConstruction &v, F f)
 {
-    f(v.className, v.executable, v.nodeName, v.ports, v.evidence);
+    f(v.className, v.executable, v.nodeName, v.guard, v.ports, v.evidence);
 }
 template <class F> void fields(AtomicNode &v, F f)
 {

@@ -280,7 +280,7 @@ QByteArray nodesPart(const AtomicNodeList &nodes, QList<Evidence> *locations)
             locations->append(c.evidence);
         }
         for (const NodeConstruction &k : n.constructions) { // an instance per construction
-            s << quint8(4) << k.executable << k.nodeName << k.evidence.file;
+            s << quint8(4) << k.executable << k.nodeName << k.guard << k.evidence.file;
             locations->append(k.evidence);
             for (const Port &p : k.ports)
                 s << p.id << p.name << qint32(p.nameOrigin) << p.parameter;

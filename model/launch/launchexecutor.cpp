@@ -382,7 +382,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.condition = a.condition.text;
     bool undecided = false;
     n.active = scope.active && conditionHolds(a, scope, frame, &u, &undecided);
-    n.activeByGuess = scope.activeByGuess || undecided;
+    const bool launchGuess = scope.activeByGuess || undecided;
+    n.activeByGuess = launchGuess;
     if (a.condition.isSet() && !n.active)
         n.active = false;
     QList<const AtomicNode *> classes = m_classes.started(n.package, n.execName, composable);
@@ -426,6 +427,9 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         n.nodeName = nodeNameOf(starts.front());
         if (starts.front().second)
             n.constructedPorts = starts.front().second->ports;
+        // built under an `if` of its main: it may be one of alternatives
+        n.activeByGuess =
+            n.activeByGuess || (starts.front().second && !starts.front().second->guard.isEmpty());
     } else {
         n.nodeName = launchName;
         if (classes.isEmpty() && !m_workspace.package(n.package)) { // code outside
@@ -471,6 +475,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         more.lifecycle = a.lifecycle || cls->lifecycle;
         more.nodeName = nodeNameOf(starts[k]);
         more.constructedPorts = starts[k].second ? starts[k].second->ports : QList<Port>();
+        more.activeByGuess =
+            launchGuess || (starts[k].second && !starts[k].second->guard.isEmpty());
         QList<Unresolved> reported; // the same launch line: already on `n`
         more.effectiveParameters = effectiveParameters(a, scope, frame, more, cls, &reported);
         more.plugins = pluginsOf(more.effectiveParameters);

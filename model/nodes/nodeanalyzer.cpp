@@ -216,7 +216,7 @@ void nameConstructedPorts(AtomicNode *n)
     }
     n->constructions.removeIf([&](const NodeConstruction &k) {
         return k.ports.isEmpty() && (k.nodeName.isEmpty() || k.nodeName == n->nodeName) &&
-               perExecutable.value(k.executable) < 2;
+               k.guard.isEmpty() && perExecutable.value(k.executable) < 2;
     });
 }
 

@@ -1,8 +1,14 @@
 #include "cppconstructions.h"
 
+#include "cppsyntax.h"
+
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace rosarch {
+
+using namespace cppsyntax;
 
 CppConstructions::CppConstructions(const CppClassIndex &index, const CppNameResolver &names,
                                    const CppHelperPorts &helpers)
@@ -69,9 +75,16 @@ ChildNode CppConstructions::child(int cls, const CppInstantiation &inst, const C
     }
     if (!called)
         return out;
+    // Of the initializers, those of a base class (not `topic_name_(topic_name)`).
+    const auto isBase = [&](const QString &initialized) {
+        const QString name = lastSegment(withoutTemplateArguments(initialized).remove(u' '));
+        return std::any_of(info.cls->bases.cbegin(), info.cls->bases.cend(), [&](const QString &b) {
+            return lastSegment(withoutTemplateArguments(b).remove(u' ')) == name;
+        });
+    };
     for (const CppBaseInitializer &init : called->baseInitializers) {
         if (init.firstArgument.kind != CppValue::Kind::FunctionParameter ||
-            init.firstArgument.index < 0)
+            init.firstArgument.index < 0 || !isBase(init.name))
             continue;
         if (init.firstArgument.index < argumentCount)
             out.nodeName = argumentText(init.firstArgument.index);
@@ -99,6 +112,7 @@ NodeConstruction CppConstructions::construction(int cls, const CppInstantiation 
     NodeConstruction out;
     out.className = inst.className;
     out.evidence = inst.evidence;
+    out.guard = inst.guard;
     out.nodeName = child(cls, inst, ctx, ownName).nodeName;
     // `NodeOptions().arguments({"--ros-args", "-r", "__node:=left"})` written at the call
     // renames the node as its command line would.

@@ -106,6 +106,7 @@ struct CppInstantiation
     QString className; ///< as written
     QString member;    ///< member initialized in a constructor initializer list ("" otherwise)
     QList<CppValue> arguments;
+    QString guard; ///< enclosing `if` conditions, as for a port call (a local construction)
     Evidence evidence;
 };
 

@@ -34,7 +34,7 @@ template <class F> void fields(CppPortCall &v, F f)
 }
 template <class F> void fields(CppInstantiation &v, F f)
 {
-    f(v.className, v.member, v.arguments, v.evidence);
+    f(v.className, v.member, v.arguments, v.guard, v.evidence);
 }
 template <class F> void fields(CppMethodCall &v, F f)
 {

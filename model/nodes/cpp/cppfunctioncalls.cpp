@@ -110,6 +110,10 @@ void CppFunctionExtractor::addInstantiation(const QString &className,
     inst.className = className;
     inst.member = member;
     inst.evidence = m_tree.evidence(where);
+    if (member.isEmpty() && !className.isEmpty()) {
+        CppValue tested;
+        m_portCalls.guardOf(where, &inst.guard, &tested);
+    }
     bool interesting = member.isEmpty() && !className.isEmpty();
     for (TSNode a : args) {
         CppValue v;
