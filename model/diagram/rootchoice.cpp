@@ -115,6 +115,7 @@ QList<LaunchRoot> RootChoice::roots(const Architecture &architecture,
         if (!c.parentId.isEmpty())
             continue;
         LaunchRoot root{c.instanceId, c.stem, c.file};
+        root.executable = !c.executable.isEmpty();
         QList<const Composite *> todo{&c};
         QSet<QString> seen;
         while (!todo.isEmpty()) {

@@ -11,12 +11,13 @@ namespace rosarch {
 /// A root launch file of the architecture, as the diagram's root picker lists it.
 struct LaunchRoot
 {
-    QString instanceId; ///< the root's launch-file instance ("lf1")
-    QString stem;       ///< "bringup" for bringup_launch.py
-    QString file;       ///< workspace-relative ("" when unknown)
-    int includes = 0;   ///< launch files it includes, transitively
-    int nodes = 0;      ///< node instances it starts, transitively
-    int unresolved = 0; ///< things the analysis could not decide in it and its includes
+    QString instanceId;      ///< the root's launch-file instance ("lf1")
+    QString stem;            ///< "bringup" for bringup_launch.py
+    QString file;            ///< workspace-relative ("" when unknown)
+    int includes = 0;        ///< launch files it includes, transitively
+    int nodes = 0;           ///< node instances it starts, transitively
+    int unresolved = 0;      ///< things the analysis could not decide in it and its includes
+    bool executable = false; ///< an executable that builds its own nodes, not a launch file
     bool operator==(const LaunchRoot &) const = default;
 };
 

@@ -44,6 +44,9 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
 QString DiagramRootPicker::entryText(const LaunchRoot &root)
 {
     const QString stem = visibleText(root.stem); // from a file name: no control characters
+    if (root.executable)                         // its main builds the nodes: it includes nothing
+        return root.nodes == 1 ? tr("%1 — executable, 1 node").arg(stem)
+                               : tr("%1 — executable, %2 nodes").arg(stem).arg(root.nodes);
     return root.includes == 1 ? tr("%1 — 1 include").arg(stem)
                               : tr("%1 — %2 includes").arg(stem).arg(root.includes);
 }

@@ -370,6 +370,13 @@ void TestDiagramNavigation::pickerListsRootsByName()
     QCOMPARE(shown, (QStringList{"lf2", "lf3", "lf1"}));
     picker.setCurrentRoot(QStringLiteral("lf1"));
     QCOMPARE(picker.currentRoot(), QStringLiteral("lf1"));
+    // An executable that builds its own nodes includes nothing: it says what it is.
+    LaunchRoot exe{QStringLiteral("lf4"), QStringLiteral("manual_composition"),
+                   QStringLiteral("src/composition/src/manual_composition.cpp")};
+    exe.nodes = 4;
+    exe.executable = true;
+    QCOMPARE(DiagramRootPicker::entryText(exe),
+             QStringLiteral("manual_composition — executable, 4 nodes"));
 }
 
 QTEST_MAIN(TestDiagramNavigation)
