@@ -49,13 +49,15 @@ public:
     static bool isArtifact(const QString &topName);
     /// How many files the last commit() linked unchanged instead of writing: for tests.
     int unchanged() const { return m_unchanged; }
+    /// Removes the staging folders beside the output folder whose run is gone (killed). begin()
+    /// does it; a run that finds the folder unchanged() writes nothing and does it too.
+    void removeStale() const;
 
 private:
     bool carryOver(const QString &from, const QString &to, int *budget) const;
     bool syncFolders(QString *error) const;
     bool writeStamp(const QByteArray &stamp, QString *error);
     bool commitInPlace(QStringList *written, QString *error);
-    void removeStale() const;
 
     QString m_dir;     ///< the output folder, absolute
     QString m_parent;  ///< its parent

@@ -71,8 +71,11 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
     const AtomicNodeList &nodes = recovery.nodes;
     // The folder holds these artifacts already, untouched since: nothing to write (a warm run).
     const QByteArray stamp = stampOf(recovery, withLaunch, madeFrom);
-    if (ArtifactCommit::unchanged(dir, stamp, written))
+    if (ArtifactCommit::unchanged(dir, stamp, written)) {
+        // Nothing to write, but what killed runs left beside the folder goes all the same.
+        ArtifactCommit(dir).removeStale();
         return true;
+    }
     // Everything goes into a fresh folder first, swapped in when every file is written: a
     // full disk, a failure or a kill leaves the previous artifacts as they were, never a mix.
     ArtifactCommit commit(dir);

@@ -281,6 +281,16 @@ private Q_SLOTS:
         const ino_t second = inode(stamp);
         QVERIFY(ArtifactWriter::writeAll(other, dir.path(), &written, &error));
         QVERIFY(inode(stamp) != second);
+
+        // A run killed while writing left its staging folder; the next run finds the result
+        // unchanged and writes nothing, but removes that folder all the same.
+        QTemporaryDir parent;
+        const QString out = parent.filePath(QStringLiteral("out"));
+        QVERIFY(ArtifactWriter::writeAll(sampleList(), out, &written, &error));
+        const QString dead = parent.filePath(QStringLiteral(".out.rosarch-writing-999999999-x"));
+        QVERIFY(QDir().mkpath(dead + QStringLiteral("/acd")));
+        QVERIFY(ArtifactWriter::writeAll(sampleList(), out, &written, &error));
+        QVERIFY(!QFileInfo::exists(dead));
     }
 
     void writerReportsUnwritableFolder()
