@@ -1,8 +1,6 @@
 #include "executablesystems.h"
 #include "nodeclasses.h"
 
-#include <algorithm>
-
 namespace rosarch {
 
 namespace {
@@ -35,14 +33,9 @@ ExecutableSystems::ExecutableSystems(const Workspace &workspace, const AtomicNod
         for (const Executable &exe : package.executables) {
             if (exe.kind == Executable::Kind::ComponentPlugin)
                 continue;
-            qsizetype built = 0; // nodes: a class built twice is two
-            for (const AtomicNode *cls : classes.started(package.name, exe.name, false))
-                built += std::max<qsizetype>(1, std::count_if(cls->constructions.cbegin(),
-                                                              cls->constructions.cend(),
-                                                              [&](const NodeConstruction &k) {
-                                                                  return k.executable == exe.name;
-                                                              }));
-            if (built < 2)
+            // nodes, not classes: a class built twice is two
+            if (NodeClasses::starts(classes.started(package.name, exe.name, false), exe.name)
+                    .size() < 2)
                 continue;
             const QString file = mainFile(workspace, package, exe);
             if (file.isEmpty() || m_systems.contains(file))

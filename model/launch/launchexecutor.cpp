@@ -404,17 +404,9 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     }
     // What the process runs: one node per class, or, for an executable that builds its nodes
     // in its own code, one per construction there (blueprint §1, "Nodes built in code").
-    QList<std::pair<const AtomicNode *, const NodeConstruction *>> starts;
-    for (const AtomicNode *cls : std::as_const(classes)) {
-        const qsizetype before = starts.size();
-        if (!composable)
-            for (const NodeConstruction &k : cls->constructions)
-                if (k.executable == n.execName)
-                    starts.append({cls, &k});
-        if (starts.size() == before)
-            starts.append({cls, nullptr});
-    }
-    const auto nodeNameOf = [&](const std::pair<const AtomicNode *, const NodeConstruction *> &s) {
+    const QList<NodeClasses::Start> starts =
+        NodeClasses::starts(classes, composable ? QString() : n.execName);
+    const auto nodeNameOf = [&](const NodeClasses::Start &s) {
         if (!launchName.isEmpty())
             return launchName;
         return s.second && !s.second->nodeName.isEmpty() ? s.second->nodeName : s.first->nodeName;

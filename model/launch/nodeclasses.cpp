@@ -35,6 +35,21 @@ QList<const AtomicNode *> NodeClasses::started(const QString &package, const QSt
     return m_byExecutable.value(package + QChar(0) + executable);
 }
 
+QList<NodeClasses::Start> NodeClasses::starts(const QList<const AtomicNode *> &classes,
+                                              const QString &executable)
+{
+    QList<Start> out;
+    for (const AtomicNode *cls : classes) {
+        const qsizetype before = out.size();
+        for (const NodeConstruction &k : cls->constructions)
+            if (k.executable == executable)
+                out.append({cls, &k});
+        if (out.size() == before)
+            out.append({cls, nullptr});
+    }
+    return out;
+}
+
 QList<const AtomicNode *> NodeClasses::elsewhere(const QString &executable, QString *builtBy) const
 {
     // A package may install an executable under another package's name

@@ -7,6 +7,8 @@
 #include <QList>
 #include <QString>
 
+#include <utility>
+
 namespace rosarch {
 
 /// Which classes of stage 1 a launch action starts: by package and executable, by component
@@ -21,6 +23,13 @@ public:
     /// the class of a component plugin.
     QList<const AtomicNode *> started(const QString &package, const QString &executable,
                                       bool plugin) const;
+    /// One node a process runs: its class, and the construction in the executable's own code
+    /// that makes it (null when the class is simply the executable's node).
+    using Start = std::pair<const AtomicNode *, const NodeConstruction *>;
+    /// The nodes a process of `executable`, whose classes are `classes`, runs: one per class, or,
+    /// for an executable that builds its nodes in its own code, one per construction there
+    /// (blueprint §1, "Nodes built in code").
+    static QList<Start> starts(const QList<const AtomicNode *> &classes, const QString &executable);
     /// The classes of `executable` when exactly one workspace package builds it (a launch file
     /// may name it under another package, which it is installed into); `builtBy` names it.
     QList<const AtomicNode *> elsewhere(const QString &executable, QString *builtBy) const;
