@@ -70,6 +70,13 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "any of them. Drop the name and let each node keep its own, or rename one node "
              "with a node-specific rule (--ros-args -r talker:__node:=new_name).",
              "warning"),
+        kind("namespace-doubled", "A namespace pushed twice",
+             "A launch file pushes a namespace (PushROSNamespace, <push-ros-namespace>, a node's "
+             "namespace) onto the same namespace that a file including it pushed already, so its "
+             "nodes run in /robot1/robot1 instead of /robot1: ROS 2 nests pushed namespaces. The "
+             "usual cause is an including file that both pushes the namespace and passes it down "
+             "as the namespace argument. Push it once.",
+             "warning"),
         kind("remap-target-unused", "Remap to a name nobody uses",
              "A launch file remaps a port to a name that no other node of the system uses on "
              "the other side, so the remap connects nothing, and a name on the other side is a "

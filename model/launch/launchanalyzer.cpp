@@ -75,6 +75,44 @@ QList<Port> viewedTopics(const Workspace &workspace, QList<Diagnostic> *diagnost
 }
 
 /// The index of the launch files, from what `readAhead` read when it did.
+/// The finding for a namespace that the files an action includes push again, for each of
+/// the values it pushes (one per robot, say), at the first push: that is where the namespace
+/// is pushed and also passed down, as a rule.
+Diagnostic doubledNamespaceFinding(const QList<const LaunchExecutor::DoubledNamespace *> &all)
+{
+    QStringList pushed, result;
+    QList<Evidence> again;
+    for (const LaunchExecutor::DoubledNamespace *dn : all) {
+        if (!result.contains(dn->result)) {
+            pushed << dn->pushed;
+            result << dn->result;
+        }
+        if (!again.contains(dn->evidence))
+            again << dn->evidence;
+    }
+    std::sort(again.begin(), again.end(), [](const Evidence &a, const Evidence &b) {
+        return std::tie(a.file, a.line) < std::tie(b.file, b.line);
+    });
+    const Evidence &site = again.front();
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.code = QStringLiteral("namespace-doubled");
+    d.message =
+        QStringLiteral("The namespace %1 pushed here is pushed again by %2:%3%4, a file "
+                       "this one includes, so its nodes run in %5: ROS 2 nests pushed "
+                       "namespaces. Push it once: drop this push, or stop passing the "
+                       "namespace down as an argument.")
+            .arg(pushed.join(QStringLiteral(" or ")), site.file)
+            .arg(site.line)
+            .arg(again.size() > 1 ? QStringLiteral(" (and %1 more places)").arg(again.size() - 1)
+                                  : QString())
+            .arg(result.join(QStringLiteral(" or ")));
+    d.evidence = all.front()->first;
+    for (const Evidence &e : std::as_const(again))
+        d.related.append({QStringLiteral("pushes %1 again").arg(pushed.front()), e});
+    return d;
+}
+
 LaunchFileIndex indexOf(const Workspace &workspace, const StageControl &control,
                         LaunchReadAhead *readAhead, QList<Diagnostic> *diagnostics)
 {
@@ -202,7 +240,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
     for (const LaunchFileInstance &i : std::as_const(out.instances))
         byId.insert(i.id, &i);
     QHash<QString, qsizetype> seen;
-    auto addAtSite = [&](Diagnostic d, const LaunchFileInstance &i) {
+    const auto rootOf = [&](const LaunchFileInstance &i) {
         const LaunchFileInstance *root = &i;
         // Bounded: parent ids form a tree, but a broken one must not loop.
         for (qsizetype up = 0; up < out.instances.size() && !root->parentId.isEmpty(); ++up) {
@@ -211,6 +249,10 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
                 break;
             root = parent;
         }
+        return root;
+    };
+    auto addAtSite = [&](Diagnostic d, const LaunchFileInstance &i) {
+        const LaunchFileInstance *root = rootOf(i);
         const QString system = root->file.isEmpty() ? root->type : root->file;
         const QString key = d.key() + QLatin1Char('\n') + QString::number(d.evidence.line);
         if (const auto it = seen.constFind(key); it != seen.cend()) {
@@ -256,6 +298,22 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
             d.evidence = i.evidence;
             addAtSite(d, i);
         }
+    // A namespace pushed twice, in the systems the checks judge (blueprint §1, "Checks run on
+    // entry points"): one finding per site, with the systems that reach it.
+    // One finding per first push, for all its values (one per robot of a loop) and for all
+    // the places that push them again.
+    QMap<QString, QList<const LaunchExecutor::DoubledNamespace *>> doubledAt;
+    QHash<QString, const LaunchFileInstance *> doubledIn;
+    for (const LaunchExecutor::DoubledNamespace &dn : executor.doubledNamespaces())
+        if (const LaunchFileInstance *i = byId.value(dn.launchFileInstance))
+            if (out.entryPoints.isEmpty() || out.entryPoints.contains(rootOf(*i)->file)) {
+                const QString key = QStringLiteral("%1:%2").arg(dn.first.file).arg(dn.first.line);
+                doubledAt[key].append(&dn);
+                doubledIn.insert(key + QLatin1Char('\n') + rootOf(*i)->file, i);
+            }
+    for (auto it = doubledIn.cbegin(); it != doubledIn.cend(); ++it)
+        addAtSite(doubledNamespaceFinding(doubledAt.value(it.key().section(u'\n', 0, 0))),
+                  *it.value());
     return out;
 }
 

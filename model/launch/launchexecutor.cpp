@@ -215,6 +215,23 @@ void LaunchExecutor::addToNamespace(int instance, const QString &ns, const QStri
         m_out->instances[instance].namespaces[nsKey(ns)].append(id);
 }
 
+void LaunchExecutor::noteDoubledNamespace(const QString &pushed, bool guessed, const Scope &scope,
+                                          const Frame &frame, const Evidence &evidence)
+{
+    QString in = pushed.trimmed();
+    while (in.endsWith(QLatin1Char('/')))
+        in.chop(1);
+    const Evidence &outer = scope.namespacePush;
+    if (frame.instance < 0 || frame.collectOnly || guessed || scope.guessedNamespace ||
+        in.isEmpty() || in.startsWith(QLatin1Char('/')) || outer.file.isEmpty() ||
+        outer.file == evidence.file ||
+        !(scope.nameSpace == QLatin1Char('/') + in ||
+          scope.nameSpace.endsWith(QLatin1Char('/') + in)))
+        return;
+    m_doubled.append({m_out->instances[frame.instance].id, in, joinNamespace(scope.nameSpace, in),
+                      evidence, outer});
+}
+
 void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, Frame &frame,
                              int depth)
 {
@@ -264,9 +281,11 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
                 bool guessed = false;
                 const QString pushed =
                     evaluate(a.nameSpace, scope, frame, unresolvedSink(), a.evidence, &guessed);
+                noteDoubledNamespace(pushed, guessed, scope, frame, a.evidence);
                 scope.guessedNamespace =
                     joinedNamespaceGuessed(scope.guessedNamespace, pushed, guessed);
                 scope.nameSpace = joinNamespace(scope.nameSpace, pushed);
+                scope.namespacePush = a.evidence;
             }
             break;
         case LaunchAction::Kind::SetRemap:
@@ -377,6 +396,9 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     n.namedByLaunch = !launchName.isEmpty();
     bool nsGuessed = false;
     const QString ns = evaluate(a.nameSpace, scope, frame, &u, a.evidence, &nsGuessed);
+    // A container's namespace names the container only: its components run in the scope's.
+    if (a.kind != LaunchAction::Kind::ComposableContainer)
+        noteDoubledNamespace(ns, nsGuessed, scope, frame, a.evidence);
     n.nameSpace = nsKey(joinNamespace(scope.nameSpace, ns));
     n.guessedNamespace = joinedNamespaceGuessed(scope.guessedNamespace, ns, nsGuessed);
     n.condition = a.condition.text;

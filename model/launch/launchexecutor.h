@@ -60,6 +60,18 @@ public:
     void setOutput(LaunchDependencies *out) { m_out = out; }
     /// Records each container a LoadComposableNodes does not find in `sink` (null: none).
     void setUnfoundContainers(QList<UnfoundContainer> *sink) { m_unfound = sink; }
+    /// A namespace pushed onto itself (`/robot1/robot1`): a file pushes a namespace that an
+    /// including file has pushed already, typically by both pushing it and passing it down as
+    /// an argument. Found while running; the analyzer reports it once per site.
+    struct DoubledNamespace
+    {
+        QString launchFileInstance; ///< the id of the instance whose action pushes again
+        QString pushed;             ///< the namespace pushed again ("robot1")
+        QString result;             ///< where its nodes run ("/robot1/robot1")
+        Evidence evidence;          ///< the action that pushes again
+        Evidence first;             ///< the including file's push
+    };
+    const QList<DoubledNamespace> &doubledNamespaces() const { return m_doubled; }
     /// The container a LoadComposableNodes in namespace `nameSpace` names by `target`, plain or
     /// fully qualified; the last node that matches() is the one. matches() is asked of every
     /// node made so far, for each load: it builds no name for a node whose name cannot match.
@@ -95,6 +107,7 @@ private:
         QSet<QString> guessed;
         QString nameSpace;             ///< "" = root
         bool guessedNamespace = false; ///< nameSpace rests on a guess (a pushed guessed value)
+        Evidence namespacePush;        ///< the action that pushed the namespace's last part, if any
         QList<QPair<QString, QString>> remaps;
         QList<int> guessedRemaps;           ///< indices into remaps whose target is a guess
         QList<ParameterSetting> parameters; ///< SetParameter: source "launch"
@@ -136,6 +149,10 @@ private:
     bool conditionHolds(const LaunchAction &a, const Scope &scope, const Frame &frame,
                         QList<Unresolved> *unresolved, bool *undecided = nullptr) const;
     void addToNamespace(int instance, const QString &ns, const QString &id);
+    /// Notes a DoubledNamespace when `pushed` (relative, decided) repeats the end of the scope's
+    /// namespace that an action of another file pushed.
+    void noteDoubledNamespace(const QString &pushed, bool guessed, const Scope &scope,
+                              const Frame &frame, const Evidence &evidence);
     /// The parameters a node instance ends up with (blueprint §1): scope values, then the
     /// node's own values and parameter files in order, a later value over an earlier one; the
     /// declared defaults of the class's parameter-derived names and guards last.
@@ -169,6 +186,7 @@ private:
     QSet<QString> m_missingParameterFiles;          ///< reported once per path
     QString m_idPrefix;
     QList<UnfoundContainer> *m_unfound = nullptr;
+    QList<DoubledNamespace> m_doubled;
 };
 
 /// The folder of a workspace-relative launch file ("" at the top).

@@ -26,7 +26,8 @@ import sys
 ARCHITECTURE_CODES = [
     "topic-unpublished", "topic-unheard", "remap-target-unused", "remap-unmatched",
     "type-mismatch", "duplicate-server", "unserved-client", "qos-incompatible",
-    "duplicate-node-name", "duplicate-package", "parameter-undeclared", "parameter-type",
+    "duplicate-node-name", "process-renamed", "namespace-doubled", "duplicate-package",
+    "parameter-undeclared", "parameter-type",
     "parameter-missing", "parameter-range",
 ]
 
