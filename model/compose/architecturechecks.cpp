@@ -78,7 +78,13 @@ public:
         for (const QString &key : m_ports.keys())
             checkName(key);
         checkNodeNames();
+        if (m_ports.hintsCut() && m_cutAt.isEmpty())
+            m_cutAt = m_current;
     }
+
+    /// The system whose checks spent the budget of the search for misspelt names ("" when
+    /// none did): from there on, open ports were judged without that evidence.
+    const QString &hintsCutAt() const { return m_cutAt; }
 
 private:
     void collect(const Composite &c, int depth)
@@ -534,7 +540,8 @@ private:
     };
     QHash<QString, QList<RemapElsewhere>> m_remapsAt; ///< a port's place -> remaps of it
     QList<Diagnostic> *m_out;
-    SystemPorts m_ports;                                ///< of the system being checked
+    SystemPorts m_ports; ///< of the system being checked
+    QString m_cutAt;
     QHash<QString, QList<const RosNodePart *>> m_named; ///< fully qualified name -> parts
     QStringList m_nodeOrder;
     QHash<QString, int> m_seen; ///< a finding's text and place -> its index in m_out
@@ -554,6 +561,17 @@ QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const Atomic
     for (const Composite &c : arch.composites)
         if (c.parentId.isEmpty() && CheckScope::isJudged(launch, c.file))
             checker.checkRoot(c);
+    if (!checker.hintsCutAt().isEmpty()) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Info;
+        d.code = QStringLiteral("check-limit");
+        d.message = QStringLiteral("The search for misspelt names spent its budget (%1 letters "
+                                   "compared) in the system of %2: open ports judged after that "
+                                   "were judged without it, so a misspelling may go unreported.")
+                        .arg(SystemPorts::kHintBudget)
+                        .arg(checker.hintsCutAt());
+        out.append(d);
+    }
     RemapChecks::run(nodes, launch, &out);
     // A file included twice reports the same remap (same launch line) twice.
     Diagnostic::removeDuplicates(&out);

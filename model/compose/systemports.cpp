@@ -98,7 +98,7 @@ const PortUse *SystemPorts::misspelling(const QString &family, const QString &na
 {
     // A name this long is no misspelling a person would make; and past the run's budget,
     // it stops looking.
-    if (name.size() > 256 || m_hintWork > 50'000'000)
+    if (name.size() > 256 || hintsCut())
         return nullptr;
     const qsizetype prefix = family.size() + 1;
     // one letter apart: the lengths differ by at most one

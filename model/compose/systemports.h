@@ -60,6 +60,10 @@ public:
     /// the analysis left as written.
     static bool isCanonicalType(const QString &type);
 
+    /// misspelling() stopped looking: its work budget for the run is spent.
+    bool hintsCut() const { return m_hintWork > kHintBudget; }
+    static constexpr qint64 kHintBudget = 50'000'000;
+
 private:
     QHash<QString, PortFamily> m_families;
     QStringList m_order;

@@ -231,6 +231,12 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "The analysis worker stopped outside the work on any one file; the stages it "
              "finished are kept and the later ones have no result.",
              "error"),
+        kind("check-limit", "Architecture checks cut short",
+             "The architecture checks look for a misspelt counterpart of every open port; that "
+             "search has a work budget per run so that the checks stay linear. Once it is spent, "
+             "the remaining open ports are judged without it, so a misspelling there may go "
+             "unreported. Check fewer systems at once (--launch-root) to judge them fully.",
+             "note"),
         kind("evaluation-limit", "Value too large",
              "Evaluating a value (a CMake variable, a launch argument or substitution) made it "
              "longer than the size budget, usually by doubling it in a loop; it is left "

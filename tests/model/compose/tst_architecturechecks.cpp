@@ -337,6 +337,41 @@ private Q_SLOTS:
                          missing.arg(QStringLiteral("image"), QStringLiteral("/camera/image"))}));
     }
 
+    void aSpentHintBudgetIsSaid()
+    {
+        // A node with 3,000 open inputs of one length beside another node: looking for a
+        // misspelt counterpart of each compares every name of a near length, which passes the
+        // search's budget; the run says so instead of dropping that evidence silently.
+        QTemporaryDir dir;
+        QByteArray many = "from rclpy.node import Node\nfrom std_msgs.msg import String\n\n"
+                          "class Many(Node):\n    def __init__(self):\n"
+                          "        super().__init__('many')\n";
+        for (int i = 0; i < 3000; ++i)
+            many += QStringLiteral("        self.create_subscription(String, 'in_%1', None, 1)\n")
+                        .arg(i, 4, 10, QLatin1Char('0'))
+                        .toLatin1();
+        test::healthyPythonPackage(dir.path(), "many = pkg.many:main");
+        test::writeFile(dir.path() + "/src/pkg/pkg/many.py", many);
+        test::writeFile(dir.path() + "/src/pkg/launch/all.launch.xml",
+                        "<launch>\n  <node pkg=\"pkg\" exec=\"good\"/>\n"
+                        "  <node pkg=\"pkg\" exec=\"many\"/>\n</launch>\n");
+        const Recovery r = recoverWorkspace(dir.path());
+        QStringList limits;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            if (d.code == QLatin1String("check-limit"))
+                limits << d.message;
+        QCOMPARE(limits, QStringList{QStringLiteral(
+                             "The search for misspelt names spent its budget (50000000 letters "
+                             "compared) in the system of src/pkg/launch/all.launch.xml: open "
+                             "ports judged after that were judged without it, so a misspelling "
+                             "may go unreported.")});
+        // A system of a few names spends nothing of it.
+        QCOMPARE(test::diagnosticsWithCode(
+                     recoverWorkspace(test::dataDir(QStringLiteral("check_scope/ws"))),
+                     QStringLiteral("check-limit")),
+                 QStringList{});
+    }
+
     void aRemapForALaterVersionOfTheNodeSaysSo()
     {
         // A bringup package of version 2.0.0 remaps an input that version 1.0.0 of the node's
