@@ -515,10 +515,10 @@ void MainWindow::exportArtifactsDialog()
 bool MainWindow::exportArtifactsTo(const QString &folder)
 {
     QStringList written;
-    QString error;
+    QString error, notice;
     // The model as accepted: accepted groupings are nested composites in the CCDs, accepted
     // names resolve ports, exactly as `rosarch recover` writes it for the same decisions.
-    if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error)) {
+    if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error, {}, &notice)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\n"
                      "Choose a folder you can write to, or free some space, and export again.")
@@ -529,6 +529,8 @@ bool MainWindow::exportArtifactsTo(const QString &folder)
     const QString message = written.size() == 1 ? tr("Exported 1 file to %1")
                                                 : tr("Exported %1 files to %2").arg(written.size());
     m_logView->appendLog(message.arg(QDir::toNativeSeparators(folder)));
+    if (!notice.isEmpty())
+        m_logView->appendLog(notice);
     statusBar()->showMessage(message.arg(QDir::toNativeSeparators(folder)), 5000);
     return true;
 }

@@ -185,11 +185,14 @@ int recover(const QStringList &arguments)
     for (const Orphan &o : std::as_const(orphans))
         err << ProjectCommand::describe(o, run.projectFile()) << '\n';
     QStringList written;
-    QString error;
-    if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error, madeFrom)) {
+    QString error, notice;
+    if (!ArtifactWriter::writeAll(recovery, parser.value(outOption), &written, &error, madeFrom,
+                                  &notice)) {
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }
+    if (!notice.isEmpty())
+        err << "note: " << visibleText(notice) << '\n';
     int rendered = 0;
     if (parser.isSet(renderOption)) {
         QStringList diagrams;

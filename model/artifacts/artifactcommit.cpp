@@ -169,6 +169,8 @@ bool ArtifactCommit::begin(QString *error)
     }
     m_staging = QFile::decodeName(pattern);
     m_inPlace = true;
+    m_inPlaceReason = m_dir == m_parent ? QStringLiteral("the output folder is a root folder")
+                                        : QStringLiteral("its parent folder cannot be written");
     return true;
 }
 
@@ -308,15 +310,22 @@ bool ArtifactCommit::commit(QStringList *written, QString *error, const QByteArr
     if (!stamp.isEmpty() && !writeStamp(stamp, error))
         return false;
     int budget = kMaxCarried;
-    bool carried = true;
+    QString notCarried;
     for (const QString &name : namesIn(m_dir))
-        if (!isArtifact(name) && carried)
-            carried = carryOver(m_dir + QLatin1Char('/') + name,
-                                m_staging + QLatin1Char('/') + name, &budget);
+        if (!isArtifact(name) && notCarried.isEmpty() &&
+            !carryOver(m_dir + QLatin1Char('/') + name, m_staging + QLatin1Char('/') + name,
+                       &budget))
+            notCarried =
+                budget < 0 ? QStringLiteral("it holds more than %1 other entries").arg(kMaxCarried)
+                           : QStringLiteral("its entry %1 cannot be carried over (a "
+                                            "special file, or another file system)")
+                                 .arg(name);
     if (!syncFolders(error))
         return false;
-    if (carried && renameat2(AT_FDCWD, native(m_staging).constData(), AT_FDCWD,
-                             native(m_dir).constData(), RENAME_EXCHANGE) == 0) {
+    const bool swapped =
+        notCarried.isEmpty() && renameat2(AT_FDCWD, native(m_staging).constData(), AT_FDCWD,
+                                          native(m_dir).constData(), RENAME_EXCHANGE) == 0;
+    if (swapped) {
         // The previous result is now in the staging folder's place.
         if (const int fd = ::open(native(m_parent).constData(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
             fd >= 0) {
@@ -331,6 +340,10 @@ bool ArtifactCommit::commit(QStringList *written, QString *error, const QByteArr
         return true;
     }
     // Not swappable here: move the fresh folder inside the output folder and go on in place.
+    m_inPlaceReason =
+        notCarried.isEmpty()
+            ? QStringLiteral("the file system cannot exchange two folders: %1").arg(systemError())
+            : notCarried;
     const QString inside = m_dir + QStringLiteral("/.rosarch-writing-%1").arg(getpid());
     removeTree(inside);
     for (const QString &name : namesIn(m_staging))

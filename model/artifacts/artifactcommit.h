@@ -47,6 +47,10 @@ public:
     /// True for the names at the top of an output folder that belong to the artifacts (and are
     /// replaced as a whole): the JSON files, the diagram folders, staging folders.
     static bool isArtifact(const QString &topName);
+    /// Why the artifacts were moved in one by one instead of swapped in one step ("" when they
+    /// were swapped): a run killed meanwhile could then leave old and new files mixed, which the
+    /// person is told.
+    const QString &inPlaceReason() const { return m_inPlaceReason; }
     /// How many files the last commit() linked unchanged instead of writing: for tests.
     int unchanged() const { return m_unchanged; }
     /// Removes the staging folders beside the output folder whose run is gone (killed). begin()
@@ -64,6 +68,7 @@ private:
     QString m_prefix;  ///< ".<name>.rosarch-writing-": the staging folders' names begin so
     QString m_staging; ///< the fresh folder (beside m_dir, or inside it in place)
     bool m_inPlace = false;
+    QString m_inPlaceReason;
     QStringList m_files;   ///< relative paths added, in order
     QStringList m_folders; ///< relative folders made in the staging folder
     int m_unchanged = 0;

@@ -56,19 +56,22 @@ bool ArtifactWriter::writeAll(const AtomicNodeList &nodes, const QString &dir, Q
 {
     Recovery r;
     r.nodes = nodes;
-    return writeAll(r, dir, written, error, false, {});
+    return writeAll(r, dir, written, error, false, {}, nullptr);
 }
 
 bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                              QString *error, const QByteArray &madeFrom)
+                              QString *error, const QByteArray &madeFrom, QString *notice)
 {
-    return writeAll(recovery, dir, written, error, true, madeFrom);
+    return writeAll(recovery, dir, written, error, true, madeFrom, notice);
 }
 
 bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                              QString *error, bool withLaunch, const QByteArray &madeFrom)
+                              QString *error, bool withLaunch, const QByteArray &madeFrom,
+                              QString *notice)
 {
     const AtomicNodeList &nodes = recovery.nodes;
+    if (notice)
+        notice->clear();
     // The folder holds these artifacts already, untouched since: nothing to write (a warm run).
     const QByteArray stamp = stampOf(recovery, withLaunch, madeFrom);
     if (ArtifactCommit::unchanged(dir, stamp, written)) {
@@ -124,7 +127,14 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
                 return false;
     }
 
-    return commit.commit(written, error, stamp);
+    if (!commit.commit(written, error, stamp))
+        return false;
+    if (notice && !commit.inPlaceReason().isEmpty())
+        *notice = QStringLiteral("The artifacts in %1 were replaced file by file, not in one step, "
+                                 "because %2: a run killed meanwhile could have left old and new "
+                                 "files mixed.")
+                      .arg(dir, commit.inPlaceReason());
+    return true;
 }
 
 } // namespace rosarch

@@ -22,15 +22,19 @@ public:
     /// `madeFrom`, when given, is a digest of what decided `recovery` (WorkspaceRun::recover):
     /// the artifacts' stamp is then made from it, not from the recovery (which costs a tenth of
     /// a warm run on navigation2).
+    /// `notice`, when given, receives what the person should know of a write that succeeded:
+    /// that the folder could not be replaced in one step, and why ("" when it was).
     static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                         QString *error, const QByteArray &madeFrom = {});
+                         QString *error, const QByteArray &madeFrom = {},
+                         QString *notice = nullptr);
     /// Stage 1 only (no launch_dependencies.json).
     static bool writeAll(const AtomicNodeList &nodes, const QString &dir, QStringList *written,
                          QString *error);
 
 private:
     static bool writeAll(const Recovery &recovery, const QString &dir, QStringList *written,
-                         QString *error, bool withLaunch, const QByteArray &madeFrom);
+                         QString *error, bool withLaunch, const QByteArray &madeFrom,
+                         QString *notice);
 };
 
 } // namespace rosarch

@@ -246,6 +246,39 @@ private Q_SLOTS:
             QStringList{QStringLiteral("out")});
     }
 
+    void aFolderThatCannotBeSwappedIsSaid()
+    {
+        // A FIFO in the output folder cannot be carried into the fresh one: the artifacts are
+        // moved in one by one, the FIFO stays, and the writer says why instead of staying
+        // silent about the weaker guarantee. A folder that can be swapped says nothing.
+        QTemporaryDir parent;
+        const QString out = parent.filePath(QStringLiteral("out"));
+        QStringList written;
+        QString error, notice = QStringLiteral("unset");
+        Recovery r;
+        QVERIFY2(ArtifactWriter::writeAll(r, out, &written, &error, {}, &notice),
+                 qPrintable(error));
+        QCOMPARE(notice, QString());
+        QVERIFY(::mkfifo(QFile::encodeName(out + QStringLiteral("/pipe")).constData(), 0600) == 0);
+        r.nodes.diagnostics.append({Diagnostic::Severity::Info,
+                                    QStringLiteral("x"),
+                                    QStringLiteral("changed"),
+                                    {},
+                                    {},
+                                    {},
+                                    {}});
+        QVERIFY2(ArtifactWriter::writeAll(r, out, &written, &error, {}, &notice),
+                 qPrintable(error));
+        QCOMPARE(notice, QStringLiteral("The artifacts in %1 were replaced file by file, not in "
+                                        "one step, because its entry pipe cannot be carried "
+                                        "over (a special file, or another file system): a run "
+                                        "killed meanwhile could have left old and new files "
+                                        "mixed.")
+                             .arg(out));
+        QVERIFY(test::readFile(out + QStringLiteral("/diagnostics.json")).contains("changed"));
+        QVERIFY(QFileInfo(out + QStringLiteral("/pipe")).exists());
+    }
+
     void anUnchangedResultIsNotWrittenAgain()
     {
         // Issue 43: a warm run wrote 20 MB of unchanged artifacts again. A stamp of what they
