@@ -418,7 +418,7 @@ QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *par
         add(expression ? tr("Set &Name\u2026") : tr("Re&name\u2026"), Qt::Key_F2,
             [this](const Element &x) { rename(x); });
         QAction *type = add(tr("Set &Type\u2026"), {}, [this](const Element &x) { setType(x); });
-        if (p && !isCanonicalType(p->type))
+        if (p && !isCanonicalInterfaceType(p->type))
             type->setText(tr("Set &Type\u2026 (unknown)"));
         add(tr("Re&move Port\u2026"), QKeySequence::Delete,
             [this](const Element &x) { remove(x); });

@@ -32,7 +32,7 @@ QStringList CorrectionController::knownTypes()
     QSet<QString> types;
     for (const AtomicNode &n : m_document->accepted().nodes.nodes)
         for (const Port &p : n.ports)
-            if (isCanonicalType(p.type))
+            if (isCanonicalInterfaceType(p.type))
                 types.insert(p.type);
     QStringList out(types.cbegin(), types.cend());
     out.sort();
@@ -101,7 +101,7 @@ bool CorrectionController::setType(const Element &e)
         return false;
     CorrectionDialog dialog(
         tr("Set Type"),
-        isCanonicalType(p->type)
+        isCanonicalInterfaceType(p->type)
             ? tr("Override the interface type of the %1 %2.")
                   .arg(portKindName(p->kind), portName(*p))
             : tr("Analysis could not decide the interface type of the %1 %2 (%3).")
@@ -109,7 +109,7 @@ bool CorrectionController::setType(const Element &e)
                        p->type.isEmpty() ? tr("unknown") : p->type),
         CorrectionDialog::Type, m_window);
     dialog.setTypeChoices(knownTypes());
-    dialog.setType(isCanonicalType(p->type) ? p->type : QString());
+    dialog.setType(isCanonicalInterfaceType(p->type) ? p->type : QString());
     dialog.setTypeRequired(true);
     if (!ask(dialog) || dialog.type() == p->type)
         return false;

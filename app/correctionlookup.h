@@ -5,7 +5,6 @@
 #include "composition.h"
 #include "launchdependencies.h"
 
-#include <QRegularExpression>
 #include <QString>
 
 namespace rosarch::CorrectionLookup {
@@ -51,14 +50,6 @@ inline const Channel *findChannel(const Architecture &architecture, const QStrin
             if (channelFamily(ch.kind) + u':' + ch.name == key)
                 return &ch;
     return nullptr;
-}
-
-/// A type as analysis writes a known one: "pkg/msg/T", "pkg/srv/T", "pkg/action/T".
-inline bool isCanonicalType(const QString &type)
-{
-    static const QRegularExpression canonical(
-        QStringLiteral("^[A-Za-z][A-Za-z0-9_]*/(msg|srv|action)/[A-Za-z][A-Za-z0-9_]*$"));
-    return canonical.match(type).hasMatch();
 }
 
 inline QString portName(const Port &p)

@@ -6,7 +6,8 @@
 Counts, per folder and in all: node names that are a variable's usual name (node_name, name,
 options), port names that are no ROS name although not marked as expressions (an enum constant,
 C++ text), the same port (kind, name, type, place) listed twice in a class, and message types
-that are neither canonical (pkg/msg/T, pkg/srv/T, pkg/action/T) nor empty. The same checks but
+that are neither canonical (pkg/msg/T, pkg/srv/T, pkg/action/T) nor empty nor marked
+`"type_resolved": false` (an expression left as written). The same checks but
 the last run over every fixture in tst_fixtures (modelInvariantViolations). Exit 1 when any
 holds a violation.
 """
@@ -41,7 +42,8 @@ def check(folder):
                 if p.get("name_origin") != "expression" and p["name"] and \
                         not ROS_NAME.match(p["name"]):
                     found["port name"].append(f"{node['class_name']}: {p['name']}")
-                if p.get("type") and not TYPE.match(p["type"]):
+                if p.get("type") and not TYPE.match(p["type"]) and \
+                        p.get("type_resolved", True):
                     found["type"].append(f"{node['class_name']}: {p['type']}")
     return ports, found
 

@@ -19,6 +19,8 @@ Json portJson(const PartPort &p)
     if (!p.nameAsWritten.isEmpty())
         j["name_as_written"] = utf8(p.nameAsWritten);
     j["type"] = utf8(p.type);
+    if (!p.type.isEmpty() && !isCanonicalInterfaceType(p.type))
+        j["type_resolved"] = false;
     if (!p.resolved || p.guessed)
         j["unresolved"] = true;
     if (p.parameterDerived)

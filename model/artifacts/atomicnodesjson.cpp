@@ -20,6 +20,8 @@ Json portJson(const Port &p)
     j["kind"] = utf8(portKindName(p.kind));
     j["name"] = utf8(p.name);
     j["type"] = utf8(p.type);
+    if (!p.typeIsResolved()) // an expression as written, not a type ROS knows
+        j["type_resolved"] = false;
     j["callback"] = utf8(p.callback);
     j["name_origin"] = utf8(nameOriginName(p.nameOrigin));
     if (!p.nameExpression.isEmpty())

@@ -256,8 +256,8 @@ private:
     /// names it.
     static bool typesAgree(const PartPort &a, const PartPort &b)
     {
-        return a.type == b.type || !SystemPorts::isCanonicalType(a.type) ||
-               !SystemPorts::isCanonicalType(b.type);
+        return a.type == b.type || !isCanonicalInterfaceType(a.type) ||
+               !isCanonicalInterfaceType(b.type);
     }
 
     /// A debug, visualisation, diagnostics or processing-time output, by its resolved name or
@@ -300,7 +300,7 @@ private:
     {
         for (const QList<Use> *list : {&first, &then})
             for (const Use &u : *list)
-                if (SystemPorts::isCanonicalType(u.port->type))
+                if (isCanonicalInterfaceType(u.port->type))
                     return u;
         return first.first();
     }
@@ -316,7 +316,7 @@ private:
         // main that builds the nodes).
         for (const QList<Use> *list : {&f.providers, &f.users})
             for (const Use &u : *list)
-                if (SystemPorts::isCanonicalType(u.port->type) && !types.contains(u.port->type) &&
+                if (isCanonicalInterfaceType(u.port->type) && !types.contains(u.port->type) &&
                     !runsByGuess(*u.part))
                     types.append(u.port->type);
         if (types.size() > 1) {
@@ -324,7 +324,7 @@ private:
             QList<Diagnostic::Related> others;
             for (const QList<Use> *list : {&f.providers, &f.users})
                 for (const Use &o : *list)
-                    if (o.port != u.port && SystemPorts::isCanonicalType(o.port->type) &&
+                    if (o.port != u.port && isCanonicalInterfaceType(o.port->type) &&
                         o.port->type != u.port->type)
                         others << related(o, isProvidingPort(o.port->kind)
                                                  ? QStringLiteral("provides")

@@ -1,7 +1,5 @@
 #include "systemports.h"
 
-#include <QRegularExpression>
-
 #include <algorithm>
 #include <cstdlib>
 
@@ -125,7 +123,7 @@ const PortUse *SystemPorts::namespaceSlip(const QString &family, const QString &
                                           const PortUse &use, bool wantProviders,
                                           QString *found) const
 {
-    if (!isCanonicalType(use.port->type) || !name.startsWith(u'/'))
+    if (!isCanonicalInterfaceType(use.port->type) || !name.startsWith(u'/'))
         return nullptr;
     const QString prefix = family + QLatin1Char(' ');
     for (const QString &key : m_byLastSegment.value(keyOf(family, name.section(u'/', -1)))) {
@@ -144,13 +142,6 @@ const PortUse *SystemPorts::namespaceSlip(const QString &family, const QString &
             }
     }
     return nullptr;
-}
-
-bool SystemPorts::isCanonicalType(const QString &type)
-{
-    static const QRegularExpression canonical(
-        QStringLiteral("^[A-Za-z][A-Za-z0-9_]*/(msg|srv|action)/[A-Za-z][A-Za-z0-9_]*$"));
-    return canonical.match(type).hasMatch();
 }
 
 } // namespace rosarch

@@ -56,10 +56,6 @@ public:
     const PortUse *namespaceSlip(const QString &family, const QString &name, const PortUse &use,
                                  bool wantProviders, QString *found) const;
 
-    /// "pkg/msg/T", "pkg/srv/T" or "pkg/action/T": a type as ROS names it, not an expression
-    /// the analysis left as written.
-    static bool isCanonicalType(const QString &type);
-
     /// misspelling() stopped looking: its work budget for the run is spent.
     bool hintsCut() const { return m_hintWork > kHintBudget; }
     static constexpr qint64 kHintBudget = 50'000'000;

@@ -1,5 +1,7 @@
 #include "port.h"
 
+#include <QRegularExpression>
+
 #include <array>
 #include <utility>
 
@@ -15,6 +17,13 @@ constexpr std::array<std::pair<PortKind, const char *>, 6> kKindNames{{
     {PortKind::ActionClient, "action_client"},
 }};
 } // namespace
+
+bool isCanonicalInterfaceType(const QString &type)
+{
+    static const QRegularExpression canonical(
+        QStringLiteral("^[A-Za-z][A-Za-z0-9_]*/(msg|srv|action)/[A-Za-z][A-Za-z0-9_]*$"));
+    return canonical.match(type).hasMatch();
+}
 
 QString portKindName(PortKind kind)
 {

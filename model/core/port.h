@@ -42,6 +42,10 @@ enum class NameOrigin
 };
 QString nameOriginName(NameOrigin origin);
 
+/// A type as analysis writes a known one: "pkg/msg/T", "pkg/srv/T" or "pkg/action/T", not an
+/// expression left as written (`node_param_.topic_type`, a template parameter, a C++ class).
+bool isCanonicalInterfaceType(const QString &type);
+
 /// In a pluginlib plugin's port name, the name the plugin is loaded under
 /// (`{plugin}/toggle_filter`); an instance that loads the plugin fills it in.
 inline constexpr char kPluginNamePlaceholder[] = "{plugin}";
@@ -76,6 +80,8 @@ struct Port
 
     Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     bool isResolved() const { return nameOrigin != NameOrigin::Expression; }
+    /// The type is known ("" is unknown too, but says so by itself).
+    bool typeIsResolved() const { return type.isEmpty() || isCanonicalInterfaceType(type); }
     bool operator==(const Port &) const = default;
 };
 

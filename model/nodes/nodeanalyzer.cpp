@@ -226,6 +226,25 @@ bool diagnosticLess(const Diagnostic &a, const Diagnostic &b)
            std::tie(b.evidence.file, b.evidence.line, b.code);
 }
 
+/// One port per kind, name, type and place: a procedural node that reaches a helper object twice
+/// (two objects of one class in main) would list the helper's ports once per object, the same
+/// ports (issue 43's invariant). The first is kept.
+void removeRepeatedPorts(QList<Port> *ports)
+{
+    QSet<QString> seen;
+    ports->removeIf([&](const Port &p) {
+        const QString key = QStringLiteral("%1\n%2\n%3\n%4\n%5:%6:%7")
+                                .arg(int(p.kind))
+                                .arg(p.name, p.nameExpression, p.type, p.evidence.file)
+                                .arg(p.evidence.line)
+                                .arg(p.evidence.column);
+        if (seen.contains(key))
+            return true;
+        seen.insert(key);
+        return false;
+    });
+}
+
 bool portLess(const Port &a, const Port &b)
 {
     return std::tie(a.evidence.file, a.evidence.line, a.evidence.column) <
@@ -282,6 +301,7 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
         std::sort(n.executables.begin(), n.executables.end());
         std::sort(n.plugins.begin(), n.plugins.end());
         std::stable_sort(n.ports.begin(), n.ports.end(), portLess);
+        removeRepeatedPorts(&n.ports);
         QHash<PortKind, int> counters;
         for (Port &p : n.ports)
             p.id = portIdPrefix(p.kind) + QString::number(++counters[p.kind]);
