@@ -1,5 +1,6 @@
 // Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
 #include "cppcodescan.h"
+#include "cppexpressiongaps.h"
 #include "cppgapstarts.h"
 #include "cppmacrogaps.h"
 #include "cppsyntax.h"
@@ -368,7 +369,7 @@ template <typename Blank> void blankStandaloneMacros(const QByteArray &code, Bla
         const std::string_view word = nextWord(code, &i);
         const qsizetype start = i - qsizetype(word.size());
         // Right after another standalone macro is a statement start too.
-        if (!isMacroWord(word) ||
+        if (!(isMacroWord(word) || expressions::isMacroLikeWord(word)) ||
             !(atStatementStart(code, start) || previousCode(code, start) == previousEnd - 1))
             continue;
         qsizetype end = i;
@@ -418,6 +419,7 @@ void blankGrammarGaps(QByteArray *source)
                 code[i] = ' ';
     });
     macros::rewriteMacroGaps(&code, data);
+    expressions::rewriteExpressionGaps(&code, data);
     const GapStarts starts = findGapStarts(code);
     // Latin-1 maps every byte to one character, so match offsets are byte offsets. Made only
     // for a file with a place where an expression can match.

@@ -170,6 +170,23 @@ private:
     std::vector<Scope> m_stack;
 };
 
+/// True when the `{` at `open` is a braced initializer, `{false};`: short, and a `;` follows its
+/// `}`; a function body is no such thing.
+bool bracedInitializerAt(const QByteArray &code, qsizetype open)
+{
+    int depth = 0;
+    for (qsizetype i = open; i < code.size() && i - open < 512; ++i) {
+        depth += code.at(i) == '{' ? 1 : code.at(i) == '}' ? -1 : 0;
+        if (code.at(i) == ';' && depth > 0)
+            return false;
+        if (depth == 0) {
+            const qsizetype next = nextCode(code, i + 1);
+            return next < code.size() && code.at(next) == ';';
+        }
+    }
+    return false;
+}
+
 /// True when the `)` at `close` ends the condition of `if`, `for`, `while` or `switch`: a
 /// macro after it is the statement the condition guards, not an annotation.
 bool afterControl(const QByteArray &code, qsizetype close)
@@ -254,8 +271,9 @@ void rewriteMacroGaps(QByteArray *codeBuffer, char *data)
                 (code.at(before) == ')' && !afterControl(code, before)) || previous == "const" ||
                 previous == "override" || previous == "final" || previous == "noexcept" ||
                 // `Type name_ MACRO(m);`, never a function `inline Type NAME(a) {`
-                (!previous.empty() && following != '{' && !isExpressionKeyword(previous) &&
-                 !isTypeKeyword(previous) && beforePrevious >= 0 &&
+                (!previous.empty() && (following != '{' || bracedInitializerAt(code, next)) &&
+                 !isExpressionKeyword(previous) && !isTypeKeyword(previous) &&
+                 beforePrevious >= 0 &&
                  (isIdentifierChar(code.at(beforePrevious)) || code.at(beforePrevious) == '>' ||
                   code.at(beforePrevious) == '*' || code.at(beforePrevious) == '&') &&
                  !isExpressionKeyword(wordEndingAt(code, beforePrevious + 1)) &&

@@ -3,6 +3,8 @@
 
 #include <QRegularExpression>
 
+#include <cstring>
+
 #include <algorithm>
 
 namespace rosarch::cppsyntax {
@@ -445,8 +447,24 @@ void blankExportMacros(QByteArray *source)
         qsizetype before = i - 1;
         while (before >= 0 && (data[before] == ' ' || data[before] == '\t'))
             --before;
-        const bool value = before >= 0 && (data[before] == '=' || data[before] == '(' ||
-                                           data[before] == ',' || data[before] == '?');
+        qsizetype after = end;
+        while (after < size && (data[after] == ' ' || data[after] == '\t'))
+            ++after;
+        // ... or one after `case` or `return`, or one a `,`, `:`, `;`, closing bracket or
+        // argument list follows (`case RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL:`,
+        // `{X_LOCAL, "Local"}`, `BOOST_CLASS_EXPORT(T)`): a macro of visibility stands before a
+        // declaration.
+        const auto wordBefore = [&](std::string_view w) {
+            const qsizetype from = before - qsizetype(w.size()) + 1;
+            return from >= 0 && std::string_view(data + from, w.size()) == w &&
+                   (from == 0 || !scan::isIdentifierChar(data[from - 1]));
+        };
+        const bool value =
+            (before >= 0 && (data[before] == '=' || data[before] == '(' || data[before] == ',' ||
+                             data[before] == '?')) ||
+            wordBefore("case") || wordBefore("return") ||
+            (after < size && std::strchr(",;)]}(", data[after]) && data[after] != '\0') ||
+            (after + 1 < size && data[after] == ':' && data[after + 1] != ':');
         const std::string_view word(data + i, size_t(end - i));
         if (!preprocessor && !value &&
             std::find(std::begin(names), std::end(names), word) != std::end(names)) {

@@ -301,6 +301,104 @@ private Q_SLOTS:
         QVERIFY(parsesCleanly(out.left(out.indexOf("RCLCPP_COMPONENTS"))));
     }
 
+    // Classes of syntax errors met in rviz, slam_toolbox's Karto SDK, ros2/demos, geometry2 and
+    // rosbag2, each written anew: all of it compiles, none of it names a port.
+    void macrosAndExpressionsOfUnseenRepositories()
+    {
+        const QByteArray src(
+            "#define forEach(T, l) for (T::iterator it = (l)->begin(); it != (l)->end(); ++it)\n"
+            "template <typename T> struct Pool {\n"
+            "  T * allocate(size_t size, const void * = 0) { return nullptr; }\n"
+            "};\n"
+            "NOINLINE void * operator new(std::size_t size) { return nullptr; }\n"
+            "typedef struct {\n"
+            "  PyObject_HEAD\n"
+            "  Core * core;\n"
+            "} core_t;\n"
+            "static PyTypeObject core_type = {\n"
+            "  PyVarObject_HEAD_INIT(nullptr, 0)\n"
+            "  \"_mod.Core\",\n"
+            "};\n"
+            "class Writer {\n"
+            "  std::atomic_bool running_\n"
+            "    RCPPUTILS_TSA_GUARDED_BY(mutex_) {false};\n"
+            "  KARTO_Object(Writer)\n"
+            "public:\n"
+            "  void f();\n"
+            "};\n"
+            "BOOST_CLASS_EXPORT(ns::Writer)\n"
+            "BOOST_CLASS_EXPORT(ns::Reader)\n"
+            "void Writer::f() {\n"
+            "  switch (mode) {\n"
+            "    case RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL:\n"
+            "      std::cout << \"transient local\";\n"
+            "      break;\n"
+            "  }\n"
+            "  const std::map<int, int> names{{RMW_X_LOCAL, 1}};\n"
+            "  QMetaObject::invokeMethod(this, \"set\", Q_ARG(int, level), Q_ARG(QString, name));\n"
+            "  int x = va_arg(args, unsigned int);\n"
+            "  LOG_ERROR_STREAM(\n"
+            "    a << \" is invalid.\";\n"
+            "  );\n"
+            "  OGRE_DELETE this->overlay_;\n"
+            "  Ptr p = Ptr(OGRE_NEW Stream(&file, false));\n"
+            "  queue([this, props{std::move(props)}] { use(props); });\n"
+            "  forEach(Items, &items_)\n"
+            "  {\n"
+            "    delete *it;\n"
+            "  }\n"
+            "  for (;;) { if (x) { break; } }\n"
+            "  CHECK(a <= b);\n"
+            "  y = x * 2;\n"
+            "}\n");
+        QVERIFY(!parsesCleanly(src));
+        const QByteArray out = rewritten(src);
+        QCOMPARE(lines(out),
+                 (QList<QByteArray>{
+                     "#define forEach(T, l) for (T::iterator it = (l)->begin(); it != (l)->end(); "
+                     "++it)",
+                     "template <typename T> struct Pool {",
+                     "T * allocate(size_t size, const void * ) { return nullptr; }",
+                     "};",
+                     "void * operator new(std::size_t size) { return nullptr; }",
+                     "typedef struct {",
+                     "Core * core;",
+                     "} core_t;",
+                     "static PyTypeObject core_type = {",
+                     "\"_mod.Core\",",
+                     "};",
+                     "class Writer {",
+                     "std::atomic_bool running_",
+                     "{false};",
+                     "public:",
+                     "void f();",
+                     "};",
+                     "void Writer::f() {",
+                     "switch (mode) {",
+                     "case RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL:",
+                     "std::cout << \"transient local\";",
+                     "break;",
+                     "}",
+                     "const std::map<int, int> names{{RMW_X_LOCAL, 1}};",
+                     "QMetaObject::invokeMethod(this, \"set\", Q_ARG(_ , level), Q_ARG(QString, "
+                     "name));",
+                     "int x = va_arg(args, _ );",
+                     "LOG_ERROR_STREAM(",
+                     "a << \" is invalid.\"",
+                     ");",
+                     "this->overlay_;",
+                     "Ptr p = Ptr( Stream(&file, false));",
+                     "queue([this, props=std::move(props) ] { use(props); });",
+                     "{",
+                     "delete *it;",
+                     "}",
+                     "for (;;) { if (x) { break; } }",
+                     "CHECK(a <= b);",
+                     "y = x * 2;",
+                     "}"}));
+        QVERIFY(parsesCleanly(out));
+    }
+
     // Patterns in string literals, raw strings, character literals, comments and preprocessor
     // lines stay as written.
     void stringsAndCommentsStay()
