@@ -1,6 +1,7 @@
 #include "nodeanalyzer.h"
 #include "analysiscache.h"
 #include "cppnodeanalyzer.h"
+#include "cppsyntax.h"
 #include "pythonnodeanalyzer.h"
 #include "stagememo.h"
 #include "workspacescanner.h"
@@ -138,12 +139,12 @@ private:
                 if (!function.isEmpty() && it->function != function)
                     continue;
                 for (const QString &cls : it->instantiatedClasses)
-                    for (AtomicNode *n : byQualifiedName(cls, pkg))
+                    for (AtomicNode *n : classesOf(cls, pkg, files))
                         if (!out.contains(n))
                             out.append(n);
                 for (const NodeConstruction &k : it->constructions)
                     if (constructions)
-                        for (AtomicNode *n : byQualifiedName(k.className, pkg))
+                        for (AtomicNode *n : classesOf(k.className, pkg, files))
                             constructions->append({n, k});
             }
         }
@@ -159,6 +160,37 @@ private:
             }
         }
         return out;
+    }
+
+    /// The classes of that name an executable built from `files` starts: of several classes of
+    /// one name in a package (one per example program, as ros2/examples writes them), those
+    /// defined in the executable's own sources, else those a header defines (a class defined
+    /// in another program's source file is not visible here).
+    QList<AtomicNode *> classesOf(const QString &qualified, const QString &pkg,
+                                  const QStringList &files)
+    {
+        const QList<AtomicNode *> found = byQualifiedName(qualified, pkg);
+        const auto pick = [&](const QList<AtomicNode *> &candidates) {
+            QList<AtomicNode *> own, visible;
+            for (AtomicNode *n : candidates) {
+                if (files.contains(n->evidence.file))
+                    own.append(n);
+                else if (cppsyntax::isHeaderPath(n->evidence.file))
+                    visible.append(n);
+            }
+            return !own.isEmpty() ? own : visible;
+        };
+        if (QList<AtomicNode *> chosen = pick(found); !chosen.isEmpty())
+            return chosen;
+        // Named without its namespace (`using ns::Beacon;`): a class of that name in a header
+        // of the package, rather than one another program's source file defines.
+        QList<AtomicNode *> sameName;
+        for (const qsizetype i : m_byClassName.value(lastSegment(stripGlobal(qualified))))
+            if ((*m_nodes)[i].packageName == pkg)
+                sameName.append(&(*m_nodes)[i]);
+        if (QList<AtomicNode *> chosen = pick(sameName); !chosen.isEmpty())
+            return chosen;
+        return found;
     }
 
     QList<AtomicNode *> consoleScriptNodes(const RosPackage &pkg, const Executable &exe)
