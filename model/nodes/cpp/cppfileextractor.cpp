@@ -239,10 +239,15 @@ private:
             if (ts::is(child, "function_declarator"))
                 return; // a method declaration
         }
+        // `image_transport::SubscriberFilter depth_, intensity_;`: every name is of the type.
+        const std::vector<TSNode> declarators = ts::fieldChildren(n, fields().declarator);
+        for (TSNode more : declarators)
+            if (const QString other = m_tree.text(declaredName(more)); !other.isEmpty())
+                c.memberTypes.insert(other, typeText);
         const TSNode declarator = ts::field(n, fields().declarator);
         const QString name = m_tree.text(declaredName(declarator));
-        if (name.isEmpty())
-            return;
+        if (name.isEmpty() || declarators.size() > 1)
+            return; // a default value belongs to one of several names: not read
         c.memberTypes.insert(name, typeText);
         TSNode value = ts::field(n, fields().defaultValue);
         if (ts::isNull(value))

@@ -387,7 +387,8 @@ CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
 
 // Calls that make a string of their arguments: `std::string(x)` and `std::to_string(x)` are x,
 // `x.c_str()` is x, `std::format("{}/{}", a, b)` / `fmt::format(...)` join the pieces and
-// arguments. None when the call is none of them.
+// arguments; a node's `resolve_topic_or_service_name(x, …)` is x, and image_transport's
+// `getCameraInfoTopic(x)` is x's sibling `camera_info`. None when the call is none of them.
 CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
                                                const std::vector<TSNode> &args, int depth) const
 {
@@ -407,6 +408,22 @@ CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
     }
     if (shape.name == QLatin1String("c_str") && !ts::isNull(shape.receiver) && args.empty())
         return evaluate(shape.receiver, depth + 1);
+    // `node_base->resolve_topic_or_service_name("depth/image_rect", false)`: the name expanded
+    // in the node's namespace, as the port itself would expand it.
+    if (shape.name == QLatin1String("resolve_topic_or_service_name") && !args.empty())
+        return evaluate(args.front(), depth + 1);
+    // `image_transport::getCameraInfoTopic(image)`: the `camera_info` beside the image.
+    if (shape.name == QLatin1String("getCameraInfoTopic") && args.size() == 1) {
+        CppValue v = evaluate(args.front(), depth + 1);
+        if (v.kind != CppValue::Kind::Literal && v.kind != CppValue::Kind::Local) {
+            v = {};
+            v.kind = CppValue::Kind::Expression;
+            return v;
+        }
+        const qsizetype slash = v.literal.lastIndexOf(u'/');
+        v.literal = v.literal.left(slash + 1) + QStringLiteral("camera_info");
+        return v;
+    }
     if (shape.name != QLatin1String("format") || !ts::isNull(shape.receiver) ||
         !(inStd || shape.scope == QLatin1String("fmt")) || args.empty())
         return {};

@@ -337,6 +337,19 @@ private Q_SLOTS:
                          missing.arg(QStringLiteral("image"), QStringLiteral("/camera/image"))}));
     }
 
+    void lazyImageInputsAreThePortsTheirRemapsName()
+    {
+        // cpp_lazy_image_inputs: inputs made in a matched callback, by resolved names, on
+        // members declared together; only the dead remap matches nothing.
+        const Recovery r =
+            recoverWorkspace(test::dataDir(QStringLiteral("cpp_lazy_image_inputs/ws")));
+        QCOMPARE(test::diagnosticsWithCode(r, QStringLiteral("remap-unmatched")),
+                 QStringList{QStringLiteral(
+                     "src/depth_tools/launch/shaded_cloud.launch.py: The remap "
+                     "color/image_rect:=/camera/color/image_raw matches no port of the nodes it "
+                     "applies to.")});
+    }
+
     void aSpentHintBudgetIsSaid()
     {
         // A node with 3,000 open inputs of one length beside another node: looking for a
