@@ -137,14 +137,20 @@ private:
                 continue;
             if (wordEndingAt(m_code, previousCode(m_code, before) + 1) == "operator")
                 continue;
+            // up to the parameter's end: `,`, `)`, or the `>` that closes a template's
+            // parameters (`typename std::enable_if<B>::type * = nullptr>`)
             qsizetype end = i + 1;
-            for (int depth = 0; end < m_n && end - i < 512; ++end) {
+            for (int depth = 0, angles = 0; end < m_n && end - i < 512; ++end) {
                 const char c = m_code.at(end);
-                if (depth == 0 && (c == ',' || c == ')' || c == ';' || c == '{'))
+                if (depth == 0 && angles == 0 && std::strchr(",);{>", c))
                     break;
                 depth += nesting(c);
+                if (c == '<' && isIdentifierChar(m_code.at(previousCode(m_code, end))))
+                    ++angles;
+                else if (c == '>' && angles > 0)
+                    --angles;
             }
-            if (end < m_n && (m_code.at(end) == ',' || m_code.at(end) == ')'))
+            if (end < m_n && std::strchr(",)>", m_code.at(end)))
                 set(i, end, ' ');
         }
     }

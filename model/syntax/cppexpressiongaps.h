@@ -15,7 +15,8 @@ bool isMacroLikeWord(std::string_view word);
 
 /// Rewrites, in `data` (the source `code` was made from by codeOnly, same offsets) and in `code`
 /// alike:
-/// - the default of an unnamed parameter, `const void * = 0`, is blanked;
+/// - the default of an unnamed parameter, `const void * = 0`, `enable_if_t<B> * = nullptr`, is
+///   blanked;
 /// - a built-in type as a macro's argument, `Q_ARG(int, level)`, `va_arg(args, int)`, becomes
 ///   the name `_`;
 /// - a `;` right before the `)` of a macro call, `LOG_STREAM(a << b;)`, is blanked;

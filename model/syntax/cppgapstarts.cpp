@@ -44,7 +44,10 @@ GapStarts findGapStarts(const QByteArray &code)
             if (c == ';' || c == '{' || c == '}')
                 delimiter = i;
             else if (c == '*' && i >= 2 &&
-                     ((s[i - 1] == ':' && s[i - 2] == ':') || (s[i - 1] == '>' && s[i - 2] == '-')))
+                     ((s[i - 1] == ':' && s[i - 2] == ':') ||
+                      (s[i - 1] == '>' && s[i - 2] == '-') ||
+                      (s[i - 1] == '.' &&
+                       (isIdentifierChar(s[i - 2]) || s[i - 2] == ')' || s[i - 2] == ']'))))
                 starts.pointerToMember = true;
             else if (c == '&' && isReferenceCall(code, i) &&
                      (starts.references.empty() || starts.references.back() != delimiter))

@@ -25,7 +25,7 @@ struct GapStarts
     /// `const T & name(`: the `;`, `{` or `}` before (or 0) of each `& name(`
     std::vector<qsizetype> references;
     bool macroArguments = false;  ///< SIGNAL, SLOT, EXPECT_..._THROW, ASSERT_..._THROW
-    bool pointerToMember = false; ///< `::*` or `->*`
+    bool pointerToMember = false; ///< `::*`, `->*` or `.*`
 };
 
 /// The starts in `code` (the output of codeOnly).

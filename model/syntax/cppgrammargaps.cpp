@@ -227,13 +227,28 @@ void renameOperatorCalls(const QByteArray &code, const QString &text,
     });
 }
 
-// Pointers to members: the grammar reads neither the type `void (C::*)(int)` nor the call
-// `(obj->*pmf)(a)`. The class before `::*` is blanked (a plain function pointer) and `->*`
-// becomes `->` (a plain member).
+// The `.` at `at` of `.*` follows an object (`obj`, `f()`, `a[i]`), not a number (`1.*x`).
+bool isMemberAccessDot(const QString &text, qsizetype at)
+{
+    if (at == 0)
+        return false;
+    const QChar before = text.at(at - 1);
+    if (before == u')' || before == u']' || before == u'>')
+        return true;
+    qsizetype start = at;
+    while (start > 0 && (text.at(start - 1).isLetterOrNumber() || text.at(start - 1) == u'_'))
+        --start;
+    return start < at && !text.at(start).isDigit();
+}
+
+// Pointers to members: the grammar reads neither the types `void (C::*)(int)`,
+// `std::string C::*` and `Member Class::*ptr;` nor the accesses `(obj->*pmf)(a)` and
+// `obj.*(f.ptr)`. The class before `::*` is blanked (a plain pointer), `->*` becomes `->` (a
+// plain member) and `.*` becomes ` *` (a product, which reads the same names).
 template <typename Blank> void blankPointerToMembers(const QString &text, Blank blank)
 {
     static const QRegularExpression type(
-        QStringLiteral("\\(\\s*((?:::)?[A-Za-z_]\\w*(?:\\s*<[^;{}()]*?>)?"
+        QStringLiteral("(?:\\(\\s*|\\b)((?:::)?[A-Za-z_]\\w*(?:\\s*<[^;{}()]*?>)?"
                        "(?:\\s*::\\s*[A-Za-z_]\\w*(?:\\s*<[^;{}()]*?>)?)*\\s*::)\\s*\\*"));
     for (auto it = type.globalMatch(text); it.hasNext();) {
         const QRegularExpressionMatch m = it.next();
@@ -242,6 +257,10 @@ template <typename Blank> void blankPointerToMembers(const QString &text, Blank 
     for (qsizetype at = text.indexOf(QLatin1String("->*")); at >= 0;
          at = text.indexOf(QLatin1String("->*"), at + 3))
         blank(at + 2, at + 3);
+    for (qsizetype at = text.indexOf(QLatin1String(".*")); at >= 0;
+         at = text.indexOf(QLatin1String(".*"), at + 2))
+        if (isMemberAccessDot(text, at))
+            blank(at, at + 1);
 }
 
 // `using Ts::operator()...;`, the pack expansion that builds an overload set: the grammar

@@ -187,6 +187,26 @@ bool bracedInitializerAt(const QByteArray &code, qsizetype open)
     return false;
 }
 
+/// True when the `)` at `close` ends a function's parameter list: its `(` follows a name (or a
+/// template's `>`), not an operator, as a cast's `(double)` does.
+bool closesParameterList(const QByteArray &code, qsizetype close)
+{
+    int depth = 0;
+    for (qsizetype i = close; i >= 0 && close - i < 4096; --i) {
+        depth -= nesting(code.at(i));
+        if (depth == 0) {
+            const qsizetype before = previousCode(code, i);
+            if (before < 0)
+                return false;
+            if (code.at(before) == '>')
+                return true;
+            const std::string_view w = wordEndingAt(code, before + 1);
+            return !w.empty() && !isExpressionKeyword(w) && !isTypeKeyword(w);
+        }
+    }
+    return false;
+}
+
 /// True when the `)` at `close` ends the condition of `if`, `for`, `while` or `switch`: a
 /// macro after it is the statement the condition guards, not an annotation.
 bool afterControl(const QByteArray &code, qsizetype close)
@@ -244,6 +264,15 @@ void rewriteMacroGaps(QByteArray *codeBuffer, char *data)
                 set(start - 1, start, '+');
             if (literalAfter)
                 set(i, i + 1, '+');
+            continue;
+        }
+        // `void swap(value & x) PICOJSON_NOEXCEPT;`: an annotation without arguments after a
+        // parameter list, before the declaration's end, body or `= 0`.
+        if (!(after < n && code.at(after) == '(') && before >= 0 && code.at(before) == ')' &&
+            after < n && std::strchr(";{=", code.at(after)) &&
+            !(code.at(after) == '=' && after + 1 < n && code.at(after + 1) == '=') &&
+            closesParameterList(code, before)) {
+            set(start, i, ' ');
             continue;
         }
         const bool call = after < n && code.at(after) == '(';

@@ -309,6 +309,11 @@ private Q_SLOTS:
             "#define forEach(T, l) for (T::iterator it = (l)->begin(); it != (l)->end(); ++it)\n"
             "template <typename T> struct Pool {\n"
             "  T * allocate(size_t size, const void * = 0) { return nullptr; }\n"
+            "  template <class U, typename std::enable_if<std::is_same<U, T>::value>::type * =\n"
+            "                       nullptr>\n"
+            "  explicit Pool(U u) {}\n"
+            "  void swap(Pool & other) POOL_NOEXCEPT;\n"
+            "  Member Pool::*field;\n"
             "};\n"
             "NOINLINE void * operator new(std::size_t size) { return nullptr; }\n"
             "typedef struct {\n"
@@ -350,52 +355,62 @@ private Q_SLOTS:
             "  for (;;) { if (x) { break; } }\n"
             "  CHECK(a <= b);\n"
             "  y = x * 2;\n"
+            "  out.*(f.ptr) = 1.*y;\n"
+            "  z = 1.0 / (double)RAND_MAX;\n"
             "}\n");
         QVERIFY(!parsesCleanly(src));
         const QByteArray out = rewritten(src);
-        QCOMPARE(lines(out),
-                 (QList<QByteArray>{
-                     "#define forEach(T, l) for (T::iterator it = (l)->begin(); it != (l)->end(); "
-                     "++it)",
-                     "template <typename T> struct Pool {",
-                     "T * allocate(size_t size, const void * ) { return nullptr; }",
-                     "};",
-                     "void * operator new(std::size_t size) { return nullptr; }",
-                     "typedef struct {",
-                     "Core * core;",
-                     "} core_t;",
-                     "static PyTypeObject core_type = {",
-                     "\"_mod.Core\",",
-                     "};",
-                     "class Writer {",
-                     "std::atomic_bool running_",
-                     "{false};",
-                     "public:",
-                     "void f();",
-                     "};",
-                     "void Writer::f() {",
-                     "switch (mode) {",
-                     "case RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL:",
-                     "std::cout << \"transient local\";",
-                     "break;",
-                     "}",
-                     "const std::map<int, int> names{{RMW_X_LOCAL, 1}};",
-                     "QMetaObject::invokeMethod(this, \"set\", Q_ARG(_ , level), Q_ARG(QString, "
-                     "name));",
-                     "int x = va_arg(args, _ );",
-                     "LOG_ERROR_STREAM(",
-                     "a << \" is invalid.\"",
-                     ");",
-                     "this->overlay_;",
-                     "Ptr p = Ptr( Stream(&file, false));",
-                     "queue([this, props=std::move(props) ] { use(props); });",
-                     "{",
-                     "delete *it;",
-                     "}",
-                     "for (;;) { if (x) { break; } }",
-                     "CHECK(a <= b);",
-                     "y = x * 2;",
-                     "}"}));
+        QCOMPARE(
+            lines(out),
+            (QList<QByteArray>{
+                "#define forEach(T, l) for (T::iterator it = (l)->begin(); it != (l)->end(); "
+                "++it)",
+                "template <typename T> struct Pool {",
+                "T * allocate(size_t size, const void * ) { return nullptr; }",
+                "template <class U, typename std::enable_if<std::is_same<U, T>::value>::type *",
+                ">",
+                "explicit Pool(U u) {}",
+                "void swap(Pool & other) ;",
+                "Member *field;",
+                "};",
+                "void * operator new(std::size_t size) { return nullptr; }",
+                "typedef struct {",
+                "Core * core;",
+                "} core_t;",
+                "static PyTypeObject core_type = {",
+                "\"_mod.Core\",",
+                "};",
+                "class Writer {",
+                "std::atomic_bool running_",
+                "{false};",
+                "public:",
+                "void f();",
+                "};",
+                "void Writer::f() {",
+                "switch (mode) {",
+                "case RMW_QOS_POLICY_DURABILITY_TRANSIENT_LOCAL:",
+                "std::cout << \"transient local\";",
+                "break;",
+                "}",
+                "const std::map<int, int> names{{RMW_X_LOCAL, 1}};",
+                "QMetaObject::invokeMethod(this, \"set\", Q_ARG(_ , level), Q_ARG(QString, "
+                "name));",
+                "int x = va_arg(args, _ );",
+                "LOG_ERROR_STREAM(",
+                "a << \" is invalid.\"",
+                ");",
+                "this->overlay_;",
+                "Ptr p = Ptr( Stream(&file, false));",
+                "queue([this, props=std::move(props) ] { use(props); });",
+                "{",
+                "delete *it;",
+                "}",
+                "for (;;) { if (x) { break; } }",
+                "CHECK(a <= b);",
+                "y = x * 2;",
+                "out *(f.ptr) = 1.*y;",
+                "z = 1.0 / (double)RAND_MAX;",
+                "}"}));
         QVERIFY(parsesCleanly(out));
     }
 
