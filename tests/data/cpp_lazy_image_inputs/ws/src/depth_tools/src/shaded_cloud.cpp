@@ -2,6 +2,7 @@
 #include <mutex>
 #include <string>
 
+#include <image_transport/camera_publisher.hpp>
 #include <image_transport/image_transport.hpp>
 #include <image_transport/subscriber_filter.hpp>
 #include <message_filters/subscriber.h>
@@ -46,6 +47,9 @@ public:
         shade_info_sub_.subscribe(this, shade_info);
       };
     cloud_pub_ = create_publisher<sensor_msgs::msg::PointCloud2>("points", 1, pub_options);
+    // A preview with its camera info beside it (`preview/camera_info`).
+    preview_pub_ = image_transport::create_camera_publisher(
+      this, get_node_base_interface()->resolve_topic_or_service_name("preview/image_raw", false));
   }
 
 private:
@@ -54,6 +58,7 @@ private:
   image_transport::SubscriberFilter depth_sub_, shade_sub_;
   message_filters::Subscriber<sensor_msgs::msg::CameraInfo> shade_info_sub_;
   rclcpp::Publisher<sensor_msgs::msg::PointCloud2>::SharedPtr cloud_pub_;
+  image_transport::CameraPublisher preview_pub_;
 };
 
 }  // namespace depth_tools
