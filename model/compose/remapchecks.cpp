@@ -16,8 +16,7 @@ namespace {
 /// Whether `from` names a topic that a transport plugin advertises beside an image or point
 /// cloud port (`~/output/image/compressed`): image_transport and point_cloud_transport publish
 /// one topic per plugin under the port's name, which a launch file may remap; so does
-/// cuda_blackboard (`~/output/pointcloud/cuda`). The `camera_info` beside an image port counts
-/// too: a camera publisher or subscription has one.
+/// cuda_blackboard (`~/output/pointcloud/cuda`).
 bool renamesTransportTopic(const AtomicNode &cls, const QString &from)
 {
     static const QStringList imagePlugins{
@@ -27,22 +26,13 @@ bool renamesTransportTopic(const AtomicNode &cls, const QString &from)
     static const QStringList cloudPlugins{QStringLiteral("draco"), QStringLiteral("zlib"),
                                           QStringLiteral("zstd"), QStringLiteral("cuda")};
     const qsizetype slash = from.lastIndexOf(QLatin1Char('/'));
-    const auto probe = [](const QString &name) {
-        return RosNames::expand(name, QStringLiteral("/__probe"), QStringLiteral("__node"));
-    };
-    // A camera publisher or subscription (image_transport's create_camera_publisher,
-    // subscribeCamera) has its `camera_info` beside the image: `camera_info` for `image_raw`.
-    if (from.mid(slash + 1) == QLatin1String("camera_info")) {
-        const QString folder = probe(from).section(QLatin1Char('/'), 0, -2);
-        for (const Port &p : cls.ports)
-            if (p.type == QLatin1String("sensor_msgs/msg/Image") &&
-                probe(p.name).section(QLatin1Char('/'), 0, -2) == folder)
-                return true;
-    }
     if (slash <= 0)
         return false;
     const QString base = from.left(slash);
     const QString plugin = from.mid(slash + 1);
+    const auto probe = [](const QString &name) {
+        return RosNames::expand(name, QStringLiteral("/__probe"), QStringLiteral("__node"));
+    };
     for (const Port &p : cls.ports) {
         const QStringList *plugins =
             p.type == QLatin1String("sensor_msgs/msg/Image")         ? &imagePlugins

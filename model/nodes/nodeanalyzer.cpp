@@ -234,7 +234,8 @@ void nameConstructedPorts(AtomicNode *n)
         QList<Port> named;
         for (Port p : std::as_const(k.ports)) {
             const auto same = std::find_if(n->ports.cbegin(), n->ports.cend(), [&](const Port &c) {
-                return c.kind == p.kind && c.evidence == p.evidence;
+                // one call may make two ports: a camera's image and its info
+                return c.kind == p.kind && c.evidence == p.evidence && c.type == p.type;
             });
             if (same == n->ports.cend() || !p.isResolved() ||
                 (same->name == p.name && same->nameOrigin == p.nameOrigin))

@@ -308,6 +308,21 @@ bool CppPortCallReader::read(TSNode call, const CallShape &shape, const std::vec
     }
     guardOf(call, &port.guard, &port.guardValue);
     m_function.ports.append(port);
+    // A camera publisher or subscription has its camera info beside the image: `camera_info`
+    // for `image_raw`, made by the same call (when the image's name is known).
+    const bool camera = shape.name == QLatin1String("create_camera_publisher") ||
+                        shape.name == QLatin1String("create_camera_subscription") ||
+                        shape.name == QLatin1String("advertiseCamera") ||
+                        shape.name == QLatin1String("subscribeCamera");
+    if (camera && k.transportType == imageType &&
+        (port.name.kind == CppValue::Kind::Literal || port.name.kind == CppValue::Kind::Local)) {
+        CppPortCall info = port;
+        info.name.literal = port.name.literal.left(port.name.literal.lastIndexOf(u'/') + 1) +
+                            QStringLiteral("camera_info");
+        info.transportType = QStringLiteral("sensor_msgs/msg/CameraInfo");
+        info.typeWritten.clear();
+        m_function.ports.append(info);
+    }
     return true;
 }
 
