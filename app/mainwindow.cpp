@@ -103,10 +103,22 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_stages, &StageController::statusMessage, statusBar(), &QStatusBar::showMessage);
     connect(m_runner, &StageRunner::stageStarted, this, &MainWindow::onStageStarted);
     connect(m_runner, &StageRunner::stageProgressed, this, &MainWindow::onStageProgressed);
-    connect(m_runner, &StageRunner::stageFinished, this, [this] { setRunning(false); });
-    connect(m_runner, &StageRunner::launchStageFinished, this, [this] { setRunning(false); });
-    connect(m_runner, &StageRunner::stageCanceled, this, [this] { setRunning(false); });
-    connect(m_runner, &StageRunner::stageFailed, this, [this] { setRunning(false); });
+    connect(m_runner, &StageRunner::stageFinished, this, [this] {
+        m_runStopped = false;
+        setRunning(false);
+    });
+    connect(m_runner, &StageRunner::launchStageFinished, this, [this] {
+        m_runStopped = false;
+        setRunning(false);
+    });
+    connect(m_runner, &StageRunner::stageCanceled, this, [this] {
+        m_runStopped = true;
+        setRunning(false);
+    });
+    connect(m_runner, &StageRunner::stageFailed, this, [this] {
+        m_runStopped = true;
+        setRunning(false);
+    });
     const auto filesMayHaveChanged = [this] {
         // The files may have changed since they were shown; start the source view afresh.
         m_sourceView->setWorkspaceRoot(m_document->workspaceRoot());

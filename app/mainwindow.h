@@ -128,7 +128,9 @@ private:
     void openWorkspaceNow(const QString &root);
     void updateTitle();
     void updateCounts();
-    void updateLaunchPlaceholder();
+    /// What the empty panels say: open a workspace, reading, stopped before a result, no
+    /// package here, no node classes, no launch files.
+    void updatePlaceholders();
     void showError(const QString &title, const QString &text);
 
     void onStageStarted();
@@ -202,6 +204,7 @@ private:
 
     QByteArray m_defaultState;
     bool m_closeConfirmed = false; ///< the unsaved changes were saved or discarded
+    bool m_runStopped = false;     ///< the last run was canceled or failed
     QString m_lastProgressText;
 };
 

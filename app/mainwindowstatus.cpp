@@ -1,5 +1,7 @@
 // The main window's status bar: the counts of what the stages found, the progress of a run
 // with its cancel button, and the launch tree's placeholder while there is nothing to show.
+#include "atomicnodepanel.h"
+#include "diagrampanel.h"
 #include "document.h"
 #include "launchtreepanel.h"
 #include "logview.h"
@@ -68,26 +70,56 @@ void MainWindow::updateCounts()
     m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
     m_nextDiagnosticAction->setEnabled(diagnostics > 0);
     m_previousDiagnosticAction->setEnabled(diagnostics > 0);
-    updateLaunchPlaceholder();
+    updatePlaceholders();
 }
 
-void MainWindow::updateLaunchPlaceholder()
+void MainWindow::updatePlaceholders()
 {
+    const AtomicNodeList &nodes = m_document->atomicNodes();
     const LaunchDependencies &launch = m_document->launchDependencies();
-    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty())
-        m_launchPanel->setPlaceholderText(
-            tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree."));
-    else if (m_runner->isRunning())
-        m_launchPanel->setPlaceholderText(tr("Reading the launch files…"));
-    else if (launch.launchFiles.isEmpty())
-        m_launchPanel->setPlaceholderText(
-            tr("No launch files found in this workspace.\n\nStage 2 reads *.launch.py, "
-               "*.launch.xml and *.launch.yaml files and any file holding a launch "
-               "description."));
-    else
-        m_launchPanel->setPlaceholderText(
-            tr("No launch file was analysed as a root.\n\nChoose one in Stages → Launch "
-               "Arguments…"));
+    const bool noResult =
+        nodes.packages.isEmpty() && nodes.nodes.isEmpty() && launch.launchFiles.isEmpty();
+    const QString stopped =
+        tr("The run stopped before it had a result, so nothing is known yet.\n\nRun it again "
+           "with Stages → Run All.");
+    QString nodesText, launchText, diagramText;
+    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty()) {
+        nodesText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its node classes.");
+        launchText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.");
+        diagramText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its composed "
+                         "diagrams.");
+    } else if (m_runner->isRunning() && noResult) {
+        nodesText = tr("Reading the workspace…");
+        launchText = tr("Reading the launch files…");
+        diagramText = tr("Composing the launch files…");
+    } else if (m_runStopped && noResult) {
+        nodesText = launchText = diagramText = stopped;
+    } else if (nodes.packages.isEmpty()) {
+        nodesText = tr("No ROS 2 package in this folder.\n\nrosarch finds packages by their "
+                       "package.xml. Open the folder that holds them: a workspace, or its src "
+                       "folder.");
+        launchText = tr("No ROS 2 package in this folder, so no launch files either.");
+        diagramText = tr("No ROS 2 package in this folder: there is nothing to compose.");
+    } else {
+        nodesText = tr("No node classes found."); // the packages show as rows
+        launchText = launch.launchFiles.isEmpty()
+                         ? tr("No launch files found in this workspace.\n\nStage 2 reads "
+                              "*.launch.py, *.launch.xml and *.launch.yaml files and any file "
+                              "holding a launch description.")
+                         : tr("No launch file was analysed as a root.\n\nChoose one in Stages "
+                              "→ Launch Arguments…");
+        diagramText =
+            launch.launchFiles.isEmpty()
+                ? tr("No launch files, so nothing to compose: a composed diagram shows what a "
+                     "launch file (or a program that builds several nodes) starts.")
+                : tr("No composed diagram yet. Run stage 3 to compose the launch files.");
+    }
+    if (m_nodePanel)
+        m_nodePanel->setPlaceholderText(nodesText);
+    if (m_launchPanel)
+        m_launchPanel->setPlaceholderText(launchText);
+    if (m_diagramPanel)
+        m_diagramPanel->setEmptyText(diagramText);
 }
 
 void MainWindow::setRunning(bool running)
@@ -101,7 +133,7 @@ void MainWindow::setRunning(bool running)
     m_progressBar->setVisible(running);
     m_cancelButton->setVisible(running);
     m_cancelAction->setEnabled(running);
-    updateLaunchPlaceholder();
+    updatePlaceholders();
 }
 
 void MainWindow::onStageStarted()

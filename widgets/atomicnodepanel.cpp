@@ -40,6 +40,8 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
     m_editDescription = editDescription;
     m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_tree, &QWidget::customContextMenuRequested, this, &AtomicNodePanel::showContextMenu);
+    setPlaceholderText(tr("No node classes analysed yet."));
+    updatePlaceholder();
 }
 
 // Besides editing, a port made through helpers offers each step from the node to the call
@@ -95,6 +97,7 @@ void AtomicNodePanel::onModelReset()
     for (int c : {AtomicNodeModel::NameColumn, AtomicNodeModel::TypeColumn})
         m_tree->setColumnWidth(c, qBound(120, m_tree->columnWidth(c) + 8, 320));
     m_tree->setColumnWidth(AtomicNodeModel::DetailsColumn, 300);
+    updatePlaceholder();
 }
 
 } // namespace rosarch

@@ -4,6 +4,7 @@
 #include <QElapsedTimer>
 #include <QHeaderView>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QTimer>
@@ -17,7 +18,8 @@ namespace rosarch {
 
 FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
-      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this)), m_filterDelay(new QTimer(this))
+      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this)), m_placeholder(new QLabel),
+      m_filterDelay(new QTimer(this))
 {
     m_filter->setClearButtonEnabled(true);
     m_filter->installEventFilter(this);
@@ -77,6 +79,16 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     m_layout->setSpacing(2);
     m_layout->addWidget(m_filter);
     m_layout->addWidget(m_tree, 1);
+    // The placeholder lies over the empty tree's viewport: hiding the tree instead would hand
+    // it the focus when shown again, which makes its first row current as if chosen.
+    m_placeholder->setAlignment(Qt::AlignCenter);
+    m_placeholder->setWordWrap(true);
+    m_placeholder->setMargin(16);
+    m_placeholder->setForegroundRole(QPalette::PlaceholderText);
+    m_placeholder->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_placeholder->setText(tr("Nothing analysed yet."));
+    auto *overlay = new QVBoxLayout(m_tree->viewport());
+    overlay->addWidget(m_placeholder);
     setFocusProxy(m_tree);
 }
 
@@ -226,6 +238,18 @@ void FilteredTreePanel::restoreExpanded()
         }
     };
     visit({});
+}
+
+void FilteredTreePanel::setPlaceholderText(const QString &text)
+{
+    m_placeholder->setText(text);
+}
+
+void FilteredTreePanel::updatePlaceholder()
+{
+    // The filter stays enabled, and the tree shown: either change would move the focus.
+    const bool empty = !m_proxy->sourceModel() || m_proxy->sourceModel()->rowCount() == 0;
+    m_placeholder->setVisible(empty);
 }
 
 QModelIndex FilteredTreePanel::currentSourceIndex() const

@@ -9,6 +9,8 @@ class QTimer;
 class QTreeView;
 class QVBoxLayout;
 
+class QLabel;
+
 namespace rosarch {
 
 class NodeFilterProxyModel;
@@ -24,6 +26,11 @@ public:
     QTreeView *treeView() const { return m_tree; }
     QLineEdit *filterEdit() const { return m_filter; }
     NodeFilterProxyModel *proxyModel() const { return m_proxy; }
+
+    /// The text shown instead of the tree while it is empty (no run yet, nothing found, a run
+    /// stopped before a result).
+    void setPlaceholderText(const QString &text);
+    QLabel *placeholderLabel() const { return m_placeholder; }
 
     /// The current row as an index of the source model.
     QModelIndex currentSourceIndex() const;
@@ -51,10 +58,15 @@ protected:
 
     static constexpr int kExpandBudget = 400;
 
+    /// Shows the placeholder instead of the tree while the source model has no rows;
+    /// subclasses call it when their model is reset.
+    void updatePlaceholder();
+
     NodeFilterProxyModel *m_proxy;
     QLineEdit *m_filter;
     QTreeView *m_tree;
     QVBoxLayout *m_layout;
+    QLabel *m_placeholder;
 
 private:
     void applyFilter(const QString &text);

@@ -14,8 +14,7 @@
 namespace rosarch {
 
 LaunchTreePanel::LaunchTreePanel(QWidget *parent)
-    : FilteredTreePanel(parent), m_placeholder(new QLabel(this)),
-      m_goToClass(new QAction(tr("&Go to Class"), this))
+    : FilteredTreePanel(parent), m_goToClass(new QAction(tr("&Go to Class"), this))
 {
     m_proxy->setFilterColumns({LaunchTreeModel::NameColumn, LaunchTreeModel::NamespaceColumn,
                                LaunchTreeModel::ClassColumn, LaunchTreeModel::ExecutableColumn});
@@ -65,13 +64,7 @@ LaunchTreePanel::LaunchTreePanel(QWidget *parent)
     connect(this, &FilteredTreePanel::currentSourceIndexChanged, this,
             &LaunchTreePanel::updateActions);
 
-    m_placeholder->setAlignment(Qt::AlignCenter);
-    m_placeholder->setWordWrap(true);
-    m_placeholder->setMargin(16);
-    m_placeholder->setForegroundRole(QPalette::PlaceholderText);
-    m_placeholder->setText(tr("No launch files analysed yet."));
-
-    m_layout->addWidget(m_placeholder, 1);
+    setPlaceholderText(tr("No launch files analysed yet."));
     updateActions();
     updatePlaceholder();
 }
@@ -84,11 +77,6 @@ void LaunchTreePanel::setModel(LaunchTreeModel *model)
     m_proxy->setSourceModel(model);
     connect(model, &QAbstractItemModel::modelReset, this, &LaunchTreePanel::onModelReset);
     onModelReset();
-}
-
-void LaunchTreePanel::setPlaceholderText(const QString &text)
-{
-    m_placeholder->setText(text);
 }
 
 bool LaunchTreePanel::isExpandable(const QModelIndex &proxyIndex) const
@@ -113,14 +101,6 @@ void LaunchTreePanel::onModelReset()
     }
     updateActions();
     updatePlaceholder();
-}
-
-void LaunchTreePanel::updatePlaceholder()
-{
-    const bool empty = !m_model || m_model->rowCount() == 0;
-    m_tree->setVisible(!empty);
-    m_filter->setEnabled(!empty);
-    m_placeholder->setVisible(empty);
 }
 
 QString LaunchTreePanel::currentClassId() const

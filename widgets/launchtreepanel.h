@@ -21,10 +21,6 @@ public:
     void setModel(LaunchTreeModel *model);
     LaunchTreeModel *model() const { return m_model; }
     QAction *goToClassAction() const { return m_goToClass; }
-    QLabel *placeholderLabel() const { return m_placeholder; }
-
-    /// The text shown instead of the tree while it is empty (no run yet, no launch files).
-    void setPlaceholderText(const QString &text);
 
 Q_SIGNALS:
     /// A person asked to see the atomic node class a node instance runs (double-click,
@@ -40,11 +36,9 @@ protected:
 private:
     void onModelReset();
     void updateActions();
-    void updatePlaceholder();
     QString currentClassId() const;
 
     LaunchTreeModel *m_model = nullptr;
-    QLabel *m_placeholder;
     QAction *m_goToClass;
 };
 

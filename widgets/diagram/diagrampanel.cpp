@@ -108,7 +108,17 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
             &DiagramPanel::onElementDoubleClicked);
     connect(m_scene, &DiagramScene::elementContextMenuRequested, this,
             &DiagramPanel::onContextMenu);
-    showMessage(tr("No composed diagram yet. Run stage 3 to compose the launch files."));
+    m_emptyText = tr("No composed diagram yet. Run stage 3 to compose the launch files.");
+    showMessage(m_emptyText);
+}
+
+void DiagramPanel::setEmptyText(const QString &text)
+{
+    if (text == m_emptyText)
+        return;
+    m_emptyText = text;
+    if (m_architecture.composites.isEmpty())
+        showMessage(m_emptyText);
 }
 
 DiagramPanel::~DiagramPanel()

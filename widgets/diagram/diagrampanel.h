@@ -47,6 +47,9 @@ public:
     void setArchitecture(const Architecture &architecture, const QList<LaunchRoot> &roots = {},
                          const RootChoice &start = {});
     const Architecture &architecture() const { return m_architecture; }
+    /// What the panel says while the architecture has no composite (no run yet, no launch
+    /// file to compose, a run stopped before a result).
+    void setEmptyText(const QString &text);
     /// Shows a composite by its launch-file instance id; the breadcrumbs follow its parents.
     void showComposite(const QString &instanceId);
     QString currentComposite() const { return m_current; }
@@ -195,6 +198,7 @@ private:
     /// at the legible zoom; true when it did (the caller lays out again).
     bool overviewInstead(const QSizeF &size);
 
+    QString m_emptyText;
     Architecture m_architecture;
     QString m_current;
     DiagramOptions m_options;

@@ -88,7 +88,7 @@ void DiagramPanel::relayout()
     if (!c) {
         m_scene->clearDiagram();
         showMessage(m_architecture.composites.isEmpty()
-                        ? tr("No composed diagram yet. Run stage 3 to compose the launch files.")
+                        ? m_emptyText
                         : tr("This launch file is not part of the architecture."));
         return;
     }
