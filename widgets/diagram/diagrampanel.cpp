@@ -14,6 +14,7 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QToolBar>
@@ -46,6 +47,10 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     m_toolBar->setIconSize(QSize(16, 16));
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     m_toolBar->addWidget(m_search);
+    m_matchCount = new QLabel(this);
+    m_matchCount->setForegroundRole(QPalette::PlaceholderText);
+    m_matchCount->setContentsMargins(4, 0, 4, 0);
+    m_toolBar->addWidget(m_matchCount);
     m_toolBar->addSeparator();
     m_showParameters =
         toggle(m_toolBar, tr("Parameters"), tr("Show ports whose name comes from a parameter"));
@@ -336,6 +341,7 @@ void DiagramPanel::updateSearch(bool centre)
     m_matchIndex = m_matches.isEmpty() ? -1 : 0;
     if (centre && m_matchIndex >= 0)
         selectKey(m_matches.first());
+    m_matchCount->setText(matchText());
 }
 
 void DiagramPanel::findNext()
@@ -344,6 +350,16 @@ void DiagramPanel::findNext()
         return;
     m_matchIndex = (m_matchIndex + 1) % m_matches.size();
     selectKey(m_matches[m_matchIndex]);
+    m_matchCount->setText(matchText());
+}
+
+QString DiagramPanel::matchText() const
+{
+    if (m_search->text().trimmed().isEmpty())
+        return {};
+    if (m_matches.isEmpty())
+        return tr("No match");
+    return tr("%1 of %2").arg(m_matchIndex + 1).arg(m_matches.size());
 }
 
 void DiagramPanel::focusSearch()

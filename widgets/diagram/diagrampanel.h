@@ -15,6 +15,7 @@
 #include <optional>
 
 class QAction;
+class QLabel;
 class QLineEdit;
 class QMenu;
 class QToolBar;
@@ -117,6 +118,8 @@ public:
     QAction *overviewAction() const { return m_overviewAction; }
     QAction *expandAllAction() const { return m_expandAllAction; }
     QLineEdit *searchField() const { return m_search; }
+    /// Where the search stands: "3 of 7", "No match", or "" without a search.
+    QString matchText() const;
     QAction *showParametersAction() const { return m_showParameters; }
     QAction *showInactiveAction() const { return m_showInactive; }
     QAction *showExternalAction() const { return m_showExternal; }
@@ -225,6 +228,7 @@ private:
     QAction *m_expandAllAction = nullptr;
     QToolBar *m_toolBar;
     QLineEdit *m_search;
+    QLabel *m_matchCount = nullptr; ///< beside the search field
     QAction *m_showParameters;
     QAction *m_showInactive;
     QAction *m_showExternal;

@@ -163,6 +163,7 @@ void TestDiagramPanel::searchFindsParts()
     const QString second = dynamic_cast<DiagramItem *>(selected.first())->key();
     QVERIFY(matched.contains(second));
     QVERIFY(second != first);
+    QCOMPARE(panel.matchText(), QStringLiteral("2 of 2")); // issue 40: a count, and where
     saveScreenshot(panel, QStringLiteral("diagram_search.png"));
     QTest::keyClick(panel.searchField(), Qt::Key_Return); // wraps around
     QCOMPARE(dynamic_cast<DiagramItem *>(panel.scene()->selectedItems().first())->key(), first);
@@ -171,6 +172,9 @@ void TestDiagramPanel::searchFindsParts()
     QVERIFY(panel.scene()->item(QStringLiteral("namespace:/robot1/extra"))->isMatched());
     panel.searchField()->setText(QStringLiteral("zzz"));
     QVERIFY(!panel.scene()->item(QStringLiteral("part:part4"))->isMatched());
+    QCOMPARE(panel.matchText(), QStringLiteral("No match"));
+    panel.searchField()->clear();
+    QCOMPARE(panel.matchText(), QString());
 }
 
 void TestDiagramPanel::aDeepPathDoesNotWidenThePanel()
