@@ -1,5 +1,7 @@
 #include "cppcodescan.h"
 
+#include <QRegularExpression>
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -167,6 +169,35 @@ qsizetype closingParen(const QByteArray &code, qsizetype open, qsizetype limit)
             return c == ')' ? i : -1;
     }
     return -1;
+}
+
+std::string_view wordEndingAt(const QByteArray &code, qsizetype end)
+{
+    qsizetype start = end;
+    while (start > 0 && isIdentifierChar(code.at(start - 1)))
+        --start;
+    return {code.constData() + start, size_t(end - start)};
+}
+
+std::vector<std::pair<qsizetype, qsizetype>> builtinTypeArguments(const QByteArray &code,
+                                                                  qsizetype open, qsizetype close)
+{
+    static const QRegularExpression builtin(
+        QStringLiteral("^\\s*(?:(?:const|unsigned|signed|short|long|int|char|float|double|bool|"
+                       "void|wchar_t|char8_t|char16_t|char32_t|size_t|u?int(?:8|16|32|64)_t)\\b"
+                       "\\s*)+[*&\\s]*$"));
+    std::vector<std::pair<qsizetype, qsizetype>> found;
+    qsizetype from = open + 1;
+    for (qsizetype i = open + 1, depth = 0; i <= close; ++i) {
+        const char c = code.at(i);
+        if (depth == 0 && (c == ',' || i == close)) {
+            if (builtin.match(QString::fromLatin1(code.mid(from, i - from))).hasMatch())
+                found.emplace_back(from, i);
+            from = i + 1;
+        }
+        depth += nesting(c);
+    }
+    return found;
 }
 
 bool contains(const QByteArray &code, std::string_view text)

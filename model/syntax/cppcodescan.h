@@ -3,6 +3,8 @@
 #include <QByteArray>
 
 #include <string_view>
+#include <utility>
+#include <vector>
 
 // Scanning C++ source text byte by byte, for the rewrites of code the grammar cannot read
 // (cppgrammargaps.cpp). Offsets are byte offsets into the source.
@@ -29,6 +31,14 @@ bool isWordAt(const QByteArray &code, qsizetype i, std::string_view word);
 int nesting(char c);
 /// The offset of the `)` closing the `(` at `open`, -1 when it does not close before `limit`.
 qsizetype closingParen(const QByteArray &code, qsizetype open, qsizetype limit);
+/// The identifier ending at `end` (exclusive), empty when `end` ends none.
+std::string_view wordEndingAt(const QByteArray &code, qsizetype end);
+
+/// The arguments in the parentheses at [open, close] that are a built-in type (`int`,
+/// `unsigned char`, `const char *`), as [from, to) offsets: no function takes one, only a macro.
+std::vector<std::pair<qsizetype, qsizetype>> builtinTypeArguments(const QByteArray &code,
+                                                                  qsizetype open, qsizetype close);
+
 /// True when `text` occurs in `code` (glibc's memmem: several times faster than
 /// QByteArray::contains on the short needles the rewrites gate on).
 bool contains(const QByteArray &code, std::string_view text);

@@ -4,8 +4,6 @@
 #include "cppcodescan.h"
 #include "cppmacrogaps.h"
 
-#include <QRegularExpression>
-
 #include <cstring>
 
 namespace rosarch::cppsyntax::expressions {
@@ -53,15 +51,6 @@ bool beginsDeclaration(std::string_view w)
     return isOneOf(w, {"void", "int", "bool", "char", "short", "long", "unsigned", "signed",
                        "float", "double", "auto", "static", "inline", "const", "constexpr",
                        "virtual", "explicit", "extern", "template"});
-}
-
-/// The identifier ending at `end` (exclusive), empty when `end` ends none.
-std::string_view wordEndingAt(const QByteArray &code, qsizetype end)
-{
-    qsizetype start = end;
-    while (start > 0 && isIdentifierChar(code.at(start - 1)))
-        --start;
-    return {code.constData() + start, size_t(end - start)};
 }
 
 /// The `}` closing the `{` at `open`, -1 when none before `limit`.
@@ -217,21 +206,10 @@ private:
     // A built-in type as an argument, `Q_ARG(int, level)`: only a macro takes one.
     void typeArguments(qsizetype open, qsizetype close)
     {
-        static const QRegularExpression builtin(QStringLiteral(
-            "^\\s*(?:(?:const|unsigned|signed|short|long|int|char|float|double|bool|void|"
-            "wchar_t|size_t|u?int(?:8|16|32|64)_t)\\b\\s*)+[*&\\s]*$"));
-        qsizetype from = open + 1;
-        for (qsizetype i = open + 1, depth = 0; i <= close; ++i) {
-            const char c = m_code.at(i);
-            if (depth == 0 && (c == ',' || i == close)) {
-                if (builtin.match(QString::fromLatin1(m_code.mid(from, i - from))).hasMatch()) {
-                    const qsizetype first = nextCode(m_code, from);
-                    set(first, i, ' ');
-                    set(first, first + 1, '_');
-                }
-                from = i + 1;
-            }
-            depth += nesting(c);
+        for (const auto &[from, to] : builtinTypeArguments(m_code, open, close)) {
+            const qsizetype first = nextCode(m_code, from);
+            set(first, to, ' ');
+            set(first, first + 1, '_');
         }
     }
 

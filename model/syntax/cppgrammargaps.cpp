@@ -354,21 +354,7 @@ void blankDeclarationBodies(const QByteArray &code, Text text, const std::vector
 // `unsigned char`: no function takes that, only a macro.
 bool hasBuiltinTypeArgument(const QByteArray &code, qsizetype open, qsizetype close)
 {
-    static const QRegularExpression builtin(
-        QStringLiteral("^\\s*(?:(?:const|unsigned|signed|short|long|int|char|float|double|bool|"
-                       "void|wchar_t|char8_t|char16_t|char32_t|size_t|u?int(?:8|16|32|64)_t)\\b"
-                       "\\s*)+[*&\\s]*$"));
-    qsizetype from = open + 1;
-    for (qsizetype i = open + 1, depth = 0; i <= close; ++i) {
-        const char c = code.at(i);
-        if (depth == 0 && (c == ',' || i == close)) {
-            if (builtin.match(QString::fromLatin1(code.mid(from, i - from))).hasMatch())
-                return true;
-            from = i + 1;
-        }
-        depth += nesting(c);
-    }
-    return false;
+    return !builtinTypeArguments(code, open, close).empty();
 }
 
 // A macro invocation that stands alone, without a `;`, at the start of a statement or member:

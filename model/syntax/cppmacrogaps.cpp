@@ -43,15 +43,6 @@ bool isRegistration(std::string_view word)
            word == "CLASS_LOADER_REGISTER_CLASS";
 }
 
-/// The identifier ending at `end` (exclusive), empty when `end` ends none.
-std::string_view wordEndingAt(const QByteArray &code, qsizetype end)
-{
-    qsizetype start = end;
-    while (start > 0 && isIdentifierChar(code.at(start - 1)))
-        --start;
-    return {code.constData() + start, size_t(end - start)};
-}
-
 /// Words after which a name in capitals with arguments is a call, not an annotation.
 bool isExpressionKeyword(std::string_view w)
 {
