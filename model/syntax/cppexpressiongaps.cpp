@@ -5,6 +5,7 @@
 #include "cppmacrogaps.h"
 
 #include <cstring>
+#include <vector>
 
 namespace rosarch::cppsyntax::expressions {
 
@@ -65,33 +66,51 @@ qsizetype closingBrace(const QByteArray &code, qsizetype open, qsizetype limit)
     return -1;
 }
 
-/// True when the innermost block around `at` is a function body or a block in one: its `{`
-/// follows a `)`, another block's brace or statement, or `else`, `do`, `try` or a qualifier
-/// (not `final`, which ends a class head too).
-bool inFunctionBody(const QByteArray &code, qsizetype at)
+/// Whether the innermost block at an offset is a function body or a block in one, for offsets
+/// asked in ascending order: one pass over the braces, however many words ask.
+class Blocks
 {
-    int depth = 0;
-    for (qsizetype i = at - 1; i >= 0 && at - i < 16384; --i) {
-        const char c = code.at(i);
-        if (c == '}')
-            ++depth;
-        else if (c == '{' && depth-- == 0) {
-            const qsizetype before = previousCode(code, i);
-            if (before < 0)
-                return false;
-            if (std::strchr(");{}", code.at(before)))
-                return true;
-            return isOneOf(wordEndingAt(code, before + 1),
-                           {"else", "do", "try", "const", "override", "noexcept", "mutable"});
+public:
+    explicit Blocks(const QByteArray &code) : m_code(code) {}
+
+    bool functionBodyAt(qsizetype at)
+    {
+        for (; m_next < at && m_next < m_code.size(); ++m_next) {
+            const char c = m_code.at(m_next);
+            if (c == '{')
+                m_stack.push_back(opensBody(m_next));
+            else if (c == '}' && !m_stack.empty())
+                m_stack.pop_back();
         }
+        return !m_stack.empty() && m_stack.back();
     }
-    return false;
-}
+
+private:
+    /// The `{` follows a `)`, another block's brace or a statement, or `else`, `do`, `try` or a
+    /// qualifier (not `final`, which ends a class head too).
+    bool opensBody(qsizetype brace) const
+    {
+        const qsizetype before = previousCode(m_code, brace);
+        if (before < 0)
+            return false;
+        if (std::strchr(");{}", m_code.at(before)))
+            return true;
+        return isOneOf(wordEndingAt(m_code, before + 1),
+                       {"else", "do", "try", "const", "override", "noexcept", "mutable"});
+    }
+
+    const QByteArray &m_code;
+    qsizetype m_next = 0;
+    std::vector<bool> m_stack;
+};
 
 class Rewriter
 {
 public:
-    Rewriter(QByteArray &code, char *data) : m_code(code), m_data(data), m_n(code.size()) {}
+    Rewriter(QByteArray &code, char *data)
+        : m_code(code), m_data(data), m_n(code.size()), m_blocks(code)
+    {
+    }
 
     void run()
     {
@@ -244,7 +263,7 @@ private:
                 }
                 // `forEach(List, &items) {` in a function: a loop header of a macro.
                 if (!isKeyword(word) && next < m_n && m_code.at(next) == '{' &&
-                    atStatementStart(m_code, start) && inFunctionBody(m_code, start)) {
+                    atStatementStart(m_code, start) && m_blocks.functionBodyAt(start)) {
                     set(start, close + 1, ' ');
                     i = close + 1;
                 }
@@ -256,11 +275,11 @@ private:
             if (macro) {
                 const bool value =
                     (preceding == '=' || preceding == '?' ||
-                     ((preceding == '(' || preceding == ',') && inFunctionBody(m_code, start)) ||
+                     ((preceding == '(' || preceding == ',') && m_blocks.functionBodyAt(start)) ||
                      wordEndingAt(m_code, before + 1) == "return");
                 const bool statement = isWordAt(m_code, after, "this") &&
                                        atStatementStart(m_code, start) &&
-                                       inFunctionBody(m_code, start);
+                                       m_blocks.functionBodyAt(start);
                 if (value || statement)
                     set(start, i, ' ');
                 continue;
@@ -281,6 +300,7 @@ private:
     QByteArray &m_code;
     char *m_data;
     const qsizetype m_n;
+    Blocks m_blocks; ///< asked by words(), which moves forward
 };
 
 } // namespace
