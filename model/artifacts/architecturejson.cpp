@@ -1,6 +1,7 @@
 #include "architecturejson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "parameterview.h"
 #include "visibletext.h"
 
 namespace rosarch {
@@ -39,7 +40,30 @@ Json portJson(const PartPort &p)
     return j;
 }
 
-Json partJson(const RosNodePart &part)
+Json parametersJson(const QList<InstanceParameter> &parameters)
+{
+    Json a = Json::array();
+    for (const InstanceParameter &p : parameters) {
+        Json j;
+        j["name"] = utf8(p.name);
+        if (!p.plugin.isEmpty())
+            j["plugin"] = utf8(p.plugin);
+        j["declared"] = p.declared;
+        j["type"] = utf8(p.type);
+        j["default"] = p.hasDefault ? Json(utf8(p.defaultValue)) : Json(nullptr);
+        j["value"] = p.source.isEmpty() ? Json(nullptr) : Json(utf8(p.value));
+        j["source"] = utf8(p.source);
+        if (p.hasValue) // where it is set: a line, as effective_parameters gives it
+            j["set_at"] = {{"file", utf8(p.valueEvidence.file)}, {"line", p.valueEvidence.line}};
+        j["description"] = utf8(p.description);
+        if (p.declaration.isValid())
+            j["declared_at"] = {{"file", utf8(p.declaration.file)}, {"line", p.declaration.line}};
+        a.push_back(j);
+    }
+    return a;
+}
+
+Json partJson(const RosNodePart &part, const QList<InstanceParameter> *parameters)
 {
     Json j;
     j["id"] = utf8(part.id);
@@ -61,13 +85,16 @@ Json partJson(const RosNodePart &part)
     for (const PartPort &p : part.ports)
         ports.push_back(portJson(p));
     j["ports"] = ports;
+    if (parameters)
+        j["parameters"] = parametersJson(*parameters);
     if (part.evidence.isValid())
         j["evidence"] = EvidenceJson::toJson(part.evidence);
     JsonSupport::putMarks(j, part.marks);
     return j;
 }
 
-Json compositeJson(const Composite &c, const QString &ccd)
+Json compositeJson(const Composite &c, const QString &ccd,
+                   const QHash<QString, QList<InstanceParameter>> &parameters)
 {
     Json j;
     j["id"] = utf8(c.instanceId);
@@ -80,8 +107,11 @@ Json compositeJson(const Composite &c, const QString &ccd)
     if (!ccd.isEmpty())
         j["ccd"] = utf8(ccd);
     Json parts = Json::array();
-    for (const RosNodePart &p : c.parts)
-        parts.push_back(partJson(p));
+    for (const RosNodePart &p : c.parts) {
+        const auto it = p.kind == RosNodePart::Kind::Node ? parameters.constFind(p.instanceId)
+                                                          : parameters.constEnd();
+        parts.push_back(partJson(p, it == parameters.constEnd() ? nullptr : &*it));
+    }
     j["parts"] = parts;
     Json channels = Json::array();
     for (const Channel &ch : c.channels) {
@@ -117,14 +147,23 @@ Json compositeJson(const Composite &c, const QString &ccd)
 
 } // namespace
 
-QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString, QString> &ccdStems)
+QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString, QString> &ccdStems,
+                                   const AtomicNodeList *nodes, const LaunchDependencies *launch)
 {
+    QHash<QString, QList<InstanceParameter>> parameters; // by node instance id
+    if (nodes && launch) {
+        const ParameterView view(*nodes);
+        for (const QList<NodeInstance> *instances : {&launch->nodes, &launch->classifierNodes})
+            for (const NodeInstance &n : *instances)
+                if (!parameters.contains(n.id))
+                    parameters.insert(n.id, view.of(n));
+    }
     Json root;
     Json list = Json::array();
     for (const Composite &c : arch.composites) {
         const QString stem = ccdStems.value(c.instanceId);
-        list.push_back(
-            compositeJson(c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem)));
+        list.push_back(compositeJson(
+            c, stem.isEmpty() ? QString() : QStringLiteral("ccd/%1.puml").arg(stem), parameters));
     }
     root["list_composed_ros_node_classifiers"] = list;
     return visibleJson(root.dump(2)) + '\n';

@@ -110,7 +110,8 @@ bool ArtifactWriter::writeAll(const Recovery &recovery, const QString &dir, QStr
     if (withLaunch) {
         const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
         if (!stage(QStringLiteral("architecture.json"),
-                   ArchitectureJson::write(recovery.architecture, ccdStems)))
+                   ArchitectureJson::write(recovery.architecture, ccdStems, &recovery.nodes,
+                                           &recovery.launch)))
             return false;
         for (const Composite *c : recovery.architecture.representatives()) {
             const QString stem = ccdStems.value(c->instanceId);

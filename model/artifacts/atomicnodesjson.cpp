@@ -1,6 +1,7 @@
 #include "atomicnodesjson.h"
 #include "evidencejson.h"
 #include "jsonsupport.h"
+#include "parameterjson.h"
 #include "visibletext.h"
 
 #include <nlohmann/json.hpp>
@@ -107,6 +108,9 @@ Json nodeJson(const AtomicNode &n)
         }
         j["constructions"] = built;
     }
+    j["parameters"] = ParameterJson::toJson(n.parameters);
+    if (n.acceptsUndeclared)
+        j["accepts_undeclared"] = true;
     JsonSupport::putMarks(j, n.marks);
     return j;
 }
@@ -187,6 +191,9 @@ QByteArray AtomicNodesJson::write(const AtomicNodeList &list)
         packageEntry(QString(), QString(), QString());
     Json root;
     root["list_packages"] = packages;
+    // names helper code declares on whichever node it is handed (not judged undeclared)
+    if (!list.helperParameters.isEmpty())
+        root["helper_parameters"] = ParameterJson::toJson(list.helperParameters);
     return visibleJson(root.dump(2)) + '\n';
 }
 
@@ -270,9 +277,14 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
                     n.constructions.append(k);
                 }
             }
+            if (nj.contains("parameters"))
+                n.parameters = ParameterJson::fromJson(nj["parameters"]);
+            n.acceptsUndeclared = nj.value("accepts_undeclared", false);
             out.nodes.append(n);
         }
     }
+    if (root.contains("helper_parameters"))
+        out.helperParameters = ParameterJson::fromJson(root["helper_parameters"]);
     *list = std::move(out);
     return true;
 }

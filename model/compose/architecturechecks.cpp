@@ -2,6 +2,7 @@
 #include "checkscope.h"
 #include "composer.h"
 #include "observability.h"
+#include "parameterchecks.h"
 #include "qos.h"
 #include "remapchecks.h"
 #include "rosnames.h"
@@ -573,6 +574,7 @@ QList<Diagnostic> ArchitectureChecks::run(const Architecture &arch, const Atomic
         out.append(d);
     }
     RemapChecks::run(nodes, launch, &out);
+    ParameterChecks::run(nodes, launch, &out);
     // A file included twice reports the same remap (same launch line) twice.
     Diagnostic::removeDuplicates(&out);
     return out;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "evidence.h"
+#include "parameter.h"
 #include "port.h"
 #include "provenance.h"
 
@@ -71,6 +72,10 @@ struct AtomicNode
     /// Where executables' own code constructs it, one per construction (several instances of
     /// one class each get theirs)
     QList<NodeConstruction> constructions = {};
+    QList<ParameterDeclaration> parameters = {}; ///< declared parameters, in source order
+    /// It takes any parameter (`allow_undeclared_parameters`,
+    /// `automatically_declare_parameters_from_overrides`): none given to it is undeclared.
+    bool acceptsUndeclared = false;
 
     Marks marks = {}; ///< provenance and review (blueprint §5); set by the corrected model
     /// The blueprint's `execution`: the first executable, else the first plugin.

@@ -17,6 +17,9 @@ struct AtomicNodeList
     QList<AtomicNode> nodes; ///< sorted by package, class name; ids arc_1..arc_n in that order
     QList<Diagnostic> diagnostics;
     bool canceled = false;
+    /// Parameters helper code declares on whichever node it is handed (LanguageAnalysis): a
+    /// value for one of these names is not judged undeclared.
+    QList<ParameterDeclaration> helperParameters = {};
 
     const AtomicNode *node(const QString &id) const;
     bool operator==(const AtomicNodeList &) const = default;

@@ -89,6 +89,29 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
              "sides, no port of the node has the rule's source name. The rule has no effect; "
              "check its spelling and namespace.",
              "warning"),
+        kind("parameter-undeclared", "Parameter nobody declares",
+             "A launch file or a parameter file gives a node instance a value for a parameter "
+             "that neither its class nor the plugins it loads declare. ROS 2 ignores such a "
+             "value without a word, so a misspelt key or a key indented under the wrong node "
+             "changes nothing. The message names the nearest declared name. Fix the key, or "
+             "remove it. Not judged for nodes that take any parameter or whose declarations the "
+             "analysis cannot see whole.",
+             "warning"),
+        kind("parameter-type", "Parameter value of the wrong type",
+             "A node instance is given a value of another type than its class declares the "
+             "parameter with (an integer for a double, a quoted \"10\" for an integer). ROS 2 "
+             "refuses to set it and the node fails at start-up. Write the value in the declared "
+             "type (10.0 for a double).",
+             "warning"),
+        kind("parameter-range", "Parameter value out of range",
+             "A node instance is given a number outside the range the parameter's descriptor "
+             "allows; ROS 2 refuses to set it. Give a value inside the range.",
+             "warning"),
+        kind("parameter-missing", "Parameter without a value",
+             "A node class declares a parameter without a default, and neither the launch file "
+             "nor its parameter files set it for this instance: reading it fails at run time. "
+             "Set it. Not judged when a parameter file of the instance could not be read.",
+             "warning"),
         kind("qos-incompatible", "Incompatible QoS",
              "A publisher and a subscription on one topic have QoS policies that ROS 2 will not "
              "match: a best-effort publisher cannot serve a reliable subscription, and a "

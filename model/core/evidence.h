@@ -23,4 +23,14 @@ struct Evidence
     bool operator==(const Evidence &) const = default;
 };
 
+/// Source order: by file, then line, then column.
+inline bool evidenceLess(const Evidence &a, const Evidence &b)
+{
+    if (a.file != b.file)
+        return a.file < b.file;
+    if (a.line != b.line)
+        return a.line < b.line;
+    return a.column < b.column;
+}
+
 } // namespace rosarch

@@ -41,6 +41,9 @@ struct LanguageAnalysis
     QList<EntryPoint> entryPoints;
     QList<ComponentRegistration> registrations;
     QList<Diagnostic> diagnostics;
+    /// Parameters that helper code (free functions, classes that are no nodes) declares on a
+    /// node it is handed: which node is not followed, so the names are declared for any.
+    QList<ParameterDeclaration> helperParameters = {};
 };
 
 } // namespace rosarch

@@ -32,6 +32,9 @@ struct ParameterSetting
                        ///< "default" (the declared default in code)
     QString file;      ///< the parameter file (workspace-relative) for source "file"
     Evidence evidence; ///< the YAML line, the launch line, or the declaration in code
+    /// The value's type as ROS reads it (parameterValueType); "" when open
+    QString type = {};
+    bool wildcard = false; ///< from a parameter file's key for many nodes (`/**`, `/*/x`)
     bool operator==(const ParameterSetting &) const = default;
 };
 

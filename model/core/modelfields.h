@@ -43,11 +43,17 @@ template <class F> void fields(NodeConstruction &v, F f)
 {
     f(v.className, v.executable, v.nodeName, v.guard, v.ports, v.evidence);
 }
+template <class F> void fields(ParameterDeclaration &v, F f)
+{
+    f(v.name, v.nameExpression, v.type, v.defaultValue, v.hasDefault, v.readOnly, v.dynamicTyping,
+      v.description, v.range, v.guard, v.via, v.inherited, v.evidence);
+}
 template <class F> void fields(AtomicNode &v, F f)
 {
     f(v.id, v.className, v.qualifiedName, v.nodeName, v.packageName, v.headerFiles, v.sourceFiles,
       v.description, v.compileType, v.baseClasses, v.lifecycle, v.procedural, v.executables,
-      v.plugins, v.pluginInterface, v.evidence, v.ports, v.children, v.constructions);
+      v.plugins, v.pluginInterface, v.evidence, v.ports, v.children, v.constructions, v.parameters,
+      v.acceptsUndeclared);
 }
 template <class F> void fields(Executable &v, F f)
 {
@@ -59,7 +65,7 @@ template <class F> void fields(RosPackage &v, F f)
 }
 template <class F> void fields(AtomicNodeList &v, F f)
 {
-    f(v.workspaceRoot, v.packages, v.nodes, v.diagnostics, v.canceled);
+    f(v.workspaceRoot, v.packages, v.nodes, v.diagnostics, v.canceled, v.helperParameters);
 }
 template <class F> void fields(Unresolved &v, F f)
 {
@@ -67,7 +73,7 @@ template <class F> void fields(Unresolved &v, F f)
 }
 template <class F> void fields(ParameterSetting &v, F f)
 {
-    f(v.name, v.value, v.source, v.file, v.evidence);
+    f(v.name, v.value, v.source, v.file, v.evidence, v.type, v.wildcard);
 }
 template <class F> void fields(NodeInstance &v, F f)
 {

@@ -1,5 +1,6 @@
 // LaunchExecutor's parameters: parameter files, what an instance ends up with, its plugins.
 #include "launchexecutor.h"
+#include "parameter.h"
 #include "rosnames.h"
 #include "sourcereader.h"
 
@@ -95,9 +96,12 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
         fqn.prepend(QLatin1Char('/'));
     for (const LaunchParameter &p : a.parameters) {
         if (!p.isFile) {
-            set({evaluate(p.name, scope, frame, nullptr, p.evidence),
-                 evaluate(p.value, scope, frame, nullptr, p.evidence), QStringLiteral("launch"),
-                 QString(), p.evidence});
+            ParameterSetting s{evaluate(p.name, scope, frame, nullptr, p.evidence),
+                               evaluate(p.value, scope, frame, nullptr, p.evidence),
+                               QStringLiteral("launch"), QString(), p.evidence};
+            // launch_ros reads a value given as text as YAML: "10" is an integer
+            s.type = parameterValueType(s.value);
+            set(s);
             continue;
         }
         const bool rewritten = p.value.kind == Substitution::Kind::RewrittenYaml;

@@ -2,6 +2,7 @@
 #include "analysiscache.h"
 #include "cppnodeanalyzer.h"
 #include "cppsyntax.h"
+#include "generatedparameters.h"
 #include "pythonnodeanalyzer.h"
 #include "stagememo.h"
 #include "workspacescanner.h"
@@ -312,6 +313,7 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
         entryPoints.append(a.entryPoints);
         registrations.append(a.registrations);
         list.diagnostics.append(a.diagnostics);
+        list.helperParameters.append(a.helperParameters);
     }
     if (control.isCanceled()) {
         list.canceled = true;
@@ -323,6 +325,7 @@ AtomicNodeList analyse(const Workspace &workspace, const StageControl &control)
     for (const RosPackage &pkg : workspace.packages)
         for (const Executable &exe : pkg.executables)
             linker.link(pkg, exe);
+    GeneratedParameters::apply(workspace, &list);
 
     std::sort(list.nodes.begin(), list.nodes.end(), [](const AtomicNode &a, const AtomicNode &b) {
         return std::tie(a.packageName, a.className, a.qualifiedName, a.evidence.file) <

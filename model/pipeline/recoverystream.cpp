@@ -91,6 +91,7 @@ void deltaFields(quint8 part, R &v, B &base, L list, F scalar)
         list(v.nodes.packages, base.nodes.packages);
         list(v.nodes.nodes, base.nodes.nodes);
         list(v.nodes.diagnostics, base.nodes.diagnostics);
+        list(v.nodes.helperParameters, base.nodes.helperParameters);
     } else if (part == stagestream::LaunchPart) {
         scalar(v.launch.canceled);
         list(v.launch.launchFiles, base.launch.launchFiles);

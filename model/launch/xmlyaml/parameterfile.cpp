@@ -1,4 +1,6 @@
 #include "parameterfile.h"
+
+#include "parameter.h"
 #include "yamlsupport.h"
 
 #include <QHash>
@@ -83,6 +85,12 @@ ParameterFile ParameterFile::read(const QByteArray &content, const QString &file
                 s.name = name;
                 s.value = yamlValueText(kv.second, &budget, kMaxDepth, depth + 1);
                 s.source = QStringLiteral("file");
+                // a quoted scalar is a string whatever it reads as ("10")
+                s.type =
+                    parameterValueType(s.value, kv.second.IsScalar() && kv.second.Tag() == "!");
+                if (kv.second.IsSequence() && kv.second.size() > 0 && kv.second[0].IsScalar() &&
+                    kv.second[0].Tag() == "!")
+                    s.type = QStringLiteral("string_array"); // ['0', '1']
                 s.file = file;
                 s.evidence = evidenceAt(file, kv.first);
                 *into << s;
@@ -156,6 +164,7 @@ void ParameterFile::rewrite(const QList<QPair<QString, QString>> &rewrites, cons
                 const bool byValue = key.startsWith(QLatin1Char('='));
                 if (byValue ? s.value == key.mid(1) : key == s.name || key == leaf) {
                     s.value = value;
+                    s.type = parameterValueType(value);  // RewrittenYaml converts the text
                     s.source = QStringLiteral("launch"); // the launch file decides it now
                 }
             }
@@ -181,9 +190,14 @@ QList<ParameterSetting> ParameterFile::forNode(const QString &fqn) const
             }
         }
     };
-    for (const Entry &e : entries)
-        if (e.pattern.contains(QLatin1Char('*')) && matches(e.pattern, fqn))
-            apply(e);
+    for (const Entry &e : entries) {
+        if (!e.pattern.contains(QLatin1Char('*')) || !matches(e.pattern, fqn))
+            continue;
+        Entry many = e;
+        for (ParameterSetting &s : many.parameters)
+            s.wildcard = true;
+        apply(many);
+    }
     for (const Entry &e : entries)
         if (!e.pattern.contains(QLatin1Char('*')) && matches(e.pattern, fqn))
             apply(e);

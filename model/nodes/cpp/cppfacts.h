@@ -59,8 +59,21 @@ struct CppValue
 /// A `declare_parameter("p", default)` (or a nav2 equivalent) in a function.
 struct CppParameterDeclaration
 {
-    QString parameter;
-    CppValue defaultValue;
+    QString parameter;     ///< the literal name ("" when `name` is an expression)
+    CppValue defaultValue; ///< None when declared without one
+    CppValue name = {};    ///< the name when it is not a literal (`plugin_name_ + ".x"`)
+    /// Also the class's declaration (not only a name a port or guard reads): rclcpp's and
+    /// nav2_util's declaring calls, `get_parameter_or`, `undeclare_parameter` ("undeclare").
+    QString via = {};
+    QString type = {};        ///< ROS parameter type the call decides ("" when open)
+    bool hasDefault = false;  ///< a value is given (`defaultValue` may still be None for it)
+    QString defaultText = {}; ///< the default as written
+    bool readOnly = false;
+    bool dynamicTyping = false;
+    QString description = {};
+    QString range = {};
+    QString guard = {};
+    Evidence evidence = {};
 };
 
 /// A member variable receiving a value: in-class initializer, constructor initializer list,
@@ -179,6 +192,9 @@ struct CppFunction
     QStringList templateParameters; ///< the function's own (`template <class T> void f()`)
     CppValue returnValue;           ///< a body that is a single `return x;`: x
     Evidence evidence;
+    /// Sets `allow_undeclared_parameters(true)` or
+    /// `automatically_declare_parameters_from_overrides(true)` on node options.
+    bool acceptsUndeclared = false;
 };
 
 /// A class or struct definition with a body.

@@ -17,7 +17,8 @@ template <class F> void fields(CppValue &v, F f)
 }
 template <class F> void fields(CppParameterDeclaration &v, F f)
 {
-    f(v.parameter, v.defaultValue);
+    f(v.parameter, v.defaultValue, v.name, v.via, v.type, v.hasDefault, v.defaultText, v.readOnly,
+      v.dynamicTyping, v.description, v.range, v.guard, v.evidence);
 }
 template <class F> void fields(CppMemberBinding &v, F f)
 {
@@ -58,7 +59,7 @@ template <class F> void fields(CppFunction &v, F f)
       v.parameterTypes, v.parameterDefaults, v.requiredParameters, v.variadic, v.aliases,
       v.baseInitializers, v.ports, v.parameterDeclarations, v.memberBindings, v.fieldBindings,
       v.outBindings, v.instantiations, v.freeCalls, v.methodCalls, v.proceduralNodes,
-      v.templateParameters, v.returnValue, v.evidence);
+      v.templateParameters, v.returnValue, v.evidence, v.acceptsUndeclared);
 }
 template <class F> void fields(CppClass &v, F f)
 {
@@ -84,7 +85,7 @@ template <class F> void fields(EntryPoint &v, F f)
 }
 template <class F> void fields(LanguageAnalysis &v, F f)
 {
-    f(v.nodes, v.entryPoints, v.registrations, v.diagnostics);
+    f(v.nodes, v.entryPoints, v.registrations, v.diagnostics, v.helperParameters);
 }
 
 } // namespace rosarch

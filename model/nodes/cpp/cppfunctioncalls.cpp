@@ -1,5 +1,6 @@
 #include "cppfunctionextractor.h"
 #include "cppfunctiontext.h"
+#include "cppparameterreader.h"
 
 #include <cstring>
 
@@ -17,7 +18,7 @@ void CppFunctionExtractor::onCall(TSNode call)
     if (shape.name.isEmpty())
         return;
     const auto args = arguments(ts::field(call, fields().arguments));
-    onParameterCall(shape.name, args);
+    onParameterCall(call, shape, args);
     if (m_portCalls.read(call, shape, args))
         return;
 
@@ -44,12 +45,29 @@ void CppFunctionExtractor::onCall(TSNode call)
     addInstantiation(className, args, call);
 }
 
-void CppFunctionExtractor::onParameterCall(const QString &name, const std::vector<TSNode> &args)
+void CppFunctionExtractor::onParameterCall(TSNode call, const CallShape &shape,
+                                           const std::vector<TSNode> &args)
 {
+    const QString &name = shape.name;
+    if ((name == QLatin1String("allow_undeclared_parameters") ||
+         name == QLatin1String("automatically_declare_parameters_from_overrides")) &&
+        !args.empty() && m_tree.text(args.front()) == QLatin1String("true"))
+        m_function.acceptsUndeclared = true;
     // Both forms name a parameter: an ASCII name without it is neither (most calls), with no
     // lower-case copy made. Other names take the long way, where case mapping is Unicode's.
     if (isAscii(name) && !name.contains(QLatin1String("parameter"), Qt::CaseInsensitive))
         return;
+    CppParameterDeclaration declared =
+        CppParameterReader(m_tree, m_values).read(call, shape, args, m_definition);
+    if (!declared.via.isEmpty()) {
+        CppValue tested;
+        QString guard;
+        m_portCalls.guardOf(call, &guard, &tested);
+        if (!guard.isEmpty())
+            declared.guard = guard;
+        m_function.parameterDeclarations.append(declared);
+    }
+    const bool readDeclared = !declared.via.isEmpty() && !declared.parameter.isEmpty();
     const QString lower = name.toLower();
     const bool declares = lower.contains(QLatin1String("declare")) &&
                           lower.contains(QLatin1String("parameter")) &&
@@ -64,6 +82,8 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
     if (at < 0)
         return;
     const int next = at + 1;
+    if (declares && readDeclared)
+        return;
     if (declares) {
         CppParameterDeclaration decl;
         decl.parameter = parameter;
@@ -76,7 +96,7 @@ void CppFunctionExtractor::onParameterCall(const QString &name, const std::vecto
         return;
     // get_parameter("p", variable) / get_parameter_or("p", variable, default)
     const TSNode target = args[size_t(next)];
-    if (name != QLatin1String("get_parameter") && next + 1 < int(args.size()))
+    if (name != QLatin1String("get_parameter") && next + 1 < int(args.size()) && !readDeclared)
         m_function.parameterDeclarations.append(
             {parameter, m_values.evaluate(args[size_t(next + 1)])});
     CppValue bound;

@@ -48,7 +48,8 @@ private:
     void onAssignment(TSNode assignment);
     void onCall(TSNode call);
     void onNew(TSNode expression);
-    void onParameterCall(const QString &name, const std::vector<TSNode> &args);
+    void onParameterCall(TSNode call, const cppsyntax::CallShape &shape,
+                         const std::vector<TSNode> &args);
     void addFieldBinding(TSNode target, const CppValue &value);
     void addInstantiation(const QString &className, const std::vector<TSNode> &args, TSNode where,
                           const QString &member = {});

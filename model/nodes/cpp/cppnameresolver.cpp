@@ -317,7 +317,7 @@ QString CppNameResolver::parameterDefault(const QString &parameter, const CppLin
     CppLinkContext declared = ctx;
     if (ctx.fn)
         for (const CppParameterDeclaration &d : ctx.fn->parameterDeclarations)
-            if (!decl && d.parameter == parameter)
+            if (!decl && !d.parameter.isEmpty() && d.parameter == parameter)
                 decl = &d;
     if (!decl && ctx.cls >= 0) {
         for (int c : m_index.lineage(ctx.cls)) {

@@ -20,15 +20,6 @@ using namespace cppsyntax;
 
 namespace {
 
-bool evidenceLess(const Evidence &a, const Evidence &b)
-{
-    if (a.file != b.file)
-        return a.file < b.file;
-    if (a.line != b.line)
-        return a.line < b.line;
-    return a.column < b.column;
-}
-
 QString fileStem(const QString &path)
 {
     return QFileInfo(path).completeBaseName();
@@ -73,7 +64,7 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
     : m_files(files), m_index(files), m_shared(files, m_index),
       m_names(m_index, m_facts, m_interfaceAliases, m_shared),
       m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes),
-      m_constructions(m_index, m_names, m_helpers)
+      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names)
 {
     for (const CppFileFacts &file : files) {
         for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
@@ -97,7 +88,7 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
             for (const CppMemberBinding &b : ref.function->memberBindings)
                 f.bindings[b.member].append({b.value, ref.function, ref.file});
             for (const CppParameterDeclaration &d : ref.function->parameterDeclarations)
-                if (!f.parameters.contains(d.parameter))
+                if (!d.parameter.isEmpty() && !f.parameters.contains(d.parameter))
                     f.parameters.insert(d.parameter, d);
         }
     }
@@ -201,11 +192,11 @@ LanguageAnalysis CppNodeLinker::link() const
             if (c < 0 || m_index.at(c).node || ownedNode(c) || plugins.contains(c))
                 continue;
             plugins.insert(c);
-            // A plugin that creates no ports (a planner's math, a costmap filter) is no part
-            // of the communication architecture.
+            // A plugin that creates no ports and declares no parameters (a planner's math) is
+            // no part of the architecture.
             AtomicNode n = pluginNode(c, e, templateArguments);
             const QList<Evidence> hit = m_helpers.takeBoundsHit();
-            if (!n.ports.isEmpty()) {
+            if (!n.ports.isEmpty() || !n.parameters.isEmpty()) {
                 out.nodes.append(n);
                 reportBounds(n, hit);
             }
@@ -223,6 +214,7 @@ LanguageAnalysis CppNodeLinker::link() const
                              return a.qualifiedName < b.qualifiedName;
                          return evidenceLess(a.evidence, b.evidence);
                      });
+    out.helperParameters = m_parameters.helperDeclarations();
     return out;
 }
 
@@ -264,6 +256,8 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
     // One call can be reached twice (a helper instantiated twice with the same arguments).
     appendUnique(&node.ports, ports);
     node.children = childNodesOf(index);
+    node.parameters = m_parameters.declarations(index);
+    node.acceptsUndeclared = m_parameters.acceptsUndeclared(index);
     return node;
 }
 
@@ -336,7 +330,10 @@ AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported,
                                ? exported.baseClass.mid(2)
                                : exported.baseClass;
     node.ports.clear();
-    QList<Port> ports = pluginPorts(index, templateArguments);
+    const std::map<int, CppSubstitution> substitutions =
+        pluginSubstitutions(index, templateArguments);
+    QList<Port> ports = pluginPorts(index, substitutions);
+    node.parameters = m_parameters.declarations(index, &substitutions);
     std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
         return evidenceLess(a.evidence, b.evidence);
     });
@@ -348,8 +345,9 @@ AtomicNode CppNodeLinker::pluginNode(int index, const CppPluginExport &exported,
 // are given (`configure(parent, ...)`, `initialize(node)`, a `weak_ptr` locked); a template
 // base (BehaviorTreeNavigator<ActionT>) sees the arguments the plugin gives it, and a virtual
 // `getName()` is the plugin's.
-QList<Port> CppNodeLinker::pluginPorts(int plugin,
-                                       const QHash<QString, QString> &templateArguments) const
+std::map<int, CppSubstitution>
+CppNodeLinker::pluginSubstitutions(int plugin,
+                                   const QHash<QString, QString> &templateArguments) const
 {
     static const CppFunction noCall; // no parameter stands for an argument
     const QList<int> lineage = m_index.lineage(plugin);
@@ -373,9 +371,18 @@ QList<Port> CppNodeLinker::pluginPorts(int plugin,
             substitutions.emplace(b, subst);
         }
     }
+    return substitutions;
+}
+
+QList<Port> CppNodeLinker::pluginPorts(int plugin,
+                                       const std::map<int, CppSubstitution> &substitutions) const
+{
     QList<Port> ports;
-    for (int c : lineage) {
-        const CppSubstitution &subst = substitutions[c];
+    for (int c : m_index.lineage(plugin)) {
+        const auto found = substitutions.find(c);
+        if (found == substitutions.end())
+            continue;
+        const CppSubstitution &subst = found->second;
         for (const auto &ref : m_index.at(c).functions) {
             const CppLinkContext ctx{c, ref.function, ref.file, &subst, plugin};
             for (const CppPortCall &call : ref.function->ports) {

@@ -6,6 +6,7 @@
 #include "cpphelperports.h"
 #include "cpplinkcontext.h"
 #include "cppnameresolver.h"
+#include "cppparameterlinker.h"
 #include "cppsharednames.h"
 #include "languageanalysis.h"
 
@@ -41,7 +42,11 @@ private:
                     QHash<QString, QString> *templateArguments) const;
     AtomicNode pluginNode(int index, const CppPluginExport &exported,
                           const QHash<QString, QString> &templateArguments) const;
-    QList<Port> pluginPorts(int plugin, const QHash<QString, QString> &templateArguments) const;
+    /// What stands for the parameters and template parameters of each class on a plugin's
+    /// lineage (the plugin's own code is handed the node by the loader).
+    std::map<int, CppSubstitution>
+    pluginSubstitutions(int plugin, const QHash<QString, QString> &templateArguments) const;
+    QList<Port> pluginPorts(int plugin, const std::map<int, CppSubstitution> &substitutions) const;
     void addProceduralNodes(const CppClassIndex::FunctionRef &ref, QList<AtomicNode> *nodes,
                             QHash<QString, int> *stems) const;
     void addEntryPoint(const CppClassIndex::FunctionRef &ref, const QList<AtomicNode> &procedural,
@@ -59,6 +64,7 @@ private:
     CppNameResolver m_names;          ///< after the containers it reads
     CppHelperPorts m_helpers;         ///< after the containers it reads
     CppConstructions m_constructions; ///< after the resolver and the helper ports
+    CppParameterLinker m_parameters;  ///< after the resolver
 };
 
 } // namespace rosarch

@@ -45,11 +45,12 @@ template <class F> void cacheFields(Tag, PythonClassFacts &v, F f)
 {
     f(v.ports, v.handoffs, v.calls, v.procedurals, v.name, v.qualifiedName, v.bases, v.baseTargets,
       v.evidence, v.methods, v.methodParameters, v.superCalledMethods, v.hasInit, v.initParameters,
-      v.hasBaseInitCall, v.baseInitArguments);
+      v.hasBaseInitCall, v.baseInitArguments, v.parameterDeclarations, v.acceptsUndeclared);
 }
 template <class F> void cacheFields(Tag, PythonFunctionFacts &v, F f)
 {
-    f(v.ports, v.handoffs, v.calls, v.procedurals, v.name, v.parameters, v.evidence);
+    f(v.ports, v.handoffs, v.calls, v.procedurals, v.name, v.parameters, v.evidence,
+      v.parameterDeclarations, v.acceptsUndeclared);
 }
 template <class F> void cacheFields(Tag, PythonModuleFacts &v, F f)
 {

@@ -2,6 +2,7 @@
 
 #include "diagnostic.h"
 #include "evidence.h"
+#include "parameter.h"
 #include "port.h"
 
 #include <QList>
@@ -116,6 +117,9 @@ struct PythonScopeFacts
     QList<PythonHandoff> handoffs;
     QList<PythonCall> calls;
     QList<PythonProcedural> procedurals;
+    QList<ParameterDeclaration> parameterDeclarations; ///< what the scope declares
+    /// The scope, or its module, lets a node take parameters nobody declares.
+    bool acceptsUndeclared = false;
 };
 
 struct PythonParameter

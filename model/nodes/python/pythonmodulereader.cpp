@@ -1,4 +1,5 @@
 #include "pythonmodulereader.h"
+#include "pythonparameterreader.h"
 
 #include "pythonsyntax.h"
 
@@ -133,6 +134,13 @@ PythonModuleFacts PythonModuleReader::read(const QString &package) const
         return true;
     });
     facts.functions.append(readModuleStatements());
+    const PythonParameterReader parameters(m_tree);
+    if (parameters.acceptsUndeclared(m_tree.root())) {
+        for (PythonClassFacts &c : facts.classes)
+            c.acceptsUndeclared = true;
+        for (PythonFunctionFacts &f : facts.functions)
+            f.acceptsUndeclared = true;
+    }
     return facts;
 }
 
@@ -448,6 +456,9 @@ PythonClassFacts PythonModuleReader::readClass(TSNode cls) const
         findAliases(bodies[i], &receivers, false, name, methods[i], &facts, {});
         scan(bodies[i], receivers, name, parameterNames, &facts);
     }
+    const PythonParameterReader declared(m_tree);
+    facts.parameterDeclarations = declared.read(ts::field(cls, "body"));
+    facts.acceptsUndeclared = declared.acceptsUndeclared(cls);
     return facts;
 }
 
@@ -467,6 +478,7 @@ PythonFunctionFacts PythonModuleReader::readFunction(TSNode function) const
     const ScopeNodes body(ts::field(function, "body"), false);
     findAliases(body, &receivers, false, facts.name, function, &facts, {});
     scan(body, receivers, QString(), parameterNames, &facts);
+    facts.parameterDeclarations = PythonParameterReader(m_tree).read(function);
     return facts;
 }
 

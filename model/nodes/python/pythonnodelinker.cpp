@@ -440,6 +440,44 @@ QStringList PythonNodeLinker::startedNodes(int function, int depth, QList<int> *
     return out;
 }
 
+QList<ParameterDeclaration> PythonNodeLinker::declaredParameters(int id) const
+{
+    QList<ParameterDeclaration> out = m_index.classFacts(id).parameterDeclarations;
+    QList<int> bases = m_index.projectBases(id);
+    QList<int> seen{id};
+    for (qsizetype i = 0; i < bases.size() && i < kMaxDepth; ++i) {
+        const int b = bases.at(i);
+        if (seen.contains(b))
+            continue;
+        seen.append(b);
+        for (ParameterDeclaration p : m_index.classFacts(b).parameterDeclarations) {
+            p.inherited = true;
+            out.append(p);
+        }
+        bases += m_index.projectBases(b);
+    }
+    QList<ParameterDeclaration> unique;
+    QStringList names;
+    for (const ParameterDeclaration &p : std::as_const(out))
+        if (!names.contains(p.name)) {
+            names.append(p.name);
+            unique.append(p);
+        }
+    return unique;
+}
+
+bool PythonNodeLinker::acceptsUndeclared(int id, int depth) const
+{
+    if (m_index.classFacts(id).acceptsUndeclared)
+        return true;
+    if (depth > kMaxDepth)
+        return false;
+    for (int b : m_index.projectBases(id))
+        if (acceptsUndeclared(b, depth + 1))
+            return true;
+    return false;
+}
+
 void PythonNodeLinker::link(LanguageAnalysis *out) const
 {
     QList<AtomicNode> nodes;
@@ -470,6 +508,8 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
             ports.append(sp.port);
         }
         n.ports = sortedUnique(ports);
+        n.parameters = declaredParameters(id);
+        n.acceptsUndeclared = acceptsUndeclared(id, 0);
         nodes.append(n);
     }
     for (const Procedural &p : m_procedurals) {
@@ -488,6 +528,8 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         handle.kind = PythonHandle::Kind::Procedural;
         handle.index = p.index;
         n.ports = sortedUnique(scopePorts(*p.scope, handle, QString(), 0));
+        n.parameters = p.scope->parameterDeclarations;
+        n.acceptsUndeclared = p.scope->acceptsUndeclared;
         nodes.append(n);
     }
     out->diagnostics.append(m_setup.diagnostics());

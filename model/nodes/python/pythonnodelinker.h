@@ -62,6 +62,9 @@ private:
     };
 
     int nodeKind(int id, int depth = 0) const;
+    /// The class's declared parameters, then those its project bases declare (inherited).
+    QList<ParameterDeclaration> declaredParameters(int id) const;
+    bool acceptsUndeclared(int id, int depth) const;
     QList<ScopedPort> classPorts(int id, int depth) const;
     QList<Port> helperPorts(const PythonHandoff &handoff, const PythonScopeFacts &from,
                             int depth) const;

@@ -93,7 +93,8 @@ private Q_SLOTS:
             QDir(caseDir).filePath(QStringLiteral("expected/architecture.json"));
         const QMap<QString, QString> ccdStems = CcdWriter::fileStems(recovery.architecture);
         if (QFileInfo::exists(archExpected))
-            test::compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems),
+            test::compareOrUpdate(ArchitectureJson::write(recovery.architecture, ccdStems,
+                                                          &recovery.nodes, &recovery.launch),
                                   archExpected);
 
         // Expected ACDs and CCDs, when the case has them, must match file by file.

@@ -1,0 +1,137 @@
+#include "parameterview.h"
+
+#include <QRegularExpression>
+
+#include <algorithm>
+
+namespace rosarch {
+
+ParameterView::ParameterView(const AtomicNodeList &nodes) : m_nodes(nodes)
+{
+    for (const AtomicNode &n : nodes.nodes)
+        if (n.isPlugin())
+            m_plugins.insert(n.qualifiedName, &n);
+}
+
+const AtomicNode *ParameterView::pluginClass(const QString &written) const
+{
+    QString name = written.trimmed();
+    name.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
+    if (name.startsWith(QLatin1String("::")))
+        name = name.mid(2);
+    return m_plugins.value(name);
+}
+
+QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
+                                                          QStringList *unknownPlugins) const
+{
+    QList<ParameterDeclaration> out;
+    if (const AtomicNode *cls = m_nodes.node(n.classId))
+        out = cls->parameters;
+    for (const ParameterSetting &plugin : n.plugins) {
+        const AtomicNode *cls = pluginClass(plugin.value);
+        if (!cls) {
+            if (unknownPlugins)
+                unknownPlugins->append(plugin.name);
+            continue;
+        }
+        for (ParameterDeclaration d : cls->parameters) {
+            d.name = parameterNameFor(d.name, plugin.name);
+            out.append(d);
+        }
+    }
+    // A name with a part that another parameter's list value decides
+    // (generate_parameter_library's `gains.{joints}.p`) stands for one name per item.
+    QList<ParameterDeclaration> expanded;
+    for (const ParameterDeclaration &d : std::as_const(out)) {
+        static const QRegularExpression part(QStringLiteral("\\{([A-Za-z0-9_.]+)\\}"));
+        const QRegularExpressionMatch m = part.match(d.name);
+        const ParameterSetting *list = nullptr;
+        if (m.hasMatch())
+            for (const ParameterSetting &s : n.effectiveParameters)
+                if (s.name == m.captured(1) && s.value.startsWith(u'['))
+                    list = &s;
+        if (!list) {
+            expanded.append(d);
+            continue;
+        }
+        for (const QString &item : list->value.mid(1, list->value.size() - 2).split(u',')) {
+            ParameterDeclaration one = d;
+            one.name.replace(m.capturedStart(), m.capturedLength(), item.trimmed());
+            if (!item.trimmed().isEmpty())
+                expanded.append(one);
+        }
+    }
+    return expanded;
+}
+
+QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
+{
+    QList<InstanceParameter> out;
+    QHash<QString, qsizetype> at;
+    const AtomicNode *cls = m_nodes.node(n.classId);
+    auto declare = [&](const ParameterDeclaration &d, const QString &plugin) {
+        if (at.contains(d.name))
+            return;
+        InstanceParameter p;
+        p.name = d.name;
+        p.plugin = plugin;
+        p.declared = true;
+        p.type = d.type;
+        p.defaultValue = d.defaultValue;
+        p.hasDefault = d.hasDefault;
+        p.description = d.description;
+        p.readOnly = d.readOnly;
+        p.range = d.range;
+        p.declaration = d.evidence;
+        if (d.hasDefault) {
+            p.value = d.defaultValue;
+            p.source = QStringLiteral("default");
+        }
+        at.insert(p.name, out.size());
+        out.append(p);
+    };
+    if (cls)
+        for (const ParameterDeclaration &d : cls->parameters)
+            declare(d, QString());
+    for (const ParameterSetting &plugin : n.plugins)
+        if (const AtomicNode *pc = pluginClass(plugin.value))
+            for (ParameterDeclaration d : pc->parameters) {
+                d.name = parameterNameFor(d.name, plugin.name);
+                declare(d, plugin.name);
+            }
+    for (const ParameterSetting &s : n.effectiveParameters) {
+        if (s.source == QLatin1String("default"))
+            continue; // the class's own default, already there
+        qsizetype i = at.value(s.name, -1);
+        if (i < 0) {
+            // a declared name with a run-time part (`{source}.topic`) takes the value
+            for (qsizetype k = 0; k < out.size() && i < 0; ++k)
+                if (out.at(k).name.contains(u'{') && parameterNameMatches(out.at(k).name, s.name))
+                    i = k;
+            InstanceParameter p = i >= 0 ? out.at(i) : InstanceParameter{};
+            p.name = s.name;
+            at.insert(p.name, out.size());
+            out.append(p);
+            i = out.size() - 1;
+        }
+        InstanceParameter &p = out[i];
+        p.value = s.value;
+        p.hasValue = true;
+        p.source = s.source;
+        p.file = s.file;
+        p.valueEvidence = s.evidence;
+    }
+    // names with run-time parts that took a value are shown by the values they took
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](const InstanceParameter &p) {
+                                 return !p.hasValue && parameterNameIsPattern(p.name);
+                             }),
+              out.end());
+    std::sort(out.begin(), out.end(), [](const InstanceParameter &a, const InstanceParameter &b) {
+        return a.name < b.name;
+    });
+    return out;
+}
+
+} // namespace rosarch

@@ -1,0 +1,133 @@
+// The parameter checks (blueprint §1, "Parameters of a class"; docs/checks.md): what an
+// instance is given against what its class and plugins declare, on the params_checks
+// (rclcpp, nav2_util and rclpy declarations, a follower plugin) and params_generated
+// (generate_parameter_library) fixtures.
+#include "parameter.h"
+#include "parameterview.h"
+#include "recovery.h"
+#include "recoverytest.h"
+#include "testsupport.h"
+
+#include <QtTest>
+
+using namespace rosarch;
+
+namespace {
+
+/// "code file:line parameter" of each parameter finding, sorted.
+QStringList findings(const Recovery &r)
+{
+    QStringList out;
+    for (const Diagnostic &d : r.architecture.diagnostics)
+        if (d.code.startsWith(QLatin1String("parameter-")))
+            out << QStringLiteral("%1 %2:%3 %4")
+                       .arg(d.code, d.evidence.file.section(u'/', -1))
+                       .arg(d.evidence.line)
+                       .arg(d.message.section(QStringLiteral("parameter '"), 1)
+                                .section(u'\'', 0, 0));
+    out.sort();
+    return out;
+}
+
+const NodeInstance *instance(const Recovery &r, const QString &name)
+{
+    for (const NodeInstance &n : r.launch.nodes)
+        if (n.nodeName == name)
+            return &n;
+    return nullptr;
+}
+
+} // namespace
+
+class TestParameterChecks : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void valueTypes()
+    {
+        QCOMPARE(parameterValueType(QStringLiteral("10")), QStringLiteral("integer"));
+        QCOMPARE(parameterValueType(QStringLiteral("10"), true), QStringLiteral("string"));
+        QCOMPARE(parameterValueType(QStringLiteral("1e-3")), QStringLiteral("double"));
+        QCOMPARE(parameterValueType(QStringLiteral("True")), QStringLiteral("bool"));
+        QCOMPARE(parameterValueType(QStringLiteral("[0.5, 1.0]")), QStringLiteral("double_array"));
+        QCOMPARE(parameterValueType(QStringLiteral("[]")), QString());
+        QCOMPARE(parameterValueType(QStringLiteral("$(var rate)")), QString());
+        QCOMPARE(parameterTypeOfWritten(QStringLiteral("std::vector<std::string>")),
+                 QStringLiteral("string_array"));
+        QCOMPARE(parameterTypeOfWritten(QStringLiteral("int64_t")), QStringLiteral("integer"));
+        QCOMPARE(parameterTypeOfWritten(QStringLiteral("rclcpp::ParameterType::PARAMETER_DOUBLE")),
+                 QStringLiteral("double"));
+        QVERIFY(!parameterTypeAccepts(QStringLiteral("double"), QStringLiteral("integer")));
+        QVERIFY(
+            parameterNameMatches(QStringLiteral("{source}.topic"), QStringLiteral("scan.topic")));
+        QVERIFY(
+            !parameterNameMatches(QStringLiteral("{source}.topic"), QStringLiteral("scan.type")));
+    }
+
+    void misconfiguredValuesAreFound()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("params_checks/ws")));
+        QCOMPARE(findings(r),
+                 (QStringList{
+                     QStringLiteral("parameter-missing drive.launch.py:12 wheel_base"),
+                     QStringLiteral("parameter-range drive_params.yaml:12 scale_velocities"),
+                     QStringLiteral("parameter-type drive_params.yaml:11 window"),
+                     QStringLiteral("parameter-type drive_params.yaml:13 odom_duration"),
+                     QStringLiteral("parameter-type drive_params.yaml:29 rate"),
+                     QStringLiteral("parameter-undeclared drive_params.yaml:24 "
+                                    "FollowPath.lookahead_distance"),
+                     QStringLiteral("parameter-undeclared drive_params.yaml:8 smoothing_frequncy"),
+                 }));
+        // The misspelt key names the declared one it was meant to be.
+        bool hinted = false;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            hinted =
+                hinted || d.message.contains(QLatin1String("Did you mean 'smoothing_frequency'"));
+        QVERIFY(hinted);
+    }
+
+    void instanceParametersJoinDeclarationAndValue()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("params_checks/ws")));
+        const NodeInstance *follow = instance(r, QStringLiteral("follow_server"));
+        QVERIFY(follow);
+        const ParameterView view(r.nodes);
+        QStringList rows;
+        for (const InstanceParameter &p : view.of(*follow))
+            rows << QStringLiteral("%1|%2|%3|%4|%5|%6")
+                        .arg(p.name, p.plugin, p.type, p.value, p.source,
+                             p.declared ? QStringLiteral("declared") : QStringLiteral("-"));
+        QCOMPARE(
+            rows,
+            (QStringList{
+                QStringLiteral("FollowPath.desired_linear_vel|FollowPath|double|0.5|file|declared"),
+                QStringLiteral("FollowPath.lookahead_dist|FollowPath|double|0.6|default|declared"),
+                QStringLiteral("FollowPath.lookahead_distance|||0.6|file|-"),
+                QStringLiteral(
+                    "FollowPath.plugin||string|drive_plugins::PurePursuit|file|declared"),
+                QStringLiteral(
+                    "FollowPath.use_rotate_to_heading|FollowPath|bool|true|file|declared"),
+                QStringLiteral("controller_frequency||double|15.0|launch|declared"),
+                QStringLiteral("follower_plugins||string_array|[FollowPath]|file|declared"),
+                QStringLiteral("log_level|||info|file|-"),
+                QStringLiteral("use_sim_time|||false|file|-"),
+            }));
+    }
+
+    void generatedDefinitionsAreDeclarations()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("params_generated/ws")));
+        QCOMPARE(findings(r),
+                 (QStringList{
+                     QStringLiteral("parameter-missing gripper.launch.xml:2 command_topic"),
+                     QStringLiteral("parameter-range gripper.yaml:4 speed"),
+                     QStringLiteral("parameter-range gripper.yaml:6 mode"),
+                     QStringLiteral("parameter-type gripper.yaml:5 max_effort"),
+                     QStringLiteral("parameter-undeclared gripper.yaml:13 gains.finger_right.d"),
+                     QStringLiteral("parameter-undeclared gripper.yaml:7 gripper_frame"),
+                 }));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestParameterChecks)
+#include "tst_parameterchecks.moc"
