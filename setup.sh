@@ -18,7 +18,8 @@ packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   libqt6svg6 qt6-qpa-plugins libgl-dev libqscintilla2-qt6-dev libgraphviz-dev graphviz
   nlohmann-json3-dev libcurl4-openssl-dev libssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth
   fonts-dejavu-core
-  ccache clang-format clang-tidy default-jre-headless nodejs git clang-16 libclang-rt-16-dev)
+  ccache clang-format clang-tidy default-jre-headless nodejs git clang-16 libclang-rt-16-dev
+  python3-jsonschema python3-yaml) # the NoDL validator of the tests (tests/support/validate-nodl.py)
 
 missing=()
 for p in "${packages[@]}"; do

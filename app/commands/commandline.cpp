@@ -4,6 +4,7 @@
 #include "diffcommand.h"
 #include "editdistance.h"
 #include "evalcommand.h"
+#include "exportcommand.h"
 #include "plantumlrenderer.h"
 #include "projectcommand.h"
 #include "recovery.h"
@@ -26,7 +27,9 @@ namespace rosarch {
 
 namespace {
 
-const char *const kCommands[] = {"recover", "check", "diff", "eval", "suggest", "project"};
+const char *const kCommands[] = {
+    "recover", "check", "diff", "eval", "suggest", "project", "export",
+};
 
 QString usageText()
 {
@@ -70,6 +73,11 @@ QString usageText()
         "                                            write checked suggestions to "
         "suggestions.json\n"
         "                                            (deterministic only without an endpoint)\n"
+        "  rosarch export nodl <workspace> --out <dir> [--no-decisions | --project <file>]\n"
+        "                                            write each node class's parameters, topics, "
+        "services and\n"
+        "                                            actions as a NoDL document\n"
+        "                                            (<dir>/<package>/<executable>.nodl.json)\n"
         "  rosarch --help | --version\n"
         "\n"
         "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, "
@@ -325,6 +333,8 @@ int CommandLine::run(const QStringList &arguments)
         return runSuggest(arguments);
     if (first == QLatin1String("project"))
         return ProjectCommand::run(arguments);
+    if (first == QLatin1String("export"))
+        return ExportCommand::run(arguments);
     const bool pathLike = first.contains(QLatin1Char('/')) || first.startsWith(QLatin1Char('.')) ||
                           QFileInfo::exists(first);
     if (pathLike) {
