@@ -17,6 +17,8 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
+#include "parametercontroller.h"
+#include "parameterpanel.h"
 #include "project.h"
 #include "projectcontroller.h"
 #include "rendercontroller.h"
@@ -195,6 +197,9 @@ void MainWindow::createPanels()
         makeDock(m_changesView, tr("Architecture changes"), QStringLiteral("changesDock"));
     m_talkersPanel = new TalkersPanel(this);
     m_talkersDock = makeDock(m_talkersPanel, tr("Talkers"), QStringLiteral("talkersDock"));
+    m_parameterPanel = new ParameterPanel(this);
+    m_parameterDock =
+        makeDock(m_parameterPanel, tr("Parameters"), QStringLiteral("parametersDock"));
     createCorrectionDocks();
     resetLayout();
 
@@ -211,6 +216,8 @@ void MainWindow::createPanels()
         m_nodeDock->raise();
     });
     connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
+    new ParameterController(m_document, m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
+                            m_parameterPanel, m_traceability, this);
     connect(m_logView, &LogView::externalsAccepted, this, &MainWindow::acceptExternals);
     m_diagrams = new DiagramController(m_document, m_diagramPanel, m_launchPanel, m_traceability,
                                        m_talkersPanel, m_logView, this);
@@ -284,13 +291,14 @@ void MainWindow::resetLayout()
     for (QDockWidget *dock : docks)
         dock->show();
     // Architecture changes and talkers share the log's place and appear when a comparison
-    // runs or a topic, service, action or port is clicked.
-    for (QDockWidget *dock : {m_changesDock, m_talkersDock}) {
+    // runs or a topic, service, action or port is clicked; the parameters of what is selected
+    // are a tab there from the start.
+    for (QDockWidget *dock : {m_changesDock, m_talkersDock, m_parameterDock}) {
         if (!dock)
             continue;
         takeOutDock(dock);
         tabifyDockWidget(m_logDock, dock);
-        dock->hide();
+        dock->setVisible(dock == m_parameterDock);
     }
     placeCorrectionDocks();
     m_logDock->raise();

@@ -39,6 +39,7 @@ class StageRunner;
 class SuggestionController;
 class SuggestionModel;
 class SuggestionPanel;
+class ParameterPanel;
 class TalkersPanel;
 class Traceability;
 
@@ -94,6 +95,8 @@ public:
     ProjectController *projects() const { return m_projects; }
     ArchitectureDiffView *changesView() const { return m_changesView; }
     TalkersPanel *talkersPanel() const { return m_talkersPanel; }
+    ParameterPanel *parameterPanel() const { return m_parameterPanel; }
+    QDockWidget *parametersDock() const { return m_parameterDock; }
     QDockWidget *talkersDock() const { return m_talkersDock; }
     CorrectionController *corrections() const { return m_correctionController; }
     CorrectionPanel *correctionPanel() const { return m_correctionPanel; }
@@ -166,6 +169,8 @@ private:
     ArchitectureDiffView *m_changesView = nullptr;
     QDockWidget *m_talkersDock = nullptr; ///< who talks on a name; shown by a click on one
     TalkersPanel *m_talkersPanel = nullptr;
+    ParameterPanel *m_parameterPanel = nullptr;
+    QDockWidget *m_parameterDock = nullptr; ///< the selection's parameters; a tab by the log
     CorrectionModel *m_correctionModel = nullptr;
     CorrectionPanel *m_correctionPanel = nullptr;
     InspectorPanel *m_inspector = nullptr;

@@ -202,6 +202,7 @@ void MainWindow::createMenus()
         view->addAction(dock->toggleViewAction());
     view->addAction(m_changesDock->toggleViewAction());
     view->addAction(m_talkersDock->toggleViewAction());
+    view->addAction(m_parameterDock->toggleViewAction());
     view->addAction(m_correctionsDock->toggleViewAction());
     view->addAction(m_inspectorDock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));

@@ -111,6 +111,10 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
                     i = k;
             InstanceParameter p = i >= 0 ? out.at(i) : InstanceParameter{};
             p.name = s.name;
+            if (i < 0 && isBuiltinParameter(s.name)) { // rclcpp and rclpy declare it for any node
+                p.declared = true;
+                p.description = QStringLiteral("declared by ROS 2 for every node");
+            }
             at.insert(p.name, out.size());
             out.append(p);
             i = out.size() - 1;

@@ -110,7 +110,7 @@ private Q_SLOTS:
                 QStringLiteral("controller_frequency||double|15.0|launch|declared"),
                 QStringLiteral("follower_plugins||string_array|[FollowPath]|file|declared"),
                 QStringLiteral("log_level|||info|file|-"),
-                QStringLiteral("use_sim_time|||false|file|-"),
+                QStringLiteral("use_sim_time|||false|file|declared"),
             }));
     }
 
