@@ -114,6 +114,14 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
             if (i < 0 && isBuiltinParameter(s.name)) { // rclcpp and rclpy declare it for any node
                 p.declared = true;
                 p.description = QStringLiteral("declared by ROS 2 for every node");
+            } else if (i < 0) {
+                for (const ParameterDeclaration &h : m_nodes.helperParameters)
+                    if (!p.declared && parameterNameMatches(h.name, s.name)) {
+                        p.declared = true;
+                        p.type = h.type;
+                        p.declaration = h.evidence;
+                        p.description = QStringLiteral("declared by helper code (%1)").arg(h.via);
+                    }
             }
             at.insert(p.name, out.size());
             out.append(p);
