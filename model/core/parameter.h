@@ -23,10 +23,12 @@ struct ParameterDeclaration
     bool readOnly = false;
     bool dynamicTyping = false; ///< its descriptor allows any type
     QString description;
-    QString range;          ///< "[from, to]", "[from, to] step s", or "one of [a, b]"
-    QString guard;          ///< the condition in code it is declared under ("" = always)
-    QString via;            ///< the call or file that declares it ("declare_parameter", ...)
-    bool inherited = false; ///< declared by a base class of the node
+    QString range; ///< "[from, to]", "[from, to] step s", or "one of [a, b]"
+    QString guard; ///< the condition in code it is declared under ("" = always)
+    QString via;   ///< the call or file that declares it ("declare_parameter", ...)
+    /// declared by a base class of the node, or by helper code it runs with itself (a helper
+    /// class it constructs, a free function it calls)
+    bool inherited = false;
     Evidence evidence;
     bool operator==(const ParameterDeclaration &) const = default;
 };

@@ -53,8 +53,8 @@ private Q_SLOTS:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         test::saveScreenshot(panel, QStringLiteral("parameterpanel.png"));
-        QCOMPARE(panel.summary(), QStringLiteral("/speed_limiter (SpeedLimiter): 11 parameters "
-                                                 "declared, 2 given but not declared"));
+        QCOMPARE(panel.summary(), QStringLiteral("/speed_limiter (SpeedLimiter): 15 parameters "
+                                                 "declared, 3 given but not declared"));
         const QAbstractItemModel *shown = panel.table()->model();
         QCOMPARE(column(shown, ParameterTableModel::NameColumn).first(),
                  QStringLiteral("command_frame"));

@@ -57,8 +57,13 @@ void CppFunctionExtractor::onParameterCall(TSNode call, const CallShape &shape,
     // lower-case copy made. Other names take the long way, where case mapping is Unicode's.
     if (isAscii(name) && !name.contains(QLatin1String("parameter"), Qt::CaseInsensitive))
         return;
-    CppParameterDeclaration declared =
-        CppParameterReader(m_tree, m_values).read(call, shape, args, m_definition);
+    const CppParameterReader reader(m_tree, m_values);
+    for (CppParameterDeclaration d : reader.readMany(call, shape, args)) {
+        CppValue tested;
+        m_portCalls.guardOf(call, &d.guard, &tested);
+        m_function.parameterDeclarations.append(d);
+    }
+    CppParameterDeclaration declared = reader.read(call, shape, args, m_definition);
     if (!declared.via.isEmpty()) {
         CppValue tested;
         QString guard;

@@ -6,6 +6,7 @@
 #include "parameter.h"
 
 #include <QList>
+#include <QSet>
 
 #include <map>
 
@@ -30,6 +31,8 @@ public:
 
     /// What free functions and classes that are no nodes declare on a node they are handed,
     /// resolved in their own context (LanguageAnalysis::helperParameters).
+    /// Plugins count too: a plugin loads plugins of its own (a local planner's trajectory
+    /// generator) that declare under its name, which its instances do not show.
     QList<ParameterDeclaration> helperDeclarations() const;
 
 private:

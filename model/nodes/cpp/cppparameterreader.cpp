@@ -117,6 +117,65 @@ CppParameterDeclaration CppParameterReader::read(TSNode call, const CallShape &s
     return decl;
 }
 
+QList<CppParameterDeclaration> CppParameterReader::readMany(TSNode call, const CallShape &shape,
+                                                            const std::vector<TSNode> &args) const
+{
+    QList<CppParameterDeclaration> out;
+    if (shape.name != QLatin1String("declare_parameters") || args.size() < 2)
+        return out;
+    QString prefix;
+    const CppValue ns = m_values.evaluate(args[0]);
+    if (ns.kind == CppValue::Kind::Literal || ns.kind == CppValue::Kind::Local)
+        prefix = ns.literal;
+    else
+        return out; // a prefix decided at run time: nothing certain to add
+    const QString type =
+        ts::isNull(shape.templateArguments)
+            ? QString()
+            : parameterTypeOfWritten(firstTemplateArgument(m_tree, shape.templateArguments));
+    const auto named = [&](const QString &name) {
+        CppParameterDeclaration d;
+        d.parameter = prefix.isEmpty() ? name : prefix + QLatin1Char('.') + name;
+        d.via = QStringLiteral("declare_parameter");
+        d.type = type;
+        d.evidence = m_tree.evidence(call);
+        return d;
+    };
+    // the map: `std::map<std::string, T>{{"a", 1}, ...}` or a braced list `{{"a", 1}, ...}`
+    TSNode map = args[1];
+    if (ts::is(map, "compound_literal_expression"))
+        map = ts::field(map, fields().value);
+    if (!ts::is(map, "initializer_list")) {
+        CppParameterDeclaration d = named(QString());
+        d.parameter.clear();
+        d.name.kind = CppValue::Kind::Concatenation;
+        d.name.text = QStringLiteral("%1.{%2}").arg(prefix, simplified(m_tree, args[1]));
+        CppValue head;
+        head.kind = CppValue::Kind::Literal;
+        head.literal = head.text = prefix + QLatin1Char('.');
+        CppValue rest;
+        rest.kind = CppValue::Kind::Expression;
+        rest.text = simplified(m_tree, args[1]);
+        d.name.parts = {head, rest};
+        out.append(d);
+        return out;
+    }
+    for (TSNode pair : arguments(map)) {
+        const std::vector<TSNode> kv = arguments(pair);
+        QString name;
+        if (kv.size() != 2 || !stringLiteral(m_tree, kv[0], &name) || name.isEmpty())
+            continue;
+        CppParameterDeclaration d = named(name);
+        if (d.type.isEmpty())
+            d.type = typeOfValue(kv[1]);
+        d.defaultValue = m_values.evaluate(kv[1]);
+        d.hasDefault = true;
+        d.defaultText = simplified(m_tree, kv[1]);
+        out.append(d);
+    }
+    return out;
+}
+
 QString CppParameterReader::typeOfValue(TSNode value, bool *isTypeOnly, int depth) const
 {
     if (ts::isNull(value) || depth > 8)

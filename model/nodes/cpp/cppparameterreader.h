@@ -24,6 +24,12 @@ public:
     CppParameterDeclaration read(TSNode call, const cppsyntax::CallShape &shape,
                                  const std::vector<TSNode> &args, TSNode definition) const;
 
+    /// The declarations of `declare_parameters(prefix, {{"a", 1}, {"b", 2}})` (a map written
+    /// in place; one written elsewhere declares names the call does not show, given as
+    /// `prefix.{map}`). Empty for any other call.
+    QList<CppParameterDeclaration> readMany(TSNode call, const cppsyntax::CallShape &shape,
+                                            const std::vector<TSNode> &args) const;
+
     /// The ROS parameter type of a default value as written ("" when open).
     QString typeOfValue(TSNode value, bool *isTypeOnly = nullptr, int depth = 0) const;
 

@@ -6,6 +6,27 @@
 
 namespace drive_servers
 {
+// Declares one switch per sensor kind under the prefix it is handed.
+void declareSources(rclcpp::Node & node, const std::string & prefix)
+{
+  for (const std::string kind : {"scan", "pointcloud"}) {
+    node.declare_parameter<bool>(prefix + kind, false);
+  }
+}
+
+// Gathers the feedback gains; it declares them on the node it is given.
+class FeedbackParameters
+{
+public:
+  explicit FeedbackParameters(rclcpp::Node * node)
+  {
+    gain_ = node->declare_parameter("feedback_gain", 0.8);
+  }
+
+private:
+  double gain_{0.0};
+};
+
 class SpeedLimiter : public rclcpp::Node
 {
 public:
@@ -40,6 +61,9 @@ public:
     get_parameter_or("deadband", deadband_, 0.01);
     declare_parameter("legacy_mode", false);
     undeclare_parameter("legacy_mode");
+    declare_parameters<double>("limits", {{"max_accel", 2.5}, {"max_decel", -2.5}});
+    declareSources(*this, "sources.");
+    feedback_ = std::make_unique<FeedbackParameters>(this);
 
     const auto topic = get_parameter("odom_topic").as_string();
     odom_sub_ = create_subscription<geometry_msgs::msg::Twist>(
@@ -49,6 +73,7 @@ public:
 
 private:
   double deadband_{0.0};
+  std::unique_ptr<FeedbackParameters> feedback_;
   rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr odom_sub_;
   rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr cmd_pub_;
 };
