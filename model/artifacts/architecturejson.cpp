@@ -40,6 +40,9 @@ Json portJson(const PartPort &p)
     return j;
 }
 
+// One entry per parameter, kept small: a navigation stack gives its instances a hundred
+// thousand of them. The source says where the value in effect is set: "launch" (the launch
+// file), "file:line" (a parameter file), "default" (the declaration), "" (nothing sets it).
 Json parametersJson(const QList<InstanceParameter> &parameters)
 {
     Json a = Json::array();
@@ -48,16 +51,17 @@ Json parametersJson(const QList<InstanceParameter> &parameters)
         j["name"] = utf8(p.name);
         if (!p.plugin.isEmpty())
             j["plugin"] = utf8(p.plugin);
-        j["declared"] = p.declared;
+        if (!p.declared)
+            j["declared"] = false; // ROS 2 ignores the value
         j["type"] = utf8(p.type);
         j["default"] = p.hasDefault ? Json(utf8(p.defaultValue)) : Json(nullptr);
         j["value"] = p.source.isEmpty() ? Json(nullptr) : Json(utf8(p.value));
-        j["source"] = utf8(p.source);
-        if (p.hasValue) // where it is set: a line, as effective_parameters gives it
-            j["set_at"] = {{"file", utf8(p.valueEvidence.file)}, {"line", p.valueEvidence.line}};
-        j["description"] = utf8(p.description);
-        if (p.declaration.isValid())
-            j["declared_at"] = {{"file", utf8(p.declaration.file)}, {"line", p.declaration.line}};
+        j["source"] =
+            p.source == QLatin1String("file")
+                ? utf8(QStringLiteral("%1:%2").arg(p.valueEvidence.file).arg(p.valueEvidence.line))
+                : utf8(p.source);
+        if (!p.description.isEmpty())
+            j["description"] = utf8(p.description);
         a.push_back(j);
     }
     return a;
@@ -153,10 +157,9 @@ QByteArray ArchitectureJson::write(const Architecture &arch, const QMap<QString,
     QHash<QString, QList<InstanceParameter>> parameters; // by node instance id
     if (nodes && launch) {
         const ParameterView view(*nodes);
-        for (const QList<NodeInstance> *instances : {&launch->nodes, &launch->classifierNodes})
-            for (const NodeInstance &n : *instances)
-                if (!parameters.contains(n.id))
-                    parameters.insert(n.id, view.of(n));
+        // the systems as launched; a launch file's own diagram shows the same nodes again
+        for (const NodeInstance &n : launch->nodes)
+            parameters.insert(n.id, view.of(n));
     }
     Json root;
     Json list = Json::array();

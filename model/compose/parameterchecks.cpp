@@ -188,7 +188,7 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
             return parameterNameMatches(d.name, s.name);
         };
         return std::none_of(i.declared.begin(), i.declared.end(), matches) &&
-               std::none_of(nodes.helperParameters.begin(), nodes.helperParameters.end(), matches);
+               !view.helperDeclaring(s.name);
     };
     // A wildcard key (`/**`) of a file given to several nodes is meant for any of them: it is
     // undeclared only when every node it reaches leaves it undeclared.

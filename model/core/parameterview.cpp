@@ -11,6 +11,22 @@ ParameterView::ParameterView(const AtomicNodeList &nodes) : m_nodes(nodes)
     for (const AtomicNode &n : nodes.nodes)
         if (n.isPlugin())
             m_plugins.insert(n.qualifiedName, &n);
+    for (const ParameterDeclaration &h : nodes.helperParameters) {
+        if (h.name.contains(u'{'))
+            m_helperPatterns.append(&h);
+        else if (!m_helperNames.contains(h.name))
+            m_helperNames.insert(h.name, &h);
+    }
+}
+
+const ParameterDeclaration *ParameterView::helperDeclaring(const QString &key) const
+{
+    if (const ParameterDeclaration *h = m_helperNames.value(key))
+        return h;
+    for (const ParameterDeclaration *h : m_helperPatterns)
+        if (parameterNameMatches(h->name, key))
+            return h;
+    return nullptr;
 }
 
 const AtomicNode *ParameterView::pluginClass(const QString &written) const
@@ -114,14 +130,11 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
             if (i < 0 && isBuiltinParameter(s.name)) { // rclcpp and rclpy declare it for any node
                 p.declared = true;
                 p.description = QStringLiteral("declared by ROS 2 for every node");
-            } else if (i < 0) {
-                for (const ParameterDeclaration &h : m_nodes.helperParameters)
-                    if (!p.declared && parameterNameMatches(h.name, s.name)) {
-                        p.declared = true;
-                        p.type = h.type;
-                        p.declaration = h.evidence;
-                        p.description = QStringLiteral("declared by helper code (%1)").arg(h.via);
-                    }
+            } else if (const ParameterDeclaration *h = i < 0 ? helperDeclaring(s.name) : nullptr) {
+                p.declared = true;
+                p.type = h->type;
+                p.declaration = h->evidence;
+                p.description = QStringLiteral("declared by helper code (%1)").arg(h->via);
             }
             at.insert(p.name, out.size());
             out.append(p);

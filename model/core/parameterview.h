@@ -47,10 +47,16 @@ public:
 
     /// The plugin class loaded under a `<name>.plugin` value, or null.
     const AtomicNode *pluginClass(const QString &written) const;
+    /// The helper code's declaration (AtomicNodeList::helperParameters) that names `key`, or
+    /// null.
+    const ParameterDeclaration *helperDeclaring(const QString &key) const;
 
 private:
     const AtomicNodeList &m_nodes;
     QHash<QString, const AtomicNode *> m_plugins; ///< by qualified name
+    /// helper declarations by exact name, and those with run-time parts
+    QHash<QString, const ParameterDeclaration *> m_helperNames;
+    QList<const ParameterDeclaration *> m_helperPatterns;
 };
 
 } // namespace rosarch
