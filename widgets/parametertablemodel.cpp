@@ -135,16 +135,9 @@ ParameterTableModel::declaredOnly(const QList<ParameterDeclaration> &declared)
 {
     QList<InstanceParameter> out;
     for (const ParameterDeclaration &d : declared) {
-        InstanceParameter p;
-        p.name = d.name;
-        p.declared = true;
-        p.type = d.type;
-        p.defaultValue = d.defaultValue;
-        p.hasDefault = d.hasDefault;
-        p.description = d.description;
-        p.readOnly = d.readOnly;
-        p.range = d.range;
-        p.declaration = d.evidence;
+        InstanceParameter p = ParameterView::declared(d);
+        p.source.clear(); // a class on its own: no value in effect
+        p.value.clear();
         out.append(p);
     }
     return out;

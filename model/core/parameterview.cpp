@@ -81,6 +81,26 @@ QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
     return expanded;
 }
 
+InstanceParameter ParameterView::declared(const ParameterDeclaration &d, const QString &plugin)
+{
+    InstanceParameter p;
+    p.name = d.name;
+    p.plugin = plugin;
+    p.declared = true;
+    p.type = d.type;
+    p.defaultValue = d.defaultValue;
+    p.hasDefault = d.hasDefault;
+    p.description = d.description;
+    p.readOnly = d.readOnly;
+    p.range = d.range;
+    p.declaration = d.evidence;
+    if (d.hasDefault) {
+        p.value = d.defaultValue;
+        p.source = QStringLiteral("default");
+    }
+    return p;
+}
+
 QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
 {
     QList<InstanceParameter> out;
@@ -89,21 +109,7 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
     auto declare = [&](const ParameterDeclaration &d, const QString &plugin) {
         if (at.contains(d.name))
             return;
-        InstanceParameter p;
-        p.name = d.name;
-        p.plugin = plugin;
-        p.declared = true;
-        p.type = d.type;
-        p.defaultValue = d.defaultValue;
-        p.hasDefault = d.hasDefault;
-        p.description = d.description;
-        p.readOnly = d.readOnly;
-        p.range = d.range;
-        p.declaration = d.evidence;
-        if (d.hasDefault) {
-            p.value = d.defaultValue;
-            p.source = QStringLiteral("default");
-        }
+        const InstanceParameter p = declared(d, plugin);
         at.insert(p.name, out.size());
         out.append(p);
     };

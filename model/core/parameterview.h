@@ -44,6 +44,8 @@ public:
                                                QStringList *unknownPlugins = nullptr) const;
     /// Every declared parameter and every value given, sorted by name.
     QList<InstanceParameter> of(const NodeInstance &n) const;
+    /// A declaration as a row without a value set (its default, if any, in effect).
+    static InstanceParameter declared(const ParameterDeclaration &d, const QString &plugin = {});
 
     /// The plugin class loaded under a `<name>.plugin` value, or null.
     const AtomicNode *pluginClass(const QString &written) const;
