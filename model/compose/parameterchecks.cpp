@@ -164,6 +164,10 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
         QStringList unknownPlugins;
         bool judged;
     };
+    QSet<QString> startedByRun; // the launch-file instances standing for an executable
+    for (const LaunchFileInstance &f : launch.instances)
+        if (f.format == QLatin1String("executable"))
+            startedByRun.insert(f.id);
     QList<Instance> instances;
     for (const NodeInstance &n : launch.nodes) {
         if (!n.active || !systems.contains(n.launchFileId))
@@ -249,7 +253,9 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
                        s.evidence, {{QStringLiteral("the declaration"), d->evidence}});
             }
         }
-        if (!filesRead(n) || !n.unresolved.isEmpty())
+        // `ros2 run` of an executable that builds its own nodes takes its parameters from the
+        // command line, which the analysis does not see
+        if (!filesRead(n) || !n.unresolved.isEmpty() || startedByRun.contains(n.launchFileId))
             continue;
         for (const ParameterDeclaration &d : declared) {
             // a helper's or a base's declaration may sit in code this node never runs (a
