@@ -53,7 +53,7 @@ private Q_SLOTS:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         test::saveScreenshot(panel, QStringLiteral("parameterpanel.png"));
-        QCOMPARE(panel.summary(), QStringLiteral("/speed_limiter (SpeedLimiter): 15 parameters "
+        QCOMPARE(panel.summary(), QStringLiteral("/speed_limiter (SpeedLimiter): 16 parameters "
                                                  "declared, 3 given but not declared"));
         const QAbstractItemModel *shown = panel.table()->model();
         QCOMPARE(column(shown, ParameterTableModel::NameColumn).first(),

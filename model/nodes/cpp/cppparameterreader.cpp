@@ -149,10 +149,11 @@ QList<CppParameterDeclaration> CppParameterReader::readMany(TSNode call, const C
         CppParameterDeclaration d = named(QString());
         d.parameter.clear();
         d.name.kind = CppValue::Kind::Concatenation;
-        d.name.text = QStringLiteral("%1.{%2}").arg(prefix, simplified(m_tree, args[1]));
+        const QString lead = prefix.isEmpty() ? QString() : prefix + QLatin1Char('.');
+        d.name.text = QStringLiteral("%1{%2}").arg(lead, simplified(m_tree, args[1]));
         CppValue head;
         head.kind = CppValue::Kind::Literal;
-        head.literal = head.text = prefix + QLatin1Char('.');
+        head.literal = head.text = lead;
         CppValue rest;
         rest.kind = CppValue::Kind::Expression;
         rest.text = simplified(m_tree, args[1]);

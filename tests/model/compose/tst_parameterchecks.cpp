@@ -73,9 +73,9 @@ private Q_SLOTS:
                      QStringLiteral("parameter-range drive_params.yaml:12 scale_velocities"),
                      QStringLiteral("parameter-type drive_params.yaml:11 window"),
                      QStringLiteral("parameter-type drive_params.yaml:13 odom_duration"),
-                     QStringLiteral("parameter-type drive_params.yaml:35 rate"),
+                     QStringLiteral("parameter-type drive_params.yaml:37 rate"),
                      QStringLiteral("parameter-undeclared drive_params.yaml:18 limits.max_acel"),
-                     QStringLiteral("parameter-undeclared drive_params.yaml:30 "
+                     QStringLiteral("parameter-undeclared drive_params.yaml:32 "
                                     "FollowPath.lookahead_distance"),
                      QStringLiteral("parameter-undeclared drive_params.yaml:8 smoothing_frequncy"),
                  }));

@@ -62,6 +62,9 @@ public:
     declare_parameter("legacy_mode", false);
     undeclare_parameter("legacy_mode");
     declare_parameters<double>("limits", {{"max_accel", 2.5}, {"max_decel", -2.5}});
+    // a map built elsewhere: its keys are not written here
+    std::map<std::string, int> tuning{{"filter_taps", 5}};
+    declare_parameters("tuning", tuning);
     declareSources(*this, "sources.");
     feedback_ = std::make_unique<FeedbackParameters>(this);
 
