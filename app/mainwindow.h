@@ -72,6 +72,8 @@ public:
 
     /// Writes the artifacts of the current model into `folder`; false (and a dialog) on error.
     bool exportArtifactsTo(const QString &folder);
+    /// Writes one NoDL description per node class of the accepted model into `folder`.
+    bool exportNodlTo(const QString &folder);
 
     // For wiring and tests.
     Document *document() const { return m_document; }
@@ -184,6 +186,7 @@ private:
 
     QAction *m_openAction = nullptr;
     QAction *m_exportAction = nullptr;
+    QAction *m_exportNodlAction = nullptr;
     QAction *m_quitAction = nullptr;
     QAction *m_undoAction = nullptr;
     QAction *m_redoAction = nullptr;

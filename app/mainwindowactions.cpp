@@ -9,6 +9,7 @@
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "nodlwriter.h"
 #include "projectcontroller.h"
 #include "rendercontroller.h"
 #include "stagerunner.h"
@@ -17,9 +18,13 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
+#include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -40,6 +45,17 @@ void MainWindow::createActions()
         tr("Write the JSON artifacts and the PlantUML diagrams: one per node class (ACD) and "
            "one per launch file (CCD)"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportArtifactsDialog);
+    m_exportNodlAction = new QAction(tr("Export &NoDL…"), this);
+    m_exportNodlAction->setStatusTip(
+        tr("Write one NoDL description per node class: its parameters, topics, services and "
+           "actions, as ros-tooling/nodl reads them"));
+    connect(m_exportNodlAction, &QAction::triggered, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(
+            this, tr("Export NoDL To"),
+            workspace().isEmpty() ? QDir::homePath() : QFileInfo(workspace()).path());
+        if (!folder.isEmpty())
+            exportNodlTo(folder);
+    });
 
     m_quitAction = new QAction(tr("&Quit"), this);
     m_quitAction->setShortcut(QKeySequence::Quit);
@@ -162,6 +178,7 @@ void MainWindow::createMenus()
     file->addAction(m_projects->saveAsAction());
     file->addSeparator();
     file->addAction(m_exportAction);
+    file->addAction(m_exportNodlAction);
     file->addAction(m_diagrams->exportSvgAction());
     file->addAction(m_diagrams->exportPngAction());
     file->addSeparator();
@@ -225,6 +242,28 @@ void MainWindow::createMenus()
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
     help->addAction(m_aboutQtAction);
+}
+
+bool MainWindow::exportNodlTo(const QString &folder)
+{
+    // the node classes as accepted, as `rosarch export nodl` writes them
+    const NodlWriter::Documents nodl = NodlWriter::write(m_document->accepted().nodes);
+    QString error;
+    if (!NodlWriter::writeTo(nodl, folder, &error)) {
+        showError(tr("Export failed"), tr("The NoDL descriptions could not be written:\n%1\n\n"
+                                          "Choose a folder you can write to, and export again.")
+                                           .arg(error));
+        m_logView->appendLog(tr("NoDL export to %1 failed: %2").arg(folder, error));
+        return false;
+    }
+    const QString message =
+        tr("Exported %n NoDL descriptions to %1", nullptr, int(nodl.files.size()))
+            .arg(QDir::toNativeSeparators(folder));
+    m_logView->appendLog(message);
+    for (const QString &line : nodl.omitted)
+        m_logView->appendLog(tr("NoDL: %1").arg(line));
+    statusBar()->showMessage(message, 5000);
+    return true;
 }
 
 } // namespace rosarch

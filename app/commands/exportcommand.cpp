@@ -23,23 +23,6 @@ QString usage()
                                        "[--in-process] [--no-cache]\n");
 }
 
-/// Writes `files` (paths relative to `dir`); false with a message at the first that fails.
-bool writeFiles(const QString &dir, const QMap<QString, QByteArray> &files, QString *error)
-{
-    const QDir out(dir);
-    for (auto it = files.cbegin(); it != files.cend(); ++it) {
-        const QString path = out.filePath(it.key());
-        QSaveFile file(path);
-        if (!QDir().mkpath(QFileInfo(path).path()) || !file.open(QIODevice::WriteOnly) ||
-            file.write(it.value()) != it.value().size() || !file.commit()) {
-            *error = QCoreApplication::translate("rosarch::CommandLine", "Cannot write %1: %2")
-                         .arg(QDir::toNativeSeparators(path), file.errorString());
-            return false;
-        }
-    }
-    return true;
-}
-
 } // namespace
 
 int ExportCommand::run(const QStringList &arguments)
@@ -108,7 +91,7 @@ int ExportCommand::run(const QStringList &arguments)
     }
     const NodlWriter::Documents nodl = NodlWriter::write(recovery.nodes);
     QString error;
-    if (!writeFiles(parser.value(outOption), nodl.files, &error)) {
+    if (!NodlWriter::writeTo(nodl, parser.value(outOption), &error)) {
         err << error << '\n';
         return CommandLine::AnalysisErrors;
     }

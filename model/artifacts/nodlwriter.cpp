@@ -4,7 +4,10 @@
 #include "qos.h"
 #include "visibletext.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
+#include <QSaveFile>
 #include <QSet>
 
 #include <nlohmann/json.hpp>
@@ -531,6 +534,22 @@ NodlWriter::Documents NodlWriter::write(const AtomicNodeList &list)
         }
     }
     return out;
+}
+
+bool NodlWriter::writeTo(const Documents &documents, const QString &dir, QString *error)
+{
+    const QDir out(dir);
+    for (auto it = documents.files.cbegin(); it != documents.files.cend(); ++it) {
+        const QString path = out.filePath(it.key());
+        QSaveFile file(path);
+        if (!QDir().mkpath(QFileInfo(path).path()) || !file.open(QIODevice::WriteOnly) ||
+            file.write(it.value()) != it.value().size() || !file.commit()) {
+            *error = QStringLiteral("Cannot write %1: %2")
+                         .arg(QDir::toNativeSeparators(path), file.errorString());
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace rosarch

@@ -29,6 +29,10 @@ struct Documents
 /// Deterministic: documents by path, parameters and endpoints sorted by name.
 Documents write(const AtomicNodeList &list);
 
+/// Writes the documents under `dir` (each atomically); false with a message at the first
+/// that cannot be written.
+bool writeTo(const Documents &documents, const QString &dir, QString *error);
+
 } // namespace NodlWriter
 
 } // namespace rosarch
