@@ -1,5 +1,6 @@
 #include "parameterchecks.h"
 #include "checkscope.h"
+#include "declaringcall.h"
 #include "editdistance.h"
 #include "parameterview.h"
 #include "rosnames.h"
@@ -39,24 +40,6 @@ bool basesKnown(const AtomicNode &cls, const AtomicNodeList &nodes)
             return false;
     }
     return true;
-}
-
-/// Whether the declaring call is one whose type and default rules are ROS 2's own (a
-/// project's helper may convert or default; `get_parameter_or` reads with a fallback).
-bool declaresTyped(const ParameterDeclaration &d)
-{
-    return d.via == QLatin1String("declare_parameter") ||
-           d.via == QLatin1String("declare_parameter_if_not_declared") ||
-           d.via == QLatin1String("declare_or_get_parameter") ||
-           d.via == QLatin1String("get_or_declare_parameter") ||
-           d.via == QLatin1String("getOrDeclareParameter") ||
-           d.via == QLatin1String("generate_parameter_library");
-}
-
-/// A declaration whose whole name is decided at run time takes any name.
-bool takesAnyName(const ParameterDeclaration &d)
-{
-    return d.name.startsWith(u'{') && d.name.endsWith(u'}') && d.name.count(u'{') == 1;
 }
 
 /// Whether every parameter file the instance is given was read: each gave it a value (a file
@@ -177,7 +160,10 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
             i.declared = view.declarationsOf(n, &i.unknownPlugins);
             i.judged = !i.cls->acceptsUndeclared && !i.cls->parameters.isEmpty() &&
                        basesKnown(*i.cls, nodes) &&
-                       std::none_of(i.declared.begin(), i.declared.end(), takesAnyName);
+                       std::none_of(i.declared.begin(), i.declared.end(),
+                                    [](const ParameterDeclaration &d) {
+                                        return parameterNameIsOpen(d.name);
+                                    });
         }
         instances.append(i);
     }
@@ -236,7 +222,7 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
             }
             // a launch value that is still an expression (an include's argument the analysis
             // could not evaluate) has no type yet
-            const bool typed = !d->dynamicTyping && declaresTyped(*d) &&
+            const bool typed = !d->dynamicTyping && isStandardDeclaringCall(d->via) &&
                                !(s.source == QLatin1String("launch") && s.value.contains(u'('));
             if (typed && !parameterTypeAccepts(d->type, s.type)) {
                 report(QStringLiteral("parameter-type"), s.name,
@@ -261,7 +247,7 @@ void ParameterChecks::run(const AtomicNodeList &nodes, const LaunchDependencies 
             // a helper's or a base's declaration may sit in code this node never runs (a
             // strategy chosen at run time, a method only other nodes call)
             if (d.hasDefault || d.name.contains(u'{') || !d.guard.isEmpty() || d.inherited ||
-                !declaresTyped(d) || given.contains(d.name))
+                !isStandardDeclaringCall(d.via) || given.contains(d.name))
                 continue;
             report(QStringLiteral("parameter-missing"), d.name + QChar(0) + n.id,
                    QStringLiteral("Node %1 declares parameter '%2' without a default, and "

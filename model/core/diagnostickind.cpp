@@ -202,9 +202,9 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
         kind("no-workspace", "Not a workspace",
              "The folder has no ROS 2 package (no package.xml); nothing was analysed.", "error"),
         kind("helper-depth", "Helper chain too deep",
-             "Ports created through helpers, behaviours or functions nested deeper than the "
-             "analysis follows (or a behaviour tree of more classes than it follows) are not "
-             "given to the node. The message names where it stopped.",
+             "Ports created, and parameters declared, through helpers, behaviours or functions "
+             "nested deeper than the analysis follows (or a behaviour tree of more classes than "
+             "it follows) are not given to the node. The message names where it stopped.",
              "note"),
         kind("unresolved-entry-point", "Entry point without a node",
              "A setup.py console script names a function whose node class could not be found.",
@@ -263,7 +263,8 @@ const QList<DiagnosticKind> &DiagnosticKind::all()
         kind("evaluation-limit", "Value too large",
              "Evaluating a value (a CMake variable, a launch argument or substitution) made it "
              "longer than the size budget, usually by doubling it in a loop; it is left "
-             "unresolved.",
+             "unresolved. Parameter definition files (generate_parameter_library) past their "
+             "depth or size bound are read only up to it.",
              "warning"),
         kind("include-cycle", "Include cycle",
              "A launch file includes itself, directly or through others; the cycle was cut.",

@@ -25,15 +25,15 @@ QString typeOf(const QString &written)
     return t == QLatin1String("none") ? QString() : t; // a dynamically typed parameter
 }
 
-QString scalarText(const YAML::Node &n)
+QString scalarText(const YAML::Node &n, int depth = 0)
 {
     if (n.IsScalar())
         return QString::fromStdString(n.Scalar());
-    if (!n.IsSequence())
+    if (!n.IsSequence() || depth > kMaxDepth)
         return {};
     QStringList items;
     for (const YAML::Node &item : n)
-        items << scalarText(item);
+        items << scalarText(item, depth + 1);
     return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
 }
 
@@ -61,14 +61,23 @@ QList<ParameterDeclaration> GeneratedParameters::read(const QByteArray &content,
     if (!root.IsMap())
         return out;
     int entries = 0;
+    bool cut = false;
     std::function<void(const YAML::Node &, const QString &, int)> walk = [&](const YAML::Node &map,
                                                                              const QString &prefix,
                                                                              int depth) {
-        if (depth > kMaxDepth || !map.IsMap())
+        if (!map.IsMap())
             return;
+        if (depth > kMaxDepth) {
+            cut = true;
+            return;
+        }
         for (const auto &kv : map) {
-            if (++entries > kMaxEntries || !kv.first.IsScalar())
+            if (++entries > kMaxEntries) {
+                cut = true;
                 return;
+            }
+            if (!kv.first.IsScalar())
+                continue;
             QString key = QString::fromStdString(kv.first.Scalar());
             if (key.startsWith(QLatin1String("__map_")))
                 key = QStringLiteral("{%1}").arg(key.mid(6));
@@ -112,8 +121,24 @@ QList<ParameterDeclaration> GeneratedParameters::read(const QByteArray &content,
         }
     };
     // the top-level key names the generated namespace, not a parameter prefix
-    for (const auto &top : root)
-        walk(top.second, QString(), 0);
+    try {
+        for (const auto &top : root)
+            walk(top.second, QString(), 0);
+    } catch (const YAML::Exception &) {
+        cut = true;
+    }
+    if (cut) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Info;
+        d.code = QStringLiteral("evaluation-limit");
+        d.message = QStringLiteral("The parameter definitions nest deeper than %1 levels, have "
+                                   "more than %2 entries or cannot be read to the end; the rest "
+                                   "is not read, so the nodes using them lack those parameters.")
+                        .arg(kMaxDepth)
+                        .arg(kMaxEntries);
+        d.evidence = Evidence::startOf(file);
+        diagnostics->append(d);
+    }
     return out;
 }
 

@@ -57,6 +57,8 @@ public:
     /// Where the depth bound was hit on this thread since its last call (the deepest call site
     /// not followed), cleared by the call: the linker links classes in parallel.
     QList<Evidence> takeBoundsHit() const;
+    /// Records that following stopped at `where` (the parameter linker shares the bound).
+    void boundHit(const Evidence &where) const;
 
 private:
     void addFreeCallPortsAt(const CppFreeCall &call, const CppLinkContext &ctx, int depth,
@@ -76,7 +78,6 @@ private:
     const CppNameResolver &m_names;
     const QHash<QString, QList<CppClassIndex::FunctionRef>> &m_freeFunctionsByName;
     const std::vector<const CppProceduralNode *> &m_ownedNodes;
-    void boundHit(const Evidence &where) const;
 
     mutable QMutex m_boundsMutex; ///< the bounds are hit rarely: one lock for all threads
     mutable QHash<Qt::HANDLE, QList<Evidence>> m_boundsHit; ///< by thread

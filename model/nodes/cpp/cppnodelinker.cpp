@@ -64,7 +64,7 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
     : m_files(files), m_index(files), m_shared(files, m_index),
       m_names(m_index, m_facts, m_interfaceAliases, m_shared),
       m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes),
-      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names)
+      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names, m_helpers)
 {
     for (const CppFileFacts &file : files) {
         for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
@@ -139,10 +139,12 @@ LanguageAnalysis CppNodeLinker::link() const
         Diagnostic d;
         d.severity = Diagnostic::Severity::Info;
         d.code = QStringLiteral("helper-depth");
-        d.message = QStringLiteral("Stopped following the helpers of %1 here (bound: %2 levels "
-                                   "of helpers); ports created beyond it are not given to it.")
-                        .arg(node.className)
-                        .arg(CppHelperPorts::kMaxHelperDepth);
+        d.message =
+            QStringLiteral("Stopped following the helpers of %1 here (bound: %2 levels "
+                           "of helpers); ports created and parameters declared beyond it are "
+                           "not given to it.")
+                .arg(node.className)
+                .arg(CppHelperPorts::kMaxHelperDepth);
         d.evidence = hit.front();
         out.diagnostics.append(d);
     };

@@ -64,7 +64,7 @@ private:
     CppNameResolver m_names;          ///< after the containers it reads
     CppHelperPorts m_helpers;         ///< after the containers it reads
     CppConstructions m_constructions; ///< after the resolver and the helper ports
-    CppParameterLinker m_parameters;  ///< after the resolver
+    CppParameterLinker m_parameters;  ///< after the resolver and the helper ports
 };
 
 } // namespace rosarch

@@ -1,6 +1,7 @@
 #include "cppparameterlinker.h"
 
 #include "cppsyntax.h"
+#include "declaringcall.h"
 
 using namespace rosarch::cppsyntax;
 
@@ -11,8 +12,9 @@ using namespace rosarch::cppsyntax;
 
 namespace rosarch {
 
-CppParameterLinker::CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names)
-    : m_index(index), m_names(names)
+CppParameterLinker::CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names,
+                                       const CppHelperPorts &helpers)
+    : m_index(index), m_names(names), m_helpers(helpers)
 {
     for (const auto &ref : m_index.freeFunctions())
         if (ref.function->name != QLatin1String("main"))
@@ -49,7 +51,7 @@ void CppParameterLinker::collect(int cls, int node,
                                  QList<int> *visited, QList<ParameterDeclaration> *out,
                                  QStringList *undeclared) const
 {
-    if (depth > kMaxLinkDepth || visited->contains(cls))
+    if (visited->contains(cls))
         return;
     visited->append(cls);
     for (int c : m_index.lineage(cls)) {
@@ -69,7 +71,12 @@ void CppParameterLinker::collect(int cls, int node,
                     continue;
                 const int t = m_index.lookup(withoutTemplateArguments(inst.className).remove(u' '),
                                              m_names.scopeOf(here), ref.file);
-                if (t >= 0 && !m_index.at(t).node)
+                if (t < 0 || m_index.at(t).node)
+                    continue;
+                // the helpers' bound, said the way their ports say it (helper-depth)
+                if (depth + 1 > CppHelperPorts::kMaxHelperDepth)
+                    m_helpers.boundHit(inst.evidence);
+                else
                     collect(t, node, nullptr, depth + 1, visited, out, undeclared);
             }
         }
@@ -89,9 +96,7 @@ QList<ParameterDeclaration> CppParameterLinker::helperDeclarations() const
             ParameterDeclaration p;
             p.name = nameOf(d, ctx);
             // a name that is all run-time parts (`{param}`) says nothing about any key
-            QString literal = p.name;
-            literal.remove(QRegularExpression(QStringLiteral("\\{[^}]*\\}")));
-            if (seen.contains(p.name) || literal.remove(u'.').remove(u'_').remove(u'/').isEmpty())
+            if (seen.contains(p.name) || parameterNameIsOpen(p.name))
                 continue;
             seen.insert(p.name);
             p.type = d.type;
@@ -161,13 +166,15 @@ void CppParameterLinker::addFreeCalls(const CppFunction &fn, const CppLinkContex
                                       int depth, QList<ParameterDeclaration> *out,
                                       QStringList *undeclared) const
 {
-    if (depth > kMaxLinkDepth)
-        return;
     for (const CppFreeCall &call : fn.freeCalls) {
         if (std::none_of(call.arguments.begin(), call.arguments.end(),
                          [&](const CppValue &a) { return m_names.isNodeHandle(a, ctx); }))
             continue;
-        const QString name = splitScope(call.function).value(splitScope(call.function).size() - 1);
+        if (depth + 1 > CppHelperPorts::kMaxHelperDepth) {
+            m_helpers.boundHit(call.evidence);
+            continue;
+        }
+        const QString name = lastSegment(call.function);
         for (const auto &ref : m_freeFunctions.value(name)) {
             const CppFunction *callee = ref.function;
             const int n = int(call.arguments.size());
@@ -204,11 +211,7 @@ QString CppParameterLinker::nameOf(const CppParameterDeclaration &d,
 {
     if (!d.parameter.isEmpty()) {
         // a project's own declaring helper may put a prefix before the name it is given
-        const bool known = d.via == QLatin1String("declare_parameter") ||
-                           d.via == QLatin1String("declare_parameter_if_not_declared") ||
-                           d.via == QLatin1String("declare_or_get_parameter") ||
-                           d.via == QLatin1String("get_or_declare_parameter") ||
-                           d.via == QLatin1String("getOrDeclareParameter") ||
+        const bool known = isStandardDeclaringCall(d.via) ||
                            d.via == QLatin1String("get_parameter_or") ||
                            d.via == QLatin1String("undeclare");
         return known ? d.parameter : QStringLiteral("{%1}").arg(d.via) + d.parameter;

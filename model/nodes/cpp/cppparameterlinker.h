@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cppclassindex.h"
+#include "cpphelperports.h"
 #include "cpplinkcontext.h"
 #include "cppnameresolver.h"
 #include "parameter.h"
@@ -18,7 +19,10 @@ namespace rosarch {
 class CppParameterLinker
 {
 public:
-    CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names);
+    /// Helper classes and free functions are followed to the helpers' depth bound; where it is
+    /// hit, `helpers` records it for the helper-depth note.
+    CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names,
+                       const CppHelperPorts &helpers);
 
     /// The declarations of class `cls` and its bases; a plugin's are resolved with the
     /// substitutions of its lineage (its name is `{plugin}`), given per class.
@@ -49,6 +53,7 @@ private:
 
     const CppClassIndex &m_index;
     const CppNameResolver &m_names;
+    const CppHelperPorts &m_helpers;
     QHash<QString, QList<CppClassIndex::FunctionRef>> m_freeFunctions; ///< by name
 };
 

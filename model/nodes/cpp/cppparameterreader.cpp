@@ -2,6 +2,7 @@
 
 #include <QRegularExpression>
 
+#include "declaringcall.h"
 #include "parameter.h"
 
 namespace rosarch {
@@ -48,7 +49,7 @@ CppParameterDeclaration CppParameterReader::read(TSNode call, const CallShape &s
     CppParameterDeclaration decl;
     const QString &name = shape.name;
     const QString lower = name.toLower();
-    const bool standard = name == QLatin1String("declare_parameter") || isNav2Helper(name);
+    const bool standard = isStandardDeclaringCall(name);
     // node options (`automatically_declare_parameters_from_overrides(true)`) declare nothing
     const bool custom = !standard && !lower.startsWith(QLatin1String("automatically")) &&
                         !lower.startsWith(QLatin1String("allow_undeclared")) &&

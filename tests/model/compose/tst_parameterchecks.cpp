@@ -2,6 +2,7 @@
 // instance is given against what its class and plugins declare, on the params_checks
 // (rclcpp, nav2_util and rclpy declarations, a follower plugin) and params_generated
 // (generate_parameter_library) fixtures.
+#include "generatedparameters.h"
 #include "parameter.h"
 #include "parameterview.h"
 #include "recovery.h"
@@ -126,6 +127,22 @@ private Q_SLOTS:
                 QStringLiteral("log_level|||info|file|-"),
                 QStringLiteral("use_sim_time|||false|file|declared"),
             }));
+    }
+
+    void generatedDefinitionsPastTheirBoundSaySo()
+    {
+        QByteArray yaml = "gen:\n";
+        QByteArray indent = "  ";
+        for (int i = 0; i < 40; ++i, indent += "  ")
+            yaml += indent + "level" + QByteArray::number(i) + ":\n";
+        yaml += indent + "deepest:\n" + indent + "  type: double\n";
+        QList<Diagnostic> diagnostics;
+        const QList<ParameterDeclaration> read =
+            GeneratedParameters::read(yaml, QStringLiteral("src/p/params.yaml"), &diagnostics);
+        QVERIFY(read.isEmpty());
+        QCOMPARE(diagnostics.size(), 1);
+        QCOMPARE(diagnostics.first().code, QStringLiteral("evaluation-limit"));
+        QCOMPARE(diagnostics.first().evidence.file, QStringLiteral("src/p/params.yaml"));
     }
 
     void generatedDefinitionsAreDeclarations()
