@@ -8,6 +8,7 @@
 #include "plantumlrenderer.h"
 #include "projectcommand.h"
 #include "recovery.h"
+#include "sitecommand.h"
 #include "suggestcommand.h"
 #include "terminalstream.h"
 #include "visibletext.h"
@@ -28,7 +29,7 @@ namespace rosarch {
 namespace {
 
 const char *const kCommands[] = {
-    "recover", "check", "diff", "eval", "suggest", "project", "export",
+    "recover", "check", "diff", "eval", "suggest", "project", "export", "site",
 };
 
 QString usageText()
@@ -78,6 +79,11 @@ QString usageText()
         "services and\n"
         "                                            actions as a NoDL document\n"
         "                                            (<dir>/<package>/<executable>.nodl.json)\n"
+        "  rosarch site <workspace> --out <dir> [--title <text>] [--source-url <pattern>]\n"
+        "                                            write the architecture as a static HTML "
+        "site (systems,\n"
+        "                                            diagrams, nodes, topics, launch files, "
+        "findings, search)\n"
         "  rosarch --help | --version\n"
         "\n"
         "Artifacts written by recover: atomic_nodes.json, launch_dependencies.json, "
@@ -335,6 +341,8 @@ int CommandLine::run(const QStringList &arguments)
         return ProjectCommand::run(arguments);
     if (first == QLatin1String("export"))
         return ExportCommand::run(arguments);
+    if (first == QLatin1String("site"))
+        return SiteCommand::run(arguments);
     const bool pathLike = first.contains(QLatin1Char('/')) || first.startsWith(QLatin1Char('.')) ||
                           QFileInfo::exists(first);
     if (pathLike) {

@@ -1,0 +1,209 @@
+#include "launchpage.h"
+#include "sitediagram.h"
+
+#include <QCoreApplication>
+
+namespace rosarch {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("rosarch::LaunchPage", text);
+}
+
+using SiteHtml::code;
+using SiteHtml::escape;
+using SiteHtml::link;
+
+class Writer
+{
+public:
+    Writer(const SiteContext &context, const QString &file)
+        : m_context(context), m_model(*context.model), m_file(file),
+          m_path(m_model.launchPage(file))
+    {
+        const LaunchDependencies &launch = m_model.recovery().launch;
+        // The file on its own (its classifier run), else its first instance in a system.
+        for (const LaunchFileInstance &lf : launch.classifierInstances)
+            if (lf.file == file && lf.parentId.isEmpty()) {
+                m_instance = &lf;
+                m_nodes = &launch.classifierNodes;
+                m_instances = &launch.classifierInstances;
+                break;
+            }
+        if (!m_instance)
+            for (const LaunchFileInstance &lf : launch.instances)
+                if (lf.file == file) {
+                    m_instance = &lf;
+                    m_nodes = &launch.nodes;
+                    m_instances = &launch.instances;
+                    break;
+                }
+        for (const Composite *c : m_model.recovery().architecture.representatives())
+            if (c->file == file) {
+                m_composite = c;
+                break;
+            }
+    }
+
+    SiteFile page() const
+    {
+        const QString name = m_file.section(u'/', -1);
+        const QString package = m_model.packageOf(m_file);
+        QString body =
+            QStringLiteral("<dl class=\"props\"><dt>%1</dt><dd>%2</dd><dt>%3</dt><dd>%4</dd>")
+                .arg(escape(tr("File")),
+                     SiteHtml::source(m_context, m_path, Evidence::startOf(m_file)),
+                     escape(tr("Package")), link(m_path, m_model.packagePage(package), package));
+        QStringList systems;
+        for (const QString &id : m_model.systemsWith(m_file))
+            if (const SiteSystem *s = m_model.system(id))
+                systems << link(m_path, m_model.systemPage(id), s->root.stem);
+        body +=
+            QStringLiteral("<dt>%1</dt><dd>%2</dd></dl>\n")
+                .arg(escape(tr("Part of")), systems.isEmpty() ? escape(tr("no system"))
+                                                              : systems.join(QStringLiteral(", ")));
+        body += diagram();
+        body += arguments();
+        body += includes();
+        body += nodes();
+        return SiteHtml::page(m_context, m_path, name,
+                              {{tr("Home"), QStringLiteral("index.html")},
+                               {package, m_model.packagePage(package)},
+                               {name, m_path}},
+                              body);
+    }
+
+private:
+    QString section(const QString &id, const QString &title) const
+    {
+        return QStringLiteral("<section aria-labelledby=\"%1\">\n<h2 id=\"%1\">%2</h2>\n")
+            .arg(id, escape(title));
+    }
+
+    QString diagram() const
+    {
+        if (!m_composite || m_composite->parts.isEmpty())
+            return {};
+        const QString title = tr("Diagram of %1 on its own: %2 parts, %3 channels.")
+                                  .arg(m_file.section(u'/', -1))
+                                  .arg(m_composite->parts.size())
+                                  .arg(m_composite->channels.size());
+        const SiteDiagram::Result d =
+            SiteDiagram::draw(*m_composite, title, QStringLiteral("d"), [&](const QString &key) {
+                const QString target = m_model.diagramTarget(*m_composite, key, false);
+                return target.isEmpty() || target.startsWith(u'#') ? QString()
+                                                                   : SiteHtml::href(m_path, target);
+            });
+        QString out = section(QStringLiteral("diagram"), tr("Diagram"));
+        if (d.svg.isEmpty())
+            return out +
+                   QStringLiteral("<p class=\"note\">%1</p>\n</section>\n").arg(escape(d.error));
+        out +=
+            QStringLiteral("<figure class=\"diagram-wrap\">\n<div class=\"scroll\" tabindex=\"0\" "
+                           "role=\"region\" aria-label=\"%1\">\n")
+                .arg(escape(tr("Diagram, scrollable")));
+        return out + d.svg +
+               QStringLiteral("</div>\n<figcaption>%1</figcaption>\n</figure>\n</section>\n")
+                   .arg(escape(title));
+    }
+
+    QString arguments() const
+    {
+        QList<QStringList> rows;
+        QMap<QString, const LaunchArgument *> declared;
+        for (const LaunchArgument &a : m_model.recovery().launch.arguments)
+            if (a.launchFile == m_file)
+                declared.insert(a.name, &a);
+        if (m_instance)
+            for (const auto &[name, value] : m_instance->arguments) {
+                const LaunchArgument *a = declared.value(name);
+                rows << QStringList{code(name), code(value), a ? escape(a->description) : QString(),
+                                    a ? SiteHtml::source(m_context, m_path, a->evidence)
+                                      : QString()};
+            }
+        if (rows.isEmpty())
+            return {};
+        return section(QStringLiteral("arguments"), tr("Arguments")) +
+               SiteHtml::table(tr("Launch arguments and the values analysed"),
+                               {tr("Name"), tr("Value"), tr("Description"), tr("Source")}, rows) +
+               QStringLiteral("</section>\n");
+    }
+
+    QString includes() const
+    {
+        QList<QStringList> rows;
+        if (m_instance)
+            for (const QString &id : m_instance->includedLaunchFiles)
+                for (const LaunchFileInstance &lf : *m_instances)
+                    if (lf.id == id)
+                        rows << QStringList{
+                            lf.external ? code(lf.package + u'/' + lf.type)
+                                        : link(m_path, m_model.launchPage(lf.file), lf.file),
+                            lf.condition.isEmpty() ? QString() : code(lf.condition),
+                            SiteHtml::source(m_context, m_path, lf.evidence)};
+        QString out;
+        if (!rows.isEmpty())
+            out += section(QStringLiteral("includes"), tr("Includes")) +
+                   SiteHtml::table(tr("Launch files this file includes"),
+                                   {tr("File"), tr("Condition"), tr("Source")}, rows) +
+                   QStringLiteral("</section>\n");
+        if (m_instance && m_instance->namespaces.size() > 0) {
+            out += section(QStringLiteral("groups"), tr("Namespaces and groups"));
+            out += QStringLiteral("<ul>");
+            for (auto it = m_instance->namespaces.cbegin(); it != m_instance->namespaces.cend();
+                 ++it)
+                out += QStringLiteral("<li>%1: %2</li>")
+                           .arg(code(it.key().isEmpty() ? QStringLiteral("/") : it.key()))
+                           .arg(escape(QCoreApplication::translate(
+                               "rosarch::LaunchPage", "%n elements", nullptr, int(it->size()))));
+            out += QStringLiteral("</ul>\n</section>\n");
+        }
+        return out;
+    }
+
+    QString nodes() const
+    {
+        QList<QStringList> rows;
+        if (m_instance)
+            for (const QString &id : m_instance->nodes)
+                for (const NodeInstance &n : *m_nodes)
+                    if (n.id == id) {
+                        const QString ns =
+                            n.nameSpace == QLatin1String("/") ? QString() : n.nameSpace;
+                        rows << QStringList{
+                            code(ns + u'/' + (n.nodeName.isEmpty() ? n.execName : n.nodeName)),
+                            code(n.package + u'/' + n.execName),
+                            link(m_path, m_model.nodePage(n.classId), n.className),
+                            n.condition.isEmpty() ? QString() : code(n.condition),
+                            SiteHtml::source(m_context, m_path, n.evidence)};
+                    }
+        if (rows.isEmpty())
+            return {};
+        return section(QStringLiteral("nodes"), tr("Nodes")) +
+               SiteHtml::table(
+                   tr("Nodes this file starts itself"),
+                   {tr("Node"), tr("Executable"), tr("Class"), tr("Condition"), tr("Source")},
+                   rows) +
+               QStringLiteral("</section>\n");
+    }
+
+    const SiteContext &m_context;
+    const SiteModel &m_model;
+    QString m_file;
+    QString m_path;
+    const LaunchFileInstance *m_instance = nullptr;
+    const QList<NodeInstance> *m_nodes = nullptr;
+    const QList<LaunchFileInstance> *m_instances = nullptr;
+    const Composite *m_composite = nullptr;
+};
+
+} // namespace
+
+SiteFile LaunchPage::write(const SiteContext &context, const QString &file)
+{
+    return Writer(context, file).page();
+}
+
+} // namespace rosarch

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "composition.h"
+#include "layoutgraph.h"
+
+#include <QString>
+
+#include <functional>
+
+namespace rosarch {
+
+/// A composed diagram as inline SVG for the site: DiagramBuilder's graph (the overview, as
+/// the GUI starts a composite too big to read, when it is big), laid out by Graphviz in this
+/// process, drawn with CSS classes (so the page's light or dark scheme colours it) and with a
+/// link on every part, channel and port that has a page.
+class SiteDiagram
+{
+public:
+    struct Result
+    {
+        QString svg;           ///< "" when the layout failed
+        QString error;         ///< why, for the page
+        bool overview = false; ///< namespaces were collapsed to fit
+        int elements = 0;      ///< boxes drawn
+    };
+    /// `hrefOf(key)` gives a diagram key's link ("" = none) as the page writes it; `id` makes
+    /// the SVG's element ids unique in its page.
+    static Result draw(const Composite &composite, const QString &title, const QString &id,
+                       const std::function<QString(const QString &key)> &hrefOf);
+    /// The SVG for an already laid-out graph (exposed for the tests).
+    static QString svg(const LayoutGraph &graph, const LayoutGeometry &geometry,
+                       const QString &title, const QString &id,
+                       const std::function<QString(const QString &key)> &hrefOf);
+};
+
+} // namespace rosarch
