@@ -12,6 +12,7 @@
 #include "nodlwriter.h"
 #include "projectcontroller.h"
 #include "rendercontroller.h"
+#include "siteexport.h"
 #include "stagerunner.h"
 #include "suggestioncontroller.h"
 #include "workspacewatcher.h"
@@ -24,6 +25,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
+#include <QProgressDialog>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -179,6 +181,52 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(m_exportAction);
     file->addAction(m_exportNodlAction);
+    QAction *exportSite = file->addAction(tr("Export Architecture &Site…"));
+    exportSite->setObjectName(QStringLiteral("exportSiteAction"));
+    exportSite->setStatusTip(tr("Write the accepted model as a static HTML site a newcomer reads "
+                                "in a browser: systems with their diagrams, nodes, topics, "
+                                "launch files, findings and a search"));
+    connect(exportSite, &QAction::triggered, this, [this] {
+        if (workspace().isEmpty()) {
+            showError(tr("Export failed"), tr("Open a workspace first: the site shows its "
+                                              "architecture."));
+            return;
+        }
+        const QString folder = QFileDialog::getExistingDirectory(
+            this, tr("Export Architecture Site To"), QFileInfo(workspace()).path());
+        if (folder.isEmpty())
+            return;
+        // The pages and their diagrams take seconds on a big workspace: a worker writes them.
+        auto *job = new SiteExport(this);
+        auto *progress =
+            new QProgressDialog(tr("Writing the architecture site…"), tr("Cancel"), 0, 0, this);
+        progress->setWindowModality(Qt::WindowModal);
+        progress->setMinimumDuration(400);
+        connect(job, &SiteExport::progressed, progress, [progress](int done, int total) {
+            progress->setMaximum(total);
+            progress->setValue(done);
+        });
+        connect(progress, &QProgressDialog::canceled, job, &SiteExport::cancel);
+        connect(job, &SiteExport::finished, this,
+                [this, job, progress](bool ok, const QString &message) {
+                    progress->reset();
+                    progress->deleteLater();
+                    job->deleteLater();
+                    m_logView->appendLog(message);
+                    if (ok)
+                        statusBar()->showMessage(message, 5000);
+                    else
+                        showError(
+                            tr("Export failed"),
+                            tr("The architecture site could not be written:\n%1").arg(message));
+                });
+        SiteOptions options;
+        options.workspace = workspace();
+        options.siteFolder = folder;
+        options.title = QDir(workspace()).dirName();
+        options.version = QApplication::applicationVersion();
+        job->start(m_document->accepted(), m_document->project(), options);
+    });
     file->addAction(m_diagrams->exportSvgAction());
     file->addAction(m_diagrams->exportPngAction());
     file->addSeparator();
