@@ -19,6 +19,7 @@ packages=(build-essential cmake ninja-build pkg-config ca-certificates curl
   nlohmann-json3-dev libcurl4-openssl-dev libssl-dev libtree-sitter-dev libyaml-cpp-dev xvfb xauth
   fonts-dejavu-core
   ccache clang-format clang-tidy default-jre-headless nodejs git clang-16 libclang-rt-16-dev
+  chromium # the architecture site's browser test (tests/support/site)
   python3-jsonschema python3-yaml) # the NoDL validator of the tests (tests/support/validate-nodl.py)
 
 missing=()
@@ -42,6 +43,7 @@ scripts/fetch-grammars.sh "$build_dir/_grammars"
 scripts/fetch-plantuml.sh "$build_dir/_plantuml" # the real consumer of our PlantUML, for the tests
 scripts/fetch-sarif-schema.sh "$build_dir/_sarif" # SARIF 2.1.0 schema + validator, for the tests
 scripts/fetch-mermaid.sh "$build_dir/_mermaid" # Mermaid's parser, for the tests
+scripts/fetch-site-tools.sh "$build_dir/_sitetools" # puppeteer-core, vnu-jar, axe-core, for the tests
 
 jobs=$(nproc 2>/dev/null || echo 2)
 grammars="$PWD/$build_dir/_grammars"
