@@ -40,6 +40,8 @@ struct CppValue
         /// `costmap_.getName()`: the method `field`, without arguments, of the object `parts[0]`
         /// (a member or a parameter), resolved when linking if that object is the node
         ObjectCall,
+        /// `for (auto & name : names_)`: each element of the container `parts[0]`
+        Element,
         Expression, ///< anything else
     };
     Kind kind = Kind::None;

@@ -190,13 +190,14 @@ bool CppFunctionExtractor::visitNode(TSNode n)
         Using,
         TypeDefinition,
         Class,
-        Struct
+        Struct,
+        RangeFor
     };
     static const ts::TypeSet kinds(SyntaxTree::Grammar::Cpp,
                                    {"declaration", "assignment_expression", "call_expression",
                                     "new_expression", "return_statement", "alias_declaration",
                                     "using_declaration", "type_definition", "class_specifier",
-                                    "struct_specifier"});
+                                    "struct_specifier", "for_range_loop"});
     static const ts::TypeSet identifier(SyntaxTree::Grammar::Cpp, {"identifier"});
     static const ts::TypeSet namespaceKeyword(SyntaxTree::Grammar::Cpp, {"namespace"});
     static const ts::TypeSet typeIdentifier(SyntaxTree::Grammar::Cpp, {"type_identifier"});
@@ -246,6 +247,17 @@ bool CppFunctionExtractor::visitNode(TSNode n)
     case Class:
     case Struct:
         return false; // local classes are not followed
+    case RangeFor: {
+        // `for (const auto & name : names_)`: the variable stands for each element in turn
+        const QString name = m_tree.text(declaredName(ts::field(n, f.declarator)));
+        CppLocal local;
+        local.type = simplified(m_tree, ts::field(n, f.type));
+        local.value = ts::field(n, f.right);
+        local.element = true;
+        if (!name.isEmpty())
+            m_locals.insert(name, local);
+        return true;
+    }
     default:
         return true;
     }

@@ -48,6 +48,8 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
     case CppValue::Kind::Local:
         return {NameOrigin::Local, value.literal, value.text, QString()};
     case CppValue::Kind::Parameter: {
+        if (value.parameter.isEmpty())
+            return resolveBuiltParameter(value, ctx, depth);
         const QString def = parameterDefault(value.parameter, ctx, depth + 1);
         return {NameOrigin::Parameter, def.isNull() ? value.text : def, value.text,
                 value.parameter};
@@ -98,6 +100,17 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         at.self = at.cls;
         return resolve(call, at, depth + 1);
     }
+    case CppValue::Kind::Element:
+        // Each element of a list parameter (`for (auto & n : node_names_)`): one name per
+        // item of the instance's value, `{node_names}` until the instance gives it.
+        if (depth < kMaxLinkDepth && !value.parts.empty()) {
+            const CppResolvedName list = resolve(value.parts.front(), ctx, depth + 1);
+            if (list.origin == NameOrigin::Parameter && list.parameterPrefix.isEmpty() &&
+                list.parameterSuffix.isEmpty() && !list.parameter.contains(u'{'))
+                return {NameOrigin::Parameter, QStringLiteral("{%1}").arg(list.parameter),
+                        value.text, QStringLiteral("{%1}").arg(list.parameter)};
+        }
+        return r;
     case CppValue::Kind::OutArgument:
         if (depth < kMaxLinkDepth) {
             const CppBinding filled = outBinding(value.variable, value.index, ctx);
@@ -142,6 +155,28 @@ CppBinding CppNameResolver::outBinding(const QString &function, int index,
                 if (CppBinding b = filled(&fn, ctx.file); b.fn)
                     return b;
     return {};
+}
+
+// A parameter whose name is built (`source_name_ + ".topic"`): decided when the name resolves
+// to a literal or to a pattern over a list parameter's items (`{sources}.topic`), which the
+// instance expands. The default written after the name (`parts[1]`) names the port until then.
+CppResolvedName CppNameResolver::resolveBuiltParameter(const CppValue &value,
+                                                       const CppLinkContext &ctx, int depth) const
+{
+    if (value.parts.empty() || depth > kMaxLinkDepth)
+        return {NameOrigin::Expression, value.text, value.text, QString()};
+    const CppResolvedName name = resolve(value.parts.front(), ctx, depth + 1);
+    const bool literal = name.origin == NameOrigin::Literal;
+    const bool perItem = name.origin == NameOrigin::Parameter && name.parameter.startsWith(u'{') &&
+                         name.parameter.endsWith(u'}') && name.name.contains(name.parameter);
+    if ((!literal && !perItem) || name.name.isEmpty())
+        return {NameOrigin::Expression, value.text, value.text, QString()};
+    CppResolvedName def;
+    if (value.parts.size() > 1)
+        def = resolve(value.parts.at(1), ctx, depth + 1);
+    const bool hasDefault = def.origin == NameOrigin::Literal ||
+                            (def.origin == NameOrigin::Parameter && def.name == name.parameter);
+    return {NameOrigin::Parameter, hasDefault ? def.name : name.name, value.text, name.name};
 }
 
 // Each part resolved and joined; the whole stays the expression when a part cannot be. A part
@@ -209,6 +244,11 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
                             [&](const CppBinding &b) { return holdsTheNodeName(b, c); }))
                 return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), text, QString()};
             for (const CppBinding &b : bindings) {
+                if (b.value.kind == CppValue::Kind::Parameter && b.value.parameter.isEmpty() &&
+                    b.fn) // a name built at run time, decided when its parts are
+                    return resolve(b.value,
+                                   CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
+                                   depth + 1);
                 if (b.value.kind == CppValue::Kind::Parameter) {
                     const QString def = parameterDefault(b.value.parameter, ctx, depth + 1);
                     return {NameOrigin::Parameter, def.isNull() ? text : def, text,
@@ -272,6 +312,8 @@ CppResolvedName CppNameResolver::resolveField(const CppValue &value, const CppLi
             return expression; // two structs' fields of one name, filled differently
         read = b;
     }
+    if (read && read->value.parameter.isEmpty()) // a name built at run time
+        return expression;
     if (read) {
         const CppLinkContext at{read->cls, read->fn, read->file, nullptr, -1};
         const QString def = parameterDefault(read->value.parameter, at, depth + 1);
@@ -469,64 +511,6 @@ bool isNodeHandleType(const QString &type)
         QStringLiteral("(^|::|<|\\s)(Node|LifecycleNode|LifecycleNodeInterface)(\\s*(::(WeakPtr|"
                        "SharedPtr|Ptr)|>|\\*|&)|$)"));
     return node.match(type.simplified()).hasMatch();
-}
-
-QString CppNameResolver::resolveType(const QString &written, const CppLinkContext &ctx) const
-{
-    return written.isEmpty() ? written : canonicalInterfaceType(expandAliases(written, ctx));
-}
-
-// Replaces the first segment through the aliases visible from `ctx` (function, class and its
-// bases, file, helper template arguments, then interface typedefs of the package).
-QString CppNameResolver::expandAliases(const QString &written, const CppLinkContext &ctx) const
-{
-    QList<const QHash<QString, QString> *> scopes;
-    if (ctx.subst && !ctx.subst->templateArguments.isEmpty())
-        scopes.append(&ctx.subst->templateArguments);
-    if (ctx.fn)
-        scopes.append(&ctx.fn->aliases);
-    if (ctx.cls >= 0)
-        for (int c : m_index.lineage(ctx.cls))
-            scopes.append(&m_index.at(c).cls->aliases);
-    if (ctx.file)
-        scopes.append(&ctx.file->aliases);
-    if (ctx.cls >= 0)
-        scopes.append(&m_index.at(ctx.cls).file->aliases);
-    const QString package = ctx.file ? ctx.file->package : QString();
-    for (const QString &scope : {package, QString()}) {
-        const auto it = m_interfaceAliases.constFind(scope);
-        if (it != m_interfaceAliases.constEnd())
-            scopes.append(&*it);
-    }
-    QString type = written.trimmed();
-    if (type.startsWith(QLatin1String("typename ")))
-        type = type.mid(9);
-    for (int step = 0; step < kMaxLinkDepth; ++step) {
-        QStringList parts = splitScope(type);
-        if (parts.isEmpty())
-            break;
-        const QString head = parts.first();
-        QString target;
-        for (const auto *aliases : std::as_const(scopes)) {
-            target = aliases->value(head);
-            if (!target.isEmpty())
-                break;
-        }
-        if (target.isEmpty() || target == head)
-            break;
-        parts[0] = target;
-        type = parts.join(QStringLiteral("::"));
-    }
-    return type;
-}
-
-QStringList CppNameResolver::scopeOf(const CppLinkContext &ctx) const
-{
-    if (ctx.cls >= 0) {
-        const CppClass &c = *m_index.at(ctx.cls).cls;
-        return c.scope + QStringList{c.name};
-    }
-    return ctx.fn ? ctx.fn->namespaces : QStringList();
 }
 
 const CppMemberFacts &CppNameResolver::facts(int cls) const

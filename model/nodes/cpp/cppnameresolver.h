@@ -53,6 +53,8 @@ public:
     CppLinkContext selfMethod(const QString &name, const CppLinkContext &ctx) const;
 
 private:
+    CppResolvedName resolveBuiltParameter(const CppValue &value, const CppLinkContext &ctx,
+                                          int depth) const;
     CppResolvedName resolveConcatenation(const CppValue &value, const CppLinkContext &ctx,
                                          int depth) const;
     bool isPluginNameParameter(const CppValue &value, const CppLinkContext &ctx) const;

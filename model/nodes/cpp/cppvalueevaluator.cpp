@@ -222,10 +222,22 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
             !lower.endsWith(QLatin1String("parameters")) &&
             (lower.contains(QLatin1String("get")) || lower.contains(QLatin1String("declare")))) {
             QString parameter;
-            if (literalParameterIndex(arguments(ts::field(n, fields().arguments)), &parameter,
-                                      depth) >= 0) {
+            const std::vector<TSNode> callArgs = arguments(ts::field(n, fields().arguments));
+            if (literalParameterIndex(callArgs, &parameter, depth) >= 0) {
                 v.kind = CppValue::Kind::Parameter;
                 v.parameter = parameter;
+                return v;
+            }
+            // `declare_or_get_parameter(source_name_ + ".topic", std::string("scan"))`: a name
+            // the linker may decide (`parts[0]`), with the default after it (`parts[1]`).
+            for (size_t i = 0; i < callArgs.size() && i < 3 && depth < 6; ++i) {
+                CppValue name = evaluate(callArgs[i], depth + 1);
+                if (name.kind != CppValue::Kind::Concatenation)
+                    continue;
+                v.kind = CppValue::Kind::Parameter;
+                v.parts.push_back(std::move(name));
+                if (i + 1 < callArgs.size())
+                    v.parts.push_back(evaluate(callArgs[i + 1], depth + 1));
                 return v;
             }
         }
@@ -301,6 +313,11 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             v.parameter = it->parameter;
             return v;
         }
+        if (it->element && !ts::isNull(it->value) && depth < 6) {
+            v.kind = CppValue::Kind::Element;
+            v.parts.push_back(evaluate(it->value, depth + 1));
+            return v;
+        }
         if (ts::isNull(it->value) && !it->outCall.isEmpty()) {
             v.kind = CppValue::Kind::OutArgument;
             v.variable = it->outCall;
@@ -318,6 +335,7 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             case CppValue::Kind::Parameter:
                 v.kind = CppValue::Kind::Parameter;
                 v.parameter = inner.parameter;
+                v.parts = inner.parts; // a name the linker builds
                 return v;
             case CppValue::Kind::SelfNode:
             case CppValue::Kind::Member:
@@ -325,6 +343,7 @@ CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) c
             case CppValue::Kind::SelfCall:
             case CppValue::Kind::Concatenation:
             case CppValue::Kind::Field:
+            case CppValue::Kind::Element:
             case CppValue::Kind::Constant: {
                 CppValue r = inner;
                 r.text = name;

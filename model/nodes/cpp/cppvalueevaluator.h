@@ -25,6 +25,8 @@ struct CppLocal
     /// function may fill it through a reference parameter.
     QString outCall;
     int outIndex = -1;
+    /// A range-for variable: `value` is the container it walks, each element in turn.
+    bool element = false;
 
     void setValue(TSNode v);
     /// With `loopInitial` known (CppFunctionExtractor finds it from the path it walked).

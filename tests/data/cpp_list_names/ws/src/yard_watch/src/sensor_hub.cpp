@@ -1,0 +1,34 @@
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rclcpp/rclcpp.hpp"
+#include "yard_watch/feed.hpp"
+
+// Listens to every feed named in `feeds`; each feed's topic is a parameter of its own.
+class SensorHub : public rclcpp::Node
+{
+public:
+  SensorHub()
+  : Node("sensor_hub")
+  {
+    const std::vector<std::string> names =
+      declare_parameter<std::vector<std::string>>("feeds", std::vector<std::string>{});
+    for (std::string name : names) {
+      auto feed = std::make_shared<yard_watch::Feed>(this, name);
+      feed->start();
+      feeds_.push_back(feed);
+    }
+  }
+
+private:
+  std::vector<std::shared_ptr<yard_watch::Feed>> feeds_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<SensorHub>());
+  rclcpp::shutdown();
+  return 0;
+}
