@@ -18,9 +18,11 @@ using SiteHtml::code;
 using SiteHtml::escape;
 using SiteHtml::link;
 
+/// "1 system", "3 systems": `text` holds a singular and a plural form, "system|systems".
 QString count(const char *text, qsizetype n)
 {
-    return QCoreApplication::translate("rosarch::IndexPage", text, nullptr, int(n));
+    const QString forms = QCoreApplication::translate("rosarch::IndexPage", text);
+    return QStringLiteral("%1 %2").arg(n).arg(forms.section(u'|', n == 1 ? 0 : 1, n == 1 ? 0 : 1));
 }
 
 } // namespace
@@ -38,10 +40,10 @@ SiteFile IndexPage::index(const SiteContext &context)
             .arg(escape(tr("The architecture of this ROS 2 workspace as rosarch "
                            "recovered it from the source: %1, %2, %3 and %4. Search "
                            "for any node, topic or launch file above.")
-                            .arg(count("%n systems", model.systems().size()),
-                                 count("%n packages", r.nodes.packages.size()),
-                                 count("%n node classes", classes),
-                                 count("%n launch files", r.launch.launchFiles.size()))));
+                            .arg(count("system|systems", model.systems().size()),
+                                 count("package|packages", r.nodes.packages.size()),
+                                 count("node class|node classes", classes),
+                                 count("launch file|launch files", r.launch.launchFiles.size()))));
     QList<QStringList> rows;
     for (const SiteSystem &s : model.systems())
         rows << QStringList{link(path, model.systemPage(s.root.instanceId), s.root.stem),
@@ -81,9 +83,9 @@ SiteFile IndexPage::index(const SiteContext &context)
                 .arg(escape(tr("Packages")));
     body += SiteHtml::table(tr("Packages of the workspace"),
                             {tr("Package"), tr("Node classes and plugins"), tr("Launch files")},
-                            rows, QStringLiteral("numbers"));
+                            rows, QStringLiteral("counts"));
     body += QStringLiteral("</section>\n<p><a href=\"findings.html\">%1</a></p>\n")
-                .arg(escape(count("All %n findings", model.findings().size())));
+                .arg(escape(tr("All findings (%1)").arg(model.findings().size())));
     return SiteHtml::page(context, path, context.title, {{tr("Home"), path}}, body);
 }
 

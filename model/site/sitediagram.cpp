@@ -1,6 +1,7 @@
 #include "sitediagram.h"
 #include "diagrambuilder.h"
 #include "diagramoverview.h"
+#include "graphlayout.h"
 #include "inprocesslayout.h"
 #include "sitehtml.h"
 
@@ -19,6 +20,7 @@ QString tr(const char *text)
 
 /// Beyond this many square points of boxes a diagram is not readable on a page: the overview.
 constexpr double kOverviewArea = 1600.0 * 1200.0;
+constexpr int kLayoutTimeoutMs = 20000;
 constexpr double kMargin = 8;
 constexpr double kPortSquare = 8;
 constexpr double kPortInset = 12;
@@ -227,6 +229,18 @@ QString SiteDiagram::svg(const LayoutGraph &graph, const LayoutGeometry &geometr
     return out + QStringLiteral("</svg>\n");
 }
 
+LayoutResult SiteDiagram::layout(const LayoutGraph &graph)
+{
+    // The GUI's helper process where there is one: Graphviz can abort() or run for minutes on
+    // some graphs (seen on Autoware), which must cost one drawing, not the whole site.
+    if (!GraphLayout::helperPath().isEmpty()) {
+        LayoutOptions options;
+        options.timeoutMs = kLayoutTimeoutMs;
+        return GraphLayout::layout(graph, options);
+    }
+    return InProcessLayout::layout(graph);
+}
+
 SiteDiagram::Result SiteDiagram::draw(const Composite &composite, const QString &title,
                                       const QString &id,
                                       const std::function<QString(const QString &key)> &hrefOf)
@@ -237,8 +251,15 @@ SiteDiagram::Result SiteDiagram::draw(const Composite &composite, const QString 
         graph = DiagramBuilder::build(composite, DiagramOverview::options(composite, {}));
         result.overview = true;
     }
+    LayoutResult layout = SiteDiagram::layout(graph);
+    if (!layout.ok && !result.overview) {
+        // Graphviz fails on some drawings (an assertion in its crossing minimisation, a
+        // timeout): the overview often gets through where the full drawing did not.
+        graph = DiagramBuilder::build(composite, DiagramOverview::options(composite, {}));
+        result.overview = true;
+        layout = SiteDiagram::layout(graph);
+    }
     result.elements = int(graph.nodes.size());
-    const LayoutResult layout = InProcessLayout::layout(graph);
     if (!layout.ok) {
         result.error =
             layout.error.isEmpty() ? tr("The diagram could not be laid out.") : layout.error;

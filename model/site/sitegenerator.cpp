@@ -13,6 +13,8 @@
 #include <QFileInfo>
 #include <QSaveFile>
 #include <QSet>
+#include <QThread>
+#include <QtConcurrent/QtConcurrentMap>
 
 #include <mutex>
 
@@ -88,14 +90,29 @@ QList<SiteFile> SiteGenerator::files(const Recovery &recovery, const Project &pr
     out << SiteFile{QStringLiteral("assets/site.css"), resource(QStringLiteral("site.css"))};
     out << SiteFile{QStringLiteral("assets/site.js"), resource(QStringLiteral("site.js"))};
     out << IndexPage::searchIndex(model);
-    for (qsizetype i = 0; i < pages.size(); ++i) {
-        out << pages[i]();
-        if (progress && !progress(int(i + 1), int(pages.size()))) {
-            if (canceled)
-                *canceled = true;
-            return {};
+    // Each page is a pure function of the model: they are made on the thread pool (the
+    // layouts run in helper processes side by side), in their fixed order.
+    const QFuture<SiteFile> made =
+        QtConcurrent::mapped(pages, [](const std::function<SiteFile()> &page) { return page(); });
+    const int total = int(pages.size());
+    int reported = -1;
+    while (!made.isFinished()) {
+        const int done = made.progressValue();
+        if (progress && done != reported) {
+            reported = done;
+            if (!progress(done, total)) {
+                QFuture<SiteFile>(made).cancel();
+                QFuture<SiteFile>(made).waitForFinished();
+                if (canceled)
+                    *canceled = true;
+                return {};
+            }
         }
+        QThread::msleep(20);
     }
+    if (progress)
+        progress(total, total);
+    out.append(made.results());
     std::sort(out.begin(), out.end(),
               [](const SiteFile &a, const SiteFile &b) { return a.path < b.path; });
     return out;

@@ -120,6 +120,24 @@
     apply();
   }
 
+  // A diagram wider than the page is shown whole; a button shows it at its actual size.
+  Array.prototype.forEach.call(document.querySelectorAll('figure.diagram-wrap'), function (figure) {
+    var svg = figure.querySelector('svg.diagram');
+    var caption = figure.querySelector('figcaption');
+    var scroll = figure.querySelector('.scroll');
+    if (!svg || !caption || !scroll || svg.width.baseVal.value <= scroll.clientWidth) return;
+    var button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'zoom';
+    button.textContent = 'Actual size';
+    button.setAttribute('aria-pressed', 'false');
+    button.addEventListener('click', function () {
+      var actual = figure.classList.toggle('actual');
+      button.setAttribute('aria-pressed', actual ? 'true' : 'false');
+    });
+    caption.appendChild(button);
+  });
+
   // A printed page shows what its folded sections hold.
   window.addEventListener('beforeprint', function () {
     Array.prototype.forEach.call(document.querySelectorAll('details'), function (d) { d.open = true; });

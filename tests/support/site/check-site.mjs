@@ -44,9 +44,14 @@ for (let i = 0; i < files.length; i += 400) {
   const r = spawnSync(java, ['-jar', vnuJar, '--errors-only', '--format', 'json', ...batch],
     { encoding: 'utf8', maxBuffer: 256 * 1024 * 1024 });
   report.vnuChecked += batch.length;
+  if (r.error || r.status === null) {
+    report.vnu.push(`vnu could not run: ${r.error || r.signal}`);
+    continue;
+  }
   try {
     for (const m of JSON.parse(r.stderr || '{"messages":[]}').messages)
       report.vnu.push(`${path.relative(siteRoot, fileURLToPath(m.url || pathToFileURL(siteRoot).href))}:${m.lastLine}: ${m.message}`);
+    if (r.status !== 0 && !report.vnu.length) report.vnu.push(`vnu failed (exit ${r.status}) without a message`);
   } catch (e) {
     report.vnu.push(`vnu did not report JSON (exit ${r.status}): ${(r.stderr || '').slice(0, 500)}`);
   }
