@@ -244,11 +244,15 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
                             [&](const CppBinding &b) { return holdsTheNodeName(b, c); }))
                 return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), text, QString()};
             for (const CppBinding &b : bindings) {
-                if (b.value.kind == CppValue::Kind::Parameter && b.value.parameter.isEmpty() &&
-                    b.fn) // a name built at run time, decided when its parts are
-                    return resolve(b.value,
-                                   CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
-                                   depth + 1);
+                if (b.value.kind == CppValue::Kind::Parameter && b.value.parameter.isEmpty()) {
+                    // a name built at run time, decided when its parts are
+                    const CppResolvedName r =
+                        b.fn ? resolve(b.value,
+                                       CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
+                                       depth + 1)
+                             : CppResolvedName();
+                    return r.origin == NameOrigin::Expression ? expression : r;
+                }
                 if (b.value.kind == CppValue::Kind::Parameter) {
                     const QString def = parameterDefault(b.value.parameter, ctx, depth + 1);
                     return {NameOrigin::Parameter, def.isNull() ? text : def, text,
