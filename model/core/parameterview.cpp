@@ -71,10 +71,14 @@ QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
             expanded.append(d);
             continue;
         }
-        for (const QString &item : list->value.mid(1, list->value.size() - 2).split(u',')) {
+        for (QString item : list->value.mid(1, list->value.size() - 2).split(u',')) {
+            item = item.trimmed();
+            if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
+                item.back() == item.front()) // `['a', 'b']`: the items, not their quotes
+                item = item.mid(1, item.size() - 2);
             ParameterDeclaration one = d;
-            one.name.replace(m.capturedStart(), m.capturedLength(), item.trimmed());
-            if (!item.trimmed().isEmpty())
+            one.name.replace(m.capturedStart(), m.capturedLength(), item);
+            if (!item.isEmpty())
                 expanded.append(one);
         }
     }
