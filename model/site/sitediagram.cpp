@@ -156,7 +156,8 @@ QString nodeSvg(const LayoutNode &n, const QRectF &r,
         out +=
             QStringLiteral("<rect x=\"%1\" y=\"%2\" width=\"%3\" height=\"%3\"/>")
                 .arg(num(a.x() - kPortSquare / 2), num(a.y() - kPortSquare / 2), num(kPortSquare));
-        const double width = r.width() / 2 - kPortInset;
+        // As the GUI elides it: the row's whole width, for a node has few ports on both sides.
+        const double width = r.width() - 2 * kPortInset;
         out += QStringLiteral("<text class=\"%1\" x=\"%2\" y=\"%3\">%4</text>")
                    .arg(port.input ? QLatin1String("in") : QLatin1String("out"),
                         num(port.input ? a.x() + kPortInset : a.x() - kPortInset), num(a.y() + 3.5),

@@ -245,6 +245,33 @@ private slots:
                  "a file the site did not write was removed");
     }
 
+    void projectMarksShowOnTheFindingsPage()
+    {
+        QList<Diagnostic> all = m_recovery.nodes.diagnostics + m_recovery.launch.diagnostics +
+                                m_recovery.architecture.diagnostics;
+        QVERIFY(all.size() >= 2);
+        Project project;
+        FindingMark accepted;
+        accepted.key = all[0].key();
+        accepted.status = FindingMark::Status::Accepted;
+        accepted.reason = QStringLiteral("the planner <waits> for it");
+        FindingMark hidden;
+        hidden.key = all[1].key();
+        hidden.status = FindingMark::Status::Hidden;
+        project.findings = {accepted, hidden};
+        const QMap<QString, QByteArray> files = byPath(SiteGenerator::files(
+            m_recovery, project, options(m_dir.filePath(QStringLiteral("site")))));
+        const QString page = QString::fromUtf8(files.value(QStringLiteral("findings.html")));
+        QVERIFY(page.contains(QLatin1String("1 accepted and 1 hidden in the project")));
+        QCOMPARE(page.count(QLatin1String(" data-mark=\"accepted\"")), 1);
+        QCOMPARE(page.count(QLatin1String(" data-mark=\"hidden\"")), 1);
+        QVERIFY(page.contains(QLatin1String("the planner &lt;waits&gt; for it")));
+        // Every kind of finding on the page is explained.
+        for (const Diagnostic &d : all)
+            QVERIFY2(page.contains(QStringLiteral("<section id=\"kind-%1\"").arg(d.code)),
+                     qPrintable(d.code));
+    }
+
     void emptyModelStillMakesASite()
     {
         const QList<SiteFile> files =
