@@ -1,5 +1,6 @@
 #include "correctedmodel.h"
 #include "acceptedmodel.h"
+#include "classifiercorrections.h"
 #include "composearchitecture.h"
 #include "subsystemgrouping.h"
 
@@ -276,9 +277,22 @@ private:
     void addConnection(const Correction &c)
     {
         const QList<NodeInstance *> list = instances(c.target);
-        for (NodeInstance *n : list)
-            n->addedPorts.append(
-                newPort(c, QStringLiteral("%1_%2").arg(c.id, portIdPrefix(c.portKind))));
+        // The name is the system's, as the person saw it; the instance's copies in the launch
+        // files' own classifiers take it relative to the instance, so that it is the same
+        // channel there (ClassifierCorrections).
+        const auto isCopy = [this](const NodeInstance *n) {
+            const QList<NodeInstance> &copies = m_model->launch.classifierNodes;
+            return !copies.isEmpty() && n >= copies.constData() &&
+                   n < copies.constData() + copies.size();
+        };
+        const auto system = std::find_if(list.cbegin(), list.cend(),
+                                         [&](const NodeInstance *n) { return !isCopy(n); });
+        for (NodeInstance *n : list) {
+            Port p = newPort(c, QStringLiteral("%1_%2").arg(c.id, portIdPrefix(c.portKind)));
+            if (isCopy(n) && system != list.cend())
+                p.name = ClassifierCorrections::relativeTo(p.name, (*system)->nameSpace);
+            n->addedPorts.append(p);
+        }
         if (!list.isEmpty())
             m_composeAgain = true;
     }
@@ -461,9 +475,12 @@ CorrectedRecovery CorrectedModel::apply(const Recovery &recovered, const Project
     for (const Correction &c : project.corrections)
         corrector.apply(c);
     corrector.markReviewed();
-    if (composeAgain || corrector.composeAgain() || !corrector.reviewed().isEmpty())
+    if (composeAgain || corrector.composeAgain() || !corrector.reviewed().isEmpty()) {
         model.architecture =
             composeArchitecture(model.nodes, model.launch, {}, corrector.renamedChannels());
+        ClassifierCorrections::rename(&model.architecture, model.nodes, model.launch,
+                                      corrector.renamedChannels(), corrector.keys());
+    }
     QList<SubsystemGroup> groups = accepted.groupings;
     // a grouping a person made is bound to this model's ids (a removed member is gone)
     for (const SubsystemGroup &g : corrector.groups())
