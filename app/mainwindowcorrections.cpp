@@ -58,9 +58,10 @@ void MainWindow::createCorrectionController()
     connect(m_correctionController, &CorrectionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
     connect(m_document, &Document::changed, this, [this](const DocumentChange &change) {
-        // a new correction is listed where a person can see and revert it
+        // a new correction is listed where a person can see and revert it; the views stay
+        // where the person is (showing its element would move them)
         if (change.has(DocumentChange::Corrections) && m_document->correction(change.id))
-            m_correctionPanel->selectCorrection(change.id);
+            m_correctionPanel->listCorrection(change.id);
     });
 }
 

@@ -4,6 +4,7 @@
 #include <QAction>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScopedValueRollback>
 #include <QTableView>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -76,7 +77,7 @@ void CorrectionPanel::setModel(CorrectionModel *model)
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex &current) {
                 updateActions();
-                if (current.isValid())
+                if (current.isValid() && !m_listing)
                     Q_EMIT correctionActivated(current.data(CorrectionModel::IdRole).toString());
             });
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
@@ -115,6 +116,15 @@ bool CorrectionPanel::selectCorrection(const QString &id)
         return false;
     m_table->selectionModel()->setCurrentIndex(
         m_model->index(row, 0), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    return true;
+}
+
+bool CorrectionPanel::listCorrection(const QString &id)
+{
+    const QScopedValueRollback listing(m_listing, true);
+    if (!selectCorrection(id))
+        return false;
+    m_table->scrollTo(m_table->currentIndex());
     return true;
 }
 

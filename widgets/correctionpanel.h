@@ -28,8 +28,12 @@ public:
     QStringList selectedIds() const;
     /// The current correction's id ("" for none).
     QString currentId() const;
-    /// Makes correction `id` current; false when it is not listed.
+    /// Makes correction `id` current, which shows its element (correctionActivated); false when
+    /// it is not listed.
     bool selectCorrection(const QString &id);
+    /// Makes correction `id` current without showing its element: a correction just made is
+    /// listed where a person can see and revert it, while the views stay where the person is.
+    bool listCorrection(const QString &id);
 
 Q_SIGNALS:
     /// A correction became current: show its element.
@@ -44,6 +48,7 @@ private:
     void updatePlaceholder();
 
     CorrectionModel *m_model = nullptr;
+    bool m_listing = false; ///< listCorrection() makes a row current: nothing is shown
     QTableView *m_table;
     QLabel *m_placeholder;
     QAction *m_remove;
