@@ -125,7 +125,8 @@ void AtomicNodeModel::onCorrectionsChanged()
     for (int i = 0; sameShape && i < next.nodes.size(); ++i)
         sameShape = next.nodes[i].ports.size() == m_nodes.nodes[i].ports.size();
     if (!sameShape) {
-        // an added port appeared or went: the rows change, the current row is kept by place
+        // an added port appeared or went: the rows change; the panel finds its current row
+        // again by stable key (FilteredTreePanel)
         setProperty("rosarch.keepsCurrent", true);
         beginResetModel();
         m_nodes = std::move(next);
@@ -180,6 +181,32 @@ QString AtomicNodeModel::elementId(const QModelIndex &index) const
     if (const AtomicNode *n = node(index))
         return n->id;
     return {};
+}
+
+QString AtomicNodeModel::stableKey(const QModelIndex &index) const
+{
+    if (kind(index) == ItemKind::Package && !index.parent().isValid())
+        return StableKeys::packageKey(m_packages.value(index.row()).name);
+    const QString id = elementId(index);
+    if (id.isEmpty())
+        return {};
+    const QString key = m_document->keysReady() ? m_document->keyOf(id) : QString();
+    return key.isEmpty() ? QStringLiteral("id:") + id : key;
+}
+
+QModelIndex AtomicNodeModel::indexOfStableKey(const QString &key) const
+{
+    if (StableKeys::family(key) == QLatin1String("package"))
+        return packageIndex(key.section(u':', 1));
+    QString id;
+    if (key.startsWith(QLatin1String("id:")))
+        id = key.mid(3);
+    else if (m_document->keysReady())
+        id = m_document->recoveredKeys().idOf(key);
+    if (id.isEmpty())
+        return {};
+    return id.contains(u'/') ? portIndex(id.section(u'/', 0, 0), id.section(u'/', 1))
+                             : nodeIndex(id);
 }
 
 void AtomicNodeModel::rebuild(bool merge)

@@ -70,6 +70,11 @@ public:
     QString elementId(const QModelIndex &index) const;
     /// Where the row's element comes from (invalid for rows without evidence).
     Evidence evidence(const QModelIndex &index) const;
+    /// The stable key of a row (blueprint §5): its package's, class's or port's key; "id:" and
+    /// the element id for what has none (a port a correction added, keys still being made).
+    QString stableKey(const QModelIndex &index) const;
+    /// The row stableKey() gave `key` (invalid when there is none now).
+    QModelIndex indexOfStableKey(const QString &key) const;
 
     QModelIndex packageIndex(const QString &name, int column = 0) const;
     QModelIndex nodeIndex(const QString &nodeId, int column = 0) const;

@@ -44,6 +44,16 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
     updatePlaceholder();
 }
 
+QString AtomicNodePanel::stableKeyOf(const QModelIndex &sourceIndex) const
+{
+    return m_model ? m_model->stableKey(sourceIndex) : QString();
+}
+
+QModelIndex AtomicNodePanel::sourceIndexOfKey(const QString &key) const
+{
+    return m_model ? m_model->indexOfStableKey(key) : QModelIndex();
+}
+
 // Besides editing, a port made through helpers offers each step from the node to the call
 // that creates it, so the source view can walk the chain.
 void AtomicNodePanel::showContextMenu(const QPoint &at)

@@ -33,6 +33,10 @@ Q_SIGNALS:
     /// F2 on a port: rename it (a correction).
     void renameRequested(const QModelIndex &sourceIndex);
 
+protected:
+    QString stableKeyOf(const QModelIndex &sourceIndex) const override;
+    QModelIndex sourceIndexOfKey(const QString &key) const override;
+
 private:
     void onModelReset();
     void showContextMenu(const QPoint &at);

@@ -7,6 +7,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
+#include <QScopedValueRollback>
+#include <QScrollBar>
 #include <QTimer>
 #include <QTreeView>
 #include <QVBoxLayout>
@@ -48,31 +50,20 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     m_tree->setFrameShape(QFrame::NoFrame);
     connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) {
-                Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
+                if (!m_restoring)
+                    Q_EMIT currentSourceIndexChanged(m_proxy->mapToSource(current));
             });
 
     // A model that reshapes its rows for a small edit (a correction) and sets the property
-    // "rosarch.keepsCurrent" during the reset keeps the current row by place (rows from the
-    // root down), so that the person stays where they were.
+    // "rosarch.keepsCurrent" during the reset keeps the person where they were: the current
+    // row, found again by its stable key, and the scrolled place; the filter stays as typed.
     connect(m_proxy, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
         rememberExpanded();
-        m_keptRows.clear();
-        if (!m_proxy->sourceModel() ||
-            !m_proxy->sourceModel()->property("rosarch.keepsCurrent").toBool())
-            return;
-        for (QModelIndex i = currentSourceIndex(); i.isValid(); i = i.parent())
-            m_keptRows.prepend(i.row());
+        keepCurrent();
     });
     connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
         restoreExpanded();
-        if (m_keptRows.isEmpty())
-            return;
-        QModelIndex i;
-        for (int row : std::as_const(m_keptRows))
-            i = m_proxy->sourceModel()->index(row, 0, i);
-        m_keptRows.clear();
-        if (i.isValid())
-            selectSourceIndex(i);
+        restoreCurrent();
     });
 
     m_layout->setContentsMargins(0, 0, 0, 0);
@@ -158,6 +149,75 @@ void FilteredTreePanel::expandToMatches()
 bool FilteredTreePanel::isExpandable(const QModelIndex &) const
 {
     return true;
+}
+
+QString FilteredTreePanel::stableKeyOf(const QModelIndex &) const
+{
+    return {};
+}
+
+QModelIndex FilteredTreePanel::sourceIndexOfKey(const QString &) const
+{
+    return {};
+}
+
+void FilteredTreePanel::keepCurrent()
+{
+    m_kept = {};
+    const QAbstractItemModel *source = m_proxy->sourceModel();
+    const QModelIndex current = currentSourceIndex();
+    if (!source || !source->property("rosarch.keepsCurrent").toBool() || !current.isValid())
+        return;
+    m_kept.valid = true;
+    m_kept.key = stableKeyOf(current);
+    if (m_kept.key.isEmpty())
+        for (QModelIndex i = current.siblingAtColumn(0); i.isValid(); i = i.parent())
+            m_kept.names.prepend(i.data().toString());
+    m_kept.scroll = m_tree->verticalScrollBar()->value();
+}
+
+void FilteredTreePanel::restoreCurrent()
+{
+    if (!m_kept.valid)
+        return;
+    const Kept kept = std::exchange(m_kept, {});
+    const QModelIndex source =
+        kept.key.isEmpty() ? sourceIndexOfNames(kept.names) : sourceIndexOfKey(kept.key);
+    // Not selectSourceIndex(): the filter a person typed stays, even if the row no longer
+    // passes it.
+    const QModelIndex proxyIndex = m_proxy->mapFromSource(source.siblingAtColumn(0));
+    if (!proxyIndex.isValid()) { // gone (an addition undone) or filtered out
+        Q_EMIT currentSourceIndexChanged({});
+        return;
+    }
+    for (QModelIndex p = proxyIndex.parent(); p.isValid(); p = p.parent())
+        m_tree->expand(p);
+    {
+        // the same element as before the reset: nothing to tell the other views
+        const QScopedValueRollback restoring(m_restoring, true);
+        m_tree->selectionModel()->setCurrentIndex(proxyIndex, QItemSelectionModel::ClearAndSelect |
+                                                                  QItemSelectionModel::Rows);
+    }
+    m_tree->doItemsLayout(); // the scroll range of the rows shown again
+    m_tree->verticalScrollBar()->setValue(kept.scroll);
+}
+
+QModelIndex FilteredTreePanel::sourceIndexOfNames(const QStringList &names) const
+{
+    const QAbstractItemModel *source = m_proxy->sourceModel();
+    QModelIndex at;
+    for (const QString &name : names) {
+        QModelIndex next;
+        for (int row = 0, rows = source ? source->rowCount(at) : 0; row < rows; ++row)
+            if (const QModelIndex i = source->index(row, 0, at); i.data().toString() == name) {
+                next = i;
+                break;
+            }
+        if (!next.isValid())
+            return {};
+        at = next;
+    }
+    return at;
 }
 
 void FilteredTreePanel::expandAllRows()

@@ -55,6 +55,12 @@ protected:
     void expandTop();
     /// Whether expanding opens `proxyIndex` (a launch tree's "Parameters" row does not).
     virtual bool isExpandable(const QModelIndex &proxyIndex) const;
+    /// The stable key of a row of the source model (blueprint §5), by which the current row is
+    /// found again when a correction reshapes the rows; "" when the row has none (it is then
+    /// found by the names on the way to it).
+    virtual QString stableKeyOf(const QModelIndex &sourceIndex) const;
+    /// The row of the source model stableKeyOf() gave `key`; invalid when there is none now.
+    virtual QModelIndex sourceIndexOfKey(const QString &key) const;
 
     static constexpr int kExpandBudget = 400;
 
@@ -81,7 +87,19 @@ private:
     void rememberExpanded();
     void restoreExpanded();
 
-    QList<int> m_keptRows;    ///< the current row's place, kept across a reshaping reset
+    /// The current row and the scrolled place, kept across a reshaping reset.
+    struct Kept
+    {
+        bool valid = false;
+        QString key;       ///< stableKeyOf() the current row
+        QStringList names; ///< without a key: the names from the root down to it
+        int scroll = 0;
+    };
+    Kept m_kept;
+    bool m_restoring = false; ///< the kept row is made current again: not a change to announce
+    void keepCurrent();
+    void restoreCurrent();
+    QModelIndex sourceIndexOfNames(const QStringList &names) const;
     QSet<QString> m_expanded; ///< the expanded rows by key, kept across a reset
     /// Keys typed while filtering is slow wait for a pause in typing, so that each key shows at
     /// once; on a small tree the filter follows every key.

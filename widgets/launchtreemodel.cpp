@@ -98,7 +98,8 @@ void LaunchTreeModel::onCorrectionsChanged()
                 Q_EMIT dataChanged(indexOfItem(i, 0), indexOfItem(i, ColumnCount - 1));
         return;
     }
-    // a part was added or its addition undone: the rows change, the current row is kept by place
+    // a part was added or its addition undone: the rows change; the panel finds its current
+    // row again by stable key (FilteredTreePanel)
     setProperty("rosarch.keepsCurrent", true);
     beginResetModel();
     m_launch = next;
@@ -111,6 +112,35 @@ bool LaunchTreeModel::isRemoved(const QModelIndex &index) const
 {
     const NodeInstance *n = node(index);
     return n && m_removed.contains(n->id);
+}
+
+QString LaunchTreeModel::stableKey(const QModelIndex &index) const
+{
+    QString id;
+    if (kind(index) == ItemKind::Node) {
+        if (const NodeInstance *n = node(index))
+            id = n->id;
+    } else if (kind(index) == ItemKind::LaunchFile) {
+        if (const LaunchFileInstance *lf = launchFile(index))
+            id = lf->id;
+    }
+    if (id.isEmpty())
+        return {};
+    const QString key = m_document->keysReady() ? m_document->keyOf(id) : QString();
+    return key.isEmpty() ? QStringLiteral("id:") + id : key;
+}
+
+QModelIndex LaunchTreeModel::indexOfStableKey(const QString &key) const
+{
+    QString id;
+    if (key.startsWith(QLatin1String("id:")))
+        id = key.mid(3);
+    else if (m_document->keysReady())
+        id = m_document->recoveredKeys().idOf(key);
+    if (id.isEmpty())
+        return {};
+    const QModelIndex node = nodeIndex(id);
+    return node.isValid() ? node : launchFileIndex(id);
 }
 
 QString LaunchTreeModel::correctionSummary(const QString &id) const

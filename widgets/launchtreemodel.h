@@ -66,6 +66,12 @@ public:
     Evidence evidence(const QModelIndex &index) const;
     /// True for a node instance a correction removed (shown struck out).
     bool isRemoved(const QModelIndex &index) const;
+    /// The stable key of a node or launch-file row (blueprint §5): its instance's key; "id:" and
+    /// the instance id for what has none (a part a correction added, keys still being made);
+    /// "" for other rows.
+    QString stableKey(const QModelIndex &index) const;
+    /// The row stableKey() gave `key` (invalid when there is none now).
+    QModelIndex indexOfStableKey(const QString &key) const;
     /// The corrections of an element by id ("n3", "lf2"), one line each ("" for none).
     QString correctionSummary(const QString &id) const;
     /// Whether the row's condition and those of all its ancestors hold.

@@ -85,6 +85,16 @@ bool LaunchTreePanel::isExpandable(const QModelIndex &proxyIndex) const
            int(LaunchTreeModel::ItemKind::Parameters);
 }
 
+QString LaunchTreePanel::stableKeyOf(const QModelIndex &sourceIndex) const
+{
+    return m_model ? m_model->stableKey(sourceIndex) : QString();
+}
+
+QModelIndex LaunchTreePanel::sourceIndexOfKey(const QString &key) const
+{
+    return m_model ? m_model->indexOfStableKey(key) : QModelIndex();
+}
+
 void LaunchTreePanel::onModelReset()
 {
     const StallScope scope("LaunchTreePanel::onModelReset");

@@ -32,6 +32,8 @@ Q_SIGNALS:
 protected:
     /// Not the nodes' "Parameters" rows: a navigation stack has ten thousands.
     bool isExpandable(const QModelIndex &proxyIndex) const override;
+    QString stableKeyOf(const QModelIndex &sourceIndex) const override;
+    QModelIndex sourceIndexOfKey(const QString &key) const override;
 
 private:
     void onModelReset();
