@@ -2,6 +2,7 @@
 #include "diagrambreadcrumbbar.h"
 #include "diagramlayouter.h"
 #include "diagramminimap.h"
+#include "diagramnodeitem.h"
 #include "diagramrootpicker.h"
 #include "diagramrootprompt.h"
 #include "diagramscene.h"
@@ -31,6 +32,55 @@ QAction *toggle(QToolBar *bar, const QString &text, const QString &toolTip)
     a->setToolTip(toolTip);
     return a;
 }
+} // namespace
+
+namespace {
+
+/// Where a person looks in the diagram: the element they look at (the selection when in
+/// sight, else the box nearest the middle of the view) and where it is in the view, or the
+/// point in the middle when there is no such element.
+struct ViewAnchor
+{
+    QString key;
+    QPointF offset; ///< from the middle of the view to the element's corner (scene units)
+    QPointF centre; ///< the middle of the view (scene coordinates)
+
+    static ViewAnchor of(const DiagramScene &scene, const QGraphicsView &view,
+                         const QStringList &selected)
+    {
+        ViewAnchor a;
+        const QRectF shown = view.mapToScene(view.viewport()->rect()).boundingRect();
+        a.centre = shown.center();
+        for (const QString &key : selected)
+            if (const DiagramItem *item = scene.item(key);
+                item && shown.intersects(item->sceneBoundingRect())) {
+                a.key = key;
+                a.offset = item->sceneBoundingRect().topLeft() - a.centre;
+                return a;
+            }
+        qreal nearest = -1;
+        for (QGraphicsItem *item : scene.items(shown)) {
+            const auto *box = dynamic_cast<const DiagramNodeItem *>(item);
+            if (!box)
+                continue;
+            const QPointF corner = box->sceneBoundingRect().topLeft();
+            const qreal distance = (corner - a.centre).manhattanLength();
+            if (nearest < 0 || distance < nearest) {
+                nearest = distance;
+                a.key = box->key();
+                a.offset = corner - a.centre;
+            }
+        }
+        return a;
+    }
+
+    void restore(const DiagramScene &scene, QGraphicsView *view) const
+    {
+        const DiagramItem *item = key.isEmpty() ? nullptr : scene.item(key);
+        view->centerOn(item ? item->sceneBoundingRect().topLeft() - offset : centre);
+    }
+};
+
 } // namespace
 
 DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
@@ -289,6 +339,13 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
     }
     m_lastLayoutMs = result.elapsedMs;
     showMessage({});
+    // The composite shown drawn again (after a correction, a decision, an undo): the person's
+    // place stays: the zoom (the view's transform), what is selected, and where the element
+    // they look at is in the view, even when the new layout moved it. Clearing the scene would
+    // otherwise scroll the view to its start.
+    const bool redrawn = !fit && !m_scene->sceneRect().isEmpty();
+    const QStringList selected = selectedKeys();
+    const ViewAnchor anchor = redrawn ? ViewAnchor::of(*m_scene, *m_view, selected) : ViewAnchor();
     m_scene->setDiagram(graph, result.geometry, visibleText(c->stem), DiagramText::frameDetail(*c));
     m_scene->setToolTips(DiagramText::toolTips(*c));
     m_scene->setMarks(m_marks);
@@ -296,6 +353,11 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
     if (fit) {
         m_view->fitDiagram();
         m_fitPending = false;
+    } else if (redrawn) {
+        anchor.restore(*m_scene, m_view);
+        for (const QString &key : selected)
+            if (DiagramItem *item = m_scene->item(key))
+                item->setSelected(true);
     }
     m_overviewAction->setEnabled(true);
     m_expandAllAction->setEnabled(isCollapsed());
