@@ -1,0 +1,328 @@
+// Corrections keep the person's place: after a correction, a decision on a suggestion, an undo
+// or a redo, the main window shows what it showed before: the filters typed over the node list
+// and the launch tree, the current rows (found again by stable key when the rows change under
+// them), the composed diagram's zoom, scrolled place and selection, and the source pane's file,
+// cursor and scrolled line. On the example workspace, driven as a person drives the window.
+#include "atomicnodemodel.h"
+#include "atomicnodepanel.h"
+#include "correctioncontroller.h"
+#include "correctiondialog.h"
+#include "diagramitem.h"
+#include "diagrampanel.h"
+#include "diagramscene.h"
+#include "diagramview.h"
+#include "diagramwait.h"
+#include "document.h"
+#include "launchtreemodel.h"
+#include "launchtreepanel.h"
+#include "mainwindow.h"
+#include "nodefilterproxymodel.h"
+#include "screenshot.h"
+#include "sourceview.h"
+#include "suggestionengine.h"
+#include "testsupport.h"
+
+#include <Qsci/qsciscintilla.h>
+
+#include <QLineEdit>
+#include <QScrollBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTreeView>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace rosarch;
+using EKind = CorrectionController::Element::Kind;
+
+namespace {
+
+/// What a person sees of their place in the window.
+struct Place
+{
+    QString nodeFilter;
+    QString launchFilter;
+    QString nodeRow;   ///< the node list's current element ("arc_3/p1") and its stable key
+    QString launchRow; ///< the launch tree's current instance and its stable key
+    int nodeScroll = 0;
+    QString composite;
+    qreal zoom = 0;
+    QPoint selectedAt; ///< where the selected element's corner is in the view
+    /// The diagram's scroll bars at an end: a new layout may leave no room to keep the
+    /// element where it was in that direction.
+    bool atEndX = false;
+    bool atEndY = false;
+    QStringList diagramSelection;
+    QString sourceFile;
+    int cursorLine = -1;
+    int cursorIndex = -1;
+    int firstLine = -1;
+
+    QString text() const
+    {
+        return QStringLiteral("filters '%1' '%2'; rows %3 | %4 (scrolled %5); diagram %6 at %7, "
+                              "selected %10 at (%8, %9) in the view; source %11:%12:%13 from %14")
+            .arg(nodeFilter, launchFilter, nodeRow, launchRow)
+            .arg(nodeScroll)
+            .arg(composite)
+            .arg(zoom)
+            .arg(selectedAt.x())
+            .arg(selectedAt.y())
+            .arg(diagramSelection.join(u','), sourceFile)
+            .arg(cursorLine)
+            .arg(cursorIndex)
+            .arg(firstLine);
+    }
+    /// The same place: the element in the view may move by the rounding of the scroll bars.
+    bool same(const Place &o) const
+    {
+        return nodeFilter == o.nodeFilter && launchFilter == o.launchFilter &&
+               nodeRow == o.nodeRow && launchRow == o.launchRow && nodeScroll == o.nodeScroll &&
+               composite == o.composite && qFuzzyCompare(zoom, o.zoom) &&
+               (std::abs(selectedAt.x() - o.selectedAt.x()) <= 1 || atEndX) &&
+               (std::abs(selectedAt.y() - o.selectedAt.y()) <= 1 || atEndY) &&
+               diagramSelection == o.diagramSelection && sourceFile == o.sourceFile &&
+               cursorLine == o.cursorLine && cursorIndex == o.cursorIndex &&
+               firstLine == o.firstLine;
+    }
+};
+
+} // namespace
+
+class TestContextKept : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    MainWindow *m_window = nullptr;
+
+    Document *doc() const { return m_window->document(); }
+    DiagramPanel *diagram() const { return m_window->diagramPanel(); }
+
+    Place place() const
+    {
+        Place p;
+        p.nodeFilter = m_window->nodePanel()->filterEdit()->text();
+        p.launchFilter = m_window->launchPanel()->filterEdit()->text();
+        const QModelIndex node = m_window->nodePanel()->currentSourceIndex();
+        p.nodeRow =
+            m_window->nodeModel()->elementId(node) + u' ' + m_window->nodeModel()->stableKey(node);
+        const QModelIndex launch = m_window->launchPanel()->currentSourceIndex();
+        p.launchRow = launch.data(LaunchTreeModel::InstanceIdRole).toString() + u' ' +
+                      m_window->launchModel()->stableKey(launch);
+        p.nodeScroll = m_window->nodePanel()->treeView()->verticalScrollBar()->value();
+        p.composite = diagram()->currentComposite();
+        DiagramView *view = diagram()->view();
+        p.zoom = view->zoom();
+        p.diagramSelection = diagram()->selectedKeys();
+        const auto atEnd = [](const QScrollBar *bar) {
+            return bar->value() == bar->minimum() || bar->value() == bar->maximum();
+        };
+        p.atEndX = atEnd(view->horizontalScrollBar());
+        p.atEndY = atEnd(view->verticalScrollBar());
+        if (!p.diagramSelection.isEmpty())
+            if (const DiagramItem *item = diagram()->scene()->item(p.diagramSelection.first()))
+                p.selectedAt = view->mapFromScene(item->sceneBoundingRect().topLeft());
+        const SourceView *source = m_window->sourceView();
+        p.sourceFile = source->currentFile();
+        source->editor()->getCursorPosition(&p.cursorLine, &p.cursorIndex);
+        p.firstLine = source->editor()->firstVisibleLine();
+        return p;
+    }
+
+    /// Runs `step` (a correction, an undo, ...) and waits until the diagram is drawn again.
+    template <typename F> void redrawnAfter(F &&step)
+    {
+        QVERIFY(test::laidOut(*diagram(), std::forward<F>(step)));
+        QCoreApplication::processEvents();
+    }
+
+    /// `step`, then its undo and redo: the place is the same after each.
+    template <typename F> void keptThrough(const QString &what, F &&step)
+    {
+        const Place before = place();
+        const int count = doc()->undoStack()->count();
+        redrawnAfter(step);
+        QCOMPARE(doc()->undoStack()->count(), count + 1); // it did change the model
+        QVERIFY2(place().same(before),
+                 qPrintable(what + QStringLiteral(":\n  before ") + before.text() +
+                            QStringLiteral("\n  after  ") + place().text()));
+        redrawnAfter([this] { doc()->undoStack()->undo(); });
+        QVERIFY2(place().same(before),
+                 qPrintable(what + QStringLiteral(", undone:\n  before ") + before.text() +
+                            QStringLiteral("\n  after  ") + place().text()));
+        redrawnAfter([this] { doc()->undoStack()->redo(); });
+        QVERIFY2(place().same(before),
+                 qPrintable(what + QStringLiteral(", redone:\n  before ") + before.text() +
+                            QStringLiteral("\n  after  ") + place().text()));
+    }
+
+    QString instanceNamed(const QString &name) const
+    {
+        for (const NodeInstance &n : doc()->accepted().launch.nodes)
+            if (n.nodeName == name)
+                return n.id;
+        return {};
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings(QStringLiteral("rosarch"), QCoreApplication::applicationName()).clear();
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+        qputenv("ROSARCH_AUTHOR", "tester");
+        QVERIFY(m_dir.isValid());
+        const QString ws = m_dir.filePath(QStringLiteral("ws"));
+        test::copyTree(QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                           .filePath(QStringLiteral("resources/example_ws")),
+                       ws);
+        m_window = new MainWindow;
+        m_window->resize(1600, 1000);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window->openWorkspace(ws);
+        QTRY_VERIFY_WITH_TIMEOUT(!doc()->architecture().composites.isEmpty(), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
+        QTRY_VERIFY(doc()->keysReady());
+        m_window->corrections()->setDialogHandler([](CorrectionDialog &d) {
+            const QString title = d.windowTitle();
+            if (title == QLatin1String("Add Connection")) {
+                d.setPortKind(PortKind::Subscriber);
+                d.setName(QStringLiteral("/robot1/mission_status"));
+                d.setType(QStringLiteral("robot_interfaces/msg/MissionStatus"));
+            } else if (title == QLatin1String("Add Port")) {
+                d.setPortKind(PortKind::Publisher);
+                d.setName(QStringLiteral("heartbeat"));
+                d.setType(QStringLiteral("std_msgs/msg/Empty"));
+            } else if (title == QLatin1String("Add Part")) {
+                if (!d.setChoice(QStringLiteral(
+                        "class:robot_mission|robot_mission.mode_manager.ModeManager")))
+                    return false;
+                d.setName(QStringLiteral("spare_modes"));
+            } else if (title == QLatin1String("Rename")) {
+                d.setName(d.name() + QStringLiteral("_renamed"));
+            }
+            d.setReason(QStringLiteral("a test"));
+            return true;
+        });
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void aPersonFindsTheirPlace()
+    {
+        // Types a filter in both trees, picks the navigator in the launch tree (the node list
+        // follows with its class), then one of its ports in the node list (the source shows
+        // its line), scrolls the source, and zooms and scrolls the diagram.
+        QTest::keyClicks(m_window->launchPanel()->filterEdit(), QStringLiteral("nav"));
+        QTest::keyClicks(m_window->nodePanel()->filterEdit(), QStringLiteral("nav"));
+        QTest::qWait(400); // the launch tree waits for a pause in typing on a slow filter
+        const QString navigator = instanceNamed(QStringLiteral("navigator"));
+        QVERIFY(!navigator.isEmpty());
+        QTreeView *launchTree = m_window->launchPanel()->treeView();
+        const QModelIndex launchRow = m_window->launchPanel()->proxyModel()->mapFromSource(
+            m_window->launchModel()->nodeIndex(navigator));
+        QVERIFY2(launchRow.isValid(), "the filter shows the navigator");
+        redrawnAfter([&] { launchTree->setCurrentIndex(launchRow); });
+        const QString classId = doc()->launchDependencies().node(navigator)->classId;
+        QCOMPARE(m_window->nodePanel()->currentSourceIndex(),
+                 m_window->nodeModel()->nodeIndex(classId));
+        const QModelIndex port =
+            m_window->nodeModel()->index(1, 0, m_window->nodeModel()->nodeIndex(classId));
+        QVERIFY(port.isValid());
+        m_window->nodePanel()->treeView()->setCurrentIndex(
+            m_window->nodePanel()->proxyModel()->mapFromSource(port));
+        QVERIFY(m_window->sourceView()->currentFile().endsWith(QLatin1String("navigator.cpp")));
+        m_window->sourceView()->editor()->setFirstVisibleLine(3);
+
+        DiagramView *view = diagram()->view();
+        view->setZoom(1.6);
+        view->horizontalScrollBar()->setValue(
+            (view->horizontalScrollBar()->minimum() + view->horizontalScrollBar()->maximum()) / 2);
+        view->verticalScrollBar()->setValue(
+            (view->verticalScrollBar()->minimum() + view->verticalScrollBar()->maximum()) / 3);
+        QVERIFY2(view->horizontalScrollBar()->maximum() > 0, "the diagram is scrolled");
+        QVERIFY(!diagram()->selectedKeys().isEmpty()); // the navigator, from the launch tree
+        test::saveScreenshot(*m_window, QStringLiteral("context-before.png"));
+        const Place p = place();
+        QCOMPARE(p.nodeFilter, QStringLiteral("nav"));
+        QCOMPARE(p.launchFilter, QStringLiteral("nav"));
+        QVERIFY(p.nodeRow.contains(QLatin1String("port:")));
+        QVERIFY(p.launchRow.contains(QLatin1String("instance:")));
+        QVERIFY(p.firstLine == 3 && p.cursorLine > 0);
+    }
+
+    void aConnectionKeepsThePlace()
+    {
+        keptThrough(QStringLiteral("Add Connection"), [this] {
+            QVERIFY(m_window->corrections()->addConnection(
+                {EKind::Instance, instanceNamed(QStringLiteral("navigator")), {}, {}}));
+        });
+        // the connection was made, in the diagram shown too
+        bool wired = false;
+        for (const Channel &ch :
+             doc()->accepted().architecture.composite(QStringLiteral("lf1"))->channels)
+            wired = wired || ch.name == QLatin1String("/robot1/mission_status");
+        QVERIFY(wired);
+    }
+
+    void aRenameKeepsThePlace()
+    {
+        keptThrough(QStringLiteral("Rename"), [this] {
+            QVERIFY(m_window->corrections()->rename(
+                {EKind::Instance, instanceNamed(QStringLiteral("mode_manager")), {}, {}}));
+        });
+    }
+
+    void anAddedPortReshapesTheNodeListAndKeepsThePlace()
+    {
+        // The node list's rows change under the current port row.
+        const QString classId =
+            doc()->launchDependencies().node(instanceNamed(QStringLiteral("navigator")))->classId;
+        keptThrough(QStringLiteral("Add Port"), [&] {
+            QVERIFY(m_window->corrections()->addPort({EKind::Class, classId, {}, {}}));
+        });
+        QVERIFY(m_window->nodeModel()->rowCount(m_window->nodeModel()->nodeIndex(classId)) > 0);
+    }
+
+    void anAddedPartReshapesTheLaunchTreeAndKeepsThePlace()
+    {
+        QString mission;
+        for (const LaunchFileInstance &lf : doc()->accepted().launch.instances)
+            if (lf.file.endsWith(QLatin1String("mission.launch.yaml")))
+                mission = lf.id;
+        QVERIFY(!mission.isEmpty());
+        keptThrough(QStringLiteral("Add Part"), [&] {
+            QVERIFY(m_window->corrections()->addPart({EKind::LaunchFile, mission, {}, {}}));
+        });
+    }
+
+    void aDecisionOnASuggestionKeepsThePlace()
+    {
+        doc()->setSuggestions(SuggestionEngine(doc()->workspaceRoot(), doc()->recovered(),
+                                               SuggestionEngine::Options())
+                                  .run());
+        QCoreApplication::processEvents();
+        QString description, grouping;
+        for (const Suggestion &s : doc()->suggestions()) {
+            if (s.kind == Suggestion::Kind::NodeDescription && description.isEmpty())
+                description = s.id;
+            if (s.kind == Suggestion::Kind::SubsystemGrouping && grouping.isEmpty())
+                grouping = s.id;
+        }
+        QVERIFY(!description.isEmpty() && !grouping.isEmpty());
+        keptThrough(QStringLiteral("Accept a description"),
+                    [&] { QVERIFY(doc()->acceptSuggestion(description)); });
+        keptThrough(QStringLiteral("Accept a grouping"),
+                    [&] { QVERIFY(doc()->acceptSuggestion(grouping)); });
+        keptThrough(QStringLiteral("Reject a description"),
+                    [&] { QVERIFY(doc()->rejectSuggestion(description)); });
+        test::saveScreenshot(*m_window, QStringLiteral("context-after.png"));
+    }
+};
+
+QTEST_MAIN(TestContextKept)
+#include "tst_contextkept.moc"
