@@ -212,11 +212,36 @@ private:
         return out + QStringLiteral("</details>\n");
     }
 
+    /// A plugin runs inside the node instances that load it by their parameters.
+    QString loaders() const
+    {
+        QList<QStringList> rows;
+        for (const SitePortUse &use : m_model.loadersOf(m_node.id)) {
+            QStringList names;
+            for (const ParameterSetting &p : use.instance->plugins)
+                if (p.value == m_node.qualifiedName)
+                    names << code(p.name) + u' ' + SiteHtml::source(m_context, m_path, p.evidence);
+            const SiteSystem *system = m_model.system(use.system);
+            rows << QStringList{
+                link(m_path, m_model.partPage(*use.part), SiteModel::qualifiedName(*use.part)),
+                names.join(QStringLiteral("<br>")),
+                link(m_path, m_model.systemPage(use.system),
+                     system ? system->root.stem : use.system)};
+        }
+        if (rows.isEmpty())
+            return QStringLiteral("<p>%1</p>\n")
+                .arg(escape(tr("No node instance of the workspace's systems loads this plugin.")));
+        return SiteHtml::table(tr("Node instances that load %1").arg(m_node.className),
+                               {tr("Node"), tr("Loaded as"), tr("System")}, rows);
+    }
+
     QString instances() const
     {
         QString out = QStringLiteral(
                           "<section aria-labelledby=\"instances\">\n<h2 id=\"instances\">%1</h2>\n")
                           .arg(tr("Where it is launched"));
+        if (m_node.isPlugin())
+            return out + loaders() + QStringLiteral("</section>\n");
         const QList<SitePortUse> uses = m_model.instancesOf(m_node.id);
         if (uses.isEmpty())
             return out + QStringLiteral("<p>%1</p>\n</section>\n")

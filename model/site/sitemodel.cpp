@@ -159,6 +159,10 @@ void SiteModel::indexSystems()
     for (const Composite &c : architecture.composites)
         if (!c.parentId.isEmpty())
             children[c.parentId] << &c;
+    QHash<QString, QString> pluginIds; // by qualified class name, as parameters name them
+    for (const AtomicNode &n : m_recovery.nodes.nodes)
+        if (n.isPlugin() && !pluginIds.contains(n.qualifiedName))
+            pluginIds.insert(n.qualifiedName, n.id);
     for (const LaunchRoot &root : RootChoice::roots(architecture, m_recovery.launch)) {
         const Composite *top = architecture.composite(root.instanceId);
         if (!top)
@@ -184,6 +188,11 @@ void SiteModel::indexSystems()
                 const QString classId = use.instance ? use.instance->classId : part.typeId;
                 if (!classId.isEmpty())
                     m_instances[classId] << use;
+                // A pluginlib plugin is where the instances that load it are.
+                if (use.instance)
+                    for (const ParameterSetting &plugin : use.instance->plugins)
+                        if (const QString id = pluginIds.value(plugin.value); !id.isEmpty())
+                            m_loaders[id] << use;
             }
         }
         for (const QString &file : std::as_const(files))
@@ -196,8 +205,16 @@ void SiteModel::indexSystems()
     }
     std::sort(m_systems.begin(), m_systems.end(),
               [](const SiteSystem &a, const SiteSystem &b) { return a.title() < b.title(); });
-    for (auto it = m_instances.begin(); it != m_instances.end(); ++it)
-        std::sort(it->begin(), it->end(), useLess);
+    for (auto *index : {&m_instances, &m_loaders})
+        for (auto it = index->begin(); it != index->end(); ++it) {
+            std::sort(it->begin(), it->end(), useLess);
+            // one entry per instance, however many names load the plugin
+            it->erase(std::unique(it->begin(), it->end(),
+                                  [](const SitePortUse &a, const SitePortUse &b) {
+                                      return a.part == b.part;
+                                  }),
+                      it->end());
+        }
     for (auto it = m_launchSystems.begin(); it != m_launchSystems.end(); ++it)
         std::sort(it->begin(), it->end());
 }
@@ -266,6 +283,11 @@ void SiteModel::assignPages()
 QList<SitePortUse> SiteModel::instancesOf(const QString &classId) const
 {
     return m_instances.value(classId);
+}
+
+QList<SitePortUse> SiteModel::loadersOf(const QString &pluginId) const
+{
+    return m_loaders.value(pluginId);
 }
 
 QStringList SiteModel::systemsWith(const QString &path) const

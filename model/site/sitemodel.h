@@ -63,6 +63,8 @@ public:
 
     /// The uses of node class `classId` (an ARC id) in the systems.
     QList<SitePortUse> instancesOf(const QString &classId) const;
+    /// The node instances in the systems that load pluginlib plugin `pluginId` (an ARC id).
+    QList<SitePortUse> loadersOf(const QString &pluginId) const;
     /// The systems whose launch tree holds the launch file at `path`.
     QStringList systemsWith(const QString &path) const;
     /// The package whose folder holds the workspace-relative `file` ("" when none).
@@ -101,6 +103,7 @@ private:
     QMap<QString, SiteChannel> m_channels;
     QList<Diagnostic> m_findings;
     QMap<QString, QList<SitePortUse>> m_instances; ///< by class id
+    QMap<QString, QList<SitePortUse>> m_loaders;   ///< by plugin id
     QMap<QString, QStringList> m_launchSystems;    ///< launch file -> system root ids
     QMap<QString, QString> m_nodePages, m_channelPages, m_launchPages, m_systemPages,
         m_packagePages;

@@ -59,10 +59,13 @@ private:
         out += QStringLiteral("</p>\n<ul class=\"facts\">");
         out += QStringLiteral("<li><strong>%1</strong> %2</li>")
                    .arg(m_system.nodes.size())
-                   .arg(escape(tr("node instances")));
-        out += QStringLiteral("<li><strong>%1</strong> %2</li>")
-                   .arg(m_system.composites.size())
-                   .arg(escape(tr("launch files (with includes)")));
+                   .arg(escape(m_system.nodes.size() == 1 ? tr("node instance")
+                                                          : tr("node instances")));
+        out +=
+            QStringLiteral("<li><strong>%1</strong> %2</li>")
+                .arg(m_system.composites.size())
+                .arg(escape(m_system.composites.size() == 1 ? tr("launch file")
+                                                            : tr("launch files (with includes)")));
         out += QStringLiteral("<li><strong>%1</strong> %2</li>")
                    .arg(m_system.channels.size())
                    .arg(escape(tr("topics, services and actions")));
@@ -71,7 +74,7 @@ private:
                        m_path, QStringLiteral("findings.html?system=") +
                                    QString::fromLatin1(QUrl::toPercentEncoding(m_system.title())))))
                    .arg(m_system.findings)
-                   .arg(escape(tr("findings")));
+                   .arg(escape(m_system.findings == 1 ? tr("finding") : tr("findings")));
         return out;
     }
 

@@ -272,6 +272,22 @@ private slots:
                      qPrintable(d.code));
     }
 
+    void pluginPagesListWhoLoadsThem()
+    {
+        const QString ws = test::dataDir(QStringLiteral("cpp_plugins/ws"));
+        const Recovery r = recoverWorkspace(ws);
+        SiteOptions o = options(m_dir.filePath(QStringLiteral("plugins")));
+        o.workspace = ws;
+        const QMap<QString, QByteArray> files = byPath(SiteGenerator::files(r, {}, o));
+        const QString page = QString::fromUtf8(
+            files.value(QStringLiteral("nodes/rover_nav_plugins.PathFollower.html")));
+        QVERIFY2(page.contains(
+                     QLatin1String("<caption>Node instances that load PathFollower</caption>")),
+                 qPrintable(page.left(3000)));
+        QVERIFY(page.contains(QLatin1String("<code>FollowPath</code>")));
+        QVERIFY(page.contains(QLatin1String("href=\"../systems/navigation.html\"")));
+    }
+
     void emptyModelStillMakesASite()
     {
         const QList<SiteFile> files =
