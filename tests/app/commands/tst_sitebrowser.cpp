@@ -148,6 +148,13 @@ private Q_SLOTS:
             click.value(QLatin1String("landed")).toString().startsWith(QLatin1String("nodes/")),
             qPrintable(QJsonDocument(click).toJson()));
         QVERIFY(!click.value(QLatin1String("heading")).toString().isEmpty());
+        // The keyboard reaches the diagram's links, and Enter follows one off the page.
+        const QJsonObject keyboard = report.value(QLatin1String("keyboard")).toObject();
+        QVERIFY2(keyboard.value(QLatin1String("reached")).toBool(),
+                 qPrintable(QJsonDocument(keyboard).toJson()));
+        QVERIFY2(keyboard.value(QLatin1String("landed")).toString() !=
+                     click.value(QLatin1String("from")).toString(),
+                 qPrintable(QJsonDocument(keyboard).toJson()));
         // Validity and accessibility.
         QVERIFY(report.value(QLatin1String("vnuChecked")).toInt() ==
                 report.value(QLatin1String("pages")).toInt());

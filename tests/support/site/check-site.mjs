@@ -21,7 +21,7 @@ const [site, shots, chromium, vnuJar, java, ...terms] = process.argv.slice(2);
 const siteRoot = path.resolve(site);
 const report = {
   pages: 0, links: 0, brokenLinks: [], sourceLinks: 0, brokenSourceLinks: [],
-  search: [], diagramClick: null, axe: [], vnu: [], vnuChecked: 0, screenshots: [],
+  search: [], diagramClick: null, keyboard: null, axe: [], vnu: [], vnuChecked: 0, screenshots: [],
 };
 fs.mkdirSync(shots, { recursive: true });
 
@@ -144,6 +144,25 @@ if (systems.length) {
   } else {
     report.diagramClick = { from: path.relative(siteRoot, systems[0]), href: '', landed: '', heading: '' };
   }
+}
+
+// Keyboard: Tab from the top of the system page reaches a link of its diagram; Enter follows it.
+if (systems.length) {
+  await page.goto(pathToFileURL(systems[0]).href, { waitUntil: 'load' });
+  const keyboard = { reached: false, presses: 0, landed: '' };
+  while (keyboard.presses < 100 && !keyboard.reached) {
+    await page.keyboard.press('Tab');
+    keyboard.presses++;
+    keyboard.reached = await page.evaluate(() =>
+      !!(document.activeElement && document.activeElement.closest('svg.diagram a')));
+  }
+  if (keyboard.reached) {
+    await Promise.all([page.waitForNavigation({ waitUntil: 'load', timeout: 5000 }).catch(() => {}),
+      page.keyboard.press('Enter')]);
+    const url = new URL(page.url());
+    keyboard.landed = path.relative(siteRoot, fileURLToPath(url.href.split('#')[0])) + url.hash;
+  }
+  report.keyboard = keyboard;
 }
 
 // Screenshots a person looks at: laptop, phone, dark scheme, print.
