@@ -313,6 +313,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
                                                : QStringLiteral("?");
         }
         if (pp.resolved) {
+            base = RosNames::withParentNamespace(base, instance.nameSpace);
             int used = -1;
             pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);
             pp.remapped = used >= 0;
@@ -371,6 +372,13 @@ QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &
                                       const NodeInstance &instance, const NodeInstance *container)
 {
     QList<PartPort> out;
+    // The plugin's own ports only: what corrections and interface models add to the instance,
+    // and the ports its constructors name, belong to the node, once (ids would also collide).
+    NodeInstance host = instance;
+    host.addedPorts.clear();
+    host.modelledPorts.clear();
+    host.constructedPorts.clear();
+    host.removedPorts.clear();
     for (const ParameterSetting &plugin : instance.plugins) {
         QString written = plugin.value.trimmed();
         written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
@@ -380,11 +388,14 @@ QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &
         if (!cls)
             continue;
         AtomicNode loaded = *cls; // the plugin under the name it is loaded by
-        for (Port &p : loaded.ports)
+        for (Port &p : loaded.ports) {
             p.name.replace(QLatin1String(kPluginNamePlaceholder), plugin.name);
-        for (PartPort pp : resolvePorts(loaded, instance, container)) {
+            p.parameter.replace(QLatin1String(kPluginNamePlaceholder), plugin.name);
+        }
+        for (PartPort pp : resolvePorts(loaded, host, container)) {
             pp.id = QStringLiteral("%1_%2").arg(plugin.name, pp.id);
-            out.append(pp);
+            if (!instance.removedPorts.contains(pp.id))
+                out.append(pp);
         }
     }
     return out;

@@ -1,5 +1,6 @@
 #include "rosnames.h"
 
+#include <algorithm>
 #include <optional>
 
 #include <QRegularExpression>
@@ -17,6 +18,20 @@ QString trimmedNamespace(QString ns)
     return ns;
 }
 } // namespace
+
+QString withParentNamespace(const QString &name, const QString &nodeNamespace)
+{
+    const QString prefix = QLatin1String(kParentNamespacePlaceholder) + QLatin1Char('/');
+    if (!name.startsWith(prefix))
+        return name;
+    const QString rest = name.mid(prefix.size());
+    if (rest.startsWith(u'/'))
+        return rest;
+    QString ns = nodeNamespace;
+    while (ns.endsWith(u'/'))
+        ns.chop(1);
+    return ns.left(std::max<qsizetype>(0, ns.lastIndexOf(u'/'))) + QLatin1Char('/') + rest;
+}
 
 QString scopeRelative(const QString &name)
 {

@@ -14,6 +14,13 @@ inline constexpr char kClassifierScope[] = "/__rosarch_file_scope__";
 /// other names unchanged.
 QString scopeRelative(const QString &name);
 
+/// A name that code joins to the parent of its node's namespace (navigation2's costmap layers,
+/// `joinWithParentNamespace(topic)`): `{parent_namespace}/topic` until the instance is known.
+inline constexpr char kParentNamespacePlaceholder[] = "{parent_namespace}";
+/// `{parent_namespace}/map` in node namespace `/robot/global_costmap`: `/robot/map`; an absolute
+/// name after the placeholder stays itself; any other name is returned as it is.
+QString withParentNamespace(const QString &name, const QString &nodeNamespace);
+
 /// The fully qualified node name: "/ns/node" ("/node" at the root).
 QString fullyQualified(const QString &nameSpace, const QString &nodeName);
 

@@ -365,6 +365,10 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
         const QString name = m_tree.text(left);
         auto it = m_locals.find(name);
         if (it != m_locals.end()) {
+            if (plain && joinsItself(value, name)) { // the value so far, joined
+                it->parentJoined = true;
+                return;
+            }
             it->setValue(value, plain ? inLoopHead(value, {assignment}) : inLoopHead(value, {}));
             return;
         }
@@ -376,7 +380,7 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
             return;
         }
         if (m_member)
-            m_function.memberBindings.append({name, m_values.evaluate(value)});
+            addMemberBinding(name, value, plain && joinsItself(value, name));
     } else if (ts::is(left, "field_expression") &&
                ts::is(ts::field(left, fields().argument), "this")) {
         m_function.memberBindings.append(
@@ -407,6 +411,39 @@ void CppFunctionExtractor::onNew(TSNode expression)
         return;
     }
     addInstantiation(type, args, expression);
+}
+
+// `topic = joinWithParentNamespace(topic)`: a name joined to the parent namespace in place.
+bool CppFunctionExtractor::joinsItself(TSNode value, const QString &name) const
+{
+    if (!ts::is(value, "call_expression"))
+        return false;
+    const CallShape shape = callShape(m_tree, ts::field(value, fields().function));
+    const auto args = arguments(ts::field(value, fields().arguments));
+    return shape.name == QLatin1String(kJoinWithParentNamespace) && args.size() == 1 &&
+           ts::is(args.front(), "identifier") && m_tree.text(args.front()) == name;
+}
+
+// A member's value in this function. A join of the member to the parent namespace replaces the
+// value this function gave it before; joined to a value given elsewhere, it is not decided.
+void CppFunctionExtractor::addMemberBinding(const QString &name, TSNode value, bool joinsItself)
+{
+    if (!joinsItself) {
+        m_function.memberBindings.append({name, m_values.evaluate(value)});
+        return;
+    }
+    auto &bindings = m_function.memberBindings;
+    for (auto it = bindings.end(); it != bindings.begin();) {
+        --it;
+        if (it->member == name) {
+            it->value = joinedWithParentNamespace(it->value);
+            return;
+        }
+    }
+    CppValue undecided;
+    undecided.kind = CppValue::Kind::Expression;
+    undecided.text = m_tree.text(value);
+    bindings.append({name, undecided});
 }
 
 } // namespace rosarch

@@ -46,6 +46,8 @@ private:
     bool inLoopHead(TSNode value, std::initializer_list<TSNode> near) const;
     void onDeclaration(TSNode declaration);
     void onAssignment(TSNode assignment);
+    bool joinsItself(TSNode value, const QString &name) const;
+    void addMemberBinding(const QString &name, TSNode value, bool joinsItself);
     void onCall(TSNode call);
     void onNew(TSNode expression);
     void onParameterCall(TSNode call, const cppsyntax::CallShape &shape,

@@ -169,7 +169,11 @@ CppResolvedName CppNameResolver::resolveBuiltParameter(const CppValue &value,
     const bool literal = name.origin == NameOrigin::Literal;
     const bool perItem = name.origin == NameOrigin::Parameter && name.parameter.startsWith(u'{') &&
                          name.parameter.endsWith(u'}') && name.name.contains(name.parameter);
-    if ((!literal && !perItem) || name.name.isEmpty())
+    // `name_ + "." + "map_topic"` in a plugin: the name it is loaded by fills it per instance
+    const bool perPlugin = name.origin == NameOrigin::Member &&
+                           name.name.contains(QLatin1String(kPluginNamePlaceholder)) &&
+                           !name.name.contains(QLatin1String(kNodeNamePlaceholder));
+    if ((!literal && !perItem && !perPlugin) || name.name.isEmpty())
         return {NameOrigin::Expression, value.text, value.text, QString()};
     CppResolvedName def;
     if (value.parts.size() > 1)
@@ -243,6 +247,15 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
             if (std::all_of(bindings.cbegin(), bindings.cend(),
                             [&](const CppBinding &b) { return holdsTheNodeName(b, c); }))
                 return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), text, QString()};
+            // `map_topic_ = joinWithParentNamespace(map_topic_)`: the value passes through a
+            // function that is not followed, so no earlier value is the name.
+            const QRegularExpression self(
+                QStringLiteral("\\b%1\\b").arg(QRegularExpression::escape(member)));
+            if (std::any_of(bindings.cbegin(), bindings.cend(), [&](const CppBinding &b) {
+                    return b.value.kind == CppValue::Kind::Expression &&
+                           b.value.text.contains(self);
+                }))
+                return expression;
             for (const CppBinding &b : bindings) {
                 if (b.value.kind == CppValue::Kind::Parameter && b.value.parameter.isEmpty()) {
                     // a name built at run time, decided when its parts are

@@ -1,5 +1,7 @@
 #include "cppvalueevaluator.h"
 
+#include "rosnames.h"
+
 #include "cpppreprocessor.h"
 
 #include <QRegularExpression>
@@ -303,6 +305,14 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
 
 CppValue CppValueEvaluator::evaluateIdentifier(const QString &name, int depth) const
 {
+    const auto local = m_locals.constFind(name);
+    if (local != m_locals.constEnd() && local->parentJoined)
+        return joinedWithParentNamespace(evaluateBoundIdentifier(name, depth));
+    return evaluateBoundIdentifier(name, depth);
+}
+
+CppValue CppValueEvaluator::evaluateBoundIdentifier(const QString &name, int depth) const
+{
     CppValue v;
     v.text = name;
     v.variable = name;
@@ -408,6 +418,26 @@ CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
 // `x.c_str()` is x, `std::format("{}/{}", a, b)` / `fmt::format(...)` join the pieces and
 // arguments; a node's `resolve_topic_or_service_name(x, …)` is x, and image_transport's
 // `getCameraInfoTopic(x)` is x's sibling `camera_info`. None when the call is none of them.
+CppValue joinedWithParentNamespace(CppValue inner)
+{
+    // A message's field (`msg->filter_mask_topic`) is what another node sends at run time.
+    if (inner.kind == CppValue::Kind::Expression || inner.kind == CppValue::Kind::None ||
+        inner.kind == CppValue::Kind::Field) {
+        inner.kind = CppValue::Kind::Expression;
+        return inner;
+    }
+    CppValue prefix;
+    prefix.kind = CppValue::Kind::Literal;
+    prefix.literal = QLatin1String(RosNames::kParentNamespacePlaceholder) + QLatin1Char('/');
+    prefix.text = QStringLiteral("\"%1\"").arg(prefix.literal);
+    CppValue joined;
+    joined.kind = CppValue::Kind::Concatenation;
+    joined.text = QStringLiteral("%1(%2)").arg(QLatin1String(kJoinWithParentNamespace), inner.text);
+    joined.parts.push_back(prefix);
+    joined.parts.push_back(std::move(inner));
+    return joined;
+}
+
 CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
                                                const std::vector<TSNode> &args, int depth) const
 {
@@ -425,6 +455,10 @@ CppValue CppValueEvaluator::evaluateStringCall(const CallShape &shape,
             inner.kind = CppValue::Kind::Expression;
         return inner;
     }
+    // navigation2's costmap layers: a relative name joined to the parent of the node's
+    // namespace, which the instance decides.
+    if (shape.name == QLatin1String(kJoinWithParentNamespace) && args.size() == 1)
+        return joinedWithParentNamespace(evaluate(args.front(), depth + 1));
     if (shape.name == QLatin1String("c_str") && !ts::isNull(shape.receiver) && args.empty())
         return evaluate(shape.receiver, depth + 1);
     // `node_base->resolve_topic_or_service_name("depth/image_rect", false)`: the name expanded

@@ -27,6 +27,8 @@ struct CppLocal
     int outIndex = -1;
     /// A range-for variable: `value` is the container it walks, each element in turn.
     bool element = false;
+    /// `topic = joinWithParentNamespace(topic)`: `value` joined to the parent namespace.
+    bool parentJoined = false;
 
     void setValue(TSNode v);
     /// With `loopInitial` known (CppFunctionExtractor finds it from the path it walked).
@@ -36,6 +38,12 @@ struct CppLocal
         loopInitial = isLoopInitial;
     }
 };
+
+/// navigation2's `Layer::joinWithParentNamespace(topic)`.
+inline constexpr char kJoinWithParentNamespace[] = "joinWithParentNamespace";
+
+/// `inner` joined to the parent of the node's namespace (RosNames::withParentNamespace).
+CppValue joinedWithParentNamespace(CppValue inner);
 
 /// What an expression refers to, seen from inside its function: a literal, a local holding
 /// one, a declared parameter, a member, a function parameter, the node itself.
@@ -58,6 +66,8 @@ public:
     static constexpr int kMaxDepth = 24;
 
 private:
+    /// What `name` holds as last bound, without a join the code applies to it afterwards.
+    CppValue evaluateBoundIdentifier(const QString &name, int depth) const;
     CppValue evaluateField(TSNode fieldExpression, int depth) const;
     CppValue evaluateStringCall(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args,
                                 int depth) const;

@@ -300,6 +300,51 @@ private Q_SLOTS:
         QCOMPARE(ports.at(0).name, QStringLiteral("/speed_limit"));
     }
 
+    // A plugin's ports are its own: a port added to the instance by a correction, or given by
+    // an interface model, belongs to the node once, not once more per loaded plugin.
+    void pluginPortsAreThePluginsOwn()
+    {
+        AtomicNode follower;
+        follower.qualifiedName = QStringLiteral("nav::Follower");
+        Port speed = test::gui::port(QStringLiteral("s1"), PortKind::Subscriber,
+                                     QStringLiteral("speed_limit"),
+                                     QStringLiteral("std_msgs/msg/Float64"), QString(), {});
+        speed.nameOrigin = NameOrigin::Parameter;
+        speed.parameter = QStringLiteral("{plugin}.speed_topic");
+        speed.parameterPrefix = QStringLiteral("{parent_namespace}/");
+        speed.name = QStringLiteral("{parent_namespace}/speed_limit");
+        follower.ports = {speed};
+        const QHash<QString, const AtomicNode *> plugins{{follower.qualifiedName, &follower}};
+
+        NodeInstance server;
+        server.nodeName = QStringLiteral("follow_server");
+        server.nameSpace = QStringLiteral("/robot/control");
+        server.plugins = {{QStringLiteral("Fast"), QStringLiteral("nav::Follower"), {}, {}, {}},
+                          {QStringLiteral("Slow"), QStringLiteral("nav/Follower"), {}, {}, {}}};
+        server.effectiveParameters = {{QStringLiteral("Slow.speed_topic"),
+                                       QStringLiteral("crawl"),
+                                       QStringLiteral("file"),
+                                       {},
+                                       {}}};
+        server.addedPorts = {test::gui::port(QStringLiteral("c1_p"), PortKind::Publisher,
+                                             QStringLiteral("heartbeat"),
+                                             QStringLiteral("std_msgs/msg/Empty"), QString(), {})};
+        server.removedPorts = {QStringLiteral("Fast_missing")};
+        const QList<PartPort> ports = Composer::pluginPorts(plugins, server, nullptr);
+        QStringList ids, names;
+        for (const PartPort &p : ports) {
+            ids << p.id;
+            names << p.name;
+        }
+        QCOMPARE(ids, (QStringList{QStringLiteral("Fast_s1"), QStringLiteral("Slow_s1")}));
+        // joined one namespace above the node's own; the instance's value where it sets one
+        QCOMPARE(names, (QStringList{QStringLiteral("/robot/speed_limit"),
+                                     QStringLiteral("/robot/crawl")}));
+
+        server.removedPorts = {QStringLiteral("Slow_s1")}; // a correction removed it
+        QCOMPARE(Composer::pluginPorts(plugins, server, nullptr).size(), 1);
+    }
+
     void resolvesPortsPerInstance()
     {
         const RosNodePart *camera = partNamed(*m_front, QStringLiteral("front_camera"));
