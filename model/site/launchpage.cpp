@@ -1,4 +1,5 @@
 #include "launchpage.h"
+#include "rosnames.h"
 #include "sitediagram.h"
 
 #include <QCoreApplication>
@@ -153,14 +154,34 @@ private:
             out += section(QStringLiteral("groups"), tr("Namespaces and groups"));
             out += QStringLiteral("<ul>");
             for (auto it = m_instance->namespaces.cbegin(); it != m_instance->namespaces.cend();
-                 ++it)
+                 ++it) {
+                QStringList members;
+                for (const QString &id : *it)
+                    members << member(id);
+                members.removeAll(QString());
                 out += QStringLiteral("<li>%1: %2</li>")
-                           .arg(code(it.key().isEmpty() ? QStringLiteral("/") : it.key()))
-                           .arg(escape(QCoreApplication::translate(
-                               "rosarch::LaunchPage", "%n elements", nullptr, int(it->size()))));
+                           .arg(RosNames::scopeRelative(it.key()).isEmpty() || it.key() == u'/'
+                                    ? escape(tr("the file's own scope"))
+                                    : code(RosNames::scopeRelative(it.key())),
+                                members.join(QStringLiteral(", ")));
+            }
             out += QStringLiteral("</ul>\n</section>\n");
         }
         return out;
+    }
+
+    /// A node or an include inside a namespace scope, linked to its page.
+    QString member(const QString &id) const
+    {
+        for (const NodeInstance &n : *m_nodes)
+            if (n.id == id)
+                return link(m_path, m_model.nodePage(n.classId),
+                            n.nodeName.isEmpty() ? n.execName : n.nodeName);
+        for (const LaunchFileInstance &lf : *m_instances)
+            if (lf.id == id)
+                return lf.external ? code(lf.type)
+                                   : link(m_path, m_model.launchPage(lf.file), lf.type);
+        return {};
     }
 
     QString nodes() const
@@ -173,7 +194,9 @@ private:
                         const QString ns =
                             n.nameSpace == QLatin1String("/") ? QString() : n.nameSpace;
                         rows << QStringList{
-                            code(ns + u'/' + (n.nodeName.isEmpty() ? n.execName : n.nodeName)),
+                            // relative to the file's own scope, as its diagram writes it
+                            code(RosNames::scopeRelative(
+                                ns + u'/' + (n.nodeName.isEmpty() ? n.execName : n.nodeName))),
                             code(n.package + u'/' + n.execName),
                             link(m_path, m_model.nodePage(n.classId), n.className),
                             n.condition.isEmpty() ? QString() : code(n.condition),

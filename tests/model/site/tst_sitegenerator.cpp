@@ -102,6 +102,14 @@ private slots:
             model.launchPage(QStringLiteral("src/robot_bringup/launch/sensing.launch.py"))));
         QVERIFY2(sensing.contains(QLatin1String("<g class=\"part\"><a href=\"../nodes/")),
                  "the sensing diagram's parts do not link to node pages");
+        // The scope a launch file is analysed in on its own is the analysis's, not a name.
+        for (auto it = files.cbegin(); it != files.cend(); ++it)
+            QVERIFY2(!it->contains("__rosarch_file_scope__"), qPrintable(it.key()));
+        const QString navigation = QString::fromUtf8(files.value(
+            model.launchPage(QStringLiteral("src/robot_bringup/launch/navigation.launch.xml"))));
+        QVERIFY(navigation.contains(
+            QLatin1String("<li><code>monitoring</code>: <a "
+                          "href=\"../nodes/robot_mission.BatteryMonitor.html\">")));
         // The search index names nodes, topics and launch files with their pages.
         const QString index =
             QString::fromUtf8(files.value(QStringLiteral("assets/search-index.js")));
