@@ -109,8 +109,10 @@ private:
             return out + QStringLiteral("<p class=\"note\">%1</p>\n").arg(escape(d.error));
         if (d.overview)
             out += QStringLiteral("<p class=\"note\">%1</p>\n")
-                       .arg(escape(tr("Too big to read in one drawing: each namespace is one "
-                                      "box, which leads to its nodes in the table below.")));
+                       .arg(escape(tr("Too big to read in one drawing, so drawn as an overview: "
+                                      "each namespace as one box (it leads to its nodes in the "
+                                      "table below), parts without their port rows, the "
+                                      "boundary ports as one box per side.")));
         out += QStringLiteral("<figure class=\"diagram-wrap\">\n<div class=\"scroll\" "
                               "tabindex=\"0\" role=\"region\" aria-label=\"%1\">\n")
                    .arg(escape(tr("%1, scrollable").arg(c.stem)));
