@@ -92,6 +92,22 @@ void expandElements(const Port &p, const NodeInstance &instance, QList<Port> *ou
         } else {
             one.parameter.replace(pattern, item); // `scan.topic`, looked up as any other
         }
+        // Built per item only where the item passes the test (`{sources}.type == "scan"`);
+        // an item the instance does not type keeps the port, undecided.
+        if (one.guardParameter.contains(pattern)) {
+            one.guardParameter.replace(pattern, item);
+            bool typed = false;
+            QString value = parameterValue(instance, one.guardParameter, &typed);
+            if (!typed && !one.guardDefault.isEmpty()) { // the declared default decides
+                value = one.guardDefault;
+                typed = true;
+            }
+            bool known = false;
+            if (!typed)
+                one.guardParameter.clear();
+            else if (!RosNames::evaluateGuard(one.guard, value, &known) && known)
+                continue;
+        }
         out->append(one);
     }
 }

@@ -123,6 +123,7 @@ struct CppInstantiation
     QList<CppValue> arguments;
     QString guard; ///< enclosing `if` conditions, as for a port call (a local construction)
     Evidence evidence;
+    CppValue guardValue = {}; ///< the variable (or parameter read) the guard tests
 };
 
 /// A call of a method on an object the function's class holds, with a string or template

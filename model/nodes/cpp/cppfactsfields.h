@@ -35,7 +35,7 @@ template <class F> void fields(CppPortCall &v, F f)
 }
 template <class F> void fields(CppInstantiation &v, F f)
 {
-    f(v.className, v.member, v.arguments, v.guard, v.evidence);
+    f(v.className, v.member, v.arguments, v.guard, v.evidence, v.guardValue);
 }
 template <class F> void fields(CppMethodCall &v, F f)
 {

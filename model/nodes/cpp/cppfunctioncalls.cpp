@@ -136,8 +136,7 @@ void CppFunctionExtractor::addInstantiation(const QString &className,
     inst.member = member;
     inst.evidence = m_tree.evidence(where);
     if (member.isEmpty() && !className.isEmpty()) {
-        CppValue tested;
-        m_portCalls.guardOf(where, &inst.guard, &tested);
+        m_portCalls.guardOf(where, &inst.guard, &inst.guardValue);
     }
     bool interesting = member.isEmpty() && !className.isEmpty();
     for (TSNode a : args) {

@@ -88,8 +88,22 @@ void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkC
     if (helper < 0 || helper == ctx.cls)
         return;
     QList<Port> found = helperPorts(helper, inst.arguments, templateArguments, ctx, depth + 1);
-    for (Port &p : found) // the chain of call sites, outermost first
+    const QString guardParameter =
+        inst.guard.isEmpty() ? QString() : m_names.guardParameter(inst.guardValue, ctx);
+    // the value the tested parameter has when nothing sets it (a name's default, `"laser"`)
+    const QString guardDefault =
+        guardParameter.isEmpty() ? QString() : m_names.resolve(inst.guardValue, ctx).name;
+    for (Port &p : found) { // the chain of call sites, outermost first
         p.viaEvidence.prepend(inst.evidence);
+        // `if (type == "scan") sources_.push_back(make_shared<Scan>(...))`: a port of the
+        // helper exists where the helper is built, decided per item when the test is.
+        if (p.guard.isEmpty() && !guardParameter.isEmpty()) {
+            p.guard = inst.guard;
+            p.guardParameter = guardParameter;
+            if (guardDefault != guardParameter && !guardDefault.contains(u'{'))
+                p.guardDefault = guardDefault;
+        }
+    }
     *ports += found;
 }
 

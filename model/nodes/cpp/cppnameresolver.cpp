@@ -418,6 +418,10 @@ QString CppNameResolver::parameterDefault(const QString &parameter, const CppLin
 
 QString CppNameResolver::guardParameter(const CppValue &value, const CppLinkContext &ctx) const
 {
+    if (value.kind == CppValue::Kind::Parameter && value.parameter.isEmpty()) {
+        const CppResolvedName r = resolveBuiltParameter(value, ctx, 0); // `{sources}.type`
+        return r.origin == NameOrigin::Parameter ? r.parameter : QString();
+    }
     if (value.kind == CppValue::Kind::Parameter)
         return value.parameter;
     if (value.kind == CppValue::Kind::Member || value.kind == CppValue::Kind::Field) {

@@ -5,7 +5,8 @@
 #include "rclcpp/rclcpp.hpp"
 #include "yard_watch/feed.hpp"
 
-// Listens to every feed named in `feeds`; each feed's topic is a parameter of its own.
+// Listens to every feed named in `feeds`: a laser feed's topic is a parameter of its own, a
+// sonar feed listens to `<name>/range`. `<name>.kind` says which a feed is.
 class SensorHub : public rclcpp::Node
 {
 public:
@@ -15,14 +16,21 @@ public:
     const std::vector<std::string> names =
       declare_parameter<std::vector<std::string>>("feeds", std::vector<std::string>{});
     for (std::string name : names) {
-      auto feed = std::make_shared<yard_watch::Feed>(this, name);
-      feed->start();
-      feeds_.push_back(feed);
+      const std::string kind = declare_parameter(name + ".kind", std::string("laser"));
+      if (kind == "laser") {
+        auto feed = std::make_shared<yard_watch::Feed>(this, name);
+        feed->start();
+        feeds_.push_back(feed);
+      }
+      if (kind == "sonar") {
+        sonars_.push_back(std::make_shared<yard_watch::SonarFeed>(this, name));
+      }
     }
   }
 
 private:
   std::vector<std::shared_ptr<yard_watch::Feed>> feeds_;
+  std::vector<std::shared_ptr<yard_watch::SonarFeed>> sonars_;
 };
 
 int main(int argc, char ** argv)

@@ -9,5 +9,6 @@ def generate_launch_description():
         Node(package='yard_watch', executable='watchdog', name='watchdog',
              parameters=[{'watched_nodes': ['lift', 'belt'], 'zones': ['dock', 'ramp']}]),
         Node(package='yard_watch', executable='sensor_hub', name='sensor_hub',
-             parameters=[{'feeds': ['front', 'rear'], 'rear.topic': 'rear_scan'}]),
+             parameters=[{'feeds': ['front', 'rear', 'bumper'], 'rear.topic': 'rear_scan',
+                          'bumper.kind': 'sonar'}]),
     ])

@@ -4,6 +4,7 @@
 
 #include "rclcpp/rclcpp.hpp"
 #include "sensor_msgs/msg/laser_scan.hpp"
+#include "sensor_msgs/msg/range.hpp"
 
 namespace yard_watch
 {
@@ -33,6 +34,20 @@ protected:
   rclcpp::Node * node_;
   std::string feed_name_;
   rclcpp::Subscription<sensor_msgs::msg::LaserScan>::SharedPtr sub_;
+};
+
+// A sonar of the hub: its ranges arrive on `<feed name>/range`.
+class SonarFeed
+{
+public:
+  SonarFeed(rclcpp::Node * node, const std::string & feed_name)
+  {
+    sub_ = node->create_subscription<sensor_msgs::msg::Range>(
+      feed_name + "/range", 10, [](sensor_msgs::msg::Range::SharedPtr) {});
+  }
+
+private:
+  rclcpp::Subscription<sensor_msgs::msg::Range>::SharedPtr sub_;
 };
 
 }  // namespace yard_watch
