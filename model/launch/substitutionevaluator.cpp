@@ -1,6 +1,6 @@
 #include "substitutionevaluator.h"
 
-#include "pythonexpression.h"
+#include "pythonlauncheval.h"
 #include "valuebudget.h"
 
 #include <algorithm>
@@ -158,11 +158,12 @@ void SubstitutionEvaluator::evaluateOne(const Substitution &s, Result *r, int de
         for (const Substitution &p : s.parts)
             expression += sub(p);
         QString value;
-        bool tooDeep = false;
-        if (PythonExpression::evaluate(expression, &value, &tooDeep)) {
+        const PythonLaunchEval::Outcome outcome = PythonLaunchEval::evaluate(expression, &value);
+        if (outcome == PythonLaunchEval::Outcome::Value) {
             r->value += value;
         } else {
             // Past the nesting bound the expression is said to be so, not only unknown.
+            const bool tooDeep = outcome == PythonLaunchEval::Outcome::TooDeep;
             r->unresolved.append(
                 {tooDeep ? QStringLiteral("eval-too-deep") : QStringLiteral("eval"),
                  expression,
@@ -255,7 +256,7 @@ bool SubstitutionEvaluator::isTrue(const Substitution &s, QList<Unresolved> *unr
 
 bool SubstitutionEvaluator::evaluatePython(const QString &expression, QString *value)
 {
-    return PythonExpression::evaluate(expression, value);
+    return PythonLaunchEval::evaluate(expression, value) == PythonLaunchEval::Outcome::Value;
 }
 
 } // namespace rosarch

@@ -38,8 +38,8 @@ public:
     /// else, or an unresolved expression, counts as true (the best guess) and is reported.
     bool isTrue(const Substitution &s, QList<Unresolved> *unresolved) const;
 
-    /// Evaluates the small Python expressions launch files put in PythonExpression / $(eval)
-    /// (the subset PythonExpression describes). Returns false when the expression is beyond it.
+    /// Evaluates the Python expressions launch files put in PythonExpression / $(eval), as
+    /// PythonLaunchEval does. Returns false when the value is not known exactly.
     static bool evaluatePython(const QString &expression, QString *value);
 
 private:

@@ -3,7 +3,7 @@
 // `$(eval ...)` expressions. The first byte picks one, so one corpus covers them all.
 #include "fuzzsupport.h"
 #include "parameterfile.h"
-#include "pythonexpression.h"
+#include "pythonlauncheval.h"
 #include "pythonlaunchreader.h"
 #include "structuremutator.h"
 #include "xmllaunchreader.h"
@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         break;
     default: {
         QString value;
-        rosarch::PythonExpression::evaluate(QString::fromUtf8(content), &value);
+        rosarch::PythonLaunchEval::evaluate(QString::fromUtf8(content), &value);
         break;
     }
     }

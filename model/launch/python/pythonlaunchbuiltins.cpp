@@ -158,12 +158,23 @@ std::optional<Value> PythonLaunchBuiltins::callBuiltin(const QString &dotted, co
             return Value::unknown(text, evidence);
         if (dotted == QLatin1String("reversed"))
             std::reverse(items.begin(), items.end());
+        // A set iterates in hash order, which for strings changes from run to run.
+        m_ctx.approximate =
+            m_ctx.approximate || (dotted == QLatin1String("set") && items.size() > 1);
         if (dotted == QLatin1String("sorted")) {
-            for (const Value &v : items)
-                if (v.type != T::String)
-                    return m_ctx.newList(items);
-            std::stable_sort(items.begin(), items.end(),
-                             [](const Value &x, const Value &y) { return x.text < y.text; });
+            const auto all = [&](T type) {
+                return std::all_of(items.cbegin(), items.cend(),
+                                   [type](const Value &v) { return v.type == type; });
+            };
+            if (all(T::String))
+                std::stable_sort(items.begin(), items.end(),
+                                 [](const Value &x, const Value &y) { return x.text < y.text; });
+            else if (all(T::Number))
+                std::stable_sort(items.begin(), items.end(), [](const Value &x, const Value &y) {
+                    return x.number < y.number;
+                });
+            else
+                m_ctx.approximate = true; // left in their order
         }
         return m_ctx.newList(items, dotted == QLatin1String("tuple"));
     }
@@ -198,8 +209,10 @@ std::optional<Value> PythonLaunchBuiltins::callBuiltin(const QString &dotted, co
         if (by == 0)
             return Value::unknown(text, evidence);
         QList<Value> items;
-        for (double i = from; (by > 0 ? i < to : i > to) && items.size() < kMaxRange; i += by)
+        double i = from;
+        for (; (by > 0 ? i < to : i > to) && items.size() < kMaxRange; i += by)
             items << Value::number_(i);
+        m_ctx.approximate = m_ctx.approximate || (by > 0 ? i < to : i > to);
         return m_ctx.newList(items);
     }
     if (dotted == QLatin1String("enumerate") || dotted == QLatin1String("zip")) {
@@ -366,12 +379,26 @@ Value PythonLaunchBuiltins::callMethod(const Value &object, const QString &metho
             return Value::string(s.toLower());
         if (is({"upper"}))
             return Value::string(s.toUpper());
-        if (is({"replace"}) && a0 && a1 && a0->type == T::String && a1->type == T::String)
-            return Value::string(QString(s).replace(a0->text, a1->text));
+        const Value *count = args.get(2, {"count"});
+        if (is({"replace"}) && a0 && a1 && a0->type == T::String && a1->type == T::String &&
+            (!count || count->type == T::Number)) {
+            if (!count || count->number < 0)
+                return Value::string(QString(s).replace(a0->text, a1->text));
+            QString out = s; // the first `count` occurrences
+            qsizetype from = 0;
+            for (int i = 0; i < count->number && !a0->text.isEmpty(); ++i) {
+                from = out.indexOf(a0->text, from);
+                if (from < 0)
+                    break;
+                out.replace(from, a0->text.size(), a1->text);
+                from += a1->text.size();
+            }
+            return Value::string(out);
+        }
         if (is({"startswith", "endswith"}) && a0 && a0->type == T::String)
             return Value::boolean_(method == QLatin1String("startswith") ? s.startsWith(a0->text)
                                                                          : s.endsWith(a0->text));
-        if (is({"split"})) {
+        if (is({"split"}) && !(a0 && a0->type == T::String && a0->text.isEmpty())) {
             const QStringList pieces =
                 a0 && a0->type == T::String
                     ? s.split(a0->text)

@@ -58,13 +58,17 @@ std::shared_ptr<Scope> PythonLaunchContext::newScope(std::shared_ptr<Scope> pare
 
 void PythonLaunchContext::append(const Value &list, const Value &item)
 {
-    if (list.type != Value::Type::List || list.list->items.size() >= kMaxListSize)
+    if (list.type != Value::Type::List)
         return;
+    if (list.list->items.size() >= kMaxListSize) {
+        approximate = true;
+        return;
+    }
     list.list->items << item;
     list.list->guards << relativeGuards(list.list->createdUnder, guards);
 }
 
-QList<Value> PythonLaunchContext::iterate(const Value &value, bool *known) const
+QList<Value> PythonLaunchContext::iterate(const Value &value, bool *known)
 {
     *known = true;
     switch (value.type) {
@@ -78,6 +82,7 @@ QList<Value> PythonLaunchContext::iterate(const Value &value, bool *known) const
     }
     case Value::Type::String: {
         QList<Value> chars;
+        approximate = approximate || value.text.size() > kMaxIteratedChars;
         for (QChar c : value.text.left(kMaxIteratedChars))
             chars << Value::string(QString(c));
         return chars;

@@ -66,7 +66,7 @@ public:
     /// Appends under the current guards, up to kMaxListSize items.
     void append(const Value &list, const Value &item);
     /// The items a `for` over `value` sees; `known` false when that cannot be decided.
-    QList<Value> iterate(const Value &value, bool *known) const;
+    QList<Value> iterate(const Value &value, bool *known);
     /// An unknown value standing for the code at `node`.
     Value unknownAt(TSNode node) const;
     QString textOf(TSNode node) const;
@@ -78,6 +78,10 @@ public:
     int callDepth = 0;
     int exprDepth = 0;
     bool exhausted = false;
+    bool tooDeep = false; ///< an expression nested past the depth bound was not evaluated
+    /// A value stands for a guess (an undecided condition's first alternative, an unordered
+    /// set's order) or was cut short by a bound (a range, a repetition, a list's length).
+    bool approximate = false;
     TSNode stoppedAt{}; ///< where the step budget ran out (null while it lasts)
     QList<Diagnostic> diagnostics;
 

@@ -35,17 +35,6 @@ PythonLaunchEvaluator::PythonLaunchEvaluator(const SyntaxTree &tree)
 {
 }
 
-TSNode PythonLaunchEvaluator::launchFunction(const SyntaxTree &tree)
-{
-    for (TSNode n : ts::namedChildren(tree.root())) {
-        TSNode def = py::undecorated(n);
-        if (ts::is(def, "function_definition") &&
-            tree.view(ts::field(def, "name")) == "generate_launch_description")
-            return def;
-    }
-    return TSNode{};
-}
-
 QList<LaunchAction> PythonLaunchEvaluator::run()
 {
     Frame module;
@@ -103,6 +92,17 @@ QList<LaunchAction> PythonLaunchEvaluator::run()
         m_ctx.diagnostics << d;
     }
     return actions;
+}
+
+Value PythonLaunchEvaluator::evaluate(TSNode expression, const QHash<QString, Value> &names)
+{
+    Frame module;
+    module.scope = m_ctx.module;
+    module.scope->vars.insert(names);
+    m_ctx.frame = &module;
+    const Value v = m_expressions.eval(expression);
+    m_ctx.frame = nullptr;
+    return v;
 }
 
 void PythonLaunchEvaluator::execBlock(TSNode block)

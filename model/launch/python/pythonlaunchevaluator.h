@@ -30,10 +30,11 @@ public:
 
     /// The actions of the LaunchDescription that generate_launch_description() returns.
     QList<LaunchAction> run();
+    /// One expression of the tree on its own, in a module scope holding `names`; the context
+    /// then says whether a bound or a guess stands in the value.
+    Value evaluate(TSNode expression, const QHash<QString, Value> &names);
+    const PythonLaunchContext &context() const { return m_ctx; }
     const QList<Diagnostic> &diagnostics() const { return m_ctx.diagnostics; }
-
-    /// The module-level generate_launch_description definition, or a null node.
-    static TSNode launchFunction(const SyntaxTree &tree);
 
 private:
     // The parts call back into the interpreter: calls in expressions, an OpaqueFunction's body.

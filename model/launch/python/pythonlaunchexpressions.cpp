@@ -5,6 +5,7 @@
 #include "pythonlaunchevaluator.h"
 #include "pythonlaunchoperators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -69,7 +70,11 @@ Value PythonLaunchExpressions::eval(TSNode node)
 {
     if (ts::isNull(node))
         return Value::unknown(QString());
-    if (m_ctx.exprDepth >= kMaxExpressionDepth || !m_ctx.step(node))
+    if (m_ctx.exprDepth >= kMaxExpressionDepth) {
+        m_ctx.tooDeep = true;
+        return m_ctx.unknownAt(node);
+    }
+    if (!m_ctx.step(node))
         return m_ctx.unknownAt(node);
     ++m_ctx.exprDepth;
     Value v = evalNode(node);
@@ -114,6 +119,8 @@ Value PythonLaunchExpressions::evalNode(TSNode n)
             }
             items << eval(c);
         }
+        // A set iterates in hash order, which for strings changes from run to run.
+        m_ctx.approximate = m_ctx.approximate || (t == "set" && items.size() > 1);
         return m_ctx.newList(items, t == "tuple" || t == "expression_list");
     }
     if (t == "parenthesized_expression") {
@@ -145,6 +152,12 @@ Value PythonLaunchExpressions::evalNode(TSNode n)
     if (t == "unary_operator") {
         const Value v = eval(ts::field(n, "argument"));
         const std::string_view op = m_ctx.tree.view(ts::field(n, "operator"));
+        // An integer as Python prints it (-0 is 0); any other number as written, negated.
+        const auto integer = [](const QString &text) {
+            return std::all_of(text.cbegin(), text.cend(), [](QChar c) { return c.isDigit(); });
+        };
+        if (v.type == Value::Type::Number && op == "-" && integer(v.text))
+            return Value::number_(-v.number);
         if (v.type == Value::Type::Number && op == "-")
             return Value::number_(-v.number, v.text.startsWith(QLatin1Char('-'))
                                                  ? v.text.mid(1)
@@ -167,6 +180,7 @@ Value PythonLaunchExpressions::evalNode(TSNode n)
             return m_ctx.unknownAt(n);
         const std::optional<bool> truth = eval(c[1]).truth();
         // Undecidable: the first alternative is the best guess.
+        m_ctx.approximate = m_ctx.approximate || !truth;
         return (!truth || *truth) ? eval(c[0]) : eval(c[2]);
     }
     if (t == "call")
@@ -296,6 +310,7 @@ Value PythonLaunchExpressions::evalBinary(TSNode n)
     }
     if (op == "*" && (a.type == T::List || a.type == T::String) && b.type == T::Number) {
         const int times = qBound(0, int(y), 64);
+        m_ctx.approximate = m_ctx.approximate || y > times;
         if ((a.type == T::String ? a.text.size() : a.list->items.size()) * times >
             (a.type == T::String ? kMaxStringSize : kMaxListSize))
             return m_ctx.unknownAt(n);
@@ -330,9 +345,11 @@ Value PythonLaunchExpressions::evalBoolean(TSNode n)
         return (*ta == isAnd) ? eval(ts::field(n, "right")) : a;
     const Value b = eval(ts::field(n, "right"));
     const std::optional<bool> tb = b.truth();
-    // `x or True` is true and `x and False` is false, whatever x is.
-    if (tb.has_value() && *tb != isAnd)
+    // `x or True` is true and `x and False` is false, whatever x is; its value is a guess.
+    if (tb.has_value() && *tb != isAnd) {
+        m_ctx.approximate = true;
         return b;
+    }
     return m_ctx.unknownAt(n);
 }
 
@@ -490,8 +507,10 @@ Value PythonLaunchExpressions::evalComprehension(TSNode n)
         if (failed || m_ctx.exhausted || produced > kMaxComprehensionItems)
             return;
         if (i == clauses.size()) {
-            if (++produced > kMaxComprehensionItems)
+            if (++produced > kMaxComprehensionItems) {
+                m_ctx.approximate = true;
                 return;
+            }
             if (isDict)
                 out.dict->set(eval(ts::field(body, "key")), eval(ts::field(body, "value")));
             else
@@ -501,6 +520,7 @@ Value PythonLaunchExpressions::evalComprehension(TSNode n)
         TSNode clause = clauses.at(i);
         if (ts::is(clause, "if_clause")) {
             const std::optional<bool> truth = eval(ts_node_named_child(clause, 0)).truth();
+            m_ctx.approximate = m_ctx.approximate || !truth;
             if (!truth || *truth) // undecidable filters keep the item (best guess)
                 generate(i + 1);
             return;

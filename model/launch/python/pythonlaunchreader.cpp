@@ -7,15 +7,19 @@
 
 namespace rosarch {
 
-bool PythonLaunchReader::isLaunchFile(const QByteArray &content)
-{
-    if (!py::namesLaunchFunction(content))
-        return false;
-    const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, QString());
-    return !ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree));
-}
-
 namespace {
+
+/// The module-level generate_launch_description definition, or a null node.
+TSNode launchFunction(const SyntaxTree &tree)
+{
+    for (TSNode n : ts::namedChildren(tree.root())) {
+        TSNode def = py::undecorated(n);
+        if (ts::is(def, "function_definition") &&
+            tree.view(ts::field(def, "name")) == "generate_launch_description")
+            return def;
+    }
+    return TSNode{};
+}
 
 LaunchFileDescription describe(const SyntaxTree &tree, const QString &file)
 {
@@ -33,6 +37,14 @@ LaunchFileDescription describe(const SyntaxTree &tree, const QString &file)
 
 } // namespace
 
+bool PythonLaunchReader::isLaunchFile(const QByteArray &content)
+{
+    if (!py::namesLaunchFunction(content))
+        return false;
+    const SyntaxTree tree = SyntaxTree::parse(SyntaxTree::Grammar::Python, content, QString());
+    return !ts::isNull(launchFunction(tree));
+}
+
 LaunchFileDescription PythonLaunchReader::read(const QByteArray &content, const QString &file)
 {
     return describe(SyntaxTree::parse(SyntaxTree::Grammar::Python, content, file), file);
@@ -47,7 +59,7 @@ std::optional<LaunchFileDescription> PythonLaunchReader::readIfLaunchFile(const 
     bool parsedHere = true;
     SyntaxTree tree = ParseHandoff::takeOrParse(file, content, &parsedHere);
     std::optional<LaunchFileDescription> d;
-    if (!ts::isNull(pylaunch::PythonLaunchEvaluator::launchFunction(tree)))
+    if (!ts::isNull(launchFunction(tree)))
         d = describe(tree, file);
     if (parsedHere)
         ParseHandoff::offer(std::move(tree));

@@ -432,6 +432,20 @@ private Q_SLOTS:
                                    << "['a', 'b']";
         QTest::newRow("arithmetic") << "2 + 3 - 1"
                                     << "4";
+        QTest::newRow("chained comparison") << "1 < 2 < 3"
+                                            << "true";
+        QTest::newRow("launch booleans") << "true and not false"
+                                         << "true";
+        QTest::newRow("str of a boolean") << "str(1 == 1)"
+                                          << "True";
+        QTest::newRow("format") << "'{}-{}'.format('a', 1)"
+                                << "a-1";
+        QTest::newRow("blanks around") << "  'a' + 'b' "
+                                       << "ab";
+        QTest::newRow("sorted numbers") << "sorted([3, 1, 2])"
+                                        << "[1, 2, 3]";
+        QTest::newRow("tuple and dict") << "[(1,), {'a': None}]"
+                                        << "[(1,), {'a': None}]";
     }
 
     void pythonExpressions()
@@ -450,11 +464,22 @@ private Q_SLOTS:
         QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a' =="), &out));
         // An index past the end is an IndexError, an unknown method or a chain no value.
         QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.split('/')[1]"), &out));
-        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.format(1)"), &out));
-        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("1 < 2 < 3"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.zfill(3)"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a'.split('')"), &out));
         QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("'a' < 1"), &out));
         QVERIFY(!SubstitutionEvaluator::evaluatePython(
             QStringLiteral("list(set('a_b'.split('_')))"), &out));
+        // Nor is a guess between alternatives, or a value a bound cut short.
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(
+            QStringLiteral("'a' if os.getcwd() else 'b'"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("x or True"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("len(range(1000))"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("len('ab' * 100)"), &out));
+        // Nor what is no one expression.
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("1\n2"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("x = 1"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("import os"), &out));
+        QVERIFY(!SubstitutionEvaluator::evaluatePython(QStringLiteral("lambda: 1"), &out));
         // Deep nesting is refused, not a stack overflow.
         const QString deep = QString(100000, QLatin1Char('(')) + QStringLiteral("1") +
                              QString(100000, QLatin1Char(')'));
