@@ -17,6 +17,7 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
+#include "navigationcontroller.h"
 #include "parametercontroller.h"
 #include "parameterpanel.h"
 #include "project.h"
@@ -416,8 +417,10 @@ void MainWindow::openWorkspaceNow(const QString &root)
     settings.setLastWorkspace(root);
     updateTitle();
     setWindowFilePath(root);
-    if (another)
+    if (another) {
         m_projects->projectOpened();
+        m_navigation->clear(); // the places were another workspace's
+    }
     runAllStages();
 }
 

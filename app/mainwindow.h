@@ -31,6 +31,7 @@ class Document;
 class LaunchTreeModel;
 class LaunchTreePanel;
 class LogView;
+class NavigationController;
 class ProjectController;
 class SourceView;
 class StageController;
@@ -106,6 +107,7 @@ public:
     InspectorPanel *inspector() const { return m_inspector; }
     QDockWidget *correctionsDock() const { return m_correctionsDock; }
     QDockWidget *inspectorDock() const { return m_inspectorDock; }
+    NavigationController *navigation() const { return m_navigation; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -182,6 +184,7 @@ private:
     CompareController *m_compare = nullptr;
     RenderController *m_render = nullptr;
     ProjectController *m_projects = nullptr;
+    NavigationController *m_navigation = nullptr; ///< back and forward over the panels
     QToolBar *m_toolBar = nullptr;
 
     QAction *m_openAction = nullptr;

@@ -9,6 +9,7 @@
 #include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "navigationcontroller.h"
 #include "nodlwriter.h"
 #include "projectcontroller.h"
 #include "rendercontroller.h"
@@ -35,6 +36,8 @@ namespace rosarch {
 void MainWindow::createActions()
 {
     m_projects = new ProjectController(m_document, m_logView, this);
+    m_navigation = new NavigationController(
+        m_document, {m_nodePanel, m_launchPanel, m_diagramPanel, m_sourceView, m_logView}, this);
 
     m_openAction = new QAction(Icons::open(), tr("&Open Workspace…"), this);
     m_openAction->setShortcut(QKeySequence::Open);
@@ -255,6 +258,9 @@ void MainWindow::createMenus()
     m_toolBar->setMovable(false);
     m_toolBar->addAction(m_openAction);
     m_toolBar->addSeparator();
+    m_toolBar->addAction(m_navigation->backAction());
+    m_toolBar->addAction(m_navigation->forwardAction());
+    m_toolBar->addSeparator();
     m_toolBar->addAction(m_runAction);
     m_toolBar->addAction(m_runLaunchAction);
     m_toolBar->addAction(m_launchArgumentsAction);
@@ -275,6 +281,10 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_watchAction);
     view->addAction(m_resetLayoutAction);
+
+    QMenu *go = menuBar()->addMenu(tr("&Go"));
+    go->addAction(m_navigation->backAction());
+    go->addAction(m_navigation->forwardAction());
 
     createCorrectionMenu();
 

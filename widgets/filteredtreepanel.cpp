@@ -336,6 +336,21 @@ void FilteredTreePanel::selectSourceIndex(const QModelIndex &sourceIndex)
     m_tree->scrollTo(proxyIndex);
 }
 
+QString FilteredTreePanel::currentStableKey() const
+{
+    const QModelIndex current = currentSourceIndex();
+    return current.isValid() ? stableKeyOf(current) : QString();
+}
+
+bool FilteredTreePanel::selectStableKey(const QString &key)
+{
+    const QModelIndex index = key.isEmpty() ? QModelIndex() : sourceIndexOfKey(key);
+    if (!index.isValid())
+        return false;
+    selectSourceIndex(index);
+    return true;
+}
+
 void FilteredTreePanel::focusFilter()
 {
     m_filter->setFocus(Qt::ShortcutFocusReason);

@@ -36,6 +36,11 @@ public:
     QModelIndex currentSourceIndex() const;
     /// Makes a row of the source model current, clearing a filter that hides it.
     void selectSourceIndex(const QModelIndex &sourceIndex);
+    /// The stable key of the current row (blueprint §5); "" for none.
+    QString currentStableKey() const;
+    /// Makes the row of a stable key current as selectSourceIndex() does; false when no row
+    /// has that key now.
+    bool selectStableKey(const QString &key);
     void focusFilter();
 
 Q_SIGNALS:

@@ -238,6 +238,16 @@ void SourceView::highlight(const Evidence &evidence)
     m_lastReportedLine = -1;
 }
 
+void SourceView::setPosition(int line, int firstLine)
+{
+    m_navigating = true;
+    m_editor->setCursorPosition(line, 0);
+    m_editor->setFirstVisibleLine(firstLine);
+    m_navigating = false;
+    m_pendingProgrammaticLine = line;
+    m_lastReportedLine = -1;
+}
+
 void SourceView::onCursorPositionChanged(int line, int)
 {
     if (m_navigating || m_file.isEmpty())

@@ -28,6 +28,9 @@ public:
     /// cursor to its start. Returns false (and says why in the header) when it cannot.
     bool showEvidence(const Evidence &evidence);
     void clear();
+    /// Puts the cursor on `line` and shows from `firstLine` (0-based), as showEvidence moves
+    /// it: not reported as a person's move.
+    void setPosition(int line, int firstLine);
 
     QString currentFile() const { return m_file; }         ///< relative to the workspace root
     Evidence highlighted() const { return m_highlighted; } ///< invalid when nothing is
