@@ -5,6 +5,7 @@
 #include "atomicnodesjson.h"
 #include "ccdwriter.h"
 #include "communicationgraph.h"
+#include "diagnosticsjson.h"
 #include "launchdependenciesjson.h"
 #include "mermaidwriter.h"
 #include "recoverystream.h"

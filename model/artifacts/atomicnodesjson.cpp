@@ -289,33 +289,4 @@ bool AtomicNodesJson::read(const QByteArray &json, AtomicNodeList *list, QString
     return true;
 }
 
-QByteArray DiagnosticsJson::write(const QList<Diagnostic> &diagnostics)
-{
-    Json a = Json::array();
-    for (const Diagnostic &d : diagnostics) {
-        Json j;
-        j["severity"] = utf8(Diagnostic::severityName(d.severity));
-        j["code"] = utf8(d.code);
-        j["message"] = utf8(d.message);
-        j["evidence"] = EvidenceJson::toJson(d.evidence);
-        if (!d.related.isEmpty()) {
-            Json related = Json::array();
-            for (const Diagnostic::Related &r : d.related)
-                related.push_back(
-                    {{"message", utf8(r.message)}, {"evidence", EvidenceJson::toJson(r.evidence)}});
-            j["related"] = related;
-        }
-        if (!d.contexts.isEmpty()) {
-            Json contexts = Json::array();
-            for (const QString &c : d.contexts)
-                contexts.push_back(utf8(c));
-            j["contexts"] = contexts;
-        }
-        a.push_back(j);
-    }
-    Json root;
-    root["diagnostics"] = a;
-    return visibleJson(root.dump(2)) + '\n';
-}
-
 } // namespace rosarch

@@ -15,9 +15,4 @@ QByteArray write(const AtomicNodeList &list);
 bool read(const QByteArray &json, AtomicNodeList *list, QString *error);
 } // namespace AtomicNodesJson
 
-/// The diagnostics of a run as JSON (diagnostics.json).
-namespace DiagnosticsJson {
-QByteArray write(const QList<Diagnostic> &diagnostics);
-}
-
 } // namespace rosarch

@@ -1,6 +1,6 @@
 #include "checkreport.h"
 #include "diagnostickind.h"
-#include "evidencejson.h"
+#include "diagnosticsjson.h"
 #include "jsonsupport.h"
 #include "visibletext.h"
 
@@ -137,24 +137,10 @@ QByteArray CheckReport::json(const QString &toolVersion) const
 {
     Json findings = Json::array();
     for (const CheckFinding &f : m_findings) {
-        const Diagnostic &d = f.diagnostic;
-        Json j;
-        j["key"] = utf8(f.key);
-        j["code"] = utf8(d.code);
-        j["severity"] = utf8(Diagnostic::severityName(d.severity));
-        j["message"] = utf8(d.message);
-        j["evidence"] = EvidenceJson::toJson(d.evidence);
-        Json related = Json::array();
-        for (const Diagnostic::Related &r : d.related)
-            related.push_back(
-                {{"message", utf8(r.message)}, {"evidence", EvidenceJson::toJson(r.evidence)}});
-        j["related"] = related;
-        if (!d.contexts.isEmpty()) {
-            Json contexts = Json::array();
-            for (const QString &c : d.contexts)
-                contexts.push_back(utf8(c));
-            j["contexts"] = contexts;
-        }
+        Json j = {{"key", utf8(f.key)}};
+        j.update(DiagnosticsJson::toJson(f.diagnostic));
+        if (!j.contains("related")) // the report has it always, empty or not
+            j["related"] = Json::array();
         j["baselined"] = f.baselined;
         j["failing"] = f.failing;
         findings.push_back(j);

@@ -79,6 +79,37 @@ private Q_SLOTS:
         QVERIFY(second.text().contains(QLatin1String("[type-mismatch, baseline]")));
     }
 
+    // A finding is its diagnostic as diagnostics.json writes it, with its key and its verdict;
+    // `related` is there even when empty.
+    void jsonFindings()
+    {
+        QList<Diagnostic> diagnostics = sample();
+        diagnostics[1].contexts = {QStringLiteral("a.launch.py"), QStringLiteral("b.launch.xml")};
+        const CheckReport report(diagnostics, {}, Diagnostic::Severity::Error);
+        const QJsonObject root = QJsonDocument::fromJson(report.json(QStringLiteral("1"))).object();
+        const QJsonArray findings = root[QLatin1String("findings")].toArray();
+        QCOMPARE(findings.size(), 4);
+        QJsonObject mismatch, broken;
+        for (const QJsonValue &f : findings) {
+            if (f[QLatin1String("code")] == QLatin1String("type-mismatch"))
+                mismatch = f.toObject();
+            if (f[QLatin1String("code")] == QLatin1String("malformed-xml"))
+                broken = f.toObject();
+        }
+        QCOMPARE(mismatch.keys(), (QStringList{"baselined", "code", "evidence", "failing", "key",
+                                               "message", "related", "severity"}));
+        QCOMPARE(mismatch[QLatin1String("severity")].toString(), QStringLiteral("warning"));
+        QCOMPARE(
+            mismatch[QLatin1String("related")][0][QLatin1String("evidence")][QLatin1String("line")]
+                .toInt(),
+            12);
+        QVERIFY(broken[QLatin1String("related")].isArray());
+        QCOMPARE(broken[QLatin1String("related")].toArray().size(), 0);
+        QCOMPARE(broken[QLatin1String("contexts")].toArray().size(), 2);
+        QCOMPARE(broken[QLatin1String("failing")].toBool(), true);
+        QCOMPARE(broken[QLatin1String("key")].toString(), diagnostics[1].key());
+    }
+
     void baselineAsKeyLines()
     {
         QSet<QString> keys;
