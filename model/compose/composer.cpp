@@ -1,8 +1,8 @@
 #include "composer.h"
+#include "itemports.h"
 #include "rosnames.h"
 
 #include <QHash>
-#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -29,86 +29,6 @@ Family familyOf(PortKind k)
         return Family::Service;
     default:
         return Family::Action;
-    }
-}
-
-QString parameterValue(const NodeInstance &instance, const QString &name, bool *found)
-{
-    for (const ParameterSetting &p : instance.effectiveParameters) {
-        if (p.name == name) {
-            *found = true;
-            return p.value;
-        }
-    }
-    *found = false;
-    return {};
-}
-
-// A name per item of a list parameter (blueprint §1 "Names per instance"): the item itself
-// (`{node_names}`) or the value of a parameter the item names (`{sources}.topic`). The list
-// parameter, or "" when the name is neither.
-QString elementList(const Port &p)
-{
-    static const QRegularExpression item(QStringLiteral("\\{([A-Za-z0-9_.]+)\\}"));
-    if (p.nameOrigin != NameOrigin::Parameter)
-        return {};
-    const QRegularExpressionMatch m = item.match(p.parameter);
-    if (!m.hasMatch() || m.captured(0) == QLatin1String(kPluginNamePlaceholder) ||
-        m.captured(0) == QLatin1String(kNodeNamePlaceholder))
-        return {};
-    return m.captured(1);
-}
-
-// One port per item of the instance's list (`[a, b]`), each named by its item; the port as
-// it is when the instance gives no list, its name then only known at run time.
-void expandElements(const Port &p, const NodeInstance &instance, QList<Port> *out)
-{
-    bool set = false;
-    const QString list = elementList(p);
-    const QString items = parameterValue(instance, list, &set).trimmed();
-    if (!set || !items.startsWith(u'[') || !items.endsWith(u']')) {
-        out->append(p);
-        return;
-    }
-    const QString pattern = QStringLiteral("{%1}").arg(list);
-    QSet<QString> seen;
-    for (QString item : items.mid(1, items.size() - 2).split(u',')) {
-        item = item.trimmed();
-        if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
-            item.back() == item.front())
-            item = item.mid(1, item.size() - 2);
-        if (item.isEmpty() || seen.contains(item))
-            continue;
-        seen.insert(item);
-        Port one = p;
-        QString key;
-        for (const QChar c : item)
-            key += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
-        one.id = QStringLiteral("%1_%2").arg(p.id, key);
-        one.name.replace(pattern, item); // the item, or a default that names it
-        if (p.parameter == pattern) {
-            one.name = p.parameterPrefix + item + p.parameterSuffix;
-            one.parameter.clear(); // decided: the item names it
-        } else {
-            one.parameter.replace(pattern, item); // `scan.topic`, looked up as any other
-        }
-        // Built per item only where the item passes the test (`{sources}.type == "scan"`);
-        // an item the instance does not type keeps the port, undecided.
-        if (one.guardParameter.contains(pattern)) {
-            one.guardParameter.replace(pattern, item);
-            bool typed = false;
-            QString value = parameterValue(instance, one.guardParameter, &typed);
-            if (!typed && !one.guardDefault.isEmpty()) { // the declared default decides
-                value = one.guardDefault;
-                typed = true;
-            }
-            bool known = false;
-            if (!typed)
-                one.guardParameter.clear();
-            else if (!RosNames::evaluateGuard(one.guard, value, &known) && known)
-                continue;
-        }
-        out->append(one);
     }
 }
 
@@ -283,10 +203,10 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             std::find_if(instance.constructedPorts.cbegin(), instance.constructedPorts.cend(),
                          [&](const Port &c) { return c.id == p.id; });
         const Port &own = constructed != instance.constructedPorts.cend() ? *constructed : p;
-        if (elementList(own).isEmpty())
+        if (itemList(own).isEmpty())
             ports.append(own);
         else
-            expandElements(own, instance, &ports);
+            expandItems(own, instance, &ports);
     }
     ports += instance.addedPorts;
     const qsizetype firstModelled = ports.size();
@@ -311,12 +231,12 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             base.replace(QLatin1String(kNodeNamePlaceholder), nodeName);
         else if (namedByNode)
             pp.resolved = false;
-        if (!elementList(p).isEmpty()) // a list the instance does not give
+        if (!itemList(p).isEmpty()) // a list the instance does not give
             pp.resolved = false;
         if (p.nameOrigin == NameOrigin::Parameter) {
             pp.parameterDerived = true;
             bool set = false;
-            const QString v = parameterValue(instance, p.parameter, &set);
+            const QString v = settingValue(instance, p.parameter, &set);
             if (set && !v.isEmpty()) // a joined name keeps the text around the value
                 base = p.parameterPrefix + v + p.parameterSuffix;
         }
@@ -355,7 +275,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         pp.name = RosNames::scopeRelative(pp.name); // a classifier's relative names stay relative
         if (!p.guard.isEmpty() && !p.guardParameter.isEmpty()) {
             bool set = false;
-            QString v = parameterValue(instance, p.guardParameter, &set);
+            QString v = settingValue(instance, p.guardParameter, &set);
             if (!set)
                 v = p.guardDefault;
             bool known = false;
@@ -374,7 +294,7 @@ bool Composer::guardDecided(const Port &p, const NodeInstance &instance)
     if (p.guardParameter.isEmpty())
         return false;
     bool set = false;
-    QString v = parameterValue(instance, p.guardParameter, &set);
+    QString v = settingValue(instance, p.guardParameter, &set);
     if (!set)
         v = p.guardDefault;
     bool known = false;

@@ -7,6 +7,8 @@
 // CppFunctionExtractor's calls: port and parameter calls, instantiations, method and free
 // calls, procedural nodes.
 
+#include <algorithm>
+
 namespace rosarch {
 
 using namespace cppsyntax;
@@ -208,9 +210,27 @@ void CppFunctionExtractor::markOutArguments(const CallShape &shape, const std::v
         const TSNode a = unwrap(m_tree, args[i]);
         if (!ts::is(a, "identifier"))
             continue;
-        const auto it = m_locals.find(m_tree.text(a));
-        if (it == m_locals.end() || !ts::isNull(it->value) || !it->parameter.isEmpty() ||
-            !it->outCall.isEmpty())
+        const QString name = m_tree.text(a);
+        const auto it = m_locals.find(name);
+        if (it == m_locals.end()) {
+            // `getParameters(std::string & topic) { readCommon(topic); }`: this function's own
+            // reference parameter, filled for its caller by the function it is handed to
+            const qsizetype at = m_function.parameterNames.indexOf(name);
+            const QString type = at >= 0 ? m_function.parameterTypes.value(at) : QString();
+            const bool assigned =
+                std::any_of(m_function.outBindings.cbegin(), m_function.outBindings.cend(),
+                            [&](const CppMemberBinding &b) { return b.member == name; });
+            if (!assigned && type.contains(u'&') && !type.contains(QLatin1String("const"))) {
+                CppValue filled;
+                filled.kind = CppValue::Kind::OutArgument;
+                filled.text = name;
+                filled.variable = shape.name;
+                filled.index = int(i);
+                m_function.outBindings.append({name, filled});
+            }
+            continue;
+        }
+        if (!ts::isNull(it->value) || !it->parameter.isEmpty() || !it->outCall.isEmpty())
             continue;
         it->outCall = shape.name;
         it->outIndex = int(i);

@@ -21,8 +21,7 @@ public:
         auto feed = std::make_shared<yard_watch::Feed>(this, name);
         feed->start();
         feeds_.push_back(feed);
-      }
-      if (kind == "sonar") {
+      } else if (kind == "sonar") {
         sonars_.push_back(std::make_shared<yard_watch::SonarFeed>(this, name));
       }
     }

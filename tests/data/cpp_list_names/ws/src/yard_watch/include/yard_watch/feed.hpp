@@ -28,6 +28,11 @@ public:
 protected:
   void readTopic(std::string & topic)
   {
+    readCommon(topic);
+  }
+
+  void readCommon(std::string & topic)
+  {
     topic = node_->declare_parameter(feed_name_ + ".topic", std::string("scan"));
   }
 

@@ -1,0 +1,116 @@
+#include "itemports.h"
+#include "rosnames.h"
+
+#include <QRegularExpression>
+#include <QSet>
+
+// Ports named per item of a list parameter (blueprint §1 "Names per instance").
+namespace rosarch {
+
+namespace {
+
+// Whether an item's test is decided false. An `else if` chain tests one variable several
+// times (`!(type == "scan") && type == "pointcloud"`): each part is decided with the item's
+// value when every part tests the same variable; otherwise nothing is decided.
+bool itemTestFails(const QString &guard, const QString &value)
+{
+    static const QRegularExpression operand(
+        QStringLiteral(R"(^[\s!(]*([A-Za-z_][A-Za-z0-9_.>-]*)\s*(?:==|!=))"));
+    const QStringList parts = guard.split(QLatin1String("&&"));
+    QString tested;
+    for (const QString &part : parts) {
+        const QRegularExpressionMatch m = operand.match(part);
+        if (!m.hasMatch() || (!tested.isEmpty() && m.captured(1) != tested))
+            return false;
+        tested = m.captured(1);
+    }
+    for (const QString &part : parts) {
+        bool known = false;
+        if (!RosNames::evaluateGuard(part.trimmed(), value, &known) && known)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+QString settingValue(const NodeInstance &instance, const QString &name, bool *found)
+{
+    for (const ParameterSetting &p : instance.effectiveParameters) {
+        if (p.name == name) {
+            *found = true;
+            return p.value;
+        }
+    }
+    *found = false;
+    return {};
+}
+
+// A name per item of a list parameter (blueprint §1 "Names per instance"): the item itself
+// (`{node_names}`) or the value of a parameter the item names (`{sources}.topic`). The list
+// parameter, or "" when the name is neither.
+QString itemList(const Port &p)
+{
+    static const QRegularExpression item(QStringLiteral("\\{([A-Za-z0-9_.]+)\\}"));
+    if (p.nameOrigin != NameOrigin::Parameter)
+        return {};
+    const QRegularExpressionMatch m = item.match(p.parameter);
+    if (!m.hasMatch() || m.captured(0) == QLatin1String(kPluginNamePlaceholder) ||
+        m.captured(0) == QLatin1String(kNodeNamePlaceholder))
+        return {};
+    return m.captured(1);
+}
+
+// One port per item of the instance's list (`[a, b]`), each named by its item; the port as
+// it is when the instance gives no list, its name then only known at run time.
+void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
+{
+    bool set = false;
+    const QString list = itemList(p);
+    const QString items = settingValue(instance, list, &set).trimmed();
+    if (!set || !items.startsWith(u'[') || !items.endsWith(u']')) {
+        out->append(p);
+        return;
+    }
+    const QString pattern = QStringLiteral("{%1}").arg(list);
+    QSet<QString> seen;
+    for (QString item : items.mid(1, items.size() - 2).split(u',')) {
+        item = item.trimmed();
+        if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
+            item.back() == item.front())
+            item = item.mid(1, item.size() - 2);
+        if (item.isEmpty() || seen.contains(item))
+            continue;
+        seen.insert(item);
+        Port one = p;
+        QString key;
+        for (const QChar c : item)
+            key += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
+        one.id = QStringLiteral("%1_%2").arg(p.id, key);
+        one.name.replace(pattern, item); // the item, or a default that names it
+        if (p.parameter == pattern) {
+            one.name = p.parameterPrefix + item + p.parameterSuffix;
+            one.parameter.clear(); // decided: the item names it
+        } else {
+            one.parameter.replace(pattern, item); // `scan.topic`, looked up as any other
+        }
+        // Built per item only where the item passes the test (`{sources}.type == "scan"`);
+        // an item the instance does not type keeps the port, undecided.
+        if (one.guardParameter.contains(pattern)) {
+            one.guardParameter.replace(pattern, item);
+            bool typed = false;
+            QString value = settingValue(instance, one.guardParameter, &typed);
+            if (!typed && !one.guardDefault.isEmpty()) { // the declared default decides
+                value = one.guardDefault;
+                typed = true;
+            }
+            if (!typed)
+                one.guardParameter.clear();
+            else if (itemTestFails(one.guard, value))
+                continue;
+        }
+        out->append(one);
+    }
+}
+
+} // namespace rosarch
