@@ -1,8 +1,5 @@
 #include "stagerunner.h"
-#include "composearchitecture.h"
 #include "disposal.h"
-
-#include <QElapsedTimer>
 
 #include <exception>
 
@@ -100,19 +97,7 @@ void StageRunner::runLaunch(const QString &root, const AtomicNodeList &nodes,
               Recovery &result = out.recovery;
               try {
                   if (stage || !session) {
-                      QElapsedTimer clock;
-                      clock.start();
-                      result.launch =
-                          stage ? stage(root, nodes, options, control.forStage(2))
-                                : analyzeLaunchFiles(root, nodes, options, control.forStage(2));
-                      if (!result.launch.canceled && !control.isCanceled()) {
-                          if (control.stageTimed)
-                              control.stageTimed(2, clock.restart());
-                          result.architecture =
-                              composeArchitecture(nodes, result.launch, control.forStage(3));
-                          if (control.stageTimed && !result.architecture.canceled)
-                              control.stageTimed(3, clock.elapsed());
-                      }
+                      result = recoverLaunch(root, nodes, options, control, nullptr, stage);
                   } else {
                       StageProcess::Result r = session->launch(root, nodes, options, control);
                       result = std::move(r.recovery);

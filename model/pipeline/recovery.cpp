@@ -63,6 +63,26 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
     return composeArchitecture(nodes, launch, control);
 }
 
+Recovery recoverLaunch(const QString &root, const AtomicNodeList &nodes,
+                       const LaunchOptions &options, const StageControl &control,
+                       const Recovery *previous, const LaunchStage &launchStage)
+{
+    Recovery r;
+    QElapsedTimer clock;
+    clock.start();
+    const StageControl stage2 = control.forStage(2);
+    r.launch = launchStage ? launchStage(root, nodes, options, stage2)
+                           : analyzeLaunchFiles(root, nodes, options, stage2);
+    if (r.launch.canceled || control.isCanceled())
+        return r;
+    if (control.stageTimed)
+        control.stageTimed(2, clock.restart());
+    r.architecture = composeOrReuse(nodes, r.launch, control.forStage(3), previous);
+    if (control.stageTimed && !r.architecture.canceled)
+        control.stageTimed(3, clock.elapsed());
+    return r;
+}
+
 namespace {
 
 /// Stage 3's memo in the worker reply's form (stagestream), whose string table makes it a

@@ -50,6 +50,18 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {}
                           const StageControl &control = {}, const Recovery *previous = nullptr,
                           const StageDone &stageDone = {});
 
+/// Stage 2 on its own: analyzeLaunchFiles(), or what a test runs in its place.
+using LaunchStage = std::function<LaunchDependencies(const QString &root, const AtomicNodeList &,
+                                                     const LaunchOptions &, const StageControl &)>;
+
+/// Runs stages 2 and 3 on `root` against the stage 1 result `nodes`, as after an edit that
+/// leaves stage 1's result as it was: the Recovery holds their results (its `nodes` stay
+/// empty). Stage 3 is composeOrReuse() with `previous`; `launchStage` stands in for
+/// analyzeLaunchFiles() when given.
+Recovery recoverLaunch(const QString &root, const AtomicNodeList &nodes,
+                       const LaunchOptions &options = {}, const StageControl &control = {},
+                       const Recovery *previous = nullptr, const LaunchStage &launchStage = {});
+
 /// Stage 3 on `nodes` and `launch`, or `previous`'s architecture when it was composed from equal
 /// ones (stage 3 is a function of them alone), or from ones that differ only in where some
 /// locations moved in a way stage 3 cannot tell (EvidenceShift): then with them moved too.

@@ -10,9 +10,8 @@
 // a substring; the worker crashes, hangs or allocates without bound when it begins a file whose
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
 #include "analysiscache.h"
-#include "composearchitecture.h"
-#include "launchanalyzer.h"
 #include "nodeanalyzer.h"
+#include "recovery.h"
 #include "recoverystream.h"
 #include "threadpriority.h"
 #include "workspacescanner.h"
@@ -271,27 +270,13 @@ Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *
         if (entering)
             testFault(file);
     };
-    Recovery result;
-    if (request.job == StageRequest::Job::Launch) {
-        QElapsedTimer clock;
-        clock.start();
-        result.launch =
-            analyzeLaunchFiles(request.root, request.nodes, request.options, control.forStage(2));
-        if (!result.launch.canceled) {
-            control.stageTimed(2, clock.restart());
-            result.architecture =
-                composeOrReuse(request.nodes, result.launch, control.forStage(3), composed);
-            if (!result.architecture.canceled)
-                control.stageTimed(3, clock.elapsed());
-        }
-    } else {
-        result = recoverWorkspace(request.root, request.options, control, composed,
-                                  [ahead](int stage, const Recovery &sofar) {
-                                      ahead->send(stage, sofar);
-                                      testStageFault(stage, ahead);
-                                  });
-    }
-    return result;
+    if (request.job == StageRequest::Job::Launch)
+        return recoverLaunch(request.root, request.nodes, request.options, control, composed);
+    return recoverWorkspace(request.root, request.options, control, composed,
+                            [ahead](int stage, const Recovery &sofar) {
+                                ahead->send(stage, sofar);
+                                testStageFault(stage, ahead);
+                            });
 }
 
 /// Stage 1's warm-up (NodeAnalyzer::warmUp) while the worker waits for its next request, so

@@ -129,6 +129,30 @@ private Q_SLOTS:
         QVERIFY(r.recovery.launch == expected);
         QVERIFY(r.recovery.architecture == composeArchitecture(full.nodes, expected));
         QCOMPARE(r.recovery.launch.nodes.size(), 2);
+
+        // In this process the same two stages give the same, and time both.
+        QList<int> timed;
+        StageControl control;
+        control.stageTimed = [&](int stage, qint64) { timed << stage; };
+        const Recovery here = recoverLaunch(dir.path(), full.nodes, options, control);
+        QVERIFY(here.launch == expected);
+        QVERIFY(here.architecture == r.recovery.architecture);
+        QVERIFY(!here.architecture.composites.isEmpty());
+        QVERIFY(here.nodes.nodes.isEmpty());
+        QCOMPARE(timed, (QList<int>{2, 3}));
+        // A stage 2 given in its place runs instead; a canceled one leaves stage 3 out.
+        int calls = 0;
+        const Recovery stood = recoverLaunch(dir.path(), full.nodes, options, {}, nullptr,
+                                             [&](const QString &, const AtomicNodeList &,
+                                                 const LaunchOptions &, const StageControl &) {
+                                                 ++calls;
+                                                 LaunchDependencies canceled;
+                                                 canceled.canceled = true;
+                                                 return canceled;
+                                             });
+        QCOMPARE(calls, 1);
+        QVERIFY(stood.launch.canceled);
+        QVERIFY(stood.architecture == Architecture());
     }
 
     void aCrashInOneFileCostsThatFile()
