@@ -99,6 +99,8 @@ private:
     const CorrectionIndex &index();
     bool ask(CorrectionDialog &dialog);
     bool push(Correction c);
+    /// The other unresolved ports of a port's class whose name is written as its is.
+    QStringList twinPorts(const QString &portId);
     QString keyOf(const QString &id);
     /// True when keyOf(id) answers without waiting for the keys of a large model (made on a
     /// thread of their own after each recovery): the inspector does not wait for them.

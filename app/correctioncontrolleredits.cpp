@@ -48,6 +48,7 @@ bool CorrectionController::rename(const Element &e)
     const QString old = nameOf(e);
     QString title = tr("Rename");
     QString what;
+    QStringList twins; ///< the other unresolved ports of the class written the same way
     switch (e.kind) {
     case Kind::Port: {
         const Port *p = findPort(m_document->accepted().nodes, e.id);
@@ -60,6 +61,7 @@ bool CorrectionController::rename(const Element &e)
             what = tr("Analysis left the name of this %1 as an expression: %2. Give the name it "
                       "has at run time.")
                        .arg(portKindName(p->kind), old);
+            twins = twinPorts(e.id);
         } else {
             what = tr("Rename the %1 %2 of this class (every instance uses the new name).")
                        .arg(portKindName(p->kind), old);
@@ -86,12 +88,53 @@ bool CorrectionController::rename(const Element &e)
     }
     CorrectionDialog dialog(title, what, CorrectionDialog::Name, m_window);
     dialog.setName(old);
+    if (!twins.isEmpty())
+        dialog.setAlso(twins.size() == 1
+                           ? tr("Also name the 1 other port of this class written %1 so").arg(old)
+                           : tr("Also name the %1 other ports of this class written %2 so")
+                                 .arg(twins.size())
+                                 .arg(old));
     if (!ask(dialog) || dialog.name() == old)
         return false;
     c.oldValue = old;
     c.newValue = dialog.name();
     c.reason = dialog.reason();
-    return push(c);
+    if (!dialog.also())
+        return push(c);
+    // One step to undo: the port and its twins.
+    QUndoStack *stack = m_document->undoStack();
+    stack->beginMacro(tr("Set Name of %1 ports").arg(twins.size() + 1));
+    int named = push(c) ? 1 : 0;
+    for (const QString &twin : std::as_const(twins)) {
+        c.target = keyOf(twin);
+        named += push(c) ? 1 : 0;
+    }
+    stack->endMacro();
+    Q_EMIT statusMessage(tr("Named %1 ports written %2 as “%3” (Ctrl+Z undoes them)")
+                             .arg(named)
+                             .arg(old, c.newValue),
+                         8000);
+    return named > 0;
+}
+
+QStringList CorrectionController::twinPorts(const QString &portId)
+{
+    const QString nodeId = portId.section(u'/', 0, 0);
+    const AtomicNode *node = m_document->accepted().nodes.node(nodeId);
+    const Port *port = findPort(m_document->accepted().nodes, portId);
+    QStringList twins;
+    if (!node || !port)
+        return twins;
+    for (const Port &other : node->ports) {
+        const QString id = nodeId + u'/' + other.id;
+        Element twin;
+        twin.kind = Kind::Port;
+        twin.id = id;
+        if (id != portId && !other.isResolved() && portName(other) == portName(*port) &&
+            !isRemoved(twin))
+            twins.append(id);
+    }
+    return twins;
 }
 
 bool CorrectionController::setType(const Element &e)

@@ -1,5 +1,6 @@
 #include "correctiondialog.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCompleter>
 #include <QDialogButtonBox>
@@ -212,6 +213,27 @@ void CorrectionDialog::setReason(const QString &reason)
 QString CorrectionDialog::reason() const
 {
     return m_reason->text().trimmed();
+}
+
+void CorrectionDialog::setAlso(const QString &text)
+{
+    if (!m_also) {
+        m_also = new QCheckBox(this);
+        m_also->setChecked(true);
+        m_form->addRow(QString(), m_also);
+    }
+    m_also->setText(text);
+}
+
+bool CorrectionDialog::also() const
+{
+    return m_also && m_also->isChecked();
+}
+
+void CorrectionDialog::setAlsoChecked(bool checked)
+{
+    if (m_also)
+        m_also->setChecked(checked);
 }
 
 bool CorrectionDialog::isComplete() const

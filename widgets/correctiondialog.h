@@ -7,6 +7,7 @@
 #include <QList>
 #include <QPair>
 
+class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
 class QFormLayout;
@@ -64,6 +65,12 @@ public:
     void setReason(const QString &reason);
     QString reason() const;
 
+    /// Offers to do the same elsewhere too, as a check box under the fields ("Also name the 2
+    /// other ports written `topic_` so"), checked to begin with.
+    void setAlso(const QString &text);
+    /// True when the offer of setAlso() is there and checked.
+    bool also() const;
+    void setAlsoChecked(bool checked);
     /// True when OK may be pressed.
     bool isComplete() const;
 
@@ -80,6 +87,7 @@ private:
     QComboBox *m_choice = nullptr;
     QLineEdit *m_nameSpace = nullptr;
     QLineEdit *m_reason;
+    QCheckBox *m_also = nullptr;
     QDialogButtonBox *m_buttons;
 };
 
