@@ -67,7 +67,8 @@ private Q_SLOTS:
         auto gui = open();
         const QStringList pose = portsWritten(*gui, kPose);
         QCOMPARE(pose.size(), 2); // the publisher and the subscriber
-        const QStringList twist = portsWritten(*gui, QStringLiteral("self.frame_prefix() + '/twist'"));
+        const QStringList twist =
+            portsWritten(*gui, QStringLiteral("self.frame_prefix() + '/twist'"));
         QCOMPARE(twist.size(), 1);
         QString offer;
         gui->answer = [&](CorrectionDialog &d) {
@@ -120,7 +121,8 @@ private Q_SLOTS:
     void aPortWithoutTwinsIsNotOffered()
     {
         auto gui = open();
-        const QStringList twist = portsWritten(*gui, QStringLiteral("self.frame_prefix() + '/twist'"));
+        const QStringList twist =
+            portsWritten(*gui, QStringLiteral("self.frame_prefix() + '/twist'"));
         QCOMPARE(twist.size(), 1);
         bool offered = true;
         gui->answer = [&](CorrectionDialog &d) {
