@@ -2,6 +2,7 @@
 #include "aboutdialog.h"
 #include "appsettings.h"
 #include "atomicnodepanel.h"
+#include "changeselector.h"
 #include "comparecontroller.h"
 #include "diagramcontroller.h"
 #include "document.h"
@@ -38,6 +39,9 @@ void MainWindow::createActions()
     m_projects = new ProjectController(m_document, m_logView, this);
     m_navigation = new NavigationController(
         m_document, {m_nodePanel, m_launchPanel, m_diagramPanel, m_sourceView, m_logView}, this);
+    auto *changes =
+        new ChangeSelector(m_document, m_changesView, m_traceability, m_diagramPanel, this);
+    connect(changes, &ChangeSelector::statusMessage, statusBar(), &QStatusBar::showMessage);
 
     m_openAction = new QAction(Icons::open(), tr("&Open Workspace…"), this);
     m_openAction->setShortcut(QKeySequence::Open);

@@ -57,6 +57,12 @@ ArchitectureDiffView::ArchitectureDiffView(QWidget *parent)
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_summary);
     layout->addWidget(m_tree, 1);
+    connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem *item) {
+        bool ok = false;
+        const int i = item ? item->data(0, Qt::UserRole).toInt(&ok) : -1;
+        if (ok && i >= 0 && i < m_changes.size())
+            Q_EMIT changeSelected(m_changes.at(i));
+    });
     setMessage(tr("Compare the recovered architecture with an earlier recovery (an artifact "
                   "folder or a workspace) or a git revision: File › Compare Architecture."));
 }
@@ -64,6 +70,7 @@ ArchitectureDiffView::ArchitectureDiffView(QWidget *parent)
 void ArchitectureDiffView::setMessage(const QString &message)
 {
     m_tree->clear();
+    m_changes.clear();
     m_summary->setText(message);
 }
 
@@ -76,9 +83,11 @@ void ArchitectureDiffView::setChanges(const QList<ArchitectureChange> &changes,
                                       const QString &before, const QString &after)
 {
     m_tree->clear();
+    m_changes = changes;
     int counts[4] = {0, 0, 0, 0};
     QHash<QString, QTreeWidgetItem *> groups;
-    for (const ArchitectureChange &c : changes) {
+    for (int i = 0; i < changes.size(); ++i) {
+        const ArchitectureChange &c = changes.at(i);
         ++counts[int(c.kind)];
         QTreeWidgetItem *group = groups.value(c.scope);
         if (!group) {
@@ -98,6 +107,7 @@ void ArchitectureDiffView::setChanges(const QList<ArchitectureChange> &changes,
         auto *item = new QTreeWidgetItem(
             group, {mark(c.kind) + QLatin1Char(' ') + ArchitectureChange::kindName(c.kind),
                     c.element, what});
+        item->setData(0, Qt::UserRole, i);
         const QColor colour = changeColour(c.kind, palette());
         for (int col = 0; col < 3; ++col)
             item->setForeground(col, colour);
@@ -105,6 +115,7 @@ void ArchitectureDiffView::setChanges(const QList<ArchitectureChange> &changes,
                             : c.kind == ArchitectureChange::Kind::Removed
                                 ? tr("Removed: %1").arg(c.before)
                                 : tr("Before: %1\nAfter: %2").arg(c.before, c.after));
+        item->setToolTip(1, tr("Select the row to show the %1 in the other views").arg(c.element));
     }
     m_tree->expandAll();
     m_summary->setText(

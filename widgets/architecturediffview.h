@@ -27,7 +27,12 @@ public:
     QTreeWidget *tree() const { return m_tree; }
     QString summary() const;
 
+Q_SIGNALS:
+    /// A person made the row of `change` current: show what it is about.
+    void changeSelected(const rosarch::ArchitectureChange &change);
+
 private:
+    QList<ArchitectureChange> m_changes; ///< the rows' changes, by the index in their data
     QLabel *m_summary;
     QTreeWidget *m_tree;
 };
