@@ -2,9 +2,11 @@
 #include "icons.h"
 
 #include <QDir>
+#include <QHash>
 #include <QHeaderView>
 #include <QLabel>
 #include <QScopedValueRollback>
+#include <QSet>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -31,21 +33,38 @@ QString roleName(PortKind kind)
     return TalkersPanel::tr("action client");
 }
 
-/// "1 publisher, 2 subscribers" (or servers and clients).
+bool isProvider(PortKind kind)
+{
+    return kind == PortKind::Publisher || kind == PortKind::ServiceServer ||
+           kind == PortKind::ActionServer;
+}
+
+/// "1 publisher, 2 subscribers" (or servers and clients): node instances, not ports, and only
+/// the active ones; "1 inactive" adds the instances whose condition or guards are false.
 QString counts(const TalkerGroup &group)
 {
-    const qsizetype providers = group.providers();
-    const qsizetype users = group.talkers.size() - providers;
+    QSet<QString> providers, users, active, all;
+    for (const Talker &t : group.talkers) {
+        all.insert(t.instanceId);
+        if (!t.active)
+            continue;
+        active.insert(t.instanceId);
+        (isProvider(t.port.kind) ? providers : users).insert(t.instanceId);
+    }
+    const qsizetype nProviders = providers.size();
+    const qsizetype nUsers = users.size();
     const bool topic = group.family == QLatin1String("topic");
-    const QString p = topic ? (providers == 1 ? TalkersPanel::tr("1 publisher")
-                                              : TalkersPanel::tr("%1 publishers").arg(providers))
-                            : (providers == 1 ? TalkersPanel::tr("1 server")
-                                              : TalkersPanel::tr("%1 servers").arg(providers));
-    const QString u = topic ? (users == 1 ? TalkersPanel::tr("1 subscriber")
-                                          : TalkersPanel::tr("%1 subscribers").arg(users))
-                            : (users == 1 ? TalkersPanel::tr("1 client")
-                                          : TalkersPanel::tr("%1 clients").arg(users));
-    return TalkersPanel::tr("%1, %2").arg(p, u);
+    const QString p = topic ? (nProviders == 1 ? TalkersPanel::tr("1 publisher")
+                                               : TalkersPanel::tr("%1 publishers").arg(nProviders))
+                            : (nProviders == 1 ? TalkersPanel::tr("1 server")
+                                               : TalkersPanel::tr("%1 servers").arg(nProviders));
+    const QString u = topic ? (nUsers == 1 ? TalkersPanel::tr("1 subscriber")
+                                           : TalkersPanel::tr("%1 subscribers").arg(nUsers))
+                            : (nUsers == 1 ? TalkersPanel::tr("1 client")
+                                           : TalkersPanel::tr("%1 clients").arg(nUsers));
+    const qsizetype inactive = all.size() - active.size();
+    return inactive == 0 ? TalkersPanel::tr("%1, %2").arg(p, u)
+                         : TalkersPanel::tr("%1, %2, %3 inactive").arg(p, u).arg(inactive);
 }
 
 QString familyLabel(const QString &family)
@@ -134,15 +153,27 @@ void TalkersPanel::showTalkers(const QString &subject, const QString &scope,
         bold.setBold(true);
         head->setFont(0, bold);
         head->setFirstColumnSpanned(true);
+        // One row per node instance, its ports under it.
+        QHash<QString, QTreeWidgetItem *> instances;
+        QHash<QString, bool> anyActive;
         for (const Talker &t : g.talkers) {
-            auto *row = new QTreeWidgetItem(head);
+            anyActive[t.instanceId] = anyActive.value(t.instanceId) || t.active;
+            QTreeWidgetItem *node = instances.value(t.instanceId);
+            if (!node) {
+                node = new QTreeWidgetItem(head);
+                node->setText(0, t.nodeName);
+                node->setText(3, t.className);
+                node->setData(0, InstanceIdRole, t.instanceId);
+                node->setData(0, PortIdRole, t.port.id);
+                instances.insert(t.instanceId, node);
+                ++total;
+            }
+            auto *row = new QTreeWidgetItem(node);
             row->setIcon(0, Icons::port(t.port.kind));
-            row->setText(0, t.nodeName);
             row->setText(1, roleName(t.port.kind));
             row->setText(2, t.port.nameAsWritten.isEmpty()
                                 ? t.port.id
                                 : tr("%1  %2").arg(t.port.id, t.port.nameAsWritten));
-            row->setText(3, t.className);
             row->setData(0, InstanceIdRole, t.instanceId);
             row->setData(0, PortIdRole, t.port.id);
             const QString tip = talkerToolTip(t);
@@ -151,7 +182,22 @@ void TalkersPanel::showTalkers(const QString &subject, const QString &scope,
                 if (!t.active)
                     row->setForeground(column, palette().brush(QPalette::Disabled, QPalette::Text));
             }
-            ++total;
+        }
+        for (QTreeWidgetItem *node : std::as_const(instances)) {
+            // The instance's row says what its ports do; inactive when none of them is active.
+            QStringList roles;
+            for (int i = 0; i < node->childCount(); ++i)
+                if (!roles.contains(node->child(i)->text(1)))
+                    roles.append(node->child(i)->text(1));
+            const bool active = anyActive.value(node->data(0, InstanceIdRole).toString());
+            node->setText(1, roles.join(tr(", ")));
+            node->setText(2, node->childCount() == 1 ? node->child(0)->text(2)
+                                                     : tr("%1 ports").arg(node->childCount()));
+            node->setIcon(0, node->child(0)->icon(0));
+            node->setToolTip(0, node->child(0)->toolTip(0));
+            for (int column = 0; column < 4 && !active; ++column)
+                node->setForeground(column, palette().brush(QPalette::Disabled, QPalette::Text));
+            node->setExpanded(node->childCount() > 1);
         }
         head->setExpanded(true);
     }

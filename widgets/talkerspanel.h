@@ -11,7 +11,8 @@ class QTreeWidgetItem;
 namespace rosarch {
 
 /// "Talkers": who publishes and who subscribes to a topic (serves and calls a service or an
-/// action), one group per resolved name, one row per node instance and port. Selecting a row
+/// action), one group per resolved name counting node instances (the active ones), one row per
+/// node instance with its ports under it. Selecting a row
 /// asks to go to that instance; the panel keeps its list while the user walks it.
 class TalkersPanel : public QWidget
 {
