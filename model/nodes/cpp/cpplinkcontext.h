@@ -9,7 +9,7 @@
 namespace rosarch {
 
 /// Bound for alias, member and helper chains while linking C++ facts.
-constexpr int kMaxLinkDepth = 8;
+constexpr int kMaxLinkDepth = 12;
 
 struct CppSubstitution;
 

@@ -3,6 +3,7 @@
 #include "cppsyntax.h"
 
 #include <QRegularExpression>
+#include <QScopeGuard>
 
 // Name and type resolution for the linker: port names through members, locals and declared
 // parameters, helper constructor arguments, guards, and interface types through aliases.
@@ -80,6 +81,10 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
         if (isPluginNameParameter(value, ctx))
             return {NameOrigin::Member, QLatin1String(kPluginNamePlaceholder), value.text,
                     QString()};
+        if (CppLinkContext caller; depth < kMaxLinkDepth && !substitutes(ctx)) {
+            if (const CppValue *arg = ownCallArgument(value.index, ctx, &caller))
+                return resolve(*arg, caller, depth + 1);
+        }
         return r;
     case CppValue::Kind::Concatenation:
         return resolveConcatenation(value, ctx, depth);
@@ -237,11 +242,17 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
     CppResolvedName expression{NameOrigin::Expression, text, text, QString()};
     if (depth > kMaxLinkDepth)
         return expression;
+    // `initializeFilter(topic_)` where `initializeFilter(t)` sets `topic_ = join(t)`: the member
+    // read while a class's bindings of it are being resolved is the value another class (a
+    // base) gives it; those bindings are not entered again.
+    thread_local QList<QPair<QString, int>> open;
     if (ctx.cls >= 0) {
         for (int c : m_index.lineage(ctx.cls)) {
             const QList<CppBinding> bindings = facts(c).bindings.value(member);
-            if (bindings.isEmpty())
+            if (bindings.isEmpty() || open.contains(qMakePair(member, c)))
                 continue;
+            open.append(qMakePair(member, c));
+            const auto close = qScopeGuard([] { open.removeLast(); });
             // `name_(name)` beside `LifecycleNode(name, ...)` in every constructor: the node's
             // own name, whichever constructor made it.
             if (std::all_of(bindings.cbegin(), bindings.cend(),
@@ -282,7 +293,7 @@ CppResolvedName CppNameResolver::resolveMember(const QString &member, const QStr
                 CppResolvedName r;
                 const bool composed = b.value.kind == CppValue::Kind::Concatenation ||
                                       b.value.kind == CppValue::Kind::SelfCall;
-                if ((b.value.kind == CppValue::Kind::FunctionParameter && ctx.subst && b.fn) ||
+                if ((b.value.kind == CppValue::Kind::FunctionParameter && b.fn) ||
                     (composed && b.fn)) {
                     r = resolve(b.value, CppLinkContext{ctx.cls, b.fn, b.file, ctx.subst, ctx.self},
                                 depth + 1);

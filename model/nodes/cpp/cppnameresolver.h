@@ -58,6 +58,8 @@ private:
     CppResolvedName resolveConcatenation(const CppValue &value, const CppLinkContext &ctx,
                                          int depth) const;
     bool isPluginNameParameter(const CppValue &value, const CppLinkContext &ctx) const;
+    const CppValue *ownCallArgument(int index, const CppLinkContext &ctx,
+                                    CppLinkContext *caller) const;
     CppResolvedName resolveMember(const QString &member, const QString &text,
                                   const CppLinkContext &ctx, int depth) const;
     CppResolvedName resolveField(const CppValue &value, const CppLinkContext &ctx, int depth) const;

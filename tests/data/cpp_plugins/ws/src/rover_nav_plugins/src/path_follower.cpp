@@ -1,5 +1,6 @@
 #include <nav_msgs/msg/odometry.hpp>
 #include <nav_msgs/msg/path.hpp>
+#include <std_msgs/msg/bool.hpp>
 #include <std_msgs/msg/float64.hpp>
 #include <pluginlib/class_list_macros.hpp>
 #include <visualization_msgs/msg/marker_array.hpp>
@@ -21,6 +22,7 @@ public:
     speed_topic_ = joinWithParentNamespace(speed_topic_);
     speed_sub_ = node->create_subscription<std_msgs::msg::Float64>(
       speed_topic_, 1, [](std_msgs::msg::Float64::SharedPtr) {});
+    readAlarmTopic(plugin_name_);
     odom_sub_ = node->create_subscription<nav_msgs::msg::Odometry>(
       node->declare_parameter(plugin_name_ + ".odom_topic", std::string("odom")), 1,
       [](nav_msgs::msg::Odometry::SharedPtr) {});
@@ -29,7 +31,16 @@ public:
     markers_pub_ = node->create_publisher<visualization_msgs::msg::MarkerArray>("follower_markers", 1);
   }
 
+protected:
+  void initializeAlarm(const std::string & topic) override
+  {
+    alarm_topic_ = joinWithParentNamespace(topic);
+    alarm_sub_ = node_.lock()->create_subscription<std_msgs::msg::Bool>(
+      alarm_topic_, 1, [](std_msgs::msg::Bool::SharedPtr) {});
+  }
+
 private:
+  rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr alarm_sub_;
   std::string plugin_name_;
   std::string speed_topic_;
   rclcpp::Subscription<std_msgs::msg::Float64>::SharedPtr speed_sub_;

@@ -3,14 +3,20 @@
 
 namespace rover_nav_plugins
 {
-// Only computes: no ports, so no classifier of its own.
+// Only computes: no ports. It reads its alarm setting like every controller, so it is a
+// classifier with a parameter and no ports.
 class QuietChecker : public rover_nav_core::Controller
 {
 public:
-  void configure(const rclcpp_lifecycle::LifecycleNode::WeakPtr &, std::string name) override
+  void configure(const rclcpp_lifecycle::LifecycleNode::WeakPtr & parent, std::string name) override
   {
+    node_ = parent;
     name_ = name;
+    readAlarmTopic(name_);
   }
+
+protected:
+  void initializeAlarm(const std::string &) override {}
 
 private:
   std::string name_;
