@@ -105,7 +105,10 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     m_showParameters =
         toggle(m_toolBar, tr("Parameters"), tr("Show ports whose name comes from a parameter"));
     m_showInactive = toggle(m_toolBar, tr("Inactive"),
-                            tr("Show parts and ports whose launch condition or guard is false"));
+                            tr("Show parts and ports whose launch condition or guard is false "
+                               "(hidden at first: a system is read as it runs)"));
+    m_showInactive->setChecked(false);
+    m_options.showInactive = false;
     m_showExternal = toggle(m_toolBar, tr("External"),
                             tr("Show includes of launch files outside the workspace"));
     m_toolBar->addSeparator();

@@ -48,14 +48,20 @@ QPoint scenePoint(DiagramPanel &panel, const QPointF &p)
     return panel.view()->mapFromScene(p);
 }
 
-/// A panel on screen showing the hand-made architecture's root.
+/// A panel on screen showing the hand-made architecture's root: every element, inactive ones
+/// too, unless `asFirstShown` (then as a person first sees it: inactive ones hidden).
 struct ShownPanel
 {
     DiagramLayouter layouter;
     DiagramPanel panel{&layouter};
     bool ok = false;
-    ShownPanel()
+    explicit ShownPanel(bool asFirstShown = false)
     {
+        if (!asFirstShown) {
+            DiagramOptions options = panel.options();
+            options.showInactive = true;
+            panel.setOptions(options);
+        }
         panel.resize(1100, 720);
         panel.show();
         if (!QTest::qWaitForWindowExposed(&panel))
@@ -235,16 +241,21 @@ void TestDiagramPanel::doubleClickOpensTheIncludeAndCrumbsGoBack()
 
 void TestDiagramPanel::filtersHideElements()
 {
-    ShownPanel s;
+    ShownPanel s(true);
     QVERIFY(s.ok);
     DiagramPanel &panel = s.panel;
-    QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
+    // Inactive parts and ports are hidden at first; the toggle shows them and hides them again.
+    QVERIFY(!panel.showInactiveAction()->isChecked());
+    QVERIFY(!panel.options().showInactive);
     QVERIFY(!panel.scene()->item(QStringLiteral("part:part3")));
     QVERIFY(!panel.scene()->item(QStringLiteral("namespace:/robot1/extra")));
     QVERIFY(!panel.scene()->item(QStringLiteral("boundary:p1")));
     QVERIFY(panel.scene()->item(QStringLiteral("part:part1")));
     QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
     QVERIFY(panel.scene()->item(QStringLiteral("part:part3")));
+    QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
+    QVERIFY(!panel.scene()->item(QStringLiteral("part:part3")));
+    QVERIFY(laidOut(panel, [&] { panel.showInactiveAction()->trigger(); }));
 
     QVERIFY(laidOut(panel, [&] { panel.showParametersAction()->trigger(); }));
     QCOMPARE(nodeItem(panel, QStringLiteral("part:part1"))->node().ports.size(), 3);
