@@ -9,6 +9,7 @@
 #include "diagnosticfilterbar.h"
 #include "diagnosticmodel.h"
 #include "diagramcontroller.h"
+#include "diagramfocus.h"
 #include "diagramlayouter.h"
 #include "diagrampanel.h"
 #include "document.h"
@@ -275,6 +276,8 @@ void MainWindow::takeOutDock(QDockWidget *dock)
 
 void MainWindow::resetLayout()
 {
+    if (m_diagramFocus)
+        m_diagramFocus->setFocused(false); // the panels it hid come back with the rest
     const QList<QDockWidget *> docks{m_nodeDock,   m_launchDock, m_diagramDock,
                                      m_sourceDock, m_logDock,    m_suggestionDock};
     for (QDockWidget *dock : docks)
@@ -331,6 +334,8 @@ void MainWindow::restoreSession()
 
 void MainWindow::saveSession()
 {
+    if (m_diagramFocus)
+        m_diagramFocus->setFocused(false); // the layout to come back to, not the focus
     AppSettings settings;
     settings.setWindowGeometry(saveGeometry());
     settings.setWindowState(saveState());

@@ -24,6 +24,7 @@ class CorrectionModel;
 class CorrectionPanel;
 class InspectorPanel;
 class DiagramController;
+class DiagramFocus;
 class DiagramLayouter;
 class DiagramPanel;
 class DiagnosticModel;
@@ -108,6 +109,7 @@ public:
     QDockWidget *correctionsDock() const { return m_correctionsDock; }
     QDockWidget *inspectorDock() const { return m_inspectorDock; }
     NavigationController *navigation() const { return m_navigation; }
+    DiagramFocus *diagramFocus() const { return m_diagramFocus; }
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -185,6 +187,7 @@ private:
     RenderController *m_render = nullptr;
     ProjectController *m_projects = nullptr;
     NavigationController *m_navigation = nullptr; ///< back and forward over the panels
+    DiagramFocus *m_diagramFocus = nullptr;       ///< View → Focus Diagram
     QToolBar *m_toolBar = nullptr;
 
     QAction *m_openAction = nullptr;

@@ -5,6 +5,7 @@
 #include "changeselector.h"
 #include "comparecontroller.h"
 #include "diagramcontroller.h"
+#include "diagramfocus.h"
 #include "document.h"
 #include "icons.h"
 #include "launchtreepanel.h"
@@ -282,6 +283,9 @@ void MainWindow::createMenus()
     view->addAction(m_inspectorDock->toggleViewAction());
     m_toolBar->toggleViewAction()->setText(tr("&Toolbar"));
     view->addAction(m_toolBar->toggleViewAction());
+    view->addSeparator();
+    m_diagramFocus = new DiagramFocus(this, m_diagramDock);
+    view->addAction(m_diagramFocus->action());
     view->addSeparator();
     view->addAction(m_watchAction);
     view->addAction(m_resetLayoutAction);

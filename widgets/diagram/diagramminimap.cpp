@@ -54,8 +54,8 @@ void DiagramMinimap::updateVisibility()
     // The drawing, not the margin around it, decides.
     const bool fits = m_picture.isNull() || shown.adjusted(-1, -1, 1, 1).contains(m_contentRect);
     place();
-    setVisible(!fits);
-    if (!fits)
+    setVisible(!fits && m_cornerFree);
+    if (isVisible())
         raise();
 }
 
@@ -65,8 +65,32 @@ void DiagramMinimap::place()
         m_picture.isNull() ? QSizeF(kLongSide, kLongSide) : m_picture.deviceIndependentSize();
     const QRect area = m_view->viewport()->geometry();
     const QSize outer = size.toSize() + QSize(6, 6);
-    setGeometry(area.right() - outer.width() - kMargin, area.bottom() - outer.height() - kMargin,
-                outer.width(), outer.height());
+    const int left = area.left() + kMargin;
+    const int right = area.right() - outer.width() - kMargin;
+    const int top = area.top() + kMargin;
+    const int bottom = area.bottom() - outer.height() - kMargin;
+    // The kept-clear element as the view shows it, in the view's coordinates (as ours).
+    const QRect clear =
+        m_keepClear.isEmpty()
+            ? QRect()
+            : m_view->mapFromScene(m_keepClear).boundingRect().translated(area.topLeft());
+    m_cornerFree = false;
+    for (const QPoint &corner :
+         {QPoint(right, bottom), QPoint(left, bottom), QPoint(right, top), QPoint(left, top)}) {
+        const QRect at(corner, outer);
+        if (clear.isEmpty() || !at.intersects(clear)) {
+            setGeometry(at);
+            m_cornerFree = true;
+            return;
+        }
+    }
+    setGeometry(right, bottom, outer.width(), outer.height());
+}
+
+void DiagramMinimap::setKeepClear(const QRectF &sceneRect)
+{
+    m_keepClear = sceneRect;
+    updateVisibility();
 }
 
 QRectF DiagramMinimap::pictureRect() const

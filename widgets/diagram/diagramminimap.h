@@ -24,6 +24,11 @@ public:
     QRectF viewportRect() const;
     /// The scene point under a minimap position.
     QPointF toScene(const QPointF &pos) const;
+    /// Never covers this part of the scene (the current search match, the selection): the
+    /// minimap takes the first corner of the view clear of it (bottom right, bottom left, top
+    /// right, top left), or hides while none is. An empty rectangle frees every corner.
+    void setKeepClear(const QRectF &sceneRect);
+    QRectF keepClear() const { return m_keepClear; }
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -35,6 +40,7 @@ private:
     static constexpr int kLongSide = 180;
     static constexpr int kMargin = 10;
 
+    /// Takes the first corner clear of m_keepClear (m_cornerFree says whether there was one).
     void place();
     QRectF pictureRect() const; ///< where the scene is drawn inside the widget
     void centreAt(const QPointF &pos);
@@ -42,8 +48,10 @@ private:
     QGraphicsView *m_view;
     QWidget *m_viewport; ///< the view's, kept: the filter must not ask a view being destroyed
     QPixmap m_picture;
-    QRectF m_sceneRect;   ///< what m_picture shows
-    QRectF m_contentRect; ///< the drawing inside it, without the scene's margin
+    QRectF m_sceneRect;       ///< what m_picture shows
+    QRectF m_contentRect;     ///< the drawing inside it, without the scene's margin
+    QRectF m_keepClear;       ///< in scene coordinates
+    bool m_cornerFree = true; ///< place() found a corner clear of m_keepClear
 };
 
 } // namespace rosarch

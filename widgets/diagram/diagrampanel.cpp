@@ -261,6 +261,7 @@ void DiagramPanel::showComposite(const QString &instanceId)
         m_view->setBanner({});
         m_fitPending = true;
         m_scene->clearDiagram();
+        m_view->minimap()->setKeepClear({});
     }
     updateBreadcrumbs();
     relayout();
@@ -406,6 +407,8 @@ void DiagramPanel::updateSearch(bool centre)
     m_matchIndex = m_matches.isEmpty() ? -1 : 0;
     if (centre && m_matchIndex >= 0)
         selectKey(m_matches.first());
+    if (m_matchIndex < 0)
+        m_view->minimap()->setKeepClear({});
     m_matchCount->setText(matchText());
 }
 
@@ -441,6 +444,7 @@ void DiagramPanel::selectKey(const QString &key)
     m_scene->clearSelection();
     item->setSelected(true);
     m_view->centerOn(item);
+    m_view->minimap()->setKeepClear(item->sceneBoundingRect()); // never under the minimap
 }
 
 QString DiagramPanel::drawnKey(const RosNodePart &part) const

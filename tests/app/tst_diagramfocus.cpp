@@ -1,0 +1,77 @@
+// View → Focus Diagram (Ctrl+Shift+D) gives the composed diagram the whole window and gives the
+// other panels back as they were; the layout remembered on quitting is the one to come back to.
+#include "diagramfocus.h"
+#include "diagrampanel.h"
+#include "mainwindow.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QSettings>
+#include <QToolBar>
+#include <QtTest>
+
+using namespace rosarch;
+
+class TestDiagramFocus : public QObject
+{
+    Q_OBJECT
+
+    static QStringList visibleDocks(const MainWindow &w)
+    {
+        QStringList out;
+        for (QDockWidget *dock : w.findChildren<QDockWidget *>())
+            if (dock->isVisible())
+                out << dock->objectName();
+        out.sort();
+        return out;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings(QStringLiteral("rosarch"), QCoreApplication::applicationName()).clear();
+    }
+
+    void theDiagramTakesTheWindowAndGivesItBack()
+    {
+        MainWindow w;
+        w.resize(1440, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QApplication::setActiveWindow(&w);
+        QDockWidget *diagramDock = w.findChild<QDockWidget *>(QStringLiteral("diagramDock"));
+        QVERIFY(diagramDock);
+        const QStringList before = visibleDocks(w);
+        QVERIFY(before.size() > 3);
+        const QSize small = diagramDock->size();
+        auto *toolBar = w.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
+        QVERIFY(toolBar && toolBar->isVisible());
+
+        QTest::keyClick(&w, Qt::Key_D, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_COMPARE(visibleDocks(w), QStringList{QStringLiteral("diagramDock")});
+        QVERIFY(w.diagramFocus()->action()->isChecked());
+        QVERIFY(!toolBar->isVisible());
+        QTRY_VERIFY(diagramDock->width() > w.width() * 9 / 10);
+        QVERIFY(diagramDock->height() > small.height());
+
+        QTest::keyClick(&w, Qt::Key_D, Qt::ControlModifier | Qt::ShiftModifier);
+        QTRY_COMPARE(visibleDocks(w), before);
+        QVERIFY(!w.diagramFocus()->action()->isChecked());
+        QVERIFY(toolBar->isVisible());
+        QTRY_COMPARE(diagramDock->size(), small);
+
+        // Focused when the window closes: what is remembered is the layout with every panel.
+        w.diagramFocus()->action()->trigger();
+        QTRY_COMPARE(visibleDocks(w), QStringList{QStringLiteral("diagramDock")});
+        w.close();
+        QVERIFY(!w.diagramFocus()->isFocused());
+        MainWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QTRY_COMPARE(visibleDocks(again), before);
+    }
+};
+
+QTEST_MAIN(TestDiagramFocus)
+#include "tst_diagramfocus.moc"
