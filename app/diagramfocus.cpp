@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QGraphicsView>
 #include <QMainWindow>
 #include <QToolBar>
 
@@ -36,6 +37,11 @@ void DiagramFocus::setFocused(bool focused)
     } else {
         m_window->restoreState(std::exchange(m_saved, {}));
     }
+    // The focus stays in the diagram: left to Qt, it lands in the first panel shown again, and
+    // a table given the focus without a current row makes its first row current (the Log's
+    // first finding then moved the source pane).
+    if (auto *view = m_diagramDock->findChild<QGraphicsView *>())
+        view->setFocus(Qt::OtherFocusReason);
     const QSignalBlocker block(m_action);
     m_action->setChecked(focused);
 }

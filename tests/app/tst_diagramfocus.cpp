@@ -57,6 +57,7 @@ private Q_SLOTS:
 
         QTest::keyClick(&w, Qt::Key_D, Qt::ControlModifier | Qt::ShiftModifier);
         QTRY_COMPARE(visibleDocks(w), before);
+        QVERIFY(w.diagramPanel()->isAncestorOf(QApplication::focusWidget())); // still there
         QVERIFY(!w.diagramFocus()->action()->isChecked());
         QVERIFY(toolBar->isVisible());
         QTRY_COMPARE(diagramDock->size(), small);
