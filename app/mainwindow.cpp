@@ -284,11 +284,16 @@ void MainWindow::resetLayout()
         takeOutDock(dock);
     // One nested dock area fills the window (there is no central widget): the model views
     // side by side on top (atomic nodes | launch tree | diagram | source), the log across the
-    // bottom.
-    // Growing the window grows them all.
+    // bottom. Growing the window grows them all. In a small window the Log takes the whole bottom
+    // row, Suggestions a tab beside it: side by side at 1024 px its filter bar took three lines and
+    // the table showed two findings.
+    const bool small = width() < 1280 || height() < 800;
     addDockWidget(Qt::TopDockWidgetArea, m_nodeDock);
-    splitDockWidget(m_nodeDock, m_suggestionDock, Qt::Vertical);
-    splitDockWidget(m_suggestionDock, m_logDock, Qt::Horizontal);
+    splitDockWidget(m_nodeDock, small ? m_logDock : m_suggestionDock, Qt::Vertical);
+    if (small)
+        tabifyDockWidget(m_logDock, m_suggestionDock);
+    else
+        splitDockWidget(m_suggestionDock, m_logDock, Qt::Horizontal);
     splitDockWidget(m_nodeDock, m_launchDock, Qt::Horizontal);
     splitDockWidget(m_launchDock, m_diagramDock, Qt::Horizontal);
     splitDockWidget(m_diagramDock, m_sourceDock, Qt::Horizontal);
@@ -312,6 +317,10 @@ void MainWindow::resetLayout()
     const int h = std::max(height(), 600);
     resizeDocks({m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock},
                 {w * 2 / 10, w * 2 / 10, w * 4 / 10, w * 2 / 10}, Qt::Horizontal);
+    if (small) {
+        resizeDocks({m_nodeDock, m_logDock}, {h * 6 / 10, h * 4 / 10}, Qt::Vertical);
+        return;
+    }
     resizeDocks({m_nodeDock, m_suggestionDock}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
     resizeDocks({m_suggestionDock, m_logDock}, {w / 2, w / 2}, Qt::Horizontal);
 }
