@@ -9,22 +9,21 @@ namespace rosarch {
 
 namespace {
 
-// Whether an item's test is decided false. An `else if` chain tests one variable several
-// times (`!(type == "scan") && type == "pointcloud"`): each part is decided with the item's
-// value when every part tests the same variable; otherwise nothing is decided.
+// Whether an item's test is decided false. The test's first part compares the variable that
+// the item's parameter is read into; an `else if` chain compares it again
+// (`!(type == "scan") && type == "pointcloud" && !topic.empty()`). The test fails when one of
+// the parts on that variable is false with the item's value; parts on others are not decided.
 bool itemTestFails(const QString &guard, const QString &value)
 {
     static const QRegularExpression operand(
         QStringLiteral(R"(^[\s!(]*([A-Za-z_][A-Za-z0-9_.>-]*)\s*(?:==|!=))"));
     const QStringList parts = guard.split(QLatin1String("&&"));
-    QString tested;
+    const QRegularExpressionMatch first = operand.match(parts.constFirst());
+    if (!first.hasMatch())
+        return false;
     for (const QString &part : parts) {
-        const QRegularExpressionMatch m = operand.match(part);
-        if (!m.hasMatch() || (!tested.isEmpty() && m.captured(1) != tested))
-            return false;
-        tested = m.captured(1);
-    }
-    for (const QString &part : parts) {
+        if (operand.match(part).captured(1) != first.captured(1))
+            continue;
         bool known = false;
         if (!RosNames::evaluateGuard(part.trimmed(), value, &known) && known)
             return true;
@@ -93,6 +92,12 @@ void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
             one.parameter.clear(); // decided: the item names it
         } else {
             one.parameter.replace(pattern, item); // `scan.topic`, looked up as any other
+            bool set = false;
+            settingValue(instance, one.parameter, &set);
+            if (!set && p.name.isEmpty()) { // declared without a default, and not given
+                one.nameOrigin = NameOrigin::Expression;
+                one.name = QStringLiteral("$(%1)").arg(one.parameter);
+            }
         }
         // Built per item only where the item passes the test (`{sources}.type == "scan"`);
         // an item the instance does not type keeps the port, undecided.

@@ -255,9 +255,11 @@ void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
         const bool plain = v.kind == CppValue::Kind::Expression && !v.text.isEmpty() &&
                            (v.text.at(0).isLetter() || v.text.at(0) == u'_') &&
                            !v.text.contains(u'(') && !v.text.contains(u' ');
+        // (an OutArgument too: a name read into a local, handed on to a method of the class)
         handsSomething = handsSomething || plain || v.kind == CppValue::Kind::SelfNode ||
                          v.kind == CppValue::Kind::FunctionParameter ||
-                         v.kind == CppValue::Kind::Member;
+                         v.kind == CppValue::Kind::Member ||
+                         v.kind == CppValue::Kind::OutArgument;
         call.arguments.append(v);
     }
     call.evidence = m_tree.evidence(where);

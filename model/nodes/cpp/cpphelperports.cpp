@@ -97,11 +97,16 @@ void CppHelperPorts::addHelperPorts(const CppInstantiation &inst, const CppLinkC
         p.viaEvidence.prepend(inst.evidence);
         // `if (type == "scan") sources_.push_back(make_shared<Scan>(...))`: a port of the
         // helper exists where the helper is built, decided per item when the test is.
-        if (p.guard.isEmpty() && !guardParameter.isEmpty()) {
-            p.guard = inst.guard;
+        // A port's own test is kept beside it; the construction's decides where the port's
+        // does not, and always where it tests an item of a list (`{sources}.type`).
+        if (!guardParameter.isEmpty() &&
+            (p.guardParameter.isEmpty() || guardParameter.contains(u'{'))) {
+            p.guard = p.guard.isEmpty() ? inst.guard
+                                        : QStringLiteral("%1 && %2").arg(inst.guard, p.guard);
             p.guardParameter = guardParameter;
-            if (guardDefault != guardParameter && !guardDefault.contains(u'{'))
-                p.guardDefault = guardDefault;
+            p.guardDefault = guardDefault != guardParameter && !guardDefault.contains(u'{')
+                                 ? guardDefault
+                                 : QString();
         }
     }
     *ports += found;

@@ -164,7 +164,8 @@ CppBinding CppNameResolver::outBinding(const QString &function, int index,
 
 // A parameter whose name is built (`source_name_ + ".topic"`): decided when the name resolves
 // to a literal or to a pattern over a list parameter's items (`{sources}.topic`), which the
-// instance expands. The default written after the name (`parts[1]`) names the port until then.
+// instance expands. The default written after the name (`parts[1]`) names the port until then;
+// without one the name is empty, which only an instance's value fills.
 CppResolvedName CppNameResolver::resolveBuiltParameter(const CppValue &value,
                                                        const CppLinkContext &ctx, int depth) const
 {
@@ -185,7 +186,8 @@ CppResolvedName CppNameResolver::resolveBuiltParameter(const CppValue &value,
         def = resolve(value.parts.at(1), ctx, depth + 1);
     const bool hasDefault = def.origin == NameOrigin::Literal ||
                             (def.origin == NameOrigin::Parameter && def.name == name.parameter);
-    return {NameOrigin::Parameter, hasDefault ? def.name : name.name, value.text, name.name};
+    // without a default the name is only the instance's value: empty until it is given
+    return {NameOrigin::Parameter, hasDefault ? def.name : QString(), value.text, name.name};
 }
 
 // Each part resolved and joined; the whole stays the expression when a part cannot be. A part

@@ -41,14 +41,18 @@ protected:
   rclcpp::Subscription<sensor_msgs::msg::LaserScan>::SharedPtr sub_;
 };
 
-// A sonar of the hub: its ranges arrive on `<feed name>/range`.
+// A sonar of the hub: its ranges arrive on the topic `<feed name>.range_topic` names, which
+// has no default.
 class SonarFeed
 {
 public:
   SonarFeed(rclcpp::Node * node, const std::string & feed_name)
   {
-    sub_ = node->create_subscription<sensor_msgs::msg::Range>(
-      feed_name + "/range", 10, [](sensor_msgs::msg::Range::SharedPtr) {});
+    const std::string topic = node->declare_parameter<std::string>(feed_name + ".range_topic");
+    if (!topic.empty()) {
+      sub_ = node->create_subscription<sensor_msgs::msg::Range>(
+        topic, 10, [](sensor_msgs::msg::Range::SharedPtr) {});
+    }
   }
 
 private:
