@@ -258,8 +258,7 @@ void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
         // (an OutArgument too: a name read into a local, handed on to a method of the class)
         handsSomething = handsSomething || plain || v.kind == CppValue::Kind::SelfNode ||
                          v.kind == CppValue::Kind::FunctionParameter ||
-                         v.kind == CppValue::Kind::Member ||
-                         v.kind == CppValue::Kind::OutArgument;
+                         v.kind == CppValue::Kind::Member || v.kind == CppValue::Kind::OutArgument;
         call.arguments.append(v);
     }
     call.evidence = m_tree.evidence(where);
