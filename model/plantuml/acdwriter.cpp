@@ -58,7 +58,11 @@ QString AcdWriter::write(const AtomicNode &node)
     }
     out += QStringLiteral("}\n");
     for (const Port &p : node.ports) {
-        const QString caption = QStringLiteral("%1\\n%2").arg(p.id, label(p.name));
+        // a name only an instance's value gives (declared without a default): the parameter
+        const QString shown = p.name.isEmpty() && !p.parameter.isEmpty()
+                                  ? QStringLiteral("$(%1)").arg(p.parameter)
+                                  : p.name;
+        const QString caption = QStringLiteral("%1\\n%2").arg(p.id, label(shown));
         out += comment(p);
         if (isTopic(p.kind)) {
             out += QStringLiteral("frame \"%1\" as topic_%2 {\n").arg(caption, p.id);
