@@ -24,6 +24,7 @@
 
 #include <Qsci/qsciscintilla.h>
 
+#include <QAction>
 #include <QLineEdit>
 #include <QScrollBar>
 #include <QSettings>
@@ -182,6 +183,11 @@ private Q_SLOTS:
         m_window->resize(1600, 1000);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        // The layout a 1600 x 1000 window gets (the window was built at its small first size).
+        QTRY_COMPARE(m_window->width(), 1600);
+        for (QAction *a : m_window->findChildren<QAction *>())
+            if (a->text() == QStringLiteral("&Reset Layout"))
+                a->trigger();
         m_window->openWorkspace(ws);
         QTRY_VERIFY_WITH_TIMEOUT(!doc()->architecture().composites.isEmpty(), 60000);
         QTRY_VERIFY_WITH_TIMEOUT(
