@@ -53,7 +53,8 @@ configure() {
   local dir=$1; shift
   cmake -S . -B "$dir" -G Ninja -DROSARCH_GRAMMAR_DIR="$grammars" \
     -DROSARCH_PLANTUML_JAR="$PWD/$build_dir/_plantuml/plantuml.jar" \
-    -DROSARCH_SARIF_DIR="$PWD/$build_dir/_sarif" -DROSARCH_MERMAID_DIR="$PWD/$build_dir/_mermaid" "$@"
+    -DROSARCH_SARIF_DIR="$PWD/$build_dir/_sarif" -DROSARCH_MERMAID_DIR="$PWD/$build_dir/_mermaid" \
+    -DROSARCH_SITE_TOOLS_DIR="$PWD/$build_dir/_sitetools" "$@"
 }
 
 # configure_and_build <dir> <cmake options...>
