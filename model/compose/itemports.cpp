@@ -1,4 +1,5 @@
 #include "itemports.h"
+#include "parameterview.h"
 #include "rosnames.h"
 
 #include <QRegularExpression>
@@ -73,11 +74,7 @@ void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
     }
     const QString pattern = QStringLiteral("{%1}").arg(list);
     QSet<QString> seen;
-    for (QString item : items.mid(1, items.size() - 2).split(u',')) {
-        item = item.trimmed();
-        if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
-            item.back() == item.front())
-            item = item.mid(1, item.size() - 2);
+    for (const QString &item : parameterListItems(items)) {
         if (item.isEmpty() || seen.contains(item))
             continue;
         seen.insert(item);

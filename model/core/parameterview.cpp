@@ -6,6 +6,22 @@
 
 namespace rosarch {
 
+QStringList parameterListItems(const QString &value)
+{
+    const QString list = value.trimmed();
+    if (!list.startsWith(u'[') || !list.endsWith(u']'))
+        return {};
+    QStringList out;
+    for (QString item : list.mid(1, list.size() - 2).split(u',')) {
+        item = item.trimmed();
+        if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
+            item.back() == item.front()) // `['a', 'b']`: the items, not their quotes
+            item = item.mid(1, item.size() - 2);
+        out << item;
+    }
+    return out;
+}
+
 ParameterView::ParameterView(const AtomicNodeList &nodes) : m_nodes(nodes)
 {
     for (const AtomicNode &n : nodes.nodes)
@@ -71,11 +87,7 @@ QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
             expanded.append(d);
             continue;
         }
-        for (QString item : list->value.mid(1, list->value.size() - 2).split(u',')) {
-            item = item.trimmed();
-            if (item.size() >= 2 && (item.front() == u'\'' || item.front() == u'"') &&
-                item.back() == item.front()) // `['a', 'b']`: the items, not their quotes
-                item = item.mid(1, item.size() - 2);
+        for (const QString &item : parameterListItems(list->value)) {
             ParameterDeclaration one = d;
             one.name.replace(m.capturedStart(), m.capturedLength(), item);
             if (!item.isEmpty())

@@ -11,6 +11,10 @@ namespace rosarch {
 
 /// One parameter of a node instance (blueprint §1): what its class, or a plugin it loads,
 /// declares, joined with the value in effect and where that value comes from.
+/// The items of a list value as the parameters give it (`[a, 'b']`), without their quotes;
+/// empty when `value` is no list.
+QStringList parameterListItems(const QString &value);
+
 struct InstanceParameter
 {
     QString name;   ///< as the instance's node knows it (`FollowPath.max_vel_x`)
