@@ -231,7 +231,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             base.replace(QLatin1String(kNodeNamePlaceholder), nodeName);
         else if (namedByNode)
             pp.resolved = false;
-        if (!itemList(p).isEmpty()) // a list the instance does not give
+        if (!itemList(p).isEmpty() || !loadedPluginClass(p).isEmpty()) // not given by it
             pp.resolved = false;
         if (p.nameOrigin == NameOrigin::Parameter) {
             pp.parameterDerived = true;
@@ -437,7 +437,15 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                     const NodeInstance *container = nullptr;
                     if (!n.container.isEmpty())
                         container = instances.value(n.container, byName.value(n.container));
-                    part.ports = resolvePorts(*cls, n, container);
+                    if (std::any_of(cls->ports.cbegin(), cls->ports.cend(), [](const Port &p) {
+                            return !loadedPluginClass(p).isEmpty();
+                        })) { // names per loaded plugin: the class as this instance loads them
+                        AtomicNode perPlugin = *cls;
+                        perPlugin.ports = expandLoadedPlugins(cls->ports, n, pluginClasses);
+                        part.ports = resolvePorts(perPlugin, n, container);
+                    } else {
+                        part.ports = resolvePorts(*cls, n, container);
+                    }
                     part.ports += pluginPorts(pluginClasses, n, container);
                 } else {
                     part.name = n.nodeName.isEmpty() ? n.execName : n.nodeName;

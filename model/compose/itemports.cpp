@@ -5,6 +5,8 @@
 #include <QRegularExpression>
 #include <QSet>
 
+#include <algorithm>
+
 // Ports named per item of a list parameter (blueprint §1 "Names per instance").
 namespace rosarch {
 
@@ -32,7 +34,115 @@ bool itemTestFails(const QString &guard, const QString &value)
     return false;
 }
 
+QString unqualified(QString name)
+{
+    const qsizetype angle = name.indexOf(u'<');
+    if (angle >= 0)
+        name.truncate(angle);
+    return name.section(QLatin1String("::"), -1).trimmed();
+}
+
+// Whether plugin class `cls` is, or derives from, the class `base` (unqualified names), through
+// the bases of the plugin classes the model knows (`VoxelLayer : ObstacleLayer : CostmapLayer`).
+bool derivesFrom(const AtomicNode &cls, const QString &base,
+                 const QHash<QString, const AtomicNode *> &byName)
+{
+    QStringList pending{cls.className};
+    QSet<QString> seen;
+    constexpr int kMaxBases = 64; // a lineage is a few classes; a bound against odd models
+    while (!pending.isEmpty() && seen.size() < kMaxBases) {
+        const QString name = unqualified(pending.takeFirst());
+        if (name == base)
+            return true;
+        if (seen.contains(name))
+            continue;
+        seen.insert(name);
+        if (const AtomicNode *known = byName.value(name))
+            pending += known->baseClasses;
+    }
+    return false;
+}
+
+const AtomicNode *pluginClass(const QString &value,
+                              const QHash<QString, const AtomicNode *> &pluginClasses)
+{
+    QString written = value.trimmed();
+    written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
+    if (written.startsWith(QLatin1String("::")))
+        written = written.mid(2);
+    return pluginClasses.value(written);
+}
+
+// `grid != nullptr && ready`: `ready`. The loop over loaded plugins tests the cast it makes
+// to the class that has the port; for a plugin of that class the test holds.
+QString withoutNullTests(const QString &guard)
+{
+    static const QRegularExpression nullTest(QStringLiteral(
+        R"(^\s*\(?\s*(?:[A-Za-z_]\w*\s*!=\s*(?:nullptr|NULL)|(?:nullptr|NULL)\s*!=\s*[A-Za-z_]\w*)\s*\)?\s*$)"));
+    QStringList kept;
+    for (const QString &part : guard.split(QLatin1String("&&"), Qt::SkipEmptyParts))
+        if (!nullTest.match(part).hasMatch())
+            kept.append(part.trimmed());
+    return kept.join(QLatin1String(" && "));
+}
+
+QString portKey(const QString &item)
+{
+    QString key;
+    for (const QChar c : item)
+        key += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
+    return key;
+}
+
 } // namespace
+
+QString loadedPluginClass(const Port &p)
+{
+    const QLatin1String prefix(RosNames::kLoadedPluginPrefix);
+    if (p.nameOrigin != NameOrigin::Parameter || !p.parameter.startsWith(prefix) ||
+        !p.parameter.endsWith(u'}'))
+        return {};
+    return p.parameter.mid(prefix.size(), p.parameter.size() - prefix.size() - 1);
+}
+
+// `layer->getName() + "_raw"` for each layer a costmap loads: one port per loaded plugin whose
+// class derives from the layer class the loop casts to (blueprint §1 "Names per instance").
+QList<Port> expandLoadedPlugins(const QList<Port> &ports, const NodeInstance &instance,
+                                const QHash<QString, const AtomicNode *> &pluginClasses)
+{
+    QHash<QString, const AtomicNode *> byName; // unqualified, for the bases as written
+    for (const AtomicNode *n : pluginClasses)
+        byName.insert(n->className, n);
+    QList<Port> out;
+    for (const Port &p : ports) {
+        const QString base = loadedPluginClass(p);
+        const bool aPluginBase =
+            !base.isEmpty() &&
+            std::any_of(pluginClasses.cbegin(), pluginClasses.cend(),
+                        [&](const AtomicNode *n) { return derivesFrom(*n, base, byName); });
+        if (!aPluginBase || instance.plugins.isEmpty()) {
+            out.append(p); // not a plugin class, or no plugin loaded: only known at run time
+            continue;
+        }
+        for (const ParameterSetting &plugin : instance.plugins) {
+            const AtomicNode *cls = pluginClass(plugin.value, pluginClasses);
+            Port one = p;
+            if (!cls) // a class outside the workspace: it may be one
+                one.guard = QStringLiteral("%1 is a %2").arg(plugin.name, base);
+            else if (!derivesFrom(*cls, base, byName))
+                continue;
+            else // the cast's null test (`layer != nullptr`) holds for this plugin
+                one.guard = withoutNullTests(p.guard);
+            one.id = QStringLiteral("%1_%2").arg(p.id, portKey(plugin.name));
+            one.name = p.parameterPrefix + plugin.name + p.parameterSuffix;
+            one.parameter.clear(); // decided: the plugin's name
+            one.parameterPrefix.clear();
+            one.parameterSuffix.clear();
+            out.append(one);
+        }
+    }
+    return out;
+}
 
 QString settingValue(const NodeInstance &instance, const QString &name, bool *found)
 {
@@ -79,10 +189,7 @@ void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
             continue;
         seen.insert(item);
         Port one = p;
-        QString key;
-        for (const QChar c : item)
-            key += c.isLetterOrNumber() && c.unicode() < 128 ? c : QLatin1Char('_');
-        one.id = QStringLiteral("%1_%2").arg(p.id, key);
+        one.id = QStringLiteral("%1_%2").arg(p.id, portKey(item));
         one.name.replace(pattern, item); // the item, or a default that names it
         if (p.parameter == pattern) {
             one.name = p.parameterPrefix + item + p.parameterSuffix;

@@ -1,8 +1,10 @@
 #pragma once
 
+#include "atomicnode.h"
 #include "launchdependencies.h"
 #include "port.h"
 
+#include <QHash>
 #include <QList>
 #include <QString>
 
@@ -19,5 +21,16 @@ QString itemList(const Port &p);
 /// item, or read from the parameter the item names; an item whose test (`{sources}.type`)
 /// fails gets none. Without a list value the port is appended as it is.
 void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out);
+
+/// The class `{plugin:Type}` names in port `p`'s parameter (a name per loaded plugin of that
+/// class, RosNames' kLoadedPluginPrefix), or "".
+QString loadedPluginClass(const Port &p);
+
+/// The ports of `ports` with one port per plugin the instance loads whose class is, or derives
+/// from, the class `{plugin:Type}` names, each named by the plugin's name; `pluginClasses` are
+/// the model's plugin classes by qualified name. A port whose class no plugin class of the
+/// model derives from, or whose instance loads no plugin, stays as it is.
+QList<Port> expandLoadedPlugins(const QList<Port> &ports, const NodeInstance &instance,
+                                const QHash<QString, const AtomicNode *> &pluginClasses);
 
 } // namespace rosarch

@@ -7,9 +7,13 @@ namespace rosarch {
 
 namespace {
 
-bool isRosName(const QString &name)
+// A ROS name, where a placeholder an instance fills (`{plugin}`, `{sources}`,
+// `{plugin:CostmapLayer}`) stands for a name part.
+bool isRosName(QString name)
 {
-    static const QRegularExpression ros(QStringLiteral("^(~/?|/)?[A-Za-z_{][A-Za-z0-9_{}/~]*$"));
+    static const QRegularExpression placeholder(QStringLiteral(R"(\{[A-Za-z0-9_.:]+\})"));
+    static const QRegularExpression ros(QStringLiteral("^(~/?|/)?[A-Za-z_][A-Za-z0-9_/~]*$"));
+    name.replace(placeholder, QStringLiteral("x"));
     return ros.match(name).hasMatch();
 }
 

@@ -17,6 +17,10 @@ QString scopeRelative(const QString &name);
 /// A name that code joins to the parent of its node's namespace (navigation2's costmap layers,
 /// `joinWithParentNamespace(topic)`): `{parent_namespace}/topic` until the instance is known.
 inline constexpr char kParentNamespacePlaceholder[] = "{parent_namespace}";
+/// A name per pluginlib plugin a node loads whose class derives from `Type`: navigation2's
+/// costmap publishes each loaded CostmapLayer under the layer's name (`layer->getName()` in a
+/// loop over its layers). `{plugin:Type}` until the instance's loaded plugins decide it.
+inline constexpr char kLoadedPluginPrefix[] = "{plugin:";
 /// `{parent_namespace}/map` in node namespace `/robot/global_costmap`: `/robot/map`; an absolute
 /// name after the placeholder stays itself; any other name is returned as it is.
 QString withParentNamespace(const QString &name, const QString &nodeNamespace);

@@ -160,7 +160,8 @@ private:
                                                 const Frame &frame, const NodeInstance &n,
                                                 const AtomicNode *cls, QList<Unresolved> *u);
     /// The plugins parameters name the pluginlib way: `FollowPath.plugin: "pkg::Class"` (or
-    /// "pkg/Class") loads plugin FollowPath of that class.
+    /// "pkg/Class") loads plugin FollowPath of that class, when another parameter names it
+    /// (`controller_plugins: [FollowPath]`): a plugin no list names is not loaded.
     static QList<ParameterSetting> pluginsOf(const QList<ParameterSetting> &parameters);
     /// A parameter file given to a node (`--params-file`, RewrittenYaml), read once; null, with
     /// a diagnostic, when it is not in the workspace.

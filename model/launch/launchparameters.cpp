@@ -1,11 +1,13 @@
 // LaunchExecutor's parameters: parameter files, what an instance ends up with, its plugins.
 #include "launchexecutor.h"
 #include "parameter.h"
+#include "parameterview.h"
 #include "rosnames.h"
 #include "sourcereader.h"
 
 #include <QHash>
 #include <QRegularExpression>
+#include <QSet>
 
 #include <algorithm>
 
@@ -14,10 +16,28 @@ namespace rosarch {
 QList<ParameterSetting> LaunchExecutor::pluginsOf(const QList<ParameterSetting> &parameters)
 {
     static const QRegularExpression cls(QStringLiteral(R"(^[A-Za-z_]\w*(::|/)[A-Za-z_][\w:/]*$)"));
+    // The names the instance's parameters give (`plugins: [voxel_layer, inflation_layer]`,
+    // `progress_checker_plugin: progress_checker`), also under the list's own prefix.
+    QSet<QString> named;
+    for (const ParameterSetting &p : parameters) {
+        if (p.name.endsWith(QLatin1String(".plugin")))
+            continue;
+        const QString prefix =
+            p.name.contains(u'.') ? p.name.section(u'.', 0, -2) + u'.' : QString();
+        QStringList items = parameterListItems(p.value);
+        if (items.isEmpty())
+            items.append(QString(p.value).remove(u'"').remove(u'\'').trimmed());
+        for (const QString &item : std::as_const(items)) {
+            named.insert(item);
+            named.insert(prefix + item);
+        }
+    }
     QList<ParameterSetting> out;
     for (const ParameterSetting &p : parameters) {
         if (!p.name.endsWith(QLatin1String(".plugin")))
             continue;
+        if (!named.contains(p.name.chopped(int(qstrlen(".plugin")))))
+            continue; // configured but not in the list that loads plugins: not loaded
         const QString value = p.value.trimmed().remove(QLatin1Char('"')).remove(QLatin1Char('\''));
         if (!cls.match(value).hasMatch())
             continue;
@@ -150,8 +170,10 @@ QList<ParameterSetting> LaunchExecutor::effectiveParameters(const LaunchAction &
         return port.name.mid(port.parameterPrefix.size(), inner);
     };
     if (cls) {
+        // A name with a placeholder (`{sources}.topic`, `{plugin:CostmapLayer}`) is a pattern
+        // the composer fills per item, no parameter of the instance.
         auto byDefault = [&](const QString &name, const QString &value, const Evidence &e) {
-            if (!name.isEmpty() && !at.contains(name))
+            if (!name.isEmpty() && !name.contains(u'{') && !at.contains(name))
                 set({name, value, QStringLiteral("default"), QString(), e});
         };
         for (const Port &port : cls->ports) {

@@ -1,6 +1,7 @@
 #include "cppnameresolver.h"
 
 #include "cppsyntax.h"
+#include "rosnames.h"
 
 #include <QRegularExpression>
 #include <QScopeGuard>
@@ -51,6 +52,9 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
     case CppValue::Kind::Parameter: {
         if (value.parameter.isEmpty())
             return resolveBuiltParameter(value, ctx, depth);
+        if (value.parameter.startsWith(
+                QLatin1String(RosNames::kLoadedPluginPrefix))) // per loaded plugin
+            return {NameOrigin::Parameter, value.parameter, value.text, value.parameter};
         const QString def = parameterDefault(value.parameter, ctx, depth + 1);
         return {NameOrigin::Parameter, def.isNull() ? value.text : def, value.text,
                 value.parameter};

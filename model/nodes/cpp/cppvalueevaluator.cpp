@@ -280,6 +280,18 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 r.text = v.text;
                 return r;
             }
+            // `layer->getName()` in a loop over loaded plugin objects: the name each plugin of
+            // that class is loaded under, which the instance's plugin parameters decide.
+            if (shape.name == QLatin1String("getName") && args.empty() &&
+                inner.kind == CppValue::Kind::Element) {
+                const QString cls = elementClass(inner.variable);
+                if (!cls.isEmpty()) {
+                    v.kind = CppValue::Kind::Parameter;
+                    v.parameter = QStringLiteral("%1%2}").arg(
+                        QLatin1String(RosNames::kLoadedPluginPrefix), cls);
+                    return v;
+                }
+            }
             // `costmap_.getName()` on an object that may turn out to be the node itself
             if (args.empty() && ts::isNull(shape.templateArguments) &&
                 (inner.kind == CppValue::Kind::FunctionParameter ||
@@ -379,6 +391,32 @@ CppValue CppValueEvaluator::evaluateBoundIdentifier(const QString &name, int dep
 
 // `params_->topic`, `this->params_.topic`, `p.topic` (p a local or a parameter of the function),
 // `handler_->getParams()->topic`: a field, with what the function knows of the object.
+QString CppValueEvaluator::elementClass(const QString &variable) const
+{
+    const auto it = m_locals.constFind(variable);
+    if (it == m_locals.constEnd() || !it->element)
+        return {};
+    // `auto x = std::dynamic_pointer_cast<CostmapLayer>(layer);`, `dynamic_cast<T *>(layer.get())`
+    static const QRegularExpression cast(QStringLiteral(
+        R"(^(?:std::)?dynamic(?:_pointer)?_cast\s*<\s*(?:const\s+)?([A-Za-z_][\w:]*)\s*\*?\s*>\s*)"
+        R"(\(\s*([A-Za-z_]\w*)\s*(?:\.\s*get\s*\(\s*\))?\s*\)$)"));
+    for (auto l = m_locals.constBegin(); l != m_locals.constEnd(); ++l) {
+        if (l->element || ts::isNull(l->value) || !ts::is(l->value, "call_expression"))
+            continue;
+        const QRegularExpressionMatch m = cast.match(simplified(m_tree, l->value));
+        if (m.hasMatch() && m.captured(2) == variable)
+            return lastSegment(m.captured(1));
+    }
+    // `for (std::shared_ptr<Layer> & layer : layers)`: the pointee of a smart pointer
+    static const QRegularExpression declared(QStringLiteral(
+        R"(^(?:const\s+)?(?:std::(?:shared|unique)_ptr\s*<\s*(?:const\s+)?([\w:]+)\s*>|([\w:]+)))"));
+    const QRegularExpressionMatch m = declared.match(it->type.trimmed());
+    const QString type = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
+    if (type.isEmpty() || type == QLatin1String("auto") || type.startsWith(QLatin1String("std::")))
+        return {};
+    return lastSegment(type);
+}
+
 CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
 {
     CppValue v;

@@ -69,6 +69,9 @@ private:
     /// What `name` holds as last bound, without a join the code applies to it afterwards.
     CppValue evaluateBoundIdentifier(const QString &name, int depth) const;
     CppValue evaluateField(TSNode fieldExpression, int depth) const;
+    /// The class the elements a range-for variable walks are known to be: a cast of it the
+    /// function makes (`dynamic_pointer_cast<CostmapLayer>(layer)`), else its declared type.
+    QString elementClass(const QString &variable) const;
     CppValue evaluateStringCall(const cppsyntax::CallShape &shape, const std::vector<TSNode> &args,
                                 int depth) const;
 

@@ -2,6 +2,7 @@
 // names, empty parameters, and the ports of the plugins an instance loads.
 #include "composer.h"
 #include "guifixture.h"
+#include "itemports.h"
 
 #include <QtTest>
 
@@ -127,6 +128,60 @@ private slots:
 
         server.removedPorts = {QStringLiteral("Slow_s1")}; // a correction removed it
         QCOMPARE(Composer::pluginPorts(plugins, server, nullptr).size(), 1);
+    }
+
+    // `layer->getName() + "_raw"` in a loop over loaded layers, cast to `GridLayer`: one port
+    // per loaded plugin of that lineage (through a base the model knows), none for the others;
+    // a plugin whose class is outside the workspace may be one, and its port says so.
+    void portsPerLoadedPluginFollowTheLineage()
+    {
+        auto pluginClass = [](const QString &qualified, const QStringList &bases) {
+            AtomicNode n;
+            n.qualifiedName = qualified;
+            n.className = qualified.section(QLatin1String("::"), -1);
+            n.baseClasses = bases;
+            n.pluginInterface = QStringLiteral("grid::Layer");
+            return n;
+        };
+        const AtomicNode obstacle =
+            pluginClass(QStringLiteral("grid::ObstacleLayer"), {QStringLiteral("grid::GridLayer")});
+        const AtomicNode voxel =
+            pluginClass(QStringLiteral("grid::VoxelLayer"), {QStringLiteral("ObstacleLayer")});
+        const AtomicNode inflation =
+            pluginClass(QStringLiteral("grid::InflationLayer"), {QStringLiteral("Layer")});
+        const QHash<QString, const AtomicNode *> plugins{{obstacle.qualifiedName, &obstacle},
+                                                         {voxel.qualifiedName, &voxel},
+                                                         {inflation.qualifiedName, &inflation}};
+        Port raw = test::gui::port(QStringLiteral("p2"), PortKind::Publisher,
+                                   QStringLiteral("{plugin:GridLayer}_raw"),
+                                   QStringLiteral("grid_msgs/msg/Grid"), QString(), {});
+        raw.nameOrigin = NameOrigin::Parameter;
+        raw.parameter = QStringLiteral("{plugin:GridLayer}");
+        raw.parameterSuffix = QStringLiteral("_raw");
+        raw.guard = QStringLiteral("grid_layer != nullptr");
+        Port other = raw;
+        other.id = QStringLiteral("p3");
+        other.parameter = QStringLiteral("{plugin:Monitor}"); // no plugin class derives from it
+        QCOMPARE(loadedPluginClass(raw), QStringLiteral("GridLayer"));
+        QCOMPARE(loadedPluginClass(other), QStringLiteral("Monitor"));
+
+        NodeInstance costmap;
+        costmap.plugins = {
+            {QStringLiteral("voxel"), QStringLiteral("grid::VoxelLayer"), {}, {}, {}},
+            {QStringLiteral("inflate"), QStringLiteral("grid/InflationLayer"), {}, {}, {}},
+            {QStringLiteral("outside"), QStringLiteral("ext::Layer"), {}, {}, {}}};
+        QStringList seen;
+        for (const Port &p : expandLoadedPlugins({raw, other}, costmap, plugins))
+            seen << QStringLiteral("%1 %2 [%3]").arg(p.id, p.name, p.guard);
+        QCOMPARE(seen, (QStringList{
+                           QStringLiteral("p2_voxel voxel_raw []"),
+                           QStringLiteral("p2_outside outside_raw [outside is a GridLayer]"),
+                           QStringLiteral("p3 {plugin:GridLayer}_raw [grid_layer != nullptr]")}));
+
+        costmap.plugins.clear(); // nothing loaded: the name is only known at run time
+        const QList<Port> kept = expandLoadedPlugins({raw}, costmap, plugins);
+        QCOMPARE(kept.size(), 1);
+        QCOMPARE(kept.constFirst().parameter, raw.parameter);
     }
 };
 

@@ -106,7 +106,9 @@ private Q_SLOTS:
 
     void pluginsAreNamedByParameters()
     {
-        // pluginlib's convention: `<name>.plugin: "pkg::Class"` loads plugin <name>.
+        // pluginlib's convention: `<name>.plugin: "pkg::Class"` loads plugin <name> when a
+        // list (or a single name) of the node's parameters names it; `Spare` is configured
+        // but no parameter loads it.
         Fixture fx;
         QDir(fx.dir.path()).mkpath(QStringLiteral("bringup/config"));
         QFile yaml(fx.dir.filePath(QStringLiteral("bringup/config/server.yaml")));
@@ -114,7 +116,9 @@ private Q_SLOTS:
         yaml.write("talker:\n  ros__parameters:\n    controller_plugins: [\"Follow\"]\n"
                    "    Follow:\n      plugin: \"ctrl_pkg::Follower\"\n      speed: 0.5\n"
                    "    Checker:\n      plugin: ctrl_pkg/Checker\n"
-                   "    NotAClass:\n      plugin: \"just words\"\n");
+                   "    NotAClass:\n      plugin: \"just words\"\n"
+                   "    checker_plugin: Checker\n"
+                   "    Spare:\n      plugin: \"ctrl_pkg::Follower\"\n");
         yaml.close();
         LaunchAction a =
             node(QStringLiteral("demo"), QStringLiteral("talker"), QStringLiteral("talker"), 3);

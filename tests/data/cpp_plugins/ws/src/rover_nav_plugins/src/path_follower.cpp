@@ -4,11 +4,11 @@
 #include <std_msgs/msg/float64.hpp>
 #include <pluginlib/class_list_macros.hpp>
 #include <visualization_msgs/msg/marker_array.hpp>
-#include "rover_nav_core/controller.hpp"
+#include "rover_nav_core/grid_controller.hpp"
 
 namespace rover_nav_plugins
 {
-class PathFollower : public rover_nav_core::Controller
+class PathFollower : public rover_nav_core::GridController
 {
 public:
   void configure(
@@ -17,6 +17,7 @@ public:
     node_ = parent;
     auto node = parent.lock();
     plugin_name_ = name;
+    grid_name_ = name;
     // Settings of this follower live under its name: `FollowPath.speed_topic`.
     speed_topic_ = node->declare_parameter(plugin_name_ + "." + "speed_topic", std::string("speed_limit"));
     speed_topic_ = joinWithParentNamespace(speed_topic_);

@@ -2,9 +2,10 @@
 #include <string>
 #include <vector>
 #include <geometry_msgs/msg/twist.hpp>
+#include <nav_msgs/msg/occupancy_grid.hpp>
 #include <pluginlib/class_loader.hpp>
 #include <rclcpp_lifecycle/lifecycle_node.hpp>
-#include "rover_nav_core/controller.hpp"
+#include "rover_nav_core/grid_controller.hpp"
 
 namespace rover_nav_servers
 {
@@ -22,12 +23,22 @@ public:
       controller->configure(weak_from_this(), id);
       controllers_.push_back(controller);
     }
+    // Each controller that keeps a grid has it shown under the controller's own name.
+    for (auto & controller : controllers_) {
+      auto grid = std::dynamic_pointer_cast<rover_nav_core::GridController>(controller);
+      if (grid != nullptr) {
+        grid_pubs_.push_back(
+          create_publisher<nav_msgs::msg::OccupancyGrid>(controller->getName() + "/grid", 1));
+      }
+    }
   }
 
 private:
   pluginlib::ClassLoader<rover_nav_core::Controller> loader_;
   std::vector<std::shared_ptr<rover_nav_core::Controller>> controllers_;
   rclcpp_lifecycle::LifecyclePublisher<geometry_msgs::msg::Twist>::SharedPtr cmd_pub_;
+  std::vector<rclcpp_lifecycle::LifecyclePublisher<nav_msgs::msg::OccupancyGrid>::SharedPtr>
+  grid_pubs_;
 };
 }  // namespace rover_nav_servers
 

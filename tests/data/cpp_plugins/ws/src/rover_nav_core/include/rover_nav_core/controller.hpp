@@ -11,6 +11,7 @@ public:
   virtual ~Controller() = default;
   virtual void configure(
     const rclcpp_lifecycle::LifecycleNode::WeakPtr & parent, std::string name) = 0;
+  virtual std::string getName() const {return "controller";}
 
   // Starts listening for alarms on the topic the plugin's settings name.
   void activate()
