@@ -235,11 +235,13 @@ void nameConstructedPorts(AtomicNode *n)
         QList<Port> named;
         for (Port p : std::as_const(k.ports)) {
             const auto same = std::find_if(n->ports.cbegin(), n->ports.cend(), [&](const Port &c) {
-                // one call may make two ports: a camera's image and its info
-                return c.kind == p.kind && c.evidence == p.evidence && c.type == p.type;
+                // one call may make two ports: a camera's image and its info; a class
+                // template's port is typed where it is built (`MessageT` in the class)
+                return c.kind == p.kind && c.evidence == p.evidence &&
+                       (c.type == p.type || !c.type.contains(u'/'));
             });
             if (same == n->ports.cend() || !p.isResolved() ||
-                (same->name == p.name && same->nameOrigin == p.nameOrigin))
+                (same->name == p.name && same->nameOrigin == p.nameOrigin && same->type == p.type))
                 continue;
             p.id = same->id;
             p.via = same->via;

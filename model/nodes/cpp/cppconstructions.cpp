@@ -67,11 +67,14 @@ ChildNode CppConstructions::child(int cls, const CppInstantiation &inst, const C
         return std::pair{score, -int(ctor.parameterNames.size())};
     };
     const CppFunction *called = nullptr;
+    const CppFileFacts *calledFile = nullptr;
     for (const auto &ref : info.functions) {
         const CppFunction &ctor = *ref.function;
         if (ctor.isConstructor && argumentCount <= ctor.parameterNames.size() &&
-            (!called || fit(ctor) > fit(*called)))
+            (!called || fit(ctor) > fit(*called))) {
             called = &ctor;
+            calledFile = ref.file;
+        }
     }
     if (!called)
         return out;
@@ -83,6 +86,18 @@ ChildNode CppConstructions::child(int cls, const CppInstantiation &inst, const C
         });
     };
     for (const CppBaseInitializer &init : called->baseInitializers) {
+        const CppValue::Kind kind = init.firstArgument.kind;
+        if ((kind == CppValue::Kind::Field || kind == CppValue::Kind::Concatenation) &&
+            isBase(init.name)) {
+            // `rclcpp::Node(settings.node_name, options)`, `rclcpp::Node(zone + "_watcher")`:
+            // decided by the arguments of this construction
+            const CppSubstitution subst{inst.arguments, ctx, {}, nullptr};
+            const CppResolvedName r = m_names.resolve(
+                init.firstArgument, CppLinkContext{cls, called, calledFile, &subst});
+            if (r.origin == NameOrigin::Literal && !r.name.isEmpty())
+                out.nodeName = r.name;
+            continue;
+        }
         if (init.firstArgument.kind != CppValue::Kind::FunctionParameter ||
             init.firstArgument.index < 0 || !isBase(init.name))
             continue;
@@ -120,7 +135,8 @@ NodeConstruction CppConstructions::construction(int cls, const CppInstantiation 
     for (const CppValue &arg : inst.arguments)
         if (const auto m = rename.match(arg.text); m.hasMatch())
             out.nodeName = m.captured(1);
-    out.ports = m_helpers.constructedPorts(cls, inst.arguments, ctx);
+    out.ports = m_helpers.constructedPorts(cls, inst.arguments, ctx,
+                                           templateArgumentsOf(inst.className.simplified()));
     return out;
 }
 

@@ -42,6 +42,10 @@ struct CppValue
         ObjectCall,
         /// `for (auto & name : names_)`: each element of the container `parts[0]`
         Element,
+        /// `Settings{.topic = "scan", .name = n}`, or a local whose fields the function sets
+        /// (`s.topic = "scan";`): `parts` alternate each field's name (a Literal) and value;
+        /// a list of string literals (`{"dock", "gate"}`) has fields without names
+        Aggregate,
         Expression, ///< anything else
     };
     Kind kind = Kind::None;
@@ -190,6 +194,9 @@ struct CppFunction
     QList<CppMemberBinding> outBindings;
     QList<CppInstantiation> instantiations;
     QList<CppFreeCall> freeCalls;
+    /// In a free function, the other calls of free functions (`make_filter_line(options)`):
+    /// a function that builds nodes for `main` is followed from it.
+    QList<CppFreeCall> builderCalls;
     QList<CppMethodCall> methodCalls;
     QList<CppProceduralNode> proceduralNodes;
     QStringList templateParameters; ///< the function's own (`template <class T> void f()`)

@@ -58,8 +58,8 @@ template <class F> void fields(CppFunction &v, F f)
     f(v.name, v.ownerScope, v.ownerClass, v.namespaces, v.isConstructor, v.parameterNames,
       v.parameterTypes, v.parameterDefaults, v.requiredParameters, v.variadic, v.aliases,
       v.baseInitializers, v.ports, v.parameterDeclarations, v.memberBindings, v.fieldBindings,
-      v.outBindings, v.instantiations, v.freeCalls, v.methodCalls, v.proceduralNodes,
-      v.templateParameters, v.returnValue, v.evidence, v.acceptsUndeclared);
+      v.outBindings, v.instantiations, v.freeCalls, v.builderCalls, v.methodCalls,
+      v.proceduralNodes, v.templateParameters, v.returnValue, v.evidence, v.acceptsUndeclared);
 }
 template <class F> void fields(CppClass &v, F f)
 {

@@ -241,11 +241,22 @@ void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
                                        const std::vector<TSNode> &args)
 {
     // Only calls without an object, and only those that pass something node-like: `this`, a
-    // parameter, a member or a plain variable (a procedural node).
-    if (!ts::isNull(shape.receiver) || args.empty() || shape.scope == QLatin1String("std"))
+    // parameter, a member or a plain variable (a procedural node). In a free function any
+    // other is kept apart: it may build nodes for `main`.
+    if (!ts::isNull(shape.receiver) || shape.scope == QLatin1String("std"))
         return;
     if (isAscii(shape.name) ? !hasLowerCase(shape.name) : shape.name == shape.name.toUpper())
         return; // RCLCPP_INFO and other macros
+    const bool mayBuild = !m_member && !shape.scope.startsWith(QLatin1String("rclcpp"));
+    if (args.empty()) {
+        if (mayBuild)
+            m_function.builderCalls.append({shape.scope.isEmpty()
+                                                ? shape.name
+                                                : shape.scope + QStringLiteral("::") + shape.name,
+                                            {},
+                                            m_tree.evidence(where)});
+        return;
+    }
     CppFreeCall call;
     call.function =
         shape.scope.isEmpty() ? shape.name : shape.scope + QStringLiteral("::") + shape.name;
@@ -264,6 +275,8 @@ void CppFunctionExtractor::addFreeCall(TSNode where, const CallShape &shape,
     call.evidence = m_tree.evidence(where);
     if (handsSomething)
         m_function.freeCalls.append(call);
+    else if (mayBuild)
+        m_function.builderCalls.append(call);
 }
 
 void CppFunctionExtractor::addProceduralNode(TSNode creation, const std::vector<TSNode> &args,

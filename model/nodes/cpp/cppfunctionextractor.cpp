@@ -323,8 +323,11 @@ void CppFunctionExtractor::onDeclaration(TSNode declaration)
                 } else {
                     addInstantiation(type, args, declaration);
                 }
-                if (args.size() == 1) // std::string topic("chatter");
+                if (args.size() == 1 && !ts::is(args.front(), "initializer_pair"))
+                    // std::string topic("chatter");
                     local.setValue(args.front(), inLoopHead(args.front(), {value, d, declaration}));
+                else if (ts::is(value, "initializer_list")) // zones{"dock", "gate"}, s{.a = x}
+                    local.setValue(value, inLoopHead(value, {d, declaration}));
             } else {
                 local.setValue(value, inLoopHead(value, {d, declaration}));
             }
@@ -386,6 +389,19 @@ void CppFunctionExtractor::onAssignment(TSNode assignment)
         m_function.memberBindings.append(
             {m_tree.text(ts::field(left, fields().field)), m_values.evaluate(value)});
     } else if (ts::is(left, "field_expression")) {
+        // `settings.topic = "scan";` on a struct local: what the local then holds
+        const TSNode object = ts::field(left, fields().argument);
+        if (plain && ts::is(object, "identifier") &&
+            m_tree.view(ts::field(left, fields().op)) == ".") {
+            auto it = m_locals.find(m_tree.text(object));
+            if (it != m_locals.end() && ts::isNull(it->value)) {
+                const QString field = m_tree.text(ts::field(left, fields().field));
+                it->fields.removeIf([&](const auto &f) { return f.first == field; });
+                constexpr qsizetype kMaxFields = 64;
+                if (it->fields.size() < kMaxFields)
+                    it->fields.append({field, value});
+            }
+        }
         addFieldBinding(left, m_values.evaluate(value));
     }
 }

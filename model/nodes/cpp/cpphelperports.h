@@ -40,11 +40,13 @@ public:
     void addCallPorts(const CppFunction &fn, const CppLinkContext &ctx, int depth,
                       QList<Port> *ports) const;
     /// The ports of class `cls` (a node class) constructed with `arguments` in `outer`: its
-    /// constructors' ports with their parameters standing for the arguments.
+    /// constructors' ports with their parameters standing for the arguments, and its template
+    /// parameters for `templateArguments` (`PassStage<sensor_msgs::msg::LaserScan>`).
     QList<Port> constructedPorts(int cls, const QList<CppValue> &arguments,
-                                 const CppLinkContext &outer) const
+                                 const CppLinkContext &outer,
+                                 const QStringList &templateArguments = {}) const
     {
-        return helperPorts(cls, arguments, {}, outer, 1);
+        return helperPorts(cls, arguments, templateArguments, outer, 1);
     }
     /// Ports of the helpers built in the class body (`Helper<T> member_{this, "name"};`).
     void addMemberHelperPorts(int cls, int self, QList<Port> *ports) const;

@@ -334,6 +334,15 @@ CppResolvedName CppNameResolver::resolveField(const CppValue &value, const CppLi
     CppResolvedName expression{NameOrigin::Expression, text, text, QString()};
     if (depth > kMaxLinkDepth)
         return expression;
+    // `settings.topic` of a parameter the caller hands `Settings{.topic = "scan"}`
+    if (const CppSubstitution *subst = substitutionFor(ctx);
+        subst && value.index >= 0 && value.index < subst->arguments.size()) {
+        const CppValue &arg = subst->arguments.at(value.index);
+        for (size_t i = 0; arg.kind == CppValue::Kind::Aggregate && i + 1 < arg.parts.size();
+             i += 2)
+            if (arg.parts[i].literal == value.field)
+                return resolve(arg.parts[i + 1], subst->outer, depth + 1);
+    }
     QString written = value.objectType;
     QStringList templateParameters;
     if (written.isEmpty() && !value.variable.isEmpty() && ctx.cls >= 0)

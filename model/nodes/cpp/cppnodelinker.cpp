@@ -58,6 +58,33 @@ void appendUnique(QList<Port> *into, const QList<Port> &ports)
     }
 }
 
+// A node built in a loop over a list of names (`for (const auto & zone : zones)`, `zones`
+// holding literals): one construction per item, the loop variable an item's literal in each.
+QList<CppInstantiation> perListItem(const CppInstantiation &inst)
+{
+    constexpr size_t kMaxItems = 64; // a list written out in code; more is no list of names
+    for (qsizetype a = 0; a < inst.arguments.size(); ++a) {
+        const CppValue &arg = inst.arguments.at(a);
+        if (arg.kind != CppValue::Kind::Element || arg.parts.empty())
+            continue;
+        const CppValue &list = arg.parts.front();
+        if (list.kind != CppValue::Kind::Aggregate || list.parts.size() > 2 * kMaxItems)
+            continue;
+        QList<CppInstantiation> out;
+        for (size_t i = 0; i + 1 < list.parts.size(); i += 2) {
+            if (!list.parts[i].literal.isEmpty() ||
+                list.parts[i + 1].kind != CppValue::Kind::Literal)
+                return {inst}; // a struct's fields, or an item that is no literal
+            CppInstantiation one = inst;
+            one.arguments[a] = list.parts[i + 1];
+            out.append(one);
+        }
+        if (!out.isEmpty())
+            return out;
+    }
+    return {inst};
+}
+
 } // namespace
 
 CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
@@ -250,8 +277,24 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
 
     QList<Port> ports = portsOf(index, false);
     const QList<int> lineage = m_index.lineage(index);
-    for (qsizetype i = 1; i < lineage.size(); ++i)
-        ports += portsOf(lineage[i], true);
+    for (qsizetype i = 1; i < lineage.size(); ++i) {
+        // `class PathToTrajectory : public ConverterBase<Path, Trajectory>`: the base's ports
+        // typed by its template parameters take the types the derived class gives them.
+        QHash<QString, QString> typed;
+        const QStringList &parameters = m_index.at(lineage[i]).cls->templateParameters;
+        for (qsizetype d = 0; d < i && !parameters.isEmpty() && typed.isEmpty(); ++d) {
+            const CppClassIndex::ClassInfo &derived = m_index.at(lineage[d]);
+            for (const QString &base : derived.cls->bases) {
+                const QString plain = withoutTemplateArguments(base).remove(u' ');
+                if (m_index.lookup(plain, derived.cls->scope, derived.file) != lineage[i])
+                    continue;
+                const QStringList arguments = templateArgumentsOf(base.simplified());
+                for (qsizetype a = 0; a < parameters.size() && a < arguments.size(); ++a)
+                    typed.insert(parameters.at(a), arguments.at(a));
+            }
+        }
+        ports += portsOf(lineage[i], true, typed);
+    }
     std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
         return evidenceLess(a.evidence, b.evidence);
     });
@@ -450,14 +493,32 @@ QString CppNodeLinker::nodeNameOf(int index, int depth) const
     return {};
 }
 
-QList<Port> CppNodeLinker::portsOf(int cls, bool inherited) const
+QList<Port> CppNodeLinker::portsOf(int cls, bool inherited,
+                                   const QHash<QString, QString> &templateArguments) const
 {
     QList<Port> ports;
+    // A port typed by a template parameter of the node class itself is one, its type decided
+    // where the class is built (`PassStage<sensor_msgs::msg::LaserScan>`); other generic code
+    // (a function template's own parameter) makes none.
+    const QStringList &own = m_index.at(cls).cls->templateParameters;
     for (const auto &ref : m_index.at(cls).functions) {
         const CppLinkContext ctx{cls, ref.function, ref.file, nullptr};
-        for (const CppPortCall &call : ref.function->ports)
-            if (!call.typeIsTemplateParameter)
+        for (const CppPortCall &call : ref.function->ports) {
+            if (!call.typeIsTemplateParameter) {
                 ports.append(m_names.port(call, ctx));
+                continue;
+            }
+            const QString head = splitScope(withoutTemplateArguments(call.typeWritten)).value(0);
+            if (!ref.function->templateParameters.isEmpty() || !own.contains(head))
+                continue;
+            if (templateArguments.contains(head)) { // as a derived class instantiates it
+                Port p = m_names.port(call, ctx);
+                p.type = m_names.resolveType(templateArguments.value(head), ctx);
+                ports.append(p);
+            } else if (!inherited) { // the class template itself: typed where it is built
+                ports.append(m_names.port(call, ctx));
+            }
+        }
         m_helpers.addMessageFilterPorts(cls, ref, &ports);
         m_helpers.addCallPorts(*ref.function, ctx, 0, &ports);
     }
@@ -539,21 +600,76 @@ void CppNodeLinker::addEntryPoint(const CppClassIndex::FunctionRef &ref,
     entry.function = fn.name;
     entry.evidence = fn.evidence;
     const CppLinkContext ctx{-1, &fn, ref.file};
-    for (const CppInstantiation &inst : fn.instantiations) {
-        if (inst.className.isEmpty())
-            continue;
-        const int c = m_index.lookup(inst.className, fn.namespaces, ref.file);
-        if (c < 0 || !m_index.at(c).node)
-            continue;
-        if (!entry.instantiatedClasses.contains(inst.className))
-            entry.instantiatedClasses.append(inst.className);
-        entry.constructions.append(m_constructions.construction(c, inst, ctx, nodeNameOf(c, 0)));
-    }
+    QList<const CppFunction *> open{&fn};
+    addConstructions(fn, ctx, 0, &open, &entry);
     for (const AtomicNode &node : procedural)
         if (!entry.instantiatedClasses.contains(node.className))
             entry.instantiatedClasses.append(node.className);
     if (!entry.instantiatedClasses.isEmpty())
         entryPoints->append(entry);
+}
+
+void CppNodeLinker::addConstructions(const CppFunction &fn, const CppLinkContext &ctx, int depth,
+                                     QList<const CppFunction *> *open, EntryPoint *entry) const
+{
+    for (const CppInstantiation &inst : fn.instantiations) {
+        if (inst.className.isEmpty())
+            continue;
+        // `PassStage<sensor_msgs::msg::LaserScan>`: the class template, built with that type
+        const QString written = withoutTemplateArguments(inst.className).remove(u' ');
+        const int c = m_index.lookup(written, fn.namespaces, ctx.file);
+        if (c < 0 || !m_index.at(c).node)
+            continue;
+        if (!entry->instantiatedClasses.contains(written))
+            entry->instantiatedClasses.append(written);
+        // `for (const auto & zone : zones) make_shared<ZoneWatcher>(zone)` over a list of
+        // literals: one node per item.
+        for (const CppInstantiation &one : perListItem(inst)) {
+            NodeConstruction k = m_constructions.construction(c, one, ctx, nodeNameOf(c, 0));
+            k.className = written;
+            entry->constructions.append(k);
+        }
+    }
+    // Builder functions are followed from `main` only: what `ros2 run` starts.
+    if (depth >= kMaxBuilderDepth || (depth == 0 && fn.name != QLatin1String("main")))
+        return;
+    const auto follow = [&](const CppFreeCall &call) {
+        const QStringList calledName = splitScope(call.function);
+        if (calledName.isEmpty())
+            return;
+        const QString scope = calledName.mid(0, calledName.size() - 1).join(QStringLiteral("::"));
+        const auto n = int(call.arguments.size());
+        QList<CppClassIndex::FunctionRef> candidates;
+        for (const auto &ref : m_freeFunctionsByName.value(calledName.constLast())) {
+            const CppFunction *callee = ref.function;
+            const QString ns = callee->namespaces.join(QStringLiteral("::"));
+            const bool buildsSomething = !callee->instantiations.isEmpty() ||
+                                         !callee->builderCalls.isEmpty() ||
+                                         !callee->freeCalls.isEmpty();
+            if (open->contains(callee) || !buildsSomething || n < callee->requiredParameters ||
+                (!callee->variadic && n > callee->parameterNames.size()) ||
+                (!scope.isEmpty() && ns != scope && !ns.endsWith(QStringLiteral("::") + scope)))
+                continue;
+            candidates.append(ref);
+        }
+        // A same-named function in the caller's package wins over the rest of the workspace.
+        const QString package = ctx.file ? ctx.file->package : QString();
+        if (std::any_of(candidates.cbegin(), candidates.cend(),
+                        [&](const auto &ref) { return ref.file->package == package; }))
+            candidates.removeIf([&](const auto &ref) { return ref.file->package != package; });
+        for (const auto &ref : std::as_const(candidates)) {
+            const CppFunction *callee = ref.function;
+            const CppSubstitution subst{call.arguments, ctx, {}, callee};
+            open->append(callee);
+            addConstructions(*callee, CppLinkContext{-1, callee, ref.file, &subst}, depth + 1, open,
+                             entry);
+            open->removeLast();
+        }
+    };
+    for (const CppFreeCall &call : fn.builderCalls)
+        follow(call);
+    for (const CppFreeCall &call : fn.freeCalls)
+        follow(call);
 }
 
 } // namespace rosarch

@@ -36,7 +36,10 @@ private:
     /// constructor parameter or an expression.
     QString literalName(const CppValue &value, const CppLinkContext &ctx) const;
     QList<ChildNode> childNodesOf(int index) const;
-    QList<Port> portsOf(int cls, bool inherited) const;
+    /// The ports class `cls` makes; `templateArguments` type those typed by its template
+    /// parameters, as a derived class instantiates it (`inherited`).
+    QList<Port> portsOf(int cls, bool inherited,
+                        const QHash<QString, QString> &templateArguments = {}) const;
     /// A pluginlib plugin's classifier: the ports it creates through the node it is given.
     int pluginClass(const QString &written, const CppFileFacts &file,
                     QHash<QString, QString> *templateArguments) const;
@@ -51,6 +54,12 @@ private:
                             QHash<QString, int> *stems) const;
     void addEntryPoint(const CppClassIndex::FunctionRef &ref, const QList<AtomicNode> &procedural,
                        QList<EntryPoint> *entryPoints) const;
+    /// The nodes `fn` (in `ctx`) constructs, and those the free functions it calls construct
+    /// (`make_filter_line(options)`), `depth` calls deep; `open` are the functions on the way.
+    void addConstructions(const CppFunction &fn, const CppLinkContext &ctx, int depth,
+                          QList<const CppFunction *> *open, EntryPoint *entry) const;
+    /// Calls to builder functions are followed this deep from an entry point.
+    static constexpr int kMaxBuilderDepth = 4;
 
     const QList<CppFileFacts> &m_files;
     CppClassIndex m_index;

@@ -6,6 +6,8 @@
 
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace rosarch {
 
 using namespace cppsyntax;
@@ -187,6 +189,14 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
         f.text = v.text;
         return f;
     }
+    if (t == "compound_literal_expression" || t == "initializer_list") {
+        CppValue a =
+            evaluateAggregate(t == "initializer_list" ? n : ts::field(n, fields().value), depth);
+        if (!a.isNone()) {
+            a.text = v.text;
+            return a;
+        }
+    }
     // `ns::kTopic`, `Foo::kTopic`: a constant of the workspace, looked up when linking.
     if (t == "qualified_identifier") {
         v.kind = CppValue::Kind::Constant;
@@ -340,6 +350,17 @@ CppValue CppValueEvaluator::evaluateBoundIdentifier(const QString &name, int dep
             v.parts.push_back(evaluate(it->value, depth + 1));
             return v;
         }
+        if (ts::isNull(it->value) && !it->fields.isEmpty()) { // `Settings s; s.topic = "scan";`
+            v.kind = CppValue::Kind::Aggregate;
+            for (const auto &[field, value] : it->fields) {
+                CppValue name;
+                name.kind = CppValue::Kind::Literal;
+                name.literal = field;
+                v.parts.push_back(name);
+                v.parts.push_back(evaluate(value, depth + 1));
+            }
+            return v;
+        }
         if (ts::isNull(it->value) && !it->outCall.isEmpty()) {
             v.kind = CppValue::Kind::OutArgument;
             v.variable = it->outCall;
@@ -366,6 +387,7 @@ CppValue CppValueEvaluator::evaluateBoundIdentifier(const QString &name, int dep
             case CppValue::Kind::Concatenation:
             case CppValue::Kind::Field:
             case CppValue::Kind::Element:
+            case CppValue::Kind::Aggregate:
             case CppValue::Kind::Constant: {
                 CppValue r = inner;
                 r.text = name;
@@ -391,6 +413,43 @@ CppValue CppValueEvaluator::evaluateBoundIdentifier(const QString &name, int dep
 
 // `params_->topic`, `this->params_.topic`, `p.topic` (p a local or a parameter of the function),
 // `handler_->getParams()->topic`: a field, with what the function knows of the object.
+CppValue CppValueEvaluator::evaluateAggregate(TSNode list, int depth) const
+{
+    CppValue v;
+    if (depth > kMaxDepth || !ts::is(list, "initializer_list"))
+        return v;
+    // `{"dock", "gate"}`: a list of names, its fields unnamed
+    const std::vector<TSNode> items = ts::namedChildren(list);
+    QString literal;
+    if (!items.empty() && std::all_of(items.cbegin(), items.cend(), [&](TSNode item) {
+            return stringLiteral(m_tree, unwrap(m_tree, item), &literal);
+        })) {
+        for (TSNode item : items) {
+            v.parts.push_back({});
+            v.parts.back().kind = CppValue::Kind::Literal;
+            v.parts.push_back(evaluate(item, depth + 1));
+        }
+        v.kind = CppValue::Kind::Aggregate;
+        return v;
+    }
+    for (TSNode pair : items) {
+        if (!ts::is(pair, "initializer_pair"))
+            continue;
+        const std::vector<TSNode> kids = ts::namedChildren(pair);
+        const QString designator = kids.empty() ? QString() : simplified(m_tree, kids.front());
+        if (!designator.startsWith(u'.'))
+            continue; // `[0] = x`
+        CppValue name;
+        name.kind = CppValue::Kind::Literal;
+        name.literal = designator.mid(1).trimmed();
+        v.parts.push_back(name);
+        v.parts.push_back(evaluate(ts::field(pair, fields().value), depth + 1));
+    }
+    if (!v.parts.empty())
+        v.kind = CppValue::Kind::Aggregate;
+    return v;
+}
+
 QString CppValueEvaluator::elementClass(const QString &variable) const
 {
     const auto it = m_locals.constFind(variable);
@@ -429,17 +488,38 @@ CppValue CppValueEvaluator::evaluateField(TSNode n, int depth) const
         const qsizetype index = m_function.parameterNames.indexOf(name);
         if (local != m_locals.constEnd()) {
             // `auto & p = params_;` reads the member; `Parameters p;` has its own type.
+            // `Settings s; s.topic = "scan";`: the field as this function set it (only that
+            // one: a field computed from others must not evaluate the whole struct again)
+            for (const auto &[field, value] : local->fields) {
+                if (field != v.field)
+                    continue;
+                const QString key = name + u'.' + field; // `s.a = s.b + s.b; s.b = s.a;`
+                if (m_fieldsOnTheWay.contains(key)) {
+                    v.kind = CppValue::Kind::Expression;
+                    return v;
+                }
+                m_fieldsOnTheWay.insert(key);
+                CppValue held = evaluate(value, depth + 1);
+                m_fieldsOnTheWay.remove(key);
+                return held;
+            }
             const CppValue held =
                 ts::isNull(local->value) ? CppValue() : evaluate(local->value, depth + 1);
             if (held.kind == CppValue::Kind::Member)
                 v.variable = held.variable;
             else
                 v.objectType = local->type;
+            if (held.kind == CppValue::Kind::Aggregate) { // `auto s = Settings{.topic = x};`
+                for (size_t i = 0; i + 1 < held.parts.size(); i += 2)
+                    if (held.parts[i].literal == v.field)
+                        return held.parts[i + 1];
+            }
         } else if (index >= 0) {
             QString type = m_function.parameterTypes.value(index);
             if (type.endsWith(name))
                 type = type.chopped(name.size()).trimmed();
             v.objectType = type;
+            v.index = int(index); // a caller's argument may set the field (an Aggregate)
         } else {
             v.variable = name;
         }

@@ -6,6 +6,9 @@
 #include "syntaxtree.h"
 
 #include <QHash>
+#include <QList>
+#include <QPair>
+#include <QSet>
 #include <QString>
 
 #include <vector>
@@ -29,6 +32,8 @@ struct CppLocal
     bool element = false;
     /// `topic = joinWithParentNamespace(topic)`: `value` joined to the parent namespace.
     bool parentJoined = false;
+    /// `settings.topic = "scan";` on a struct local: the fields set, in order.
+    QList<QPair<QString, TSNode>> fields;
 
     void setValue(TSNode v);
     /// With `loopInitial` known (CppFunctionExtractor finds it from the path it walked).
@@ -69,6 +74,9 @@ private:
     /// What `name` holds as last bound, without a join the code applies to it afterwards.
     CppValue evaluateBoundIdentifier(const QString &name, int depth) const;
     CppValue evaluateField(TSNode fieldExpression, int depth) const;
+    /// `Settings{.topic = "scan"}` (or `{.topic = "scan"}`): an Aggregate; None when the
+    /// list designates no field.
+    CppValue evaluateAggregate(TSNode list, int depth) const;
     /// The class the elements a range-for variable walks are known to be: a cast of it the
     /// function makes (`dynamic_pointer_cast<CostmapLayer>(layer)`), else its declared type.
     QString elementClass(const QString &variable) const;
@@ -79,6 +87,8 @@ private:
     const QHash<QString, CppLocal> &m_locals;
     const CppFunction &m_function;
     const CppMacros *m_macros = nullptr;
+    /// The fields of struct locals being evaluated, against a cycle through them.
+    mutable QSet<QString> m_fieldsOnTheWay;
 };
 
 } // namespace rosarch
