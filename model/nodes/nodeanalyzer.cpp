@@ -73,7 +73,7 @@ public:
         QList<std::pair<AtomicNode *, NodeConstruction>> constructions;
         switch (exe.kind) {
         case Executable::Kind::ConsoleScript:
-            targets = consoleScriptNodes(pkg, exe);
+            targets = consoleScriptNodes(pkg, exe, &constructions);
             break;
         case Executable::Kind::CMakeExecutable:
             targets = nodesStartedFrom(pkg.name, exe.sources, QString(), &constructions);
@@ -194,7 +194,9 @@ private:
         return found;
     }
 
-    QList<AtomicNode *> consoleScriptNodes(const RosPackage &pkg, const Executable &exe)
+    QList<AtomicNode *>
+    consoleScriptNodes(const RosPackage &pkg, const Executable &exe,
+                       QList<std::pair<AtomicNode *, NodeConstruction>> *constructions)
     {
         const qsizetype colon = exe.target.indexOf(QLatin1Char(':'));
         const QString module = exe.target.left(colon);
@@ -211,7 +213,7 @@ private:
                 rel == modulePath + QStringLiteral("/__init__.py"))
                 files.append(f.path);
         }
-        return nodesStartedFrom(pkg.name, files, function);
+        return nodesStartedFrom(pkg.name, files, function, constructions);
     }
 
     const Workspace &m_ws;

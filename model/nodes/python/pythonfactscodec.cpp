@@ -11,7 +11,7 @@ template <class F> void cacheFields(Tag, PythonHandle &v, F f)
 template <class F> void cacheFields(Tag, PythonArgument &v, F f)
 {
     f(v.keyword, v.text, v.isString, v.value, v.origin, v.parameter, v.parameterIndex,
-      v.interfaceType);
+      v.interfaceType, v.items);
 }
 template <class F> void cacheFields(Tag, PythonParameterRef &v, F f)
 {

@@ -49,6 +49,8 @@ struct PythonArgument
     QString parameter;       ///< the declared ROS parameter it comes from, when known
     int parameterIndex = -1; ///< names an explicit parameter of the enclosing function
     QString interfaceType;   ///< canonical "pkg/msg/T" when the argument is an interface type
+    /// A loop variable over a list of strings (`for zone in ZONES:`): the strings in turn.
+    QStringList items = {};
 };
 
 /// A port's name or type that is a parameter of the constructor, function or method around it,

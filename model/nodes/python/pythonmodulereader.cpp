@@ -197,8 +197,11 @@ QList<PythonArgument> PythonModuleReader::arguments(TSNode call, const QStringLi
         a.parameter = v.parameter;
         if (a.isString)
             a.value = v.value;
-        if (ts::is(value, "identifier"))
+        if (ts::is(value, "identifier")) {
             a.parameterIndex = int(parameterNames.indexOf(a.text));
+            if (!a.isString)
+                a.items = m_resolver.loopItems(value);
+        }
         if (py::isDottedName(value)) {
             const QString type = m_resolver.interfaceType(value);
             if (type.contains(QLatin1Char('/')))

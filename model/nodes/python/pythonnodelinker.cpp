@@ -3,6 +3,7 @@
 #include "pythonbinding.h"
 
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -52,6 +53,39 @@ QList<Port> sortedUnique(QList<Port> ports)
     }
     return out;
 }
+// `super().__init__(zone + '_watcher')`: a name joined from string literals and constructor
+// parameters, with the arguments of one construction; "" when a piece is anything else.
+QString joinedName(const QString &text, const QList<PythonParameter> &parameters,
+                   const QList<PythonArgument> &arguments)
+{
+    static const QRegularExpression quoted(QStringLiteral(R"(^(['"])([^'"\\]*)\1$)"));
+    static const QRegularExpression identifier(QStringLiteral(R"(^[A-Za-z_]\w*$)"));
+    QString out;
+    for (const QString &piece : text.split(u'+')) {
+        const QString t = piece.trimmed();
+        if (const QRegularExpressionMatch m = quoted.match(t); m.hasMatch()) {
+            out += m.captured(2);
+            continue;
+        }
+        if (!identifier.match(t).hasMatch())
+            return {};
+        int index = -1;
+        for (int i = 0; i < parameters.size() && index < 0; ++i)
+            if (parameters.at(i).name == t)
+                index = i;
+        if (index < 0)
+            return {};
+        const PythonArgument *a = argumentAt(arguments, index, t);
+        if (a && a->isString)
+            out += a->value;
+        else if (!a && parameters.at(index).defaultIsString)
+            out += parameters.at(index).defaultValue;
+        else
+            return {};
+    }
+    return out;
+}
+
 } // namespace
 
 PythonNodeLinker::PythonNodeLinker(const QList<PythonModuleFacts> &modules)
@@ -111,6 +145,7 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
         ScopedPort sp;
         sp.port = f.port;
         sp.method = f.method;
+        sp.fact = &f;
         if (!f.nameParts.isEmpty()) {
             // a name built from the parameters of one of the node's methods: their defaults
             const QString method = f.nameParts.first().from.method;
@@ -140,6 +175,7 @@ QList<PythonNodeLinker::ScopedPort> PythonNodeLinker::classPorts(int id, int dep
                 !c.superCalledMethods.contains(sp.method))
                 continue;
             sp.port.inherited = true;
+            sp.fact = nullptr; // its parameters are the base's
             // a name taken from the base constructor's parameter: see what this class passes
             if (sp.parameter >= 0 && c.hasInit) {
                 const PythonArgument *a =
@@ -440,6 +476,81 @@ QStringList PythonNodeLinker::startedNodes(int function, int depth, QList<int> *
     return out;
 }
 
+void PythonNodeLinker::addConstructions(int function, int depth, QList<int> *visited,
+                                        QList<NodeConstruction> *out) const
+{
+    visited->append(function);
+    for (const PythonCall &call : m_index.functionFacts(function).calls) {
+        const int cls = m_index.findClass(call.target);
+        if (cls >= 0 && nodeKind(cls) != NotANode) {
+            // `for zone in ZONES: Watcher(zone)`: one node per item
+            const auto loop =
+                std::find_if(call.arguments.cbegin(), call.arguments.cend(),
+                             [](const PythonArgument &a) { return !a.items.isEmpty(); });
+            if (loop == call.arguments.cend()) {
+                out->append(construction(cls, call));
+                continue;
+            }
+            for (const QString &item : loop->items) {
+                PythonCall one = call;
+                PythonArgument &a = one.arguments[loop - call.arguments.cbegin()];
+                a.isString = true;
+                a.value = item;
+                a.origin = NameOrigin::Literal;
+                out->append(construction(cls, one));
+            }
+            continue;
+        }
+        if (cls >= 0)
+            continue;
+        const int callee = depth < 3 ? m_index.findFunction(call.target) : -1;
+        if (callee >= 0 && !visited->contains(callee))
+            addConstructions(callee, depth + 1, visited, out);
+    }
+}
+
+NodeConstruction PythonNodeLinker::construction(int cls, const PythonCall &call) const
+{
+    const PythonClassFacts &c = m_index.classFacts(cls);
+    NodeConstruction k;
+    k.className = c.qualifiedName;
+    k.evidence = call.evidence;
+    const NameInfo info = nameInfo(cls, 0);
+    if (info.kind == NameInfo::Kind::Literal) {
+        k.nodeName = info.text;
+    } else if (info.kind == NameInfo::Kind::Expression && c.hasBaseInitCall) {
+        if (const PythonArgument *a =
+                argumentAt(c.baseInitArguments, 0, QStringLiteral("node_name")))
+            k.nodeName = joinedName(a->text, c.initParameters, call.arguments);
+    } else if (info.kind == NameInfo::Kind::Parameter) {
+        const PythonParameter &param = m_index.classFacts(info.owner).initParameters.at(info.index);
+        const PythonArgument *a = argumentAt(call.arguments, info.index, param.name);
+        if (a && a->isString)
+            k.nodeName = a->value;
+        else if (!a && param.defaultIsString)
+            k.nodeName = param.defaultValue;
+    }
+    // Only the ports the constructor's arguments name (the others are the class's own)
+    for (const ScopedPort &sp : classPorts(cls, 0)) {
+        Port p = sp.port;
+        if (sp.parameter >= 0) {
+            const PythonArgument *a = argumentAt(call.arguments, sp.parameter, sp.parameterName);
+            if (!a || !a->isString)
+                continue;
+            substituteName(&p, *a);
+        } else if (sp.fact && !sp.fact->nameParts.isEmpty() &&
+                   sp.fact->nameParts.first().from.method.isEmpty()) {
+            // `zone + '/occupied'` from the constructor's own parameters
+            PythonBinding::applyArguments(&p, *sp.fact, QString(), call.arguments,
+                                          &c.initParameters);
+        } else {
+            continue;
+        }
+        k.ports.append(p);
+    }
+    return k;
+}
+
 QList<ParameterDeclaration> PythonNodeLinker::declaredParameters(int id) const
 {
     QList<ParameterDeclaration> out = m_index.classFacts(id).parameterDeclarations;
@@ -552,6 +663,8 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
         e.file = m_index.functionModule(id).file;
         e.function = function.name;
         e.evidence = function.evidence;
+        visited.clear();
+        addConstructions(id, 0, &visited, &e.constructions);
         out->entryPoints.append(e);
     }
 }

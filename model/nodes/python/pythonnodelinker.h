@@ -36,6 +36,9 @@ private:
         QString method;
         int parameter = -1; ///< the name is still this constructor parameter of the class
         QString parameterName;
+        /// The class's own fact of the port (null for a helper's or a base's): a name built
+        /// from constructor parameters (`zone + '/occupied'`) that a construction decides.
+        const PythonPortFact *fact = nullptr;
     };
     struct NameInfo
     {
@@ -79,6 +82,12 @@ private:
     NameInfo nameInfo(int id, int depth) const;
     QString nodeName(int id) const;
     QStringList startedNodes(int function, int depth, QList<int> *visited) const;
+    /// The nodes `function` constructs (`Watcher('dock')`), and those the functions it calls
+    /// construct, as startedNodes follows them.
+    void addConstructions(int function, int depth, QList<int> *visited,
+                          QList<NodeConstruction> *out) const;
+    /// Class `cls` built by `call`: the node name and port names its arguments decide.
+    NodeConstruction construction(int cls, const PythonCall &call) const;
     void nameProcedurals();
 
     const QList<PythonModuleFacts> &m_modules;

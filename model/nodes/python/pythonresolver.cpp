@@ -394,6 +394,57 @@ const PythonResolver::AssignmentIndex &PythonResolver::members(TSNode classNode)
     return index;
 }
 
+QStringList PythonResolver::loopItems(TSNode identifier) const
+{
+    if (!ts::is(identifier, "identifier"))
+        return {};
+    const QString name = m_tree.text(identifier);
+    TSNode loop{};
+    for (TSNode p = ts_node_parent(identifier); !ts::isNull(p); p = ts_node_parent(p)) {
+        const std::string_view t = ts::type(p);
+        if (t == "function_definition" || t == "class_definition" || t == "lambda")
+            break;
+        if (t == "for_statement" && m_tree.text(ts::field(p, "left")) == name) {
+            loop = p;
+            break;
+        }
+    }
+    if (ts::isNull(loop))
+        return {};
+    TSNode list = ts::field(loop, "right");
+    if (ts::is(list, "identifier")) { // `for zone in ZONES:`, the last assignment before
+        const QString listName = m_tree.text(list);
+        const uint32_t at = ts_node_start_byte(loop);
+        const TSNode function = m_scopes.enclosingFunction(loop);
+        TSNode assigned{};
+        for (const TSNode scope : {function, TSNode{}}) {
+            const auto &index = locals(scope);
+            const auto it = index.constFind(listName);
+            if (it == index.constEnd())
+                continue;
+            for (const Assignment &a : *it)
+                if (a.byte < at || ts::isNull(scope))
+                    assigned = a.right;
+            if (!ts::isNull(assigned) || !ts::isNull(function))
+                break;
+        }
+        list = assigned;
+    }
+    if (!ts::is(list, "list") && !ts::is(list, "tuple"))
+        return {};
+    QStringList items;
+    constexpr qsizetype kMaxItems = 64;
+    for (TSNode item : ts::namedChildren(list)) {
+        QString literal;
+        if (ts::is(item, "comment"))
+            continue;
+        if (!stringLiteral(m_tree, item, &literal) || items.size() >= kMaxItems)
+            return {}; // not a list of names written out
+        items.append(literal);
+    }
+    return items;
+}
+
 TSNode PythonResolver::assignedExpression(TSNode expr) const
 {
     if (ts::is(expr, "identifier")) {

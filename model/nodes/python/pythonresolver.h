@@ -42,6 +42,9 @@ public:
     /// The expression a local (`x`) or member (`self.x`) is assigned: the last local assignment
     /// before the use, or a member's only assignment other than `None`. Null if none or unclear.
     TSNode assignedExpression(TSNode expr) const;
+    /// `zone` in `for zone in ['dock', 'gate']:` (or over a local or module-level list of
+    /// string literals): the strings it takes in turn; empty when it is no such loop variable.
+    QStringList loopItems(TSNode identifier) const;
     /// "listener_callback" for self.listener_callback, "lambda" for a lambda, ...
     QString callbackName(TSNode expr) const;
     /// The conditions of the enclosing ifs (same function), and the parameter they test.
