@@ -250,6 +250,8 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
         }
         if (pp.resolved) {
             base = RosNames::withParentNamespace(base, instance.nameSpace);
+            // `get_namespace() + "/scan"`: the instance's namespace, which it always has
+            base = RosNames::withNamespace(base, instance.nameSpace);
             int used = -1;
             pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);
             pp.remapped = used >= 0;

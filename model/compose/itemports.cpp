@@ -166,7 +166,8 @@ QString itemList(const Port &p)
         return {};
     const QRegularExpressionMatch m = item.match(p.parameter);
     if (!m.hasMatch() || m.captured(0) == QLatin1String(kPluginNamePlaceholder) ||
-        m.captured(0) == QLatin1String(kNodeNamePlaceholder))
+        m.captured(0) == QLatin1String(kNodeNamePlaceholder) ||
+        m.captured(0) == QLatin1String(RosNames::kNamespacePlaceholder))
         return {};
     return m.captured(1);
 }

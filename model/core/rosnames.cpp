@@ -33,6 +33,22 @@ QString withParentNamespace(const QString &name, const QString &nodeNamespace)
     return ns.left(std::max<qsizetype>(0, ns.lastIndexOf(u'/'))) + QLatin1Char('/') + rest;
 }
 
+QString withNamespace(const QString &name, const QString &ns)
+{
+    const QLatin1String placeholder(kNamespacePlaceholder);
+    if (!name.contains(placeholder))
+        return name;
+    QString root = ns;
+    while (root.endsWith(u'/'))
+        root.chop(1);
+    if (!root.isEmpty() && !root.startsWith(u'/'))
+        root.prepend(u'/');
+    QString out = name;
+    out.replace(placeholder + QLatin1Char('/'), root + QLatin1Char('/'));
+    out.replace(placeholder, root.isEmpty() ? QStringLiteral("/") : root);
+    return out;
+}
+
 QString scopeRelative(const QString &name)
 {
     const QLatin1String scope(kClassifierScope);

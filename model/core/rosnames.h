@@ -21,6 +21,12 @@ inline constexpr char kParentNamespacePlaceholder[] = "{parent_namespace}";
 /// costmap publishes each loaded CostmapLayer under the layer's name (`layer->getName()` in a
 /// loop over its layers). `{plugin:Type}` until the instance's loaded plugins decide it.
 inline constexpr char kLoadedPluginPrefix[] = "{plugin:";
+/// `get_namespace()` in a node's code: the instance's namespace (`{namespace}/scan`); with
+/// `get_name()` (`{node}`) it makes `get_fully_qualified_name()`.
+inline constexpr char kNamespacePlaceholder[] = "{namespace}";
+/// `name` with `{namespace}` replaced by namespace `ns` ("/" or "" for the root): never a
+/// doubled slash (`{namespace}/x` in the root is `/x`).
+QString withNamespace(const QString &name, const QString &ns);
 /// `{parent_namespace}/map` in node namespace `/robot/global_costmap`: `/robot/map`; an absolute
 /// name after the placeholder stays itself; any other name is returned as it is.
 QString withParentNamespace(const QString &name, const QString &nodeNamespace);

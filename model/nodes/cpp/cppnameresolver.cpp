@@ -67,6 +67,14 @@ CppResolvedName CppNameResolver::resolve(const CppValue &value, const CppLinkCon
             return resolve(at.fn->returnValue, at, depth + 1);
         if (value.variable == QLatin1String("get_name")) // rclcpp's: the instance's name
             return {NameOrigin::Member, QLatin1String(kNodeNamePlaceholder), value.text, QString()};
+        if (value.variable == QLatin1String("get_namespace")) // and its namespace
+            return {NameOrigin::Member, QLatin1String(RosNames::kNamespacePlaceholder), value.text,
+                    QString()};
+        if (value.variable == QLatin1String("get_fully_qualified_name"))
+            return {NameOrigin::Member,
+                    QStringLiteral("%1/%2").arg(QLatin1String(RosNames::kNamespacePlaceholder),
+                                                QLatin1String(kNodeNamePlaceholder)),
+                    value.text, QString()};
         return r;
     case CppValue::Kind::FunctionParameter:
         if (namesTheNode(value.index, ctx))

@@ -273,7 +273,10 @@ CppValue CppValueEvaluator::evaluate(TSNode expression, int depth) const
                 return r;
             }
             // `node->get_name()`: the name of the node a helper or plugin is handed
-            if (shape.name == QLatin1String("get_name") && args.empty() &&
+            if ((shape.name == QLatin1String("get_name") ||
+                 shape.name == QLatin1String("get_namespace") ||
+                 shape.name == QLatin1String("get_fully_qualified_name")) &&
+                args.empty() &&
                 (inner.kind == CppValue::Kind::SelfNode ||
                  ((inner.kind == CppValue::Kind::FunctionParameter ||
                    inner.kind == CppValue::Kind::Member) &&

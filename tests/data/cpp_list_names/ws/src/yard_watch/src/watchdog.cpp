@@ -19,6 +19,11 @@ public:
       "watched_nodes", std::vector<std::string>{});
     zones_ = declare_parameter<std::vector<std::string>>("zones", std::vector<std::string>{});
     alarm_pub_ = create_publisher<std_msgs::msg::String>("alarms", 10);
+    // One summary per namespace, and a state topic under the node's own full name.
+    summary_pub_ = create_publisher<std_msgs::msg::String>(
+      std::string(get_namespace()) + "/watch_summary", 10);
+    state_pub_ = create_publisher<std_msgs::msg::String>(
+      std::string(this->get_fully_qualified_name()) + "/state", 1);
     createProbes();
     for (const auto & zone : zones_) {
       zone_pubs_.push_back(
@@ -39,6 +44,8 @@ private:
   std::vector<std::shared_ptr<yard_watch::HeartbeatProbe>> probes_;
   std::vector<rclcpp::Publisher<std_msgs::msg::Bool>::SharedPtr> zone_pubs_;
   rclcpp::Publisher<std_msgs::msg::String>::SharedPtr alarm_pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr summary_pub_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr state_pub_;
 };
 
 int main(int argc, char ** argv)
