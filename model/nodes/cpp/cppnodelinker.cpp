@@ -210,6 +210,18 @@ LanguageAnalysis CppNodeLinker::link() const
             reportBounds(procedural.first(), hit);
         addEntryPoint(ref, procedural, &out.entryPoints);
         out.nodes += procedural;
+        if (!m_builderBoundsHit.isEmpty()) {
+            Diagnostic d;
+            d.severity = Diagnostic::Severity::Info;
+            d.code = QStringLiteral("builder-depth");
+            d.message = QStringLiteral("Stopped following the functions main() calls here "
+                                       "(bound: %1 calls deep); nodes built beyond it are not "
+                                       "instances of the executable.")
+                            .arg(kMaxBuilderDepth);
+            d.evidence = m_builderBoundsHit.front();
+            out.diagnostics.append(d);
+            m_builderBoundsHit.clear();
+        }
     }
     QSet<int> plugins;
     for (const CppFileFacts &file : m_files) {
@@ -631,8 +643,19 @@ void CppNodeLinker::addConstructions(const CppFunction &fn, const CppLinkContext
         }
     }
     // Builder functions are followed from `main` only: what `ros2 run` starts.
-    if (depth >= kMaxBuilderDepth || (depth == 0 && fn.name != QLatin1String("main")))
+    if (depth == 0 && fn.name != QLatin1String("main"))
         return;
+    if (depth >= kMaxBuilderDepth) {
+        for (const QList<CppFreeCall> *calls : {&fn.builderCalls, &fn.freeCalls})
+            for (const CppFreeCall &call : *calls) {
+                const QStringList called = splitScope(call.function);
+                if (!called.isEmpty() && m_freeFunctionsByName.contains(called.constLast())) {
+                    m_builderBoundsHit.append(call.evidence);
+                    return;
+                }
+            }
+        return;
+    }
     const auto follow = [&](const CppFreeCall &call) {
         const QStringList calledName = splitScope(call.function);
         if (calledName.isEmpty())

@@ -74,6 +74,9 @@ private:
     CppHelperPorts m_helpers;         ///< after the containers it reads
     CppConstructions m_constructions; ///< after the resolver and the helper ports
     CppParameterLinker m_parameters;  ///< after the resolver and the helper ports
+    /// Calls not followed because kMaxBuilderDepth was reached, for the entry point being
+    /// linked (entry points are linked one after another).
+    mutable QList<Evidence> m_builderBoundsHit;
 };
 
 } // namespace rosarch

@@ -23,6 +23,19 @@ std::vector<rclcpp::Node::SharedPtr> make_filter_line(const rclcpp::NodeOptions 
   return stages;
 }
 
+namespace
+{
+std::shared_ptr<ZoneWatcher> build_far() {return std::make_shared<ZoneWatcher>("far");}
+std::shared_ptr<ZoneWatcher> far_step_three() {return build_far();}
+std::shared_ptr<ZoneWatcher> far_step_two() {return far_step_three();}
+std::shared_ptr<ZoneWatcher> far_step_one() {return far_step_two();}
+}  // namespace
+
+std::shared_ptr<ZoneWatcher> far_watcher()
+{
+  return far_step_one();
+}
+
 ZoneWatcher::ZoneWatcher(const std::string & zone)
 : rclcpp::Node(zone + "_watcher")
 {

@@ -66,4 +66,7 @@ private:
 // The stages of one filter line, built from their settings.
 std::vector<rclcpp::Node::SharedPtr> make_filter_line(const rclcpp::NodeOptions & options);
 
+// A watcher for the far zone, made several calls down.
+std::shared_ptr<ZoneWatcher> far_watcher();
+
 }  // namespace line_nodes
