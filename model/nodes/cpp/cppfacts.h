@@ -168,6 +168,8 @@ struct CppBaseInitializer
 {
     QString name; ///< as written, e.g. "Node", "rclcpp::Node", "nav2::LifecycleNode"
     CppValue firstArgument;
+    /// All arguments, for a base of the workspace (`TestActionServer("assisted_teleop")`)
+    QList<CppValue> arguments = {};
 };
 
 /// A function definition (free, inline member or out-of-line member).

@@ -51,7 +51,7 @@ template <class F> void fields(CppProceduralNode &v, F f)
 }
 template <class F> void fields(CppBaseInitializer &v, F f)
 {
-    f(v.name, v.firstArgument);
+    f(v.name, v.firstArgument, v.arguments);
 }
 template <class F> void fields(CppFunction &v, F f)
 {

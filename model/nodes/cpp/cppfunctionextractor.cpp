@@ -132,6 +132,10 @@ void CppFunctionExtractor::readInitializers(TSNode definition)
             base.name = simplified(m_tree, nameNode);
             if (!args.empty())
                 base.firstArgument = m_values.evaluate(args.front());
+            constexpr size_t kMaxArguments = 8; // a base's constructor takes a few
+            // (a base is written like a member here: `Base(x)` parses as a field's initializer)
+            for (size_t i = 0; i < args.size() && i < kMaxArguments; ++i)
+                base.arguments.append(i == 0 ? base.firstArgument : m_values.evaluate(args[i]));
             m_function.baseInitializers.append(base);
             if (ts::is(nameNode, "field_identifier")) {
                 if (args.size() == 1)

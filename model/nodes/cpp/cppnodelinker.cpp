@@ -293,6 +293,7 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
         // `class PathToTrajectory : public ConverterBase<Path, Trajectory>`: the base's ports
         // typed by its template parameters take the types the derived class gives them.
         QHash<QString, QString> typed;
+        QStringList templateArguments;
         const QStringList &parameters = m_index.at(lineage[i]).cls->templateParameters;
         for (qsizetype d = 0; d < i && !parameters.isEmpty() && typed.isEmpty(); ++d) {
             const CppClassIndex::ClassInfo &derived = m_index.at(lineage[d]);
@@ -300,12 +301,48 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
                 const QString plain = withoutTemplateArguments(base).remove(u' ');
                 if (m_index.lookup(plain, derived.cls->scope, derived.file) != lineage[i])
                     continue;
-                const QStringList arguments = templateArgumentsOf(base.simplified());
-                for (qsizetype a = 0; a < parameters.size() && a < arguments.size(); ++a)
-                    typed.insert(parameters.at(a), arguments.at(a));
+                templateArguments = templateArgumentsOf(base.simplified());
+                for (qsizetype a = 0; a < parameters.size() && a < templateArguments.size(); ++a)
+                    typed.insert(parameters.at(a), templateArguments.at(a));
             }
         }
-        ports += portsOf(lineage[i], true, typed);
+        QList<Port> inherited = portsOf(lineage[i], true, typed);
+        // `AssistedTeleopServer() : TestActionServer("assisted_teleop")`: the base's ports
+        // named by its constructor's parameters, as the derived class's constructor fills them.
+        CppLinkContext at;
+        const bool open = std::any_of(inherited.cbegin(), inherited.cend(),
+                                      [](const Port &p) { return !p.isResolved(); });
+        if (const CppBaseInitializer *init = open ? baseInitializer(lineage, i, &at) : nullptr) {
+            // (the bounds this pass hits are the class's own pass's, reported there)
+            const QList<Evidence> hit = m_helpers.takeBoundsHit();
+            const QList<Port> filled =
+                m_helpers.constructedPorts(lineage[i], init->arguments, at, templateArguments);
+            m_helpers.takeBoundsHit();
+            for (const Evidence &e : hit)
+                m_helpers.boundHit(e);
+            const auto sameCall = [](const Port &a, const Port &b) {
+                return a.kind == b.kind && a.evidence == b.evidence;
+            };
+            for (Port &p : inherited) {
+                // one port per call on both sides (a lazy helper makes several at one call)
+                const auto same = std::find_if(filled.cbegin(), filled.cend(),
+                                               [&](const Port &c) { return sameCall(c, p); });
+                const auto calls = [&](const QList<Port> &list) {
+                    return std::count_if(list.cbegin(), list.cend(),
+                                         [&](const Port &c) { return sameCall(c, p); });
+                };
+                if (same != filled.cend() && !p.isResolved() && same->isResolved() &&
+                    calls(filled) == 1 && calls(inherited) == 1) {
+                    p.name = same->name;
+                    p.nameOrigin = same->nameOrigin;
+                    p.nameExpression = same->nameExpression;
+                    p.parameter = same->parameter;
+                    p.parameterPrefix = same->parameterPrefix;
+                    p.parameterSuffix = same->parameterSuffix;
+                }
+            }
+        }
+        ports += inherited;
     }
     std::stable_sort(ports.begin(), ports.end(), [](const Port &a, const Port &b) {
         return evidenceLess(a.evidence, b.evidence);
@@ -472,6 +509,65 @@ QString CppNodeLinker::literalName(const CppValue &value, const CppLinkContext &
                                                                                    : r.name;
 }
 
+// The initializer by which a class of `lineage` before `base` (a derived one) hands arguments
+// to the constructor of `lineage[base]`, with the constructor it is written in (`at`); null
+// when none does, or two constructors do.
+const CppBaseInitializer *CppNodeLinker::baseInitializer(const QList<int> &lineage, qsizetype base,
+                                                         CppLinkContext *at) const
+{
+    const QString name = m_index.at(lineage[base]).cls->name;
+    const CppBaseInitializer *found = nullptr;
+    for (qsizetype d = 0; d < base; ++d) {
+        for (const auto &ref : m_index.at(lineage[d]).functions) {
+            if (!ref.function->isConstructor)
+                continue;
+            for (const CppBaseInitializer &init : ref.function->baseInitializers) {
+                if (init.arguments.isEmpty() ||
+                    lastSegment(withoutTemplateArguments(init.name).remove(u' ')) != name)
+                    continue;
+                if (found)
+                    return nullptr; // constructors that disagree: the instance decides
+                found = &init;
+                *at = CppLinkContext{lineage[d], ref.function, ref.file, nullptr};
+            }
+        }
+        if (found)
+            return found;
+    }
+    return nullptr;
+}
+
+// Which argument of a constructor of node class `cls`, called with `argumentCount` arguments,
+// it hands on as the node's name (`Filter(name, options) : Node(name, options)`); -1 when it
+// names the node itself or its constructors disagree.
+int CppNodeLinker::forwardedName(int cls, int argumentCount) const
+{
+    const CppClassIndex::ClassInfo &info = m_index.at(cls);
+    int forwarded = -2;
+    for (const auto &ref : info.functions) {
+        const CppFunction &ctor = *ref.function;
+        if (!ctor.isConstructor || argumentCount > ctor.parameterNames.size() ||
+            argumentCount < ctor.requiredParameters)
+            continue;
+        for (const CppBaseInitializer &init : ctor.baseInitializers) {
+            const QString name = lastSegment(withoutTemplateArguments(init.name).remove(u' '));
+            const bool toABase = std::any_of(
+                info.cls->bases.cbegin(), info.cls->bases.cend(), [&](const QString &b) {
+                    return lastSegment(withoutTemplateArguments(b).remove(u' ')) == name;
+                });
+            if (!toABase)
+                continue;
+            const int index = init.firstArgument.kind == CppValue::Kind::FunctionParameter
+                                  ? init.firstArgument.index
+                                  : -1;
+            if (forwarded != -2 && forwarded != index)
+                return -1;
+            forwarded = index;
+        }
+    }
+    return forwarded < 0 ? -1 : forwarded;
+}
+
 QString CppNodeLinker::nodeNameOf(int index, int depth) const
 {
     const CppClassIndex::ClassInfo &info = m_index.at(index);
@@ -486,22 +582,43 @@ QString CppNodeLinker::nodeNameOf(int index, int depth) const
             const QString name = withoutTemplateArguments(init.name).remove(u' ');
             if (!baseNames.contains(name) && !baseNames.contains(lastSegment(name)))
                 continue;
-            if (init.firstArgument.kind == CppValue::Kind::Literal)
-                return init.firstArgument.literal;
+            // A base of the workspace decides which of its arguments names the node
+            // (`TestActionServer("assisted_teleop")` is an action's name, not the node's).
+            CppValue named = init.firstArgument;
+            for (int b : info.projectBases) {
+                if (m_index.at(b).cls->name != lastSegment(name) || init.arguments.isEmpty())
+                    continue;
+                const int forwarded = forwardedName(b, int(init.arguments.size()));
+                named = forwarded >= 0 ? init.arguments.value(forwarded) : CppValue();
+            }
+            if (named.kind == CppValue::Kind::Literal)
+                return named.literal;
             // A constant, a member or a local holding a literal names the node; a constructor
             // parameter (`node_name`, `options`) is the instance's to decide: no name here, never
             // the parameter's own name.
-            if (fallback.isEmpty())
-                fallback =
-                    literalName(init.firstArgument, {index, ref.function, ref.file, nullptr});
+            if (fallback.isEmpty() && !named.isNone())
+                fallback = literalName(named, {index, ref.function, ref.file, nullptr});
             break;
         }
     }
     if (!fallback.isEmpty() || depth > kMaxLinkDepth)
         return fallback;
-    for (int b : info.projectBases)
-        if (m_index.at(b).node)
-            return nodeNameOf(b, depth + 1);
+    for (int b : info.projectBases) {
+        if (!m_index.at(b).node)
+            continue;
+        // `ImuForward() : PassStage(Settings{.node_name = "imu_forward"}, options)`: the name
+        // the base's constructor makes of what this class hands it
+        CppLinkContext at;
+        if (const CppBaseInitializer *init = baseInitializer({index, b}, 1, &at)) {
+            CppInstantiation inst;
+            inst.className = init->name;
+            inst.arguments = init->arguments;
+            const QString name = m_constructions.child(b, inst, at, QString()).nodeName;
+            if (!name.isEmpty() && !name.contains(u'{'))
+                return name;
+        }
+        return nodeNameOf(b, depth + 1);
+    }
     return {};
 }
 
@@ -648,8 +765,22 @@ void CppNodeLinker::addConstructions(const CppFunction &fn, const CppLinkContext
     if (depth >= kMaxBuilderDepth) {
         for (const QList<CppFreeCall> *calls : {&fn.builderCalls, &fn.freeCalls})
             for (const CppFreeCall &call : *calls) {
+                // said where the function called builds a node itself
                 const QStringList called = splitScope(call.function);
-                if (!called.isEmpty() && m_freeFunctionsByName.contains(called.constLast())) {
+                const auto buildsANode = [&](const CppClassIndex::FunctionRef &ref) {
+                    return std::any_of(
+                        ref.function->instantiations.cbegin(), ref.function->instantiations.cend(),
+                        [&](const CppInstantiation &inst) {
+                            const int c = m_index.lookup(
+                                withoutTemplateArguments(inst.className).remove(u' '),
+                                ref.function->namespaces, ref.file);
+                            return c >= 0 && m_index.at(c).node;
+                        });
+                };
+                const auto candidates = called.isEmpty()
+                                            ? QList<CppClassIndex::FunctionRef>()
+                                            : m_freeFunctionsByName.value(called.constLast());
+                if (std::any_of(candidates.cbegin(), candidates.cend(), buildsANode)) {
                     m_builderBoundsHit.append(call.evidence);
                     return;
                 }

@@ -32,6 +32,9 @@ private:
     AtomicNode classNode(int index, const CppProceduralNode *ownedNode = nullptr) const;
     const CppProceduralNode *ownedNode(int cls) const;
     QString nodeNameOf(int index, int depth) const;
+    int forwardedName(int cls, int argumentCount) const;
+    const CppBaseInitializer *baseInitializer(const QList<int> &lineage, qsizetype base,
+                                              CppLinkContext *at) const;
     /// The name `value` (a node's name argument) stands for when a literal decides it; "" for a
     /// constructor parameter or an expression.
     QString literalName(const CppValue &value, const CppLinkContext &ctx) const;
