@@ -246,6 +246,7 @@ private Q_SLOTS:
 
         DiagramView *view = diagram()->view();
         view->setZoom(1.6);
+        QCoreApplication::processEvents(); // the scroll bars the zoom brings, before scrolling
         view->horizontalScrollBar()->setValue(
             (view->horizontalScrollBar()->minimum() + view->horizontalScrollBar()->maximum()) / 2);
         view->verticalScrollBar()->setValue(

@@ -18,8 +18,11 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QScrollBar>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -44,6 +47,7 @@ struct ViewAnchor
     QString key;
     QPointF offset; ///< from the middle of the view to the element's corner (scene units)
     QPointF centre; ///< the middle of the view (scene coordinates)
+    QPoint at;      ///< where the element's corner is in the viewport (pixels)
 
     static ViewAnchor of(const DiagramScene &scene, const QGraphicsView &view,
                          const QStringList &selected)
@@ -56,6 +60,7 @@ struct ViewAnchor
                 item && shown.intersects(item->sceneBoundingRect())) {
                 a.key = key;
                 a.offset = item->sceneBoundingRect().topLeft() - a.centre;
+                a.at = view.mapFromScene(item->sceneBoundingRect().topLeft());
                 return a;
             }
         qreal nearest = -1;
@@ -69,6 +74,7 @@ struct ViewAnchor
                 nearest = distance;
                 a.key = box->key();
                 a.offset = corner - a.centre;
+                a.at = view.mapFromScene(corner);
             }
         }
         return a;
@@ -78,6 +84,13 @@ struct ViewAnchor
     {
         const DiagramItem *item = key.isEmpty() ? nullptr : scene.item(key);
         view->centerOn(item ? item->sceneBoundingRect().topLeft() - offset : centre);
+        if (!item)
+            return;
+        // The new drawing may add or drop a scroll bar, which moves the middle of the view:
+        // the corner goes back to its pixel.
+        const QPoint moved = view->mapFromScene(item->sceneBoundingRect().topLeft()) - at;
+        view->horizontalScrollBar()->setValue(view->horizontalScrollBar()->value() + moved.x());
+        view->verticalScrollBar()->setValue(view->verticalScrollBar()->value() + moved.y());
     }
 };
 
@@ -362,10 +375,29 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
         for (const QString &key : selected)
             if (DiagramItem *item = m_scene->item(key))
                 item->setSelected(true);
+        if (const DiagramItem *item = m_scene->item(m_expanded))
+            showExpanded(*item);
     }
+    m_expanded.clear();
     m_overviewAction->setEnabled(true);
     m_expandAllAction->setEnabled(isCollapsed());
     Q_EMIT layoutFinished(true);
+}
+
+void DiagramPanel::showExpanded(const DiagramItem &item)
+{
+    // Expanded in place: its corner where the box's was, then moved as little as needed to
+    // show all of it; bigger than the view, it fills the view from its top left corner.
+    const QRectF rect = item.sceneBoundingRect();
+    const QPointF shift = m_view->mapToScene(m_expandedAt.toPoint()) - rect.topLeft();
+    const QRectF shown = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
+    m_view->centerOn(shown.center() - shift);
+    const QRectF view = m_view->mapToScene(m_view->viewport()->rect()).boundingRect();
+    const qreal margin = 8 / std::max(m_view->zoom(), 0.01);
+    if (rect.width() + 2 * margin <= view.width() && rect.height() + 2 * margin <= view.height())
+        m_view->ensureVisible(rect, int(margin * m_view->zoom()), int(margin * m_view->zoom()));
+    else
+        m_view->centerOn(rect.topLeft() - QPointF(margin, margin) + view.center() - view.topLeft());
 }
 
 void DiagramPanel::showMessage(const QString &text)

@@ -161,8 +161,7 @@ private:
     {
         LayoutGraph graph;
         QString dot;
-        bool sizeChecked = false;               ///< the composite was checked for the overview
-        std::optional<DiagramOptions> overview; ///< switched to these overview options
+        std::optional<DiagramOptions> overview; ///< switched to these (first view) options
     };
     /// The fonts of the drawing as text: a worker builds its own QFonts from them (a QFont
     /// shared with the UI thread caches its engine there).
@@ -174,9 +173,10 @@ private:
     const Composite *composite() const;
     DiagramMetrics metrics() const;
     static DiagramMetrics metrics(const Fonts &fonts);
-    /// Builds the graph of `composite` (pure; runs on any thread). Boxes that cover more than
-    /// `overviewArea` (points², < 0 for no check) cannot be read at the legible zoom: then the
-    /// graph is the overview's, built from `base` (the filters).
+    /// Builds the graph of `composite` (pure; runs on any thread). When its boxes alone cover
+    /// more than `overviewArea` (points², < 0 for no check), it cannot be read at the legible
+    /// zoom: then the graph is that of the first DiagramFirstView step after `options` whose
+    /// boxes fit, built from `base` (the filters), else of the overview.
     static Built build(const Composite &composite, const DiagramOptions &options,
                        const DiagramOptions &base, const DiagramMetrics &metrics,
                        double overviewArea);
@@ -197,9 +197,20 @@ private:
     void onRootChosen(const QString &instanceId);
     /// The options for the current composite: filters, collapsed namespaces, compact parts.
     DiagramOptions currentOptions() const;
-    /// Switches the current composite to its overview when it is first shown too big to read
-    /// at the legible zoom; true when it did (the caller lays out again).
+    /// Draws less of the current composite when it is first shown too big to read at the
+    /// legible zoom (the next DiagramFirstView step that should fit); true when it does (the
+    /// caller lays out again).
     bool overviewInstead(const QSizeF &size);
+    /// Collapses what `options` collapse in the current composite.
+    void setCollapse(const DiagramOptions &options);
+    /// Keeps an element where it was in the view after it is expanded, and all of it in view
+    /// when it fits.
+    void keepInView(const QString &key);
+    /// Moves the view onto an element expanded in place, once it is drawn.
+    void showExpanded(const DiagramItem &item);
+
+    /// A first view tries at most this many steps to find one that can be read.
+    static constexpr int kFirstViewTries = 3;
 
     QString m_emptyText;
     Architecture m_architecture;
@@ -209,6 +220,11 @@ private:
     QHash<QString, QStringList> m_compact;   // per composite: parts drawn without ports
     QSet<QString> m_boundaryCollapsed;       ///< composites whose boundary is one box per side
     QSet<QString> m_sizeChecked;             ///< composites whose size was checked for the overview
+    QHash<QString, QHash<int, qreal>> m_firstViewFits; ///< first view steps tried: fit zoom
+    double m_lastBoxArea = 0;                          ///< of the graph built last (points²)
+    double m_retryArea = -1; ///< the box area a first view laid out again needs
+    QString m_expanded;      ///< the element expanded, kept in view once drawn
+    QPointF m_expandedAt;    ///< where its corner was in the viewport
     QList<LaunchRoot> m_roots;
     QHash<QString, DiagramMark> m_marks;
     QStringList m_missing;

@@ -1,6 +1,7 @@
 // The composed diagram panel's way from a composite to a drawing: the layout graph (built off
 // the UI thread for big composites, with the overview check), then the layout (cached, or on
 // the DiagramLayouter), then the scene (DiagramPanel::applyLayout).
+#include "diagramfirstview.h"
 #include "diagramlayouter.h"
 #include "diagramoverview.h"
 #include "diagrampanel.h"
@@ -59,15 +60,34 @@ DiagramPanel::Built DiagramPanel::build(const Composite &composite, const Diagra
 {
     Built built;
     built.graph = DiagramBuilder::build(composite, options, metrics);
-    // Boxes alone that cover more than the view at the legible zoom cannot fit: go straight
-    // to the overview rather than lay out a drawing nobody can read.
-    if (overviewArea >= 0 && DiagramOverview::boxArea(built.graph) > overviewArea) {
-        built.sizeChecked = true;
-        const DiagramOptions overview = DiagramOverview::options(composite, base);
-        if (overview.collapsedNamespaces != options.collapsedNamespaces ||
-            overview.compactParts != options.compactParts || !options.collapseBoundary) {
-            built.overview = overview;
-            built.graph = DiagramBuilder::build(composite, overview, metrics);
+    // Boxes alone that cover more than the view at the legible zoom cannot fit: a first view
+    // that big draws less, but no less than needed: the first of the steps towards the
+    // overview whose boxes fit (found by bisection: each step draws fewer boxes than the one
+    // before). The layout, bigger than its boxes, may still not fit: overviewInstead decides.
+    const auto fits = [overviewArea](const LayoutGraph &graph) {
+        return DiagramOverview::boxArea(graph) <= overviewArea;
+    };
+    if (overviewArea >= 0 && !fits(built.graph)) {
+        const QList<DiagramOptions> steps = DiagramFirstView::steps(composite, base);
+        int low = DiagramFirstView::indexOf(steps, options) + 1;
+        int high = int(steps.size()) - 1;
+        int best = high;
+        std::optional<LayoutGraph> bestGraph;
+        while (low <= high) {
+            const int middle = (low + high) / 2;
+            LayoutGraph graph = DiagramBuilder::build(composite, steps[middle], metrics);
+            if (fits(graph)) {
+                best = middle;
+                bestGraph = std::move(graph);
+                high = middle - 1;
+            } else {
+                low = middle + 1;
+            }
+        }
+        if (best >= 0 && !DiagramFirstView::sameCollapse(steps[best], options)) {
+            built.overview = steps[best];
+            built.graph =
+                bestGraph ? *bestGraph : DiagramBuilder::build(composite, steps[best], metrics);
         }
     }
     built.dot = GraphLayout::toDot(built.graph);
@@ -97,8 +117,11 @@ void DiagramPanel::relayout()
     const bool check = !m_sizeChecked.contains(m_current) && m_fitPending && m_view->isVisible();
     const double z = m_view->legibleZoom();
     const QSize viewport = m_view->viewport()->size();
-    const double overviewArea =
+    double overviewArea =
         check && z > 0 ? double(viewport.width()) * viewport.height() / (z * z) : -1.0;
+    if (check && m_retryArea >= 0)
+        overviewArea = m_retryArea; // the layout came out bigger than its boxes promised
+    m_retryArea = -1;
     const DiagramOptions options = currentOptions();
     if (elementCount(*c) <= kInlineBuildElements) {
         onBuilt(build(*c, options, m_options, metrics(), overviewArea));
@@ -130,13 +153,9 @@ void DiagramPanel::onBuilt(const Built &built)
     const Composite *c = composite();
     if (!c)
         return;
-    if (built.sizeChecked)
-        m_sizeChecked.insert(m_current);
-    if (built.overview) {
-        m_collapsed[m_current] = built.overview->collapsedNamespaces;
-        m_compact[m_current] = built.overview->compactParts;
-        m_boundaryCollapsed.insert(m_current);
-    }
+    if (built.overview)
+        setCollapse(*built.overview);
+    m_lastBoxArea = DiagramOverview::boxArea(built.graph);
     const LayoutGraph &graph = built.graph;
     if (graph.nodes.isEmpty()) {
         m_scene->clearDiagram();

@@ -1,6 +1,7 @@
 // The composed diagram panel's collapsing and expanding: namespaces drawn as one box, parts
 // drawn without their ports, the overview a diagram too big to read starts in, and the element
 // actions (double-click, context menu) that collapse, expand and open.
+#include "diagramfirstview.h"
 #include "diagramoverview.h"
 #include "diagrampanel.h"
 #include "diagramscene.h"
@@ -111,20 +112,57 @@ bool DiagramPanel::overviewInstead(const QSizeF &size)
     // A view not on screen has no size to fit: decide when it is shown and fitted.
     if (m_sizeChecked.contains(m_current) || !m_fitPending || !m_view->isVisible())
         return false;
-    m_sizeChecked.insert(m_current);
-    if (m_view->fitZoom(size) >= m_view->legibleZoom())
-        return false;
+    const qreal fit = m_view->fitZoom(size);
+    const qreal legible = m_view->legibleZoom();
     const Composite *c = composite();
-    if (!c)
+    if (!c || fit >= legible || fit <= 0) {
+        m_sizeChecked.insert(m_current);
         return false;
-    const DiagramOptions overview = DiagramOverview::options(*c, m_options);
-    if (overview.collapsedNamespaces == m_collapsed.value(m_current) &&
-        overview.compactParts == m_compact.value(m_current) && isBoundaryCollapsed())
-        return false; // already as small as it gets: fit stops at the legible zoom
-    m_collapsed[m_current] = overview.collapsedNamespaces;
-    m_compact[m_current] = overview.compactParts;
-    m_boundaryCollapsed.insert(m_current);
+    }
+    const QList<DiagramOptions> steps = DiagramFirstView::steps(*c, m_options);
+    const int step = DiagramFirstView::indexOf(steps, currentOptions());
+    QHash<int, qreal> &tried = m_firstViewFits[m_current];
+    tried.insert(step, fit);
+    if (step == steps.size() - 1 || tried.size() > kFirstViewTries) {
+        // Nothing tried can be read whole: the one that shows most of itself, and of those the
+        // one that collapses least. Drawing less does not always draw smaller: namespaces
+        // stacked in a column become a long row of boxes.
+        m_sizeChecked.insert(m_current);
+        int best = step;
+        for (auto it = tried.cbegin(); it != tried.cend(); ++it)
+            if (it.key() >= 0 &&
+                (it.value() > tried.value(best) ||
+                 (qFuzzyCompare(it.value(), tried.value(best)) && it.key() < best)))
+                best = it.key();
+        if (best == step)
+            return false;
+        setCollapse(steps[best]);
+        return true; // laid out before: the layouter has it cached
+    }
+    // The layout is bigger than its boxes promised: the next build asks for boxes that much
+    // smaller (the zoom scales both sides).
+    const double shortBy = (legible / fit) * (legible / fit);
+    m_retryArea = m_lastBoxArea / shortBy;
     return true;
+}
+
+void DiagramPanel::setCollapse(const DiagramOptions &options)
+{
+    m_collapsed[m_current] = options.collapsedNamespaces;
+    m_compact[m_current] = options.compactParts;
+    if (options.collapseBoundary)
+        m_boundaryCollapsed.insert(m_current);
+    else
+        m_boundaryCollapsed.remove(m_current);
+}
+
+void DiagramPanel::keepInView(const QString &key)
+{
+    const DiagramItem *item = m_scene->item(key);
+    if (!item)
+        return;
+    m_expanded = key;
+    m_expandedAt = m_view->mapFromScene(item->sceneBoundingRect().topLeft());
 }
 
 void DiagramPanel::onElementDoubleClicked(const QString &key)
@@ -138,9 +176,12 @@ void DiagramPanel::onElementDoubleClicked(const QString &key)
         if (part && part->kind == RosNodePart::Kind::Launch &&
             m_architecture.composite(part->instanceId))
             showComposite(part->instanceId);
-        else if (part && isPartCompact(part->id))
+        else if (part && isPartCompact(part->id)) {
+            keepInView(key);
             setPartCompact(part->id, false);
+        }
     } else if (k.kind == DiagramKey::Kind::Namespace && isNamespaceCollapsed(k.id)) {
+        keepInView(key);
         setNamespaceCollapsed(k.id, false);
     } else if (k.kind == DiagramKey::Kind::Boundary && isBoundaryCollapsed()) {
         setBoundaryCollapsed(false);

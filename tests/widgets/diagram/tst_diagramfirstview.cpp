@@ -1,0 +1,200 @@
+// The first view of a system shows its nodes: only what cannot be read at the legible zoom is
+// collapsed, the boundary first, then the parts' port rows, then the biggest namespaces one at
+// a time; and a box expanded by a double-click opens in place, in view.
+#include "diagramarchitecture.h"
+#include "diagramclusteritem.h"
+#include "diagramfirstview.h"
+#include "diagramlayouter.h"
+#include "diagramnodeitem.h"
+#include "diagramoverview.h"
+#include "diagrampanel.h"
+#include "diagramscene.h"
+#include "diagramview.h"
+#include "diagramwait.h"
+#include "screenshot.h"
+
+#include <QtTest>
+
+using namespace rosarch;
+using rosarch::test::laidOut;
+using rosarch::test::saveScreenshot;
+
+namespace {
+
+Architecture fleet(int robots)
+{
+    Architecture arch;
+    arch.composites << test::diagram::fleet(robots);
+    return arch;
+}
+
+/// The on-screen pixel height of the diagram's name text at the view's zoom.
+double namePixels(DiagramPanel &panel)
+{
+    return panel.scene()->diagramStyle().textFont.pixelSize() * panel.view()->zoom();
+}
+
+double legiblePixels(DiagramPanel &panel)
+{
+    return DiagramPanel::kLegiblePoints * panel.logicalDpiY() / 72.0;
+}
+
+QRectF shownRect(DiagramPanel &panel)
+{
+    return panel.view()->mapToScene(panel.view()->viewport()->rect()).boundingRect();
+}
+
+/// The parts drawn as boxes of their own.
+QStringList drawnParts(DiagramPanel &panel)
+{
+    QStringList parts;
+    for (const QString &key : panel.scene()->keys())
+        if (key.startsWith(QLatin1String("part:")) &&
+            dynamic_cast<DiagramNodeItem *>(panel.scene()->item(key)))
+            parts << key;
+    return parts;
+}
+
+} // namespace
+
+class TestDiagramFirstView : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void stepsGoFromAllToTheOverview();
+    void firstViewShowsNodes_data();
+    void firstViewShowsNodes();
+    void expandInPlaceKeepsThePartInView();
+};
+
+void TestDiagramFirstView::stepsGoFromAllToTheOverview()
+{
+    const Composite c = test::diagram::fleet(3);
+    const QList<DiagramOptions> steps = DiagramFirstView::steps(c, DiagramOptions());
+    QCOMPARE(steps.size(), 6); // all, boundary, ports, then /robot3, /robot2, /robot1
+    QVERIFY(!steps[0].collapseBoundary && steps[0].compactParts.isEmpty());
+    QVERIFY(steps[1].collapseBoundary && steps[1].compactParts.isEmpty());
+    QCOMPARE(steps[2].compactParts.size(), c.parts.size());
+    QVERIFY(steps[2].collapsedNamespaces.isEmpty());
+    QCOMPARE(steps[3].collapsedNamespaces, QStringList{QStringLiteral("/robot3")});
+    QCOMPARE(steps[4].collapsedNamespaces, (QStringList{"/robot2", "/robot3"}));
+    QVERIFY(DiagramFirstView::sameCollapse(steps.last(),
+                                           DiagramOverview::options(c, DiagramOptions())));
+    QCOMPARE(DiagramFirstView::indexOf(steps, steps[4]), 4);
+}
+
+void TestDiagramFirstView::firstViewShowsNodes_data()
+{
+    QTest::addColumn<int>("robots");
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<int>("open");       // robots whose namespace is drawn open, at least
+    QTest::addColumn<bool>("withPorts"); // every part drawn with its port rows
+    QTest::newRow("fleet of 1, 1600x1000, all of it") << 1 << QSize(1600, 1000) << 1 << true;
+    QTest::newRow("fleet of 2, 1100x720, every node") << 2 << QSize(1100, 720) << 2 << false;
+    QTest::newRow("fleet of 3, 1280x800, every node") << 3 << QSize(1280, 800) << 3 << false;
+    QTest::newRow("fleet of 4, 1400x900, one robot closed") << 4 << QSize(1400, 900) << 3 << false;
+    QTest::newRow("fleet of 6, 1900x1050, two robots open") << 6 << QSize(1900, 1050) << 2 << false;
+    QTest::newRow("fleet of 12, 900x600, the overview") << 12 << QSize(900, 600) << 0 << false;
+}
+
+void TestDiagramFirstView::firstViewShowsNodes()
+{
+    QFETCH(int, robots);
+    QFETCH(QSize, size);
+    QFETCH(int, open);
+    QFETCH(bool, withPorts);
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(size);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const Architecture arch = fleet(robots);
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(arch); }));
+    saveScreenshot(panel, QStringLiteral("diagram_first_view_%1.png").arg(robots));
+    // Whatever it draws, it draws legibly.
+    QVERIFY(namePixels(panel) >= legiblePixels(panel) - 0.01);
+    // The robots' namespaces are collapsed the last first, and only as many as do not fit:
+    // the open ones show their four nodes each.
+    int opened = 0;
+    for (int r = 1; r <= robots; ++r) {
+        const bool collapsed = panel.isNamespaceCollapsed(QStringLiteral("/robot%1").arg(r));
+        QVERIFY2(collapsed || opened == r - 1, qPrintable(QStringLiteral("robot %1").arg(r)));
+        opened += collapsed ? 0 : 1;
+    }
+    QVERIFY2(opened >= open, qPrintable(QStringLiteral("%1 robots open").arg(opened)));
+    const QStringList parts = drawnParts(panel);
+    QCOMPARE(parts.size(), 2 + 4 * opened); // map server, fleet monitor and each open robot's
+    if (opened == robots) {
+        // Every node fits: nothing is drawn smaller than it can be read.
+        QVERIFY(panel.view()->fitZoom() >= panel.view()->legibleZoom());
+        QVERIFY(panel.scene()->frameRect().isValid());
+        QVERIFY(shownRect(panel).adjusted(-2, -2, 2, 2).contains(panel.scene()->frameRect()));
+    }
+    QCOMPARE(!panel.isPartCompact(QStringLiteral("part2")), withPorts);
+    QCOMPARE(!panel.isCollapsed(), withPorts);
+}
+
+namespace {
+
+/// Moves the view so that `key`'s box is in its bottom right corner, then double-clicks it
+/// and waits for the drawing: where an expanded box is most easily pushed out of view.
+bool expandFromTheCorner(DiagramPanel &panel, const QString &key)
+{
+    QGraphicsItem *box = panel.scene()->item(key);
+    if (!box)
+        return false;
+    DiagramView *view = panel.view();
+    const QRectF shown = shownRect(panel);
+    const QPointF margin(12 / view->zoom(), 12 / view->zoom());
+    view->centerOn(box->sceneBoundingRect().bottomRight() + margin -
+                   (shown.bottomRight() - shown.center()));
+    if (!shownRect(panel).contains(box->sceneBoundingRect()))
+        return false;
+    const QPoint at = view->mapFromScene(box->sceneBoundingRect().center());
+    return laidOut(panel, [&] { QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, at); });
+}
+
+} // namespace
+
+void TestDiagramFirstView::expandInPlaceKeepsThePartInView()
+{
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(900, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(fleet(6)); }));
+    QVERIFY(panel.isNamespaceCollapsed(QStringLiteral("/robot4")));
+    const qreal zoom = panel.view()->zoom();
+
+    // A namespace: its frame opens where the box was and shows whole, with its parts.
+    QVERIFY(expandFromTheCorner(panel, QStringLiteral("namespace:/robot4")));
+    QVERIFY(!panel.isNamespaceCollapsed(QStringLiteral("/robot4")));
+    QCOMPARE(panel.view()->zoom(), zoom); // not fitted again
+    const QGraphicsItem *frame = panel.scene()->item(QStringLiteral("namespace:/robot4"));
+    QVERIFY(frame);
+    QVERIFY(dynamic_cast<const DiagramClusterItem *>(frame));
+    QVERIFY2(shownRect(panel).contains(frame->sceneBoundingRect()),
+             "the expanded namespace is in view");
+    // robot4's driver, lidar, localizer and planner
+    for (const char *part : {"part:part14", "part:part15", "part:part16", "part:part17"}) {
+        const QGraphicsItem *box = panel.scene()->item(QString::fromLatin1(part));
+        QVERIFY2(box, part);
+        QVERIFY2(shownRect(panel).contains(box->sceneBoundingRect()), part);
+    }
+    saveScreenshot(panel, QStringLiteral("diagram_expanded_in_place.png"));
+
+    // A part: its port rows open where it was, all of it in view.
+    const QString planner = QStringLiteral("part:part17");
+    QVERIFY(panel.isPartCompact(QStringLiteral("part17")));
+    const qreal compactHeight = panel.scene()->item(planner)->sceneBoundingRect().height();
+    QVERIFY(expandFromTheCorner(panel, planner));
+    QVERIFY(!panel.isPartCompact(QStringLiteral("part17")));
+    const QRectF expanded = panel.scene()->item(planner)->sceneBoundingRect();
+    QVERIFY(expanded.height() > compactHeight); // its three ports drawn
+    QVERIFY2(shownRect(panel).contains(expanded), "the expanded part is in view");
+    QCOMPARE(panel.view()->zoom(), zoom);
+}
+
+QTEST_MAIN(TestDiagramFirstView)
+#include "tst_diagramfirstview.moc"
