@@ -4,6 +4,7 @@
 
 #include <QHash>
 #include <QSet>
+#include <algorithm>
 
 namespace rosarch {
 
@@ -66,10 +67,14 @@ QString partBlock(const RosNodePart &part, const QString &indent)
                 : QStringLiteral("%1  ' name unresolved: %2\n").arg(indent, label(p.name));
         if (!p.model.isEmpty())
             line += QStringLiteral("%1  ' from interface model %2\n").arg(indent, label(p.model));
-        line += QStringLiteral("%1  %2 \"%3\" as %4_%3")
+        // The id comes first and stays the label's first line, as in an ACD's topic frame; the
+        // name a reader looks for follows, marked when it is only a guess.
+        const QString name =
+            channelLabel(p.name) + (p.resolved && !p.guessed ? QString() : QStringLiteral(" ?"));
+        line += QStringLiteral("%1  %2 \"%3\\n%4\" as %5_%3")
                     .arg(indent,
                          isInputPort(p.kind) ? QStringLiteral("portin") : QStringLiteral("portout"),
-                         p.id, part.id);
+                         p.id, name, part.id);
         ports << line;
     }
     out += QStringLiteral("%1component \"%2\" as %3 <<RosNodePart>>").arg(indent, caption, part.id);
@@ -78,6 +83,29 @@ QString partBlock(const RosNodePart &part, const QString &indent)
     out += QStringLiteral(" {\n") + ports.join(QLatin1Char('\n')) + QLatin1Char('\n') + indent +
            QStringLiteral("}\n");
     return out;
+}
+
+// PlantUML draws a composite's ports side by side along its top and bottom edges, and so are
+// a part's; past this many on one edge the default top-to-bottom layout grows wider than
+// PlantUML's default image limit (4096 px), and the ports are better stacked left to right.
+constexpr int kPortsPerEdge = 12;
+
+bool isLarge(const Composite &c)
+{
+    int in = 0, out = 0;
+    for (const BoundaryPort &b : c.boundary)
+        ++(b.isInput() ? in : out);
+    if (std::max(in, out) > kPortsPerEdge)
+        return true;
+    for (const RosNodePart &part : c.parts) {
+        int partIn = 0, partOut = 0;
+        for (const PartPort &p : part.ports)
+            if (p.active)
+                ++(isInputPort(p.kind) ? partIn : partOut);
+        if (part.active && std::max(partIn, partOut) > kPortsPerEdge)
+            return true;
+    }
+    return false;
 }
 
 } // namespace
@@ -97,6 +125,15 @@ QString CcdWriter::write(const Composite &c, QList<WrittenElement> *elements)
     else
         out += QStringLiteral("' launch file %1 (%2)\n")
                    .arg(c.file.isEmpty() ? c.stem : c.file, c.instanceId);
+    if (isLarge(c))
+        // Ports stacked down the sides, tight spacing and a smaller font keep a system of
+        // navigation2's size readable within PlantUML's default limit; what still exceeds it is
+        // shrunk to fit rather than cropped (README, "Large diagrams").
+        out += QStringLiteral("left to right direction\n"
+                              "skinparam nodesep 1\n"
+                              "skinparam ranksep 5\n"
+                              "skinparam defaultFontSize 9\n"
+                              "scale max 4096*4096\n");
     out += QStringLiteral("component \"%1\" as %2 <<ComposedRosNodeClassifier>> {\n")
                .arg(label(c.stem), top);
     // Comments stand on a line of their own above the element (PlantUML rejects them after an

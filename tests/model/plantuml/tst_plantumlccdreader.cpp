@@ -131,6 +131,37 @@ component "<<ComposedRosNodeClassifier>>\ndemo.launch.py" as demo {
                        QStringLiteral(
                            "line 16: connection kind 'server' inferred from the arrow ends")}
             << QStringList();
+        // Our writer names a part's port after its id, on a line of its own: the id still
+        // tells a server from a client.
+        QString named = declarations;
+        for (const auto &[id, name] : {std::pair{"p1", "chatter"}, std::pair{"rs1", "reset ?"},
+                                       std::pair{"s1", "chatter"}, std::pair{"ps1", "/reset"}})
+            named.replace(
+                QStringLiteral("\"%1\" as").arg(QLatin1String(id)),
+                QStringLiteral("\"%1\\n%2\" as").arg(QLatin1String(id), QLatin1String(name)));
+        QVERIFY(named.contains(QLatin1String(R"("ps1\n/reset" as part2_ps1)")));
+        QTest::newRow("part ports named after their ids, no colours")
+            << named + QStringLiteral(R"uml(  q_chatter <-- part1_p1
+  part2_s1 <-[#blue]- q_chatter
+  c_reset <--- part1_rs1
+  part2_ps1 -- c_reset
+}
+@enduml
+)uml")
+            << parts + root +
+                   QStringList{QStringLiteral("connection=publish talker -> chatter"),
+                               QStringLiteral("connection=subscribe chatter -> listener"),
+                               QStringLiteral("connection=client talker -> reset"),
+                               QStringLiteral("connection=server listener -> reset")}
+            << declarationNotes +
+                   QStringList{
+                       QStringLiteral(
+                           "line 13: connection kind 'publish' inferred from the arrow ends"),
+                       QStringLiteral(
+                           "line 15: connection kind 'client' inferred from the arrow ends"),
+                       QStringLiteral(
+                           "line 16: connection kind 'server' inferred from the arrow ends")}
+            << QStringList();
         QTest::newRow("colour decides over the arrow ends, any case, any dashes")
             << declarations + QStringLiteral(R"uml(  part1_p1 -[#BLUE,bold]----> q_chatter
   q_chatter -[#00FF00]-> part2_s1

@@ -160,6 +160,72 @@ private Q_SLOTS:
         qInfo("%d diagrams rendered by PlantUML, %d CCDs checked part by part", int(files.size()),
               int(ccdOf.size()));
     }
+
+    void largeCompositeFitsTheDefaultLimit()
+    {
+        // A system of navigation2's size: ports side by side along the top edge would make the
+        // image several times wider than PlantUML's default limit (4096 px), which crops it.
+        Composite c;
+        c.instanceId = QStringLiteral("lf1");
+        c.stem = QStringLiteral("big");
+        for (int n = 1; n <= 8; ++n) {
+            RosNodePart part;
+            part.id = QStringLiteral("part%1").arg(n);
+            part.name = QStringLiteral("server_%1").arg(n);
+            part.typeName = QStringLiteral("Server");
+            for (int k = 1; k <= 10; ++k) {
+                const QString id = QStringLiteral("s%1").arg(k);
+                const QString name =
+                    QStringLiteral("server_%1/some_long_input_topic_%2").arg(n).arg(k);
+                PartPort port;
+                port.id = id;
+                port.kind = PortKind::Subscriber;
+                port.name = name;
+                port.type = QStringLiteral("geometry_msgs/msg/PoseWithCovarianceStamped");
+                part.ports.append(port);
+                const QString boundary = QStringLiteral("s%1").arg(c.boundary.size() + 1);
+                c.boundary.append({boundary, PortKind::Subscriber, name, part.ports.last().type});
+                c.connections.append({Connection::Kind::DelegationIn, part.id, id, boundary});
+            }
+            c.parts.append(part);
+        }
+        const QString text = CcdWriter::write(c);
+        QVERIFY(text.contains(QLatin1String("\nleft to right direction\n")));
+        QVERIFY(text.contains(
+            QLatin1String(R"(portin "s3\nserver_2/some_long_input_topic_3" as part2_s3)")));
+
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("big.puml"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text.toUtf8());
+        f.close();
+        QProcess plantuml;
+        plantuml.setProcessChannelMode(QProcess::MergedChannels);
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("PLANTUML_LIMIT_SIZE"));
+        plantuml.setProcessEnvironment(env);
+        plantuml.start(QStringLiteral(ROSARCH_JAVA),
+                       {QStringLiteral("-Djava.awt.headless=true"), QStringLiteral("-jar"),
+                        QStringLiteral(ROSARCH_PLANTUML_JAR), QStringLiteral("-tpng"),
+                        QStringLiteral("-nometadata"), path});
+        QVERIFY(plantuml.waitForStarted(30000));
+        QVERIFY(plantuml.waitForFinished(300000));
+        QCOMPARE(plantuml.exitCode(), 0);
+        // PNG: the IHDR chunk holds width and height, big-endian, at bytes 16 and 20.
+        const QByteArray png = test::readFile(dir.filePath(QStringLiteral("big.png")));
+        QVERIFY(png.size() > 24);
+        const auto be32 = [&](int at) {
+            return quint32(quint8(png[at])) << 24 | quint32(quint8(png[at + 1])) << 16 |
+                   quint32(quint8(png[at + 2])) << 8 | quint32(quint8(png[at + 3]));
+        };
+        const quint32 width = be32(16), height = be32(20);
+        qInfo("large composite rendered at %u x %u px", width, height);
+        // Below the limit, not cropped at it (nor shrunk to it): the layout alone makes it fit.
+        QVERIFY2(width < 4096 && height < 4096,
+                 qPrintable(QStringLiteral("%1 x %2 px").arg(width).arg(height)));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestPlantUmlRender)
