@@ -332,8 +332,13 @@ void MainWindow::restoreSession()
     const QByteArray geometry = settings.windowGeometry();
     if (geometry.isEmpty() || !restoreGeometry(geometry)) {
         const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1600, 1000);
-        resize(std::min(1440, available.width() * 9 / 10),
-               std::min(900, available.height() * 9 / 10));
+        // A small screen is given whole: nine tenths of 1024 x 700 left the docks too little.
+        const bool smallScreen = available.width() < 1280 || available.height() < 800;
+        if (smallScreen)
+            setGeometry(available);
+        else
+            resize(std::min(1440, available.width() * 9 / 10),
+                   std::min(900, available.height() * 9 / 10));
         resetLayout();
         m_defaultState = saveState();
     }

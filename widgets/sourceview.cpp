@@ -343,6 +343,8 @@ void SourceView::applyPalette()
 
 void SourceView::updateHeader()
 {
+    // A sentence wraps in a narrow pane (1024 px wide windows); a path is cut instead.
+    m_pathLabel->setWordWrap(!m_headerProblem.isEmpty() || m_file.isEmpty());
     if (!m_headerProblem.isEmpty()) {
         m_pathLabel->setText(m_headerProblem);
         m_pathLabel->setToolTip(m_headerProblem);

@@ -1,16 +1,78 @@
 // The window at 1024 x 700: the Log shows more than two findings, and the Log's filter bar shows
-// each of its controls whole.
+// each of its controls whole; the diagram's header and toolbars, the main toolbar and the two
+// trees are shown whole, nothing behind a toolbar's arrow and no name drawn over another.
+#include "atomicnodepanel.h"
 #include "diagnosticfilterbar.h"
+#include "diagrambreadcrumbbar.h"
+#include "diagrampanel.h"
 #include "guifixture.h"
+#include "launchtreepanel.h"
 #include "logview.h"
 #include "mainwindow.h"
+#include "screenshot.h"
+#include "stagerunner.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QLineEdit>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeView>
 #include <QtTest>
 
 using namespace rosarch;
+
+namespace {
+
+/// The window at 1024 x 700 in the layout Reset Layout gives it.
+void smallWindow(MainWindow &w)
+{
+    w.show();
+    w.resize(1024, 700);
+    QTRY_COMPARE(w.height(), 700);
+    for (QAction *a : w.findChildren<QAction *>())
+        if (a->text() == QStringLiteral("&Reset Layout"))
+            a->trigger();
+}
+
+/// Where `child` is in `in` (its own coordinates).
+QRect placeIn(const QWidget *child, const QWidget *in)
+{
+    return {child->mapTo(in, QPoint()), child->size()};
+}
+
+/// No toolbar under `parent` hides an action behind its arrow, and each shows its buttons
+/// whole inside `parent`.
+QString toolBarProblem(const QWidget *parent,
+                       Qt::FindChildOptions options = Qt::FindChildrenRecursively)
+{
+    for (const QToolBar *bar : parent->findChildren<QToolBar *>(QString(), options)) {
+        if (!bar->isVisible())
+            continue;
+        for (const QWidget *child : bar->findChildren<QWidget *>()) {
+            if (child->objectName() == QLatin1String("qt_toolbarext_button")) {
+                if (child->isVisible())
+                    return bar->windowTitle() + QStringLiteral(": actions behind the arrow");
+                continue;
+            }
+            if (!child->isVisible() || child->parentWidget() != bar)
+                continue;
+            if (!parent->rect().contains(placeIn(child, parent)))
+                return QStringLiteral("%1 %2 outside %3 at %4,%5 %6x%7")
+                    .arg(QString::fromLatin1(child->metaObject()->className()),
+                         child->property("text").toString(), bar->windowTitle())
+                    .arg(placeIn(child, parent).x())
+                    .arg(placeIn(child, parent).y())
+                    .arg(child->width())
+                    .arg(child->height());
+        }
+    }
+    return {};
+}
+
+} // namespace
 
 class TestSmallWindow : public QObject
 {
@@ -52,6 +114,74 @@ private Q_SLOTS:
             QVERIFY2(child->width() >= child->minimumSizeHint().width(),
                      qPrintable(child->metaObject()->className()));
         }
+    }
+
+    void theHeaderAndTreesAreWholeAt1024x700()
+    {
+        MainWindow w;
+        smallWindow(w);
+        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        w.openWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.diagramPanel()->currentComposite().isEmpty() &&
+                                     !w.diagramPanel()->isLayingOut(),
+                                 60000);
+        QCoreApplication::processEvents();
+
+        // The main toolbar and the diagram's toolbars: every command shown.
+        QString problem = toolBarProblem(&w, Qt::FindDirectChildrenOnly);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        DiagramPanel *diagram = w.diagramPanel();
+        QVERIFY(diagram->overviewAction()->isVisible());
+        problem = toolBarProblem(diagram);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        QVERIFY(diagram->searchField()->width() >=
+                diagram->searchField()->minimumSizeHint().width());
+
+        // The diagram's header with a path too long for it: names cut in their middle, never
+        // drawn over each other or past the header; the note goes first.
+        DiagramBreadcrumbBar *crumbs = diagram->breadcrumbBar();
+        QList<DiagramBreadcrumbBar::Crumb> path;
+        for (int i = 0; i < 3; ++i)
+            path.append({QStringLiteral("lf%1").arg(i),
+                         QStringLiteral("unique_multi_tb3_simulation_%1").arg(i), QString()});
+        crumbs->setPath(path, QStringLiteral("as included by unique_multi_tb3_simulation"));
+        QCoreApplication::processEvents();
+        QVERIFY(crumbs->sizeHint().width() > crumbs->width()); // it does not fit whole
+        QVERIFY(diagram->rect().contains(placeIn(crumbs, diagram)));
+        int right = 0;
+        for (QWidget *child : crumbs->findChildren<QWidget *>()) {
+            if (!child->isVisible())
+                continue;
+            const QRect at = placeIn(child, crumbs);
+            QVERIFY2(crumbs->rect().contains(at), qPrintable(child->objectName()));
+            QVERIFY2(at.left() >= right,
+                     qPrintable(child->objectName() + QStringLiteral(" overlaps")));
+            right = at.right() + 1;
+            if (auto *button = qobject_cast<QToolButton *>(child)) {
+                QVERIFY2(button->width() >= button->sizeHint().width(), qPrintable(button->text()));
+                QVERIFY(button->text().contains(QStringLiteral("…")));
+            }
+        }
+        const auto *note = crumbs->findChild<QLabel *>(QStringLiteral("crumbNote"));
+        QVERIFY(note && !note->isVisible());
+
+        // The two trees: their filters whole, and a screenful of rows.
+        for (FilteredTreePanel *panel : {static_cast<FilteredTreePanel *>(w.nodePanel()),
+                                         static_cast<FilteredTreePanel *>(w.launchPanel())}) {
+            QLineEdit *filter = panel->filterEdit();
+            QVERIFY(w.rect().contains(placeIn(filter, &w)));
+            QVERIFY(filter->width() >= filter->minimumSizeHint().width());
+            QTreeView *tree = panel->treeView();
+            QVERIFY(w.rect().contains(placeIn(tree, &w)));
+            const int row = tree->sizeHintForRow(0);
+            QVERIFY(row > 0);
+            QVERIFY2(tree->viewport()->height() >= 12 * row,
+                     qPrintable(QStringLiteral("%1 px for rows of %2 px")
+                                    .arg(tree->viewport()->height())
+                                    .arg(row)));
+        }
+        test::saveScreenshot(w, QStringLiteral("window-1024x700.png"));
     }
 };
 

@@ -2,7 +2,10 @@
 
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -13,7 +16,8 @@ DiagramBreadcrumbBar::DiagramBreadcrumbBar(QWidget *parent)
     m_layout->setSpacing(0);
     m_layout->addStretch(1);
     // A deep path must not widen the diagram's dock (squeezing the panes beside it): what
-    // does not fit is cut at the right, the note first; the tooltips and the picker remain.
+    // does not fit goes, the note first, then the middle of each name (fitToWidth); the
+    // tooltips and the picker remain.
     setMinimumWidth(fontMetrics().averageCharWidth() * 12);
 }
 
@@ -56,6 +60,72 @@ void DiagramBreadcrumbBar::setPath(const QList<Crumb> &path, const QString &note
         label->setToolTip(noteToolTip);
         m_layout->insertWidget(m_layout->count() - 1, label);
         m_widgets << label;
+    }
+    fitToWidth();
+}
+
+QSize DiagramBreadcrumbBar::sizeHint() const
+{
+    return {m_fullWidth, QWidget::sizeHint().height()};
+}
+
+void DiagramBreadcrumbBar::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    if (event->size().width() != event->oldSize().width())
+        fitToWidth();
+}
+
+void DiagramBreadcrumbBar::fitToWidth()
+{
+    QList<QToolButton *> buttons;
+    QLabel *note = nullptr;
+    int fixed = 0; // separators
+    int full = 0;
+    for (QWidget *w : std::as_const(m_widgets)) {
+        if (auto *button = qobject_cast<QToolButton *>(w)) {
+            const int i = int(buttons.size());
+            buttons << button;
+            button->setText(m_path.value(i).label);
+            full += button->sizeHint().width();
+        } else if (w->objectName() == QLatin1String("crumbNote")) {
+            note = static_cast<QLabel *>(w);
+            full += note->sizeHint().width();
+        } else {
+            fixed += w->sizeHint().width();
+        }
+    }
+    const QMargins margins = m_layout->contentsMargins();
+    m_fullWidth = full + fixed + margins.left() + margins.right();
+    updateGeometry();
+    const int available = width() - margins.left() - margins.right() - fixed;
+    int crumbs = 0;
+    for (const QToolButton *button : std::as_const(buttons))
+        crumbs += button->sizeHint().width();
+    if (note)
+        note->setVisible(crumbs + note->sizeHint().width() <= available);
+    if (crumbs <= available || buttons.isEmpty())
+        return;
+    // The name shown gets two shares, the others one each; short names give what they do
+    // not use to the rest.
+    QList<QToolButton *> order = buttons.mid(0, buttons.size() - 1);
+    std::sort(order.begin(), order.end(), [](const QToolButton *a, const QToolButton *b) {
+        return a->sizeHint().width() < b->sizeHint().width();
+    });
+    order << buttons.last();
+    int left = available;
+    for (int i = 0; i < order.size(); ++i) {
+        QToolButton *button = order[i];
+        const int shares = int(order.size() - i) + 1;
+        const int share = std::max(0, i + 1 == order.size() ? left : left / shares);
+        const int wanted = button->sizeHint().width();
+        if (wanted > share) {
+            const QFontMetrics fm(button->font());
+            const int padding = wanted - fm.horizontalAdvance(button->text());
+            button->setText(fm.elidedText(button->text(), Qt::ElideMiddle,
+                                          std::max(fm.averageCharWidth() * 3, share - padding)));
+        }
+        left -= button->sizeHint().width();
     }
 }
 

@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QResizeEvent>
 #include <QScrollBar>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -99,16 +100,19 @@ struct ViewAnchor
 DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     : QWidget(parent), m_layouter(layouter), m_rootPicker(new DiagramRootPicker(this)),
       m_breadcrumbs(new DiagramBreadcrumbBar(this)), m_rootPrompt(new DiagramRootPrompt(this)),
-      m_toolBar(new QToolBar(this)), m_search(new QLineEdit(this)), m_scene(new DiagramScene(this)),
-      m_view(new DiagramView(this))
+      m_toolBar(new QToolBar(this)), m_viewBar(new QToolBar(this)), m_search(new QLineEdit(this)),
+      m_scene(new DiagramScene(this)), m_view(new DiagramView(this))
 {
     m_search->setPlaceholderText(tr("Find in diagram"));
     m_search->setToolTip(tr("Highlights the parts, topics, services and namespaces whose name "
                             "contains this text. Enter goes to the next match."));
     m_search->setClearButtonEnabled(true);
     m_search->setMaximumWidth(220);
-    m_toolBar->setIconSize(QSize(16, 16));
-    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (QToolBar *bar : {m_toolBar, m_viewBar}) {
+        bar->setIconSize(QSize(16, 16));
+        bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    }
+    m_search->setMinimumWidth(fontMetrics().averageCharWidth() * 14);
     m_toolBar->addWidget(m_search);
     m_matchCount = new QLabel(this);
     m_matchCount->setForegroundRole(QPalette::PlaceholderText);
@@ -124,20 +128,21 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     m_options.showInactive = false;
     m_showExternal = toggle(m_toolBar, tr("External"),
                             tr("Show includes of launch files outside the workspace"));
-    m_toolBar->addSeparator();
-    QAction *zoomOut = m_toolBar->addAction(tr("−"), m_view, &DiagramView::zoomOut);
+    // The view's own commands: beside the filters, or below them in a narrow dock (at
+    // 1024 px the diagram's share hid Overview, Expand All and Export behind an arrow).
+    QAction *zoomOut = m_viewBar->addAction(tr("−"), m_view, &DiagramView::zoomOut);
     zoomOut->setToolTip(tr("Zoom out (-, Ctrl+wheel)"));
-    QAction *zoomIn = m_toolBar->addAction(tr("+"), m_view, &DiagramView::zoomIn);
+    QAction *zoomIn = m_viewBar->addAction(tr("+"), m_view, &DiagramView::zoomIn);
     zoomIn->setToolTip(tr("Zoom in (+, Ctrl+wheel)"));
-    QAction *fit = m_toolBar->addAction(tr("Fit"), m_view, &DiagramView::fitDiagram);
+    QAction *fit = m_viewBar->addAction(tr("Fit"), m_view, &DiagramView::fitDiagram);
     fit->setToolTip(tr("Fit the whole diagram in the view (0); a diagram too big to read "
                        "whole stops at a legible size, the minimap shows the rest"));
-    m_overviewAction = m_toolBar->addAction(tr("Overview"), this, &DiagramPanel::showOverview);
+    m_overviewAction = m_viewBar->addAction(tr("Overview"), this, &DiagramPanel::showOverview);
     m_overviewAction->setToolTip(tr("Collapse namespaces to one box each and hide the ports of "
                                     "every part; double-click a box to expand it"));
-    m_expandAllAction = m_toolBar->addAction(tr("Expand All"), this, &DiagramPanel::expandAll);
+    m_expandAllAction = m_viewBar->addAction(tr("Expand All"), this, &DiagramPanel::expandAll);
     m_expandAllAction->setToolTip(tr("Show every namespace and port of this diagram"));
-    m_exportAction = m_toolBar->addAction(tr("Export…"), this, [this] {
+    m_exportAction = m_viewBar->addAction(tr("Export…"), this, [this] {
         const QString path = QFileDialog::getSaveFileName(
             this, tr("Export Diagram"),
             composite() ? composite()->stem + QStringLiteral(".svg") : QString(),
@@ -157,7 +162,12 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     header->addWidget(m_rootPicker);
     header->addWidget(m_breadcrumbs, 1);
     layout->addLayout(header);
-    layout->addWidget(m_toolBar);
+    m_tools = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_tools->setContentsMargins(0, 0, 0, 0);
+    m_tools->setSpacing(0);
+    m_tools->addWidget(m_toolBar);
+    m_tools->addWidget(m_viewBar, 1);
+    layout->addLayout(m_tools);
     layout->addWidget(m_rootPrompt, 1);
     layout->addWidget(m_view, 1);
     m_rootPrompt->hide();
@@ -545,6 +555,14 @@ QStringList DiagramPanel::selectedKeys() const
 void DiagramPanel::selectElement(const QString &key)
 {
     selectKey(key);
+}
+
+void DiagramPanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    const bool oneRow =
+        m_toolBar->sizeHint().width() + m_viewBar->sizeHint().width() <= event->size().width();
+    m_tools->setDirection(oneRow ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
 }
 
 void DiagramPanel::changeEvent(QEvent *event)

@@ -15,6 +15,7 @@
 #include <optional>
 
 class QAction;
+class QBoxLayout;
 class QLabel;
 class QLineEdit;
 class QMenu;
@@ -154,6 +155,7 @@ Q_SIGNALS:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     /// A composite's layout graph and its DOT text, and what the overview check decided.
@@ -242,7 +244,9 @@ private:
     DiagramRootPrompt *m_rootPrompt;
     QAction *m_overviewAction = nullptr;
     QAction *m_expandAllAction = nullptr;
-    QToolBar *m_toolBar;
+    QToolBar *m_toolBar; ///< search and filters
+    QToolBar *m_viewBar; ///< zoom, fit, overview, export
+    QBoxLayout *m_tools; ///< the two bars in a row, or one above the other when narrow
     QLineEdit *m_search;
     QLabel *m_matchCount = nullptr; ///< beside the search field
     QAction *m_showParameters;
