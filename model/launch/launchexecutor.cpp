@@ -428,6 +428,9 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
     // in its own code, one per construction there (blueprint §1, "Nodes built in code").
     const QList<NodeClasses::Start> starts =
         NodeClasses::starts(classes, composable ? QString() : n.execName);
+    // The executable's own system (its action is the build file's line, run from its main
+    // source): each node is where the code constructs it.
+    const bool ownSystem = a.evidence.file != frame.file;
     const auto nodeNameOf = [&](const NodeClasses::Start &s) {
         if (!launchName.isEmpty())
             return launchName;
@@ -441,6 +444,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         n.nodeName = nodeNameOf(starts.front());
         if (starts.front().second)
             n.constructedPorts = starts.front().second->ports;
+        if (starts.front().second && ownSystem) // where main() builds it
+            n.evidence = starts.front().second->evidence;
         // built under an `if` of its main: it may be one of alternatives
         n.activeByGuess =
             n.activeByGuess || (starts.front().second && !starts.front().second->guard.isEmpty());
@@ -489,6 +494,8 @@ void LaunchExecutor::executeNode(const LaunchAction &a, const Scope &scope, Fram
         more.lifecycle = a.lifecycle || cls->lifecycle;
         more.nodeName = nodeNameOf(starts[k]);
         more.constructedPorts = starts[k].second ? starts[k].second->ports : QList<Port>();
+        if (starts[k].second && ownSystem)
+            more.evidence = starts[k].second->evidence;
         more.activeByGuess =
             launchGuess || (starts[k].second && !starts[k].second->guard.isEmpty());
         QList<Unresolved> reported; // the same launch line: already on `n`
