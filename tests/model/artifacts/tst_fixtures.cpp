@@ -1,6 +1,8 @@
 // Data-driven: every tests/data/<case>/ with expected/atomic_nodes.json is a row; when the case
 // also has expected/launch_dependencies.json, stage 2's output is compared too, and with
-// expected/stage1_diagnostics.txt the code and place of each stage-1 diagnostic. The case's
+// expected/stage1_diagnostics.txt the code and place of each stage-1 diagnostic; the folders
+// expected/acd, expected/ccd and expected/graph (each root's communication graph), when the
+// case has them, file by file. The case's
 // workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
 #include "acdwriter.h"
@@ -34,7 +36,8 @@ private:
 
 private Q_SLOTS:
     static void compareDiagrams(const QMap<QString, QByteArray> &produced,
-                                const QString &expectedDir)
+                                const QString &expectedDir,
+                                const QString &pattern = QStringLiteral("*.puml"))
     {
         const QDir dir(expectedDir);
         if (!dir.exists())
@@ -42,8 +45,7 @@ private Q_SLOTS:
         for (auto it = produced.cbegin(); it != produced.cend(); ++it)
             test::compareOrUpdate(it.value(), dir.filePath(it.key()));
         if (!qEnvironmentVariableIntValue("ROSARCH_UPDATE_EXPECTED"))
-            QCOMPARE(produced.keys(),
-                     dir.entryList({QStringLiteral("*.puml")}, QDir::Files, QDir::Name));
+            QCOMPARE(produced.keys(), dir.entryList({pattern}, QDir::Files, QDir::Name));
     }
 
     void recovery_data()
@@ -108,6 +110,14 @@ private Q_SLOTS:
             ccds.insert(ccdStems.value(c->instanceId) + QStringLiteral(".puml"),
                         CcdWriter::write(*c).toUtf8());
         compareDiagrams(ccds, QDir(caseDir).filePath(QStringLiteral("expected/ccd")));
+        // and the communication graph of each root, as launched (graph/<root>.dot)
+        QMap<QString, QByteArray> graphs;
+        for (const Composite &c : recovery.architecture.composites)
+            if (c.parentId.isEmpty())
+                graphs.insert(ccdStems.value(c.instanceId, c.stem) + QStringLiteral(".dot"),
+                              CommunicationGraph::dot(recovery.architecture, c).toUtf8());
+        compareDiagrams(graphs, QDir(caseDir).filePath(QStringLiteral("expected/graph")),
+                        QStringLiteral("*.dot"));
     }
 
     void modelInvariantsHold_data() { recovery_data(); }
