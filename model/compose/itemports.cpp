@@ -185,9 +185,16 @@ void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
     }
     const QString pattern = QStringLiteral("{%1}").arg(list);
     QSet<QString> seen;
+    // A list of names written in a parameter file is short; past this many items the rest
+    // stay one port, its name undecided, so the instance shows that some were not expanded.
+    constexpr qsizetype kMaxItems = 256;
     for (const QString &item : parameterListItems(items)) {
         if (item.isEmpty() || seen.contains(item))
             continue;
+        if (seen.size() >= kMaxItems) {
+            out->append(p);
+            return;
+        }
         seen.insert(item);
         Port one = p;
         one.id = QStringLiteral("%1_%2").arg(p.id, portKey(item));

@@ -183,6 +183,32 @@ private slots:
         QCOMPARE(kept.size(), 1);
         QCOMPARE(kept.constFirst().parameter, raw.parameter);
     }
+
+    // A list value names one port per item, up to a budget; the rest stay one port whose name
+    // the list decides, undecided here.
+    void aLongListIsExpandedWithinItsBudget()
+    {
+        Port feed =
+            test::gui::port(QStringLiteral("s1"), PortKind::Subscriber, QStringLiteral("{feeds}"),
+                            QStringLiteral("std_msgs/msg/Bool"), QString(), {});
+        feed.nameOrigin = NameOrigin::Parameter;
+        feed.parameter = QStringLiteral("{feeds}");
+        QStringList items;
+        for (int i = 0; i < 300; ++i)
+            items << QStringLiteral("f%1").arg(i);
+        NodeInstance hub;
+        hub.effectiveParameters = {{QStringLiteral("feeds"),
+                                    QStringLiteral("[%1]").arg(items.join(QLatin1String(", "))),
+                                    QStringLiteral("file"),
+                                    {},
+                                    {}}};
+        QList<Port> out;
+        expandItems(feed, hub, &out);
+        QCOMPARE(out.size(), 257);
+        QCOMPARE(out.at(255).name, QStringLiteral("f255"));
+        QCOMPARE(out.at(255).id, QStringLiteral("s1_f255"));
+        QCOMPARE(out.constLast().parameter, QStringLiteral("{feeds}"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestPortNames)
