@@ -318,11 +318,7 @@ QList<PartPort> Composer::pluginPorts(const QHash<QString, const AtomicNode *> &
     host.constructedPorts.clear();
     host.removedPorts.clear();
     for (const ParameterSetting &plugin : instance.plugins) {
-        QString written = plugin.value.trimmed();
-        written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
-        if (written.startsWith(QLatin1String("::")))
-            written = written.mid(2);
-        const AtomicNode *cls = pluginClasses.value(written);
+        const AtomicNode *cls = pluginClass(plugin.value, pluginClasses);
         if (!cls)
             continue;
         AtomicNode loaded = *cls; // the plugin under the name it is loaded by

@@ -63,16 +63,6 @@ bool derivesFrom(const AtomicNode &cls, const QString &base,
     return false;
 }
 
-const AtomicNode *pluginClass(const QString &value,
-                              const QHash<QString, const AtomicNode *> &pluginClasses)
-{
-    QString written = value.trimmed();
-    written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
-    if (written.startsWith(QLatin1String("::")))
-        written = written.mid(2);
-    return pluginClasses.value(written);
-}
-
 // `grid != nullptr && ready`: `ready`. The loop over loaded plugins tests the cast it makes
 // to the class that has the port; for a plugin of that class the test holds.
 QString withoutNullTests(const QString &guard)
@@ -95,6 +85,16 @@ QString portKey(const QString &item)
 }
 
 } // namespace
+
+const AtomicNode *pluginClass(const QString &value,
+                              const QHash<QString, const AtomicNode *> &pluginClasses)
+{
+    QString written = value.trimmed();
+    written.replace(u'/', QLatin1String("::")); // the older pluginlib spelling pkg/Class
+    if (written.startsWith(QLatin1String("::")))
+        written = written.mid(2);
+    return pluginClasses.value(written);
+}
 
 QString loadedPluginClass(const Port &p)
 {

@@ -22,6 +22,11 @@ QString itemList(const Port &p);
 /// fails gets none. Without a list value the port is appended as it is.
 void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out);
 
+/// The plugin class a `<name>.plugin` value names (`pkg::Class`, or the older `pkg/Class`)
+/// among `pluginClasses` (by qualified name); null when the model has none of that name.
+const AtomicNode *pluginClass(const QString &value,
+                              const QHash<QString, const AtomicNode *> &pluginClasses);
+
 /// The class `{plugin:Type}` names in port `p`'s parameter (a name per loaded plugin of that
 /// class, RosNames' kLoadedPluginPrefix), or "".
 QString loadedPluginClass(const Port &p);
