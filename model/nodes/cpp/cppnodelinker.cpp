@@ -58,40 +58,16 @@ void appendUnique(QList<Port> *into, const QList<Port> &ports)
     }
 }
 
-// A node built in a loop over a list of names (`for (const auto & zone : zones)`, `zones`
-// holding literals): one construction per item, the loop variable an item's literal in each.
-QList<CppInstantiation> perListItem(const CppInstantiation &inst)
-{
-    constexpr size_t kMaxItems = 64; // a list written out in code; more is no list of names
-    for (qsizetype a = 0; a < inst.arguments.size(); ++a) {
-        const CppValue &arg = inst.arguments.at(a);
-        if (arg.kind != CppValue::Kind::Element || arg.parts.empty())
-            continue;
-        const CppValue &list = arg.parts.front();
-        if (list.kind != CppValue::Kind::Aggregate || list.parts.size() > 2 * kMaxItems)
-            continue;
-        QList<CppInstantiation> out;
-        for (size_t i = 0; i + 1 < list.parts.size(); i += 2) {
-            if (!list.parts[i].literal.isEmpty() ||
-                list.parts[i + 1].kind != CppValue::Kind::Literal)
-                return {inst}; // a struct's fields, or an item that is no literal
-            CppInstantiation one = inst;
-            one.arguments[a] = list.parts[i + 1];
-            out.append(one);
-        }
-        if (!out.isEmpty())
-            return out;
-    }
-    return {inst};
-}
-
 } // namespace
 
 CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
     : m_files(files), m_index(files), m_shared(files, m_index),
       m_names(m_index, m_facts, m_interfaceAliases, m_shared),
       m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes),
-      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names, m_helpers)
+      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names, m_helpers),
+      m_nodeNames(m_index, m_names, m_constructions),
+      m_entryPoints(m_index, m_freeFunctionsByName, m_constructions,
+                    [this](int cls) { return m_nodeNames.of(cls); })
 {
     for (const CppFileFacts &file : files) {
         for (auto it = file.aliases.constBegin(); it != file.aliases.constEnd(); ++it) {
@@ -208,19 +184,19 @@ LanguageAnalysis CppNodeLinker::link() const
         const QList<Evidence> hit = m_helpers.takeBoundsHit();
         if (!procedural.isEmpty())
             reportBounds(procedural.first(), hit);
-        addEntryPoint(ref, procedural, &out.entryPoints);
+        QList<Evidence> builderBoundsHit;
+        addEntryPoint(ref, procedural, &out.entryPoints, &builderBoundsHit);
         out.nodes += procedural;
-        if (!m_builderBoundsHit.isEmpty()) {
+        if (!builderBoundsHit.isEmpty()) {
             Diagnostic d;
             d.severity = Diagnostic::Severity::Info;
             d.code = QStringLiteral("builder-depth");
             d.message = QStringLiteral("Stopped following the functions main() calls here "
                                        "(bound: %1 calls deep); nodes built beyond it are not "
                                        "instances of the executable.")
-                            .arg(kMaxBuilderDepth);
-            d.evidence = m_builderBoundsHit.front();
+                            .arg(CppEntryPoints::kMaxBuilderDepth);
+            d.evidence = builderBoundsHit.front();
             out.diagnostics.append(d);
-            m_builderBoundsHit.clear();
         }
     }
     QSet<int> plugins;
@@ -279,11 +255,12 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
     node.headerFiles.sort();
     node.sourceFiles.sort();
 
-    node.nodeName = nodeNameOf(index, 0);
+    node.nodeName = m_nodeNames.of(index);
     if (owned) { // a component that owns its rclcpp::Node instead of deriving from it
-        node.nodeName = owned->nodeName.kind == CppValue::Kind::Literal
-                            ? owned->nodeName.literal
-                            : literalName(owned->nodeName, {index, nullptr, nullptr, nullptr});
+        node.nodeName =
+            owned->nodeName.kind == CppValue::Kind::Literal
+                ? owned->nodeName.literal
+                : m_nodeNames.literalName(owned->nodeName, {index, nullptr, nullptr, nullptr});
         node.lifecycle = owned->lifecycle;
     }
 
@@ -312,7 +289,8 @@ AtomicNode CppNodeLinker::classNode(int index, const CppProceduralNode *owned) c
         CppLinkContext at;
         const bool open = std::any_of(inherited.cbegin(), inherited.cend(),
                                       [](const Port &p) { return !p.isResolved(); });
-        if (const CppBaseInitializer *init = open ? baseInitializer(lineage, i, &at) : nullptr) {
+        if (const CppBaseInitializer *init =
+                open ? m_nodeNames.baseInitializer(lineage, i, &at) : nullptr) {
             // (the bounds this pass hits are the class's own pass's, reported there)
             const QList<Evidence> hit = m_helpers.takeBoundsHit();
             const QList<Port> filled =
@@ -371,7 +349,7 @@ QList<ChildNode> CppNodeLinker::childNodesOf(int index) const
                                              m_names.scopeOf(ctx), ref.file);
                 if (t < 0 || !m_index.at(t).node || lineage.contains(t))
                     continue;
-                const ChildNode child = m_constructions.child(t, inst, ctx, nodeNameOf(t, 0));
+                const ChildNode child = m_constructions.child(t, inst, ctx, m_nodeNames.of(t));
                 if (!out.contains(child))
                     out.append(child);
             }
@@ -494,134 +472,6 @@ QList<Port> CppNodeLinker::pluginPorts(int plugin,
     return ports;
 }
 
-// The first argument of the base-class initializer in a constructor; without one, the base's
-// default constructor names the node.
-QString CppNodeLinker::literalName(const CppValue &value, const CppLinkContext &ctx) const
-{
-    using K = CppValue::Kind;
-    if (value.kind == K::Literal)
-        return value.literal;
-    if (value.kind != K::Local && value.kind != K::Member && value.kind != K::Constant &&
-        value.kind != K::Concatenation)
-        return {};
-    const CppResolvedName r = m_names.resolve(value, ctx);
-    return r.origin == NameOrigin::Expression || r.origin == NameOrigin::Parameter ? QString()
-                                                                                   : r.name;
-}
-
-// The initializer by which a class of `lineage` before `base` (a derived one) hands arguments
-// to the constructor of `lineage[base]`, with the constructor it is written in (`at`); null
-// when none does, or two constructors do.
-const CppBaseInitializer *CppNodeLinker::baseInitializer(const QList<int> &lineage, qsizetype base,
-                                                         CppLinkContext *at) const
-{
-    const QString name = m_index.at(lineage[base]).cls->name;
-    const CppBaseInitializer *found = nullptr;
-    for (qsizetype d = 0; d < base; ++d) {
-        for (const auto &ref : m_index.at(lineage[d]).functions) {
-            if (!ref.function->isConstructor)
-                continue;
-            for (const CppBaseInitializer &init : ref.function->baseInitializers) {
-                if (init.arguments.isEmpty() ||
-                    lastSegment(withoutTemplateArguments(init.name).remove(u' ')) != name)
-                    continue;
-                if (found)
-                    return nullptr; // constructors that disagree: the instance decides
-                found = &init;
-                *at = CppLinkContext{lineage[d], ref.function, ref.file, nullptr};
-            }
-        }
-        if (found)
-            return found;
-    }
-    return nullptr;
-}
-
-// Which argument of a constructor of node class `cls`, called with `argumentCount` arguments,
-// it hands on as the node's name (`Filter(name, options) : Node(name, options)`); -1 when it
-// names the node itself or its constructors disagree.
-int CppNodeLinker::forwardedName(int cls, int argumentCount) const
-{
-    const CppClassIndex::ClassInfo &info = m_index.at(cls);
-    int forwarded = -2;
-    for (const auto &ref : info.functions) {
-        const CppFunction &ctor = *ref.function;
-        if (!ctor.isConstructor || argumentCount > ctor.parameterNames.size() ||
-            argumentCount < ctor.requiredParameters)
-            continue;
-        for (const CppBaseInitializer &init : ctor.baseInitializers) {
-            const QString name = lastSegment(withoutTemplateArguments(init.name).remove(u' '));
-            const bool toABase = std::any_of(
-                info.cls->bases.cbegin(), info.cls->bases.cend(), [&](const QString &b) {
-                    return lastSegment(withoutTemplateArguments(b).remove(u' ')) == name;
-                });
-            if (!toABase)
-                continue;
-            const int index = init.firstArgument.kind == CppValue::Kind::FunctionParameter
-                                  ? init.firstArgument.index
-                                  : -1;
-            if (forwarded != -2 && forwarded != index)
-                return -1;
-            forwarded = index;
-        }
-    }
-    return forwarded < 0 ? -1 : forwarded;
-}
-
-QString CppNodeLinker::nodeNameOf(int index, int depth) const
-{
-    const CppClassIndex::ClassInfo &info = m_index.at(index);
-    QStringList baseNames;
-    for (const QString &b : info.cls->bases)
-        baseNames << withoutTemplateArguments(b).remove(u' ') << lastSegment(b);
-    QString fallback;
-    for (const auto &ref : info.functions) {
-        if (!ref.function->isConstructor)
-            continue;
-        for (const CppBaseInitializer &init : ref.function->baseInitializers) {
-            const QString name = withoutTemplateArguments(init.name).remove(u' ');
-            if (!baseNames.contains(name) && !baseNames.contains(lastSegment(name)))
-                continue;
-            // A base of the workspace decides which of its arguments names the node
-            // (`TestActionServer("assisted_teleop")` is an action's name, not the node's).
-            CppValue named = init.firstArgument;
-            for (int b : info.projectBases) {
-                if (m_index.at(b).cls->name != lastSegment(name) || init.arguments.isEmpty())
-                    continue;
-                const int forwarded = forwardedName(b, int(init.arguments.size()));
-                named = forwarded >= 0 ? init.arguments.value(forwarded) : CppValue();
-            }
-            if (named.kind == CppValue::Kind::Literal)
-                return named.literal;
-            // A constant, a member or a local holding a literal names the node; a constructor
-            // parameter (`node_name`, `options`) is the instance's to decide: no name here, never
-            // the parameter's own name.
-            if (fallback.isEmpty() && !named.isNone())
-                fallback = literalName(named, {index, ref.function, ref.file, nullptr});
-            break;
-        }
-    }
-    if (!fallback.isEmpty() || depth > kMaxLinkDepth)
-        return fallback;
-    for (int b : info.projectBases) {
-        if (!m_index.at(b).node)
-            continue;
-        // `ImuForward() : PassStage(Settings{.node_name = "imu_forward"}, options)`: the name
-        // the base's constructor makes of what this class hands it
-        CppLinkContext at;
-        if (const CppBaseInitializer *init = baseInitializer({index, b}, 1, &at)) {
-            CppInstantiation inst;
-            inst.className = init->name;
-            inst.arguments = init->arguments;
-            const QString name = m_constructions.child(b, inst, at, QString()).nodeName;
-            if (!name.isEmpty() && !name.contains(u'{'))
-                return name;
-        }
-        return nodeNameOf(b, depth + 1);
-    }
-    return {};
-}
-
 QList<Port> CppNodeLinker::portsOf(int cls, bool inherited,
                                    const QHash<QString, QString> &templateArguments) const
 {
@@ -679,7 +529,7 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
         node.lifecycle = pn.lifecycle;
         node.evidence = fn.evidence;
         (isHeaderPath(ref.file->path) ? node.headerFiles : node.sourceFiles).append(ref.file->path);
-        node.nodeName = literalName(pn.nodeName, ctx);
+        node.nodeName = m_nodeNames.literalName(pn.nodeName, ctx);
         if (pn.variable.isEmpty()) {
             nodes->append(node);
             continue;
@@ -721,109 +571,20 @@ void CppNodeLinker::addProceduralNodes(const CppClassIndex::FunctionRef &ref,
 
 void CppNodeLinker::addEntryPoint(const CppClassIndex::FunctionRef &ref,
                                   const QList<AtomicNode> &procedural,
-                                  QList<EntryPoint> *entryPoints) const
+                                  QList<EntryPoint> *entryPoints,
+                                  QList<Evidence> *builderBoundsHit) const
 {
     const CppFunction &fn = *ref.function;
     EntryPoint entry;
     entry.file = ref.file->path;
     entry.function = fn.name;
     entry.evidence = fn.evidence;
-    const CppLinkContext ctx{-1, &fn, ref.file};
-    QList<const CppFunction *> open{&fn};
-    addConstructions(fn, ctx, 0, &open, &entry);
+    m_entryPoints.addConstructions(ref, &entry, builderBoundsHit);
     for (const AtomicNode &node : procedural)
         if (!entry.instantiatedClasses.contains(node.className))
             entry.instantiatedClasses.append(node.className);
     if (!entry.instantiatedClasses.isEmpty())
         entryPoints->append(entry);
-}
-
-void CppNodeLinker::addConstructions(const CppFunction &fn, const CppLinkContext &ctx, int depth,
-                                     QList<const CppFunction *> *open, EntryPoint *entry) const
-{
-    for (const CppInstantiation &inst : fn.instantiations) {
-        if (inst.className.isEmpty())
-            continue;
-        // `PassStage<sensor_msgs::msg::LaserScan>`: the class template, built with that type
-        const QString written = withoutTemplateArguments(inst.className).remove(u' ');
-        const int c = m_index.lookup(written, fn.namespaces, ctx.file);
-        if (c < 0 || !m_index.at(c).node)
-            continue;
-        if (!entry->instantiatedClasses.contains(written))
-            entry->instantiatedClasses.append(written);
-        // `for (const auto & zone : zones) make_shared<ZoneWatcher>(zone)` over a list of
-        // literals: one node per item.
-        for (const CppInstantiation &one : perListItem(inst)) {
-            NodeConstruction k = m_constructions.construction(c, one, ctx, nodeNameOf(c, 0));
-            k.className = written;
-            entry->constructions.append(k);
-        }
-    }
-    // Builder functions are followed from `main` only: what `ros2 run` starts.
-    if (depth == 0 && fn.name != QLatin1String("main"))
-        return;
-    if (depth >= kMaxBuilderDepth) {
-        for (const QList<CppFreeCall> *calls : {&fn.builderCalls, &fn.freeCalls})
-            for (const CppFreeCall &call : *calls) {
-                // said where the function called builds a node itself
-                const QStringList called = splitScope(call.function);
-                const auto buildsANode = [&](const CppClassIndex::FunctionRef &ref) {
-                    return std::any_of(
-                        ref.function->instantiations.cbegin(), ref.function->instantiations.cend(),
-                        [&](const CppInstantiation &inst) {
-                            const int c = m_index.lookup(
-                                withoutTemplateArguments(inst.className).remove(u' '),
-                                ref.function->namespaces, ref.file);
-                            return c >= 0 && m_index.at(c).node;
-                        });
-                };
-                const auto candidates = called.isEmpty()
-                                            ? QList<CppClassIndex::FunctionRef>()
-                                            : m_freeFunctionsByName.value(called.constLast());
-                if (std::any_of(candidates.cbegin(), candidates.cend(), buildsANode)) {
-                    m_builderBoundsHit.append(call.evidence);
-                    return;
-                }
-            }
-        return;
-    }
-    const auto follow = [&](const CppFreeCall &call) {
-        const QStringList calledName = splitScope(call.function);
-        if (calledName.isEmpty())
-            return;
-        const QString scope = calledName.mid(0, calledName.size() - 1).join(QStringLiteral("::"));
-        const auto n = int(call.arguments.size());
-        QList<CppClassIndex::FunctionRef> candidates;
-        for (const auto &ref : m_freeFunctionsByName.value(calledName.constLast())) {
-            const CppFunction *callee = ref.function;
-            const QString ns = callee->namespaces.join(QStringLiteral("::"));
-            const bool buildsSomething = !callee->instantiations.isEmpty() ||
-                                         !callee->builderCalls.isEmpty() ||
-                                         !callee->freeCalls.isEmpty();
-            if (open->contains(callee) || !buildsSomething || n < callee->requiredParameters ||
-                (!callee->variadic && n > callee->parameterNames.size()) ||
-                (!scope.isEmpty() && ns != scope && !ns.endsWith(QStringLiteral("::") + scope)))
-                continue;
-            candidates.append(ref);
-        }
-        // A same-named function in the caller's package wins over the rest of the workspace.
-        const QString package = ctx.file ? ctx.file->package : QString();
-        if (std::any_of(candidates.cbegin(), candidates.cend(),
-                        [&](const auto &ref) { return ref.file->package == package; }))
-            candidates.removeIf([&](const auto &ref) { return ref.file->package != package; });
-        for (const auto &ref : std::as_const(candidates)) {
-            const CppFunction *callee = ref.function;
-            const CppSubstitution subst{call.arguments, ctx, {}, callee};
-            open->append(callee);
-            addConstructions(*callee, CppLinkContext{-1, callee, ref.file, &subst}, depth + 1, open,
-                             entry);
-            open->removeLast();
-        }
-    };
-    for (const CppFreeCall &call : fn.builderCalls)
-        follow(call);
-    for (const CppFreeCall &call : fn.freeCalls)
-        follow(call);
 }
 
 } // namespace rosarch

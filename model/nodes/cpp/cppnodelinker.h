@@ -2,10 +2,12 @@
 
 #include "cppclassindex.h"
 #include "cppconstructions.h"
+#include "cppentrypoints.h"
 #include "cppfacts.h"
 #include "cpphelperports.h"
 #include "cpplinkcontext.h"
 #include "cppnameresolver.h"
+#include "cppnodenames.h"
 #include "cppparameterlinker.h"
 #include "cppsharednames.h"
 #include "languageanalysis.h"
@@ -31,13 +33,6 @@ public:
 private:
     AtomicNode classNode(int index, const CppProceduralNode *ownedNode = nullptr) const;
     const CppProceduralNode *ownedNode(int cls) const;
-    QString nodeNameOf(int index, int depth) const;
-    int forwardedName(int cls, int argumentCount) const;
-    const CppBaseInitializer *baseInitializer(const QList<int> &lineage, qsizetype base,
-                                              CppLinkContext *at) const;
-    /// The name `value` (a node's name argument) stands for when a literal decides it; "" for a
-    /// constructor parameter or an expression.
-    QString literalName(const CppValue &value, const CppLinkContext &ctx) const;
     QList<ChildNode> childNodesOf(int index) const;
     /// The ports class `cls` makes; `templateArguments` type those typed by its template
     /// parameters, as a derived class instantiates it (`inherited`).
@@ -55,14 +50,9 @@ private:
     QList<Port> pluginPorts(int plugin, const std::map<int, CppSubstitution> &substitutions) const;
     void addProceduralNodes(const CppClassIndex::FunctionRef &ref, QList<AtomicNode> *nodes,
                             QHash<QString, int> *stems) const;
+    /// `builderBoundsHit`: the calls from main() not followed (CppEntryPoints' bound)
     void addEntryPoint(const CppClassIndex::FunctionRef &ref, const QList<AtomicNode> &procedural,
-                       QList<EntryPoint> *entryPoints) const;
-    /// The nodes `fn` (in `ctx`) constructs, and those the free functions it calls construct
-    /// (`make_filter_line(options)`), `depth` calls deep; `open` are the functions on the way.
-    void addConstructions(const CppFunction &fn, const CppLinkContext &ctx, int depth,
-                          QList<const CppFunction *> *open, EntryPoint *entry) const;
-    /// Calls to builder functions are followed this deep from an entry point.
-    static constexpr int kMaxBuilderDepth = 4;
+                       QList<EntryPoint> *entryPoints, QList<Evidence> *builderBoundsHit) const;
 
     const QList<CppFileFacts> &m_files;
     CppClassIndex m_index;
@@ -77,9 +67,8 @@ private:
     CppHelperPorts m_helpers;         ///< after the containers it reads
     CppConstructions m_constructions; ///< after the resolver and the helper ports
     CppParameterLinker m_parameters;  ///< after the resolver and the helper ports
-    /// Calls not followed because kMaxBuilderDepth was reached, for the entry point being
-    /// linked (entry points are linked one after another).
-    mutable QList<Evidence> m_builderBoundsHit;
+    CppNodeNames m_nodeNames;         ///< after the constructions
+    CppEntryPoints m_entryPoints;     ///< after the node names
 };
 
 } // namespace rosarch
