@@ -255,6 +255,7 @@ QList<PartPort> Composer::resolvePorts(const AtomicNode &node, const NodeInstanc
             int used = -1;
             pp.name = RosNames::remap(base, rules, instance.nameSpace, nodeName, &used);
             pp.remapped = used >= 0;
+            pp.remap = used;
             // A rule past the instance's own is the container's (process-wide).
             pp.guessed = used >= 0 && (used < instance.remaps.size()
                                            ? instance.guessedRemaps.contains(used)

@@ -27,6 +27,9 @@ struct PartPort
     bool guessed = false;
     bool parameterDerived = false; ///< the name comes from a parameter (default or launch value)
     bool remapped = false;
+    /// The remap rule that gave the port its name: an index into its node instance's remaps,
+    /// past their end into its container's (process-wide rules); -1 when none did.
+    int remap = -1;
     bool active = true; ///< the guard holds for this instance (or is undecidable)
     QString guard;      ///< as written ("" = always)
     QString qos;        ///< the QoS argument at the creating call, as written ("" = none)

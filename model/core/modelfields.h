@@ -105,7 +105,7 @@ template <class F> void fields(LaunchDependencies &v, F f)
 template <class F> void fields(PartPort &v, F f)
 {
     f(v.id, v.kind, v.nameAsWritten, v.name, v.type, v.resolved, v.guessed, v.parameterDerived,
-      v.remapped, v.active, v.guard, v.qos, v.evidence, v.model);
+      v.remapped, v.remap, v.active, v.guard, v.qos, v.evidence, v.model);
 }
 template <class F> void fields(RosNodePart &v, F f)
 {

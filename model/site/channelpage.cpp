@@ -22,17 +22,21 @@ QString familyTitle(const QString &family)
                                                : tr("Topic");
 }
 
-/// The remap rules of an instance that send a name to `name` ("from → to", as evaluated).
-QStringList remapsTo(const NodeInstance *instance, const QString &name)
+/// The remap rule that gave `port` its name ("from → to", as evaluated), as the composition
+/// recorded it: one of the instance's own rules, or past them one of its container's.
+QString remapRule(const SiteModel &model, const NodeInstance *instance, const PartPort &port)
 {
-    QStringList rules;
-    if (!instance)
-        return rules;
-    const QString relative = name.mid(1);
-    for (const auto &[from, to] : instance->remaps)
-        if (to == name || to == relative || name.endsWith(u'/' + to))
-            rules << from + QStringLiteral(" → ") + to;
-    return rules;
+    if (!instance || port.remap < 0)
+        return {};
+    const QPair<QString, QString> *rule = nullptr;
+    if (port.remap < instance->remaps.size()) {
+        rule = &instance->remaps.at(port.remap);
+    } else if (const NodeInstance *container = model.recovery().launch.node(instance->container)) {
+        const qsizetype index = port.remap - instance->remaps.size();
+        if (index < container->remaps.size())
+            rule = &container->remaps.at(index);
+    }
+    return rule ? rule->first + QStringLiteral(" → ") + rule->second : QString();
 }
 
 } // namespace
@@ -83,8 +87,8 @@ SiteFile ChannelPage::write(const SiteContext &context, const QString &key,
         const AtomicNode *arc = model.recovery().nodes.node(classId);
         QString remap;
         if (port.remapped) {
-            const QStringList rules = remapsTo(use.instance, channel.name);
-            remap = rules.isEmpty() ? escape(tr("yes")) : code(rules.join(QStringLiteral("; ")));
+            const QString rule = remapRule(model, use.instance, port);
+            remap = rule.isEmpty() ? escape(tr("yes")) : code(rule);
             if (use.instance)
                 remap += u' ' + SiteHtml::source(context, path, use.instance->evidence);
         }

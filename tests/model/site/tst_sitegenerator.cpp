@@ -121,6 +121,25 @@ private slots:
             QLatin1String("\"node class\",\"nodes/robot_sensing.LidarFilter.html\"")));
     }
 
+    void topicPagesNameTheRemapThatLedThere()
+    {
+        // The rule the composition recorded for the port, its own or its scope's, as evaluated.
+        const QMap<QString, QByteArray> files = byPath(m_files);
+        const QString lidar =
+            QString::fromUtf8(files.value(QStringLiteral("topics/robot1.lidar.scan.html")));
+        QVERIFY2(lidar.contains(QStringLiteral("<td><code>scan → lidar/scan</code>")),
+                 qPrintable(lidar));
+        const QString diagnostics =
+            QString::fromUtf8(files.value(QStringLiteral("topics/robot_diagnostics.html")));
+        QVERIFY(diagnostics.contains(
+            QStringLiteral("<td><code>/diagnostics → /robot_diagnostics</code>")));
+        // Every remapped port on the composed systems records which rule renamed it.
+        for (const Composite &c : m_recovery.architecture.composites)
+            for (const RosNodePart &part : c.parts)
+                for (const PartPort &port : part.ports)
+                    QCOMPARE(port.remapped, port.remap >= 0);
+    }
+
     void sameModelSameBytes()
     {
         // Another run, into another folder at the same depth: every byte equal.
