@@ -17,9 +17,12 @@ namespace rosarch {
 namespace {
 
 // internalId layout: the low two bits say what the row is, the rest locates its parent.
+// A node's "Parameters" row and its parameter rows share a tag: their payload is the node's
+// index in the list, shifted by one bit that is set for a parameter row.
 constexpr quintptr kPackageTag = 0;
 constexpr quintptr kNodeTag = 1;
 constexpr quintptr kPortTag = 2;
+constexpr quintptr kParameterTag = 3;
 
 quintptr tagOf(const QModelIndex &index)
 {
@@ -176,6 +179,8 @@ bool AtomicNodeModel::isRemoved(const QModelIndex &index) const
 
 QString AtomicNodeModel::elementId(const QModelIndex &index) const
 {
+    if (tagOf(index) == kParameterTag) // not an element a correction names
+        return {};
     if (const Port *p = port(index))
         return node(index)->id + u'/' + p->id;
     if (const AtomicNode *n = node(index))
@@ -264,8 +269,16 @@ QModelIndex AtomicNodeModel::index(int row, int column, const QModelIndex &paren
     switch (tagOf(parent)) {
     case kPackageTag:
         return createIndex(row, column, makeId(quintptr(parent.row()), kNodeTag));
-    case kNodeTag:
-        return createIndex(row, column, makeId(quintptr(nodeListIndex(parent)), kPortTag));
+    case kNodeTag: {
+        const auto n = quintptr(nodeListIndex(parent));
+        const AtomicNode *node = this->node(parent);
+        if (node && row == node->ports.size()) // after the ports
+            return createIndex(row, column, makeId(n << 1, kParameterTag));
+        return createIndex(row, column, makeId(n, kPortTag));
+    }
+    case kParameterTag:
+        return createIndex(row, column,
+                           makeId((payloadOf(parent) & ~quintptr(1)) | 1, kParameterTag));
     default:
         return {};
     }
@@ -280,6 +293,18 @@ QModelIndex AtomicNodeModel::parent(const QModelIndex &child) const
         return createIndex(int(payloadOf(child)), 0, makeId(0, kPackageTag));
     case kPortTag: {
         const NodeLocation loc = m_nodeLocations.value(int(payloadOf(child)));
+        return createIndex(loc.row, 0, makeId(quintptr(loc.packageRow), kNodeTag));
+    }
+    case kParameterTag: {
+        const quintptr payload = payloadOf(child);
+        const int n = int(payload >> 1);
+        if (payload & 1) { // a parameter: its "Parameters" row
+            const AtomicNode *node = n < m_nodes.nodes.size() ? &m_nodes.nodes[n] : nullptr;
+            return node ? createIndex(int(node->ports.size()), 0,
+                                      makeId(payload & ~quintptr(1), kParameterTag))
+                        : QModelIndex();
+        }
+        const NodeLocation loc = m_nodeLocations.value(n);
         return createIndex(loc.row, 0, makeId(quintptr(loc.packageRow), kNodeTag));
     }
     default:
@@ -298,7 +323,11 @@ int AtomicNodeModel::rowCount(const QModelIndex &parent) const
         return int(m_packages.value(parent.row()).nodes.size());
     case kNodeTag: {
         const AtomicNode *n = node(parent);
-        return n ? int(n->ports.size()) : 0;
+        return n ? int(n->ports.size()) + (n->parameters.isEmpty() ? 0 : 1) : 0;
+    }
+    case kParameterTag: {
+        const AtomicNode *n = node(parent);
+        return n && !(payloadOf(parent) & 1) ? int(n->parameters.size()) : 0;
     }
     default:
         return 0;
@@ -316,6 +345,8 @@ int AtomicNodeModel::nodeListIndex(const QModelIndex &index) const
         return -1;
     if (tagOf(index) == kPortTag)
         return int(payloadOf(index));
+    if (tagOf(index) == kParameterTag)
+        return int(payloadOf(index) >> 1);
     if (tagOf(index) == kNodeTag) {
         const int packageRow = int(payloadOf(index));
         if (packageRow >= m_packages.size())
@@ -336,6 +367,8 @@ AtomicNodeModel::ItemKind AtomicNodeModel::kind(const QModelIndex &index) const
         return ItemKind::Node;
     case kPortTag:
         return ItemKind::Port;
+    case kParameterTag:
+        return payloadOf(index) & 1 ? ItemKind::Parameter : ItemKind::Parameters;
     default:
         return ItemKind::None;
     }
@@ -356,6 +389,14 @@ const Port *AtomicNodeModel::port(const QModelIndex &index) const
     return n && index.row() < n->ports.size() ? &n->ports[index.row()] : nullptr;
 }
 
+const ParameterDeclaration *AtomicNodeModel::parameter(const QModelIndex &index) const
+{
+    if (kind(index) != ItemKind::Parameter)
+        return nullptr;
+    const AtomicNode *n = node(index);
+    return n && index.row() < n->parameters.size() ? &n->parameters[index.row()] : nullptr;
+}
+
 Evidence AtomicNodeModel::evidence(const QModelIndex &index) const
 {
     switch (kind(index)) {
@@ -367,6 +408,9 @@ Evidence AtomicNodeModel::evidence(const QModelIndex &index) const
         return node(index) ? node(index)->evidence : Evidence();
     case ItemKind::Port:
         return port(index) ? port(index)->evidence : Evidence();
+    case ItemKind::Parameter:
+        return parameter(index) ? parameter(index)->evidence : Evidence();
+    case ItemKind::Parameters:
     case ItemKind::None:
         break;
     }
@@ -403,6 +447,28 @@ QModelIndex AtomicNodeModel::portIndex(const QString &nodeId, const QString &por
     for (int r = 0; r < n->ports.size(); ++r)
         if (n->ports[r].id == portId)
             return index(r, column, parentIndex);
+    return {};
+}
+
+QModelIndex AtomicNodeModel::parametersIndex(const QString &nodeId, int column) const
+{
+    const QModelIndex parentIndex = nodeIndex(nodeId);
+    const AtomicNode *n = node(parentIndex);
+    if (!n || n->parameters.isEmpty())
+        return {};
+    return index(int(n->ports.size()), column, parentIndex);
+}
+
+QModelIndex AtomicNodeModel::parameterIndex(const QString &nodeId, const QString &name,
+                                            int column) const
+{
+    const QModelIndex group = parametersIndex(nodeId);
+    const AtomicNode *n = node(group);
+    if (!n)
+        return {};
+    for (int r = 0; r < n->parameters.size(); ++r)
+        if (n->parameters[r].name == name)
+            return index(r, column, group);
     return {};
 }
 
@@ -455,6 +521,14 @@ QVariant AtomicNodeModel::rawData(const QModelIndex &index, int role) const
         if (const Port *p = port(index))
             return portData(*node(index), *p, index.column(), role);
         return {};
+    case ItemKind::Parameters:
+        if (const AtomicNode *n = node(index))
+            return parametersData(*n, index.column(), role);
+        return {};
+    case ItemKind::Parameter:
+        if (const ParameterDeclaration *p = parameter(index))
+            return parameterData(*node(index), *p, index.column(), role);
+        return {};
     case ItemKind::None:
         break;
     }
@@ -481,7 +555,7 @@ Qt::ItemFlags AtomicNodeModel::flags(const QModelIndex &index) const
     Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
     if (kind(index) == ItemKind::Node && index.column() == DescriptionColumn)
         f |= Qt::ItemIsEditable;
-    if (kind(index) == ItemKind::Port)
+    if (kind(index) == ItemKind::Port || kind(index) == ItemKind::Parameter)
         f |= Qt::ItemNeverHasChildren;
     return f;
 }

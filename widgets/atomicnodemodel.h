@@ -14,7 +14,8 @@ namespace rosarch {
 class Document;
 struct RosPackage;
 
-/// The List of Atomic ROS Nodes as a tree: package → node → port. Reads the Document;
+/// The List of Atomic ROS Nodes as a tree: package → node → port, and after a node's ports a
+/// "Parameters" row with the parameters it declares. Reads the Document;
 /// editing a node's description pushes an undoable command instead of changing data here.
 /// Shows the classes as corrected (blueprint §5): renamed and added elements in a quiet tint,
 /// reviewed ones with a ✓, removed ones struck out where they were.
@@ -35,15 +36,18 @@ public:
         None,
         Package,
         Node,
-        Port
+        Port,
+        Parameters, ///< a node's "Parameters" row (only when it declares any)
+        Parameter   ///< one declared parameter
     };
     enum Role
     {
         KindRole = Qt::UserRole + 1, ///< int(ItemKind)
         NodeIdRole,                  ///< "arc_3" for node and port rows
         PortIdRole,                  ///< "p1" for port rows
-        ProvenanceRole, ///< "recovered", "suggested", "corrected" or "removed" (node, port rows)
-        ReviewedRole,   ///< bool: a person marked it reviewed
+        ProvenanceRole,    ///< "recovered", "suggested", "corrected" or "removed" (node, port rows)
+        ReviewedRole,      ///< bool: a person marked it reviewed
+        ParameterNameRole, ///< the declared name of a parameter row
     };
 
     explicit AtomicNodeModel(Document *document, QObject *parent = nullptr);
@@ -64,9 +68,11 @@ public:
     /// The node of a node row, or the owning node of a port row.
     const AtomicNode *node(const QModelIndex &index) const;
     const Port *port(const QModelIndex &index) const;
+    /// The declaration of a parameter row, or null.
+    const ParameterDeclaration *parameter(const QModelIndex &index) const;
     /// True for a node or port a correction removed (shown struck out).
     bool isRemoved(const QModelIndex &index) const;
-    /// The id of a node or port row ("arc_3", "arc_3/p1"); "" for a package row.
+    /// The id of a node or port row ("arc_3", "arc_3/p1"); "" for a package or parameter row.
     QString elementId(const QModelIndex &index) const;
     /// Where the row's element comes from (invalid for rows without evidence).
     Evidence evidence(const QModelIndex &index) const;
@@ -79,6 +85,10 @@ public:
     QModelIndex packageIndex(const QString &name, int column = 0) const;
     QModelIndex nodeIndex(const QString &nodeId, int column = 0) const;
     QModelIndex portIndex(const QString &nodeId, const QString &portId, int column = 0) const;
+    /// The "Parameters" row of a node (invalid when it declares none).
+    QModelIndex parametersIndex(const QString &nodeId, int column = 0) const;
+    /// The row of the first parameter `nodeId` declares under `name`.
+    QModelIndex parameterIndex(const QString &nodeId, const QString &name, int column = 0) const;
     /// The innermost element whose evidence covers file:line (a port before its node).
     QModelIndex indexAt(const QString &file, int line) const;
 
@@ -110,6 +120,9 @@ private:
     QVariant packageData(const PackageRow &row, int column, int role) const;
     QVariant nodeData(const AtomicNode &node, int column, int role) const;
     QVariant portData(const AtomicNode &node, const Port &port, int column, int role) const;
+    QVariant parametersData(const AtomicNode &node, int column, int role) const;
+    QVariant parameterData(const AtomicNode &node, const ParameterDeclaration &parameter,
+                           int column, int role) const;
 
     Document *m_document;
     AtomicNodeList m_nodes;  ///< as corrected, with removed elements where they were

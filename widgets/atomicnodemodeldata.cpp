@@ -1,8 +1,10 @@
-// What the atomic node tree shows in each row and column: packages, nodes and ports, with the
-// marks of corrections (tint, strike-out, review tick) and a suggested description previewed.
+// What the atomic node tree shows in each row and column: packages, nodes, ports and declared
+// parameters, with the marks of corrections (tint, strike-out, review tick) and a suggested
+// description previewed.
 #include "atomicnodemodel.h"
 #include "atomicnodetext.h"
 #include "icons.h"
+#include "nodedescription.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -123,9 +125,15 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
         f.setStrikeOut(m_removed.contains(node.id));
         return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
     }
-    case Qt::ToolTipRole:
-        return AtomicNodeText::nodeToolTip(node) +
+    case Qt::ToolTipRole: {
+        NodeDescription description = NodeDescription::of(*m_document, node.id);
+        if (description.text != node.description) // not the document's (yet): as shown
+            description = {node.description, node.description.isEmpty()
+                                                 ? NodeDescription::Source::None
+                                                 : NodeDescription::Source::Code};
+        return AtomicNodeText::nodeToolTip(node, description) +
                marksData(node.id, node.marks, column, role).toString();
+    }
     case Qt::ForegroundRole:
     case ProvenanceRole:
     case ReviewedRole:
@@ -176,6 +184,72 @@ QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int
         return node.id;
     case PortIdRole:
         return port.id;
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::parametersData(const AtomicNode &node, int column, int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+        if (column == NameColumn)
+            return tr("Parameters");
+        if (column == DetailsColumn)
+            return AtomicNodeText::parametersDetails(node);
+        return {};
+    case Qt::ToolTipRole:
+        return AtomicNodeText::parametersToolTip(node);
+    case Qt::ForegroundRole:
+        if (m_removed.contains(node.id))
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        return {};
+    case KindRole:
+        return int(ItemKind::Parameters);
+    case NodeIdRole:
+        return node.id;
+    default:
+        return {};
+    }
+}
+
+QVariant AtomicNodeModel::parameterData(const AtomicNode &node,
+                                        const ParameterDeclaration &parameter, int column,
+                                        int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case NameColumn:
+            return parameter.name;
+        case TypeColumn:
+            return parameter.type;
+        case DetailsColumn:
+            return AtomicNodeText::parameterDetails(parameter);
+        case DescriptionColumn:
+            return parameter.description;
+        default:
+            return {};
+        }
+    case Qt::FontRole: {
+        // a name with parts the code decides at run time, as an unresolved port's
+        QFont f;
+        f.setItalic(column == NameColumn && parameterNameIsPattern(parameter.name));
+        f.setStrikeOut(m_removed.contains(node.id));
+        return f.italic() || f.strikeOut() ? QVariant(f) : QVariant();
+    }
+    case Qt::ToolTipRole:
+        return AtomicNodeText::parameterToolTip(node, parameter);
+    case Qt::ForegroundRole:
+        if (m_removed.contains(node.id))
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
+        return {};
+    case KindRole:
+        return int(ItemKind::Parameter);
+    case NodeIdRole:
+        return node.id;
+    case ParameterNameRole:
+        return parameter.name;
     default:
         return {};
     }

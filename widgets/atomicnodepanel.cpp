@@ -40,8 +40,33 @@ AtomicNodePanel::AtomicNodePanel(QWidget *parent) : FilteredTreePanel(parent)
     m_editDescription = editDescription;
     m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_tree, &QWidget::customContextMenuRequested, this, &AtomicNodePanel::showContextMenu);
+    // Selecting a row shows its place already; activating a port or a parameter shows it again
+    // (the source view may have moved on). A class's description edits on double-click.
+    connect(m_tree, &QAbstractItemView::activated, this, [this](const QModelIndex &proxyIndex) {
+        const QModelIndex index = m_proxy->mapToSource(proxyIndex);
+        if (!m_model)
+            return;
+        const AtomicNodeModel::ItemKind kind = m_model->kind(index);
+        if (kind != AtomicNodeModel::ItemKind::Port && kind != AtomicNodeModel::ItemKind::Parameter)
+            return;
+        if (const Evidence e = m_model->evidence(index); e.isValid())
+            Q_EMIT evidenceRequested(e);
+    });
     setPlaceholderText(tr("No node classes analysed yet."));
     updatePlaceholder();
+}
+
+bool AtomicNodePanel::isExpandable(const QModelIndex &proxyIndex) const
+{
+    if (proxyIndex.data(AtomicNodeModel::KindRole).toInt() !=
+        int(AtomicNodeModel::ItemKind::Parameters))
+        return true;
+    if (m_filter->text().trimmed().isEmpty())
+        return false;
+    for (int row = 0, rows = m_proxy->rowCount(proxyIndex); row < rows; ++row)
+        if (m_proxy->matchesItself(m_proxy->index(row, 0, proxyIndex)))
+            return true;
+    return false;
 }
 
 QString AtomicNodePanel::stableKeyOf(const QModelIndex &sourceIndex) const

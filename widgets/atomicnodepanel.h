@@ -9,8 +9,9 @@ namespace rosarch {
 
 class AtomicNodeModel;
 
-/// The "Atomic nodes" panel: a filter field over the package → node → port tree.
-/// Speaks in indexes of the AtomicNodeModel.
+/// The "Atomic nodes" panel: a filter field over the package → node → port tree, with each
+/// node's declared parameters under a "Parameters" row. Speaks in indexes of the
+/// AtomicNodeModel.
 class AtomicNodePanel : public FilteredTreePanel
 {
     Q_OBJECT
@@ -26,7 +27,8 @@ public:
 
 Q_SIGNALS:
     /// The person asked to see a place in the source: a call site on the way from the node to
-    /// a port made by a helper, or the call that creates it.
+    /// a port made by a helper, the call that creates it, or (double-click, Enter) the
+    /// creation of a port or the declaration of a parameter.
     void evidenceRequested(const Evidence &evidence);
     /// A context menu is about to open on `sourceIndex` (maybe invalid): add to `menu`.
     void contextMenuRequested(QMenu *menu, const QModelIndex &sourceIndex);
@@ -34,6 +36,9 @@ Q_SIGNALS:
     void renameRequested(const QModelIndex &sourceIndex);
 
 protected:
+    /// A "Parameters" row opens when a person asks, or when the filter matches a parameter
+    /// in it: navigation2's classes declare thousands.
+    bool isExpandable(const QModelIndex &proxyIndex) const override;
     QString stableKeyOf(const QModelIndex &sourceIndex) const override;
     QModelIndex sourceIndexOfKey(const QString &key) const override;
 

@@ -95,7 +95,7 @@ QString AtomicNodeText::packageToolTip(const QString &name, const RosPackage *pk
     return tip;
 }
 
-QString AtomicNodeText::nodeToolTip(const AtomicNode &node)
+QString AtomicNodeText::nodeToolTip(const AtomicNode &node, const NodeDescription &description)
 {
     const QString what = node.isPlugin()   ? tr("pluginlib plugin")
                          : node.lifecycle  ? tr("Lifecycle node class")
@@ -121,8 +121,16 @@ QString AtomicNodeText::nodeToolTip(const AtomicNode &node)
     line(tr("Compile type: %1")
              .arg(node.compileType == AtomicNode::CompileType::Python ? tr("Python") : tr("C++")));
     line(node.ports.size() == 1 ? tr("1 port") : tr("%1 ports").arg(node.ports.size()));
-    if (!node.description.isEmpty())
-        line(tr("Description: %1").arg(html(node.description)));
+    if (!node.parameters.isEmpty())
+        line(node.parameters.size() == 1
+                 ? tr("1 declared parameter")
+                 : tr("%1 declared parameters").arg(node.parameters.size()));
+    if (description.text.isEmpty())
+        line(description.source == NodeDescription::Source::Correction
+                 ? tr("No description (a person removed it)")
+                 : tr("No description in the code"));
+    else
+        line(tr("Description (%1): %2").arg(description.sourceText(), html(description.text)));
     if (node.evidence.isValid())
         line(tr("Defined at %1").arg(html(location(node.evidence))));
     return tip;
@@ -170,6 +178,81 @@ QString AtomicNodeText::portToolTip(const AtomicNode &node, const Port &port)
         line(tr("Declared in a base class"));
     if (port.evidence.isValid())
         line(tr("Created at %1").arg(html(location(port.evidence))));
+    return tip;
+}
+
+QString AtomicNodeText::parametersDetails(const AtomicNode &node)
+{
+    QString details = tr("%n declared", nullptr, int(node.parameters.size()));
+    if (node.acceptsUndeclared)
+        details += QStringLiteral(" · ") + tr("takes any parameter");
+    return details;
+}
+
+QString AtomicNodeText::parametersToolTip(const AtomicNode &node)
+{
+    QString tip = tr("<b>Parameters</b> %1 declares: name, type, default, and the read-only flag "
+                     "and range its descriptor sets. An instance's values in effect show in the "
+                     "launch tree and the Parameters panel.")
+                      .arg(html(node.className));
+    if (node.acceptsUndeclared)
+        tip += QStringLiteral("<br/>") +
+               tr("It takes any parameter (allow_undeclared_parameters or "
+                  "automatically_declare_parameters_from_overrides): no value given to it is "
+                  "undeclared.");
+    return tip;
+}
+
+QString AtomicNodeText::parameterDetails(const ParameterDeclaration &parameter)
+{
+    QStringList parts;
+    if (parameter.hasDefault)
+        parts << tr("default: %1").arg(parameter.defaultValue);
+    else
+        parts << tr("no default");
+    if (parameter.readOnly)
+        parts << tr("read-only");
+    if (parameter.dynamicTyping)
+        parts << tr("any type");
+    if (!parameter.range.isEmpty())
+        parts << tr("range: %1").arg(parameter.range);
+    if (!parameter.guard.isEmpty())
+        parts << tr("guard: %1").arg(parameter.guard);
+    if (parameter.inherited)
+        parts << tr("inherited");
+    return parts.join(QStringLiteral(" · "));
+}
+
+QString AtomicNodeText::parameterToolTip(const AtomicNode &node,
+                                         const ParameterDeclaration &parameter)
+{
+    QString tip = tr("<b>Parameter</b> %1").arg(html(parameter.name));
+    const auto line = [&tip](const QString &text) { tip += QStringLiteral("<br/>") + text; };
+    line(tr("Declared by %1").arg(html(node.className)));
+    if (!parameter.nameExpression.isEmpty())
+        line(tr("Name as written: %1").arg(html(parameter.nameExpression)));
+    if (parameter.name.contains(QLatin1String("{plugin}")))
+        line(tr("{plugin} is the name the plugin is loaded under"));
+    line(parameter.type.isEmpty() ? tr("Type: not fixed by the declaration")
+                                  : tr("Type: %1").arg(html(parameter.type)));
+    if (parameter.dynamicTyping)
+        line(tr("Its descriptor allows a value of any type"));
+    line(parameter.hasDefault ? tr("Default: %1").arg(html(parameter.defaultValue))
+                              : tr("No default: an instance must be given a value"));
+    if (parameter.readOnly)
+        line(tr("Read-only: set at start, never changed while the node runs"));
+    if (!parameter.range.isEmpty())
+        line(tr("Range: %1").arg(html(parameter.range)));
+    line(parameter.description.isEmpty() ? tr("No description in the code")
+                                         : tr("Description: %1").arg(html(parameter.description)));
+    if (!parameter.guard.isEmpty())
+        line(tr("Declared only if: %1").arg(html(parameter.guard)));
+    if (!parameter.via.isEmpty())
+        line(tr("Declared through: %1").arg(html(parameter.via)));
+    if (parameter.inherited)
+        line(tr("Declared by a base class or helper code"));
+    if (parameter.evidence.isValid())
+        line(tr("Declared at %1").arg(html(location(parameter.evidence))));
     return tip;
 }
 

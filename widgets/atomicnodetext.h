@@ -1,6 +1,7 @@
 #pragma once
 
 #include "atomicnode.h"
+#include "nodedescription.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -23,8 +24,16 @@ public:
     static QString portDetails(const Port &port);
     /// `pkg` may be null for a package named only by node sources.
     static QString packageToolTip(const QString &name, const RosPackage *pkg, int nodeCount);
-    static QString nodeToolTip(const AtomicNode &node);
+    /// What the class is and where it comes from, with its description in effect and the
+    /// source of that description.
+    static QString nodeToolTip(const AtomicNode &node, const NodeDescription &description);
     static QString portToolTip(const AtomicNode &node, const Port &port);
+    /// "12 declared · takes any parameter"
+    static QString parametersDetails(const AtomicNode &node);
+    static QString parametersToolTip(const AtomicNode &node);
+    /// "default: 0.5 · read-only · range: [0.0, 1.0] · guard: use_x"
+    static QString parameterDetails(const ParameterDeclaration &parameter);
+    static QString parameterToolTip(const AtomicNode &node, const ParameterDeclaration &parameter);
 };
 
 } // namespace rosarch
