@@ -24,6 +24,8 @@ const QString kRootKey = QStringLiteral("root");
 const QString kArgumentsKey = QStringLiteral("arguments");
 // The root launch file the composed diagram shows, per workspace (workspace-relative).
 const QString kDiagramRoots = QStringLiteral("diagram/roots");
+// The site export dialog's fields, per workspace.
+const QString kSiteExports = QStringLiteral("site/exports");
 // The LLM; the API key has no key here on purpose: it only comes from the environment.
 const QString kLlmEndpoint = QStringLiteral("llm/endpoint");
 const QString kLlmModel = QStringLiteral("llm/model");
@@ -280,6 +282,18 @@ void AppSettings::setDiagramRoot(const QString &workspace, const QString &rootFi
     else
         all.insert(normalized(workspace), rootFile);
     m_settings->setValue(kDiagramRoots, all);
+}
+
+QVariantMap AppSettings::siteExport(const QString &workspace) const
+{
+    return m_settings->value(kSiteExports).toMap().value(normalized(workspace)).toMap();
+}
+
+void AppSettings::setSiteExport(const QString &workspace, const QVariantMap &values)
+{
+    QVariantMap all = m_settings->value(kSiteExports).toMap();
+    all.insert(normalized(workspace), values);
+    m_settings->setValue(kSiteExports, all);
 }
 
 QVariantMap AppSettings::logFilter() const

@@ -66,6 +66,11 @@ public:
     void setLogFilter(const QVariantMap &filter);
     void setDiagramRoot(const QString &workspace, const QString &rootFile);
 
+    /// What File → Export Architecture Site was last given for `workspace` (folder, title,
+    /// sourceUrl, commit); empty when never.
+    QVariantMap siteExport(const QString &workspace) const;
+    void setSiteExport(const QString &workspace, const QVariantMap &values);
+
     /// The LLM endpoint, model, temperature and timeouts (never the API key); when nothing
     /// was stored, $ROSARCH_LLM_ENDPOINT / $ROSARCH_LLM_MODEL or the defaults.
     LlmSettings llmSettings() const;

@@ -16,6 +16,7 @@
 #include "projectcontroller.h"
 #include "rendercontroller.h"
 #include "siteexport.h"
+#include "siteexportdialog.h"
 #include "stagerunner.h"
 #include "suggestioncontroller.h"
 #include "workspacewatcher.h"
@@ -200,10 +201,11 @@ void MainWindow::createMenus()
                                               "architecture."));
             return;
         }
-        const QString folder = QFileDialog::getExistingDirectory(
-            this, tr("Export Architecture Site To"), QFileInfo(workspace()).path());
-        if (folder.isEmpty())
+        SiteExportDialog dialog(workspace(), this);
+        if (dialog.exec() != QDialog::Accepted)
             return;
+        SiteOptions options = dialog.options();
+        options.version = QApplication::applicationVersion();
         // The pages and their diagrams take seconds on a big workspace: a worker writes them.
         auto *job = new SiteExport(this);
         auto *progress =
@@ -228,11 +230,6 @@ void MainWindow::createMenus()
                             tr("Export failed"),
                             tr("The architecture site could not be written:\n%1").arg(message));
                 });
-        SiteOptions options;
-        options.workspace = workspace();
-        options.siteFolder = folder;
-        options.title = QDir(workspace()).dirName();
-        options.version = QApplication::applicationVersion();
         job->start(m_document->accepted(), m_document->project(), options);
     });
     file->addAction(m_diagrams->exportSvgAction());
