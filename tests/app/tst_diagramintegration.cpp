@@ -242,7 +242,7 @@ private Q_SLOTS:
         Suggestion name;
         name.id = QStringLiteral("s3");
         name.kind = Suggestion::Kind::NameResolution;
-        name.targetId = commander.id + QStringLiteral("/p2"); // self.get_name() + '/report'
+        name.targetId = commander.id + QStringLiteral("/p2"); // f'report_{id(self)}'
         name.value = QStringLiteral("~/report");
         SuggestionReport report;
         report.suggestions = {name};

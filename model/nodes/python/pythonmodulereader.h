@@ -37,6 +37,9 @@ private:
     QString key(TSNode expr) const;
     bool nameParts(TSNode expr, int depth, QList<PythonNamePart> *parts) const;
     bool formatParts(TSNode call, int depth, QList<PythonNamePart> *parts) const;
+    /// `self.get_name()` and its kin as a name part: `{node}`, `{namespace}`,
+    /// `{namespace}/{node}`; "" for any other call.
+    QString ownNamePart(TSNode call) const;
     PythonParameterRef parameterOf(TSNode identifier) const;
 
     const SyntaxTree &m_tree;

@@ -1,6 +1,8 @@
 #include "pythonmodulereader.h"
 
+#include "port.h"
 #include "pythonsyntax.h"
+#include "rosnames.h"
 
 // PythonModuleReader's reading of port names: a parameter that a name comes from, and names
 // built from parts (f-strings, `.format`, `+`, `str()`).
@@ -30,6 +32,21 @@ PythonParameterRef PythonModuleReader::parameterOf(TSNode identifier) const
         const bool init = !method || function == QLatin1String("__init__");
         return {int(i - skip), name, init ? QString() : function};
     }
+    return {};
+}
+
+QString PythonModuleReader::ownNamePart(TSNode call) const
+{
+    if (m_tree.view(py::calleeObject(call)) != "self" || !ts::isNull(py::positional(call, 0)))
+        return {};
+    const std::string_view callee = py::calleeName(m_tree, call);
+    if (callee == "get_name")
+        return QLatin1String(kNodeNamePlaceholder);
+    if (callee == "get_namespace")
+        return QLatin1String(RosNames::kNamespacePlaceholder);
+    if (callee == "get_fully_qualified_name")
+        return QStringLiteral("%1/%2").arg(QLatin1String(RosNames::kNamespacePlaceholder),
+                                           QLatin1String(kNodeNamePlaceholder));
     return {};
 }
 
@@ -82,6 +99,12 @@ bool PythonModuleReader::nameParts(TSNode expr, int depth, QList<PythonNamePart>
             return formatParts(expr, depth, parts);
         if (callee == "str" && ts::is(function, "identifier"))
             return nameParts(py::positional(expr, 0), depth + 1, parts);
+        // the node's own name and namespace, which each instance fills in
+        const QString own = ownNamePart(expr);
+        if (!own.isEmpty()) {
+            parts->append({own, {}});
+            return true;
+        }
     }
     if (t == "identifier" || t == "attribute") {
         TSNode assigned = m_resolver.assignedExpression(expr);

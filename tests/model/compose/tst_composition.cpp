@@ -259,7 +259,7 @@ private Q_SLOTS:
         const PartPort *report =
             portOf(partNamed(*m_system, QStringLiteral("commander")), QStringLiteral("p2"));
         QVERIFY(!report->resolved);
-        QCOMPARE(report->name, QStringLiteral("self.get_name() + '/report'"));
+        QCOMPARE(report->name, QStringLiteral("f'report_{id(self)}'"));
         for (const Connection &k : m_system->connections)
             QVERIFY(!(k.portId == QLatin1String("p2") &&
                       m_system->part(k.partId)->name == QLatin1String("commander")));

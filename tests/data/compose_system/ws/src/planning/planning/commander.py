@@ -15,7 +15,7 @@ class Commander(Node):
         self.client = ActionClient(self, Navigate, 'navigate')
         self.override_pub = self.create_publisher(TwistStamped, '/robot/cmd_vel', 10)
         self.create_subscription(String, 'mission_status', self.on_status, 10)
-        self.report_pub = self.create_publisher(String, self.get_name() + '/report', 10)
+        self.report_pub = self.create_publisher(String, f'report_{id(self)}', 10)
 
     def on_status(self, msg):
         pass
