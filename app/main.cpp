@@ -1,5 +1,6 @@
 #include "appsettings.h"
 #include "commandline.h"
+#include "helperprogram.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -15,6 +16,13 @@ void describeApplication()
     QCoreApplication::setOrganizationName(QStringLiteral("rosarch"));
     QCoreApplication::setApplicationName(QStringLiteral("rosarch"));
     QCoreApplication::setApplicationVersion(QStringLiteral(ROSARCH_VERSION));
+}
+
+// Installed, the example is in the data folder; run from the build tree, it is the source's.
+QString exampleWorkspace()
+{
+    const QString installed = rosarch::findInstalledData(QStringLiteral("example_ws"));
+    return installed.isEmpty() ? QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE) : installed;
 }
 } // namespace
 
@@ -38,7 +46,7 @@ int main(int argc, char **argv)
     // A path on the command line, else the last session's workspace, else the example.
     QString workspace = args.size() > 1 ? args.at(1) : rosarch::AppSettings().lastWorkspace();
     if (args.size() <= 1 && (workspace.isEmpty() || !QDir(workspace).exists()))
-        workspace = QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE);
+        workspace = exampleWorkspace();
     window.openWorkspace(QDir(workspace).absolutePath());
     return app.exec();
 }

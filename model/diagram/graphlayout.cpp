@@ -196,13 +196,8 @@ QString GraphLayout::toDot(const LayoutGraph &graph)
 
 QString GraphLayout::helperPath(const LayoutOptions &options)
 {
-#ifdef ROSARCH_LAYOUT_HELPER
-    const QString buildTree = QStringLiteral(ROSARCH_LAYOUT_HELPER);
-#else
-    const QString buildTree;
-#endif
-    return findHelperProgram(options.helperPath, "ROSARCH_LAYOUT", QStringLiteral("rosarch-layout"),
-                             buildTree);
+    return findHelperProgram(options.helperPath, "ROSARCH_LAYOUT",
+                             QStringLiteral("rosarch-layout"));
 }
 
 LayoutResult GraphLayout::layout(const LayoutGraph &graph, const LayoutOptions &options)

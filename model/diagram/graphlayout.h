@@ -12,7 +12,7 @@ namespace rosarch {
 struct LayoutOptions
 {
     int timeoutMs = 20000;          ///< the helper is killed after this long
-    QString helperPath;             ///< "" = $ROSARCH_LAYOUT, next to the application, build dir
+    QString helperPath;             ///< "" = $ROSARCH_LAYOUT, next to the application, libexec
     std::function<bool()> canceled; ///< polled while the helper runs; true kills it
 };
 

@@ -6,13 +6,7 @@ namespace rosarch {
 
 QString StageProcess::helperPath(const QString &configured)
 {
-#ifdef ROSARCH_STAGES_HELPER
-    const QString buildTree = QStringLiteral(ROSARCH_STAGES_HELPER);
-#else
-    const QString buildTree;
-#endif
-    return findHelperProgram(configured, "ROSARCH_STAGES", QStringLiteral("rosarch-stages"),
-                             buildTree);
+    return findHelperProgram(configured, "ROSARCH_STAGES", QStringLiteral("rosarch-stages"));
 }
 
 Diagnostic StageProcess::missingWorker()

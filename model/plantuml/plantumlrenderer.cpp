@@ -14,7 +14,9 @@ QString PlantUmlRenderer::findJar(const QString &configured)
     if (QCoreApplication::instance()) {
         const QDir app(QCoreApplication::applicationDirPath());
         candidates << app.filePath(QStringLiteral("plantuml.jar"))
-                   << app.filePath(QStringLiteral("../share/rosarch/plantuml.jar"));
+                   << app.filePath(QStringLiteral("../share/rosarch/plantuml.jar"))
+                   // Debian's plantuml package, beside an installed /usr/bin/rosarch.
+                   << app.filePath(QStringLiteral("../share/plantuml/plantuml.jar"));
     }
 #ifdef ROSARCH_BUILD_PLANTUML_JAR
     candidates << QStringLiteral(ROSARCH_BUILD_PLANTUML_JAR);
