@@ -55,6 +55,8 @@ install(FILES ${PROJECT_SOURCE_DIR}/packaging/rosarch.desktop
 install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/rosarch.svg
   DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright)
+
 # rosarch(1), written from `rosarch --help` and each command's --help at build time.
 set(manpage ${CMAKE_CURRENT_BINARY_DIR}/packaging/rosarch.1)
 add_custom_command(OUTPUT ${manpage}
@@ -88,9 +90,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION devel)
 # dpkg-shlibdeps turns the linked libraries (Qt 6, QScintilla, Graphviz, libcurl, tree-sitter,
 # yaml-cpp, OpenSSL) into Depends; it finds our own libraries through the $ORIGIN RPATHs.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# Loaded at run time, so no linked library names them: the window's SVG icons and the
-# platform plugins (xcb, offscreen).
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6, qt6-qpa-plugins")
+# Loaded at run time, so no linked library names them: Qt's platform plugins (xcb, offscreen).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
 # --render runs PlantUML with Java; `rosarch diff --rev` and the site's source links run git.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "default-jre-headless | java-runtime-headless, plantuml, git")
 include(CPack)
