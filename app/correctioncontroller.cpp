@@ -185,8 +185,8 @@ CorrectionController::Element CorrectionController::launchElement(const QModelIn
         return {};
     const auto rootOf = [this](QString lf) {
         const LaunchDependencies &launch = m_document->accepted().launch;
-        for (const LaunchFileInstance *i = findLaunchFile(launch, lf); i && !i->parentId.isEmpty();
-             i = findLaunchFile(launch, i->parentId))
+        for (const LaunchFileInstance *i = launch.instance(lf); i && !i->parentId.isEmpty();
+             i = launch.instance(i->parentId))
             lf = i->parentId;
         return lf;
     };
@@ -270,13 +270,13 @@ QString CorrectionController::nameOf(const Element &e)
         return {};
     case Kind::Instance:
     case Kind::Connection:
-        if (const NodeInstance *n = findInstance(now.launch, e.id))
+        if (const NodeInstance *n = now.launch.node(e.id))
             return instanceName(*n);
-        if (const NodeInstance *n = findInstance(m_document->launchDependencies(), e.id))
+        if (const NodeInstance *n = m_document->launchDependencies().node(e.id))
             return instanceName(*n);
         return {};
     case Kind::LaunchFile:
-        if (const LaunchFileInstance *lf = findLaunchFile(now.launch, e.id))
+        if (const LaunchFileInstance *lf = now.launch.instance(e.id))
             return lf->file.isEmpty() ? lf->type : lf->file.section(u'/', -1);
         return {};
     case Kind::Channel:
@@ -319,9 +319,9 @@ InspectorInfo CorrectionController::describe(const Element &e)
     }
     case Kind::Instance:
     case Kind::Connection: {
-        const NodeInstance *n = findInstance(now.launch, e.id);
+        const NodeInstance *n = now.launch.node(e.id);
         if (!n)
-            n = findInstance(m_document->launchDependencies(), e.id);
+            n = m_document->launchDependencies().node(e.id);
         if (!n)
             return {};
         info.kind = e.kind == Kind::Instance ? tr("Node instance") : tr("Connection");
@@ -333,7 +333,7 @@ InspectorInfo CorrectionController::describe(const Element &e)
         break;
     }
     case Kind::LaunchFile: {
-        const LaunchFileInstance *lf = findLaunchFile(now.launch, e.id);
+        const LaunchFileInstance *lf = now.launch.instance(e.id);
         if (!lf)
             return {};
         info.kind = lf->format == QLatin1String("executable")

@@ -228,7 +228,7 @@ bool CorrectionController::addPort(const Element &e)
 bool CorrectionController::addPart(const Element &e)
 {
     const LaunchFileInstance *lf =
-        e.kind == Kind::LaunchFile ? findLaunchFile(m_document->accepted().launch, e.id) : nullptr;
+        e.kind == Kind::LaunchFile ? m_document->accepted().launch.instance(e.id) : nullptr;
     if (!lf || lf->file.isEmpty())
         return false;
     QList<QPair<QString, QString>> classes;

@@ -27,22 +27,6 @@ inline const Port *findPort(const AtomicNodeList &nodes, const QString &id)
     return nullptr;
 }
 
-inline const NodeInstance *findInstance(const LaunchDependencies &launch, const QString &id)
-{
-    for (const NodeInstance &n : launch.nodes)
-        if (n.id == id)
-            return &n;
-    return nullptr;
-}
-
-inline const LaunchFileInstance *findLaunchFile(const LaunchDependencies &launch, const QString &id)
-{
-    for (const LaunchFileInstance &lf : launch.instances)
-        if (lf.id == id)
-            return &lf;
-    return nullptr;
-}
-
 inline const Channel *findChannel(const Architecture &architecture, const QString &key)
 {
     for (const Composite &c : architecture.composites)
