@@ -91,6 +91,17 @@ struct NodeInstance
     bool operator==(const NodeInstance &) const = default;
 };
 
+/// A group (GroupAction / <group>) with a condition, as a launch run met it.
+struct LaunchGroupCondition
+{
+    QString condition;      ///< as written
+    bool unless = false;    ///< UnlessCondition / unless=
+    bool holds = true;      ///< the condition's value (true when undecidable: best guess)
+    bool undecided = false; ///< it could not be decided: the group runs as the best guess
+    Evidence evidence;      ///< the group
+    bool operator==(const LaunchGroupCondition &) const = default;
+};
+
 /// A launch-file instance: a root, or one include of a file (a file included twice gives two).
 struct LaunchFileInstance
 {
@@ -115,6 +126,8 @@ struct LaunchFileInstance
     QString interfaceModel = {};
     QList<Port> modelledPorts = {};
     QString modelNamespace = {};
+    /// The file's groups that have a condition, in the order the run met them.
+    QList<LaunchGroupCondition> groups = {};
     bool operator==(const LaunchFileInstance &) const = default;
 };
 

@@ -83,11 +83,15 @@ template <class F> void fields(NodeInstance &v, F f)
       v.active, v.activeByGuess, v.unresolved, v.evidence, v.interfaceModel, v.modelledPorts,
       v.modelConfig, v.parentNode, v.constructedPorts);
 }
+template <class F> void fields(LaunchGroupCondition &v, F f)
+{
+    f(v.condition, v.unless, v.holds, v.undecided, v.evidence);
+}
 template <class F> void fields(LaunchFileInstance &v, F f)
 {
     f(v.id, v.type, v.file, v.package, v.format, v.parentId, v.external, v.nodes,
       v.includedLaunchFiles, v.namespaces, v.arguments, v.condition, v.active, v.unresolved,
-      v.evidence, v.interfaceModel, v.modelledPorts, v.modelNamespace);
+      v.evidence, v.interfaceModel, v.modelledPorts, v.modelNamespace, v.groups);
 }
 template <class F> void fields(LaunchArgument &v, F f)
 {

@@ -303,6 +303,9 @@ void LaunchExecutor::execute(const QList<LaunchAction> &actions, Scope &scope, F
             Scope inner = scope;
             bool undecided = false;
             const bool holds = conditionHolds(a, scope, frame, unresolvedSink(), &undecided);
+            if (a.condition.isSet() && !frame.collectOnly && frame.instance >= 0)
+                m_out->instances[frame.instance].groups.append(
+                    {a.condition.text, a.condition.unless, holds, undecided, a.evidence});
             inner.active = scope.active && holds;
             inner.activeByGuess = scope.activeByGuess || undecided;
             if (!inner.active && frame.collectOnly && !frame.conditionalIncludes)

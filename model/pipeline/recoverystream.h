@@ -36,7 +36,7 @@ struct StageRequest
 namespace stagestream {
 /// The first bytes of a request and of every worker reply: "RSTG" and the format version.
 constexpr quint32 kMagic = 0x52535447;
-constexpr quint32 kVersion = 11;
+constexpr quint32 kVersion = 12;
 /// The QDataStream version both sides use.
 constexpr QDataStream::Version kStreamVersion = QDataStream::Qt_6_4;
 /// The worker's replies on stdout are frames: a type and a payload (QByteArray).

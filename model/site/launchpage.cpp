@@ -17,6 +17,40 @@ using SiteHtml::code;
 using SiteHtml::escape;
 using SiteHtml::link;
 
+/// Whether a launch action's own condition could not be decided: the run recorded it as
+/// unresolved at the action, under its text.
+bool undecidedCondition(const QList<Unresolved> &unresolved, const QString &condition,
+                        const Evidence &evidence)
+{
+    for (const Unresolved &u : unresolved)
+        if (u.evidence == evidence && u.expression == condition)
+            return true;
+    return false;
+}
+
+/// A condition as written, then what the analysis made of it: `value` when decided (the
+/// action ran, or "does not hold"), or that it was undecidable and kept as the best guess.
+QString conditionCell(const QString &written, bool undecided, bool ran, const QString &notRun)
+{
+    if (written.isEmpty())
+        return {};
+    const QString value =
+        undecided ? QStringLiteral("<span class=\"tag\">%1</span>")
+                        .arg(escape(tr("undecided: kept as the best guess")))
+        : ran ? QStringLiteral("<span class=\"tag\">%1</span>").arg(escape(tr("holds")))
+              : QStringLiteral("<span class=\"tag off\">%1</span>").arg(escape(notRun));
+    return code(written) + u' ' + value;
+}
+
+/// A group's condition as the file writes it: XML and YAML give the attribute's value alone.
+QString groupCondition(const LaunchGroupCondition &g, const QString &format)
+{
+    if (format == QLatin1String("python"))
+        return g.condition;
+    return QStringLiteral("%1=\"%2\"")
+        .arg(g.unless ? QStringLiteral("unless") : QStringLiteral("if"), g.condition);
+}
+
 class Writer
 {
 public:
@@ -68,6 +102,7 @@ public:
         body += diagram();
         body += arguments();
         body += includes();
+        body += groups();
         body += nodes();
         return SiteHtml::page(m_context, m_path, name,
                               {{tr("Home"), QStringLiteral("index.html")},
@@ -142,7 +177,10 @@ private:
                         rows << QStringList{
                             lf.external ? code(lf.package + u'/' + lf.type)
                                         : link(m_path, m_model.launchPage(lf.file), lf.file),
-                            lf.condition.isEmpty() ? QString() : code(lf.condition),
+                            conditionCell(
+                                lf.condition,
+                                undecidedCondition(lf.unresolved, lf.condition, lf.evidence),
+                                lf.active, tr("not included")),
                             SiteHtml::source(m_context, m_path, lf.evidence)};
         QString out;
         if (!rows.isEmpty())
@@ -168,6 +206,23 @@ private:
             out += QStringLiteral("</ul>\n</section>\n");
         }
         return out;
+    }
+
+    /// The groups with a condition: as written, and its value with the file's defaults.
+    QString groups() const
+    {
+        if (!m_instance || m_instance->groups.isEmpty())
+            return {};
+        QList<QStringList> rows;
+        for (const LaunchGroupCondition &g : m_instance->groups)
+            rows << QStringList{escape(tr("line %1").arg(g.evidence.line)),
+                                conditionCell(groupCondition(g, m_instance->format), g.undecided,
+                                              g.holds, tr("does not hold: its actions do not run")),
+                                SiteHtml::source(m_context, m_path, g.evidence)};
+        return section(QStringLiteral("conditions"), tr("Conditional groups")) +
+               SiteHtml::table(tr("Groups that run only under a condition"),
+                               {tr("Group"), tr("Condition"), tr("Source")}, rows) +
+               QStringLiteral("</section>\n");
     }
 
     /// A node or an include inside a namespace scope, linked to its page.
@@ -199,7 +254,9 @@ private:
                                 ns + u'/' + (n.nodeName.isEmpty() ? n.execName : n.nodeName))),
                             code(n.package + u'/' + n.execName),
                             link(m_path, m_model.nodePage(n.classId), n.className),
-                            n.condition.isEmpty() ? QString() : code(n.condition),
+                            conditionCell(n.condition,
+                                          undecidedCondition(n.unresolved, n.condition, n.evidence),
+                                          n.active, tr("not started")),
                             SiteHtml::source(m_context, m_path, n.evidence)};
                     }
         if (rows.isEmpty())

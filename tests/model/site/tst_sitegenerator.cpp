@@ -140,6 +140,41 @@ private slots:
                     QCOMPARE(port.remapped, port.remap >= 0);
     }
 
+    void launchPagesShowConditionsAsWrittenAndEvaluated()
+    {
+        // On its own, sensing.launch.py declares use_camera false: the camera does not start.
+        const SiteModel model(m_recovery, {});
+        const QString sensing = QString::fromUtf8(
+            byPath(m_files).value(model.launchPage(QStringLiteral("src/robot_bringup/launch/"
+                                                                  "sensing.launch.py"))));
+        QVERIFY2(sensing.contains(QLatin1String(
+                     "<code>IfCondition(LaunchConfiguration(&#39;use_camera&#39;))</code> "
+                     "<span class=\"tag off\">not started</span>")),
+                 qPrintable(sensing));
+
+        // A group's condition, a node's that holds, one that does not, and undecidable ones.
+        const QString ws = QStringLiteral(ROSARCH_TEST_DATA "/check_scope/ws");
+        const Recovery scope = recoverWorkspace(ws);
+        SiteOptions o = options(m_dir.filePath(QStringLiteral("scope")));
+        o.workspace = ws;
+        const SiteModel scopeModel(scope, {});
+        const QString robot = QString::fromUtf8(
+            byPath(SiteGenerator::files(scope, {}, o))
+                .value(scopeModel.launchPage(QStringLiteral("src/depot/launch/robot.launch.xml"))));
+        QVERIFY2(robot.contains(QLatin1String("<h2 id=\"conditions\">Conditional groups</h2>")),
+                 qPrintable(robot));
+        QVERIFY(robot.contains(QLatin1String(
+            "<code>if=&quot;$(var use_sim)&quot;</code> <span class=\"tag off\">does not hold")));
+        QVERIFY(robot.contains(QLatin1String("<code>$(equals $(var mode) navigation)</code> "
+                                             "<span class=\"tag\">holds</span>")));
+        QVERIFY(robot.contains(QLatin1String("<code>$(not-equals $(var mode) navigation)</code> "
+                                             "<span class=\"tag off\">not started</span>")));
+        QVERIFY(robot.contains(QLatin1String("<code>$(equals $(var backup) grid)</code> "
+                                             "<span class=\"tag\">undecided")));
+        QVERIFY(robot.contains(QLatin1String("<code>$(equals $(var mode) mapping)</code> "
+                                             "<span class=\"tag off\">not included</span>")));
+    }
+
     void sameModelSameBytes()
     {
         // Another run, into another folder at the same depth: every byte equal.
