@@ -70,21 +70,12 @@ QStringList AppSettings::recentWorkspaces()
 
 void AppSettings::addRecentWorkspace(const QString &path)
 {
-    const QString p = normalized(path);
-    QStringList list = m_settings->value(kRecent).toStringList();
-    list.removeAll(p);
-    list.prepend(p);
-    if (list.size() > kMaxRecent)
-        list.resize(kMaxRecent);
-    m_settings->setValue(kRecent, list);
+    addRecent(kRecent, path);
 }
 
 void AppSettings::removeRecentWorkspace(const QString &path)
 {
-    QStringList list = m_settings->value(kRecent).toStringList();
-    list.removeAll(path);
-    list.removeAll(normalized(path));
-    m_settings->setValue(kRecent, list);
+    removeRecent(kRecent, path);
 }
 
 void AppSettings::clearRecentWorkspaces()
@@ -103,21 +94,31 @@ QStringList AppSettings::recentProjects() const
 
 void AppSettings::addRecentProject(const QString &file)
 {
-    const QString f = normalized(file);
-    QStringList list = m_settings->value(kRecentProjects).toStringList();
-    list.removeAll(f);
-    list.prepend(f);
-    if (list.size() > kMaxRecent)
-        list.resize(kMaxRecent);
-    m_settings->setValue(kRecentProjects, list);
+    addRecent(kRecentProjects, file);
 }
 
 void AppSettings::removeRecentProject(const QString &file)
 {
-    QStringList list = m_settings->value(kRecentProjects).toStringList();
-    list.removeAll(file);
-    list.removeAll(normalized(file));
-    m_settings->setValue(kRecentProjects, list);
+    removeRecent(kRecentProjects, file);
+}
+
+void AppSettings::addRecent(const QString &key, const QString &path)
+{
+    const QString p = normalized(path);
+    QStringList list = m_settings->value(key).toStringList();
+    list.removeAll(p);
+    list.prepend(p);
+    if (list.size() > kMaxRecent)
+        list.resize(kMaxRecent);
+    m_settings->setValue(key, list);
+}
+
+void AppSettings::removeRecent(const QString &key, const QString &path)
+{
+    QStringList list = m_settings->value(key).toStringList();
+    list.removeAll(path);
+    list.removeAll(normalized(path));
+    m_settings->setValue(key, list);
 }
 
 void AppSettings::clearRecentProjects()

@@ -86,6 +86,10 @@ public:
     void setWatchWorkspace(bool watch);
 
 private:
+    /// A recent list under `key`: `path` made canonical and put first, at most kMaxRecent.
+    void addRecent(const QString &key, const QString &path);
+    void removeRecent(const QString &key, const QString &path);
+
     std::unique_ptr<QSettings> m_settings;
 };
 
