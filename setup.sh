@@ -8,6 +8,8 @@
 #                      then every libFuzzer target for a fixed number of runs in build-fuzz
 #                      (what CI runs)
 #   ./setup.sh build   only build
+#   ./setup.sh package build what is installed and the Debian package build/rosarch_*.deb
+#                      (docs/install.md)
 set -euo pipefail
 cd "$(dirname "$0")"
 mode=${1:-gui}
@@ -105,5 +107,9 @@ case "$mode" in
     fi ;;
   build)
     configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo ;;
-  *) echo "usage: $0 [gui|test|build]" >&2; exit 2 ;;
+  package)
+    configure "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    cmake --build "$build_dir" -j "$jobs" --target rosarch-installable
+    (cd "$build_dir" && cpack -G DEB) ;;
+  *) echo "usage: $0 [gui|test|build|package]" >&2; exit 2 ;;
 esac

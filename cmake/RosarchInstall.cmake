@@ -69,6 +69,9 @@ add_custom_command(OUTPUT ${manpage}
 add_custom_target(rosarch-manpage ALL DEPENDS ${manpage})
 install(FILES ${manpage} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
+# What `cmake --install` and cpack take from the build tree, without the tests and tools.
+add_custom_target(rosarch-installable DEPENDS rosarch rosarch-stages rosarch-layout rosarch-manpage)
+
 # cpack -G DEB (from the build folder). The package installs under /usr.
 set(CPACK_PACKAGE_NAME rosarch)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
