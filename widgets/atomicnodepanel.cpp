@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QMenu>
+#include <QSet>
 #include <QTreeView>
 
 namespace rosarch {
@@ -67,6 +68,32 @@ bool AtomicNodePanel::isExpandable(const QModelIndex &proxyIndex) const
         if (m_proxy->matchesItself(m_proxy->index(row, 0, proxyIndex)))
             return true;
     return false;
+}
+
+void AtomicNodePanel::expandRows()
+{
+    if (m_filter->text().trimmed().isEmpty()) {
+        QSet<QModelIndex> keep;
+        for (QModelIndex i = m_tree->currentIndex().siblingAtColumn(0); i.isValid(); i = i.parent())
+            keep.insert(i);
+        // only the open classes are visited: the cost follows what is shown
+        for (int p = 0, packages = m_proxy->rowCount(); p < packages; ++p) {
+            const QModelIndex package = m_proxy->index(p, 0);
+            if (!m_tree->isExpanded(package))
+                continue;
+            for (int n = 0, nodes = m_proxy->rowCount(package); n < nodes; ++n) {
+                const QModelIndex node = m_proxy->index(n, 0, package);
+                const int rows = m_proxy->rowCount(node);
+                const QModelIndex last =
+                    rows > 0 ? m_proxy->index(rows - 1, 0, node) : QModelIndex();
+                if (last.data(AtomicNodeModel::KindRole).toInt() ==
+                        int(AtomicNodeModel::ItemKind::Parameters) &&
+                    m_tree->isExpanded(last) && !keep.contains(last))
+                    m_tree->collapse(last);
+            }
+        }
+    }
+    FilteredTreePanel::expandRows();
 }
 
 QString AtomicNodePanel::stableKeyOf(const QModelIndex &sourceIndex) const

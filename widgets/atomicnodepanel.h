@@ -39,6 +39,9 @@ protected:
     /// A "Parameters" row opens when a person asks, or when the filter matches a parameter
     /// in it: navigation2's classes declare thousands.
     bool isExpandable(const QModelIndex &proxyIndex) const override;
+    /// With the filter cleared, the "Parameters" rows it opened close again (all but the one
+    /// holding the current row): else a short search leaves thousands of rows open.
+    void expandRows() override;
     QString stableKeyOf(const QModelIndex &sourceIndex) const override;
     QModelIndex sourceIndexOfKey(const QString &key) const override;
 

@@ -278,6 +278,23 @@ private Q_SLOTS:
 
         panel.filterEdit()->setText(QStringLiteral("no such name"));
         QTRY_COMPARE(proxy->rowCount(), 0);
+
+        // cleared, the filter closes the "Parameters" rows it opened, but the current one
+        panel.filterEdit()->setText(QStringLiteral("odom_fr"));
+        QTRY_VERIFY(tree->isExpanded(shown(group)));
+        panel.filterEdit()->clear();
+        QTRY_COMPARE(proxy->rowCount(shown(model.nodeIndex(QStringLiteral("arc_1")))), 2);
+        QTRY_VERIFY(!tree->isExpanded(shown(group)));
+        QVERIFY(tree->isExpanded(shown(model.nodeIndex(QStringLiteral("arc_1")))));
+        panel.filterEdit()->setText(QStringLiteral("odom_fr"));
+        QTRY_VERIFY(tree->isExpanded(shown(group)));
+        panel.selectSourceIndex(
+            model.parameterIndex(QStringLiteral("arc_1"), QStringLiteral("odom_frame")));
+        panel.filterEdit()->clear();
+        QTRY_COMPARE(proxy->rowCount(shown(model.nodeIndex(QStringLiteral("arc_1")))), 2);
+        QVERIFY(tree->isExpanded(shown(group)));
+        QCOMPARE(panel.currentSourceIndex(),
+                 model.parameterIndex(QStringLiteral("arc_1"), QStringLiteral("odom_frame")));
     }
 
     // Double-click or Enter on a parameter asks for its declaration, as on a port.
