@@ -1,6 +1,7 @@
 #include "nodepage.h"
 
 #include <QCoreApplication>
+#include <QHash>
 
 namespace rosarch {
 
@@ -164,21 +165,16 @@ private:
                QStringLiteral("</section>\n");
     }
 
-    QString instance(const SitePortUse &use) const
+    /// What an instance shows below its summary, but for the systems it is part of: where it
+    /// is launched, its ports' resolved names and its parameters in effect.
+    QString instanceBody(const SitePortUse &use) const
     {
         const RosNodePart &part = *use.part;
-        const SiteSystem *system = m_model.system(use.system);
         QString out =
-            QStringLiteral("<details><summary>%1 <span class=\"muted\">%2</span></summary>\n")
-                .arg(code(SiteModel::qualifiedName(part)),
-                     escape(tr("in %1").arg(system ? system->root.stem : use.system)));
-        out += QStringLiteral("<p>%1 %2 %3</p>\n")
-                   .arg(escape(tr("Launched by")),
-                        link(m_path, m_model.launchPage(use.composite->file), use.composite->stem),
-                        SiteHtml::source(m_context, m_path, part.evidence));
-        out += QStringLiteral("<p>%1 %2</p>\n")
-                   .arg(escape(tr("System")), link(m_path, m_model.systemPage(use.system),
-                                                   system ? system->title() : use.system));
+            QStringLiteral("<p>%1 %2 %3</p>\n")
+                .arg(escape(tr("Launched by")),
+                     link(m_path, m_model.launchPage(use.composite->file), use.composite->stem),
+                     SiteHtml::source(m_context, m_path, part.evidence));
         QList<QStringList> rows;
         for (const PartPort &p : part.ports) {
             const QString key = SiteModel::channelKey(portFamilyName(p.kind), p.name);
@@ -209,7 +205,46 @@ private:
                 tr("Parameters in effect for %1").arg(SiteModel::qualifiedName(part)),
                 {tr("Name"), tr("Value"), tr("From"), tr("Source")}, params);
         }
-        return out + QStringLiteral("</details>\n");
+        return out;
+    }
+
+    /// The instances that show the same (one launch file's node included by many systems) as
+    /// one entry that lists its systems: the page stays one entry per distinct instance, not
+    /// one per system, which on a large workspace is the difference between kilobytes and
+    /// megabytes.
+    QString instanceGroups(const QList<SitePortUse> &uses) const
+    {
+        QStringList order;
+        QHash<QString, QList<const SitePortUse *>> groups;
+        for (const SitePortUse &use : uses) {
+            const QString key = SiteModel::qualifiedName(*use.part) + u'\n' + instanceBody(use);
+            if (!groups.contains(key))
+                order << key;
+            groups[key] << &use;
+        }
+        QString out;
+        for (const QString &key : order) {
+            const QList<const SitePortUse *> &group = groups.value(key);
+            QStringList stems;
+            QStringList links;
+            for (const SitePortUse *use : group) {
+                const SiteSystem *system = m_model.system(use->system);
+                stems << (system ? system->root.stem : use->system);
+                links << link(m_path, m_model.systemPage(use->system),
+                              system ? system->title() : use->system);
+            }
+            const QString where = group.size() <= 3
+                                      ? tr("in %1").arg(stems.join(QStringLiteral(", ")))
+                                      : tr("in %1 systems").arg(group.size());
+            out +=
+                QStringLiteral("<details><summary>%1 <span class=\"muted\">%2</span></summary>\n")
+                    .arg(code(SiteModel::qualifiedName(*group.first()->part)), escape(where));
+            out += QStringLiteral("<p>%1 %2</p>\n")
+                       .arg(escape(group.size() == 1 ? tr("System") : tr("Systems")),
+                            links.join(QStringLiteral(", ")));
+            out += key.section(u'\n', 1) + QStringLiteral("</details>\n");
+        }
+        return out;
     }
 
     /// A plugin runs inside the node instances that load it by their parameters.
@@ -246,9 +281,7 @@ private:
         if (uses.isEmpty())
             return out + QStringLiteral("<p>%1</p>\n</section>\n")
                              .arg(escape(tr("No system of the workspace launches this class.")));
-        for (const SitePortUse &use : uses)
-            out += instance(use);
-        return out + QStringLiteral("</section>\n");
+        return out + instanceGroups(uses) + QStringLiteral("</section>\n");
     }
 
     const SiteContext &m_context;

@@ -175,6 +175,23 @@ private slots:
                                              "<span class=\"tag off\">not included</span>")));
     }
 
+    void nodePagesNameEverySystemOfTheirInstances()
+    {
+        // Instances that show the same are one entry, which still links every system.
+        const SiteModel model(m_recovery, {});
+        const QMap<QString, QByteArray> files = byPath(m_files);
+        for (const AtomicNode &n : m_recovery.nodes.nodes) {
+            const QList<SitePortUse> uses = model.instancesOf(n.id);
+            const QString page = QString::fromUtf8(files.value(model.nodePage(n.id)));
+            QVERIFY(page.count(QLatin1String("<details>")) <= uses.size());
+            QCOMPARE(page.count(QLatin1String("<details>")) > 0, !uses.isEmpty());
+            for (const SitePortUse &use : uses)
+                QVERIFY2(page.contains(QLatin1String("href=\"../") + model.systemPage(use.system) +
+                                       u'"'),
+                         qPrintable(n.className));
+        }
+    }
+
     void sameModelSameBytes()
     {
         // Another run, into another folder at the same depth: every byte equal.
