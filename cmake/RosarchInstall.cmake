@@ -58,16 +58,18 @@ install(FILES ${PROJECT_SOURCE_DIR}/resources/icons/rosarch.svg
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR} RENAME copyright)
 
 # rosarch(1), written from `rosarch --help` and each command's --help at build time.
+# Compressed as Debian wants it (gzip -9n: no name or time stamp, so the same bytes each time).
 set(manpage ${CMAKE_CURRENT_BINARY_DIR}/packaging/rosarch.1)
-add_custom_command(OUTPUT ${manpage}
+add_custom_command(OUTPUT ${manpage} ${manpage}.gz
   COMMAND ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen ASAN_OPTIONS=detect_leaks=0
     ${CMAKE_COMMAND} -DROSARCH=$<TARGET_FILE:rosarch> -DOUT=${manpage}
     -P ${PROJECT_SOURCE_DIR}/packaging/manpage.cmake
+  COMMAND gzip -9nkf ${manpage}
   DEPENDS rosarch ${PROJECT_SOURCE_DIR}/packaging/manpage.cmake
   COMMENT "Writing rosarch(1) from rosarch --help"
   VERBATIM)
-add_custom_target(rosarch-manpage ALL DEPENDS ${manpage})
-install(FILES ${manpage} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+add_custom_target(rosarch-manpage ALL DEPENDS ${manpage}.gz)
+install(FILES ${manpage}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
 # What `cmake --install` and cpack take from the build tree, without the tests and tools.
 add_custom_target(rosarch-installable DEPENDS rosarch rosarch-stages rosarch-layout rosarch-manpage)

@@ -119,8 +119,12 @@ private Q_SLOTS:
         QVERIFY(desktop.contains("\nIcon=rosarch\n"));
         QVERIFY(QFileInfo::exists(installed(
             ROSARCH_INSTALL_SHAREDIR, QStringLiteral("icons/hicolor/scalable/apps/rosarch.svg"))));
-        const QByteArray man =
-            test::readFile(installed(ROSARCH_INSTALL_MANDIR, QStringLiteral("man1/rosarch.1")));
+        const Result gunzip =
+            run(QStringLiteral("gzip"),
+                {QStringLiteral("-dc"),
+                 installed(ROSARCH_INSTALL_MANDIR, QStringLiteral("man1/rosarch.1.gz"))});
+        QVERIFY2(gunzip.exitCode == 0, qPrintable(gunzip.err));
+        const QByteArray man = gunzip.out.toUtf8();
         QVERIFY(man.startsWith(".TH ROSARCH 1 \"\" \"rosarch " ROSARCH_VERSION "\""));
         QVERIFY(man.contains("\n.SS recover\n"));
         QVERIFY(man.contains("Usage: rosarch [options] recover workspace"));
