@@ -23,7 +23,7 @@ class Document;
 class LaunchTreePanel;
 class Traceability;
 
-/// Corrections where the element is (issue 12): builds the context-menu entries and keyboard
+/// Corrections where the element is: builds the context-menu entries and keyboard
 /// actions of the node list, the launch tree and the diagram, asks what a correction needs in
 /// a CorrectionDialog and hands it to the Document (undoable); keeps the inspector on the
 /// selected element and wires the Corrections panel (show, revert, re-target).

@@ -118,7 +118,7 @@ protected:
 
 private:
     void createPanels();
-    // Corrections (issue 12), in mainwindowcorrections.cpp.
+    // Corrections, in mainwindowcorrections.cpp.
     void createCorrectionDocks();
     void createCorrectionController();
     void placeCorrectionDocks();

@@ -1,4 +1,4 @@
-// The main window's part of corrections (issue 12): the Corrections and Inspector docks, the
+// The main window's part of corrections: the Corrections and Inspector docks, the
 // controller that makes corrections where the element is, and the Model menu.
 #include "correctioncontroller.h"
 #include "correctionmodel.h"

@@ -69,7 +69,7 @@ public:
     /// the project, so re-running the stages keeps it.
     void setNodeDescription(const QString &nodeId, const QString &description);
 
-    // Suggestions (issue 5). Decisions are kept per workspace (DecisionStore) and applied
+    // Suggestions. Decisions are kept per workspace (DecisionStore) and applied
     // again whenever the model or the suggestions are replaced.
 
     /// The last suggestion run, each suggestion with its current status.
@@ -140,7 +140,7 @@ public:
     /// now when that workspace is open (its undo history cleared), else when it opens.
     void setProjectFile(const QString &workspaceRoot, const QString &file);
 
-    // Corrections (issue 12, blueprint §5): a person's edits of the model, kept in the project
+    // Corrections (blueprint §5): a person's edits of the model, kept in the project
     // by stable key and applied by CorrectedModel; accepted() shows them.
 
     /// The corrections of the project, in the order they were made.
@@ -167,7 +167,7 @@ public:
     /// Who makes corrections here: $ROSARCH_AUTHOR, else the login name.
     static QString author();
 
-    // Findings (issue 15): diagnostics a person hid or accepted, kept in the project by key.
+    // Findings: diagnostics a person hid or accepted, kept in the project by key.
 
     /// The marks of the project, sorted by finding key.
     const QList<FindingMark> &findingMarks() const { return m_project.findings; }

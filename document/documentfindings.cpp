@@ -1,4 +1,4 @@
-// Document: findings a person hid or accepted (issue 15), kept in the project by stable key.
+// Document: findings a person hid or accepted, kept in the project by stable key.
 #include "document.h"
 #include "findingmarkcommand.h"
 

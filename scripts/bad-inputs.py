@@ -168,7 +168,7 @@ def binary_file(ws):
     write(f"{ws}/src/pkg/pkg/blob.py", bytes(range(256)) * 64)
 
 
-# Issue 43: sizes, fan-out, many files, special files, control bytes.
+# Sizes, fan-out, many files, special files, control bytes.
 def cmake_doubling(ws):
     cpp(ws, 'project(cpp)\nset(x "ab")\nforeach(i RANGE 40)\n  set(x "${x}${x}")\nendforeach()\n'
             'add_executable(worker src/worker.cpp)\n')

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks what must hold of every recovered model (issue 43) over the artifacts of runs:
+"""Checks what must hold of every recovered model over the artifacts of runs:
 
     scripts/check-invariants.py <artifact folder> [<artifact folder> ...]
 

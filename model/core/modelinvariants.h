@@ -6,7 +6,7 @@
 
 namespace rosarch {
 
-/// What must hold of every recovered model, whatever the input (issue 43): checked over every
+/// What must hold of every recovered model, whatever the input: checked over every
 /// fixture by the tests and over real repositories by scripts/check-invariants.py.
 /// - a node name is a ROS name or empty (unresolved), never a variable's name;
 /// - a port name that is not an expression is a ROS name (with `{plugin}` / `{node}`), never an

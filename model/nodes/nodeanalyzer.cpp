@@ -266,7 +266,7 @@ bool diagnosticLess(const Diagnostic &a, const Diagnostic &b)
 
 /// One port per kind, name, type and place: a procedural node that reaches a helper object twice
 /// (two objects of one class in main) would list the helper's ports once per object, the same
-/// ports (issue 43's invariant). The first is kept.
+/// ports (a model invariant). The first is kept.
 void removeRepeatedPorts(QList<Port> *ports)
 {
     QSet<QString> seen;

@@ -1,4 +1,4 @@
-// The GUI's side of issue 14: File › Compare Architecture with a git revision and with an
+// The GUI's comparisons: File › Compare Architecture with a git revision and with an
 // artifact folder (the Architecture changes dock, coloured by kind of change), and File ›
 // Export and Render with PlantUML (SVGs by the real PlantUML, in the background).
 #include "appsettings.h"

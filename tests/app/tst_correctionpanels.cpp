@@ -1,4 +1,4 @@
-// Corrections in the GUI's panels (issue 12): the inspector, the Corrections panel, re-running
+// Corrections in the GUI's panels: the inspector, the Corrections panel, re-running
 // the stages, orphans and re-targeting, and a project's corrections shown everywhere.
 #include "correctiongui.h"
 #include "stablekeys.h"

@@ -1,4 +1,4 @@
-// Corrections made through the GUI (issue 12): each kind through the controller's menu path
+// Corrections made through the GUI: each kind through the controller's menu path
 // with the dialog filled in as a person would, undone and redone, as the views show it.
 #include "correctiongui.h"
 

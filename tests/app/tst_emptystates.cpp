@@ -1,4 +1,4 @@
-// What the window's empty panels say (issue 40, item 8): before a run, after a run that found
+// What the window's empty panels say: before a run, after a run that found
 // no package, no node class or no launch file, and after a run stopped before any result.
 #include "atomicnodepanel.h"
 #include "diagrampanel.h"
@@ -25,7 +25,7 @@ class TestEmptyStates : public QObject
 private Q_SLOTS:
     void emptyPanelsSayWhatTheRunFound()
     {
-        // Issue 40, item 8: a folder without a package.xml says so in every panel, and the
+        // A folder without a package.xml says so in every panel, and the
         // diagram does not ask for a stage 3 that has run; a package without nodes or launch
         // files says that instead.
         QTemporaryDir dir;

@@ -1,4 +1,4 @@
-// The project file as a desktop user expects it (issue 12): Save / Save As / Open Project
+// The project file as a desktop user expects it: Save / Save As / Open Project
 // through the window, the modified indicator, recent projects, Save / Discard / Cancel before
 // changes are replaced, the autosave side file and the offer to recover it after a crash, and
 // a broken or newer project file explained and kept.

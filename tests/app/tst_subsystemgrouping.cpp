@@ -1,4 +1,4 @@
-// Accepted subsystem groupings (issue 5) as nested composites: the pure model step on
+// Accepted subsystem groupings as nested composites: the pure model step on
 // tests/data/compose_system, the CCD writer's <<Subsystem>> blocks read back and scored
 // against the ungrouped expected CCDs, the diagram's subsystem clusters, and the path from an
 // accepted suggestion in the Document to the drawn and exported architecture (with undo).

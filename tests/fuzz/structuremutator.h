@@ -1,6 +1,6 @@
 #pragma once
 
-// A structure-aware mutator for the launch, build-file and workspace targets (issue 43): the
+// A structure-aware mutator for the launch, build-file and workspace targets: the
 // byte-level mutations never found values doubled in loops, includes multiplying includes or
 // deep nesting, which take whole spans and references. Half of the mutations are these:
 //  - span duplication: a span of the input inserted again right after itself;

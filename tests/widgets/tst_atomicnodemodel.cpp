@@ -235,7 +235,7 @@ private Q_SLOTS:
 
     void controlCharactersAreShownAsEscapes()
     {
-        // Issue 43: a class or port named with a terminal sequence or a newline shows escaped,
+        // A class or port named with a terminal sequence or a newline shows escaped,
         // one line per row.
         AtomicNodeList list = sampleList();
         list.nodes[0].className = QStringLiteral("Talk\x1b[2Jer\nTwo");

@@ -1,4 +1,4 @@
-// The Log's findings table (issue 15): filter, sort, group and count; hide and accept go to the
+// The Log's findings table: filter, sort, group and count; hide and accept go to the
 // project by key, undo, survive a re-run and a save and reopen; the panel's filter bar and
 // next / previous follow what is shown.
 #include "diagnosticdetail.h"

@@ -1,4 +1,4 @@
-// No control byte from a workspace reaches a terminal or an artifact (issue 43), and a kill at
+// No control byte from a workspace reaches a terminal or an artifact, and a kill at
 // any moment of a run leaves the output folder with the old result or the new, never a mix.
 // Runs the real rosarch executable; the hostile workspaces are generated here.
 #include "testsupport.h"

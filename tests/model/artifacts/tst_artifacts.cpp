@@ -199,7 +199,7 @@ private Q_SLOTS:
 
     void theFolderIsSwappedWholeAndUnchangedFilesStay()
     {
-        // Issue 43: the artifacts go into a fresh folder beside the output folder, swapped in
+        // The artifacts go into a fresh folder beside the output folder, swapped in
         // with one rename; a file equal to its previous version is linked, not written again;
         // what is not an artifact stays; staging folders of dead runs are removed.
         QTemporaryDir parent;
@@ -281,8 +281,8 @@ private Q_SLOTS:
 
     void anUnchangedResultIsNotWrittenAgain()
     {
-        // Issue 43: a warm run wrote 20 MB of unchanged artifacts again. A stamp of what they
-        // were made from, with each file's size and time, lets the next run skip the writing.
+        // Unchanged artifacts are not written again: a stamp of what they were made from,
+        // with each file's size and time, lets the next run skip the writing.
         QTemporaryDir dir;
         auto inode = [&](const QString &relative) {
             struct stat st = {};

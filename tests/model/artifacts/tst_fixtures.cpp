@@ -122,7 +122,7 @@ private Q_SLOTS:
 
     void modelInvariantsHold_data() { recovery_data(); }
 
-    // Issue 43: names are names, ports are listed once, whatever the fixture.
+    // Names are names, ports are listed once, whatever the fixture.
     void modelInvariantsHold()
     {
         QFETCH(QString, caseDir);

@@ -1,5 +1,5 @@
 // Text from a workspace reaches terminals, logs and reports with its control characters made
-// visible (issue 43): every C0 and C1 control, DEL and the Unicode line separators.
+// visible: every C0 and C1 control, DEL and the Unicode line separators.
 #include "visibletext.h"
 
 #include <QtTest>

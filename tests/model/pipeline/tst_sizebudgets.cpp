@@ -1,4 +1,4 @@
-// Budgets on sizes, not only counts (issue 43): a value that evaluation builds stops at the
+// Budgets on sizes, not only counts: a value that evaluation builds stops at the
 // size budget with an evaluation-limit diagnostic at its file and line; the rest of the
 // workspace is recovered. Each workspace is generated here, next to a healthy node.
 #include "editdistance.h"

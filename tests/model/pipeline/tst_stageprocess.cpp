@@ -251,8 +251,8 @@ private Q_SLOTS:
 
     void aWorkerThatDiesAfterStageOneKeepsStageOne()
     {
-        // Issue 43: a worker dying outside any one file wrote no artifacts at all. What the
-        // stages before the stop finished is kept, with an error that says the rest is missing.
+        // A worker dying outside any one file: what the stages before the stop finished
+        // is kept, with an error that says the rest is missing.
         const Fault fault("ROSARCH_STAGES_TEST_CRASH_AFTER_STAGE", "1");
         const StageProcess::Result r =
             StageProcess::recover(test::dataDir(QStringLiteral("py_basic")), {}, {}, {});

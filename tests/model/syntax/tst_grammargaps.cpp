@@ -499,7 +499,7 @@ private Q_SLOTS:
     }
     void macrosTheGrammarCannotReadWhereTheyStand_data()
     {
-        // Issue 43: each class of syntax error seen in moveit2, rviz, ros2_controllers,
+        // Each class of syntax error seen in moveit2, rviz, ros2_controllers,
         // geometry2 and rosbag2, in our own words. Each fails to parse as written.
         QTest::addColumn<QByteArray>("source");
         QTest::addColumn<QByteArray>("expected");

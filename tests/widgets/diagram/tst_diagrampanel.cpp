@@ -151,7 +151,7 @@ void TestDiagramPanel::searchFindsParts()
     const QString second = dynamic_cast<DiagramItem *>(selected.first())->key();
     QVERIFY(matched.contains(second));
     QVERIFY(second != first);
-    QCOMPARE(panel.matchText(), QStringLiteral("2 of 2")); // issue 40: a count, and where
+    QCOMPARE(panel.matchText(), QStringLiteral("2 of 2")); // a count, and where
     saveScreenshot(panel, QStringLiteral("diagram_search.png"));
     QTest::keyClick(panel.searchField(), Qt::Key_Return); // wraps around
     QCOMPARE(dynamic_cast<DiagramItem *>(panel.scene()->selectedItems().first())->key(), first);
