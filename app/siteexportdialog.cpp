@@ -65,7 +65,10 @@ SiteExportDialog::SiteExportDialog(const QString &workspace, QWidget *parent)
     m_commit->setText(stored.value(kCommit).toString());
 
     auto *form = new QFormLayout;
-    form->addRow(tr("&Folder:"), folderRow);
+    // A row of a layout takes no buddy by itself: the label names the line edit for its key.
+    auto *folderLabel = new QLabel(tr("&Folder:"), this);
+    folderLabel->setBuddy(m_folder);
+    form->addRow(folderLabel, folderRow);
     form->addRow(tr("&Title:"), m_title);
     form->addRow(tr("&Source URL:"), m_sourceUrl);
     form->addRow(tr("&Commit:"), m_commit);
