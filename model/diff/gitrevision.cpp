@@ -6,44 +6,42 @@
 
 namespace rosarch {
 
-namespace {
-
-/// Runs git in `folder`; its standard output in `output`, or false with `error` set.
-bool git(const QString &folder, const QStringList &args, QByteArray *output, QString *error)
+bool GitRevision::run(const QString &folder, const QStringList &arguments, QByteArray *output,
+                      QString *error, int timeoutMs)
 {
     QProcess p;
     p.setWorkingDirectory(folder);
-    p.start(QStringLiteral("git"), args);
-    if (!p.waitForStarted(10000)) {
-        *error = QStringLiteral("git could not be started: %1").arg(p.errorString());
+    p.start(QStringLiteral("git"), arguments);
+    const auto fail = [&](const QString &message) {
+        if (error)
+            *error = message;
         return false;
-    }
+    };
+    if (!p.waitForStarted(10000))
+        return fail(QStringLiteral("git could not be started: %1").arg(p.errorString()));
     p.closeWriteChannel();
-    if (!p.waitForFinished(300000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
-        *error = QStringLiteral("git %1 failed: %2")
-                     .arg(args.join(QLatin1Char(' ')),
-                          QString::fromLocal8Bit(p.readAllStandardError()).trimmed());
-        return false;
-    }
+    if (!p.waitForFinished(timeoutMs) || p.exitStatus() != QProcess::NormalExit ||
+        p.exitCode() != 0)
+        return fail(QStringLiteral("git %1 failed: %2")
+                        .arg(arguments.join(QLatin1Char(' ')),
+                             QString::fromLocal8Bit(p.readAllStandardError()).trimmed()));
     if (output)
         *output = p.readAllStandardOutput();
     return true;
 }
 
-} // namespace
-
 bool GitRevision::checkout(const QString &workspace, const QString &revision, const QString &into,
                            QString *error)
 {
     QByteArray prefix, top;
-    if (!git(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-prefix")}, &prefix,
+    if (!run(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-prefix")}, &prefix,
              error) ||
-        !git(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-toplevel")}, &top,
+        !run(workspace, {QStringLiteral("rev-parse"), QStringLiteral("--show-toplevel")}, &top,
              error))
         return false;
     // The workspace's own tree at the revision ("rev:path/in/repo/"), unpacked as the folder.
     const QString tar = QDir(into).filePath(QStringLiteral(".rosarch-tree.tar"));
-    if (!git(QString::fromLocal8Bit(top.trimmed()),
+    if (!run(QString::fromLocal8Bit(top.trimmed()),
              {QStringLiteral("archive"), QStringLiteral("--format=tar"), QStringLiteral("-o"), tar,
               revision + QLatin1Char(':') + QString::fromUtf8(prefix.trimmed())},
              nullptr, error))

@@ -1,7 +1,8 @@
 #include "sitesource.h"
 
+#include "gitrevision.h"
+
 #include <QDir>
-#include <QProcess>
 #include <QUrl>
 
 namespace rosarch {
@@ -19,12 +20,9 @@ QString encodedPath(const QString &path)
 
 QString git(const QString &folder, const QStringList &arguments, bool *ok)
 {
-    QProcess process;
-    process.setWorkingDirectory(folder);
-    process.start(QStringLiteral("git"), arguments);
-    *ok = process.waitForStarted(5000) && process.waitForFinished(10000) &&
-          process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
-    return *ok ? QString::fromUtf8(process.readAllStandardOutput()).trimmed() : QString();
+    QByteArray output;
+    *ok = GitRevision::run(folder, arguments, &output, nullptr, 10000);
+    return *ok ? QString::fromUtf8(output).trimmed() : QString();
 }
 
 } // namespace
