@@ -186,6 +186,36 @@ private Q_SLOTS:
             QVERIFY2(it.value() == theirs.value(it.key()), qPrintable(it.key()));
     }
 
+    // The window, started without a workspace and without settings, opens the installed
+    // example (and records it as the last workspace, which is what can be seen from outside).
+    void windowOpensTheInstalledExample()
+    {
+        const QString home = m_dir.filePath(QStringLiteral("home"));
+        QProcessEnvironment env = installedEnvironment();
+        for (const char *name : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"})
+            env.insert(QString::fromLatin1(name),
+                       QDir(home).filePath(QString::fromLatin1(name).toLower()));
+        QProcess window;
+        window.setProcessEnvironment(env);
+        window.start(installed(ROSARCH_INSTALL_BINDIR, QStringLiteral("rosarch")), {});
+        QVERIFY(window.waitForStarted(10000));
+        const QByteArray example =
+            installed(ROSARCH_INSTALL_DATADIR, QStringLiteral("example_ws")).toUtf8();
+        const auto recorded = [&] {
+            QDirIterator it(home, QDir::Files, QDirIterator::Subdirectories);
+            while (it.hasNext())
+                if (test::readFile(it.next()).contains(example))
+                    return true;
+            return false;
+        };
+        const bool opened = QTest::qWaitFor(
+            [&] { return recorded() || window.state() == QProcess::NotRunning; }, 120000);
+        const bool crashed = window.state() == QProcess::NotRunning;
+        window.kill();
+        window.waitForFinished();
+        QVERIFY2(opened && !crashed && recorded(), window.readAllStandardError().constData());
+    }
+
     // The installed layout helper runs (it loads Graphviz's layout plugin through its RPATH).
     void laysOutWithTheInstalledHelper()
     {
