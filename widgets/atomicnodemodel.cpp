@@ -126,7 +126,8 @@ void AtomicNodeModel::onCorrectionsChanged()
     AtomicNodeList next = merged();
     bool sameShape = next.nodes.size() == m_nodes.nodes.size();
     for (int i = 0; sameShape && i < next.nodes.size(); ++i)
-        sameShape = next.nodes[i].ports.size() == m_nodes.nodes[i].ports.size();
+        sameShape = next.nodes[i].ports.size() == m_nodes.nodes[i].ports.size() &&
+                    next.nodes[i].parameters.size() == m_nodes.nodes[i].parameters.size();
     if (!sameShape) {
         // an added port appeared or went: the rows change; the panel finds its current row
         // again by stable key (FilteredTreePanel)

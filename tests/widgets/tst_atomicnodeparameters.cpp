@@ -348,6 +348,8 @@ private Q_SLOTS:
         Document doc;
         doc.setAtomicNodes(sampleList());
         AtomicNodeModel model(&doc);
+        QAbstractItemModelTester tester(&model,
+                                        QAbstractItemModelTester::FailureReportingMode::QtTest);
         QVERIFY2(tipOf(model, QStringLiteral("arc_1"))
                      .contains(QStringLiteral("No description in the code")),
                  qPrintable(tipOf(model, QStringLiteral("arc_1"))));
@@ -388,6 +390,8 @@ private Q_SLOTS:
                  qPrintable(tipOf(model, QStringLiteral("arc_1"))));
         QCOMPARE(NodeDescription::of(doc, QStringLiteral("arc_1")).source,
                  NodeDescription::Source::Correction);
+        // the correction leaves the declared parameters where they were
+        QCOMPARE(model.rowCount(model.parametersIndex(QStringLiteral("arc_1"))), 4);
         doc.undoStack()->undo();
         QVERIFY2(tipOf(model, QStringLiteral("arc_1"))
                      .contains(QStringLiteral("(from an accepted suggestion)")),
