@@ -48,7 +48,8 @@ endif()
 # The example the GUI opens when it has no workspace yet. Everything else the program reads
 # (prompts, schemas, interface models, site assets, icons, translations) is compiled in as
 # Qt resources.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/example_ws DESTINATION ${ROSARCH_INSTALL_DATADIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/resources/example_ws DESTINATION ${ROSARCH_INSTALL_DATADIR}
+  PATTERN .clang-format EXCLUDE)
 
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/rosarch.desktop
   DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
