@@ -39,7 +39,7 @@ class AnalysisCache
 {
 public:
     /// Bump when the serialised form of any cached result changes.
-    static constexpr int kFormatVersion = 22;
+    static constexpr int kFormatVersion = 23;
     static constexpr qint64 kDefaultMaxBytes = 256LL * 1024 * 1024;
     /// More packs than this in the folder are merged into one at flush().
     static constexpr int kMaxPacks = 8;

@@ -54,24 +54,54 @@ const AtomicNode *ParameterView::pluginClass(const QString &written) const
     return m_plugins.value(name);
 }
 
+QList<QPair<QString, const AtomicNode *>>
+ParameterView::loadedPlugins(const NodeInstance &n, QStringList *unknownPlugins) const
+{
+    QList<QPair<QString, const AtomicNode *>> out;
+    for (const ParameterSetting &plugin : n.plugins) {
+        if (const AtomicNode *cls = pluginClass(plugin.value))
+            out.append({plugin.name, cls});
+        else if (unknownPlugins)
+            unknownPlugins->append(plugin.name);
+    }
+    // A plugin that loads plugins of its own by class name from a list of its parameters
+    // (navigation2 MPPI's `FollowPath.critics: [GoalCritic, ...]`, each critic declaring
+    // under `FollowPath.GoalCritic`): an item that names exactly one plugin class of the
+    // loading plugin's package is that plugin, loaded under the item's name.
+    const qsizetype loaders = out.size();
+    for (qsizetype i = 0; i < loaders; ++i) {
+        const QString prefix = out.at(i).first + QLatin1Char('.');
+        const QString package = out.at(i).second->packageName;
+        for (const ParameterSetting &s : n.effectiveParameters) {
+            if (!s.name.startsWith(prefix) || s.name.indexOf(u'.', prefix.size()) >= 0)
+                continue;
+            for (const QString &item : parameterListItems(s.value)) {
+                const AtomicNode *found = nullptr;
+                int count = 0;
+                for (const AtomicNode *p : m_plugins)
+                    if (p->packageName == package && p->className == item) {
+                        found = p;
+                        ++count;
+                    }
+                if (count == 1 && found != out.at(i).second)
+                    out.append({prefix + item, found});
+            }
+        }
+    }
+    return out;
+}
+
 QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
                                                           QStringList *unknownPlugins) const
 {
     QList<ParameterDeclaration> out;
     if (const AtomicNode *cls = m_nodes.node(n.classId))
         out = cls->parameters;
-    for (const ParameterSetting &plugin : n.plugins) {
-        const AtomicNode *cls = pluginClass(plugin.value);
-        if (!cls) {
-            if (unknownPlugins)
-                unknownPlugins->append(plugin.name);
-            continue;
-        }
+    for (const auto &[name, cls] : loadedPlugins(n, unknownPlugins))
         for (ParameterDeclaration d : cls->parameters) {
-            d.name = parameterNameFor(d.name, plugin.name);
+            d.name = parameterNameFor(d.name, name);
             out.append(d);
         }
-    }
     // A name with a part that another parameter's list value decides
     // (generate_parameter_library's `gains.{joints}.p`) stands for one name per item.
     QList<ParameterDeclaration> expanded;
@@ -132,12 +162,11 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
     if (cls)
         for (const ParameterDeclaration &d : cls->parameters)
             declare(d, QString());
-    for (const ParameterSetting &plugin : n.plugins)
-        if (const AtomicNode *pc = pluginClass(plugin.value))
-            for (ParameterDeclaration d : pc->parameters) {
-                d.name = parameterNameFor(d.name, plugin.name);
-                declare(d, plugin.name);
-            }
+    for (const auto &[name, pc] : loadedPlugins(n))
+        for (ParameterDeclaration d : pc->parameters) {
+            d.name = parameterNameFor(d.name, name);
+            declare(d, name);
+        }
     for (const ParameterSetting &s : n.effectiveParameters) {
         if (s.source == QLatin1String("default"))
             continue; // the class's own default, already there

@@ -5,6 +5,7 @@
 
 #include <QHash>
 #include <QList>
+#include <QPair>
 #include <QStringList>
 
 namespace rosarch {
@@ -51,6 +52,11 @@ public:
     /// A declaration as a row without a value set (its default, if any, in effect).
     static InstanceParameter declared(const ParameterDeclaration &d, const QString &plugin = {});
 
+    /// The plugins `n` loads, by the name each is loaded under, with their classes: those its
+    /// `<name>.plugin` values load, and those a loaded plugin loads by class name from a list
+    /// parameter of its own. `unknownPlugins` as for declarationsOf.
+    QList<QPair<QString, const AtomicNode *>>
+    loadedPlugins(const NodeInstance &n, QStringList *unknownPlugins = nullptr) const;
     /// The plugin class loaded under a `<name>.plugin` value, or null.
     const AtomicNode *pluginClass(const QString &written) const;
     /// The helper code's declaration (AtomicNodeList::helperParameters) that names `key`, or

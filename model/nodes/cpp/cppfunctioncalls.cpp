@@ -55,6 +55,20 @@ void CppFunctionExtractor::onParameterCall(TSNode call, const CallShape &shape,
          name == QLatin1String("automatically_declare_parameters_from_overrides")) &&
         !args.empty() && m_tree.text(args.front()) == QLatin1String("true"))
         m_function.acceptsUndeclared = true;
+    // a getter a parameters handler handed out, called through a local
+    if (ts::isNull(shape.receiver) && shape.scope.isEmpty() && args.size() >= 3) {
+        const auto local = m_locals.constFind(name);
+        if (local != m_locals.cend() && !ts::isNull(local->value)) {
+            CppParameterDeclaration d =
+                CppParameterReader(m_tree, m_values).readGetterCall(call, args, local->value);
+            if (!d.via.isEmpty()) {
+                CppValue tested;
+                m_portCalls.guardOf(call, &d.guard, &tested);
+                m_function.parameterDeclarations.append(d);
+                return;
+            }
+        }
+    }
     // Both forms name a parameter: an ASCII name without it is neither (most calls), with no
     // lower-case copy made. Other names take the long way, where case mapping is Unicode's.
     if (isAscii(name) && !name.contains(QLatin1String("parameter"), Qt::CaseInsensitive))

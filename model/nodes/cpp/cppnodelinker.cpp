@@ -64,7 +64,8 @@ CppNodeLinker::CppNodeLinker(const QList<CppFileFacts> &files)
     : m_files(files), m_index(files), m_shared(files, m_index),
       m_names(m_index, m_facts, m_interfaceAliases, m_shared),
       m_helpers(m_index, m_names, m_freeFunctionsByName, m_ownedNodes),
-      m_constructions(m_index, m_names, m_helpers), m_parameters(m_index, m_names, m_helpers),
+      m_constructions(m_index, m_names, m_helpers),
+      m_parameters(files, m_index, m_names, m_helpers),
       m_nodeNames(m_index, m_names, m_constructions),
       m_entryPoints(m_index, m_freeFunctionsByName, m_constructions,
                     [this](int cls) { return m_nodeNames.of(cls); })

@@ -12,13 +12,18 @@ using namespace rosarch::cppsyntax;
 
 namespace rosarch {
 
-CppParameterLinker::CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names,
-                                       const CppHelperPorts &helpers)
+CppParameterLinker::CppParameterLinker(const QList<CppFileFacts> &files, const CppClassIndex &index,
+                                       const CppNameResolver &names, const CppHelperPorts &helpers)
     : m_index(index), m_names(names), m_helpers(helpers)
 {
     for (const auto &ref : m_index.freeFunctions())
         if (ref.function->name != QLatin1String("main"))
             m_freeFunctions[ref.function->name].append(ref);
+    for (const CppFileFacts &file : files)
+        for (const CppPluginExport &e : file.pluginExports) {
+            m_pluginClasses.insert(lastSegment(e.className));
+            m_pluginClasses.insert(lastSegment(e.baseClass));
+        }
 }
 
 QList<ParameterDeclaration>
@@ -27,7 +32,7 @@ CppParameterLinker::declarations(int cls, const std::map<int, CppSubstitution> *
     QList<ParameterDeclaration> out;
     QStringList undeclared;
     QList<int> visited;
-    collect(cls, cls, substitutions, 0, &visited, &out, &undeclared);
+    collect(cls, cls, substitutions, substitutions ? cls : -1, 0, &visited, &out, &undeclared);
     // one entry per name: the first declaration is the one that takes effect
     QList<ParameterDeclaration> unique;
     QSet<QString> seen;
@@ -45,15 +50,18 @@ CppParameterLinker::declarations(int cls, const std::map<int, CppSubstitution> *
 }
 
 // The declarations of `cls`'s lineage, and of the project helper classes its code constructs
-// (a ParameterHandler handed the node declares the node's parameters).
+// (a ParameterHandler handed the node declares the node's parameters) or holds as members (an
+// optimizer a controller plugin configures with its name). `self` is the object the code runs
+// in (-1: none known); a plugin's, and its helpers', hold the name it is loaded under.
 void CppParameterLinker::collect(int cls, int node,
-                                 const std::map<int, CppSubstitution> *substitutions, int depth,
-                                 QList<int> *visited, QList<ParameterDeclaration> *out,
+                                 const std::map<int, CppSubstitution> *substitutions, int self,
+                                 int depth, QList<int> *visited, QList<ParameterDeclaration> *out,
                                  QStringList *undeclared) const
 {
     if (visited->contains(cls))
         return;
     visited->append(cls);
+    QList<int> helpers; // member helpers, followed after the code that configures them
     for (int c : m_index.lineage(cls)) {
         const CppClassIndex::ClassInfo &info = m_index.at(c);
         const CppSubstitution *subst = nullptr;
@@ -62,7 +70,7 @@ void CppParameterLinker::collect(int cls, int node,
             subst = it == substitutions->end() ? nullptr : &it->second;
         }
         for (const auto &ref : info.functions) {
-            const CppLinkContext ctx{c, ref.function, ref.file, subst, substitutions ? node : -1};
+            const CppLinkContext ctx{c, ref.function, ref.file, subst, self};
             addDeclarations(*ref.function, ctx, c != node, out, undeclared);
             addFreeCalls(*ref.function, ctx, node, depth, out, undeclared);
             const CppLinkContext here{c, ref.function, ref.file, nullptr};
@@ -74,13 +82,63 @@ void CppParameterLinker::collect(int cls, int node,
                 if (t < 0 || m_index.at(t).node)
                     continue;
                 // the helpers' bound, said the way their ports say it (helper-depth)
-                if (depth + 1 > CppHelperPorts::kMaxHelperDepth)
+                if (depth + 1 > CppHelperPorts::kMaxHelperDepth) {
                     m_helpers.boundHit(inst.evidence);
-                else
-                    collect(t, node, nullptr, depth + 1, visited, out, undeclared);
+                    continue;
+                }
+                if (self < 0) {
+                    collect(t, node, nullptr, -1, depth + 1, visited, out, undeclared);
+                    continue;
+                }
+                // a plugin's helper is handed the plugin's name among its arguments
+                const std::map<int, CppSubstitution> constructed{
+                    {t, CppSubstitution{inst.arguments, ctx, {}, nullptr}}};
+                collect(t, node, &constructed, t, depth + 1, visited, out, undeclared);
             }
         }
+        if (info.cls)
+            for (auto it = info.cls->memberTypes.cbegin(); it != info.cls->memberTypes.cend();
+                 ++it) {
+                const int t = memberHelper(it.value(), c);
+                if (t >= 0 && !helpers.contains(t))
+                    helpers.append(t);
+            }
     }
+    for (int t : std::as_const(helpers)) {
+        if (depth + 1 > CppHelperPorts::kMaxHelperDepth)
+            continue;
+        collect(t, node, nullptr, self >= 0 ? t : -1, depth + 1, visited, out, undeclared);
+    }
+}
+
+// A member's class when it is a workspace class that is no node and declares parameters on a
+// node it is handed (`Optimizer optimizer_;`, `std::unique_ptr<CriticManager> manager_;`).
+int CppParameterLinker::memberHelper(const QString &type, int cls) const
+{
+    static const QRegularExpression pointer(
+        QStringLiteral("^(?:std::)?(?:unique_ptr|shared_ptr)<(.+)>$"));
+    QString written = type.simplified().remove(u' ');
+    written.remove(QStringLiteral("const"));
+    written.remove(u'*');
+    written.remove(u'&');
+    if (const QRegularExpressionMatch m = pointer.match(written); m.hasMatch())
+        written = m.captured(1);
+    for (const char *alias : {"::SharedPtr", "::UniquePtr", "::Ptr"})
+        if (written.endsWith(QLatin1String(alias)))
+            written.chop(int(qstrlen(alias)));
+    if (written.isEmpty() || written.contains(u'<') || written.startsWith(QLatin1String("std::")))
+        return -1;
+    const CppClassIndex::ClassInfo &info = m_index.at(cls);
+    const CppLinkContext here{cls, nullptr, info.file, nullptr};
+    const int t = m_index.lookup(written, m_names.scopeOf(here), info.file);
+    // a plugin, or its interface, is loaded by a name of its own and declares under it
+    if (t < 0 || t == cls || m_index.at(t).node ||
+        m_pluginClasses.contains(m_index.at(t).cls ? m_index.at(t).cls->name : QString()))
+        return -1;
+    for (const auto &ref : m_index.at(t).functions)
+        if (!ref.function->parameterDeclarations.isEmpty())
+            return t;
+    return -1;
 }
 
 QList<ParameterDeclaration> CppParameterLinker::helperDeclarations() const
@@ -135,6 +193,12 @@ void CppParameterLinker::addDeclarations(const CppFunction &fn, const CppLinkCon
                 continue;
         }
         const QString name = nameOf(d, ctx);
+        // helper code that declares the name its callers give it (a parameters handler's
+        // `getParam(setting, name, default)`): the callers' declarations are read where they are
+        if (inherited && d.parameter.isEmpty() &&
+            d.name.kind == CppValue::Kind::FunctionParameter && parameterNameIsOpen(name) &&
+            ctx.cls >= 0 && !m_index.at(ctx.cls).node)
+            continue;
         if (d.via == QLatin1String("undeclare")) {
             undeclared->append(name);
             continue;
@@ -223,9 +287,14 @@ QString CppParameterLinker::nameOf(const CppParameterDeclaration &d,
 QString CppParameterLinker::defaultOf(const CppParameterDeclaration &d,
                                       const CppLinkContext &ctx) const
 {
+    // a number as C++ writes it (`0.5f`, `10u`) reads as the number ROS 2 takes
+    static const QRegularExpression suffixed(
+        QStringLiteral("^([-+]?(?:[0-9]+\\.?[0-9]*|\\.[0-9]+)(?:[eE][-+]?[0-9]+)?)[fFlLuU]+$"));
     const CppValue &value = d.defaultValue;
-    if (value.kind == CppValue::Kind::Literal || value.kind == CppValue::Kind::Local)
-        return value.literal;
+    if (value.kind == CppValue::Kind::Literal || value.kind == CppValue::Kind::Local) {
+        const QRegularExpressionMatch n = suffixed.match(value.literal);
+        return n.hasMatch() ? n.captured(1) : value.literal;
+    }
     if (value.kind == CppValue::Kind::Member || value.kind == CppValue::Kind::Constant) {
         const CppResolvedName r = m_names.resolve(value, ctx);
         if (r.origin != NameOrigin::Expression)
@@ -246,6 +315,8 @@ QString CppParameterLinker::defaultOf(const CppParameterDeclaration &d,
         }
         return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
     }
+    if (const QRegularExpressionMatch n = suffixed.match(d.defaultText); n.hasMatch())
+        return n.captured(1);
     return d.defaultText;
 }
 

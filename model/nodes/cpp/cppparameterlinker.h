@@ -19,10 +19,10 @@ namespace rosarch {
 class CppParameterLinker
 {
 public:
-    /// Helper classes and free functions are followed to the helpers' depth bound; where it is
-    /// hit, `helpers` records it for the helper-depth note.
-    CppParameterLinker(const CppClassIndex &index, const CppNameResolver &names,
-                       const CppHelperPorts &helpers);
+    /// `files` are those `index` was built from. Helper classes and free functions are followed to
+    /// the helpers' depth bound; where it is hit, `helpers` records it for the helper-depth note.
+    CppParameterLinker(const QList<CppFileFacts> &files, const CppClassIndex &index,
+                       const CppNameResolver &names, const CppHelperPorts &helpers);
 
     /// The declarations of class `cls` and its bases; a plugin's are resolved with the
     /// substitutions of its lineage (its name is `{plugin}`), given per class.
@@ -44,9 +44,10 @@ private:
                          QList<ParameterDeclaration> *out, QStringList *undeclared) const;
     void addFreeCalls(const CppFunction &fn, const CppLinkContext &ctx, int node, int depth,
                       QList<ParameterDeclaration> *out, QStringList *undeclared) const;
-    void collect(int cls, int node, const std::map<int, CppSubstitution> *substitutions, int depth,
-                 QList<int> *visited, QList<ParameterDeclaration> *out,
+    void collect(int cls, int node, const std::map<int, CppSubstitution> *substitutions, int self,
+                 int depth, QList<int> *visited, QList<ParameterDeclaration> *out,
                  QStringList *undeclared) const;
+    int memberHelper(const QString &type, int cls) const;
     QString nameOf(const CppParameterDeclaration &d, const CppLinkContext &ctx) const;
     QString textOf(const CppValue &value, const CppLinkContext &ctx) const;
     QString defaultOf(const CppParameterDeclaration &d, const CppLinkContext &ctx) const;
@@ -55,6 +56,7 @@ private:
     const CppNameResolver &m_names;
     const CppHelperPorts &m_helpers;
     QHash<QString, QList<CppClassIndex::FunctionRef>> m_freeFunctions; ///< by name
+    QSet<QString> m_pluginClasses; ///< exported plugin classes and their interfaces, unqualified
 };
 
 } // namespace rosarch

@@ -118,6 +118,49 @@ CppParameterDeclaration CppParameterReader::read(TSNode call, const CallShape &s
     return decl;
 }
 
+CppParameterDeclaration CppParameterReader::readGetterCall(TSNode call,
+                                                           const std::vector<TSNode> &args,
+                                                           TSNode getter) const
+{
+    CppParameterDeclaration decl;
+    if (args.size() < 3 || ts::isNull(getter) || !ts::is(getter, "call_expression"))
+        return decl;
+    const CallShape made = callShape(m_tree, ts::field(getter, fields().function));
+    if (!isParameterGetterFactory(made.name))
+        return decl;
+    const std::vector<TSNode> madeArgs = arguments(ts::field(getter, fields().arguments));
+    QString name;
+    if (madeArgs.size() != 1 || !stringLiteral(m_tree, args[1], &name) || name.isEmpty())
+        return decl;
+    // the handler joins the namespace and the name with a dot, and takes the name alone for
+    // an empty namespace
+    const CppValue ns = m_values.evaluate(madeArgs.front());
+    if (ns.kind == CppValue::Kind::Literal || ns.kind == CppValue::Kind::Local) {
+        decl.parameter = ns.literal.isEmpty() ? name : ns.literal + QLatin1Char('.') + name;
+    } else if (ns.kind == CppValue::Kind::Member || ns.kind == CppValue::Kind::FunctionParameter ||
+               ns.kind == CppValue::Kind::Concatenation || ns.kind == CppValue::Kind::Constant) {
+        CppValue rest;
+        rest.kind = CppValue::Kind::Literal;
+        rest.literal = QLatin1Char('.') + name;
+        rest.text = QStringLiteral("\".%1\"").arg(name);
+        decl.name.kind = CppValue::Kind::Concatenation;
+        decl.name.text = ns.text + QStringLiteral(" + ") + rest.text;
+        decl.name.parts = {ns, rest};
+    } else {
+        return decl;
+    }
+    decl.via = made.name;
+    decl.evidence = m_tree.evidence(call);
+    bool typeOnly = false;
+    decl.type = typeOfValue(args[2], &typeOnly);
+    if (!typeOnly) {
+        decl.defaultValue = m_values.evaluate(args[2]);
+        decl.hasDefault = true;
+        decl.defaultText = simplified(m_tree, args[2]);
+    }
+    return decl;
+}
+
 QList<CppParameterDeclaration> CppParameterReader::readMany(TSNode call, const CallShape &shape,
                                                             const std::vector<TSNode> &args) const
 {

@@ -30,6 +30,13 @@ public:
     QList<CppParameterDeclaration> readMany(TSNode call, const cppsyntax::CallShape &shape,
                                             const std::vector<TSNode> &args) const;
 
+    /// The declaration of a call through a getter a parameters handler hands out:
+    /// `auto getParam = handler->getParamGetter(ns); getParam(member, "name", default);`
+    /// declares `ns.name` (`name` when `ns` is empty) with the default's type. `getter` is the
+    /// local's value; an empty `via` when it is no such getter.
+    CppParameterDeclaration readGetterCall(TSNode call, const std::vector<TSNode> &args,
+                                           TSNode getter) const;
+
     /// The ROS parameter type of a default value as written ("" when open).
     QString typeOfValue(TSNode value, bool *isTypeOnly = nullptr, int depth = 0) const;
 
