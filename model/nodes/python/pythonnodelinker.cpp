@@ -1,6 +1,7 @@
 #include "pythonnodelinker.h"
 
 #include "pythonbinding.h"
+#include "pythonentrypoints.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -444,71 +445,6 @@ void PythonNodeLinker::nameProcedurals()
     }
 }
 
-QStringList PythonNodeLinker::startedNodes(int function, int depth, QList<int> *visited) const
-{
-    QStringList out;
-    auto add = [&](const QString &name) {
-        if (!out.contains(name))
-            out.append(name);
-    };
-    visited->append(function);
-    const PythonFunctionFacts &facts = m_index.functionFacts(function);
-    auto addProcedurals = [&](const PythonScopeFacts *scope) {
-        for (const Procedural &p : m_procedurals)
-            if (p.scope == scope)
-                add(p.qualifiedName);
-    };
-    for (const PythonCall &call : facts.calls) {
-        const int cls = m_index.findClass(call.target);
-        if (cls >= 0) {
-            if (nodeKind(cls) != NotANode)
-                add(m_index.classFacts(cls).qualifiedName);
-            else
-                addProcedurals(&m_index.classFacts(cls));
-            continue;
-        }
-        const int callee = depth < 3 ? m_index.findFunction(call.target) : -1;
-        if (callee >= 0 && !visited->contains(callee))
-            for (const QString &name : startedNodes(callee, depth + 1, visited))
-                add(name);
-    }
-    addProcedurals(&facts);
-    return out;
-}
-
-void PythonNodeLinker::addConstructions(int function, int depth, QList<int> *visited,
-                                        QList<NodeConstruction> *out) const
-{
-    visited->append(function);
-    for (const PythonCall &call : m_index.functionFacts(function).calls) {
-        const int cls = m_index.findClass(call.target);
-        if (cls >= 0 && nodeKind(cls) != NotANode) {
-            // `for zone in ZONES: Watcher(zone)`: one node per item
-            const auto loop =
-                std::find_if(call.arguments.cbegin(), call.arguments.cend(),
-                             [](const PythonArgument &a) { return !a.items.isEmpty(); });
-            if (loop == call.arguments.cend()) {
-                out->append(construction(cls, call));
-                continue;
-            }
-            for (const QString &item : loop->items) {
-                PythonCall one = call;
-                PythonArgument &a = one.arguments[loop - call.arguments.cbegin()];
-                a.isString = true;
-                a.value = item;
-                a.origin = NameOrigin::Literal;
-                out->append(construction(cls, one));
-            }
-            continue;
-        }
-        if (cls >= 0)
-            continue;
-        const int callee = depth < 3 ? m_index.findFunction(call.target) : -1;
-        if (callee >= 0 && !visited->contains(callee))
-            addConstructions(callee, depth + 1, visited, out);
-    }
-}
-
 NodeConstruction PythonNodeLinker::construction(int cls, const PythonCall &call) const
 {
     const PythonClassFacts &c = m_index.classFacts(cls);
@@ -651,22 +587,17 @@ void PythonNodeLinker::link(LanguageAnalysis *out) const
     });
     out->nodes.append(nodes);
 
-    for (int id = 0; id < m_index.functionCount(); ++id) {
-        const PythonFunctionFacts &function = m_index.functionFacts(id);
-        if (function.name.isEmpty())
-            continue;
-        QList<int> visited;
-        EntryPoint e;
-        e.instantiatedClasses = startedNodes(id, 0, &visited);
-        if (e.instantiatedClasses.isEmpty())
-            continue;
-        e.file = m_index.functionModule(id).file;
-        e.function = function.name;
-        e.evidence = function.evidence;
-        visited.clear();
-        addConstructions(id, 0, &visited, &e.constructions);
-        out->entryPoints.append(e);
-    }
+    const PythonEntryPoints entryPoints(
+        m_index, [this](int cls) { return nodeKind(cls) != NotANode; },
+        [this](const PythonScopeFacts *scope) {
+            QStringList names;
+            for (const Procedural &p : m_procedurals)
+                if (p.scope == scope)
+                    names.append(p.qualifiedName);
+            return names;
+        },
+        [this](int cls, const PythonCall &call) { return construction(cls, call); });
+    entryPoints.addEntryPoints(out);
 }
 
 } // namespace rosarch

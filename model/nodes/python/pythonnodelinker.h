@@ -13,7 +13,7 @@ namespace rosarch {
 
 /// Resolves the facts of all Python files together: which classes are nodes (directly or
 /// through project base classes), the ports they inherit or create through helpers, their
-/// node names, the procedural nodes, and the node classes each function starts.
+/// node names, the procedural nodes, and (PythonEntryPoints) the nodes each function starts.
 class PythonNodeLinker
 {
 public:
@@ -81,11 +81,6 @@ private:
                         PythonArgument *agreed) const;
     NameInfo nameInfo(int id, int depth) const;
     QString nodeName(int id) const;
-    QStringList startedNodes(int function, int depth, QList<int> *visited) const;
-    /// The nodes `function` constructs (`Watcher('dock')`), and those the functions it calls
-    /// construct, as startedNodes follows them.
-    void addConstructions(int function, int depth, QList<int> *visited,
-                          QList<NodeConstruction> *out) const;
     /// Class `cls` built by `call`: the node name and port names its arguments decide.
     NodeConstruction construction(int cls, const PythonCall &call) const;
     void nameProcedurals();

@@ -111,6 +111,32 @@ private Q_SLOTS:
                                     "@src/py_basic_demo/py_basic_demo/old_school.py:13:5-13:61")}));
     }
 
+    void builderChainStopsAtItsBoundAndSaysWhere()
+    {
+        const LanguageAnalysis a = analyzeFixture(QStringLiteral("py_builder_depth"));
+        const auto main = std::find_if(a.entryPoints.cbegin(), a.entryPoints.cend(),
+                                       [](const EntryPoint &e) { return e.function == "main"; });
+        QVERIFY(main != a.entryPoints.cend());
+        QStringList built;
+        for (const NodeConstruction &k : main->constructions)
+            built << k.nodeName;
+        // level_three is the third call from main(): its own node is built, the one of the
+        // function it calls is past the bound
+        QCOMPARE(built,
+                 (QStringList{QStringLiteral("first_stage"), QStringLiteral("third_stage")}));
+        QStringList notes;
+        for (const Diagnostic &d : a.diagnostics)
+            notes << QStringLiteral("%1 %2:%3").arg(d.code, d.evidence.file).arg(d.evidence.line);
+        QCOMPARE(notes, QStringList{QStringLiteral(
+                            "builder-depth src/relay_chain/relay_chain/chain.py:17")});
+        // a function nearer the node follows the whole chain
+        const auto one =
+            std::find_if(a.entryPoints.cbegin(), a.entryPoints.cend(),
+                         [](const EntryPoint &e) { return e.function == "level_one"; });
+        QVERIFY(one != a.entryPoints.cend());
+        QCOMPARE(one->constructions.size(), 2);
+    }
+
     void entryPoints()
     {
         const LanguageAnalysis a = analyzeFixture(QStringLiteral("py_basic"));
