@@ -1,7 +1,42 @@
 #include "nodedescription.h"
 #include "document.h"
+#include "nodedocumentation.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QHash>
 
 namespace rosarch {
+
+namespace {
+
+/// The class's own documentation, read from its file when a view first asks and again when
+/// the file changes (views ask on the UI thread only).
+QString documentationInCode(const QString &root, const AtomicNode &node)
+{
+    struct Read
+    {
+        QDateTime modified;
+        QString text;
+    };
+    static QHash<QString, Read> read;
+    const QFileInfo file(QDir(root).filePath(node.evidence.file));
+    const QString key =
+        QStringLiteral("%1\n%2\n%3")
+            .arg(file.filePath(), node.qualifiedName, QString::number(node.evidence.line));
+    const QDateTime modified = file.lastModified();
+    const auto known = read.constFind(key);
+    if (known != read.constEnd() && known->modified == modified)
+        return known->text;
+    const std::optional<NodeDocumentation> doc =
+        NodeDocumentation::read(SuggestionSource(root), node);
+    const QString text = doc ? doc->text : QString();
+    read.insert(key, {modified, text});
+    return text;
+}
+
+} // namespace
 
 NodeDescription NodeDescription::of(const Document &document, const QString &nodeId)
 {
@@ -9,6 +44,14 @@ NodeDescription NodeDescription::of(const Document &document, const QString &nod
     if (!node)
         return {};
     NodeDescription d{node->description, node->description.isEmpty() ? Source::None : Source::Code};
+    if (d.source == Source::None && !node->evidence.file.isEmpty() &&
+        !document.workspaceRoot().isEmpty()) {
+        // nothing accepted or written: what the class's own documentation says, without
+        // running Suggestions
+        d.text = documentationInCode(document.workspaceRoot(), *node);
+        d.source = d.text.isEmpty() ? Source::None : Source::Code;
+        return d;
+    }
     // The same order Document applies them in: the code, accepted suggestions, then a
     // person's own edits. The text is already the one in effect; only its source is asked.
     bool described = false;

@@ -127,7 +127,9 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
     }
     case Qt::ToolTipRole: {
         NodeDescription description = NodeDescription::of(*m_document, node.id);
-        if (description.text != node.description) // not the document's (yet): as shown
+        const bool fromCode =
+            node.description.isEmpty() && description.source == NodeDescription::Source::Code;
+        if (description.text != node.description && !fromCode) // a preview: as shown
             description = {node.description, node.description.isEmpty()
                                                  ? NodeDescription::Source::None
                                                  : NodeDescription::Source::Code};

@@ -26,9 +26,6 @@ public:
     QList<Suggestion> suggest() const;
 
 private:
-    /// The documentation of a node: text, and the line range it occupies (0 when none).
-    bool documentation(const AtomicNode &node, QString *text, int *first, int *last,
-                       QString *quote) const;
     Suggestion make(Suggestion::Kind kind) const;
 
     const Recovery &m_recovery;
