@@ -79,12 +79,13 @@ add_custom_target(rosarch-installable DEPENDS rosarch rosarch-stages rosarch-lay
 set(CPACK_PACKAGE_NAME rosarch)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Recover the architecture of a ROS 2 workspace")
-set(CPACK_PACKAGE_DESCRIPTION
-  "rosarch reads a ROS 2 workspace's sources and launch files and recovers its nodes, their "
-  "topics, services, actions and parameters, and how the launch files compose them. It shows "
-  "the architecture in a window, traces every element back to its source, and writes JSON, "
-  "PlantUML, Mermaid and an HTML site from the command line.")
-string(JOIN "" CPACK_PACKAGE_DESCRIPTION ${CPACK_PACKAGE_DESCRIPTION})
+# One line of the control file's extended description each (Debian wants them under 80).
+string(JOIN "\n" CPACK_PACKAGE_DESCRIPTION
+  "rosarch reads a ROS 2 workspace's sources and launch files and recovers its"
+  "nodes, their topics, services, actions and parameters, and how the launch files"
+  "compose them. It shows the architecture in a window, traces every element back"
+  "to its source, and writes JSON, PlantUML, Mermaid and an HTML site from the"
+  "command line.")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_PACKAGE_CONTACT "rosarch maintainers <rosarch@invalid>" CACHE STRING
   "Maintainer field of the .deb")
