@@ -1,15 +1,13 @@
 #include "filteredtreepanel.h"
 #include "nodefilterproxymodel.h"
+#include "stallprobe.h"
 
-#include <QElapsedTimer>
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
-#include <QRegularExpression>
 #include <QScopedValueRollback>
 #include <QScrollBar>
-#include <QTimer>
 #include <QTreeView>
 #include <QVBoxLayout>
 
@@ -18,24 +16,34 @@
 
 namespace rosarch {
 
+namespace {
+
+/// The panel's tree, able to put off laying out its rows: expanding a row of a tree view that
+/// is laid out lays the rows out again at once, which over the hundreds of rows a filter opens
+/// cost more than the filter; put off, the rows are laid out once, after.
+class TreeView : public QTreeView
+{
+public:
+    using QTreeView::QTreeView;
+    void layOutLater() { scheduleDelayedItemsLayout(); }
+};
+
+} // namespace
+
 FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     : QWidget(parent), m_proxy(new NodeFilterProxyModel(this)), m_filter(new QLineEdit(this)),
-      m_tree(new QTreeView(this)), m_layout(new QVBoxLayout(this)), m_placeholder(new QLabel),
-      m_filterDelay(new QTimer(this))
+      m_tree(new TreeView(this)), m_layout(new QVBoxLayout(this)), m_placeholder(new QLabel)
 {
     m_filter->setClearButtonEnabled(true);
     m_filter->installEventFilter(this);
-    m_filterDelay->setSingleShot(true);
-    m_filterDelay->setInterval(kTypingPauseMs);
-    connect(m_filterDelay, &QTimer::timeout, this, [this] { applyFilter(m_filter->text()); });
-    connect(m_filter, &QLineEdit::textChanged, this, [this](const QString &text) {
-        // Clearing is at once (a row is selected right after), and so is a cheap filter.
-        if (text.trimmed().isEmpty() || m_lastFilterMs < kSlowFilterMs) {
-            m_filterDelay->stop();
-            applyFilter(text);
-        } else {
-            m_filterDelay->start();
-        }
+    // Each key shows at once: the rows are matched in slices between events, and the filter
+    // applies when all are matched (at once on a small tree).
+    connect(m_filter, &QLineEdit::textChanged, m_proxy,
+            &NodeFilterProxyModel::setFilterTextInSlices);
+    connect(m_proxy, &NodeFilterProxyModel::filterApplied, this, [this] {
+        const StallScope scope("FilteredTreePanel expand rows");
+        static_cast<TreeView *>(m_tree)->layOutLater();
+        expandRows();
     });
 
     m_tree->setModel(m_proxy);
@@ -81,16 +89,6 @@ FilteredTreePanel::FilteredTreePanel(QWidget *parent)
     auto *overlay = new QVBoxLayout(m_tree->viewport());
     overlay->addWidget(m_placeholder);
     setFocusProxy(m_tree);
-}
-
-void FilteredTreePanel::applyFilter(const QString &text)
-{
-    QElapsedTimer timer;
-    timer.start();
-    m_proxy->setFilterRegularExpression(QRegularExpression(
-        QRegularExpression::escape(text.trimmed()), QRegularExpression::CaseInsensitiveOption));
-    expandRows();
-    m_lastFilterMs = timer.elapsed();
 }
 
 void FilteredTreePanel::expandRows()

@@ -5,7 +5,6 @@
 #include <QWidget>
 
 class QLineEdit;
-class QTimer;
 class QTreeView;
 class QVBoxLayout;
 
@@ -80,7 +79,6 @@ protected:
     QLabel *m_placeholder;
 
 private:
-    void applyFilter(const QString &text);
     /// With a filter: opens the way to every row that matches (the rows kept only because a
     /// descendant matches), then the matching rows themselves, breadth first, while fewer
     /// than kExpandBudget rows show. Expanding every kept row of a large tree (a one-letter
@@ -106,12 +104,6 @@ private:
     void restoreCurrent();
     QModelIndex sourceIndexOfNames(const QStringList &names) const;
     QSet<QString> m_expanded; ///< the expanded rows by key, kept across a reset
-    /// Keys typed while filtering is slow wait for a pause in typing, so that each key shows at
-    /// once; on a small tree the filter follows every key.
-    QTimer *m_filterDelay;
-    qint64 m_lastFilterMs = 0; ///< how long the last filtering took
-    static constexpr int kSlowFilterMs = 40;
-    static constexpr int kTypingPauseMs = 250;
 };
 
 } // namespace rosarch

@@ -1,11 +1,14 @@
 // rosarch-stallbench: how long the window's UI thread stalls while the stages run on a real
-// workspace. Opens the MainWindow offscreen on the workspace (as a person opening it), runs
-// all stages once more (F5), then starts runs and cancels them after 300 ms and 1 s. A 10 ms
+// workspace and while a person types into its filter boxes. Opens the MainWindow offscreen on
+// the workspace (as a person opening it), types a text into every filter box key by key and
+// erases it again (node list, launch tree, findings, parameters, find in diagram), runs all
+// stages once more (F5), then starts runs and cancels them after 300 ms and 1 s. A 10 ms
 // timer on the UI thread records every gap; the report names the longest, what ran during
 // them (event dispatches and StallScopes), the time until the first result is usable and how
-// long a cancel takes until the window says so and until the worker process is gone.
+// long a cancel takes until the window says so and until the worker process is gone; last,
+// the longest stall while filtering in each panel.
 //
-//   rosarch-stallbench <workspace> [--runs N] [--no-cancel] [--type-filter TEXT]
+//   rosarch-stallbench <workspace> [--runs N] [--no-cancel] [--type-filter TEXT] [--no-filter]
 //   rosarch-stallbench --generate <packages> [--runs N] [--no-cancel]
 //
 // --generate measures a generated workspace of that many packages (the one tst_largeworkspace
@@ -14,6 +17,7 @@
 // A benchmark, not a check: it writes nothing into the workspace and exits 0 unless it could
 // not run (exit 1) or the run did not finish (exit 2).
 #include "document.h"
+#include "filterboxes.h"
 #include "launchtreepanel.h"
 #include "mainwindow.h"
 #include "stagerunner.h"
@@ -27,6 +31,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
+#include <QKeyEvent>
 #include <QLineEdit>
 #include <QSet>
 #include <QSettings>
@@ -42,6 +47,8 @@
 using namespace rosarch;
 
 namespace {
+
+constexpr int kKeyMs = 150; ///< between two keys typed into a filter box
 
 QTextStream &out()
 {
@@ -152,10 +159,18 @@ int main(int argc, char **argv)
         QStringLiteral("packages"));
     const QCommandLineOption typeFilter(
         QStringLiteral("type-filter"),
-        QStringLiteral("type this text into the launch tree's filter, a key every 150 ms, as a "
-                       "person looking for a node would"),
-        QStringLiteral("text"));
-    parser.addOptions({runsOption, noCancel, top, screenshot, generate, typeFilter});
+        QStringLiteral("the text typed into every filter box, a key every 150 ms as a person "
+                       "looking for something would, then erased key by key (controller)"),
+        QStringLiteral("text"), QStringLiteral("controller"));
+    const QCommandLineOption noFilter(QStringLiteral("no-filter"),
+                                      QStringLiteral("skip typing into the filter boxes"));
+    const QCommandLineOption panelOption(
+        QStringLiteral("panel"),
+        QStringLiteral("type only into this panel's filter box (repeatable): node list, launch "
+                       "tree, findings, parameters, diagram find"),
+        QStringLiteral("name"));
+    parser.addOptions(
+        {runsOption, noCancel, top, screenshot, generate, typeFilter, noFilter, panelOption});
     parser.process(app);
     QTemporaryDir generated;
     QString workspaceArg;
@@ -256,33 +271,54 @@ int main(int argc, char **argv)
         out() << "select launch file " << tree->currentIndex().data().toString() << ":\n";
         reportGaps(app, QStringLiteral("select launch file"), topGaps);
     }
-    if (parser.isSet(typeFilter)) {
-        QLineEdit *filter = w.launchPanel()->filterEdit();
-        const QString text = parser.value(typeFilter);
-        app.beginPhase(QStringLiteral("type in the launch filter"));
-        QElapsedTimer typing;
-        typing.start();
-        qint64 lastKeyShown = 0;
-        for (int i = 0; i < text.size(); ++i)
-            QTimer::singleShot(150 * i, &app, [&, i] {
-                const StallScope scope("a key typed into the launch tree's filter");
-                filter->insert(text.at(i));
-            });
-        // until every key has shown and the view has settled
-        spinUntil(
-            app, [&] { return filter->text() == text; }, 60000);
-        lastKeyShown = typing.elapsed();
-        spinFor(app, 2000);
-        out() << QStringLiteral("type \"%1\" in the launch filter: the last key shown at %2 ms "
-                                "(typed at %3 ms); %4 rows shown\n")
-                     .arg(text)
-                     .arg(lastKeyShown)
-                     .arg(150 * (text.size() - 1))
-                     .arg(w.launchPanel()->treeView()->model()->rowCount());
-        reportGaps(app, QStringLiteral("type in the launch filter"), topGaps);
-        filter->clear();
-        spinFor(app, 500);
-    }
+    QList<std::pair<QString, qint64>> filterStalls; // panel -> its longest stall
+    if (!parser.isSet(noFilter))
+        for (const FilterBox &box : filterBoxes(w)) {
+            if (parser.isSet(panelOption) && !parser.values(panelOption).contains(box.panel))
+                continue;
+            app.beginPhase(QStringLiteral("prepare the %1").arg(box.panel));
+            box.prepare();
+            spinFor(app, 1000);
+            const QString text = parser.value(typeFilter);
+            const QString phase = QStringLiteral("filter the %1").arg(box.panel);
+            app.beginPhase(phase);
+            // As keys come: posted events, each dispatched on its own (a key a person types
+            // waits for the one before it).
+            const auto press = [&app, edit = box.edit](Qt::Key key, const QString &chars) {
+                const StallScope scope("a key typed into a filter box");
+                QCoreApplication::postEvent(
+                    edit, new QKeyEvent(QEvent::KeyPress, key, Qt::NoModifier, chars));
+                QCoreApplication::postEvent(
+                    edit, new QKeyEvent(QEvent::KeyRelease, key, Qt::NoModifier, chars));
+            };
+            QElapsedTimer typing;
+            typing.start();
+            for (int i = 0; i < text.size(); ++i)
+                QTimer::singleShot(kKeyMs * i, &app, [&press, c = text.at(i)] {
+                    press(Qt::Key(c.toUpper().unicode()), c);
+                });
+            spinUntil(
+                app, [&] { return box.edit->text() == text; }, 60000);
+            const qint64 lastKeyShown = typing.elapsed();
+            spinFor(app, 1500); // the filter settles (a panel may wait for a pause in typing)
+            out() << QStringLiteral("filter the %1: typed \"%2\" a key every %3 ms, the last "
+                                    "key shown at %4 ms (typed at %5 ms); %6\n")
+                         .arg(box.panel, text)
+                         .arg(kKeyMs)
+                         .arg(lastKeyShown)
+                         .arg(kKeyMs * (text.size() - 1))
+                         .arg(box.shown());
+            // and erased key by key, down to the whole list again
+            for (int i = 0; i < text.size(); ++i)
+                QTimer::singleShot(kKeyMs * i, &app,
+                                   [&press] { press(Qt::Key_Backspace, QString()); });
+            spinUntil(
+                app, [&] { return box.edit->text().isEmpty(); }, 60000);
+            spinFor(app, 1500);
+            out() << QStringLiteral("  erased key by key: %1\n").arg(box.shown());
+            reportGaps(app, phase, topGaps);
+            filterStalls.append({box.panel, app.longestGap(phase)});
+        }
     if (parser.isSet(screenshot))
         w.grab().save(parser.value(screenshot));
     for (int i = 1; i <= parser.value(runsOption).toInt(); ++i)
@@ -321,6 +357,11 @@ int main(int argc, char **argv)
             spinFor(app, 500);
             reportGaps(app, phase, topGaps);
         }
+    }
+    if (!filterStalls.isEmpty()) {
+        out() << "longest UI stall while filtering, per panel:\n";
+        for (const auto &[panel, ms] : std::as_const(filterStalls))
+            out() << QStringLiteral("  %1 %2 ms\n").arg(panel + QLatin1Char(':'), -14).arg(ms);
     }
     out() << QStringLiteral("overall longest UI gap: %1 ms\n").arg(app.longestGap());
     out().flush();
