@@ -183,7 +183,13 @@ void CppParameterLinker::addDeclarations(const CppFunction &fn, const CppLinkCon
     for (const CppParameterDeclaration &d : fn.parameterDeclarations) {
         if (d.via.isEmpty())
             continue;
-        if (d.parameter.isEmpty() && d.name.kind == CppValue::Kind::FunctionParameter) {
+        const auto ownParameter = [](const CppValue &v) {
+            return v.kind == CppValue::Kind::FunctionParameter;
+        };
+        if (d.parameter.isEmpty() &&
+            (ownParameter(d.name) ||
+             (d.name.kind == CppValue::Kind::Concatenation &&
+              std::any_of(d.name.parts.begin(), d.name.parts.end(), ownParameter)))) {
             // A declaring helper of the class (`declare_or_get_parameter(name, ...)`) declares
             // what its callers name, and those calls are read where they are; any other
             // function taking the name may declare anything.
@@ -278,9 +284,42 @@ QString CppParameterLinker::nameOf(const CppParameterDeclaration &d,
         const bool known = isStandardDeclaringCall(d.via) ||
                            d.via == QLatin1String("get_parameter_or") ||
                            d.via == QLatin1String("undeclare");
-        return known ? d.parameter : QStringLiteral("{%1}").arg(d.via) + d.parameter;
+        if (known)
+            return d.parameter;
+        const QString named = helperName(d, ctx);
+        return named.isEmpty() ? QStringLiteral("{%1}").arg(d.via) + d.parameter : named;
     }
     return textOf(d.name, ctx);
+}
+
+// The name a declaring method of the class (`declareParameter("enabled", value)` of a
+// costmap layer) gives what it is handed: its own declaring call's name with the call's
+// arguments for its parameters (`name_ + "." + param_name`); "" when that stays undecided.
+QString CppParameterLinker::helperName(const CppParameterDeclaration &d,
+                                       const CppLinkContext &ctx) const
+{
+    const int from = ctx.self >= 0 ? ctx.self : ctx.cls;
+    if (from < 0)
+        return {};
+    CppValue name;
+    name.kind = CppValue::Kind::Literal;
+    name.literal = name.text = d.parameter;
+    for (int c : m_index.lineage(from))
+        for (const auto &ref : m_index.at(c).functions) {
+            const CppFunction *fn = ref.function;
+            if (fn->name != d.via || fn->parameterNames.isEmpty())
+                continue;
+            for (const CppParameterDeclaration &inner : fn->parameterDeclarations) {
+                if (!isStandardDeclaringCall(inner.via) || !inner.parameter.isEmpty())
+                    continue;
+                const CppSubstitution subst{{name, d.defaultValue}, ctx, {}, fn};
+                const CppLinkContext at{c, fn, ref.file, &subst, ctx.self};
+                const QString out = textOf(inner.name, at);
+                if (!out.isEmpty() && !parameterNameIsPattern(out))
+                    return out;
+            }
+        }
+    return {};
 }
 
 // A default as text: what it resolves to, else as written.

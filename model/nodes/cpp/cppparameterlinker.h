@@ -49,6 +49,7 @@ private:
                  QStringList *undeclared) const;
     int memberHelper(const QString &type, int cls) const;
     QString nameOf(const CppParameterDeclaration &d, const CppLinkContext &ctx) const;
+    QString helperName(const CppParameterDeclaration &d, const CppLinkContext &ctx) const;
     QString textOf(const CppValue &value, const CppLinkContext &ctx) const;
     QString defaultOf(const CppParameterDeclaration &d, const CppLinkContext &ctx) const;
 
