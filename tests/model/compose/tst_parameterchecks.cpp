@@ -1,7 +1,7 @@
 // The parameter checks (blueprint §1, "Parameters of a class"; docs/checks.md): what an
 // instance is given against what its class and plugins declare, on the params_checks
-// (rclcpp, nav2_util and rclpy declarations, a follower plugin) and params_generated
-// (generate_parameter_library) fixtures.
+// (rclcpp, nav2_util and rclpy declarations, a follower plugin), params_generated
+// (generate_parameter_library) and params_handler (a handler's getter, critics) fixtures.
 #include "generatedparameters.h"
 #include "parameter.h"
 #include "parameterview.h"
@@ -157,6 +157,34 @@ private Q_SLOTS:
                      QStringLiteral("parameter-undeclared gripper.yaml:13 gains.finger_right.d"),
                      QStringLiteral("parameter-undeclared gripper.yaml:7 gripper_frame"),
                  }));
+    }
+
+    // A handler's getter declares under the controller plugin's name, and the critics the
+    // controller loads by class name declare under theirs: only the misspelt key is found.
+    void handlerGetterDeclaresPerPluginInstance()
+    {
+        const Recovery r = recoverWorkspace(test::dataDir(QStringLiteral("params_handler/ws")));
+        QCOMPARE(findings(r), (QStringList{QStringLiteral(
+                                  "parameter-undeclared floor.yaml:13 Sweep.SpeedCritic.wieght")}));
+        bool guessed = false;
+        for (const Diagnostic &d : r.architecture.diagnostics)
+            guessed = guessed || d.message.contains(QLatin1String("'Sweep.SpeedCritic.weight'"));
+        QVERIFY(guessed);
+        const NodeInstance *server = instance(r, QStringLiteral("floor_server"));
+        QVERIFY(server);
+        const ParameterView view(r.nodes);
+        QHash<QString, QString> plugins;
+        for (const auto &[name, cls] : view.loadedPlugins(*server))
+            plugins.insert(name, cls->className);
+        QCOMPARE(plugins.value(QStringLiteral("Sweep")), QStringLiteral("Sweeper"));
+        QCOMPARE(plugins.value(QStringLiteral("Sweep.EdgeCritic")), QStringLiteral("EdgeCritic"));
+        QCOMPARE(plugins.value(QStringLiteral("Sweep.SpeedCritic")), QStringLiteral("SpeedCritic"));
+        QStringList declared;
+        for (const ParameterDeclaration &d : view.declarationsOf(*server))
+            declared << d.name;
+        QVERIFY(declared.contains(QStringLiteral("Sweep.lane_width"))); // the member planner's
+        QVERIFY(declared.contains(QStringLiteral("Sweep.EdgeCritic.margin")));
+        QVERIFY(declared.contains(QStringLiteral("control_rate"))); // an empty namespace
     }
 };
 
