@@ -121,6 +121,8 @@ private:
     QVariant nodeData(const AtomicNode &node, int column, int role) const;
     QVariant portData(const AtomicNode &node, const Port &port, int column, int role) const;
     QVariant parametersData(const AtomicNode &node, int column, int role) const;
+    /// The plugin classes the launched instances of class `classId` load, by class name.
+    QList<const AtomicNode *> loadedPlugins(const QString &classId) const;
     QVariant parameterData(const AtomicNode &node, const ParameterDeclaration &parameter,
                            int column, int role) const;
 

@@ -3,7 +3,9 @@
 // description previewed.
 #include "atomicnodemodel.h"
 #include "atomicnodetext.h"
+#include "document.h"
 #include "icons.h"
+#include "itemports.h"
 #include "nodedescription.h"
 
 #include <QFont>
@@ -133,7 +135,7 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
             description = {node.description, node.description.isEmpty()
                                                  ? NodeDescription::Source::None
                                                  : NodeDescription::Source::Code};
-        return AtomicNodeText::nodeToolTip(node, description) +
+        return AtomicNodeText::nodeToolTip(node, description, loadedPlugins(node.id)) +
                marksData(node.id, node.marks, column, role).toString();
     }
     case Qt::ForegroundRole:
@@ -147,6 +149,29 @@ QVariant AtomicNodeModel::nodeData(const AtomicNode &node, int column, int role)
     default:
         return {};
     }
+}
+
+QList<const AtomicNode *> AtomicNodeModel::loadedPlugins(const QString &classId) const
+{
+    QHash<QString, const AtomicNode *> pluginClasses;
+    for (const AtomicNode &n : m_nodes.nodes)
+        if (n.isPlugin())
+            pluginClasses.insert(n.qualifiedName, &n);
+    QList<const AtomicNode *> out;
+    if (pluginClasses.isEmpty())
+        return out;
+    for (const NodeInstance &instance : m_document->launchDependencies().nodes) {
+        if (instance.classId != classId)
+            continue;
+        for (const ParameterSetting &plugin : instance.plugins)
+            if (const AtomicNode *cls = pluginClass(plugin.value, pluginClasses);
+                cls && !out.contains(cls))
+                out.append(cls);
+    }
+    std::sort(out.begin(), out.end(), [](const AtomicNode *a, const AtomicNode *b) {
+        return std::tie(a->className, a->qualifiedName) < std::tie(b->className, b->qualifiedName);
+    });
+    return out;
 }
 
 QVariant AtomicNodeModel::portData(const AtomicNode &node, const Port &port, int column,

@@ -95,7 +95,8 @@ QString AtomicNodeText::packageToolTip(const QString &name, const RosPackage *pk
     return tip;
 }
 
-QString AtomicNodeText::nodeToolTip(const AtomicNode &node, const NodeDescription &description)
+QString AtomicNodeText::nodeToolTip(const AtomicNode &node, const NodeDescription &description,
+                                    const QList<const AtomicNode *> &loaded)
 {
     const QString what = node.isPlugin()   ? tr("pluginlib plugin")
                          : node.lifecycle  ? tr("Lifecycle node class")
@@ -131,6 +132,26 @@ QString AtomicNodeText::nodeToolTip(const AtomicNode &node, const NodeDescriptio
                  : tr("No description in the code"));
     else
         line(tr("Description (%1): %2").arg(description.sourceText(), html(description.text)));
+    if (!loaded.isEmpty()) {
+        // what the host serves through its plugins: a newcomer's "which actions does it serve"
+        constexpr qsizetype kMaxShown = 12;
+        QStringList plugins;
+        for (const AtomicNode *plugin : loaded.first(std::min(loaded.size(), kMaxShown))) {
+            QStringList served;
+            for (const Port &p : plugin->ports)
+                if (p.kind == PortKind::ActionServer || p.kind == PortKind::ServiceServer)
+                    served << (p.kind == PortKind::ActionServer ? tr("action %1")
+                                                                : tr("service %1"))
+                                  .arg(html(p.name.isEmpty() ? p.nameExpression : p.name));
+            plugins << (served.isEmpty()
+                            ? html(plugin->className)
+                            : tr("%1 (serves %2)")
+                                  .arg(html(plugin->className), served.join(QStringLiteral(", "))));
+        }
+        if (loaded.size() > kMaxShown)
+            plugins << tr("%n more", nullptr, int(loaded.size() - kMaxShown));
+        line(tr("Loads, where it is launched: %1").arg(plugins.join(QStringLiteral("; "))));
+    }
     if (node.evidence.isValid())
         line(tr("Defined at %1").arg(html(location(node.evidence))));
     return tip;

@@ -26,7 +26,10 @@ public:
     static QString packageToolTip(const QString &name, const RosPackage *pkg, int nodeCount);
     /// What the class is and where it comes from, with its description in effect and the
     /// source of that description.
-    static QString nodeToolTip(const AtomicNode &node, const NodeDescription &description);
+    /// `loaded`: the plugin classes the class's launched instances load (their parameters
+    /// name them), each shown with what it serves.
+    static QString nodeToolTip(const AtomicNode &node, const NodeDescription &description,
+                               const QList<const AtomicNode *> &loaded = {});
     static QString portToolTip(const AtomicNode &node, const Port &port);
     /// "12 declared · takes any parameter"
     static QString parametersDetails(const AtomicNode &node);

@@ -5,6 +5,7 @@
 // comes from.
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
+#include "cacherecovery.h"
 #include "document.h"
 #include "nodedescription.h"
 #include "nodefilterproxymodel.h"
@@ -401,6 +402,30 @@ private Q_SLOTS:
                     .contains(QStringLiteral("No description in the code")));
         QCOMPARE(NodeDescription::of(doc, QStringLiteral("nothing")).source,
                  NodeDescription::Source::None);
+    }
+
+    // A class that loads plugins says, where it is launched, which it loads and what they
+    // serve: a newcomer reads from the node list which actions the host serves.
+    void classToolTipNamesThePluginsItsInstancesLoad()
+    {
+        Document doc;
+        doc.setRecovery(test::recoverUncached(test::dataDir(QStringLiteral("cpp_plugins/ws"))));
+        AtomicNodeModel model(&doc);
+        QString host;
+        QString plugin;
+        for (const AtomicNode &n : doc.atomicNodes().nodes) {
+            if (n.className == QLatin1String("NavigatorServer"))
+                host = n.id;
+            if (n.className == QLatin1String("PathFollower"))
+                plugin = n.id;
+        }
+        QVERIFY(!host.isEmpty() && !plugin.isEmpty());
+        const QString tip = tipOf(model, host);
+        QVERIFY2(tip.contains(QStringLiteral(
+                     "Loads, where it is launched: GoalNavigator (serves action drive_to_goal)")),
+                 qPrintable(tip));
+        QVERIFY2(!tipOf(model, plugin).contains(QStringLiteral("Loads, where it is launched")),
+                 qPrintable(tipOf(model, plugin)));
     }
 };
 
