@@ -164,6 +164,26 @@ private slots:
         QVERIFY(field(&other, "siteSourceUrl")->text().isEmpty());
     }
 
+    void commitIsNeededOutsideGit()
+    {
+        // A temporary folder is in no repository: {commit} has nothing to come from.
+        SiteExportDialog dialog(m_dir.path());
+        field(&dialog, "siteFolder")->setText(m_dir.filePath(QStringLiteral("elsewhere")));
+        field(&dialog, "siteSourceUrl")
+            ->setText(QStringLiteral("https://example.org/{commit}/{path}#L{line}"));
+        QVERIFY(dialog.problem().isEmpty());
+        dialog.accept();
+        QCOMPARE(dialog.result(), int(QDialog::Rejected));
+        const QString said = dialog.findChild<QLabel *>(QStringLiteral("siteProblem"))->text();
+        QVERIFY2(said.contains(QLatin1String("not in a git repository")), qPrintable(said));
+        // Given a commit, the same pattern is accepted and links to it.
+        field(&dialog, "siteCommit")->setText(QStringLiteral("main"));
+        dialog.accept();
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(dialog.options().commit, QStringLiteral("main"));
+        QCOMPARE(dialog.options().title, QDir(m_dir.path()).dirName());
+    }
+
     void emptyFolderIsRefused()
     {
         SiteExportDialog dialog(fixture());
