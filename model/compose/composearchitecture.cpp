@@ -32,7 +32,7 @@ Architecture composeArchitecture(const AtomicNodeList &nodes, const LaunchDepend
         });
     Architecture arch = Composer::run(nodes, launch, part, renamed);
     if (!arch.canceled)
-        arch.diagnostics = ArchitectureChecks::run(arch, nodes, launch);
+        arch.diagnostics += ArchitectureChecks::run(arch, nodes, launch); // after its own notes
     if (classifiers.isValid()) {
         // Taken even when canceled: the lambda refers to this frame.
         Architecture alone = classifiers.result();

@@ -433,6 +433,21 @@ Architecture Composer::run(const AtomicNodeList &nodes, const LaunchDependencies
                     part.ports = resolvePorts(added, n, nullptr);
                 } else if (cls) {
                     part.name = runtimeNodeName(*cls, n);
+                    for (const Port &p : cls->ports)
+                        if (!itemList(p).isEmpty() && itemsPastBound(p, n)) {
+                            Diagnostic d;
+                            d.severity = Diagnostic::Severity::Info;
+                            d.code = QStringLiteral("evaluation-limit");
+                            d.message =
+                                QStringLiteral("%1 lists more than %2 names in %3: port %4 is "
+                                               "made for the first %2, one port stands for the "
+                                               "rest, its name undecided.")
+                                    .arg(part.name)
+                                    .arg(kMaxItemsPerList)
+                                    .arg(itemList(p), p.id);
+                            d.evidence = n.evidence;
+                            arch.diagnostics.append(d);
+                        }
                     const NodeInstance *container = nullptr;
                     if (!n.container.isEmpty())
                         container = instances.value(n.container, byName.value(n.container));

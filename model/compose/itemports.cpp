@@ -172,6 +172,19 @@ QString itemList(const Port &p)
     return m.captured(1);
 }
 
+bool itemsPastBound(const Port &p, const NodeInstance &instance)
+{
+    bool set = false;
+    const QString items = settingValue(instance, itemList(p), &set).trimmed();
+    if (!set || !items.startsWith(u'['))
+        return false;
+    QSet<QString> distinct;
+    for (const QString &item : parameterListItems(items))
+        if (!item.isEmpty())
+            distinct.insert(item);
+    return distinct.size() > kMaxItemsPerList;
+}
+
 // One port per item of the instance's list (`[a, b]`), each named by its item; the port as
 // it is when the instance gives no list, its name then only known at run time.
 void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
@@ -185,13 +198,10 @@ void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out)
     }
     const QString pattern = QStringLiteral("{%1}").arg(list);
     QSet<QString> seen;
-    // A list of names written in a parameter file is short; past this many items the rest
-    // stay one port, its name undecided, so the instance shows that some were not expanded.
-    constexpr qsizetype kMaxItems = 256;
     for (const QString &item : parameterListItems(items)) {
         if (item.isEmpty() || seen.contains(item))
             continue;
-        if (seen.size() >= kMaxItems) {
+        if (seen.size() >= kMaxItemsPerList) { // the rest stay one port, its name undecided
             out->append(p);
             return;
         }

@@ -19,8 +19,13 @@ QString itemList(const Port &p);
 
 /// One port per item of the instance's value of `itemList(p)`, appended to `out`: named by the
 /// item, or read from the parameter the item names; an item whose test (`{sources}.type`)
-/// fails gets none. Without a list value the port is appended as it is.
+/// fails gets none. Without a list value the port is appended as it is. Past
+/// kMaxItemsPerList distinct items the rest stay one port, its name undecided.
 void expandItems(const Port &p, const NodeInstance &instance, QList<Port> *out);
+/// A list of names written in a parameter file is short: this many items are expanded.
+inline constexpr qsizetype kMaxItemsPerList = 256;
+/// Whether the instance's list for port `p` has more distinct items than expandItems expands.
+bool itemsPastBound(const Port &p, const NodeInstance &instance);
 
 /// The plugin class a `<name>.plugin` value names (`pkg::Class`, or the older `pkg/Class`)
 /// among `pluginClasses` (by qualified name); null when the model has none of that name.

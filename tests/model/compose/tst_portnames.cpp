@@ -208,6 +208,38 @@ private slots:
         QCOMPARE(out.at(255).name, QStringLiteral("f255"));
         QCOMPARE(out.at(255).id, QStringLiteral("s1_f255"));
         QCOMPARE(out.constLast().parameter, QStringLiteral("{feeds}"));
+
+        // composed, the instance says that its list was not expanded in full
+        AtomicNodeList nodes;
+        AtomicNode hubClass;
+        hubClass.id = QStringLiteral("arc_1");
+        hubClass.className = QStringLiteral("Hub");
+        hubClass.ports = {feed};
+        nodes.nodes = {hubClass};
+        LaunchDependencies launch;
+        LaunchFileInstance lf;
+        lf.id = QStringLiteral("lf1");
+        lf.file = QStringLiteral("src/hub/launch/hub.launch.py");
+        lf.type = QStringLiteral("hub.launch.py");
+        lf.nodes = {QStringLiteral("n1")};
+        launch.instances = {lf};
+        hub.id = QStringLiteral("n1");
+        hub.classId = hubClass.id;
+        hub.nodeName = QStringLiteral("hub");
+        hub.evidence = {lf.file, 7, 5, 7, 40};
+        launch.nodes = {hub};
+        Architecture arch = Composer::run(nodes, launch);
+        QCOMPARE(arch.diagnostics.size(), 1);
+        QCOMPARE(arch.diagnostics.constFirst().code, QStringLiteral("evaluation-limit"));
+        QVERIFY2(arch.diagnostics.constFirst().message.contains(QLatin1String("feeds")),
+                 qPrintable(arch.diagnostics.constFirst().message));
+        QCOMPARE(arch.diagnostics.constFirst().evidence.line, 7);
+
+        items.resize(3); // a short list says nothing
+        launch.nodes[0].effectiveParameters[0].value =
+            QStringLiteral("[%1]").arg(items.join(QLatin1String(", ")));
+        arch = Composer::run(nodes, launch);
+        QVERIFY(arch.diagnostics.isEmpty());
     }
 };
 
