@@ -146,6 +146,14 @@ void NodeFilterProxyModel::applyPending()
     const StallScope scope("NodeFilterProxyModel applies a filter");
     const QRegularExpression re(QRegularExpression::escape(m_pending.text),
                                 QRegularExpression::CaseInsensitiveOption);
+    // The proxy's own way to a new filter walks every row it has mapped and moves rows one
+    // range at a time, which on a large tree the person has browsed costs more than a key may.
+    // Instead the filter is set while the rows keep their answers (nothing moves), the new
+    // answers are found, and the mapping is dropped in one layout change: the views ask
+    // again for the rows they show, and keep their current and expanded rows that stay.
+    m_holdFilter = true;
+    setFilterRegularExpression(re);
+    m_holdFilter = false;
     m_matchedRe = re;
     ++m_generation;
     // Whether a row or an ancestor matches, and whether a descendant does, for every row: the
@@ -180,7 +188,7 @@ void NodeFilterProxyModel::applyPending()
     m_pending.active = false;
     m_pending.matched = 0;
     m_pending.self.clear();
-    setFilterRegularExpression(re);
+    invalidate();
     Q_EMIT filterApplied();
 }
 
@@ -194,6 +202,8 @@ void NodeFilterProxyModel::setFilterColumns(const QList<int> &columns)
 bool NodeFilterProxyModel::followFilter() const
 {
     const QRegularExpression re = filterRegularExpression();
+    if (m_holdFilter)
+        return !m_matchedRe.pattern().isEmpty();
     if (re != m_matchedRe) {
         m_matchedRe = re;
         ++m_generation;

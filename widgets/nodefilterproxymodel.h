@@ -81,6 +81,7 @@ private:
     mutable std::vector<Row> m_rows;
     mutable QRegularExpression m_matchedRe; ///< the filter the flags were found for
     mutable int m_generation = 0;
+    bool m_holdFilter = false; ///< rows keep their answers while the filter property changes
     QList<QMetaObject::Connection> m_sourceConnections;
 
     /// The walk over every source row (depth first, resumable) and the matching that follow
