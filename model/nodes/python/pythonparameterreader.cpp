@@ -91,6 +91,19 @@ void PythonParameterReader::add(TSNode call, const QString &name, TSNode value, 
         p.defaultValue = PythonResolver::stringLiteral(m_tree, value, &literal)
                              ? literal
                              : m_tree.text(value).simplified();
+        // a list reads as ROS 2 lists it, as C++ defaults do: [a, b], no quotes on its items
+        if (ts::is(value, "list")) {
+            QStringList items;
+            for (uint32_t i = 0; i < ts_node_named_child_count(value); ++i) {
+                const TSNode item = ts_node_named_child(value, i);
+                if (ts::is(item, "comment"))
+                    continue;
+                items << (PythonResolver::stringLiteral(m_tree, item, &literal)
+                              ? literal
+                              : m_tree.text(item).simplified());
+            }
+            p.defaultValue = QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
+        }
     }
     if (ts::is(descriptor, "call")) {
         QString description;
