@@ -1,6 +1,7 @@
 #include "atomicnodemodel.h"
 #include "atomicnodetext.h"
 #include "document.h"
+#include "evidencelines.h"
 #include "icons.h"
 #include "stallprobe.h"
 #include "visibletext.h"
@@ -35,18 +36,6 @@ quintptr payloadOf(const QModelIndex &index)
 quintptr makeId(quintptr payload, quintptr tag)
 {
     return (payload << 2) | tag;
-}
-
-/// Lines an evidence covers; a missing end means the start line only.
-bool covers(const Evidence &e, const QString &file, int line, int *span)
-{
-    if (!e.isValid() || e.file != file)
-        return false;
-    const int end = std::max(e.endLine, e.line);
-    if (line < e.line || line > end)
-        return false;
-    *span = end - e.line;
-    return true;
 }
 
 } // namespace
@@ -482,12 +471,12 @@ QModelIndex AtomicNodeModel::indexAt(const QString &file, int line) const
         int span = 0;
         // Strictly smaller wins, so on equal spans a node's port (checked first) stays.
         for (const Port &p : n.ports) {
-            if (covers(p.evidence, file, line, &span) && span < bestSpan) {
+            if (coversLine(p.evidence, file, line, &span) && span < bestSpan) {
                 bestSpan = span;
                 best = portIndex(n.id, p.id);
             }
         }
-        if (covers(n.evidence, file, line, &span) && span < bestSpan) {
+        if (coversLine(n.evidence, file, line, &span) && span < bestSpan) {
             bestSpan = span;
             best = nodeIndex(n.id);
         }

@@ -1,4 +1,5 @@
 #include "launchtreelayout.h"
+#include "evidencelines.h"
 #include "launchtreetext.h"
 
 #include <QSet>
@@ -10,18 +11,6 @@
 namespace rosarch {
 
 namespace {
-
-/// Lines an evidence covers; a missing end means the start line only.
-bool covers(const Evidence &e, const QString &file, int line, int *span)
-{
-    if (!e.isValid() || e.file != file)
-        return false;
-    const int end = std::max(e.endLine, e.line);
-    if (line < e.line || line > end)
-        return false;
-    *span = end - e.line;
-    return true;
-}
 
 bool isRootNamespace(const QString &ns)
 {
@@ -52,12 +41,12 @@ Placement placement(const Unresolved &u, const LaunchFileInstance &instance,
         return Placement::Attribute;
     int span = 0;
     if (instance.evidence.file == instance.file &&
-        covers(instance.evidence, u.evidence.file, u.evidence.line, &span) && span == 0)
+        coversLine(instance.evidence, u.evidence.file, u.evidence.line, &span) && span == 0)
         return Placement::Attribute;
     bool covered = false;
     for (const QString &id : instance.nodes) {
         if (const NodeInstance *n = launch.node(id);
-            n && covers(n->evidence, u.evidence.file, u.evidence.line, &span)) {
+            n && coversLine(n->evidence, u.evidence.file, u.evidence.line, &span)) {
             if (n->unresolved.contains(u))
                 return Placement::Child;
             covered = true;
@@ -65,7 +54,7 @@ Placement placement(const Unresolved &u, const LaunchFileInstance &instance,
     }
     for (const QString &id : instance.includedLaunchFiles) {
         if (const LaunchFileInstance *i = launch.instance(id);
-            i && covers(i->evidence, u.evidence.file, u.evidence.line, &span)) {
+            i && coversLine(i->evidence, u.evidence.file, u.evidence.line, &span)) {
             if (i->unresolved.contains(u))
                 return Placement::Child;
             covered = true;
@@ -440,7 +429,7 @@ int LaunchTreeLayout::itemAt(const QString &file, int line, int nearItem)
         switch (c.kind) {
         case Kind::LaunchFile: {
             const LaunchFileInstance &lf = launch.instances[c.ref];
-            hit = covers(lf.evidence, file, line, &span);
+            hit = coversLine(lf.evidence, file, line, &span);
             if (hit && lf.file != file) {
                 context = m_instanceOwner[c.ref]; // an include line: the includer's
             } else if (!hit && lf.file == file && line > 0) {
@@ -451,11 +440,11 @@ int LaunchTreeLayout::itemAt(const QString &file, int line, int nearItem)
             break;
         }
         case Kind::Node:
-            hit = covers(launch.nodes[c.ref].evidence, file, line, &span);
+            hit = coversLine(launch.nodes[c.ref].evidence, file, line, &span);
             break;
         case Kind::Unresolved: {
             const LaunchFileInstance &lf = launch.instances[c.instance];
-            hit = covers(lf.unresolved[c.ref].evidence, file, line, &span) &&
+            hit = coversLine(lf.unresolved[c.ref].evidence, file, line, &span) &&
                   placement(lf.unresolved[c.ref], lf, launch) == Placement::Row;
             break;
         }
