@@ -47,6 +47,16 @@ scripts/fetch-sarif-schema.sh "$build_dir/_sarif" # SARIF 2.1.0 schema + validat
 scripts/fetch-mermaid.sh "$build_dir/_mermaid" # Mermaid's parser, for the tests
 scripts/fetch-site-tools.sh "$build_dir/_sitetools" # puppeteer-core, vnu-jar, axe-core, for the tests
 
+echo "setup: packages and test tools took ${SECONDS} s"
+
+# step <name> <command...>: runs the command and says how long it took (CI's time per stage)
+step() {
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "setup: $name took $((SECONDS - start)) s"
+}
+
 jobs=$(nproc 2>/dev/null || echo 2)
 grammars="$PWD/$build_dir/_grammars"
 
@@ -79,18 +89,19 @@ case "$mode" in
     # same suite took CI a third of its time and found nothing the sanitized one did not;
     # ROSARCH_SKIP_SANITIZERS=1 builds and tests the plain RelWithDebInfo tree instead.)
     export QT_QPA_PLATFORM=offscreen
-    scripts/check-format.sh
+    step "format check" scripts/check-format.sh
     if [ "${ROSARCH_SKIP_SANITIZERS:-0}" != 1 ]; then
       test_dir=${ROSARCH_ASAN_BUILD_DIR:-build-asan}
-      configure_and_build "$test_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-        -DROSARCH_WERROR=ON -DROSARCH_SANITIZE=address,undefined
+      step "sanitizer build" configure_and_build "$test_dir" -DCMAKE_BUILD_TYPE=Debug \
+        -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" -DROSARCH_WERROR=ON -DROSARCH_SANITIZE=address,undefined
     else
       test_dir=$build_dir
-      configure_and_build "$test_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DROSARCH_WERROR=ON
+      step "build" configure_and_build "$test_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DROSARCH_WERROR=ON
     fi
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      ctest --test-dir "$test_dir" --output-on-failure -j "$jobs"
-    scripts/check-tidy.sh "$test_dir"
+      step "test suite" ctest --test-dir "$test_dir" --output-on-failure -j "$jobs"
+    step "clang-tidy" scripts/check-tidy.sh "$test_dir"
     if [ "${ROSARCH_SKIP_FUZZ:-0}" != 1 ]; then
       # Every libFuzzer target (clang-16, ASan + UBSan) over its seed corpus, a fixed number
       # of runs each.
@@ -102,9 +113,10 @@ case "$mode" in
         -DCMAKE_C_COMPILER=clang-16 -DCMAKE_CXX_COMPILER=clang++-16 -DROSARCH_FUZZ=ON \
         -DROSARCH_SANITIZE=address,undefined,fuzzer-no-link
       mapfile -t fuzz_targets < <(ls tests/fuzz/corpus)
-      cmake --build "$fuzz_dir" -j "$jobs" --target "${fuzz_targets[@]}"
-      scripts/run-fuzzers.sh "$fuzz_dir" runs=2000
-    fi ;;
+      step "fuzz build" cmake --build "$fuzz_dir" -j "$jobs" --target "${fuzz_targets[@]}"
+      step "fuzz runs" scripts/run-fuzzers.sh "$fuzz_dir" runs=2000
+    fi
+    echo "setup: the whole test run took ${SECONDS} s" ;;
   build)
     configure_and_build "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo ;;
   package)
