@@ -2,8 +2,10 @@
 #include "diagramoverview.h"
 
 #include <QHash>
+#include <QSet>
 
 #include <algorithm>
+#include <functional>
 
 namespace rosarch {
 
@@ -58,6 +60,54 @@ int DiagramFirstView::indexOf(const QList<DiagramOptions> &steps, const DiagramO
         if (sameCollapse(steps[i], options))
             return i;
     return -1;
+}
+
+QString DiagramFirstView::firstComposite(const Architecture &architecture, const QString &rootId,
+                                         bool inactive)
+{
+    // nodes each composite starts, transitively (an include tree: memo against repeats)
+    QHash<QString, int> nodes;
+    const std::function<int(const QString &)> count = [&](const QString &id) {
+        if (const auto it = nodes.constFind(id); it != nodes.constEnd())
+            return *it;
+        nodes.insert(id, 0); // a cycle, were there one, counts nothing
+        int n = 0;
+        if (const Composite *c = architecture.composite(id))
+            for (const RosNodePart &p : c->parts)
+                if (p.active || inactive)
+                    n += p.kind == RosNodePart::Kind::Node ? 1 : count(p.instanceId);
+        nodes.insert(id, n);
+        return n;
+    };
+    QString at = rootId;
+    QSet<QString> seen;
+    while (!seen.contains(at)) {
+        seen.insert(at);
+        const Composite *c = architecture.composite(at);
+        if (!c)
+            return rootId;
+        QString next;
+        int most = 0;
+        int own = 0;
+        for (const RosNodePart &p : c->parts) {
+            if (!p.active && !inactive)
+                continue;
+            if (p.kind == RosNodePart::Kind::Node) {
+                ++own;
+            } else if (const int n = count(p.instanceId); n > most) {
+                most = n;
+                next = p.instanceId;
+            }
+        }
+        // a launch file of its own few nodes around the include of the system (a simulation
+        // starting a robot state publisher next to the navigation's bringup) opens on that
+        if (own > 0 && own * kFewerOwnNodes >= most)
+            return at;
+        if (next.isEmpty())
+            return own > 0 ? at : rootId;
+        at = next;
+    }
+    return rootId;
 }
 
 } // namespace rosarch

@@ -1,5 +1,6 @@
 #include "diagrampanel.h"
 #include "diagrambreadcrumbbar.h"
+#include "diagramfirstview.h"
 #include "diagramlayouter.h"
 #include "diagramminimap.h"
 #include "diagramnodeitem.h"
@@ -235,6 +236,9 @@ void DiagramPanel::setArchitecture(const Architecture &architecture, const QList
                 show = c.instanceId;
         if (show.isEmpty() && !m_architecture.composites.isEmpty())
             show = m_architecture.composites.first().instanceId;
+        // a system whose root only includes other launch files opens where its nodes are
+        if (!show.isEmpty())
+            show = DiagramFirstView::firstComposite(m_architecture, show, m_options.showInactive);
     }
     if (show.isEmpty()) {
         m_current.clear();
@@ -267,7 +271,8 @@ void DiagramPanel::onRootChosen(const QString &instanceId)
 {
     if (!m_architecture.composite(instanceId))
         return;
-    showComposite(instanceId);
+    showComposite(
+        DiagramFirstView::firstComposite(m_architecture, instanceId, m_options.showInactive));
     Q_EMIT rootChosen(instanceId);
 }
 

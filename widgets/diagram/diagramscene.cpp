@@ -97,16 +97,22 @@ QRectF DiagramScene::sceneRectFor(const QRectF &bounds)
 
 QRectF DiagramScene::readingStart() const
 {
+    // A part (a node, an include) before any other box: the boundary boxes of a system that
+    // does not fit stand at its left edge, far from its nodes.
     QRectF best;
     qreal bestDistance = 0;
-    for (const DiagramItem *item : m_items) {
-        if (!dynamic_cast<const DiagramNodeItem *>(item))
+    bool bestIsPart = false;
+    for (auto it = m_items.cbegin(); it != m_items.cend(); ++it) {
+        if (!dynamic_cast<const DiagramNodeItem *>(it.value()))
             continue;
-        const QRectF r = item->sceneBoundingRect();
+        const bool part = it.key().startsWith(QLatin1String("part:"));
+        const QRectF r = it.value()->sceneBoundingRect();
         const qreal distance = QLineF(m_frame.topLeft(), r.topLeft()).length();
-        if (best.isNull() || distance < bestDistance) {
+        if (best.isNull() || (part && !bestIsPart) ||
+            (part == bestIsPart && distance < bestDistance)) {
             best = r;
             bestDistance = distance;
+            bestIsPart = part;
         }
     }
     return best;

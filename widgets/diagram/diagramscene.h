@@ -34,8 +34,9 @@ public:
     QStringList keys() const;
     /// The frame around the whole diagram (scene coordinates).
     QRectF frameRect() const { return m_frame; }
-    /// Where reading starts: the box nearest the frame's top left corner (scene coordinates;
-    /// null without boxes). A wide layout can leave that corner itself empty.
+    /// Where reading starts: the part nearest the frame's top left corner, else the box nearest
+    /// it (scene coordinates; null without boxes). A wide layout can leave that corner itself
+    /// empty, or hold only boundary ports.
     QRectF readingStart() const;
 
     /// Comparison marks by element key; elements not named lose their mark.

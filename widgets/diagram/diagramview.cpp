@@ -84,11 +84,11 @@ void DiagramView::fitDiagram()
     } else { // too big to fit legibly: start where reading starts, at the top left
         const QSizeF visible = QSizeF(viewport()->size()) / zoom();
         QPointF corner = rect.topLeft();
-        // Unless no box is in sight from there (a wide layout's corner can be empty frame):
-        // then from the box nearest that corner.
+        // Unless no part is in sight from there (a wide layout's corner can be empty frame,
+        // or boundary ports only): then from the part nearest that corner.
         const auto *diagram = qobject_cast<const DiagramScene *>(scene());
         const QRectF first = diagram ? diagram->readingStart() : QRectF();
-        if (!first.isNull() && !QRectF(corner, visible).intersects(first)) {
+        if (!first.isNull() && !QRectF(corner, visible).contains(first)) {
             constexpr qreal kMargin = 24;
             corner = {std::clamp(first.left() - kMargin, rect.left(),
                                  std::max(rect.left(), rect.right() - visible.width())),

@@ -65,6 +65,7 @@ private Q_SLOTS:
     void firstViewShowsNodes_data();
     void firstViewShowsNodes();
     void expandInPlaceKeepsThePartInView();
+    void aRootOfIncludesOpensWhereItsNodesAre();
 };
 
 void TestDiagramFirstView::stepsGoFromAllToTheOverview()
@@ -194,6 +195,89 @@ void TestDiagramFirstView::expandInPlaceKeepsThePartInView()
     QVERIFY(expanded.height() > compactHeight); // its three ports drawn
     QVERIFY2(shownRect(panel).contains(expanded), "the expanded part is in view");
     QCOMPARE(panel.view()->zoom(), zoom);
+}
+
+void TestDiagramFirstView::aRootOfIncludesOpensWhereItsNodesAre()
+{
+    // bringup includes localization (1 node) and navigation, which includes only a
+    // navigation_core (3 nodes, one inactive) and an external rviz include: as navigation2's
+    // bringup_launch.py includes only other launch files
+    using test::diagram::part;
+    const auto composite = [](const QString &id, const QString &stem, const QString &parent,
+                              QList<RosNodePart> parts) {
+        Composite c;
+        c.instanceId = id;
+        c.stem = stem;
+        c.file = QStringLiteral("src/nav/launch/%1.launch.py").arg(stem);
+        c.parentId = parent;
+        c.parts = std::move(parts);
+        return c;
+    };
+    const auto include = [](const QString &id, const QString &instance, const QString &stem) {
+        return part(id, RosNodePart::Kind::Launch, instance, {}, stem, QStringLiteral("/"), {}, 1);
+    };
+    const auto node = [](const QString &id, const QString &name, bool active = true) {
+        RosNodePart p = part(id, RosNodePart::Kind::Node, QStringLiteral("n_") + name, name,
+                             QStringLiteral("Server"), QStringLiteral("/"), {}, 2);
+        p.active = active;
+        return p;
+    };
+    Architecture arch;
+    arch.composites
+        << composite(QStringLiteral("lf1"), QStringLiteral("bringup"), {},
+                     {include(QStringLiteral("part1"), QStringLiteral("lf2"),
+                              QStringLiteral("localization")),
+                      include(QStringLiteral("part2"), QStringLiteral("lf3"),
+                              QStringLiteral("navigation"))})
+        << composite(QStringLiteral("lf2"), QStringLiteral("localization"), QStringLiteral("lf1"),
+                     {node(QStringLiteral("part1"), QStringLiteral("amcl"))})
+        << composite(QStringLiteral("lf3"), QStringLiteral("navigation"), QStringLiteral("lf1"),
+                     {include(QStringLiteral("part1"), QStringLiteral("lf4"),
+                              QStringLiteral("navigation_core"))})
+        << composite(QStringLiteral("lf4"), QStringLiteral("navigation_core"),
+                     QStringLiteral("lf3"),
+                     {node(QStringLiteral("part1"), QStringLiteral("planner")),
+                      node(QStringLiteral("part2"), QStringLiteral("controller")),
+                      node(QStringLiteral("part3"), QStringLiteral("smoother"), false)});
+    // down the include that starts the most nodes, to the first that starts one itself
+    QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), true),
+             QStringLiteral("lf4"));
+    QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf2"), true),
+             QStringLiteral("lf2")); // a root with a node of its own opens on itself
+    {
+        // one node of its own beside the include of a system four times its size: the system
+        Architecture simulation = arch;
+        simulation.composites[0].parts << node(QStringLiteral("part3"), QStringLiteral("rsp"));
+        QCOMPARE(DiagramFirstView::firstComposite(simulation, QStringLiteral("lf1"), true),
+                 QStringLiteral("lf1")); // 1 of its own, 3 in navigation: itself
+        simulation.composites[3].parts << node(QStringLiteral("part4"), QStringLiteral("bt"))
+                                       << node(QStringLiteral("part5"), QStringLiteral("behavior"));
+        QCOMPARE(DiagramFirstView::firstComposite(simulation, QStringLiteral("lf1"), true),
+                 QStringLiteral("lf4"));
+    }
+    // counted without the inactive node, navigation starts as many as localization: the first
+    arch.composites[3].parts.removeAt(1);
+    QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), false),
+             QStringLiteral("lf2"));
+    QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), true),
+             QStringLiteral("lf4"));
+    // nothing under the root starts a node: the root
+    Architecture empty;
+    empty.composites << composite(QStringLiteral("lf1"), QStringLiteral("bringup"), {}, {});
+    QCOMPARE(DiagramFirstView::firstComposite(empty, QStringLiteral("lf1"), true),
+             QStringLiteral("lf1"));
+
+    // The panel opens on it, with the way back up on its breadcrumbs.
+    DiagramLayouter layouter;
+    DiagramPanel panel(&layouter);
+    panel.resize(1200, 800);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    arch.composites[3].parts[1].active = true; // planner and smoother
+    QVERIFY(laidOut(panel, [&] { panel.setArchitecture(arch); }));
+    QCOMPARE(panel.currentComposite(), QStringLiteral("lf4"));
+    QCOMPARE(panel.breadcrumbIds(), (QStringList{"lf1", "lf3", "lf4"}));
+    QCOMPARE(drawnParts(panel).size(), 2);
 }
 
 QTEST_MAIN(TestDiagramFirstView)
