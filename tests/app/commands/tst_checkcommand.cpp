@@ -1,6 +1,7 @@
 // `rosarch check` end to end, with the real executable: exit codes, the baseline workflow,
 // and SARIF output that the OASIS SARIF 2.1.0 schema accepts, checked by a real JSON-schema
 // validator (scripts/fetch-sarif-schema.sh puts both in the build tree).
+#include "jsonschemacheck.h"
 #include "testsupport.h"
 
 #include <QCryptographicHash>
@@ -23,20 +24,11 @@ QString workspace(const QString &name)
 /// (0 valid) and output.
 int validate(const QStringList &files, QString *output, const QString &schema = {})
 {
-    const QDir sarif(QStringLiteral(ROSARCH_SARIF_DIR));
-    QProcess node;
-    node.start(QStringLiteral(ROSARCH_NODE),
-               QStringList{QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
-                               .filePath(QStringLiteral("tests/support/validate-json-schema.cjs")),
-                           sarif.filePath(QStringLiteral("json-schema")),
-                           schema.isEmpty()
-                               ? sarif.filePath(QStringLiteral("schema/sarif-2.1.0.json"))
-                               : schema} +
-                   files);
-    if (!node.waitForFinished(60000))
-        return -1;
-    *output = QString::fromUtf8(node.readAllStandardOutput() + node.readAllStandardError());
-    return node.exitStatus() == QProcess::NormalExit ? node.exitCode() : -2;
+    return rosarch::test::validateJsonSchema(
+        schema.isEmpty() ? QDir(QStringLiteral(ROSARCH_SARIF_DIR))
+                               .filePath(QStringLiteral("schema/sarif-2.1.0.json"))
+                         : schema,
+        files, output);
 }
 } // namespace
 

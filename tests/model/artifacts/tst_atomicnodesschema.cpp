@@ -3,6 +3,7 @@
 // JSON-schema validator (scripts/fetch-sarif-schema.sh puts it in the build tree, node runs
 // it), and so does a list that sets every optional field; a wrong field type is refused.
 #include "atomicnodesjson.h"
+#include "jsonschemacheck.h"
 #include "testsupport.h"
 
 #include <QtTest>
@@ -19,15 +20,8 @@ QString source(const QString &rel)
 /// Runs the schema validator on `file`; its exit code (0: valid, 1: invalid) and output.
 int validate(const QString &file, QString *output)
 {
-    QProcess node;
-    node.start(QStringLiteral(ROSARCH_NODE),
-               {source(QStringLiteral("tests/support/validate-json-schema.cjs")),
-                QDir(QStringLiteral(ROSARCH_SARIF_DIR)).filePath(QStringLiteral("json-schema")),
-                source(QStringLiteral("schemas/atomic-nodes.schema.json")), file});
-    if (!node.waitForFinished(60000))
-        return -1;
-    *output = QString::fromUtf8(node.readAllStandardOutput() + node.readAllStandardError());
-    return node.exitStatus() == QProcess::NormalExit ? node.exitCode() : -2;
+    return test::validateJsonSchema(source(QStringLiteral("schemas/atomic-nodes.schema.json")),
+                                    {file}, output);
 }
 
 Evidence at(int line)

@@ -3,6 +3,7 @@
 // code outside it (tests/data/interface_models: a simulator's spawn file, robot_state_publisher,
 // rviz2) is wired through the models' ports, which are marked as modelled and never findings.
 #include "interfacemodel.h"
+#include "jsonschemacheck.h"
 #include "observability.h"
 #include "recovery.h"
 #include "testsupport.h"
@@ -14,23 +15,6 @@
 using namespace rosarch;
 
 namespace {
-
-/// Runs the schema validator on `files`; its exit code (0: all valid) and output.
-int validate(const QString &schema, const QStringList &files, QString *output)
-{
-    QProcess node;
-    node.start(
-        QStringLiteral(ROSARCH_NODE),
-        QStringList{QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
-                        .filePath(QStringLiteral("tests/support/validate-json-schema.cjs")),
-                    QDir(QStringLiteral(ROSARCH_SARIF_DIR)).filePath(QStringLiteral("json-schema")),
-                    schema} +
-            files);
-    if (!node.waitForFinished(60000))
-        return -1;
-    *output = QString::fromUtf8(node.readAllStandardOutput() + node.readAllStandardError());
-    return node.exitStatus() == QProcess::NormalExit ? node.exitCode() : -2;
-}
 
 QString source(const QString &rel)
 {
@@ -51,9 +35,9 @@ private Q_SLOTS:
             files << dir.filePath(f);
         QVERIFY(files.size() >= 7);
         QString output;
-        QCOMPARE(
-            validate(source(QStringLiteral("schemas/interface-model.schema.json")), files, &output),
-            0);
+        QCOMPARE(test::validateJsonSchema(
+                     source(QStringLiteral("schemas/interface-model.schema.json")), files, &output),
+                 0);
         // The same files, as the tool reads them (from its resources), without a problem.
         QStringList problems;
         const InterfaceModels fromSource = InterfaceModels::fromFolder(dir.path(), &problems);
@@ -67,9 +51,10 @@ private Q_SLOTS:
         bad.write(R"({"name": "x", "package": "x", "executables": ["x"],
                       "ports": [{"kind": "publisher", "name": "out"}]})");
         bad.close();
-        QCOMPARE(validate(source(QStringLiteral("schemas/interface-model.schema.json")),
-                          {bad.fileName()}, &output),
-                 1);
+        QCOMPARE(
+            test::validateJsonSchema(source(QStringLiteral("schemas/interface-model.schema.json")),
+                                     {bad.fileName()}, &output),
+            1);
         InterfaceModels::fromFolder(tmp.path(), &problems);
         QCOMPARE(problems, (QStringList{QStringLiteral(
                                "bad.json: x: a port needs a known kind, a name and a type "
@@ -79,8 +64,9 @@ private Q_SLOTS:
     void observabilityRulesValidateAndRecognise()
     {
         QString output;
-        QCOMPARE(validate(source(QStringLiteral("schemas/observability.schema.json")),
-                          {source(QStringLiteral("interfaces/observability.json"))}, &output),
+        QCOMPARE(test::validateJsonSchema(
+                     source(QStringLiteral("schemas/observability.schema.json")),
+                     {source(QStringLiteral("interfaces/observability.json"))}, &output),
                  0);
         const Observability &o = Observability::builtIn();
         QVERIFY(!o.isEmpty());
