@@ -1,5 +1,7 @@
 #include "parameterview.h"
 
+#include "port.h"
+
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -21,6 +23,19 @@ QStringList parameterListItems(const QString &value)
     }
     return out;
 }
+
+namespace {
+
+/// A name built from the node's own name (`get_name() + ".verbose"`) as the instance has it.
+QString withNodeName(const QString &name, const NodeInstance &n)
+{
+    if (!name.contains(QLatin1String(kNodeNamePlaceholder)) || n.nodeName.isEmpty() ||
+        n.nodeName.contains(u'{'))
+        return name;
+    return QString(name).replace(QLatin1String(kNodeNamePlaceholder), n.nodeName);
+}
+
+} // namespace
 
 ParameterView::ParameterView(const AtomicNodeList &nodes) : m_nodes(nodes)
 {
@@ -102,6 +117,8 @@ QList<ParameterDeclaration> ParameterView::declarationsOf(const NodeInstance &n,
             d.name = parameterNameFor(d.name, name);
             out.append(d);
         }
+    for (ParameterDeclaration &d : out)
+        d.name = withNodeName(d.name, n);
     // A name with a part that another parameter's list value decides
     // (generate_parameter_library's `gains.{joints}.p`) stands for one name per item.
     QList<ParameterDeclaration> expanded;
@@ -152,7 +169,8 @@ QList<InstanceParameter> ParameterView::of(const NodeInstance &n) const
     QList<InstanceParameter> out;
     QHash<QString, qsizetype> at;
     const AtomicNode *cls = m_nodes.node(n.classId);
-    auto declare = [&](const ParameterDeclaration &d, const QString &plugin) {
+    auto declare = [&](ParameterDeclaration d, const QString &plugin) {
+        d.name = withNodeName(d.name, n);
         if (at.contains(d.name))
             return;
         const InstanceParameter p = declared(d, plugin);

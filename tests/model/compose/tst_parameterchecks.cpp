@@ -184,7 +184,8 @@ private Q_SLOTS:
             declared << d.name;
         QVERIFY(declared.contains(QStringLiteral("Sweep.lane_width"))); // the member planner's
         QVERIFY(declared.contains(QStringLiteral("Sweep.EdgeCritic.margin")));
-        QVERIFY(declared.contains(QStringLiteral("control_rate"))); // an empty namespace
+        QVERIFY(declared.contains(QStringLiteral("control_rate")));         // an empty namespace
+        QVERIFY(declared.contains(QStringLiteral("floor_server.verbose"))); // the node's name
     }
 };
 

@@ -44,6 +44,7 @@ public:
     parent_ = parent;
     name_ = name;
     handler_ = std::make_unique<ParamsHandler>(parent);
+    handler_->start();
     auto getParam = handler_->getParamGetter(name_);
     getParam(max_speed_, "max_speed", 0.3);
     getParam(critic_names_, "critics", std::vector<std::string>{});

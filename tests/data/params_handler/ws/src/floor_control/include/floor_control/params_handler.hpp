@@ -12,6 +12,14 @@ public:
   explicit ParamsHandler(const rclcpp_lifecycle::LifecycleNode::WeakPtr & parent)
   : node_(parent)
   {
+    node_name_ = parent.lock()->get_name();
+  }
+
+  // Settings of the handler itself, under the node's own name.
+  void start()
+  {
+    auto getParam = getParamGetter(node_name_);
+    getParam(verbose_, "verbose", false);
   }
 
   auto getParamGetter(const std::string & ns)
@@ -32,6 +40,8 @@ private:
   }
 
   rclcpp_lifecycle::LifecycleNode::WeakPtr node_;
+  std::string node_name_;
+  bool verbose_{false};
 };
 
 // What a critic scores a cleaning path by.
