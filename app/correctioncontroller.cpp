@@ -11,6 +11,7 @@
 #include "document.h"
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
+#include "nodedescription.h"
 #include "stallprobe.h"
 #include "traceability.h"
 
@@ -287,6 +288,15 @@ QString CorrectionController::nameOf(const Element &e)
     return {};
 }
 
+void CorrectionController::describeClass(InspectorInfo &info, const QString &classId) const
+{
+    // one query for every view that shows a description (node list, inspector, diagram)
+    const NodeDescription d = NodeDescription::of(*m_document, classId);
+    info.describable = true;
+    info.description = d.text;
+    info.descriptionSource = d.sourceText();
+}
+
 InspectorInfo CorrectionController::describe(const Element &e)
 {
     InspectorInfo info;
@@ -304,6 +314,7 @@ InspectorInfo CorrectionController::describe(const Element &e)
         info.kind = n->isPlugin() ? tr("Plugin class") : tr("Node class");
         info.type = n->packageName;
         marks = n->marks;
+        describeClass(info, e.id);
         break;
     }
     case Kind::Port: {
@@ -326,6 +337,8 @@ InspectorInfo CorrectionController::describe(const Element &e)
             return {};
         info.kind = e.kind == Kind::Instance ? tr("Node instance") : tr("Connection");
         info.type = n->className.isEmpty() ? n->execName : n->className;
+        if (e.kind == Kind::Instance)
+            describeClass(info, n->classId);
         if (e.kind == Kind::Connection)
             if (const Port *p = findPort(now.nodes, e.port))
                 info.type = tr("%1 %2 [%3]").arg(portKindName(p->kind), portName(*p), p->type);

@@ -68,6 +68,8 @@ public:
     QList<QAction *> actionsFor(const Element &element, QObject *parent);
     /// What the inspector shows for `element`.
     InspectorInfo describe(const Element &element);
+    /// Fills the description of class `classId` in effect, and its source, into `info`.
+    void describeClass(InspectorInfo &info, const QString &classId) const;
 
     // Each asks through a dialog and pushes one undoable correction; false when cancelled or
     // not applicable.

@@ -25,7 +25,9 @@ InspectorPanel::InspectorPanel(QWidget *parent)
     : QWidget(parent), m_placeholder(new QLabel(this)), m_body(new QWidget(this)),
       m_kind(valueLabel(m_body)), m_name(valueLabel(m_body)), m_type(valueLabel(m_body)),
       m_key(valueLabel(m_body)), m_provenance(valueLabel(m_body)), m_reviewed(valueLabel(m_body)),
-      m_corrections(valueLabel(m_body)), m_buttons(new QWidget(m_body)),
+      m_corrections(valueLabel(m_body)), m_descriptionLabel(new QLabel(tr("Description:"), m_body)),
+      m_descriptionField(new QWidget(m_body)), m_description(valueLabel(m_descriptionField)),
+      m_descriptionSource(valueLabel(m_descriptionField)), m_buttons(new QWidget(m_body)),
       m_buttonLayout(new QGridLayout(m_buttons))
 {
     m_placeholder->setAlignment(Qt::AlignCenter);
@@ -49,6 +51,14 @@ InspectorPanel::InspectorPanel(QWidget *parent)
     form->addRow(tr("Key:"), m_key);
     form->addRow(tr("Provenance:"), m_provenance);
     form->addRow(tr("Review:"), m_reviewed);
+    // what the class does, then where that comes from, quieter
+    m_descriptionSource->setForegroundRole(QPalette::PlaceholderText);
+    auto *described = new QVBoxLayout(m_descriptionField);
+    described->setContentsMargins(0, 0, 0, 0);
+    described->setSpacing(0);
+    described->addWidget(m_description);
+    described->addWidget(m_descriptionSource);
+    form->addRow(m_descriptionLabel, m_descriptionField);
     m_buttonLayout->setContentsMargins(0, 4, 0, 0);
     m_buttonLayout->setSpacing(4);
     auto *body = new QVBoxLayout(m_body);
@@ -93,6 +103,12 @@ void InspectorPanel::setElement(const InspectorInfo &info, const QList<QAction *
     m_reviewed->setText(info.reviewed ? tr("\u2713 reviewed") : tr("not reviewed"));
     m_corrections->setText(info.corrections);
     m_corrections->setVisible(!info.corrections.isEmpty());
+    m_descriptionLabel->setVisible(info.describable);
+    m_descriptionField->setVisible(info.describable);
+    // never blank: where nothing describes the class, the panel says so
+    m_description->setText(info.description.isEmpty() ? info.descriptionSource : info.description);
+    m_descriptionSource->setText(info.description.isEmpty() ? QString() : info.descriptionSource);
+    m_descriptionSource->setVisible(!info.description.isEmpty());
     int i = 0;
     for (QAction *a : actions) {
         a->setParent(this);
@@ -109,12 +125,15 @@ void InspectorPanel::setElement(const InspectorInfo &info, const QList<QAction *
 
 QString InspectorPanel::fieldText(const QString &field) const
 {
-    const QHash<QString, QLabel *> labels{{QStringLiteral("kind"), m_kind},
-                                          {QStringLiteral("name"), m_name},
-                                          {QStringLiteral("type"), m_type},
-                                          {QStringLiteral("key"), m_key},
-                                          {QStringLiteral("provenance"), m_provenance},
-                                          {QStringLiteral("reviewed"), m_reviewed}};
+    const QHash<QString, QLabel *> labels{
+        {QStringLiteral("kind"), m_kind},
+        {QStringLiteral("name"), m_name},
+        {QStringLiteral("type"), m_type},
+        {QStringLiteral("key"), m_key},
+        {QStringLiteral("provenance"), m_provenance},
+        {QStringLiteral("reviewed"), m_reviewed},
+        {QStringLiteral("description"), m_description},
+        {QStringLiteral("descriptionSource"), m_descriptionSource}};
     const QLabel *l = labels.value(field);
     return l ? l->text() : QString();
 }

@@ -20,6 +20,11 @@ struct InspectorInfo
     QString provenance; ///< "recovered", "corrected by c3", "removed by c6", ...
     bool reviewed = false;
     QString corrections; ///< one line per correction that touches it
+    /// Node classes and instances: what the class does, and where that comes from ("from the
+    /// code", "written by a person", ...; NodeDescription::sourceText).
+    bool describable = false;
+    QString description; ///< "" when nothing describes it
+    QString descriptionSource;
 };
 
 /// The "Inspector" panel: the selected element's kind, name, type, stable key, provenance and
@@ -36,7 +41,8 @@ public:
     void setElement(const InspectorInfo &info, const QList<QAction *> &actions);
     const InspectorInfo &info() const { return m_info; }
     QList<QAction *> actions() const { return m_actions; }
-    /// The text of a field as shown ("kind", "name", "type", "key", "provenance", "reviewed").
+    /// The text of a field as shown ("kind", "name", "type", "key", "provenance", "reviewed",
+    /// "description", "descriptionSource").
     QString fieldText(const QString &field) const;
 
 private:
@@ -51,6 +57,10 @@ private:
     QLabel *m_provenance;
     QLabel *m_reviewed;
     QLabel *m_corrections;
+    QLabel *m_descriptionLabel; ///< the row's label
+    QWidget *m_descriptionField;
+    QLabel *m_description;
+    QLabel *m_descriptionSource;
     QWidget *m_buttons;
     QGridLayout *m_buttonLayout;
 };
