@@ -37,8 +37,8 @@ QString usageText()
     return QCoreApplication::translate(
         "rosarch::CommandLine",
         "Usage:\n"
-        "  rosarch [workspace]                       open the GUI (on the example workspace by "
-        "default)\n"
+        "  rosarch [workspace]                       open the GUI (without a workspace: the "
+        "last one, else the example)\n"
         "  rosarch recover <workspace> --out <dir> [--launch-arg name:=value]... [--launch-root "
         "<file>]\n"
         "                  [--no-decisions | --project <file>] [--render svg|png "
