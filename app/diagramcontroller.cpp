@@ -7,6 +7,7 @@
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "logview.h"
+#include "nodedescription.h"
 #include "recovereddiagrams.h"
 #include "recovery.h"
 #include "rootchoice.h"
@@ -36,6 +37,11 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     : QObject(window), m_document(document), m_panel(panel), m_launchPanel(launchPanel),
       m_traceability(traceability), m_talkers(talkers), m_log(log), m_window(window)
 {
+    // a node part's tooltip says what its class does, as the inspector does
+    m_panel->setDescriber([this](const QString &classId) {
+        const NodeDescription d = NodeDescription::of(*m_document, classId);
+        return d.text.isEmpty() ? d.sourceText() : tr("%1 (%2)").arg(d.text, d.sourceText());
+    });
     m_exportSvg = new QAction(tr("Export Diagram as &SVG…"), this);
     m_exportSvg->setStatusTip(tr("Write the composed diagram shown as an SVG drawing"));
     connect(m_exportSvg, &QAction::triggered, this,

@@ -3,6 +3,11 @@
 // description, and saying which source it is; where nothing describes the class it says so.
 #include "cacherecovery.h"
 #include "correctiongui.h"
+#include "diagramarchitecture.h"
+#include "diagramlayouter.h"
+#include "diagrampanel.h"
+#include "diagramscene.h"
+#include "diagramwait.h"
 #include "nodedescription.h"
 #include "testsupport.h"
 
@@ -10,6 +15,7 @@
 
 using namespace rosarch;
 using namespace rosarch::test;
+using rosarch::test::laidOut;
 using EKind = CorrectionController::Element::Kind;
 
 namespace {
@@ -97,6 +103,38 @@ private Q_SLOTS:
         QCOMPARE(gui.inspector.fieldText(QStringLiteral("description")),
                  QStringLiteral("No description in the code"));
         QVERIFY(gui.inspector.fieldText(QStringLiteral("descriptionSource")).isEmpty());
+    }
+
+    void aNodePartsTooltipSaysWhatItsClassDoes()
+    {
+        Architecture arch = test::diagram::architecture();
+        DiagramLayouter layouter;
+        DiagramPanel panel(&layouter);
+        panel.resize(1200, 800);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QStringList asked;
+        panel.setDescriber([&asked](const QString &classId) {
+            asked << classId;
+            return QStringLiteral("Does %1 things (from the code)").arg(classId);
+        });
+        QVERIFY(laidOut(panel, [&] { panel.setArchitecture(arch); }));
+        const Composite *shown = arch.composite(panel.currentComposite());
+        QVERIFY(shown);
+        int nodes = 0;
+        for (const RosNodePart &part : shown->parts) {
+            const QString tip = panel.scene()->toolTip(DiagramBuilder::partKey(part.id));
+            if (part.kind != RosNodePart::Kind::Node) {
+                QVERIFY2(!tip.contains(QStringLiteral("Does ")), qPrintable(tip));
+                continue;
+            }
+            ++nodes;
+            QVERIFY2(
+                tip.endsWith(QStringLiteral("Does %1 things (from the code)").arg(part.typeId)),
+                qPrintable(tip));
+        }
+        QVERIFY(nodes > 0);
+        QVERIFY(!asked.isEmpty());
     }
 
     void otherElementsHaveNoDescriptionRow()

@@ -194,6 +194,11 @@ DiagramPanel::DiagramPanel(DiagramLayouter *layouter, QWidget *parent)
     showMessage(m_emptyText);
 }
 
+void DiagramPanel::setDescriber(const std::function<QString(const QString &)> &describer)
+{
+    m_describer = describer;
+}
+
 void DiagramPanel::setEmptyText(const QString &text)
 {
     if (text == m_emptyText)
@@ -379,7 +384,13 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
     const QStringList selected = selectedKeys();
     const ViewAnchor anchor = redrawn ? ViewAnchor::of(*m_scene, *m_view, selected) : ViewAnchor();
     m_scene->setDiagram(graph, result.geometry, visibleText(c->stem), DiagramText::frameDetail(*c));
-    m_scene->setToolTips(DiagramText::toolTips(*c));
+    QHash<QString, QString> tips = DiagramText::toolTips(*c);
+    if (m_describer) // what each node does, as the inspector and the node list say it
+        for (const RosNodePart &part : c->parts)
+            if (part.kind == RosNodePart::Kind::Node)
+                if (const QString said = m_describer(part.typeId); !said.isEmpty())
+                    tips[DiagramBuilder::partKey(part.id)] += QLatin1Char('\n') + said;
+    m_scene->setToolTips(tips);
     m_scene->setMarks(m_marks);
     updateSearch(false);
     if (fit) {

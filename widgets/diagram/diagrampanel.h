@@ -12,6 +12,7 @@
 #include <QSet>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 
 class QAction;
@@ -49,6 +50,9 @@ public:
     void setArchitecture(const Architecture &architecture, const QList<LaunchRoot> &roots = {},
                          const RootChoice &start = {});
     const Architecture &architecture() const { return m_architecture; }
+    /// Gives the text a node part's tooltip ends with: what its class (by id) does and where
+    /// that comes from, or "No description in the code".
+    void setDescriber(const std::function<QString(const QString &classId)> &describer);
     /// What the panel says while the architecture has no composite (no run yet, no launch
     /// file to compose, a run stopped before a result).
     void setEmptyText(const QString &text);
@@ -248,6 +252,7 @@ private:
     QToolBar *m_viewBar; ///< zoom, fit, overview, export
     QBoxLayout *m_tools; ///< the two bars in a row, or one above the other when narrow
     QLineEdit *m_search;
+    std::function<QString(const QString &)> m_describer;
     QLabel *m_matchCount = nullptr; ///< beside the search field
     QAction *m_showParameters;
     QAction *m_showInactive;
