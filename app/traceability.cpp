@@ -1,6 +1,7 @@
 #include "traceability.h"
 #include "atomicnodemodel.h"
 #include "atomicnodepanel.h"
+#include "evidencelines.h"
 #include "launchtreemodel.h"
 #include "launchtreepanel.h"
 #include "sourceview.h"
@@ -121,9 +122,30 @@ void Traceability::onSourceLineChanged(const QString &file, int line)
         if (cls.isValid() && m_nodePanel->currentSourceIndex() != cls)
             m_nodePanel->selectSourceIndex(cls);
     }
-    const QModelIndex nodeIndex = m_nodeModel->indexAt(file, line);
+    const QModelIndex nodeIndex = preferCurrentClass(m_nodeModel->indexAt(file, line), file, line);
     if (nodeIndex.isValid())
         m_nodePanel->selectSourceIndex(nodeIndex);
+}
+
+QModelIndex Traceability::preferCurrentClass(const QModelIndex &found, const QString &file,
+                                             int line) const
+{
+    // A helper's line (a function several classes call to make a port) is the evidence of a
+    // port of each of them, all as narrow: the class the person came from keeps it, rather
+    // than whichever class comes first.
+    const AtomicNode *current = m_nodeModel->node(m_nodePanel->currentSourceIndex());
+    const AtomicNode *other = m_nodeModel->node(found);
+    int foundSpan = 0;
+    if (!current || !other || current->id == other->id ||
+        !coversLine(m_nodeModel->evidence(found), file, line, &foundSpan))
+        return found;
+    int span = 0;
+    for (const Port &p : current->ports)
+        if (coversLine(p.evidence, file, line, &span) && span <= foundSpan)
+            return m_nodeModel->portIndex(current->id, p.id);
+    if (coversLine(current->evidence, file, line, &span) && span <= foundSpan)
+        return m_nodeModel->nodeIndex(current->id);
+    return found;
 }
 
 } // namespace rosarch

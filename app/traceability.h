@@ -50,6 +50,9 @@ private:
     void onNodeSelected(const QModelIndex &sourceIndex);
     void onLaunchItemSelected(const QModelIndex &sourceIndex);
     void onSourceLineChanged(const QString &file, int line);
+    /// `found` (the innermost element of file:line), or the same line's element of the class
+    /// current in the atomic tree when that is as narrow: a helper shared by several classes.
+    QModelIndex preferCurrentClass(const QModelIndex &found, const QString &file, int line) const;
     /// Selects the class of a node instance in the atomic tree without moving the source.
     void followClass(const QModelIndex &launchIndex);
 
