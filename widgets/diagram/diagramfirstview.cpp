@@ -89,16 +89,26 @@ QString DiagramFirstView::firstComposite(const Architecture &architecture, const
         QString next;
         int most = 0;
         int own = 0;
+        int all = 0;
         for (const RosNodePart &p : c->parts) {
             if (!p.active && !inactive)
                 continue;
             if (p.kind == RosNodePart::Kind::Node) {
                 ++own;
-            } else if (const int n = count(p.instanceId); n > most) {
+                ++all;
+                continue;
+            }
+            const int n = count(p.instanceId);
+            all += n;
+            if (n > most) {
                 most = n;
                 next = p.instanceId;
             }
         }
+        // many includes of like size (a launch file per robot or per package): the system is
+        // all of them, not its first
+        if (most * 2 <= all)
+            return at;
         // a launch file of its own few nodes around the include of the system (a simulation
         // starting a robot state publisher next to the navigation's bringup) opens on that
         if (own > 0 && own * kFewerOwnNodes >= most)

@@ -255,10 +255,26 @@ void TestDiagramFirstView::aRootOfIncludesOpensWhereItsNodesAre()
         QCOMPARE(DiagramFirstView::firstComposite(simulation, QStringLiteral("lf1"), true),
                  QStringLiteral("lf4"));
     }
-    // counted without the inactive node, navigation starts as many as localization: the first
+    // counted without the inactive node, navigation starts as many as localization: neither
+    // is the system, the root shows both
     arch.composites[3].parts.removeAt(1);
     QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), false),
-             QStringLiteral("lf2"));
+             QStringLiteral("lf1"));
+    {
+        // a launch file per robot: the system is all of them, not the first robot
+        Architecture fleet;
+        fleet.composites << composite(QStringLiteral("lf1"), QStringLiteral("fleet"), {}, {});
+        for (int r = 1; r <= 3; ++r) {
+            const QString id = QStringLiteral("lf%1").arg(r + 1);
+            fleet.composites[0].parts
+                << include(QStringLiteral("part%1").arg(r), id, QStringLiteral("robot"));
+            fleet.composites << composite(id, QStringLiteral("robot"), QStringLiteral("lf1"),
+                                          {node(QStringLiteral("part1"), QStringLiteral("drive")),
+                                           node(QStringLiteral("part2"), QStringLiteral("lidar"))});
+        }
+        QCOMPARE(DiagramFirstView::firstComposite(fleet, QStringLiteral("lf1"), true),
+                 QStringLiteral("lf1"));
+    }
     QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), true),
              QStringLiteral("lf4"));
     // nothing under the root starts a node: the root
