@@ -90,6 +90,8 @@ QString DiagramFirstView::firstComposite(const Architecture &architecture, const
         int most = 0;
         int own = 0;
         int all = 0;
+        QHash<QString, int> byFile; // nodes the includes of each launch file start
+        QString nextFile;
         for (const RosNodePart &p : c->parts) {
             if (!p.active && !inactive)
                 continue;
@@ -99,15 +101,20 @@ QString DiagramFirstView::firstComposite(const Architecture &architecture, const
                 continue;
             }
             const int n = count(p.instanceId);
+            const Composite *included = architecture.composite(p.instanceId);
+            const QString file = included ? included->file : p.instanceId;
             all += n;
+            byFile[file] += n;
             if (n > most) {
                 most = n;
                 next = p.instanceId;
+                nextFile = file;
             }
         }
-        // many includes of like size (a launch file per robot or per package): the system is
-        // all of them, not its first
-        if (most * 2 <= all)
+        // The biggest include goes first when it, with its copies (the same launch file once
+        // per robot), starts most of the nodes; includes of many launch files alike in size
+        // (one per package) are the system together, shown from here.
+        if (!next.isEmpty() && byFile.value(nextFile) * 2 <= all)
             return at;
         // a launch file of its own few nodes around the include of the system (a simulation
         // starting a robot state publisher next to the navigation's bringup) opens on that

@@ -23,9 +23,9 @@ public:
     static bool sameCollapse(const DiagramOptions &a, const DiagramOptions &b);
     /// The composite the first view of system `rootId` opens on, so that it shows the system's
     /// nodes: the root itself when it starts nodes of its own, else, down the include tree, the
-    /// included launch file that starts most of the nodes (more than half), until one whose own
-    /// nodes are at least a kFewerOwnNodes-th of those its biggest include starts (the
-    /// breadcrumbs lead back up).
+    /// included launch file that starts most of the nodes (more than half; of copies of one
+    /// launch file, one per robot, the first), until one whose own nodes are at least a
+    /// kFewerOwnNodes-th of those its biggest include starts (the breadcrumbs lead back up).
     /// Inactive parts count only with `inactive`. `rootId` when nothing under it starts a node.
     static constexpr int kFewerOwnNodes = 4;
     static QString firstComposite(const Architecture &architecture, const QString &rootId,

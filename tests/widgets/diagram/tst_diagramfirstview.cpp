@@ -261,19 +261,25 @@ void TestDiagramFirstView::aRootOfIncludesOpensWhereItsNodesAre()
     QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), false),
              QStringLiteral("lf1"));
     {
-        // a launch file per robot: the system is all of them, not the first robot
-        Architecture fleet;
-        fleet.composites << composite(QStringLiteral("lf1"), QStringLiteral("fleet"), {}, {});
+        // one launch file per package, alike in size: the system is all of them
+        Architecture packages;
+        packages.composites << composite(QStringLiteral("lf1"), QStringLiteral("all"), {}, {});
         for (int r = 1; r <= 3; ++r) {
             const QString id = QStringLiteral("lf%1").arg(r + 1);
-            fleet.composites[0].parts
-                << include(QStringLiteral("part%1").arg(r), id, QStringLiteral("robot"));
-            fleet.composites << composite(id, QStringLiteral("robot"), QStringLiteral("lf1"),
-                                          {node(QStringLiteral("part1"), QStringLiteral("drive")),
-                                           node(QStringLiteral("part2"), QStringLiteral("lidar"))});
+            const QString stem = QStringLiteral("pkg_%1").arg(r);
+            packages.composites[0].parts << include(QStringLiteral("part%1").arg(r), id, stem);
+            packages.composites << composite(
+                id, stem, QStringLiteral("lf1"),
+                {node(QStringLiteral("part1"), QStringLiteral("drive")),
+                 node(QStringLiteral("part2"), QStringLiteral("lidar"))});
         }
-        QCOMPARE(DiagramFirstView::firstComposite(fleet, QStringLiteral("lf1"), true),
+        QCOMPARE(DiagramFirstView::firstComposite(packages, QStringLiteral("lf1"), true),
                  QStringLiteral("lf1"));
+        // copies of one launch file, one per robot: the first robot's nodes
+        for (int r = 1; r <= 3; ++r)
+            packages.composites[r].file = QStringLiteral("src/nav/launch/robot.launch.py");
+        QCOMPARE(DiagramFirstView::firstComposite(packages, QStringLiteral("lf1"), true),
+                 QStringLiteral("lf2"));
     }
     QCOMPARE(DiagramFirstView::firstComposite(arch, QStringLiteral("lf1"), true),
              QStringLiteral("lf4"));
