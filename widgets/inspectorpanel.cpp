@@ -32,11 +32,10 @@ InspectorPanel::InspectorPanel(QWidget *parent)
 {
     m_placeholder->setAlignment(Qt::AlignCenter);
     m_placeholder->setWordWrap(true);
-    m_placeholder->setMargin(16);
+    m_placeholder->setObjectName(QStringLiteral("inspectorHint"));
+    m_placeholder->setMargin(4); // whole in the short dock of a 700-pixel-high window
     m_placeholder->setForegroundRole(QPalette::PlaceholderText);
-    m_placeholder->setText(
-        tr("Select a class, port, node instance, launch file, part or topic to see where it "
-           "comes from and to correct it."));
+    m_placeholder->setText(tr("Select an element to see where it comes from and to correct it."));
     QFont name = m_name->font();
     name.setBold(true);
     m_name->setFont(name);

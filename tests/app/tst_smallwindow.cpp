@@ -5,6 +5,7 @@
 #include "diagnosticfilterbar.h"
 #include "diagrambreadcrumbbar.h"
 #include "diagrampanel.h"
+#include "diagramrootpicker.h"
 #include "guifixture.h"
 #include "launchtreepanel.h"
 #include "logview.h"
@@ -138,8 +139,9 @@ private Q_SLOTS:
         QVERIFY(diagram->searchField()->width() >=
                 diagram->searchField()->minimumSizeHint().width());
 
-        // The diagram's header with a path too long for it: names cut in their middle, never
-        // drawn over each other or past the header; the note goes first.
+        // The diagram's header with a path too long for it: never drawn over each other or
+        // past the header; the note goes first, then the crumbs between the root and the
+        // composite shown, then the middle of the names; the name shown stays readable.
         DiagramBreadcrumbBar *crumbs = diagram->breadcrumbBar();
         QList<DiagramBreadcrumbBar::Crumb> path;
         for (int i = 0; i < 3; ++i)
@@ -158,13 +160,28 @@ private Q_SLOTS:
             QVERIFY2(at.left() >= right,
                      qPrintable(child->objectName() + QStringLiteral(" overlaps")));
             right = at.right() + 1;
-            if (auto *button = qobject_cast<QToolButton *>(child)) {
+            if (auto *button = qobject_cast<QToolButton *>(child))
                 QVERIFY2(button->width() >= button->sizeHint().width(), qPrintable(button->text()));
-                QVERIFY(button->text().contains(QStringLiteral("…")));
-            }
         }
         const auto *note = crumbs->findChild<QLabel *>(QStringLiteral("crumbNote"));
         QVERIFY(note && !note->isVisible());
+        QVERIFY(!crumbs->button(QStringLiteral("lf1"))->isVisible()); // the middle one went
+        const QToolButton *shown = crumbs->button(QStringLiteral("lf2"));
+        QVERIFY2(shown->isVisible() && shown->text().size() >= 12, qPrintable(shown->text()));
+
+        // The root picker's entry, cut in the narrow header, is whole in its tooltip.
+        auto *picker = diagram->findChild<DiagramRootPicker *>();
+        QVERIFY(picker && picker->currentIndex() >= 0);
+        QVERIFY2(picker->toolTip().startsWith(picker->currentText()),
+                 qPrintable(picker->toolTip()));
+
+        // The inspector's hint is whole in its short dock.
+        const auto *hint = w.findChild<QLabel *>(QStringLiteral("inspectorHint"));
+        QVERIFY(hint && hint->isVisible());
+        QVERIFY2(hint->heightForWidth(hint->width()) <= hint->height(),
+                 qPrintable(QStringLiteral("%1 px needed, %2 px given")
+                                .arg(hint->heightForWidth(hint->width()))
+                                .arg(hint->height())));
 
         // The two trees: their filters whole, and a screenful of rows.
         for (FilteredTreePanel *panel : {static_cast<FilteredTreePanel *>(w.nodePanel()),

@@ -79,10 +79,11 @@ void DiagramBreadcrumbBar::resizeEvent(QResizeEvent *event)
 void DiagramBreadcrumbBar::fitToWidth()
 {
     QList<QToolButton *> buttons;
+    QList<QLabel *> separators; // separators[i] comes before buttons[i + 1]
     QLabel *note = nullptr;
-    int fixed = 0; // separators
     int full = 0;
     for (QWidget *w : std::as_const(m_widgets)) {
+        w->setVisible(true);
         if (auto *button = qobject_cast<QToolButton *>(w)) {
             const int i = int(buttons.size());
             buttons << button;
@@ -92,32 +93,66 @@ void DiagramBreadcrumbBar::fitToWidth()
             note = static_cast<QLabel *>(w);
             full += note->sizeHint().width();
         } else {
-            fixed += w->sizeHint().width();
+            auto *separator = static_cast<QLabel *>(w);
+            separator->setText(QStringLiteral(" › "));
+            separators << separator;
+            full += separator->sizeHint().width();
         }
     }
     const QMargins margins = m_layout->contentsMargins();
-    m_fullWidth = full + fixed + margins.left() + margins.right();
+    m_fullWidth = full + margins.left() + margins.right();
     updateGeometry();
-    const int available = width() - margins.left() - margins.right() - fixed;
-    int crumbs = 0;
-    for (const QToolButton *button : std::as_const(buttons))
-        crumbs += button->sizeHint().width();
+    const auto shownWidth = [&] {
+        int sum = 0;
+        for (const QToolButton *button : std::as_const(buttons))
+            sum += button->isVisibleTo(this) ? button->sizeHint().width() : 0;
+        for (const QLabel *separator : std::as_const(separators))
+            sum += separator->isVisibleTo(this) ? separator->sizeHint().width() : 0;
+        return sum;
+    };
+    const int available = width() - margins.left() - margins.right();
     if (note)
-        note->setVisible(crumbs + note->sizeHint().width() <= available);
-    if (crumbs <= available || buttons.isEmpty())
+        note->setVisible(shownWidth() + note->sizeHint().width() <= available);
+    if (shownWidth() <= available || buttons.isEmpty())
         return;
-    // The name shown gets two shares, the others one each; short names give what they do
-    // not use to the rest.
-    QList<QToolButton *> order = buttons.mid(0, buttons.size() - 1);
+    // The name shown must stay readable: the crumbs between the root and it go first, from the
+    // root's side ("root › … › parent › shown"); their tooltips are the picker's and Back's.
+    const int keepWhole =
+        std::min(buttons.last()->sizeHint().width(), fontMetrics().averageCharWidth() * 16);
+    for (qsizetype i = 1; i + 1 < buttons.size(); ++i) {
+        const int others = shownWidth() - buttons.last()->sizeHint().width();
+        if (others + keepWhole <= available)
+            break;
+        buttons[i]->setVisible(false);
+        separators[i]->setVisible(false); // the one after it
+        separators[0]->setText(QStringLiteral(" › … › "));
+    }
+    if (buttons.size() > 1 &&
+        shownWidth() - buttons.last()->sizeHint().width() + keepWhole > available) {
+        buttons.first()->setVisible(false); // even the root: "… › shown"
+        separators[0]->setText(QStringLiteral("… › "));
+    }
+    if (shownWidth() <= available)
+        return;
+    // The name shown keeps what it needs to stay readable, the others share the rest; short
+    // names give what they do not use to the rest.
+    QList<QToolButton *> order;
+    for (QToolButton *button : buttons.mid(0, buttons.size() - 1))
+        if (button->isVisibleTo(this))
+            order << button;
     std::sort(order.begin(), order.end(), [](const QToolButton *a, const QToolButton *b) {
         return a->sizeHint().width() < b->sizeHint().width();
     });
     order << buttons.last();
     int left = available;
+    for (const QLabel *separator : std::as_const(separators))
+        left -= separator->isVisibleTo(this) ? separator->sizeHint().width() : 0;
+    const int reserve = std::min(keepWhole, left / 2);
     for (int i = 0; i < order.size(); ++i) {
         QToolButton *button = order[i];
-        const int shares = int(order.size() - i) + 1;
-        const int share = std::max(0, i + 1 == order.size() ? left : left / shares);
+        const bool shown = i + 1 == order.size();
+        const int others = int(order.size()) - 1 - i; // this one and those after it
+        const int share = std::max(0, shown ? left : (left - reserve) / others);
         const int wanted = button->sizeHint().width();
         if (wanted > share) {
             const QFontMetrics fm(button->font());

@@ -31,7 +31,8 @@ DiagramRootPicker::DiagramRootPicker(QWidget *parent) : QComboBox(parent)
     completer()->setCompletionMode(QCompleter::PopupCompletion);
     completer()->setCaseSensitivity(Qt::CaseInsensitive);
     lineEdit()->setPlaceholderText(tr("Root launch file"));
-    setToolTip(tr("The root launch file whose system the diagram shows; type to find one"));
+    connect(this, &QComboBox::currentIndexChanged, this, &DiagramRootPicker::updateToolTip);
+    updateToolTip();
     // Typing opens the completer's list: it is fitted then, as the combo box's own when shown.
     connect(lineEdit(), &QLineEdit::textEdited, this, [this] { fitListWidth(Fit::Now); });
     connect(this, &QComboBox::activated, this, [this](int index) {
@@ -108,9 +109,19 @@ void DiagramRootPicker::setCurrentRoot(const QString &instanceId)
     const QSignalBlocker blocker(this);
     const int index = findData(instanceId);
     setCurrentIndex(index);
+    updateToolTip(); // the signal is blocked
     if (index < 0)
         lineEdit()->clear();
     lineEdit()->setCursorPosition(0); // the name's start, not its end, when it is cut
+}
+
+void DiagramRootPicker::updateToolTip()
+{
+    // the whole entry, when a narrow header cuts it
+    const QString hint =
+        tr("The root launch file whose system the diagram shows; type to find one");
+    const int index = currentIndex();
+    setToolTip(index < 0 ? hint : itemText(index) + QLatin1Char('\n') + hint);
 }
 
 QString DiagramRootPicker::currentRoot() const

@@ -32,6 +32,8 @@ protected:
     void focusOutEvent(QFocusEvent *event) override;
 
 private:
+    /// The current entry, whole, above what the picker is for.
+    void updateToolTip();
     enum class Fit
     {
         Now,
