@@ -14,6 +14,7 @@ const QString kRecentProjects = QStringLiteral("projects/recent");
 const QString kExport = QStringLiteral("workspaces/lastExportFolder");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kState = QStringLiteral("window/state");
+const QString kStateSize = QStringLiteral("window/stateSize");
 const QString kSelWorkspace = QStringLiteral("session/workspace");
 const QString kSelNode = QStringLiteral("session/node");
 const QString kSelPort = QStringLiteral("session/port");
@@ -164,6 +165,16 @@ QByteArray AppSettings::windowState() const
 void AppSettings::setWindowState(const QByteArray &state)
 {
     m_settings->setValue(kState, state);
+}
+
+QSize AppSettings::windowStateSize() const
+{
+    return m_settings->value(kStateSize).toSize();
+}
+
+void AppSettings::setWindowStateSize(const QSize &size)
+{
+    m_settings->setValue(kStateSize, size);
 }
 
 void AppSettings::selection(const QString &workspace, QString *nodeId, QString *portId) const

@@ -4,6 +4,7 @@
 #include "llmsettings.h"
 
 #include <QByteArray>
+#include <QSize>
 #include <QStringList>
 #include <QVariantMap>
 
@@ -44,6 +45,9 @@ public:
     void setWindowGeometry(const QByteArray &geometry);
     QByteArray windowState() const;
     void setWindowState(const QByteArray &state);
+    /// The window size the dock state was saved at (invalid when not known).
+    QSize windowStateSize() const;
+    void setWindowStateSize(const QSize &size);
 
     /// The node (and port) selected when the window closed on `workspace`.
     void selection(const QString &workspace, QString *nodeId, QString *portId) const;

@@ -287,7 +287,7 @@ void MainWindow::resetLayout()
     // bottom. Growing the window grows them all. In a small window the Log takes the whole bottom
     // row, Suggestions a tab beside it: side by side at 1024 px its filter bar took three lines and
     // the table showed two findings.
-    const bool small = width() < 1280 || height() < 800;
+    const bool small = isSmallLayout(size());
     addDockWidget(Qt::TopDockWidgetArea, m_nodeDock);
     splitDockWidget(m_nodeDock, small ? m_logDock : m_suggestionDock, Qt::Vertical);
     if (small)
@@ -342,8 +342,19 @@ void MainWindow::restoreSession()
         resetLayout();
         m_defaultState = saveState();
     }
-    restoreState(settings.windowState());
+    // A layout saved in a window of the other size class (the large one's side-by-side Log on
+    // a small screen) would be cramped: the layout of this size is made instead.
+    const QSize savedAt = settings.windowStateSize();
+    if (!savedAt.isValid() || isSmallLayout(savedAt) == isSmallLayout(size()))
+        restoreState(settings.windowState());
+    else
+        resetLayout();
     m_logView->filterBar()->restoreState(settings.logFilter());
+}
+
+bool MainWindow::isSmallLayout(const QSize &size)
+{
+    return size.width() < 1280 || size.height() < 800;
 }
 
 void MainWindow::saveSession()
@@ -353,6 +364,7 @@ void MainWindow::saveSession()
     AppSettings settings;
     settings.setWindowGeometry(saveGeometry());
     settings.setWindowState(saveState());
+    settings.setWindowStateSize(size());
     settings.setLogFilter(m_logView->filterBar()->state());
     if (!workspace().isEmpty()) {
         settings.setSelection(workspace(), m_traceability->currentNodeId(),

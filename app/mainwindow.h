@@ -127,6 +127,8 @@ private:
     void createMenus();
     void createStatusBar();
     void restoreSession();
+    /// Whether a window of `size` gets the small layout (the Log across the bottom).
+    static bool isSmallLayout(const QSize &size);
     void saveSession();
     void resetLayout();
     void takeOutDock(QDockWidget *dock);

@@ -108,6 +108,43 @@ private Q_SLOTS:
             QVERIFY2(other->visibleRegion().isEmpty(), qPrintable(other->objectName()));
     }
 
+    void aLayoutSavedInALargeWindowIsNotForcedOnASmallOne()
+    {
+        // Before: a layout saved at 1600 x 1000 (Suggestions beside the Log) came back in a
+        // 1024 x 700 window, cramped, until Reset Layout.
+        QByteArray smallGeometry;
+        {
+            MainWindow w;
+            w.show();
+            w.resize(1024, 700);
+            QTRY_COMPARE(w.height(), 700);
+            smallGeometry = w.saveGeometry();
+            w.resize(1600, 1000);
+            QTRY_COMPARE(w.height(), 1000);
+            QVERIFY(resetLayout(w));
+            QDockWidget *log = w.findChild<QDockWidget *>(QStringLiteral("logDock"));
+            QVERIFY(log && !w.tabifiedDockWidgets(log).contains(w.findChild<QDockWidget *>(
+                               QStringLiteral("suggestionsDock")))); // beside it
+            w.close();
+        }
+        AppSettings().setWindowGeometry(smallGeometry); // the same person, on a laptop
+        MainWindow again;
+        again.show();
+        QTRY_COMPARE(again.height(), 700);
+        QDockWidget *log = again.findChild<QDockWidget *>(QStringLiteral("logDock"));
+        QDockWidget *suggestions =
+            again.findChild<QDockWidget *>(QStringLiteral("suggestionsDock"));
+        QVERIFY(log && suggestions);
+        QVERIFY(again.tabifiedDockWidgets(log).contains(suggestions)); // the small layout
+        // and a layout saved in a window of this size is kept
+        suggestions->hide();
+        again.close();
+        MainWindow third;
+        third.show();
+        QTRY_COMPARE(third.height(), 700);
+        QVERIFY(!third.findChild<QDockWidget *>(QStringLiteral("suggestionsDock"))->isVisible());
+    }
+
     void logFilterIsRemembered()
     {
         {
