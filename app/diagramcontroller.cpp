@@ -40,7 +40,16 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
     // a node part's tooltip says what its class does, as the inspector does
     m_panel->setDescriber([this](const QString &classId) {
         const NodeDescription d = NodeDescription::of(*m_document, classId);
-        return d.text.isEmpty() ? d.sourceText() : tr("%1 (%2)").arg(d.text, d.sourceText());
+        if (d.text.isEmpty())
+            return d.sourceText();
+        // a plain-text tooltip does not wrap: lines of at most about 80 characters
+        QStringList lines{QString()};
+        for (const QString &word : tr("%1 (%2)").arg(d.text, d.sourceText()).split(u' ')) {
+            if (!lines.last().isEmpty() && lines.last().size() + 1 + word.size() > 80)
+                lines.append(QString());
+            lines.last() += (lines.last().isEmpty() ? QString() : QStringLiteral(" ")) + word;
+        }
+        return lines.join(u'\n');
     });
     m_exportSvg = new QAction(tr("Export Diagram as &SVG…"), this);
     m_exportSvg->setStatusTip(tr("Write the composed diagram shown as an SVG drawing"));
