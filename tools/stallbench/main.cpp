@@ -284,7 +284,7 @@ int main(int argc, char **argv)
             app.beginPhase(phase);
             // As keys come: posted events, each dispatched on its own (a key a person types
             // waits for the one before it).
-            const auto press = [&app, edit = box.edit](Qt::Key key, const QString &chars) {
+            const auto press = [edit = box.edit](Qt::Key key, const QString &chars) {
                 const StallScope scope("a key typed into a filter box");
                 QCoreApplication::postEvent(
                     edit, new QKeyEvent(QEvent::KeyPress, key, Qt::NoModifier, chars));
