@@ -9,6 +9,12 @@
 
 namespace rosarch::test {
 
+/// `relative` in the source tree (`schemas/x.schema.json`).
+inline QString sourceFile(const QString &relative)
+{
+    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(relative);
+}
+
 /// Validates `files` against the schema file `schema`: the validator's exit code (0: all
 /// valid, 1: one is invalid; -1: it did not finish, -2: it crashed) and its output.
 inline int validateJsonSchema(const QString &schema, const QStringList &files, QString *output)

@@ -12,16 +12,11 @@ using namespace rosarch;
 
 namespace {
 
-QString source(const QString &rel)
-{
-    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(rel);
-}
-
 /// Runs the schema validator on `file`; its exit code (0: valid, 1: invalid) and output.
 int validate(const QString &file, QString *output)
 {
-    return test::validateJsonSchema(source(QStringLiteral("schemas/architecture.schema.json")),
-                                    {file}, output);
+    return test::validateJsonSchema(
+        test::sourceFile(QStringLiteral("schemas/architecture.schema.json")), {file}, output);
 }
 
 Evidence at(int line)

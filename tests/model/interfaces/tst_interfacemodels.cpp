@@ -16,11 +16,6 @@ using namespace rosarch;
 
 namespace {
 
-QString source(const QString &rel)
-{
-    return QDir(QStringLiteral(ROSARCH_SOURCE_DIR)).filePath(rel);
-}
-
 } // namespace
 
 class TestInterfaceModels : public QObject
@@ -29,14 +24,15 @@ class TestInterfaceModels : public QObject
 private Q_SLOTS:
     void everyModelLoadsAndValidates()
     {
-        const QDir dir(source(QStringLiteral("interfaces/models")));
+        const QDir dir(test::sourceFile(QStringLiteral("interfaces/models")));
         QStringList files;
         for (const QString &f : dir.entryList({QStringLiteral("*.json")}, QDir::Files))
             files << dir.filePath(f);
         QVERIFY(files.size() >= 7);
         QString output;
         QCOMPARE(test::validateJsonSchema(
-                     source(QStringLiteral("schemas/interface-model.schema.json")), files, &output),
+                     test::sourceFile(QStringLiteral("schemas/interface-model.schema.json")), files,
+                     &output),
                  0);
         // The same files, as the tool reads them (from its resources), without a problem.
         QStringList problems;
@@ -51,10 +47,10 @@ private Q_SLOTS:
         bad.write(R"({"name": "x", "package": "x", "executables": ["x"],
                       "ports": [{"kind": "publisher", "name": "out"}]})");
         bad.close();
-        QCOMPARE(
-            test::validateJsonSchema(source(QStringLiteral("schemas/interface-model.schema.json")),
-                                     {bad.fileName()}, &output),
-            1);
+        QCOMPARE(test::validateJsonSchema(
+                     test::sourceFile(QStringLiteral("schemas/interface-model.schema.json")),
+                     {bad.fileName()}, &output),
+                 1);
         InterfaceModels::fromFolder(tmp.path(), &problems);
         QCOMPARE(problems, (QStringList{QStringLiteral(
                                "bad.json: x: a port needs a known kind, a name and a type "
@@ -65,8 +61,8 @@ private Q_SLOTS:
     {
         QString output;
         QCOMPARE(test::validateJsonSchema(
-                     source(QStringLiteral("schemas/observability.schema.json")),
-                     {source(QStringLiteral("interfaces/observability.json"))}, &output),
+                     test::sourceFile(QStringLiteral("schemas/observability.schema.json")),
+                     {test::sourceFile(QStringLiteral("interfaces/observability.json"))}, &output),
                  0);
         const Observability &o = Observability::builtIn();
         QVERIFY(!o.isEmpty());
