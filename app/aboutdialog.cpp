@@ -1,5 +1,5 @@
-#include "aboutdialog.h"
-#include "icons.h"
+#include "app/aboutdialog.h"
+#include "widgets/icons.h"
 
 #include <Qsci/qsciglobal.h>
 #include <tree_sitter/api.h>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchanalyzer.h"
-#include "llmsettings.h"
+#include "launch/launchanalyzer.h"
+#include "suggestions/llm/llmsettings.h"
 
 #include <QByteArray>
 #include <QSize>

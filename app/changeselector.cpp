@@ -1,9 +1,9 @@
-#include "changeselector.h"
-#include "architecturediffview.h"
-#include "diagrambuilder.h"
-#include "diagrampanel.h"
-#include "document.h"
-#include "traceability.h"
+#include "app/changeselector.h"
+#include "app/traceability.h"
+#include "diagram/diagrambuilder.h"
+#include "document/document.h"
+#include "widgets/architecturediffview.h"
+#include "widgets/diagram/diagrampanel.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
-#include "comparecontroller.h"
-#include "architecturediffview.h"
-#include "document.h"
-#include "gitrevision.h"
-#include "logview.h"
-#include "recovery.h"
+#include "app/comparecontroller.h"
+#include "diff/gitrevision.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "widgets/architecturediffview.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QDir>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "architecturediff.h"
-#include "jobrunner.h"
+#include "diff/architecturediff.h"
+#include "jobs/jobrunner.h"
 
 #include <QObject>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "correction.h"
-#include "correctionindex.h"
-#include "inspectorpanel.h"
+#include "project/correction.h"
+#include "widgets/correctionindex.h"
+#include "widgets/inspectorpanel.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,9 +1,9 @@
 #pragma once
 
 // Lookups the correction controller's views and edits share (internal to app/).
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchdependencies.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
 
 #include <QString>
 

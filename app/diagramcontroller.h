@@ -1,9 +1,9 @@
 #pragma once
 
-#include "composition.h"
-#include "evaluation.h"
-#include "subsystemgroup.h"
-#include "talkersearch.h"
+#include "core/composition.h"
+#include "core/subsystemgroup.h"
+#include "evaluation/evaluation.h"
+#include "widgets/talkersearch.h"
 
 #include <QObject>
 

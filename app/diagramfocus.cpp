@@ -1,4 +1,4 @@
-#include "diagramfocus.h"
+#include "app/diagramfocus.h"
 
 #include <QAction>
 #include <QDockWidget>

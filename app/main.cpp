@@ -1,7 +1,7 @@
-#include "appsettings.h"
-#include "commandline.h"
-#include "helperprogram.h"
-#include "mainwindow.h"
+#include "app/appsettings.h"
+#include "app/commands/commandline.h"
+#include "app/mainwindow.h"
+#include "core/helperprogram.h"
 
 #include <QApplication>
 #include <QCoreApplication>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchanalyzer.h"
+#include "launch/launchanalyzer.h"
 
 #include <QMainWindow>
 

@@ -1,12 +1,12 @@
 // The main window's part of corrections: the Corrections and Inspector docks, the
 // controller that makes corrections where the element is, and the Model menu.
-#include "correctioncontroller.h"
-#include "correctionmodel.h"
-#include "correctionpanel.h"
-#include "diagramcontroller.h"
-#include "document.h"
-#include "inspectorpanel.h"
-#include "mainwindow.h"
+#include "app/correctioncontroller.h"
+#include "app/diagramcontroller.h"
+#include "app/mainwindow.h"
+#include "document/document.h"
+#include "widgets/correctionmodel.h"
+#include "widgets/correctionpanel.h"
+#include "widgets/inspectorpanel.h"
 
 #include <QDockWidget>
 #include <QMenu>

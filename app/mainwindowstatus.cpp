@@ -1,13 +1,13 @@
 // The main window's status bar: the counts of what the stages found, the progress of a run
 // with its cancel button, and the launch tree's placeholder while there is nothing to show.
-#include "atomicnodepanel.h"
-#include "diagrampanel.h"
-#include "document.h"
-#include "launchtreepanel.h"
-#include "logview.h"
-#include "mainwindow.h"
-#include "recovery.h"
-#include "stagerunner.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QFrame>

@@ -1,12 +1,12 @@
-#include "navigationcontroller.h"
-#include "atomicnodepanel.h"
-#include "diagnosticmodel.h"
-#include "diagrambuilder.h"
-#include "diagrampanel.h"
-#include "document.h"
-#include "launchtreepanel.h"
-#include "logview.h"
-#include "sourceview.h"
+#include "app/navigationcontroller.h"
+#include "diagram/diagrambuilder.h"
+#include "document/document.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagnosticmodel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/logview.h"
+#include "widgets/sourceview.h"
 
 #include <Qsci/qsciscintilla.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "navigationhistory.h"
+#include "app/navigationhistory.h"
 
 #include <QObject>
 

@@ -1,15 +1,15 @@
-#include "parametercontroller.h"
+#include "app/parametercontroller.h"
 
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "parameterpanel.h"
-#include "parametertablemodel.h"
-#include "parameterview.h"
-#include "rosnames.h"
-#include "traceability.h"
+#include "app/traceability.h"
+#include "core/parameterview.h"
+#include "core/rosnames.h"
+#include "document/document.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/parameterpanel.h"
+#include "widgets/parametertablemodel.h"
 
 namespace rosarch {
 

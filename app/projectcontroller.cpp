@@ -1,8 +1,8 @@
-#include "projectcontroller.h"
-#include "appsettings.h"
-#include "document.h"
-#include "logview.h"
-#include "project.h"
+#include "app/projectcontroller.h"
+#include "app/appsettings.h"
+#include "document/document.h"
+#include "project/project.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QDateTime>

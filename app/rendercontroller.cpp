@@ -1,9 +1,9 @@
-#include "rendercontroller.h"
-#include "appsettings.h"
-#include "artifactwriter.h"
-#include "document.h"
-#include "logview.h"
-#include "plantumlrenderer.h"
+#include "app/rendercontroller.h"
+#include "app/appsettings.h"
+#include "artifacts/artifactwriter.h"
+#include "document/document.h"
+#include "plantuml/plantumlrenderer.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QDir>

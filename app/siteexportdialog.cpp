@@ -1,6 +1,6 @@
-#include "siteexportdialog.h"
-#include "appsettings.h"
-#include "sitesource.h"
+#include "app/siteexportdialog.h"
+#include "app/appsettings.h"
+#include "site/sitesource.h"
 
 #include <QDialogButtonBox>
 #include <QDir>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sitegenerator.h"
+#include "site/sitegenerator.h"
 
 #include <QDialog>
 

@@ -1,9 +1,9 @@
-#include "stagecontroller.h"
-#include "appsettings.h"
-#include "document.h"
-#include "logview.h"
-#include "stallprobe.h"
-#include "traceability.h"
+#include "app/stagecontroller.h"
+#include "app/appsettings.h"
+#include "app/traceability.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
+#include "widgets/logview.h"
 
 #include <utility>
 

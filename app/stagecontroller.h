@@ -1,9 +1,9 @@
 #pragma once
 
-#include "launchanalyzer.h"
-#include "launchdependencies.h"
-#include "recovery.h"
-#include "stagerunner.h"
+#include "app/stagerunner.h"
+#include "core/launchdependencies.h"
+#include "launch/launchanalyzer.h"
+#include "pipeline/recovery.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,5 +1,5 @@
-#include "stagerunner.h"
-#include "disposal.h"
+#include "app/stagerunner.h"
+#include "jobs/disposal.h"
 
 #include <exception>
 

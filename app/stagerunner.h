@@ -1,13 +1,13 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "jobrunner.h"
-#include "launchanalyzer.h"
-#include "launchdependencies.h"
-#include "recovery.h"
-#include "stagecontrol.h"
-#include "stageprocess.h"
-#include "stagesession.h"
+#include "core/atomicnodelist.h"
+#include "core/launchdependencies.h"
+#include "core/stagecontrol.h"
+#include "jobs/jobrunner.h"
+#include "launch/launchanalyzer.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stageprocess.h"
+#include "pipeline/stagesession.h"
 
 #include <QObject>
 

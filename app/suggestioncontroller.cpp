@@ -1,9 +1,9 @@
-#include "suggestioncontroller.h"
-#include "appsettings.h"
-#include "document.h"
-#include "llmsettingsdialog.h"
-#include "suggestionmodel.h"
-#include "suggestionpanel.h"
+#include "app/suggestioncontroller.h"
+#include "app/appsettings.h"
+#include "document/document.h"
+#include "widgets/llmsettingsdialog.h"
+#include "widgets/suggestionmodel.h"
+#include "widgets/suggestionpanel.h"
 
 #include <QUrl>
 

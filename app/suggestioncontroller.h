@@ -1,8 +1,8 @@
 #pragma once
 
-#include "evidence.h"
-#include "suggestionreport.h"
-#include "suggestionrunner.h"
+#include "app/suggestionrunner.h"
+#include "core/evidence.h"
+#include "suggestions/suggestionreport.h"
 
 #include <QObject>
 

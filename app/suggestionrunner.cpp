@@ -1,5 +1,5 @@
-#include "suggestionrunner.h"
-#include "suggestionengine.h"
+#include "app/suggestionrunner.h"
+#include "suggestions/suggestionengine.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "jobrunner.h"
-#include "llmsettings.h"
-#include "recovery.h"
-#include "suggestionreport.h"
+#include "jobs/jobrunner.h"
+#include "pipeline/recovery.h"
+#include "suggestions/llm/llmsettings.h"
+#include "suggestions/suggestionreport.h"
 
 #include <QObject>
 

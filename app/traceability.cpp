@@ -1,10 +1,10 @@
-#include "traceability.h"
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "evidencelines.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "sourceview.h"
+#include "app/traceability.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/evidencelines.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/sourceview.h"
 
 #include <QScopedValueRollback>
 #include <QTreeView>

@@ -1,5 +1,5 @@
-#include "workspacewatcher.h"
-#include "stallprobe.h"
+#include "app/workspacewatcher.h"
+#include "jobs/stallprobe.h"
 
 #include <QDateTime>
 #include <QDir>

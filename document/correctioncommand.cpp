@@ -1,5 +1,5 @@
-#include "correctioncommand.h"
-#include "document.h"
+#include "document/correctioncommand.h"
+#include "document/document.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "correction.h"
+#include "project/correction.h"
 
 #include <QUndoCommand>
 

@@ -1,4 +1,4 @@
-#include "decidesuggestioncommand.h"
+#include "document/decidesuggestioncommand.h"
 
 #include <QCoreApplication>
 

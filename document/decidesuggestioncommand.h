@@ -1,7 +1,7 @@
 #pragma once
 
-#include "document.h"
-#include "suggestion.h"
+#include "core/suggestion.h"
+#include "document/document.h"
 
 #include <QUndoCommand>
 

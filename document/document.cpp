@@ -1,10 +1,10 @@
-#include "document.h"
-#include "correctioncommand.h"
-#include "decidesuggestioncommand.h"
-#include "decisionstore.h"
-#include "disposal.h"
-#include "project.h"
-#include "stallprobe.h"
+#include "document/document.h"
+#include "accepted/decisionstore.h"
+#include "document/correctioncommand.h"
+#include "document/decidesuggestioncommand.h"
+#include "jobs/disposal.h"
+#include "jobs/stallprobe.h"
+#include "project/project.h"
 
 #include <QCoreApplication>
 #include <QFile>

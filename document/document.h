@@ -1,15 +1,15 @@
 #pragma once
 
-#include "acceptedmodel.h"
-#include "atomicnodelist.h"
-#include "correctedmodel.h"
-#include "documentchange.h"
-#include "launchanalyzer.h"
-#include "launchdependencies.h"
-#include "recovery.h"
-#include "subsystemgroup.h"
-#include "suggestiondecision.h"
-#include "suggestionreport.h"
+#include "accepted/acceptedmodel.h"
+#include "accepted/suggestiondecision.h"
+#include "core/atomicnodelist.h"
+#include "core/launchdependencies.h"
+#include "core/subsystemgroup.h"
+#include "document/documentchange.h"
+#include "launch/launchanalyzer.h"
+#include "pipeline/recovery.h"
+#include "project/correctedmodel.h"
+#include "suggestions/suggestionreport.h"
 
 #include <QFuture>
 #include <QFutureWatcher>

@@ -1,10 +1,10 @@
 // Document: the model as corrected, stable keys, and corrections (blueprint §5).
-#include "correctioncommand.h"
-#include "decidesuggestioncommand.h"
-#include "decisionstore.h"
-#include "document.h"
-#include "project.h"
-#include "threadpriority.h"
+#include "accepted/decisionstore.h"
+#include "core/threadpriority.h"
+#include "document/correctioncommand.h"
+#include "document/decidesuggestioncommand.h"
+#include "document/document.h"
+#include "project/project.h"
 
 #include <QCoreApplication>
 #include <QFile>

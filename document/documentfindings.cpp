@@ -1,6 +1,6 @@
 // Document: findings a person hid or accepted, kept in the project by stable key.
-#include "document.h"
-#include "findingmarkcommand.h"
+#include "document/document.h"
+#include "document/findingmarkcommand.h"
 
 #include <QCoreApplication>
 

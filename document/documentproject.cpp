@@ -1,9 +1,9 @@
 // Document: the project on disk: loading, migration, saving, the modified state, autosave.
-#include "correctioncommand.h"
-#include "decidesuggestioncommand.h"
-#include "decisionstore.h"
-#include "document.h"
-#include "project.h"
+#include "accepted/decisionstore.h"
+#include "document/correctioncommand.h"
+#include "document/decidesuggestioncommand.h"
+#include "document/document.h"
+#include "project/project.h"
 
 #include <QCoreApplication>
 #include <QFile>

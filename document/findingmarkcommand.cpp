@@ -1,5 +1,5 @@
-#include "findingmarkcommand.h"
-#include "document.h"
+#include "document/findingmarkcommand.h"
+#include "document/document.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "findingmark.h"
+#include "project/findingmark.h"
 
 #include <QList>
 #include <QUndoCommand>

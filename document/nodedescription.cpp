@@ -1,6 +1,6 @@
-#include "nodedescription.h"
-#include "document.h"
-#include "nodedocumentation.h"
+#include "document/nodedescription.h"
+#include "document/document.h"
+#include "suggestions/nodedocumentation.h"
 
 #include <QDateTime>
 #include <QDir>

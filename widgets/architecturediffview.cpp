@@ -1,4 +1,4 @@
-#include "architecturediffview.h"
+#include "widgets/architecturediffview.h"
 
 #include <QHeaderView>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "architecturediff.h"
+#include "diff/architecturediff.h"
 
 #include <QWidget>
 

@@ -1,10 +1,10 @@
-#include "atomicnodemodel.h"
-#include "atomicnodetext.h"
-#include "document.h"
-#include "evidencelines.h"
-#include "icons.h"
-#include "stallprobe.h"
-#include "visibletext.h"
+#include "widgets/atomicnodemodel.h"
+#include "core/visibletext.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
+#include "widgets/atomicnodetext.h"
+#include "widgets/evidencelines.h"
+#include "widgets/icons.h"
 
 #include <QFont>
 #include <QGuiApplication>

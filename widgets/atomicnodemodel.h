@@ -1,9 +1,9 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "atomicnodelist.h"
-#include "correctionindex.h"
-#include "evidence.h"
+#include "core/atomicnode.h"
+#include "core/atomicnodelist.h"
+#include "core/evidence.h"
+#include "widgets/correctionindex.h"
 
 #include <QAbstractItemModel>
 #include <QList>

@@ -1,12 +1,12 @@
 // What the atomic node tree shows in each row and column: packages, nodes, ports and declared
 // parameters, with the marks of corrections (tint, strike-out, review tick) and a suggested
 // description previewed.
-#include "atomicnodemodel.h"
-#include "atomicnodetext.h"
-#include "document.h"
-#include "icons.h"
-#include "itemports.h"
-#include "nodedescription.h"
+#include "compose/itemports.h"
+#include "document/document.h"
+#include "document/nodedescription.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodetext.h"
+#include "widgets/icons.h"
 
 #include <QFont>
 #include <QGuiApplication>

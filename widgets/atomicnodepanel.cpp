@@ -1,6 +1,6 @@
-#include "atomicnodepanel.h"
-#include "atomicnodemodel.h"
-#include "nodefilterproxymodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAction>
 #include <QHeaderView>

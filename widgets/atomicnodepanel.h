@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "filteredtreepanel.h"
+#include "core/evidence.h"
+#include "widgets/filteredtreepanel.h"
 
 class QMenu;
 

@@ -1,5 +1,5 @@
-#include "atomicnodetext.h"
-#include "rospackage.h"
+#include "widgets/atomicnodetext.h"
+#include "core/rospackage.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "nodedescription.h"
+#include "core/atomicnode.h"
+#include "document/nodedescription.h"
 
 #include <QCoreApplication>
 #include <QString>

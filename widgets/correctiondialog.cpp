@@ -1,4 +1,4 @@
-#include "correctiondialog.h"
+#include "widgets/correctiondialog.h"
 
 #include <QCheckBox>
 #include <QComboBox>

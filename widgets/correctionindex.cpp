@@ -1,5 +1,5 @@
-#include "correctionindex.h"
-#include "document.h"
+#include "widgets/correctionindex.h"
+#include "document/document.h"
 
 #include <QCoreApplication>
 

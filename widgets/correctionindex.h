@@ -1,7 +1,7 @@
 #pragma once
 
-#include "correction.h"
-#include "stablekeys.h"
+#include "project/correction.h"
+#include "project/stablekeys.h"
 
 #include <QHash>
 #include <QList>

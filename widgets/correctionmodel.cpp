@@ -1,7 +1,7 @@
-#include "correctionmodel.h"
-#include "document.h"
-#include "icons.h"
-#include "stallprobe.h"
+#include "widgets/correctionmodel.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
+#include "widgets/icons.h"
 
 #include <QColor>
 #include <QGuiApplication>

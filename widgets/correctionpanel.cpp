@@ -1,5 +1,5 @@
-#include "correctionpanel.h"
-#include "correctionmodel.h"
+#include "widgets/correctionpanel.h"
+#include "widgets/correctionmodel.h"
 
 #include <QAction>
 #include <QHeaderView>

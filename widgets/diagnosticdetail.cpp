@@ -1,7 +1,7 @@
-#include "diagnosticdetail.h"
-#include "diagnostickind.h"
-#include "diagnosticmodel.h"
-#include "visibletext.h"
+#include "widgets/diagnosticdetail.h"
+#include "core/diagnostickind.h"
+#include "core/visibletext.h"
+#include "widgets/diagnosticmodel.h"
 
 #include <QLocale>
 #include <QUrl>

@@ -1,7 +1,7 @@
-#include "diagnosticfilterbar.h"
-#include "diagnostickind.h"
-#include "flowlayout.h"
-#include "icons.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "core/diagnostickind.h"
+#include "widgets/flowlayout.h"
+#include "widgets/icons.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "diagnosticmodel.h"
+#include "widgets/diagnosticmodel.h"
 
 #include <QVariantMap>
 #include <QWidget>

@@ -1,9 +1,9 @@
-#include "diagnosticmodel.h"
-#include "diagnostickind.h"
-#include "document.h"
-#include "icons.h"
-#include "stallprobe.h"
-#include "visibletext.h"
+#include "widgets/diagnosticmodel.h"
+#include "core/diagnostickind.h"
+#include "core/visibletext.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
+#include "widgets/icons.h"
 
 #include <QColor>
 #include <QFont>

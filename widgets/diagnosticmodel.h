@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "findingmark.h"
+#include "core/diagnostic.h"
+#include "project/findingmark.h"
 
 #include <QAbstractItemModel>
 #include <QHash>

@@ -1,6 +1,6 @@
-#include "filteredtreepanel.h"
-#include "nodefilterproxymodel.h"
-#include "stallprobe.h"
+#include "widgets/filteredtreepanel.h"
+#include "jobs/stallprobe.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QHeaderView>
 #include <QKeyEvent>

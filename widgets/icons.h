@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "port.h"
+#include "core/diagnostic.h"
+#include "core/port.h"
 
 #include <QIcon>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "inspectorpanel.h"
+#include "widgets/inspectorpanel.h"
 
 #include <QAction>
 #include <QFormLayout>

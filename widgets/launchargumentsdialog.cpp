@@ -1,5 +1,5 @@
-#include "launchargumentsdialog.h"
-#include "icons.h"
+#include "widgets/launchargumentsdialog.h"
+#include "widgets/icons.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchanalyzer.h"
-#include "launchdependencies.h"
+#include "core/launchdependencies.h"
+#include "launch/launchanalyzer.h"
 
 #include <QDialog>
 #include <QMap>

@@ -1,6 +1,6 @@
-#include "launchtreelayout.h"
-#include "evidencelines.h"
-#include "launchtreetext.h"
+#include "widgets/launchtreelayout.h"
+#include "widgets/evidencelines.h"
+#include "widgets/launchtreetext.h"
 
 #include <QSet>
 

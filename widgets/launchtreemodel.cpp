@@ -1,8 +1,8 @@
-#include "launchtreemodel.h"
-#include "document.h"
-#include "icons.h"
-#include "launchtreetext.h"
-#include "stallprobe.h"
+#include "widgets/launchtreemodel.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
+#include "widgets/icons.h"
+#include "widgets/launchtreetext.h"
 
 #include <QFont>
 #include <QGuiApplication>

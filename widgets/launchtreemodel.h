@@ -1,9 +1,9 @@
 #pragma once
 
-#include "correctionindex.h"
-#include "evidence.h"
-#include "launchdependencies.h"
-#include "launchtreelayout.h"
+#include "core/evidence.h"
+#include "core/launchdependencies.h"
+#include "widgets/correctionindex.h"
+#include "widgets/launchtreelayout.h"
 
 #include <QAbstractItemModel>
 #include <QSet>

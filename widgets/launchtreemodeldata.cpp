@@ -1,10 +1,10 @@
 // What the launch tree shows in each row and column: launch files, namespace scopes, node
 // instances (as corrected: tinted, struck out, ticked), unresolved actions and parameters.
-#include "document.h"
-#include "icons.h"
-#include "launchtreemodel.h"
-#include "launchtreetext.h"
-#include "visibletext.h"
+#include "core/visibletext.h"
+#include "document/document.h"
+#include "widgets/icons.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreetext.h"
 
 #include <QFont>
 #include <QGuiApplication>

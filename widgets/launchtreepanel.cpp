@@ -1,7 +1,7 @@
-#include "launchtreepanel.h"
-#include "launchtreemodel.h"
-#include "nodefilterproxymodel.h"
-#include "stallprobe.h"
+#include "widgets/launchtreepanel.h"
+#include "jobs/stallprobe.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAction>
 #include <QHeaderView>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "filteredtreepanel.h"
+#include "widgets/filteredtreepanel.h"
 
 class QAction;
 class QLabel;

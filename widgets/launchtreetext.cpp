@@ -1,5 +1,5 @@
-#include "launchtreetext.h"
-#include "atomicnode.h"
+#include "widgets/launchtreetext.h"
+#include "core/atomicnode.h"
 
 #include <algorithm>
 

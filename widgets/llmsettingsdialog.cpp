@@ -1,4 +1,4 @@
-#include "llmsettingsdialog.h"
+#include "widgets/llmsettingsdialog.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "llmsettings.h"
+#include "suggestions/llm/llmsettings.h"
 
 #include <QDialog>
 

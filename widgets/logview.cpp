@@ -1,7 +1,7 @@
-#include "logview.h"
-#include "diagnosticdetail.h"
-#include "diagnosticfilterbar.h"
-#include "diagnosticmodel.h"
+#include "widgets/logview.h"
+#include "widgets/diagnosticdetail.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagnosticmodel.h"
 
 #include <QAction>
 #include <QFontDatabase>

@@ -1,6 +1,6 @@
-#include "nodefilterproxymodel.h"
-#include "atomicnodemodel.h"
-#include "stallprobe.h"
+#include "widgets/nodefilterproxymodel.h"
+#include "jobs/stallprobe.h"
+#include "widgets/atomicnodemodel.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

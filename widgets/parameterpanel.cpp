@@ -1,6 +1,6 @@
-#include "parameterpanel.h"
+#include "widgets/parameterpanel.h"
 
-#include "parametertablemodel.h"
+#include "widgets/parametertablemodel.h"
 
 #include <QHeaderView>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "parameterview.h"
+#include "core/parameterview.h"
 
 #include <QWidget>
 

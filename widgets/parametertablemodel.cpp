@@ -1,6 +1,6 @@
-#include "parametertablemodel.h"
+#include "widgets/parametertablemodel.h"
 
-#include "visibletext.h"
+#include "core/visibletext.h"
 
 #include <QBrush>
 #include <QFileInfo>

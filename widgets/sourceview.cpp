@@ -1,4 +1,4 @@
-#include "sourceview.h"
+#include "widgets/sourceview.h"
 
 #include <Qsci/qscilexercmake.h>
 #include <Qsci/qscilexercpp.h>

@@ -1,5 +1,5 @@
-#include "suggestionfiltermodel.h"
-#include "suggestionmodel.h"
+#include "widgets/suggestionfiltermodel.h"
+#include "widgets/suggestionmodel.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
-#include "suggestionmodel.h"
-#include "document.h"
-#include "stallprobe.h"
+#include "widgets/suggestionmodel.h"
+#include "document/document.h"
+#include "jobs/stallprobe.h"
 
 #include <QFileInfo>
 #include <QFont>

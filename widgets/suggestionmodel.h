@@ -1,7 +1,7 @@
 #pragma once
 
-#include "suggestion.h"
-#include "suggestionitem.h"
+#include "core/suggestion.h"
+#include "suggestions/suggestionitem.h"
 
 #include <QAbstractTableModel>
 #include <QHash>

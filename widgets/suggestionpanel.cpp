@@ -1,8 +1,8 @@
-#include "suggestionpanel.h"
-#include "document.h"
-#include "icons.h"
-#include "suggestionfiltermodel.h"
-#include "suggestionmodel.h"
+#include "widgets/suggestionpanel.h"
+#include "document/document.h"
+#include "widgets/icons.h"
+#include "widgets/suggestionfiltermodel.h"
+#include "widgets/suggestionmodel.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "suggestion.h"
+#include "core/evidence.h"
+#include "core/suggestion.h"
 
 #include <QModelIndex>
 #include <QWidget>

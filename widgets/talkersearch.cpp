@@ -1,4 +1,4 @@
-#include "talkersearch.h"
+#include "widgets/talkersearch.h"
 
 #include <QSet>
 

@@ -1,5 +1,5 @@
-#include "talkerspanel.h"
-#include "icons.h"
+#include "widgets/talkerspanel.h"
+#include "widgets/icons.h"
 
 #include <QDir>
 #include <QHash>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "talkersearch.h"
+#include "widgets/talkersearch.h"
 
 #include <QWidget>
 

@@ -1,8 +1,8 @@
-#include "checkcommand.h"
-#include "checkreport.h"
-#include "commandline.h"
-#include "terminalstream.h"
-#include "workspacerun.h"
+#include "app/commands/checkcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "app/commands/workspacerun.h"
+#include "artifacts/checkreport.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

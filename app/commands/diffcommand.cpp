@@ -1,9 +1,9 @@
-#include "diffcommand.h"
-#include "architecturediff.h"
-#include "commandline.h"
-#include "gitrevision.h"
-#include "recovery.h"
-#include "terminalstream.h"
+#include "app/commands/diffcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "diff/architecturediff.h"
+#include "diff/gitrevision.h"
+#include "pipeline/recovery.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,10 +1,10 @@
-#include "evalcommand.h"
-#include "commandline.h"
-#include "evaluationjson.h"
-#include "evaluationreport.h"
-#include "evaluator.h"
-#include "terminalstream.h"
-#include "umlmodel.h"
+#include "app/commands/evalcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/evaluationreport.h"
+#include "app/commands/terminalstream.h"
+#include "evaluation/evaluationjson.h"
+#include "evaluation/evaluator.h"
+#include "plantuml/umlmodel.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "evaluationreport.h"
+#include "app/commands/evaluationreport.h"
 
 #include <QCoreApplication>
 #include <QTextStream>

@@ -1,9 +1,9 @@
-#include "exportcommand.h"
-#include "commandline.h"
-#include "nodlwriter.h"
-#include "terminalstream.h"
-#include "visibletext.h"
-#include "workspacerun.h"
+#include "app/commands/exportcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "app/commands/workspacerun.h"
+#include "artifacts/nodlwriter.h"
+#include "core/visibletext.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

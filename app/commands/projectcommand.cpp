@@ -1,7 +1,7 @@
-#include "projectcommand.h"
-#include "commandline.h"
-#include "terminalstream.h"
-#include "workspacerun.h"
+#include "app/commands/projectcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "app/commands/workspacerun.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "correctedmodel.h"
+#include "project/correctedmodel.h"
 
 #include <QStringList>
 

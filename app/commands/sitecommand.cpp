@@ -1,9 +1,9 @@
-#include "sitecommand.h"
-#include "commandline.h"
-#include "sitegenerator.h"
-#include "sitesource.h"
-#include "terminalstream.h"
-#include "workspacerun.h"
+#include "app/commands/sitecommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "app/commands/workspacerun.h"
+#include "site/sitegenerator.h"
+#include "site/sitesource.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "siteexport.h"
+#include "app/commands/siteexport.h"
 
 #include <QDir>
 #include <QThread>

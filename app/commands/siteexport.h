@@ -1,8 +1,8 @@
 #pragma once
 
-#include "project.h"
-#include "recovery.h"
-#include "sitegenerator.h"
+#include "pipeline/recovery.h"
+#include "project/project.h"
+#include "site/sitegenerator.h"
 
 #include <QObject>
 

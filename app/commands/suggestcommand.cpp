@@ -1,9 +1,9 @@
-#include "suggestcommand.h"
-#include "commandline.h"
-#include "recovery.h"
-#include "suggestionengine.h"
-#include "suggestionsjson.h"
-#include "terminalstream.h"
+#include "app/commands/suggestcommand.h"
+#include "app/commands/commandline.h"
+#include "app/commands/terminalstream.h"
+#include "pipeline/recovery.h"
+#include "suggestions/suggestionengine.h"
+#include "suggestions/suggestionsjson.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "terminalstream.h"
+#include "app/commands/terminalstream.h"
 
 namespace rosarch {
 

@@ -1,5 +1,5 @@
-#include "workspacerun.h"
-#include "stageprocess.h"
+#include "app/commands/workspacerun.h"
+#include "pipeline/stageprocess.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "correctedmodel.h"
-#include "recovery.h"
+#include "pipeline/recovery.h"
+#include "project/correctedmodel.h"
 
 #include <QCommandLineOption>
 #include <QStringList>

@@ -1,7 +1,7 @@
-#include "acceptedmodel.h"
-#include "composearchitecture.h"
-#include "subsystemgrouping.h"
-#include "suggestionitem.h"
+#include "accepted/acceptedmodel.h"
+#include "compose/composearchitecture.h"
+#include "compose/subsystemgrouping.h"
+#include "suggestions/suggestionitem.h"
 
 #include <QSet>
 

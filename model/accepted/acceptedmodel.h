@@ -1,8 +1,8 @@
 #pragma once
 
-#include "recovery.h"
-#include "subsystemgroup.h"
-#include "suggestiondecision.h"
+#include "accepted/suggestiondecision.h"
+#include "core/subsystemgroup.h"
+#include "pipeline/recovery.h"
 
 #include <QList>
 #include <QMap>

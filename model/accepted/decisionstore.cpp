@@ -1,4 +1,4 @@
-#include "decisionstore.h"
+#include "accepted/decisionstore.h"
 
 #include <QCryptographicHash>
 #include <QDir>

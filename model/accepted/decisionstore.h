@@ -1,6 +1,6 @@
 #pragma once
 
-#include "suggestiondecision.h"
+#include "accepted/suggestiondecision.h"
 
 #include <QMap>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "suggestiondecision.h"
+#include "accepted/suggestiondecision.h"
 
 #include <QJsonArray>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "suggestion.h"
+#include "core/suggestion.h"
 
 #include <QDateTime>
 #include <QJsonObject>

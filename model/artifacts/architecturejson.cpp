@@ -1,8 +1,8 @@
-#include "architecturejson.h"
-#include "evidencejson.h"
-#include "jsonsupport.h"
-#include "parameterview.h"
-#include "visibletext.h"
+#include "artifacts/architecturejson.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/parameterview.h"
+#include "core/visibletext.h"
 
 namespace rosarch {
 

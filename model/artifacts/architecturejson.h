@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchdependencies.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
 
 #include <QByteArray>
 #include <QMap>

@@ -1,4 +1,4 @@
-#include "artifactcommit.h"
+#include "artifacts/artifactcommit.h"
 
 #include <QDir>
 #include <QFile>

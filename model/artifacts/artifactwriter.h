@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "recovery.h"
+#include "core/atomicnodelist.h"
+#include "pipeline/recovery.h"
 
 #include <QString>
 #include <QStringList>

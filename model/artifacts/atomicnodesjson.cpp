@@ -1,8 +1,8 @@
-#include "atomicnodesjson.h"
-#include "evidencejson.h"
-#include "jsonsupport.h"
-#include "parameterjson.h"
-#include "visibletext.h"
+#include "artifacts/atomicnodesjson.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
+#include "artifacts/parameterjson.h"
+#include "core/visibletext.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
-#include "checkreport.h"
-#include "diagnostickind.h"
-#include "diagnosticsjson.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "artifacts/checkreport.h"
+#include "artifacts/diagnosticsjson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/diagnostickind.h"
+#include "core/visibletext.h"
 
 #include <QDir>
 #include <QUrl>

@@ -1,7 +1,7 @@
-#include "diagnosticsjson.h"
-#include "evidencejson.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "artifacts/diagnosticsjson.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/visibletext.h"
 
 namespace rosarch::DiagnosticsJson {
 

@@ -1,4 +1,4 @@
-#include "evidencejson.h"
+#include "artifacts/evidencejson.h"
 
 namespace rosarch::EvidenceJson {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "provenance.h"
+#include "core/provenance.h"
 
 #include <QString>
 #include <QStringList>

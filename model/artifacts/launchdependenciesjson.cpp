@@ -1,7 +1,7 @@
-#include "launchdependenciesjson.h"
-#include "evidencejson.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "artifacts/launchdependenciesjson.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/visibletext.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
-#include "nodlwriter.h"
+#include "artifacts/nodlwriter.h"
 
-#include "jsonsupport.h"
-#include "qos.h"
-#include "visibletext.h"
+#include "artifacts/jsonsupport.h"
+#include "core/qos.h"
+#include "core/visibletext.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "atomicnodelist.h"
+#include "core/atomicnodelist.h"
 
 #include <QByteArray>
 #include <QMap>

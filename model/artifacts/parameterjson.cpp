@@ -1,7 +1,7 @@
-#include "parameterjson.h"
+#include "artifacts/parameterjson.h"
 
-#include "evidencejson.h"
-#include "jsonsupport.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
 
 namespace rosarch::ParameterJson {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "parameter.h"
+#include "core/parameter.h"
 
 #include <QList>
 

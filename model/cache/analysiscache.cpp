@@ -1,7 +1,7 @@
-#include "analysiscache.h"
+#include "cache/analysiscache.h"
 #include "analysisfingerprint.h"
-#include "sha1.h"
-#include "threadpriority.h"
+#include "cache/sha1.h"
+#include "core/threadpriority.h"
 
 #include <QCoreApplication>
 #include <QDataStream>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "filedigests.h"
+#include "cache/filedigests.h"
+#include "core/diagnostic.h"
 
 #include <QByteArray>
 #include <QByteArrayView>

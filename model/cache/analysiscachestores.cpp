@@ -1,4 +1,4 @@
-#include "analysiscache.h"
+#include "cache/analysiscache.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "languageanalysis.h"
-#include "launchaction.h"
-#include "modelfields.h"
-#include "port.h"
-#include "substitution.h"
+#include "core/diagnostic.h"
+#include "core/languageanalysis.h"
+#include "core/launchaction.h"
+#include "core/modelfields.h"
+#include "core/port.h"
+#include "core/substitution.h"
 
 #include <QByteArray>
 #include <QDataStream>

@@ -1,4 +1,4 @@
-#include "evidenceshift.h"
+#include "cache/evidenceshift.h"
 
 #include <algorithm>
 #include <compare>

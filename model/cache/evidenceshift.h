@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "evidencewalk.h"
+#include "cache/evidencewalk.h"
+#include "core/evidence.h"
 
 #include <QHash>
 #include <QList>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "modelfields.h"
+#include "core/evidence.h"
+#include "core/modelfields.h"
 
 #include <QByteArray>
 #include <QHash>

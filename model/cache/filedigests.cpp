@@ -1,5 +1,5 @@
-#include "filedigests.h"
-#include "sha1.h"
+#include "cache/filedigests.h"
+#include "cache/sha1.h"
 
 #include <QDataStream>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "sha1.h"
+#include "cache/sha1.h"
 
 #include <openssl/evp.h>
 

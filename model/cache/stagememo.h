@@ -1,7 +1,7 @@
 #pragma once
 
-#include "analysiscache.h"
-#include "cachecodec.h"
+#include "cache/analysiscache.h"
+#include "cache/cachecodec.h"
 
 #include <QMap>
 

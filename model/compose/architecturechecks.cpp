@@ -1,12 +1,12 @@
-#include "architecturechecks.h"
-#include "checkscope.h"
-#include "composer.h"
-#include "observability.h"
-#include "parameterchecks.h"
-#include "qos.h"
-#include "remapchecks.h"
-#include "rosnames.h"
-#include "systemports.h"
+#include "compose/architecturechecks.h"
+#include "compose/checkscope.h"
+#include "compose/composer.h"
+#include "compose/parameterchecks.h"
+#include "compose/remapchecks.h"
+#include "compose/systemports.h"
+#include "core/qos.h"
+#include "core/rosnames.h"
+#include "interfaces/observability.h"
 
 #include <QHash>
 #include <QSet>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchdependencies.h"
-#include "observability.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
+#include "interfaces/observability.h"
 
 #include <QList>
 

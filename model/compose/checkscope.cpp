@@ -1,4 +1,4 @@
-#include "checkscope.h"
+#include "compose/checkscope.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchdependencies.h"
+#include "core/launchdependencies.h"
 
 #include <QHash>
 #include <QList>

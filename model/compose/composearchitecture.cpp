@@ -1,6 +1,6 @@
-#include "composearchitecture.h"
-#include "architecturechecks.h"
-#include "composer.h"
+#include "compose/composearchitecture.h"
+#include "compose/architecturechecks.h"
+#include "compose/composer.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 

@@ -1,6 +1,6 @@
-#include "composer.h"
-#include "itemports.h"
-#include "rosnames.h"
+#include "compose/composer.h"
+#include "compose/itemports.h"
+#include "core/rosnames.h"
 
 #include <QHash>
 #include <QSet>

@@ -2,10 +2,10 @@
 
 #include <QHash>
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchdependencies.h"
-#include "stagecontrol.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
+#include "core/stagecontrol.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
-#include "itemports.h"
-#include "parameterview.h"
-#include "rosnames.h"
+#include "compose/itemports.h"
+#include "core/parameterview.h"
+#include "core/rosnames.h"
 
 #include <QRegularExpression>
 #include <QSet>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "launchdependencies.h"
-#include "port.h"
+#include "core/atomicnode.h"
+#include "core/launchdependencies.h"
+#include "core/port.h"
 
 #include <QHash>
 #include <QList>

@@ -1,9 +1,9 @@
-#include "parameterchecks.h"
-#include "checkscope.h"
-#include "declaringcall.h"
-#include "editdistance.h"
-#include "parameterview.h"
-#include "rosnames.h"
+#include "compose/parameterchecks.h"
+#include "compose/checkscope.h"
+#include "core/declaringcall.h"
+#include "core/editdistance.h"
+#include "core/parameterview.h"
+#include "core/rosnames.h"
 
 #include <QRegularExpression>
 #include <QSet>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "diagnostic.h"
-#include "launchdependencies.h"
+#include "core/atomicnodelist.h"
+#include "core/diagnostic.h"
+#include "core/launchdependencies.h"
 
 #include <QList>
 

@@ -1,8 +1,8 @@
-#include "remapchecks.h"
-#include "checkscope.h"
-#include "composer.h"
-#include "packageversion.h"
-#include "rosnames.h"
+#include "compose/remapchecks.h"
+#include "compose/checkscope.h"
+#include "compose/composer.h"
+#include "core/packageversion.h"
+#include "core/rosnames.h"
 
 #include <QHash>
 #include <QSet>

@@ -1,4 +1,4 @@
-#include "subsystemgrouping.h"
+#include "compose/subsystemgrouping.h"
 
 #include <QHash>
 #include <QSet>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "composition.h"
-#include "subsystemgroup.h"
+#include "core/composition.h"
+#include "core/subsystemgroup.h"
 
 #include <QList>
 

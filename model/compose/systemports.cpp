@@ -1,4 +1,4 @@
-#include "systemports.h"
+#include "compose/systemports.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "atomicnode.h"
+#include "core/atomicnode.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "evidence.h"
-#include "parameter.h"
-#include "port.h"
-#include "provenance.h"
+#include "core/evidence.h"
+#include "core/parameter.h"
+#include "core/port.h"
+#include "core/provenance.h"
 
 #include <QList>
 #include <QString>

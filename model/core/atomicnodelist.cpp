@@ -1,4 +1,4 @@
-#include "atomicnodelist.h"
+#include "core/atomicnodelist.h"
 
 namespace rosarch {
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "diagnostic.h"
-#include "rospackage.h"
+#include "core/atomicnode.h"
+#include "core/diagnostic.h"
+#include "core/rospackage.h"
 
 #include <QList>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "composition.h"
+#include "core/composition.h"
 
 #include <QSet>
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "evidence.h"
-#include "port.h"
-#include "provenance.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
+#include "core/port.h"
+#include "core/provenance.h"
 
 #include <QList>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "diagnostickind.h"
+#include "core/diagnostickind.h"
 
 namespace rosarch {
 

@@ -1,4 +1,4 @@
-#include "editdistance.h"
+#include "core/editdistance.h"
 
 #include <QList>
 

@@ -1,4 +1,4 @@
-#include "helperprogram.h"
+#include "core/helperprogram.h"
 
 #include <QCoreApplication>
 #include <QDir>

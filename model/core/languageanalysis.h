@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "diagnostic.h"
-#include "evidence.h"
+#include "core/atomicnode.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
 
 #include <QList>
 #include <QString>

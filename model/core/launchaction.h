@@ -1,8 +1,8 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "evidence.h"
-#include "substitution.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
+#include "core/substitution.h"
 
 #include <QList>
 #include <QString>

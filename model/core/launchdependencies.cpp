@@ -1,4 +1,4 @@
-#include "launchdependencies.h"
+#include "core/launchdependencies.h"
 
 namespace rosarch {
 

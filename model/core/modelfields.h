@@ -1,12 +1,12 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "diagnostic.h"
-#include "evidence.h"
-#include "launchdependencies.h"
-#include "port.h"
-#include "rospackage.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
+#include "core/launchdependencies.h"
+#include "core/port.h"
+#include "core/rospackage.h"
 
 // The field list of every model value type that crosses a process or goes to disk whole: one
 // list per type, used both ways (`f` reads or writes every field). The analysis worker's stream

@@ -1,4 +1,4 @@
-#include "modelinvariants.h"
+#include "core/modelinvariants.h"
 
 #include <QRegularExpression>
 #include <QSet>

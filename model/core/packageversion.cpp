@@ -1,4 +1,4 @@
-#include "packageversion.h"
+#include "core/packageversion.h"
 
 #include <QStringList>
 

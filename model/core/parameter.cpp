@@ -1,4 +1,4 @@
-#include "parameter.h"
+#include "core/parameter.h"
 
 #include <QRegularExpression>
 

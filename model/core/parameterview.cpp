@@ -1,6 +1,6 @@
-#include "parameterview.h"
+#include "core/parameterview.h"
 
-#include "port.h"
+#include "core/port.h"
 
 #include <QRegularExpression>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "launchdependencies.h"
+#include "core/atomicnodelist.h"
+#include "core/launchdependencies.h"
 
 #include <QHash>
 #include <QList>

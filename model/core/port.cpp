@@ -1,4 +1,4 @@
-#include "port.h"
+#include "core/port.h"
 
 #include <QRegularExpression>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "provenance.h"
+#include "core/evidence.h"
+#include "core/provenance.h"
 
 #include <QList>
 #include <QString>

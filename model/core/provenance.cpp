@@ -1,4 +1,4 @@
-#include "provenance.h"
+#include "core/provenance.h"
 
 namespace rosarch {
 

@@ -1,4 +1,4 @@
-#include "qos.h"
+#include "core/qos.h"
 
 #include <QRegularExpression>
 

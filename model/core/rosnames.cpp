@@ -1,4 +1,4 @@
-#include "rosnames.h"
+#include "core/rosnames.h"
 
 #include <algorithm>
 #include <optional>

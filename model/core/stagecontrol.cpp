@@ -1,4 +1,4 @@
-#include "stagecontrol.h"
+#include "core/stagecontrol.h"
 
 namespace rosarch {
 

@@ -1,4 +1,4 @@
-#include "substitution.h"
+#include "core/substitution.h"
 
 #include <QStringList>
 

@@ -1,4 +1,4 @@
-#include "suggestion.h"
+#include "core/suggestion.h"
 
 namespace rosarch {
 

@@ -1,4 +1,4 @@
-#include "visibletext.h"
+#include "core/visibletext.h"
 
 namespace rosarch {
 

@@ -1,5 +1,5 @@
-#include "diagrambuilder.h"
-#include "visibletext.h"
+#include "diagram/diagrambuilder.h"
+#include "core/visibletext.h"
 
 #include <QCoreApplication>
 #include <QHash>

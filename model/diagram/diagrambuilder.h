@@ -1,7 +1,7 @@
 #pragma once
 
-#include "composition.h"
-#include "layoutgraph.h"
+#include "core/composition.h"
+#include "diagram/layoutgraph.h"
 
 #include <QStringList>
 

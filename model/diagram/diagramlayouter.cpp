@@ -1,4 +1,4 @@
-#include "diagramlayouter.h"
+#include "diagram/diagramlayouter.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "graphlayout.h"
-#include "jobrunner.h"
+#include "diagram/graphlayout.h"
+#include "jobs/jobrunner.h"
 
 #include <QHash>
 #include <QObject>

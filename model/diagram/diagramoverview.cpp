@@ -1,4 +1,4 @@
-#include "diagramoverview.h"
+#include "diagram/diagramoverview.h"
 
 #include <QSet>
 

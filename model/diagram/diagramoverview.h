@@ -1,8 +1,8 @@
 #pragma once
 
-#include "composition.h"
-#include "diagrambuilder.h"
-#include "layoutgraph.h"
+#include "core/composition.h"
+#include "diagram/diagrambuilder.h"
+#include "diagram/layoutgraph.h"
 
 namespace rosarch {
 

@@ -1,5 +1,5 @@
-#include "graphlayout.h"
-#include "helperprogram.h"
+#include "diagram/graphlayout.h"
+#include "core/helperprogram.h"
 
 #include <QCoreApplication>
 #include <QDir>

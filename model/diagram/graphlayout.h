@@ -1,6 +1,6 @@
 #pragma once
 
-#include "layoutgraph.h"
+#include "diagram/layoutgraph.h"
 
 #include <QString>
 

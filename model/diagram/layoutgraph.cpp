@@ -1,4 +1,4 @@
-#include "layoutgraph.h"
+#include "diagram/layoutgraph.h"
 
 #include <algorithm>
 

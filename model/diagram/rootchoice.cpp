@@ -1,4 +1,4 @@
-#include "rootchoice.h"
+#include "diagram/rootchoice.h"
 
 #include <QHash>
 #include <QSet>

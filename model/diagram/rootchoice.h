@@ -1,7 +1,7 @@
 #pragma once
 
-#include "composition.h"
-#include "launchdependencies.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
 
 #include <QList>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "architecturediff.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "diff/architecturediff.h"
+#include "artifacts/jsonsupport.h"
+#include "core/visibletext.h"
 
 #include <QHash>
 #include <QSet>

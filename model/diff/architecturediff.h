@@ -1,6 +1,6 @@
 #pragma once
 
-#include "architecturesnapshot.h"
+#include "diff/architecturesnapshot.h"
 
 #include <QByteArray>
 #include <QList>

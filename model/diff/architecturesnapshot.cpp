@@ -1,8 +1,8 @@
-#include "architecturesnapshot.h"
-#include "architecturejson.h"
-#include "atomicnodesjson.h"
-#include "ccdwriter.h"
-#include "jsonsupport.h"
+#include "diff/architecturesnapshot.h"
+#include "artifacts/architecturejson.h"
+#include "artifacts/atomicnodesjson.h"
+#include "artifacts/jsonsupport.h"
+#include "plantuml/ccdwriter.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "gitrevision.h"
+#include "diff/gitrevision.h"
 
 #include <QDir>
 #include <QFile>

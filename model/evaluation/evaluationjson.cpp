@@ -1,6 +1,6 @@
-#include "evaluationjson.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "evaluation/evaluationjson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/visibletext.h"
 
 #include <cmath>
 

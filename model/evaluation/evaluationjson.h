@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evaluation.h"
-#include "umlmodel.h"
+#include "evaluation/evaluation.h"
+#include "plantuml/umlmodel.h"
 
 #include <QByteArray>
 

@@ -1,4 +1,4 @@
-#include "evaluator.h"
+#include "evaluation/evaluator.h"
 
 #include <QFileInfo>
 #include <QMap>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evaluation.h"
-#include "umldiagram.h"
+#include "evaluation/evaluation.h"
+#include "plantuml/umldiagram.h"
 
 #include <QList>
 

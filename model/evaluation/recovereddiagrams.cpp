@@ -1,8 +1,8 @@
-#include "recovereddiagrams.h"
-#include "acdwriter.h"
-#include "ccdwriter.h"
-#include "diagrambuilder.h"
-#include "plantumlreader.h"
+#include "evaluation/recovereddiagrams.h"
+#include "diagram/diagrambuilder.h"
+#include "plantuml/acdwriter.h"
+#include "plantuml/ccdwriter.h"
+#include "plantuml/plantumlreader.h"
 
 #include <QHash>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "umldiagram.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "plantuml/umldiagram.h"
 
 #include <QList>
 

@@ -1,4 +1,4 @@
-#include "interfacemodel.h"
+#include "interfaces/interfacemodel.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "port.h"
+#include "core/port.h"
 
 #include <QJsonObject>
 #include <QList>

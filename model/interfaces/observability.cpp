@@ -1,4 +1,4 @@
-#include "observability.h"
+#include "interfaces/observability.h"
 
 #include <QFile>
 #include <QJsonArray>

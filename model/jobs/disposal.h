@@ -1,6 +1,6 @@
 #pragma once
 
-#include "threadpriority.h"
+#include "core/threadpriority.h"
 
 #include <QThreadPool>
 

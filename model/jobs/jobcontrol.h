@@ -1,6 +1,6 @@
 #pragma once
 
-#include "stagecontrol.h"
+#include "core/stagecontrol.h"
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "jobrunner.h"
+#include "jobs/jobrunner.h"
 
 #include <QFutureWatcher>
 #include <QMutex>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "jobcontrol.h"
+#include "jobs/jobcontrol.h"
 
 #include <QList>
 #include <QObject>

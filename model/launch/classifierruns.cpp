@@ -1,5 +1,5 @@
-#include "classifierruns.h"
-#include "rosnames.h"
+#include "launch/classifierruns.h"
+#include "core/rosnames.h"
 
 #include <QHash>
 #include <QThreadPool>

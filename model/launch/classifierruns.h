@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchexecutor.h"
-#include "stagecontrol.h"
+#include "core/stagecontrol.h"
+#include "launch/launchexecutor.h"
 
 #include <QStringList>
 

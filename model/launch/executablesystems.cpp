@@ -1,5 +1,5 @@
-#include "executablesystems.h"
-#include "nodeclasses.h"
+#include "launch/executablesystems.h"
+#include "launch/nodeclasses.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "launchaction.h"
-#include "launchdependencies.h"
-#include "workspace.h"
+#include "core/atomicnodelist.h"
+#include "core/launchaction.h"
+#include "core/launchdependencies.h"
+#include "workspace/workspace.h"
 
 #include <QHash>
 #include <QList>

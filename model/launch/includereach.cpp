@@ -1,4 +1,4 @@
-#include "includereach.h"
+#include "launch/includereach.h"
 
 namespace rosarch {
 

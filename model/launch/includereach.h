@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchexecutor.h"
+#include "launch/launchexecutor.h"
 
 #include <QStringList>
 

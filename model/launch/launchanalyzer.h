@@ -2,11 +2,11 @@
 
 #include <functional>
 
-#include "atomicnodelist.h"
-#include "launchaction.h"
-#include "launchdependencies.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/atomicnodelist.h"
+#include "core/launchaction.h"
+#include "core/launchdependencies.h"
+#include "core/stagecontrol.h"
+#include "workspace/workspace.h"
 
 #include <QMap>
 #include <QString>

@@ -1,5 +1,5 @@
-#include "launchbudget.h"
-#include "valuebudget.h"
+#include "launch/launchbudget.h"
+#include "core/valuebudget.h"
 
 namespace rosarch {
 

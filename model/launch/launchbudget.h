@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "launchdependencies.h"
+#include "core/evidence.h"
+#include "core/launchdependencies.h"
 
 #include <QSet>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "launchexecutor.h"
-#include "rosnames.h"
-#include "substitutionevaluator.h"
+#include "launch/launchexecutor.h"
+#include "core/rosnames.h"
+#include "launch/substitutionevaluator.h"
 
 #include <QFileInfo>
 #include <QSet>

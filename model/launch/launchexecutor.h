@@ -1,13 +1,13 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "launchaction.h"
-#include "launchbudget.h"
-#include "launchdependencies.h"
-#include "modelledports.h"
-#include "nodeclasses.h"
-#include "parameterfile.h"
-#include "workspace.h"
+#include "core/atomicnodelist.h"
+#include "core/launchaction.h"
+#include "core/launchdependencies.h"
+#include "launch/launchbudget.h"
+#include "launch/modelledports.h"
+#include "launch/nodeclasses.h"
+#include "launch/xmlyaml/parameterfile.h"
+#include "workspace/workspace.h"
 
 #include <QHash>
 #include <QMap>

@@ -1,6 +1,6 @@
-#include "launchfilecodec.h"
+#include "launch/launchfilecodec.h"
 
-#include "cachecodec.h"
+#include "cache/cachecodec.h"
 
 namespace rosarch::cachecodec {
 

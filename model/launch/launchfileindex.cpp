@@ -1,11 +1,11 @@
-#include "launchfileindex.h"
+#include "launch/launchfileindex.h"
 
-#include "analysiscache.h"
-#include "launchanalyzer.h"
-#include "launchfilecodec.h"
-#include "pythonsyntax.h"
-#include "sourcereader.h"
-#include "stagememo.h"
+#include "cache/analysiscache.h"
+#include "cache/stagememo.h"
+#include "launch/launchanalyzer.h"
+#include "launch/launchfilecodec.h"
+#include "syntax/pythonsyntax.h"
+#include "workspace/sourcereader.h"
 
 #include <QMutex>
 #include <QtConcurrent/QtConcurrentMap>

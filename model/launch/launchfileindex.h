@@ -1,8 +1,8 @@
 #pragma once
 
-#include "launchaction.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/launchaction.h"
+#include "core/stagecontrol.h"
+#include "workspace/workspace.h"
 
 #include <QStringList>
 

@@ -1,7 +1,7 @@
 // LaunchExecutor's includes: running one (its arguments, scope and condition), and where its
 // evaluated path points (a workspace launch file, a package outside the workspace, or nothing).
-#include "includereach.h"
-#include "launchexecutor.h"
+#include "launch/includereach.h"
+#include "launch/launchexecutor.h"
 
 #include <QDir>
 #include <QFileInfo>

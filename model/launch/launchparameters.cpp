@@ -1,9 +1,9 @@
 // LaunchExecutor's parameters: parameter files, what an instance ends up with, its plugins.
-#include "launchexecutor.h"
-#include "parameter.h"
-#include "parameterview.h"
-#include "rosnames.h"
-#include "sourcereader.h"
+#include "core/parameter.h"
+#include "core/parameterview.h"
+#include "core/rosnames.h"
+#include "launch/launchexecutor.h"
+#include "workspace/sourcereader.h"
 
 #include <QHash>
 #include <QRegularExpression>

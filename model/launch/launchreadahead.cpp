@@ -1,7 +1,7 @@
-#include "launchreadahead.h"
+#include "launch/launchreadahead.h"
 
-#include "analysiscache.h"
-#include "sourcereader.h"
+#include "cache/analysiscache.h"
+#include "workspace/sourcereader.h"
 
 #include <QDir>
 #include <QThreadPool>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchfileindex.h"
+#include "launch/launchfileindex.h"
 
 #include <QList>
 

@@ -1,8 +1,8 @@
-#include "modelledports.h"
-#include "interfacemodel.h"
-#include "launchexecutor.h"
-#include "rosnames.h"
-#include "sourcereader.h"
+#include "launch/modelledports.h"
+#include "core/rosnames.h"
+#include "interfaces/interfacemodel.h"
+#include "launch/launchexecutor.h"
+#include "workspace/sourcereader.h"
 
 #include <algorithm>
 

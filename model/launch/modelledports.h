@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchdependencies.h"
+#include "core/launchdependencies.h"
 
 #include <QByteArray>
 #include <QHash>

@@ -1,4 +1,4 @@
-#include "nodeclasses.h"
+#include "launch/nodeclasses.h"
 
 #include <QSet>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "rospackage.h"
+#include "core/atomicnodelist.h"
+#include "core/rospackage.h"
 
 #include <QHash>
 #include <QList>

@@ -1,7 +1,7 @@
-#include "substitutionevaluator.h"
+#include "launch/substitutionevaluator.h"
 
-#include "pythonlauncheval.h"
-#include "valuebudget.h"
+#include "core/valuebudget.h"
+#include "launch/python/pythonlauncheval.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchdependencies.h"
-#include "substitution.h"
+#include "core/launchdependencies.h"
+#include "core/substitution.h"
 
 #include <QMap>
 #include <QSet>

@@ -1,6 +1,6 @@
-#include "generatedparameters.h"
+#include "nodes/generatedparameters.h"
 
-#include "sourcereader.h"
+#include "workspace/sourcereader.h"
 
 #include <QDir>
 #include <QRegularExpression>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "workspace.h"
+#include "core/atomicnodelist.h"
+#include "workspace/workspace.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,11 +1,11 @@
-#include "nodeanalyzer.h"
-#include "analysiscache.h"
-#include "cppnodeanalyzer.h"
-#include "cppsyntax.h"
-#include "generatedparameters.h"
-#include "pythonnodeanalyzer.h"
-#include "stagememo.h"
-#include "workspacescanner.h"
+#include "nodes/nodeanalyzer.h"
+#include "cache/analysiscache.h"
+#include "cache/stagememo.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "nodes/generatedparameters.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "syntax/cppsyntax.h"
+#include "workspace/workspacescanner.h"
 
 #include <QHash>
 #include <QSet>

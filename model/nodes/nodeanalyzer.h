@@ -1,8 +1,8 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/atomicnodelist.h"
+#include "core/stagecontrol.h"
+#include "workspace/workspace.h"
 
 #include <functional>
 

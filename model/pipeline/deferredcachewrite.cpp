@@ -1,5 +1,5 @@
-#include "deferredcachewrite.h"
-#include "analysiscache.h"
+#include "pipeline/deferredcachewrite.h"
+#include "cache/analysiscache.h"
 
 #include <mutex>
 #include <thread>

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchanalyzer.h"
-#include "launchdependencies.h"
-#include "stagecontrol.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
+#include "core/stagecontrol.h"
+#include "launch/launchanalyzer.h"
 
 #include <QString>
 

@@ -1,7 +1,7 @@
-#include "recoverystream.h"
+#include "pipeline/recoverystream.h"
 
-#include "cachecodec.h"
-#include "modelfields.h"
+#include "cache/cachecodec.h"
+#include "core/modelfields.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchanalyzer.h"
-#include "recovery.h"
+#include "launch/launchanalyzer.h"
+#include "pipeline/recovery.h"
 
 #include <QDataStream>
 #include <QHash>

@@ -1,6 +1,6 @@
-#include "stageprocess.h"
-#include "helperprogram.h"
-#include "stagesession.h"
+#include "pipeline/stageprocess.h"
+#include "core/helperprogram.h"
+#include "pipeline/stagesession.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "launchanalyzer.h"
-#include "recovery.h"
-#include "stagecontrol.h"
+#include "core/atomicnodelist.h"
+#include "core/stagecontrol.h"
+#include "launch/launchanalyzer.h"
+#include "pipeline/recovery.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
-#include "stagesession.h"
-#include "recoverystream.h"
-#include "sha1.h"
+#include "pipeline/stagesession.h"
+#include "cache/sha1.h"
+#include "pipeline/recoverystream.h"
 
 #include <QDir>
 #include <QElapsedTimer>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "recovery.h"
-#include "stageprocess.h"
-#include "workerprocess.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stageprocess.h"
+#include "pipeline/workerprocess.h"
 
 #include <QMutex>
 

@@ -1,4 +1,4 @@
-#include "workerprocess.h"
+#include "pipeline/workerprocess.h"
 
 #include <QFile>
 

@@ -1,6 +1,6 @@
-#include "acdwriter.h"
-#include "plantumltext.h"
-#include "visibletext.h"
+#include "plantuml/acdwriter.h"
+#include "core/visibletext.h"
+#include "plantuml/plantumltext.h"
 
 #include <QHash>
 #include <QSet>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "atomicnodelist.h"
+#include "core/atomicnode.h"
+#include "core/atomicnodelist.h"
 
 #include <QMap>
 #include <QString>

@@ -1,6 +1,6 @@
-#include "ccdwriter.h"
-#include "plantumltext.h"
-#include "visibletext.h"
+#include "plantuml/ccdwriter.h"
+#include "core/visibletext.h"
+#include "plantuml/plantumltext.h"
 
 #include <QHash>
 #include <QSet>

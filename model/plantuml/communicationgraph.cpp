@@ -1,5 +1,5 @@
-#include "communicationgraph.h"
-#include "rosnames.h"
+#include "plantuml/communicationgraph.h"
+#include "core/rosnames.h"
 
 #include <QMap>
 #include <QSet>

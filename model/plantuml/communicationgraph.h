@@ -1,6 +1,6 @@
 #pragma once
 
-#include "composition.h"
+#include "core/composition.h"
 
 #include <QString>
 

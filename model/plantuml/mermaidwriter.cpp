@@ -1,5 +1,5 @@
-#include "mermaidwriter.h"
-#include "plantumltext.h"
+#include "plantuml/mermaidwriter.h"
+#include "plantuml/plantumltext.h"
 
 #include <QHash>
 #include <QMap>

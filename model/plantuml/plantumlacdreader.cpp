@@ -1,5 +1,5 @@
-#include "plantumlacdreader.h"
-#include "umlnames.h"
+#include "plantuml/plantumlacdreader.h"
+#include "plantuml/umlnames.h"
 
 #include <QHash>
 #include <QRegularExpression>

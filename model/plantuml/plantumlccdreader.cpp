@@ -1,5 +1,5 @@
-#include "plantumlccdreader.h"
-#include "umlnames.h"
+#include "plantuml/plantumlccdreader.h"
+#include "plantuml/umlnames.h"
 
 #include <QHash>
 #include <QRegularExpression>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "plantumldocument.h"
+#include "plantuml/plantumldocument.h"
 
 namespace rosarch {
 

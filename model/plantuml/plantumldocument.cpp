@@ -1,5 +1,5 @@
-#include "plantumldocument.h"
-#include "umlnames.h"
+#include "plantuml/plantumldocument.h"
+#include "plantuml/umlnames.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "plantumlsyntax.h"
-#include "umldiagram.h"
+#include "plantuml/plantumlsyntax.h"
+#include "plantuml/umldiagram.h"
 
 #include <QList>
 #include <QStringList>

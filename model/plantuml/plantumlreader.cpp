@@ -1,9 +1,9 @@
-#include "plantumlreader.h"
-#include "plantumlacdreader.h"
-#include "plantumlccdreader.h"
-#include "plantumldocument.h"
-#include "plantumlsyntax.h"
-#include "umlnames.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/plantumlacdreader.h"
+#include "plantuml/plantumlccdreader.h"
+#include "plantuml/plantumldocument.h"
+#include "plantuml/plantumlsyntax.h"
+#include "plantuml/umlnames.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>

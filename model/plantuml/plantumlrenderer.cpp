@@ -1,4 +1,4 @@
-#include "plantumlrenderer.h"
+#include "plantuml/plantumlrenderer.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,4 +1,4 @@
-#include "plantumlsyntax.h"
+#include "plantuml/plantumlsyntax.h"
 
 #include <QRegularExpression>
 #include <QSet>

@@ -1,4 +1,4 @@
-#include "umldiagram.h"
+#include "plantuml/umldiagram.h"
 
 #include <QHash>
 

@@ -1,5 +1,5 @@
-#include "umlmodel.h"
-#include "plantumlreader.h"
+#include "plantuml/umlmodel.h"
+#include "plantuml/plantumlreader.h"
 
 #include <QDir>
 #include <QDirIterator>

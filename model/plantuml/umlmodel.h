@@ -1,6 +1,6 @@
 #pragma once
 
-#include "umldiagram.h"
+#include "plantuml/umldiagram.h"
 
 #include <QList>
 #include <QString>

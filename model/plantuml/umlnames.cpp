@@ -1,5 +1,5 @@
-#include "umlnames.h"
-#include "editdistance.h"
+#include "plantuml/umlnames.h"
+#include "core/editdistance.h"
 
 #include <QList>
 #include <QRegularExpression>

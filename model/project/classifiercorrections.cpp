@@ -1,5 +1,5 @@
-#include "classifiercorrections.h"
-#include "composer.h"
+#include "project/classifiercorrections.h"
+#include "compose/composer.h"
 
 #include <QSet>
 

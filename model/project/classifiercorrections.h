@@ -1,9 +1,9 @@
 #pragma once
 
-#include "atomicnodelist.h"
-#include "composition.h"
-#include "launchdependencies.h"
-#include "stablekeys.h"
+#include "core/atomicnodelist.h"
+#include "core/composition.h"
+#include "core/launchdependencies.h"
+#include "project/stablekeys.h"
 
 #include <QHash>
 #include <QString>

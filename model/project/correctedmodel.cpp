@@ -1,8 +1,8 @@
-#include "correctedmodel.h"
-#include "acceptedmodel.h"
-#include "classifiercorrections.h"
-#include "composearchitecture.h"
-#include "subsystemgrouping.h"
+#include "project/correctedmodel.h"
+#include "accepted/acceptedmodel.h"
+#include "compose/composearchitecture.h"
+#include "compose/subsystemgrouping.h"
+#include "project/classifiercorrections.h"
 
 #include <QHash>
 #include <QSet>

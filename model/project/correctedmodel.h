@@ -1,8 +1,8 @@
 #pragma once
 
-#include "project.h"
-#include "recovery.h"
-#include "stablekeys.h"
+#include "pipeline/recovery.h"
+#include "project/project.h"
+#include "project/stablekeys.h"
 
 #include <QList>
 #include <QMap>

@@ -1,4 +1,4 @@
-#include "correction.h"
+#include "project/correction.h"
 
 #include <QJsonArray>
 

@@ -1,4 +1,4 @@
-#include "findingmark.h"
+#include "project/findingmark.h"
 
 namespace rosarch {
 

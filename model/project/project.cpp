@@ -1,5 +1,5 @@
-#include "project.h"
-#include "llmschemavalidator.h"
+#include "project/project.h"
+#include "suggestions/llm/llmschemavalidator.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "correction.h"
-#include "findingmark.h"
-#include "launchanalyzer.h"
-#include "suggestiondecision.h"
+#include "accepted/suggestiondecision.h"
+#include "launch/launchanalyzer.h"
+#include "project/correction.h"
+#include "project/findingmark.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,4 +1,4 @@
-#include "stablekeys.h"
+#include "project/stablekeys.h"
 
 #include <QSet>
 

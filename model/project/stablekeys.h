@@ -1,7 +1,7 @@
 #pragma once
 
-#include "port.h"
-#include "recovery.h"
+#include "core/port.h"
+#include "pipeline/recovery.h"
 
 #include <QHash>
 #include <QString>

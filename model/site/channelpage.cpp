@@ -1,4 +1,4 @@
-#include "channelpage.h"
+#include "site/channelpage.h"
 
 #include <QCoreApplication>
 

@@ -1,5 +1,5 @@
-#include "findingspage.h"
-#include "diagnostickind.h"
+#include "site/findingspage.h"
+#include "core/diagnostickind.h"
 
 #include <QCoreApplication>
 #include <QMap>

@@ -1,4 +1,4 @@
-#include "indexpage.h"
+#include "site/indexpage.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

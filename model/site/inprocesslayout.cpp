@@ -1,4 +1,4 @@
-#include "inprocesslayout.h"
+#include "site/inprocesslayout.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

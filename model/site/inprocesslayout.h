@@ -1,7 +1,7 @@
 #pragma once
 
-#include "graphlayout.h"
-#include "layoutgraph.h"
+#include "diagram/graphlayout.h"
+#include "diagram/layoutgraph.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
-#include "launchpage.h"
-#include "rosnames.h"
-#include "sitediagram.h"
+#include "site/launchpage.h"
+#include "core/rosnames.h"
+#include "site/sitediagram.h"
 
 #include <QCoreApplication>
 

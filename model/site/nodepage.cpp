@@ -1,4 +1,4 @@
-#include "nodepage.h"
+#include "site/nodepage.h"
 
 #include <QCoreApplication>
 #include <QHash>

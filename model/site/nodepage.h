@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sitehtml.h"
-#include "sitemodel.h"
+#include "site/sitehtml.h"
+#include "site/sitemodel.h"
 
 namespace rosarch {
 

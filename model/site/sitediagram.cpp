@@ -1,9 +1,9 @@
-#include "sitediagram.h"
-#include "diagrambuilder.h"
-#include "diagramoverview.h"
-#include "graphlayout.h"
-#include "inprocesslayout.h"
-#include "sitehtml.h"
+#include "site/sitediagram.h"
+#include "diagram/diagrambuilder.h"
+#include "diagram/diagramoverview.h"
+#include "diagram/graphlayout.h"
+#include "site/inprocesslayout.h"
+#include "site/sitehtml.h"
 
 #include <QCoreApplication>
 

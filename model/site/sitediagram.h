@@ -1,8 +1,8 @@
 #pragma once
 
-#include "composition.h"
-#include "graphlayout.h"
-#include "layoutgraph.h"
+#include "core/composition.h"
+#include "diagram/graphlayout.h"
+#include "diagram/layoutgraph.h"
 
 #include <QString>
 

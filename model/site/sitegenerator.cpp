@@ -1,11 +1,11 @@
-#include "sitegenerator.h"
-#include "channelpage.h"
-#include "findingspage.h"
-#include "indexpage.h"
-#include "launchpage.h"
-#include "nodepage.h"
-#include "sitemodel.h"
-#include "systempage.h"
+#include "site/sitegenerator.h"
+#include "site/channelpage.h"
+#include "site/findingspage.h"
+#include "site/indexpage.h"
+#include "site/launchpage.h"
+#include "site/nodepage.h"
+#include "site/sitemodel.h"
+#include "site/systempage.h"
 
 #include <QCoreApplication>
 #include <QDir>

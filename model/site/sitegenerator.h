@@ -1,8 +1,8 @@
 #pragma once
 
-#include "project.h"
-#include "recovery.h"
-#include "sitehtml.h"
+#include "pipeline/recovery.h"
+#include "project/project.h"
+#include "site/sitehtml.h"
 
 #include <QList>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "sitehtml.h"
+#include "site/sitehtml.h"
 
 #include <QCoreApplication>
 

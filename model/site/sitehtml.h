@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "sitesource.h"
+#include "core/evidence.h"
+#include "site/sitesource.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,5 +1,5 @@
-#include "sitemodel.h"
-#include "diagrambuilder.h"
+#include "site/sitemodel.h"
+#include "diagram/diagrambuilder.h"
 
 #include <QHash>
 #include <QSet>

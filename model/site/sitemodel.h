@@ -1,8 +1,8 @@
 #pragma once
 
-#include "project.h"
-#include "recovery.h"
-#include "rootchoice.h"
+#include "diagram/rootchoice.h"
+#include "pipeline/recovery.h"
+#include "project/project.h"
 
 #include <QList>
 #include <QMap>

@@ -1,6 +1,6 @@
-#include "sitesource.h"
+#include "site/sitesource.h"
 
-#include "gitrevision.h"
+#include "diff/gitrevision.h"
 
 #include <QDir>
 #include <QUrl>

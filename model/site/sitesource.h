@@ -1,6 +1,6 @@
 #pragma once
 
-#include "evidence.h"
+#include "core/evidence.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
-#include "systempage.h"
-#include "diagrambuilder.h"
-#include "sitediagram.h"
+#include "site/systempage.h"
+#include "diagram/diagrambuilder.h"
+#include "site/sitediagram.h"
 
 #include <QCoreApplication>
 #include <QHash>

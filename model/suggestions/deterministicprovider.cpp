@@ -1,6 +1,6 @@
-#include "deterministicprovider.h"
-#include "nodedocumentation.h"
-#include "subsystemgrouper.h"
+#include "suggestions/deterministicprovider.h"
+#include "suggestions/nodedocumentation.h"
+#include "suggestions/subsystemgrouper.h"
 
 #include <QSet>
 

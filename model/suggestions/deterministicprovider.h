@@ -1,8 +1,8 @@
 #pragma once
 
-#include "recovery.h"
-#include "suggestion.h"
-#include "suggestionsource.h"
+#include "core/suggestion.h"
+#include "pipeline/recovery.h"
+#include "suggestions/suggestionsource.h"
 
 #include <QDateTime>
 #include <QList>

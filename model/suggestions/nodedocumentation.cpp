@@ -1,4 +1,4 @@
-#include "nodedocumentation.h"
+#include "suggestions/nodedocumentation.h"
 
 #include <QRegularExpression>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "atomicnode.h"
-#include "suggestionsource.h"
+#include "core/atomicnode.h"
+#include "suggestions/suggestionsource.h"
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "subsystemgrouper.h"
+#include "suggestions/subsystemgrouper.h"
 
 #include <QHash>
 #include <QRegularExpression>

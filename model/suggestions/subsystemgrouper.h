@@ -1,6 +1,6 @@
 #pragma once
 
-#include "recovery.h"
+#include "pipeline/recovery.h"
 
 #include <QHash>
 #include <QList>

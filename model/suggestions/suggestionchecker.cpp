@@ -1,4 +1,4 @@
-#include "suggestionchecker.h"
+#include "suggestions/suggestionchecker.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "recovery.h"
-#include "suggestion.h"
-#include "suggestionitem.h"
+#include "core/suggestion.h"
+#include "pipeline/recovery.h"
+#include "suggestions/suggestionitem.h"
 
 #include <QHash>
 #include <QMutex>

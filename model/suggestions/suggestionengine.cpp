@@ -1,11 +1,11 @@
-#include "suggestionengine.h"
-#include "deterministicprovider.h"
-#include "llmclient.h"
-#include "prompttemplate.h"
-#include "subsystemgrouper.h"
-#include "suggestionchecker.h"
-#include "suggestionitem.h"
-#include "suggestionsource.h"
+#include "suggestions/suggestionengine.h"
+#include "suggestions/deterministicprovider.h"
+#include "suggestions/llm/llmclient.h"
+#include "suggestions/llm/prompttemplate.h"
+#include "suggestions/subsystemgrouper.h"
+#include "suggestions/suggestionchecker.h"
+#include "suggestions/suggestionitem.h"
+#include "suggestions/suggestionsource.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

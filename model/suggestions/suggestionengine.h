@@ -1,9 +1,9 @@
 #pragma once
 
-#include "llmrequest.h"
-#include "llmsettings.h"
-#include "recovery.h"
-#include "suggestionreport.h"
+#include "pipeline/recovery.h"
+#include "suggestions/llm/llmrequest.h"
+#include "suggestions/llm/llmsettings.h"
+#include "suggestions/suggestionreport.h"
 
 #include <QList>
 #include <QString>

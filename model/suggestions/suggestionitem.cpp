@@ -1,4 +1,4 @@
-#include "suggestionitem.h"
+#include "suggestions/suggestionitem.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "evidence.h"
-#include "recovery.h"
+#include "core/evidence.h"
+#include "pipeline/recovery.h"
 
 #include <QList>
 #include <QString>

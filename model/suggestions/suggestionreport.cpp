@@ -1,4 +1,4 @@
-#include "suggestionreport.h"
+#include "suggestions/suggestionreport.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
-#include "suggestionsjson.h"
-#include "evidencejson.h"
-#include "jsonsupport.h"
-#include "visibletext.h"
+#include "suggestions/suggestionsjson.h"
+#include "artifacts/evidencejson.h"
+#include "artifacts/jsonsupport.h"
+#include "core/visibletext.h"
 
 namespace rosarch {
 

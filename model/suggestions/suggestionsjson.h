@@ -1,6 +1,6 @@
 #pragma once
 
-#include "suggestionreport.h"
+#include "suggestions/suggestionreport.h"
 
 #include <QByteArray>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "suggestionsource.h"
+#include "suggestions/suggestionsource.h"
 
 #include <QDir>
 #include <QFile>

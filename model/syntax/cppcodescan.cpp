@@ -1,4 +1,4 @@
-#include "cppcodescan.h"
+#include "syntax/cppcodescan.h"
 
 #include <QRegularExpression>
 

@@ -1,4 +1,4 @@
-#include "cppconditionevaluator.h"
+#include "syntax/cppconditionevaluator.h"
 
 #include <QSet>
 

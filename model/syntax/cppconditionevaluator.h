@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cppmacro.h"
+#include "syntax/cppmacro.h"
 
 #include <QByteArray>
 

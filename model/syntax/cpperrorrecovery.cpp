@@ -1,4 +1,4 @@
-#include "cpperrorrecovery.h"
+#include "syntax/cpperrorrecovery.h"
 
 #include <QStringList>
 

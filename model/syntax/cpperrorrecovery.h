@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "syntaxtree.h"
+#include "core/diagnostic.h"
+#include "syntax/syntaxtree.h"
 
 #include <QByteArray>
 #include <QList>

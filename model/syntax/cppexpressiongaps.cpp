@@ -1,8 +1,8 @@
 // Valid C++ the grammar cannot read inside functions and parameter lists
 // (cppsyntax::blankGrammarGaps).
-#include "cppexpressiongaps.h"
-#include "cppcodescan.h"
-#include "cppmacrogaps.h"
+#include "syntax/cppexpressiongaps.h"
+#include "syntax/cppcodescan.h"
+#include "syntax/cppmacrogaps.h"
 
 #include <cstring>
 #include <vector>

@@ -1,6 +1,6 @@
-#include "cppgapstarts.h"
+#include "syntax/cppgapstarts.h"
 
-#include "cppcodescan.h"
+#include "syntax/cppcodescan.h"
 
 #include <cstring>
 #include <string_view>

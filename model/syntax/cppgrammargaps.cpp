@@ -1,9 +1,9 @@
 // Rewrites of valid C++ the tree-sitter grammar cannot read (cppsyntax::blankGrammarGaps).
-#include "cppcodescan.h"
-#include "cppexpressiongaps.h"
-#include "cppgapstarts.h"
-#include "cppmacrogaps.h"
-#include "cppsyntax.h"
+#include "syntax/cppcodescan.h"
+#include "syntax/cppexpressiongaps.h"
+#include "syntax/cppgapstarts.h"
+#include "syntax/cppmacrogaps.h"
+#include "syntax/cppsyntax.h"
 
 #include <QRegularExpression>
 

@@ -1,6 +1,6 @@
 // Macros the grammar cannot read where they stand (cppsyntax::blankGrammarGaps).
-#include "cppmacrogaps.h"
-#include "cppcodescan.h"
+#include "syntax/cppmacrogaps.h"
+#include "syntax/cppcodescan.h"
 
 #include <cstring>
 #include <string>

@@ -1,6 +1,6 @@
-#include "cpppreprocessor.h"
+#include "syntax/cpppreprocessor.h"
 
-#include "cppconditionevaluator.h"
+#include "syntax/cppconditionevaluator.h"
 
 #include <string_view>
 #include <vector>

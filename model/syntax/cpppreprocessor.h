@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cppmacro.h"
-#include "diagnostic.h"
+#include "core/diagnostic.h"
+#include "syntax/cppmacro.h"
 
 #include <QByteArray>
 #include <QList>

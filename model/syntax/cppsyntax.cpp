@@ -1,5 +1,5 @@
-#include "cppsyntax.h"
-#include "cppcodescan.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/cppcodescan.h"
 
 #include <QRegularExpression>
 

@@ -1,6 +1,6 @@
-#include "parsehandoff.h"
+#include "syntax/parsehandoff.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <QHash>
 

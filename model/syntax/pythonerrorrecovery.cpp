@@ -1,6 +1,6 @@
-#include "pythonerrorrecovery.h"
+#include "syntax/pythonerrorrecovery.h"
 
-#include "syntaxtree.h"
+#include "syntax/syntaxtree.h"
 
 #include <cctype>
 

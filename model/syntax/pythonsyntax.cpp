@@ -1,4 +1,4 @@
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 namespace rosarch::py {
 

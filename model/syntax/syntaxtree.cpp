@@ -1,4 +1,4 @@
-#include "syntaxtree.h"
+#include "syntax/syntaxtree.h"
 
 #include <atomic>
 #include <cstdint>

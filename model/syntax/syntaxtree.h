@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "evidence.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
 
 #include <QByteArray>
 #include <QList>

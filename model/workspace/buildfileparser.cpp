@@ -1,5 +1,5 @@
-#include "buildfileparser.h"
-#include "syntaxtree.h"
+#include "workspace/buildfileparser.h"
+#include "syntax/syntaxtree.h"
 
 #include <QHash>
 #include <QRegularExpression>

@@ -1,6 +1,6 @@
-#include "cmakelistsreader.h"
+#include "workspace/cmakelistsreader.h"
 
-#include "valuebudget.h"
+#include "core/valuebudget.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "rospackage.h"
+#include "core/diagnostic.h"
+#include "core/rospackage.h"
 
 #include <QHash>
 #include <QList>

@@ -1,4 +1,4 @@
-#include "sourcereader.h"
+#include "workspace/sourcereader.h"
 
 #include <QDir>
 #include <QFile>

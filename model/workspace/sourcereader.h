@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "workspace.h"
+#include "core/diagnostic.h"
+#include "workspace/workspace.h"
 
 #include <QByteArray>
 #include <QList>

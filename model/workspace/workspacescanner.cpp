@@ -1,10 +1,10 @@
-#include "workspacescanner.h"
-#include "buildfileparser.h"
-#include "cmakelistsreader.h"
-#include "packageversion.h"
-#include "sourcereader.h"
+#include "workspace/workspacescanner.h"
+#include "core/packageversion.h"
+#include "workspace/buildfileparser.h"
+#include "workspace/cmakelistsreader.h"
+#include "workspace/sourcereader.h"
 
-#include "analysiscache.h"
+#include "cache/analysiscache.h"
 
 #include <QDir>
 #include <QFile>

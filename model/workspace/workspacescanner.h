@@ -1,7 +1,7 @@
 #pragma once
 
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/stagecontrol.h"
+#include "workspace/workspace.h"
 
 namespace rosarch {
 

@@ -2,18 +2,18 @@
 // the launch tree and the diagram, a topic in the diagram; a removed element, not in the model
 // shown, is said in the status bar. On the example workspace, the changes written as
 // ArchitectureDiff writes them for elements of the model shown.
-#include "architecturediffview.h"
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "diagrambuilder.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramwait.h"
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "testsupport.h"
+#include "app/mainwindow.h"
+#include "diagram/diagrambuilder.h"
+#include "document/document.h"
+#include "support/diagramwait.h"
+#include "support/testsupport.h"
+#include "widgets/architecturediffview.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
 
 #include <QSettings>
 #include <QStatusBar>

@@ -1,17 +1,17 @@
 // The GUI's comparisons: File › Compare Architecture with a git revision and with an
 // artifact folder (the Architecture changes dock, coloured by kind of change), and File ›
 // Export and Render with PlantUML (SVGs by the real PlantUML, in the background).
-#include "appsettings.h"
-#include "architecturediffview.h"
-#include "chatrepo.h"
-#include "comparecontroller.h"
-#include "document.h"
-#include "gitrevision.h"
-#include "mainwindow.h"
-#include "rendercontroller.h"
-#include "screenshot.h"
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/appsettings.h"
+#include "app/comparecontroller.h"
+#include "app/mainwindow.h"
+#include "app/rendercontroller.h"
+#include "app/stagerunner.h"
+#include "diff/gitrevision.h"
+#include "document/document.h"
+#include "support/chatrepo.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/architecturediffview.h"
 
 #include <QDockWidget>
 #include <QMessageBox>

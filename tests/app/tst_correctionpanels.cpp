@@ -1,7 +1,7 @@
 // Corrections in the GUI's panels: the inspector, the Corrections panel, re-running
 // the stages, orphans and re-targeting, and a project's corrections shown everywhere.
-#include "correctiongui.h"
-#include "stablekeys.h"
+#include "project/stablekeys.h"
+#include "support/correctiongui.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 // Corrections made through the GUI: each kind through the controller's menu path
 // with the dialog filled in as a person would, undone and redone, as the views show it.
-#include "correctiongui.h"
+#include "support/correctiongui.h"
 
 #include <QtTest>
 

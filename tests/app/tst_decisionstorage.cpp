@@ -2,10 +2,10 @@
 // until then in the autosave side file, written by the autosave (not on every undo and redo),
 // before another workspace replaces them and when the document goes; kept in memory when the
 // disk refuses them.
-#include "document.h"
-#include "project.h"
-#include "suggestionfixture.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "project/project.h"
+#include "support/suggestionfixture.h"
+#include "support/testsupport.h"
 
 #include <QCryptographicHash>
 #include <QElapsedTimer>

@@ -1,8 +1,8 @@
 // View → Focus Diagram (Ctrl+Shift+D) gives the composed diagram the whole window and gives the
 // other panels back as they were; the layout remembered on quitting is the one to come back to.
-#include "diagramfocus.h"
-#include "diagrampanel.h"
-#include "mainwindow.h"
+#include "app/diagramfocus.h"
+#include "app/mainwindow.h"
+#include "widgets/diagram/diagrampanel.h"
 
 #include <QAction>
 #include <QDockWidget>

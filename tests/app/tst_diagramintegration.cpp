@@ -1,21 +1,21 @@
 // The composed diagram inside the main window, on tests/data/compose_system: it follows the
 // launch tree, a click in it selects the launch tree and the source, it exports, and a
 // comparison with a reference model marks extra elements and lists missing ones.
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "diagramcontroller.h"
-#include "diagramitem.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "screenshot.h"
-#include "sourceview.h"
-#include "stagerunner.h"
-#include "suggestionpanel.h"
-#include "testsupport.h"
+#include "app/diagramcontroller.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagram/diagramitem.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/sourceview.h"
+#include "widgets/suggestionpanel.h"
 
 #include <QGraphicsItem>
 #include <QImage>

@@ -1,13 +1,13 @@
 // The root the composed diagram starts on, in the main window: RootChoice's pick on a
 // workspace opened for the first time, a root chosen in the diagram's header remembered for
 // that workspace, and the remembered one shown first when the workspace is opened again.
-#include "appsettings.h"
-#include "diagrampanel.h"
-#include "diagramrootpicker.h"
-#include "document.h"
-#include "mainwindow.h"
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/appsettings.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "support/testsupport.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramrootpicker.h"
 
 #include <QDir>
 #include <QSettings>

@@ -1,9 +1,9 @@
 // Corrections in the Document (blueprint §5): each one of the fixture project, made one by one,
 // gives the same model as the corrected-model function; every one undoes and redoes; removing
 // one reverts it; and re-running the stages on the same workspace keeps them, by key.
-#include "correctedmodel.h"
-#include "document.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "project/correctedmodel.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QSignalSpy>

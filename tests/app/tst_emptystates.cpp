@@ -1,14 +1,14 @@
 // What the window's empty panels say: before a run, after a run that found
 // no package, no node class or no launch file, and after a run stopped before any result.
-#include "atomicnodepanel.h"
-#include "diagrampanel.h"
-#include "guifixture.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "recovery.h"
-#include "screenshot.h"
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "pipeline/recovery.h"
+#include "support/guifixture.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/launchtreepanel.h"
 
 #include <QLabel>
 #include <QSignalSpy>

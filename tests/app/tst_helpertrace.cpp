@@ -1,14 +1,14 @@
 // From the source to the model on a helper several classes share: a line of the helper that
 // makes a port of each class leads to the class the person came from, not to whichever class
 // comes first.
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "document.h"
-#include "guifixture.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "sourceview.h"
-#include "traceability.h"
+#include "app/traceability.h"
+#include "document/document.h"
+#include "support/guifixture.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/sourceview.h"
 
 #include <QtTest>
 

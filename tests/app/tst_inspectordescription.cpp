@@ -1,15 +1,15 @@
 // What a node does, in the inspector: every node class and node instance has a description
 // row, from the class's own documentation without running Suggestions, replaced by a person's
 // description, and saying which source it is; where nothing describes the class it says so.
-#include "cacherecovery.h"
-#include "correctiongui.h"
-#include "diagramarchitecture.h"
-#include "diagramlayouter.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramwait.h"
-#include "nodedescription.h"
-#include "testsupport.h"
+#include "diagram/diagramlayouter.h"
+#include "document/nodedescription.h"
+#include "support/cacherecovery.h"
+#include "support/correctiongui.h"
+#include "support/diagramarchitecture.h"
+#include "support/diagramwait.h"
+#include "support/testsupport.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
 
 #include <QtTest>
 

@@ -2,17 +2,17 @@
 // arrives in the views, the status bar says which stage is at how many files, the log says how
 // long each stage took, and the UI thread never stops answering for long (a generous limit
 // here; rosarch-stallbench measures it strictly on real workspaces).
-#include "atomicnodemodel.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "logview.h"
-#include "mainwindow.h"
-#include "nodefilterproxymodel.h"
-#include "stagerunner.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
 #include "syntheticworkspace.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/logview.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QDir>
 #include <QElapsedTimer>

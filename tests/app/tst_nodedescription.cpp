@@ -1,10 +1,10 @@
 // A node's description without running Suggestions: the class's own documentation (a
 // docstring, a comment block above the class) is in effect until a suggestion is accepted or a
 // person writes one, and the views are told whose it is.
-#include "cacherecovery.h"
-#include "document.h"
-#include "nodedescription.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "document/nodedescription.h"
+#include "support/cacherecovery.h"
+#include "support/testsupport.h"
 
 #include <QDateTime>
 #include <QDir>

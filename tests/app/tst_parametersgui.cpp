@@ -1,15 +1,15 @@
 // The window's parameter features as a user meets them: the Parameters tab follows the node
 // instance selected in the launch tree, and File › Export NoDL writes one description per node
 // class.
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "parameterpanel.h"
-#include "recovery.h"
-#include "screenshot.h"
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/parameterpanel.h"
 
 #include <QDockWidget>
 #include <QJsonDocument>

@@ -2,15 +2,15 @@
 // through the window, the modified indicator, recent projects, Save / Discard / Cancel before
 // changes are replaced, the autosave side file and the offer to recover it after a crash, and
 // a broken or newer project file explained and kept.
-#include "appsettings.h"
-#include "document.h"
-#include "logview.h"
-#include "mainwindow.h"
-#include "project.h"
-#include "projectcontroller.h"
-#include "stagerunner.h"
-#include "suggestionengine.h"
-#include "testsupport.h"
+#include "app/appsettings.h"
+#include "app/mainwindow.h"
+#include "app/projectcontroller.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "project/project.h"
+#include "suggestions/suggestionengine.h"
+#include "support/testsupport.h"
+#include "widgets/logview.h"
 
 #include <QAbstractButton>
 #include <QAction>

@@ -2,13 +2,13 @@
 // what `rosarch site` offers (folder, title, source-URL pattern, commit), refuses a pattern
 // without {path} with a sentence that says so, writes the site off the UI thread, and
 // remembers its fields for the workspace.
-#include "appsettings.h"
-#include "guifixture.h"
-#include "mainwindow.h"
-#include "siteexport.h"
-#include "siteexportdialog.h"
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/appsettings.h"
+#include "app/commands/siteexport.h"
+#include "app/mainwindow.h"
+#include "app/siteexportdialog.h"
+#include "app/stagerunner.h"
+#include "support/guifixture.h"
+#include "support/testsupport.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>

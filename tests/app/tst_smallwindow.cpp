@@ -1,17 +1,17 @@
 // The window at 1024 x 700: the Log shows more than two findings, and the Log's filter bar shows
 // each of its controls whole; the diagram's header and toolbars, the main toolbar and the two
 // trees are shown whole, nothing behind a toolbar's arrow and no name drawn over another.
-#include "atomicnodepanel.h"
-#include "diagnosticfilterbar.h"
-#include "diagrambreadcrumbbar.h"
-#include "diagrampanel.h"
-#include "diagramrootpicker.h"
-#include "guifixture.h"
-#include "launchtreepanel.h"
-#include "logview.h"
-#include "mainwindow.h"
-#include "screenshot.h"
-#include "stagerunner.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "support/guifixture.h"
+#include "support/screenshot.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagram/diagrambreadcrumbbar.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramrootpicker.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QLabel>

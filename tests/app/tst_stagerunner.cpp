@@ -1,5 +1,5 @@
-#include "stagerunner.h"
-#include "testsupport.h"
+#include "app/stagerunner.h"
+#include "support/testsupport.h"
 
 #include <QSignalSpy>
 #include <QThread>

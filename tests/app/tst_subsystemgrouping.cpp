@@ -2,17 +2,17 @@
 // tests/data/compose_system, the CCD writer's <<Subsystem>> blocks read back and scored
 // against the ungrouped expected CCDs, the diagram's subsystem clusters, and the path from an
 // accepted suggestion in the Document to the drawn and exported architecture (with undo).
-#include "ccdwriter.h"
-#include "diagrambuilder.h"
-#include "diagrampanel.h"
-#include "document.h"
-#include "evaluator.h"
-#include "mainwindow.h"
-#include "plantumlreader.h"
-#include "project.h"
-#include "subsystemgrouping.h"
-#include "suggestionengine.h"
-#include "testsupport.h"
+#include "app/mainwindow.h"
+#include "compose/subsystemgrouping.h"
+#include "diagram/diagrambuilder.h"
+#include "document/document.h"
+#include "evaluation/evaluator.h"
+#include "plantuml/ccdwriter.h"
+#include "plantuml/plantumlreader.h"
+#include "project/project.h"
+#include "suggestions/suggestionengine.h"
+#include "support/testsupport.h"
+#include "widgets/diagram/diagrampanel.h"
 
 #include <QDirIterator>
 #include <QStandardPaths>

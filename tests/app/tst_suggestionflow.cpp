@@ -1,19 +1,19 @@
 // The suggestion flow behind the panel: the Document's accept / reject / accept-all commands
 // (undo round trips), decisions kept per workspace, the runner off the UI thread (stale
 // results, cancel) and the controller against a fake OpenAI-compatible server over real HTTP.
-#include "appsettings.h"
-#include "document.h"
-#include "documentchanges.h"
-#include "fakellmserver.h"
-#include "project.h"
-#include "screenshot.h"
-#include "suggestioncontroller.h"
-#include "suggestionengine.h"
-#include "suggestionfixture.h"
-#include "suggestionmodel.h"
-#include "suggestionpanel.h"
-#include "suggestionrunner.h"
-#include "testsupport.h"
+#include "app/appsettings.h"
+#include "app/suggestioncontroller.h"
+#include "app/suggestionrunner.h"
+#include "document/document.h"
+#include "project/project.h"
+#include "suggestions/suggestionengine.h"
+#include "support/documentchanges.h"
+#include "support/fakellmserver.h"
+#include "support/screenshot.h"
+#include "support/suggestionfixture.h"
+#include "support/testsupport.h"
+#include "widgets/suggestionmodel.h"
+#include "widgets/suggestionpanel.h"
 
 #include <QLabel>
 #include <QSettings>

@@ -2,16 +2,16 @@
 // QAbstractItemModelTester through runs and decisions, pending suggestions appear with their
 // columns and counts, selection previews, keyboard accept / reject, filters, accept all, the
 // LLM settings dialog (the key shown as present, never its value), and screenshots.
-#include "document.h"
-#include "llmsettingsdialog.h"
-#include "project.h"
-#include "screenshot.h"
-#include "suggestioncontroller.h"
-#include "suggestionengine.h"
-#include "suggestionfiltermodel.h"
-#include "suggestionmodel.h"
-#include "suggestionpanel.h"
-#include "testsupport.h"
+#include "app/suggestioncontroller.h"
+#include "document/document.h"
+#include "project/project.h"
+#include "suggestions/suggestionengine.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/llmsettingsdialog.h"
+#include "widgets/suggestionfiltermodel.h"
+#include "widgets/suggestionmodel.h"
+#include "widgets/suggestionpanel.h"
 
 #include <QAbstractItemModelTester>
 #include <QApplication>

@@ -3,21 +3,21 @@
 // across the shown composite and its includes; choosing a talker selects its instance in the
 // launch tree, the diagram, the node list and the source; a click on an edge selects its
 // part's instance everywhere, as a click on the part does.
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "diagramedgeitem.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramview.h"
-#include "document.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "screenshot.h"
-#include "sourceview.h"
-#include "stagerunner.h"
-#include "talkerspanel.h"
-#include "testsupport.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagram/diagramedgeitem.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/sourceview.h"
+#include "widgets/talkerspanel.h"
 
 #include <QDockWidget>
 #include <QSettings>

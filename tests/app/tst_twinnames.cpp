@@ -2,7 +2,7 @@
 // same name to the class's other unresolved ports written the same way, does it in one undoable
 // step and says how many ports it named. On the project_corrections fixture with a subscriber
 // added that is written as the publisher is.
-#include "correctiongui.h"
+#include "support/correctiongui.h"
 
 #include <QCheckBox>
 #include <QFile>

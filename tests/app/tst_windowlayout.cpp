@@ -1,10 +1,10 @@
 // The main window's layout: what it looks like at a laptop's size, and what it remembers.
-#include "appsettings.h"
-#include "diagnosticfilterbar.h"
-#include "diagnosticmodel.h"
-#include "guifixture.h"
-#include "logview.h"
-#include "mainwindow.h"
+#include "app/appsettings.h"
+#include "app/mainwindow.h"
+#include "support/guifixture.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagnosticmodel.h"
+#include "widgets/logview.h"
 
 #include <QAction>
 #include <QCheckBox>

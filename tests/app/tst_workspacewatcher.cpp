@@ -1,13 +1,13 @@
 // The workspace watcher: which changes ask for which re-run, debounced into one request, the
 // tool's own files ignored; and in the window, an edit on disk re-runs the stages and the
 // model shows the change.
-#include "appsettings.h"
-#include "document.h"
-#include "guifixture.h"
-#include "mainwindow.h"
-#include "stagerunner.h"
-#include "testsupport.h"
-#include "workspacewatcher.h"
+#include "app/appsettings.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "app/workspacewatcher.h"
+#include "document/document.h"
+#include "support/guifixture.h"
+#include "support/testsupport.h"
 
 #include <QSettings>
 #include <QSignalSpy>

@@ -1,9 +1,9 @@
 // libFuzzer target: the build-file readers: package.xml, setup.py, setup.cfg and
 // CMakeLists.txt (with add_subdirectory back into itself). The first byte picks the reader.
-#include "buildfileparser.h"
-#include "cmakelistsreader.h"
 #include "fuzzsupport.h"
 #include "structuremutator.h"
+#include "workspace/buildfileparser.h"
+#include "workspace/cmakelistsreader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

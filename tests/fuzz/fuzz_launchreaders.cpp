@@ -2,12 +2,12 @@
 // YAML parameter-file reader with its node matching and rewrites, and the evaluator of
 // `$(eval ...)` expressions. The first byte picks one, so one corpus covers them all.
 #include "fuzzsupport.h"
-#include "parameterfile.h"
-#include "pythonlauncheval.h"
-#include "pythonlaunchreader.h"
+#include "launch/python/pythonlauncheval.h"
+#include "launch/python/pythonlaunchreader.h"
+#include "launch/xmlyaml/parameterfile.h"
+#include "launch/xmlyaml/xmllaunchreader.h"
+#include "launch/xmlyaml/yamllaunchreader.h"
 #include "structuremutator.h"
-#include "xmllaunchreader.h"
-#include "yamllaunchreader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

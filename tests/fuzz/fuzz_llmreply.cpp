@@ -1,8 +1,8 @@
 // libFuzzer target: an LLM reply's content, parsed and checked against a schema shaped like
 // the node-description prompt's (what the client does with every reply).
 #include "fuzzsupport.h"
-#include "llmclient.h"
-#include "llmschemavalidator.h"
+#include "suggestions/llm/llmclient.h"
+#include "suggestions/llm/llmschemavalidator.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

@@ -1,8 +1,8 @@
 // libFuzzer target: the Python and C++ node analyzers on one source file of a scratch
 // workspace (they read files). The first byte picks the language.
-#include "cppnodeanalyzer.h"
 #include "fuzzsupport.h"
-#include "pythonnodeanalyzer.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "nodes/python/pythonnodeanalyzer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -1,7 +1,7 @@
 // libFuzzer target: the tolerant PlantUML reader (reference models are written by hand).
 #include "fuzzsupport.h"
-#include "plantumlreader.h"
-#include "umlmodel.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/umlmodel.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -2,9 +2,9 @@
 // input's parts (split at byte 0x01) become, in order, an XML launch file, a Python launch
 // file, a YAML launch file, a package's CMakeLists.txt, its C++ node and a Python node, beside
 // one healthy package; the run must end, and no class may list a port twice.
+#include "core/modelinvariants.h"
 #include "fuzzsupport.h"
-#include "modelinvariants.h"
-#include "recovery.h"
+#include "pipeline/recovery.h"
 #include "structuremutator.h"
 
 #include <cstdlib>

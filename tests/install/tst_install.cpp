@@ -2,7 +2,7 @@
 // prefix moved to another folder (so only relative paths can work), and rosarch run from
 // there. The recovery of the installed example must equal the build tree's, and must have
 // run in the installed analysis worker.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QProcess>

@@ -1,7 +1,7 @@
 #pragma once
 // Stages 1-3 with a given analysis cache, for the tests of what the cache lets the stages reuse.
-#include "analysiscache.h"
-#include "recovery.h"
+#include "cache/analysiscache.h"
+#include "pipeline/recovery.h"
 
 namespace rosarch::test {
 

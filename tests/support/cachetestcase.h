@@ -1,6 +1,6 @@
 #pragma once
 // The set-up shared by the tests of the analysis cache and of what it lets the stages reuse.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

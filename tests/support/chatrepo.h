@@ -3,7 +3,7 @@
 // A git repository with two revisions of a small workspace, made by the test: HEAD~1 has a
 // speaker publishing /chatter and a hearer subscribing to it; HEAD renames the topic to /chat
 // in both and gives the hearer a second subscription, to /clock. Used by the diff tests.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 namespace rosarch::test::chat {
 

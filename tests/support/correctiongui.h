@@ -1,22 +1,22 @@
 #pragma once
 // The views and the controller of the main window on one Document, for the GUI tests of
 // corrections (tst_corrections, tst_correctionpanels).
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "correctioncontroller.h"
-#include "correctiondialog.h"
-#include "correctionmodel.h"
-#include "correctionpanel.h"
-#include "diagramlayouter.h"
-#include "diagrampanel.h"
-#include "document.h"
-#include "inspectorpanel.h"
-#include "launchtreemodel.h"
-#include "launchtreepanel.h"
-#include "recovery.h"
-#include "sourceview.h"
-#include "testsupport.h"
-#include "traceability.h"
+#include "app/correctioncontroller.h"
+#include "app/traceability.h"
+#include "diagram/diagramlayouter.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/correctiondialog.h"
+#include "widgets/correctionmodel.h"
+#include "widgets/correctionpanel.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/inspectorpanel.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/sourceview.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>

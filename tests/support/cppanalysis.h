@@ -2,9 +2,9 @@
 
 // The C++ analyzer on the fixture workspaces, and ports as comparable text.
 #include "analysistext.h"
-#include "cppnodeanalyzer.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -3,7 +3,7 @@
 // A hand-made stage 3 result for the diagram tests: a root launch file including a child, with
 // namespaces, a topic, a service, an action, boundary ports, an inactive part and an external
 // include. Included by tst_graphlayout.cpp and tst_diagrampanel.cpp.
-#include "composition.h"
+#include "core/composition.h"
 
 #include <QMap>
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "diagramarchitecture.h"
-#include "diagramlayouter.h"
-#include "diagrampanel.h"
-#include "diagramwait.h"
+#include "diagram/diagramlayouter.h"
+#include "support/diagramarchitecture.h"
+#include "support/diagramwait.h"
+#include "widgets/diagram/diagrampanel.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "diagrampanel.h"
+#include "widgets/diagram/diagrampanel.h"
 
 #include <QSignalSpy>
 

@@ -2,7 +2,7 @@
 
 // Reading a Document's change signal in tests: the changes a QSignalSpy on Document::changed
 // recorded, filtered by part.
-#include "documentchange.h"
+#include "document/documentchange.h"
 
 #include <QSignalSpy>
 #include <QStringList>

@@ -1,10 +1,10 @@
 #pragma once
 
 // tests/data/gui_ws built by hand, so GUI tests do not depend on the analyzers.
-#include "atomicnodelist.h"
-#include "launchdependencies.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "core/atomicnodelist.h"
+#include "core/launchdependencies.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
 
 namespace rosarch::test {
 

@@ -1,7 +1,7 @@
 #pragma once
 
 // Launch descriptions read from XML and YAML.
-#include "substitution.h"
+#include "core/substitution.h"
 
 namespace rosarch::test {
 

@@ -1,9 +1,9 @@
 #pragma once
 
 // The Python analyzer on the fixture workspaces, and ports as comparable text.
-#include "pythonnodeanalyzer.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QStringList>
 

@@ -2,8 +2,8 @@
 
 // Shared helpers for tests that run the stages on generated workspaces: a healthy package to
 // put next to something hostile, and what a recovery found, as text to compare.
-#include "recovery.h"
-#include "testsupport.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
 
 #include <QStringList>
 

@@ -1,7 +1,7 @@
 #pragma once
 
 // Screenshots of widgets under test, for a person to look at.
-#include "testsupport.h"
+#include "support/testsupport.h"
 #include <QWidget>
 
 namespace rosarch::test {

@@ -2,9 +2,9 @@
 
 // The example workspace recovered once, with its deterministic suggestions, for the tests of
 // suggestions and decisions; settings and decisions kept in a temporary home.
-#include "document.h"
-#include "recovery.h"
-#include "suggestionengine.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "suggestions/suggestionengine.h"
 
 #include <QDir>
 #include <QFileInfo>

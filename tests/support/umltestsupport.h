@@ -1,8 +1,8 @@
 #pragma once
 
 // Shared by the PlantUML reader tests: the canonical view of a diagram and our own notation.
-#include "plantumlreader.h"
-#include "umldiagram.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/umldiagram.h"
 
 #include <QString>
 #include <QStringList>

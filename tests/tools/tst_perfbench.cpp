@@ -1,6 +1,6 @@
 // rosarch-perfbench on a small fixture: it runs every case and reports them (the figures
 // themselves are measurements, not checked here).
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,6 +1,6 @@
 // rosarch-survey on fixture workspaces: the counts it prints are what the analyzers find, and
 // --dump lists the classes, ports and launch actions themselves.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QProcess>
 #include <QtTest>

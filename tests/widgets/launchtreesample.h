@@ -2,8 +2,8 @@
 // include, namespaces, a container, parameters, an inactive node) and small item-model helpers.
 #pragma once
 
-#include "icons.h"
-#include "launchdependencies.h"
+#include "core/launchdependencies.h"
+#include "widgets/icons.h"
 
 #include <QAbstractItemModel>
 #include <QIcon>

@@ -1,10 +1,10 @@
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "diagnosticmodel.h"
-#include "document.h"
-#include "guifixture.h"
-#include "nodefilterproxymodel.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "support/guifixture.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagnosticmodel.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QIcon>

@@ -3,14 +3,14 @@
 // filter, opened only when asked or when the filter matches a parameter, and taking the person
 // to the declaration. A class row's tooltip says which description is in effect and where it
 // comes from.
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "cacherecovery.h"
-#include "document.h"
-#include "nodedescription.h"
-#include "nodefilterproxymodel.h"
-#include "suggestionreport.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "document/nodedescription.h"
+#include "suggestions/suggestionreport.h"
+#include "support/cacherecovery.h"
+#include "support/testsupport.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QLineEdit>

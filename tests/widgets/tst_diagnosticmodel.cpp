@@ -1,14 +1,14 @@
 // The Log's findings table: filter, sort, group and count; hide and accept go to the
 // project by key, undo, survive a re-run and a save and reopen; the panel's filter bar and
 // next / previous follow what is shown.
-#include "diagnosticdetail.h"
-#include "diagnosticfilterbar.h"
-#include "diagnosticmodel.h"
-#include "document.h"
-#include "icons.h"
-#include "logview.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "document/document.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
+#include "widgets/diagnosticdetail.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagnosticmodel.h"
+#include "widgets/icons.h"
+#include "widgets/logview.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>

@@ -1,9 +1,9 @@
 // FlowLayout: a bar of widgets wraps into rows when narrow, so that a dock holding it (the
 // Log's filter bar) does not make the window wider than the screen.
-#include "diagnosticfilterbar.h"
-#include "diagnosticmodel.h"
-#include "document.h"
-#include "flowlayout.h"
+#include "document/document.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagnosticmodel.h"
+#include "widgets/flowlayout.h"
 
 #include <QLineEdit>
 #include <QPushButton>

@@ -1,12 +1,12 @@
-#include "document.h"
-#include "documentchanges.h"
-#include "guifixture.h"
-#include "launchtreemodel.h"
+#include "document/document.h"
 #include "launchtreesample.h"
-#include "launchtreetext.h"
-#include "nodefilterproxymodel.h"
-#include "project.h"
-#include "testsupport.h"
+#include "project/project.h"
+#include "support/documentchanges.h"
+#include "support/guifixture.h"
+#include "support/testsupport.h"
+#include "widgets/launchtreemodel.h"
+#include "widgets/launchtreetext.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QFont>

@@ -1,6 +1,6 @@
 // The tree filter of the node list and the launch tree: which rows it keeps, and filtering as
 // a person types over a tree too large to match between two keys.
-#include "nodefilterproxymodel.h"
+#include "widgets/nodefilterproxymodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>

@@ -1,11 +1,11 @@
 // The Parameters panel: a node instance's parameters as a table that sorts by any column,
 // filters, says what is given but not declared, and opens where a value is set.
-#include "parameterpanel.h"
-#include "parametertablemodel.h"
-#include "recovery.h"
-#include "recoverytest.h"
-#include "screenshot.h"
-#include "testsupport.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
+#include "support/screenshot.h"
+#include "support/testsupport.h"
+#include "widgets/parameterpanel.h"
+#include "widgets/parametertablemodel.h"
 
 #include <QAbstractItemModelTester>
 #include <QHeaderView>

@@ -1,7 +1,7 @@
 // The Talkers panel counts node instances, not ports: a node with several ports on one name is
 // one row with its ports under it, and a copy whose launch condition is false is listed greyed
 // and counted apart, not as one more publisher.
-#include "talkerspanel.h"
+#include "widgets/talkerspanel.h"
 
 #include <QTreeWidget>
 #include <QtTest>

@@ -1,13 +1,13 @@
 #include "benchsteps.h"
 
-#include "analysiscache.h"
-#include "recovery.h"
-#include "sourcereader.h"
-#include "stageprocess.h"
-#include "stagesession.h"
-#include "syntaxtree.h"
-#include "workerprocess.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stageprocess.h"
+#include "pipeline/stagesession.h"
+#include "pipeline/workerprocess.h"
+#include "syntax/syntaxtree.h"
+#include "workspace/sourcereader.h"
+#include "workspace/workspacescanner.h"
 
 #include <QCoreApplication>
 #include <QDirIterator>

@@ -9,12 +9,12 @@
 // For the supervisor's tests only: ROSARCH_STAGES_TEST_CRASH_IN, _HANG_IN and _EXHAUST_IN name
 // a substring; the worker crashes, hangs or allocates without bound when it begins a file whose
 // path contains it (a stand-in for the analyser bug that nobody has found yet).
-#include "analysiscache.h"
-#include "nodeanalyzer.h"
-#include "recovery.h"
-#include "recoverystream.h"
-#include "threadpriority.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "core/threadpriority.h"
+#include "nodes/nodeanalyzer.h"
+#include "pipeline/recovery.h"
+#include "pipeline/recoverystream.h"
+#include "workspace/workspacescanner.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,14 +1,14 @@
 #include "filterboxes.h"
 
-#include "atomicnodemodel.h"
-#include "atomicnodepanel.h"
-#include "diagnosticfilterbar.h"
-#include "diagrampanel.h"
-#include "launchtreepanel.h"
-#include "logview.h"
-#include "mainwindow.h"
-#include "parameterpanel.h"
-#include "parametertablemodel.h"
+#include "app/mainwindow.h"
+#include "widgets/atomicnodemodel.h"
+#include "widgets/atomicnodepanel.h"
+#include "widgets/diagnosticfilterbar.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/launchtreepanel.h"
+#include "widgets/logview.h"
+#include "widgets/parameterpanel.h"
+#include "widgets/parametertablemodel.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

@@ -16,14 +16,14 @@
 //
 // A benchmark, not a check: it writes nothing into the workspace and exits 0 unless it could
 // not run (exit 1) or the run did not finish (exit 2).
-#include "document.h"
+#include "app/mainwindow.h"
+#include "app/stagerunner.h"
+#include "document/document.h"
 #include "filterboxes.h"
-#include "launchtreepanel.h"
-#include "mainwindow.h"
-#include "stagerunner.h"
+#include "jobs/stallprobe.h"
 #include "stallmonitor.h"
-#include "stallprobe.h"
 #include "syntheticworkspace.h"
+#include "widgets/launchtreepanel.h"
 
 #include <QAction>
 #include <QCommandLineParser>

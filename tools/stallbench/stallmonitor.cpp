@@ -1,5 +1,5 @@
 #include "stallmonitor.h"
-#include "stallprobe.h"
+#include "jobs/stallprobe.h"
 
 #include <QEvent>
 #include <QMetaEnum>

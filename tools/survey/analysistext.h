@@ -1,8 +1,8 @@
 #pragma once
 
-#include "languageanalysis.h"
-#include "launchaction.h"
-#include "port.h"
+#include "core/languageanalysis.h"
+#include "core/launchaction.h"
+#include "core/port.h"
 
 #include <QMap>
 #include <QString>

@@ -6,11 +6,11 @@
 //   rosarch-survey launch <folder> [--dump]      launch files of every format, action kinds,
 //                                                what stayed unresolved, diagnostics
 #include "analysistext.h"
-#include "cppnodeanalyzer.h"
-#include "launchanalyzer.h"
-#include "pythonnodeanalyzer.h"
-#include "sourcereader.h"
-#include "workspacescanner.h"
+#include "launch/launchanalyzer.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "workspace/sourcereader.h"
+#include "workspace/workspacescanner.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "diagrambreadcrumbbar.h"
+#include "widgets/diagram/diagrambreadcrumbbar.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,5 +1,5 @@
-#include "diagramclusteritem.h"
-#include "diagramstyle.h"
+#include "widgets/diagram/diagramclusteritem.h"
+#include "widgets/diagram/diagramstyle.h"
 
 #include <QFontMetricsF>
 #include <QPainter>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "diagramitem.h"
+#include "widgets/diagram/diagramitem.h"
 
 namespace rosarch {
 

@@ -1,5 +1,5 @@
-#include "diagramedgeitem.h"
-#include "diagramstyle.h"
+#include "widgets/diagram/diagramedgeitem.h"
+#include "widgets/diagram/diagramstyle.h"
 
 #include <QPainter>
 #include <QPainterPathStroker>

@@ -1,5 +1,5 @@
-#include "diagramfirstview.h"
-#include "diagramoverview.h"
+#include "widgets/diagram/diagramfirstview.h"
+#include "diagram/diagramoverview.h"
 
 #include <QHash>
 #include <QSet>

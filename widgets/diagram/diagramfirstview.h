@@ -1,7 +1,7 @@
 #pragma once
 
-#include "composition.h"
-#include "diagrambuilder.h"
+#include "core/composition.h"
+#include "diagram/diagrambuilder.h"
 
 #include <QList>
 

@@ -1,5 +1,5 @@
-#include "diagramitem.h"
-#include "diagramstyle.h"
+#include "widgets/diagram/diagramitem.h"
+#include "widgets/diagram/diagramstyle.h"
 
 #include <QPainter>
 

@@ -1,4 +1,4 @@
-#include "diagramminimap.h"
+#include "widgets/diagram/diagramminimap.h"
 
 #include <QEvent>
 #include <QGraphicsScene>

@@ -1,5 +1,5 @@
-#include "diagramnodeitem.h"
-#include "diagramstyle.h"
+#include "widgets/diagram/diagramnodeitem.h"
+#include "widgets/diagram/diagramstyle.h"
 
 #include <QFontMetricsF>
 #include <QPainter>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagramitem.h"
-#include "layoutgraph.h"
+#include "diagram/layoutgraph.h"
+#include "widgets/diagram/diagramitem.h"
 
 namespace rosarch {
 

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "composition.h"
-#include "diagrambuilder.h"
-#include "diagramitem.h"
-#include "graphlayout.h"
-#include "jobrunner.h"
-#include "rootchoice.h"
+#include "core/composition.h"
+#include "diagram/diagrambuilder.h"
+#include "diagram/graphlayout.h"
+#include "diagram/rootchoice.h"
+#include "jobs/jobrunner.h"
+#include "widgets/diagram/diagramitem.h"
 
 #include <QHash>
 #include <QPointer>

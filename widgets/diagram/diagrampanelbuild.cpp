@@ -1,13 +1,13 @@
 // The composed diagram panel's way from a composite to a drawing: the layout graph (built off
 // the UI thread for big composites, with the overview check), then the layout (cached, or on
 // the DiagramLayouter), then the scene (DiagramPanel::applyLayout).
-#include "diagramfirstview.h"
-#include "diagramlayouter.h"
-#include "diagramoverview.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramview.h"
-#include "stallprobe.h"
+#include "diagram/diagramlayouter.h"
+#include "diagram/diagramoverview.h"
+#include "jobs/stallprobe.h"
+#include "widgets/diagram/diagramfirstview.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QFontMetricsF>
 

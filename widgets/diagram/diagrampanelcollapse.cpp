@@ -1,11 +1,11 @@
 // The composed diagram panel's collapsing and expanding: namespaces drawn as one box, parts
 // drawn without their ports, the overview a diagram too big to read starts in, and the element
 // actions (double-click, context menu) that collapse, expand and open.
-#include "diagramfirstview.h"
-#include "diagramoverview.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramview.h"
+#include "diagram/diagramoverview.h"
+#include "widgets/diagram/diagramfirstview.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QAction>
 #include <QMenu>

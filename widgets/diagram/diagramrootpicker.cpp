@@ -1,5 +1,5 @@
-#include "diagramrootpicker.h"
-#include "visibletext.h"
+#include "widgets/diagram/diagramrootpicker.h"
+#include "core/visibletext.h"
 
 #include <QAbstractItemView>
 #include <QCompleter>

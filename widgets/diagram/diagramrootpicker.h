@@ -1,6 +1,6 @@
 #pragma once
 
-#include "rootchoice.h"
+#include "diagram/rootchoice.h"
 
 #include <QComboBox>
 

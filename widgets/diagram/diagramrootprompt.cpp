@@ -1,6 +1,6 @@
-#include "diagramrootprompt.h"
-#include "diagramrootpicker.h"
-#include "visibletext.h"
+#include "widgets/diagram/diagramrootprompt.h"
+#include "core/visibletext.h"
+#include "widgets/diagram/diagramrootpicker.h"
 
 #include <QDir>
 #include <QLabel>

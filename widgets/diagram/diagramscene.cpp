@@ -1,8 +1,8 @@
-#include "diagramscene.h"
-#include "diagrambuilder.h"
-#include "diagramclusteritem.h"
-#include "diagramedgeitem.h"
-#include "diagramnodeitem.h"
+#include "widgets/diagram/diagramscene.h"
+#include "diagram/diagrambuilder.h"
+#include "widgets/diagram/diagramclusteritem.h"
+#include "widgets/diagram/diagramedgeitem.h"
+#include "widgets/diagram/diagramnodeitem.h"
 
 #include <QGraphicsSceneContextMenuEvent>
 #include <QGraphicsSceneHelpEvent>

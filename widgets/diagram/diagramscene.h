@@ -1,8 +1,8 @@
 #pragma once
 
-#include "diagramitem.h"
-#include "diagramstyle.h"
-#include "layoutgraph.h"
+#include "diagram/layoutgraph.h"
+#include "widgets/diagram/diagramitem.h"
+#include "widgets/diagram/diagramstyle.h"
 
 #include <QGraphicsScene>
 #include <QHash>

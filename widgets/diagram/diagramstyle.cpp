@@ -1,5 +1,5 @@
-#include "diagramstyle.h"
-#include "composition.h"
+#include "widgets/diagram/diagramstyle.h"
+#include "core/composition.h"
 
 #include <QPalette>
 

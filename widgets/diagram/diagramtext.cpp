@@ -1,6 +1,6 @@
-#include "diagramtext.h"
-#include "diagrambuilder.h"
-#include "visibletext.h"
+#include "widgets/diagram/diagramtext.h"
+#include "core/visibletext.h"
+#include "diagram/diagrambuilder.h"
 
 namespace rosarch {
 

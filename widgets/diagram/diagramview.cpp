@@ -1,6 +1,6 @@
-#include "diagramview.h"
-#include "diagramminimap.h"
-#include "diagramscene.h"
+#include "widgets/diagram/diagramview.h"
+#include "widgets/diagram/diagramminimap.h"
+#include "widgets/diagram/diagramscene.h"
 
 #include <QKeyEvent>
 #include <QLabel>

@@ -1,9 +1,9 @@
 // The launch API for the launch-file evaluator: launch and launch_ros calls become
 // LaunchActions, substitution calls become Substitutions.
-#include "pythonlaunchapi.h"
-#include "pythonlaunchevaluator.h"
+#include "launch/python/pythonlaunchapi.h"
+#include "launch/python/pythonlaunchevaluator.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <QHash>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "launchaction.h"
-#include "pythonlaunchcontext.h"
+#include "core/launchaction.h"
+#include "launch/python/pythonlaunchcontext.h"
 
 #include <optional>
 

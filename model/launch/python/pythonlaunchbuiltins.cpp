@@ -1,6 +1,6 @@
 // Builtins and methods of plain Python values for the launch-file evaluator: str, list, dict,
 // os.path, os.environ, range, format strings.
-#include "pythonlaunchbuiltins.h"
+#include "launch/python/pythonlaunchbuiltins.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "pythonlaunchcontext.h"
+#include "launch/python/pythonlaunchcontext.h"
 
 namespace rosarch::pylaunch {
 

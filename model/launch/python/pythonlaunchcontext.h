@@ -1,8 +1,8 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "pythonlaunchvalue.h"
-#include "syntaxtree.h"
+#include "core/diagnostic.h"
+#include "launch/python/pythonlaunchvalue.h"
+#include "syntax/syntaxtree.h"
 
 #include <QList>
 #include <QPair>

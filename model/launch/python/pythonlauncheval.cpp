@@ -1,8 +1,8 @@
-#include "pythonlauncheval.h"
+#include "launch/python/pythonlauncheval.h"
 
-#include "pythonlaunchevaluator.h"
-#include "syntaxtree.h"
-#include "valuebudget.h"
+#include "core/valuebudget.h"
+#include "launch/python/pythonlaunchevaluator.h"
+#include "syntax/syntaxtree.h"
 
 #include <QStringList>
 

@@ -1,6 +1,6 @@
-#include "pythonlaunchevaluator.h"
+#include "launch/python/pythonlaunchevaluator.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <cstring>
 

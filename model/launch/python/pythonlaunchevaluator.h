@@ -1,11 +1,11 @@
 #pragma once
 
-#include "pythonlaunchapi.h"
-#include "pythonlaunchbuiltins.h"
-#include "pythonlaunchcontext.h"
-#include "pythonlaunchexpressions.h"
-#include "pythonlaunchvalue.h"
-#include "syntaxtree.h"
+#include "launch/python/pythonlaunchapi.h"
+#include "launch/python/pythonlaunchbuiltins.h"
+#include "launch/python/pythonlaunchcontext.h"
+#include "launch/python/pythonlaunchexpressions.h"
+#include "launch/python/pythonlaunchvalue.h"
+#include "syntax/syntaxtree.h"
 
 #include <QList>
 #include <QSet>

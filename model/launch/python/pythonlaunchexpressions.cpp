@@ -1,9 +1,9 @@
 // Expression evaluation of the launch-file evaluator: names, literals, strings, containers,
 // operators, attributes, subscripts and comprehensions. Calls go to the interpreter.
-#include "pythonlaunchexpressions.h"
-#include "pythonlaunchbuiltins.h"
-#include "pythonlaunchevaluator.h"
-#include "pythonlaunchoperators.h"
+#include "launch/python/pythonlaunchexpressions.h"
+#include "launch/python/pythonlaunchbuiltins.h"
+#include "launch/python/pythonlaunchevaluator.h"
+#include "launch/python/pythonlaunchoperators.h"
 
 #include <algorithm>
 #include <cmath>

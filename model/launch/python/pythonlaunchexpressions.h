@@ -1,6 +1,6 @@
 #pragma once
 
-#include "pythonlaunchcontext.h"
+#include "launch/python/pythonlaunchcontext.h"
 
 namespace rosarch::pylaunch {
 

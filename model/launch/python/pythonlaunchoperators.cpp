@@ -1,5 +1,5 @@
 // What Python's literals and operators mean on symbolic values.
-#include "pythonlaunchoperators.h"
+#include "launch/python/pythonlaunchoperators.h"
 
 namespace rosarch::pylaunch {
 

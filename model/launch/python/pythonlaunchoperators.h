@@ -1,6 +1,6 @@
 #pragma once
 
-#include "pythonlaunchvalue.h"
+#include "launch/python/pythonlaunchvalue.h"
 
 #include <QString>
 

@@ -1,9 +1,9 @@
-#include "pythonlaunchreader.h"
+#include "launch/python/pythonlaunchreader.h"
 
-#include "parsehandoff.h"
-#include "pythonlaunchevaluator.h"
-#include "pythonsyntax.h"
-#include "syntaxtree.h"
+#include "launch/python/pythonlaunchevaluator.h"
+#include "syntax/parsehandoff.h"
+#include "syntax/pythonsyntax.h"
+#include "syntax/syntaxtree.h"
 
 namespace rosarch {
 

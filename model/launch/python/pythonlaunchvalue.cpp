@@ -1,4 +1,4 @@
-#include "pythonlaunchvalue.h"
+#include "launch/python/pythonlaunchvalue.h"
 
 #include <QStringList>
 

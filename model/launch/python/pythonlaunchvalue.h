@@ -1,6 +1,6 @@
 #pragma once
 
-#include "launchaction.h"
+#include "core/launchaction.h"
 
 #include <QHash>
 #include <QList>

@@ -1,5 +1,5 @@
-#include "frontendactionmapper.h"
-#include "frontendsubstitution.h"
+#include "launch/xmlyaml/frontendactionmapper.h"
+#include "launch/xmlyaml/frontendsubstitution.h"
 
 #include <QSet>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "frontendentity.h"
-#include "launchaction.h"
+#include "core/launchaction.h"
+#include "launch/xmlyaml/frontendentity.h"
 
 #include <QList>
 

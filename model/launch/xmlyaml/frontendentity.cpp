@@ -1,4 +1,4 @@
-#include "frontendentity.h"
+#include "launch/xmlyaml/frontendentity.h"
 
 namespace rosarch {
 

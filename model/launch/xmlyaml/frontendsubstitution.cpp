@@ -1,4 +1,4 @@
-#include "frontendsubstitution.h"
+#include "launch/xmlyaml/frontendsubstitution.h"
 
 namespace rosarch {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "substitution.h"
+#include "core/substitution.h"
 
 #include <QString>
 

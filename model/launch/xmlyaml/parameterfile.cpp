@@ -1,7 +1,7 @@
-#include "parameterfile.h"
+#include "launch/xmlyaml/parameterfile.h"
 
-#include "parameter.h"
-#include "yamlsupport.h"
+#include "core/parameter.h"
+#include "launch/xmlyaml/yamlsupport.h"
 
 #include <QHash>
 #include <QStringList>

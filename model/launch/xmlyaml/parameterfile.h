@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "launchdependencies.h"
+#include "core/diagnostic.h"
+#include "core/launchdependencies.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,5 +1,5 @@
-#include "xmllaunchreader.h"
-#include "frontendactionmapper.h"
+#include "launch/xmlyaml/xmllaunchreader.h"
+#include "launch/xmlyaml/frontendactionmapper.h"
 
 #include <QHash>
 #include <QXmlStreamReader>

@@ -1,6 +1,6 @@
-#include "yamllaunchreader.h"
-#include "frontendactionmapper.h"
-#include "yamlsupport.h"
+#include "launch/xmlyaml/yamllaunchreader.h"
+#include "launch/xmlyaml/frontendactionmapper.h"
+#include "launch/xmlyaml/yamlsupport.h"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,4 +1,4 @@
-#include "yamlsupport.h"
+#include "launch/xmlyaml/yamlsupport.h"
 
 #include <QStringList>
 

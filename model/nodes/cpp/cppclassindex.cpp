@@ -1,6 +1,6 @@
-#include "cppclassindex.h"
+#include "nodes/cpp/cppclassindex.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 namespace rosarch {
 

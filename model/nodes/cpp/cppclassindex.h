@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cppfacts.h"
+#include "nodes/cpp/cppfacts.h"
 
 #include <QHash>
 #include <QList>

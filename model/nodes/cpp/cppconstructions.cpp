@@ -1,6 +1,6 @@
-#include "cppconstructions.h"
+#include "nodes/cpp/cppconstructions.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <QRegularExpression>
 

@@ -1,6 +1,6 @@
-#include "cppentrypoints.h"
+#include "nodes/cpp/cppentrypoints.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <algorithm>
 

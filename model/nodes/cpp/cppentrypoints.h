@@ -1,8 +1,8 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cppconstructions.h"
-#include "languageanalysis.h"
+#include "core/languageanalysis.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cppconstructions.h"
 
 #include <QHash>
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "evidence.h"
-#include "languageanalysis.h"
-#include "port.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
+#include "core/languageanalysis.h"
+#include "core/port.h"
 
 #include <QHash>
 #include <QList>

@@ -1,8 +1,8 @@
-#include "cppfactscodec.h"
-#include "sha1.h"
+#include "nodes/cpp/cppfactscodec.h"
+#include "cache/sha1.h"
 
-#include "cachecodec.h"
-#include "cppfactsfields.h"
+#include "cache/cachecodec.h"
+#include "nodes/cpp/cppfactsfields.h"
 
 #include <algorithm>
 

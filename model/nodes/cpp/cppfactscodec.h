@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "cppmacro.h"
+#include "nodes/cpp/cppfacts.h"
+#include "syntax/cppmacro.h"
 
 #include <QByteArray>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "languageanalysis.h"
-#include "modelfields.h"
+#include "core/languageanalysis.h"
+#include "core/modelfields.h"
+#include "nodes/cpp/cppfacts.h"
 
 // The field lists of the C++ facts and of a language analysis (as modelfields.h gives those of
 // the model types): one list per type, for the analysis cache's codec (CppFactsCodec) and for

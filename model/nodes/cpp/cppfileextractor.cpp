@@ -1,9 +1,9 @@
-#include "cppfileextractor.h"
+#include "nodes/cpp/cppfileextractor.h"
 
-#include "cpperrorrecovery.h"
-#include "cppfunctionextractor.h"
-#include "cpppreprocessor.h"
-#include "cppsyntax.h"
+#include "nodes/cpp/cppfunctionextractor.h"
+#include "syntax/cpperrorrecovery.h"
+#include "syntax/cpppreprocessor.h"
+#include "syntax/cppsyntax.h"
 
 namespace rosarch {
 

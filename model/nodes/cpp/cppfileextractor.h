@@ -1,8 +1,8 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "cppmacro.h"
-#include "syntaxtree.h"
+#include "nodes/cpp/cppfacts.h"
+#include "syntax/cppmacro.h"
+#include "syntax/syntaxtree.h"
 
 namespace rosarch {
 

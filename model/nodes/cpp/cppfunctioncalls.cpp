@@ -1,6 +1,6 @@
-#include "cppfunctionextractor.h"
-#include "cppfunctiontext.h"
-#include "cppparameterreader.h"
+#include "nodes/cpp/cppfunctionextractor.h"
+#include "nodes/cpp/cppfunctiontext.h"
+#include "nodes/cpp/cppparameterreader.h"
 
 #include <cstring>
 

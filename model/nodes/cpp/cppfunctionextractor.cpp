@@ -1,5 +1,5 @@
-#include "cppfunctionextractor.h"
-#include "cppfunctiontext.h"
+#include "nodes/cpp/cppfunctionextractor.h"
+#include "nodes/cpp/cppfunctiontext.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "cppportcallreader.h"
-#include "cppsyntax.h"
-#include "cppvalueevaluator.h"
-#include "syntaxtree.h"
+#include "nodes/cpp/cppfacts.h"
+#include "nodes/cpp/cppportcallreader.h"
+#include "nodes/cpp/cppvalueevaluator.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/syntaxtree.h"
 
 #include <QHash>
 

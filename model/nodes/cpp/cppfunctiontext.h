@@ -1,6 +1,6 @@
 #pragma once
 // Small text and node checks shared by the parts of CppFunctionExtractor.
-#include "syntaxtree.h"
+#include "syntax/syntaxtree.h"
 
 #include <QString>
 

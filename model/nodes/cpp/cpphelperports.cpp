@@ -1,6 +1,6 @@
-#include "cpphelperports.h"
+#include "nodes/cpp/cpphelperports.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <QRegularExpression>
 #include <QThread>

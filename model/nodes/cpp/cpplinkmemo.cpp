@@ -1,9 +1,9 @@
-#include "cpplinkmemo.h"
+#include "nodes/cpp/cpplinkmemo.h"
 
-#include "analysiscache.h"
-#include "cppfactsfields.h"
-#include "cppnodelinker.h"
-#include "evidenceshift.h"
+#include "cache/analysiscache.h"
+#include "cache/evidenceshift.h"
+#include "nodes/cpp/cppfactsfields.h"
+#include "nodes/cpp/cppnodelinker.h"
 
 #include <QThreadPool>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "languageanalysis.h"
+#include "core/languageanalysis.h"
+#include "nodes/cpp/cppfacts.h"
 
 #include <QString>
 

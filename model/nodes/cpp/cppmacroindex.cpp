@@ -1,7 +1,7 @@
-#include "cppmacroindex.h"
+#include "nodes/cpp/cppmacroindex.h"
 
-#include "cmakelistsreader.h"
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
+#include "workspace/cmakelistsreader.h"
 
 #include <QFileInfo>
 

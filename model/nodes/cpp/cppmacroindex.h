@@ -1,9 +1,9 @@
 #pragma once
 
-#include "cpppreprocessor.h"
-#include "sourcereader.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/stagecontrol.h"
+#include "syntax/cpppreprocessor.h"
+#include "workspace/sourcereader.h"
+#include "workspace/workspace.h"
 
 #include <QHash>
 #include <QSet>

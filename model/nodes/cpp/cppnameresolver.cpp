@@ -1,7 +1,7 @@
-#include "cppnameresolver.h"
+#include "nodes/cpp/cppnameresolver.h"
 
-#include "cppsyntax.h"
-#include "rosnames.h"
+#include "core/rosnames.h"
+#include "syntax/cppsyntax.h"
 
 #include <QRegularExpression>
 #include <QScopeGuard>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cpplinkcontext.h"
-#include "cppsharednames.h"
-#include "port.h"
+#include "core/port.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cpplinkcontext.h"
+#include "nodes/cpp/cppsharednames.h"
 
 #include <QHash>
 #include <QStringList>

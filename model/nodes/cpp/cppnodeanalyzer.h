@@ -1,8 +1,8 @@
 #pragma once
 
-#include "languageanalysis.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/languageanalysis.h"
+#include "core/stagecontrol.h"
+#include "workspace/workspace.h"
 
 #include <QFuture>
 

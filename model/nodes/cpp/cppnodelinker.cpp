@@ -1,6 +1,6 @@
-#include "cppnodelinker.h"
+#include "nodes/cpp/cppnodelinker.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <QFileInfo>
 #include <QHash>

@@ -1,16 +1,16 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cppconstructions.h"
-#include "cppentrypoints.h"
-#include "cppfacts.h"
-#include "cpphelperports.h"
-#include "cpplinkcontext.h"
-#include "cppnameresolver.h"
-#include "cppnodenames.h"
-#include "cppparameterlinker.h"
-#include "cppsharednames.h"
-#include "languageanalysis.h"
+#include "core/languageanalysis.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cppconstructions.h"
+#include "nodes/cpp/cppentrypoints.h"
+#include "nodes/cpp/cppfacts.h"
+#include "nodes/cpp/cpphelperports.h"
+#include "nodes/cpp/cpplinkcontext.h"
+#include "nodes/cpp/cppnameresolver.h"
+#include "nodes/cpp/cppnodenames.h"
+#include "nodes/cpp/cppparameterlinker.h"
+#include "nodes/cpp/cppsharednames.h"
 
 #include <QHash>
 

@@ -1,6 +1,6 @@
-#include "cppnodenames.h"
+#include "nodes/cpp/cppnodenames.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <algorithm>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cppconstructions.h"
-#include "cppnameresolver.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cppconstructions.h"
+#include "nodes/cpp/cppnameresolver.h"
 
 namespace rosarch {
 

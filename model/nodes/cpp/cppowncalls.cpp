@@ -1,6 +1,6 @@
-#include "cppnameresolver.h"
+#include "nodes/cpp/cppnameresolver.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 // What a method's parameter is given where the class calls the method itself.
 namespace rosarch {

@@ -1,7 +1,7 @@
-#include "cppparameterlinker.h"
+#include "nodes/cpp/cppparameterlinker.h"
 
-#include "cppsyntax.h"
-#include "declaringcall.h"
+#include "core/declaringcall.h"
+#include "syntax/cppsyntax.h"
 
 using namespace rosarch::cppsyntax;
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cpphelperports.h"
-#include "cpplinkcontext.h"
-#include "cppnameresolver.h"
-#include "parameter.h"
+#include "core/parameter.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cpphelperports.h"
+#include "nodes/cpp/cpplinkcontext.h"
+#include "nodes/cpp/cppnameresolver.h"
 
 #include <QList>
 #include <QSet>

@@ -1,9 +1,9 @@
-#include "cppparameterreader.h"
+#include "nodes/cpp/cppparameterreader.h"
 
 #include <QRegularExpression>
 
-#include "declaringcall.h"
-#include "parameter.h"
+#include "core/declaringcall.h"
+#include "core/parameter.h"
 
 namespace rosarch {
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "cppsyntax.h"
-#include "cppvalueevaluator.h"
-#include "syntaxtree.h"
+#include "nodes/cpp/cppfacts.h"
+#include "nodes/cpp/cppvalueevaluator.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/syntaxtree.h"
 
 #include <vector>
 

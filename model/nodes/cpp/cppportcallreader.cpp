@@ -1,4 +1,4 @@
-#include "cppportcallreader.h"
+#include "nodes/cpp/cppportcallreader.h"
 
 namespace rosarch {
 

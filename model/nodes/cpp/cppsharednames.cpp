@@ -1,6 +1,6 @@
-#include "cppsharednames.h"
+#include "nodes/cpp/cppsharednames.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 #include <QRegularExpression>
 

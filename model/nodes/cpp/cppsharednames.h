@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cppclassindex.h"
-#include "cppfacts.h"
+#include "nodes/cpp/cppclassindex.h"
+#include "nodes/cpp/cppfacts.h"
 
 #include <QHash>
 #include <QList>

@@ -1,6 +1,6 @@
-#include "cppnameresolver.h"
+#include "nodes/cpp/cppnameresolver.h"
 
-#include "cppsyntax.h"
+#include "syntax/cppsyntax.h"
 
 // Types for the linker: an interface type as written, through the aliases in scope.
 namespace rosarch {

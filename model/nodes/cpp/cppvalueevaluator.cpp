@@ -1,8 +1,8 @@
-#include "cppvalueevaluator.h"
+#include "nodes/cpp/cppvalueevaluator.h"
 
-#include "rosnames.h"
+#include "core/rosnames.h"
 
-#include "cpppreprocessor.h"
+#include "syntax/cpppreprocessor.h"
 
 #include <QRegularExpression>
 

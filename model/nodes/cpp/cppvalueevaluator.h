@@ -1,9 +1,9 @@
 #pragma once
 
-#include "cppfacts.h"
-#include "cppmacro.h"
-#include "cppsyntax.h"
-#include "syntaxtree.h"
+#include "nodes/cpp/cppfacts.h"
+#include "syntax/cppmacro.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/syntaxtree.h"
 
 #include <QHash>
 #include <QList>

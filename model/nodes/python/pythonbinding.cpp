@@ -1,4 +1,4 @@
-#include "pythonbinding.h"
+#include "nodes/python/pythonbinding.h"
 
 namespace rosarch::PythonBinding {
 

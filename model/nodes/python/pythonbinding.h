@@ -1,6 +1,6 @@
 #pragma once
 
-#include "pythonmodulefacts.h"
+#include "nodes/python/pythonmodulefacts.h"
 
 #include <QList>
 #include <QString>

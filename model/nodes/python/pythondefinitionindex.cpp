@@ -1,4 +1,4 @@
-#include "pythondefinitionindex.h"
+#include "nodes/python/pythondefinitionindex.h"
 
 #include <QStringList>
 

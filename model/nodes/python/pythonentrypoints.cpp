@@ -1,4 +1,4 @@
-#include "pythonentrypoints.h"
+#include "nodes/python/pythonentrypoints.h"
 
 #include <QSet>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "languageanalysis.h"
-#include "pythondefinitionindex.h"
+#include "core/languageanalysis.h"
+#include "nodes/python/pythondefinitionindex.h"
 
 #include <QList>
 #include <QStringList>

@@ -1,6 +1,6 @@
-#include "pythonfactscodec.h"
+#include "nodes/python/pythonfactscodec.h"
 
-#include "cachecodec.h"
+#include "cache/cachecodec.h"
 
 namespace rosarch::cachecodec {
 

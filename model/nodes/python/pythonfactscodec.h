@@ -1,7 +1,7 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "pythonmodulefacts.h"
+#include "core/diagnostic.h"
+#include "nodes/python/pythonmodulefacts.h"
 
 #include <QByteArray>
 #include <QList>

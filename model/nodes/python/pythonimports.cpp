@@ -1,6 +1,6 @@
-#include "pythonimports.h"
+#include "nodes/python/pythonimports.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <utility>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "pythonscopeindex.h"
-#include "syntaxtree.h"
+#include "nodes/python/pythonscopeindex.h"
+#include "syntax/syntaxtree.h"
 
 #include <QHash>
 #include <QSet>

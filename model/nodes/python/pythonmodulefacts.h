@@ -1,9 +1,9 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "evidence.h"
-#include "parameter.h"
-#include "port.h"
+#include "core/diagnostic.h"
+#include "core/evidence.h"
+#include "core/parameter.h"
+#include "core/port.h"
 
 #include <QList>
 #include <QString>

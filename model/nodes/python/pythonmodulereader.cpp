@@ -1,7 +1,7 @@
-#include "pythonmodulereader.h"
-#include "pythonparameterreader.h"
+#include "nodes/python/pythonmodulereader.h"
+#include "nodes/python/pythonparameterreader.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <algorithm>
 

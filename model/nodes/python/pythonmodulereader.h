@@ -1,8 +1,8 @@
 #pragma once
 
-#include "pythonmodulefacts.h"
-#include "pythonportreader.h"
-#include "pythonresolver.h"
+#include "nodes/python/pythonmodulefacts.h"
+#include "nodes/python/pythonportreader.h"
+#include "nodes/python/pythonresolver.h"
 
 #include <QHash>
 

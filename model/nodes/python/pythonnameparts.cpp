@@ -1,8 +1,8 @@
-#include "pythonmodulereader.h"
+#include "nodes/python/pythonmodulereader.h"
 
-#include "port.h"
-#include "pythonsyntax.h"
-#include "rosnames.h"
+#include "core/port.h"
+#include "core/rosnames.h"
+#include "syntax/pythonsyntax.h"
 
 // PythonModuleReader's reading of port names: a parameter that a name comes from, and names
 // built from parts (f-strings, `.format`, `+`, `str()`).

@@ -1,16 +1,16 @@
-#include "pythonnodeanalyzer.h"
+#include "nodes/python/pythonnodeanalyzer.h"
 
-#include "analysiscache.h"
-#include "filedigests.h"
-#include "largestfirst.h"
-#include "parsehandoff.h"
-#include "pythonerrorrecovery.h"
-#include "pythonfactscodec.h"
-#include "pythonmodulereader.h"
-#include "pythonnodelinker.h"
-#include "sourcereader.h"
-#include "stagememo.h"
-#include "syntaxtree.h"
+#include "cache/analysiscache.h"
+#include "cache/filedigests.h"
+#include "cache/stagememo.h"
+#include "nodes/python/pythonfactscodec.h"
+#include "nodes/python/pythonmodulereader.h"
+#include "nodes/python/pythonnodelinker.h"
+#include "syntax/parsehandoff.h"
+#include "syntax/pythonerrorrecovery.h"
+#include "syntax/syntaxtree.h"
+#include "workspace/largestfirst.h"
+#include "workspace/sourcereader.h"
 
 #include <QMutex>
 #include <QSet>

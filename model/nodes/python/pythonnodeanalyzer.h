@@ -1,9 +1,9 @@
 #pragma once
 
-#include "languageanalysis.h"
-#include "pythonfactscodec.h"
-#include "stagecontrol.h"
-#include "workspace.h"
+#include "core/languageanalysis.h"
+#include "core/stagecontrol.h"
+#include "nodes/python/pythonfactscodec.h"
+#include "workspace/workspace.h"
 
 namespace rosarch {
 

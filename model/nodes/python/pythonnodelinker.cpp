@@ -1,7 +1,7 @@
-#include "pythonnodelinker.h"
+#include "nodes/python/pythonnodelinker.h"
 
-#include "pythonbinding.h"
-#include "pythonentrypoints.h"
+#include "nodes/python/pythonbinding.h"
+#include "nodes/python/pythonentrypoints.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "languageanalysis.h"
-#include "pythondefinitionindex.h"
-#include "pythonmodulefacts.h"
-#include "pythonsetupprotocol.h"
+#include "core/languageanalysis.h"
+#include "nodes/python/pythondefinitionindex.h"
+#include "nodes/python/pythonmodulefacts.h"
+#include "nodes/python/pythonsetupprotocol.h"
 
 #include <QHash>
 #include <QList>

@@ -1,7 +1,7 @@
-#include "pythonparameterreader.h"
+#include "nodes/python/pythonparameterreader.h"
 
-#include "pythonresolver.h"
-#include "pythonsyntax.h"
+#include "nodes/python/pythonresolver.h"
+#include "syntax/pythonsyntax.h"
 
 namespace rosarch {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "parameter.h"
-#include "syntaxtree.h"
+#include "core/parameter.h"
+#include "syntax/syntaxtree.h"
 
 #include <QList>
 

@@ -1,6 +1,6 @@
-#include "pythonportreader.h"
+#include "nodes/python/pythonportreader.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 namespace rosarch {
 

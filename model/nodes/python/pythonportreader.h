@@ -1,7 +1,7 @@
 #pragma once
 
-#include "port.h"
-#include "pythonresolver.h"
+#include "core/port.h"
+#include "nodes/python/pythonresolver.h"
 
 namespace rosarch {
 

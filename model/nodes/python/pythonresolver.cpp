@@ -1,6 +1,6 @@
-#include "pythonresolver.h"
+#include "nodes/python/pythonresolver.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 namespace rosarch {
 

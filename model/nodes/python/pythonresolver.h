@@ -1,9 +1,9 @@
 #pragma once
 
-#include "port.h"
-#include "pythonimports.h"
-#include "pythonscopeindex.h"
-#include "syntaxtree.h"
+#include "core/port.h"
+#include "nodes/python/pythonimports.h"
+#include "nodes/python/pythonscopeindex.h"
+#include "syntax/syntaxtree.h"
 
 #include <QHash>
 #include <QSet>

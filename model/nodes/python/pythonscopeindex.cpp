@@ -1,6 +1,6 @@
-#include "pythonscopeindex.h"
+#include "nodes/python/pythonscopeindex.h"
 
-#include "pythonsyntax.h"
+#include "syntax/pythonsyntax.h"
 
 #include <algorithm>
 

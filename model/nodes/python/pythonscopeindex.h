@@ -1,6 +1,6 @@
 #pragma once
 
-#include "syntaxtree.h"
+#include "syntax/syntaxtree.h"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
-#include "pythonsetupprotocol.h"
+#include "nodes/python/pythonsetupprotocol.h"
 
-#include "pythonbinding.h"
+#include "nodes/python/pythonbinding.h"
 
 #include <utility>
 

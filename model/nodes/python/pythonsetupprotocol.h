@@ -1,9 +1,9 @@
 #pragma once
 
-#include "diagnostic.h"
-#include "port.h"
-#include "pythondefinitionindex.h"
-#include "pythonmodulefacts.h"
+#include "core/diagnostic.h"
+#include "core/port.h"
+#include "nodes/python/pythondefinitionindex.h"
+#include "nodes/python/pythonmodulefacts.h"
 
 #include <QList>
 #include <QString>

@@ -1,5 +1,5 @@
-#include "llmclient.h"
-#include "llmschemavalidator.h"
+#include "suggestions/llm/llmclient.h"
+#include "suggestions/llm/llmschemavalidator.h"
 
 #include <QDateTime>
 #include <QJsonArray>

@@ -2,9 +2,9 @@
 
 #include <QJsonDocument>
 
-#include "llmrequest.h"
-#include "llmresult.h"
-#include "llmsettings.h"
+#include "suggestions/llm/llmrequest.h"
+#include "suggestions/llm/llmresult.h"
+#include "suggestions/llm/llmsettings.h"
 
 #include <atomic>
 

@@ -1,4 +1,4 @@
-#include "llmschemavalidator.h"
+#include "suggestions/llm/llmschemavalidator.h"
 
 #include <QJsonArray>
 

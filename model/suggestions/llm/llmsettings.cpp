@@ -1,4 +1,4 @@
-#include "llmsettings.h"
+#include "suggestions/llm/llmsettings.h"
 
 #include <QtGlobal>
 

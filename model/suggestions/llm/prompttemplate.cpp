@@ -1,4 +1,4 @@
-#include "prompttemplate.h"
+#include "suggestions/llm/prompttemplate.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "llmrequest.h"
+#include "suggestions/llm/llmrequest.h"
 
 #include <QJsonObject>
 #include <QMap>

@@ -1,8 +1,8 @@
 // `rosarch check` end to end, with the real executable: exit codes, the baseline workflow,
 // and SARIF output that the OASIS SARIF 2.1.0 schema accepts, checked by a real JSON-schema
 // validator (scripts/fetch-sarif-schema.sh puts both in the build tree).
-#include "jsonschemacheck.h"
-#include "testsupport.h"
+#include "support/jsonschemacheck.h"
+#include "support/testsupport.h"
 
 #include <QCryptographicHash>
 #include <QJsonArray>

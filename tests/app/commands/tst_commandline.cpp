@@ -1,6 +1,6 @@
 // End-to-end: the real `rosarch` executable, headless, on fixture workspaces.
-#include "commandline.h"
-#include "testsupport.h"
+#include "app/commands/commandline.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QJsonArray>

@@ -1,7 +1,7 @@
 // `rosarch diff` end to end: two git revisions of a workspace the test creates (the second
 // adds a subscriber and renames a topic), two artifact folders, and usage errors.
-#include "chatrepo.h"
-#include "testsupport.h"
+#include "support/chatrepo.h"
+#include "support/testsupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

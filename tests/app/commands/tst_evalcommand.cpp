@@ -1,6 +1,6 @@
 // End-to-end: the real `rosarch eval` on tests/data/eval_models (a reference and a recovered
 // model broken on purpose) and tests/data/eval_broken (a file that is no ACD or CCD).
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

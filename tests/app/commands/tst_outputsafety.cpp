@@ -1,8 +1,8 @@
 // No control byte from a workspace reaches a terminal or an artifact, and a kill at
 // any moment of a run leaves the output folder with the old result or the new, never a mix.
 // Runs the real rosarch executable; the hostile workspaces are generated here.
-#include "testsupport.h"
-#include "visibletext.h"
+#include "core/visibletext.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QProcess>

@@ -2,7 +2,7 @@
 // model gives (the expected artifacts of tests/data/project_corrections), the workspace's own
 // rosarch.project.json applies by default, and `project check` lists orphaned entries with an
 // exit code CI can use.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QTemporaryDir>

@@ -5,7 +5,7 @@
 // a launch file and leads to their pages, and that a click on a part of a system diagram lands
 // on its node page. The Nu HTML Checker validates every page, axe-core finds no serious or
 // critical violation. Screenshots go to <build>/site-screenshots/<workspace>/.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,6 +1,6 @@
 // `rosarch site` as a person runs it: the site of a workspace, the same bytes from two runs,
 // source links filled from git, and a clear message (never a crash) for bad input.
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QTemporaryDir>

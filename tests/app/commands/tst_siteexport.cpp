@@ -1,8 +1,8 @@
 // File > Export Architecture Site's worker: the site is written off the calling thread with
 // progress, and a cancellation writes nothing.
-#include "recovery.h"
-#include "siteexport.h"
-#include "testsupport.h"
+#include "app/commands/siteexport.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

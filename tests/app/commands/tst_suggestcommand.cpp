@@ -1,7 +1,7 @@
 // End-to-end: the real `rosarch suggest` executable, deterministic only, against a fake
 // OpenAI-compatible server, and against an endpoint that refuses connections.
-#include "fakellmserver.h"
-#include "testsupport.h"
+#include "support/fakellmserver.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QJsonArray>

@@ -1,9 +1,9 @@
 // The model as accepted: which stored decisions apply to a recovery, and what applying them
 // changes (descriptions, names of ports named by an expression, subsystem groupings), nothing else.
-#include "acceptedmodel.h"
-#include "decisionstore.h"
-#include "suggestionitem.h"
-#include "testsupport.h"
+#include "accepted/acceptedmodel.h"
+#include "accepted/decisionstore.h"
+#include "suggestions/suggestionitem.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -2,9 +2,9 @@
 // it: every fixture's expected architecture validates against it with a real JSON-schema
 // validator (scripts/fetch-sarif-schema.sh puts it in the build tree, node runs it), and so
 // does an architecture that sets every optional field; a missing or mistyped field is refused.
-#include "architecturejson.h"
-#include "jsonschemacheck.h"
-#include "testsupport.h"
+#include "artifacts/architecturejson.h"
+#include "support/jsonschemacheck.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

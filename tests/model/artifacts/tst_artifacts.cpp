@@ -1,8 +1,8 @@
-#include "acdwriter.h"
-#include "artifactcommit.h"
-#include "artifactwriter.h"
-#include "atomicnodesjson.h"
-#include "testsupport.h"
+#include "artifacts/artifactcommit.h"
+#include "artifacts/artifactwriter.h"
+#include "artifacts/atomicnodesjson.h"
+#include "plantuml/acdwriter.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 

@@ -2,9 +2,9 @@
 // it: every fixture's expected List of Atomic ROS Nodes validates against it with a real
 // JSON-schema validator (scripts/fetch-sarif-schema.sh puts it in the build tree, node runs
 // it), and so does a list that sets every optional field; a wrong field type is refused.
-#include "atomicnodesjson.h"
-#include "jsonschemacheck.h"
-#include "testsupport.h"
+#include "artifacts/atomicnodesjson.h"
+#include "support/jsonschemacheck.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

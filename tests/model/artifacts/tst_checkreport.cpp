@@ -1,8 +1,8 @@
 // `rosarch check`'s report: which findings fail for a --fail-on level and a baseline, and the
 // four formats (text, JSON that is also a baseline, SARIF 2.1.0, JUnit XML), read back here.
 // The SARIF schema itself is checked in tst_checkcommand with a real validator.
-#include "checkreport.h"
-#include "diagnostickind.h"
+#include "artifacts/checkreport.h"
+#include "core/diagnostickind.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -5,16 +5,16 @@
 // case has them, file by file. The case's
 // workspace is <case>/ws, or the folder named (relative to the source tree) in <case>/workspace.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
-#include "acdwriter.h"
-#include "architecturejson.h"
-#include "atomicnodesjson.h"
-#include "ccdwriter.h"
-#include "communicationgraph.h"
-#include "launchdependenciesjson.h"
-#include "modelinvariants.h"
-#include "nodeanalyzer.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "artifacts/architecturejson.h"
+#include "artifacts/atomicnodesjson.h"
+#include "artifacts/launchdependenciesjson.h"
+#include "core/modelinvariants.h"
+#include "nodes/nodeanalyzer.h"
+#include "pipeline/recovery.h"
+#include "plantuml/acdwriter.h"
+#include "plantuml/ccdwriter.h"
+#include "plantuml/communicationgraph.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QtTest>

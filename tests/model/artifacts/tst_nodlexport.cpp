@@ -3,9 +3,9 @@
 // tests/support/validate-nodl.py) accepts, with the parameters, topics and QoS the code
 // declares; what NoDL cannot express is left out and said. `rosarch export nodl` writes the
 // same documents.
-#include "nodlwriter.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "artifacts/nodlwriter.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -4,11 +4,11 @@
 // cache, never the result; two caches share a folder; an unusable folder means one diagnostic;
 // the size bound evicts the oldest packs.
 // Every cache lives in a temporary folder.
-#include "analysiscache.h"
-#include "cacherecovery.h"
-#include "cachetestcase.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "cache/analysiscache.h"
+#include "pipeline/recovery.h"
+#include "support/cacherecovery.h"
+#include "support/cachetestcase.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QTemporaryDir>

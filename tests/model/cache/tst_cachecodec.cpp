@@ -2,7 +2,7 @@
 // in full once and then by its number) wrote, with null and empty strings apart as QDataStream
 // keeps them, and refuses truncated, oversized, trailing or misnumbered bytes instead of
 // reading past them. Without its string table the writer writes what QDataStream writes.
-#include "cachecodec.h"
+#include "cache/cachecodec.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // File digests: known by stat when nothing changed, and read again when anything stat shows
 // changed, even a rewrite of the same size with the mtime set back; the memo survives a
 // process and a damaged memo is no memo.
-#include "filedigests.h"
-#include "sha1.h"
-#include "testsupport.h"
+#include "cache/filedigests.h"
+#include "cache/sha1.h"
+#include "support/testsupport.h"
 
 #include <QCryptographicHash>
 #include <QDateTime>

@@ -3,10 +3,10 @@
 // sends a subscription to a misspelt topic, and literal QoS that cannot match (Python against
 // Python, Python against C++); plus the QoS reading itself and the findings' stable keys. An
 // open port with no evidence of a mistake is the system's interface, not a finding.
-#include "qos.h"
-#include "recovery.h"
-#include "recoverytest.h"
-#include "testsupport.h"
+#include "core/qos.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

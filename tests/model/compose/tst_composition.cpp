@@ -2,13 +2,13 @@
 // checks, on hand-built instances and on tests/data/compose_system (two includes of one
 // launch file under different namespaces, a container with its own remaps, a guarded
 // service, a parameter-derived topic, SetRemap, an inactive node and an unresolved name).
-#include "ccdwriter.h"
-#include "composearchitecture.h"
-#include "composer.h"
-#include "guifixture.h"
-#include "recovery.h"
-#include "rosnames.h"
-#include "testsupport.h"
+#include "compose/composearchitecture.h"
+#include "compose/composer.h"
+#include "core/rosnames.h"
+#include "pipeline/recovery.h"
+#include "plantuml/ccdwriter.h"
+#include "support/guifixture.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Stage 3 and names built on a guessed launch value (an argument nobody sets): which port names
 // rest on the guess (a remapping onto it, a relative name under a guessed namespace, a private
 // name under a guessed namespace or node name), and whom such a name is wired to.
-#include "composer.h"
-#include "guifixture.h"
+#include "compose/composer.h"
+#include "support/guifixture.h"
 
 #include <QtTest>
 

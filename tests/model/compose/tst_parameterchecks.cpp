@@ -2,12 +2,12 @@
 // instance is given against what its class and plugins declare, on the params_checks
 // (rclcpp, nav2_util and rclpy declarations, a follower plugin), params_generated
 // (generate_parameter_library) and params_handler (a handler's getter, critics) fixtures.
-#include "generatedparameters.h"
-#include "parameter.h"
-#include "parameterview.h"
-#include "recovery.h"
-#include "recoverytest.h"
-#include "testsupport.h"
+#include "core/parameter.h"
+#include "core/parameterview.h"
+#include "nodes/generatedparameters.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Stage 3's port names per instance, on hand-built classes and instances: parameter-derived
 // names, empty parameters, and the ports of the plugins an instance loads.
-#include "composer.h"
-#include "guifixture.h"
-#include "itemports.h"
+#include "compose/composer.h"
+#include "compose/itemports.h"
+#include "support/guifixture.h"
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
-#include "editdistance.h"
-#include "port.h"
+#include "core/editdistance.h"
+#include "core/port.h"
 
 #include <QtTest>
 

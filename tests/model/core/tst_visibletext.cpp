@@ -1,6 +1,6 @@
 // Text from a workspace reaches terminals, logs and reports with its control characters made
 // visible: every C0 and C1 control, DEL and the Unicode line separators.
-#include "visibletext.h"
+#include "core/visibletext.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // The diagram's layout job: run off the UI thread on a JobRunner with the real rosarch-layout
 // helper, cached by the graph's DOT text so a composite shown again needs no helper, failures
 // not cached, and a superseded, canceled or orphaned request never reports.
-#include "diagramlayouter.h"
-#include "testsupport.h"
+#include "diagram/diagramlayouter.h"
+#include "support/testsupport.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>

@@ -1,8 +1,8 @@
 // The overview of a composite too big to read at fit zoom: which namespaces collapse, which
 // parts lose their port rows, the channels hidden inside a box, the edges merged between boxes
 // and channels, and that expanding gives back the full diagram.
-#include "diagramarchitecture.h"
-#include "diagramoverview.h"
+#include "diagram/diagramoverview.h"
+#include "support/diagramarchitecture.h"
 
 #include <QSet>
 #include <QtTest>

@@ -1,7 +1,7 @@
-#include "diagramarchitecture.h"
-#include "diagrambuilder.h"
-#include "graphlayout.h"
-#include "testsupport.h"
+#include "diagram/diagrambuilder.h"
+#include "diagram/graphlayout.h"
+#include "support/diagramarchitecture.h"
+#include "support/testsupport.h"
 
 #include <QElapsedTimer>
 #include <QFile>

@@ -1,7 +1,7 @@
 // Which root launch file the composed diagram starts on: a remembered choice first, then the
 // only root, a file named like a system's entry point, the root that includes the most, and
 // otherwise no choice (the panel asks). Also the counts the root picker lists.
-#include "rootchoice.h"
+#include "diagram/rootchoice.h"
 
 #include <QtTest>
 

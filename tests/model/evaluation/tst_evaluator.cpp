@@ -1,8 +1,8 @@
 // The evaluator: multiset comparison per kind and diagram, the §4 conventions, macro vs micro.
 // tests/data/eval_models holds a reference and a recovered model broken on purpose.
-#include "evaluator.h"
-#include "testsupport.h"
-#include "umlmodel.h"
+#include "evaluation/evaluator.h"
+#include "plantuml/umlmodel.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -2,12 +2,12 @@
 // (tests/data/<case>/expected/{acd,ccd}), and deliberately broken variants of the
 // compose_system CCDs (tests/data/compose_system/broken) scored below 1.0 on exactly the
 // elements that were broken.
-#include "evaluator.h"
-#include "plantumlreader.h"
-#include "recovereddiagrams.h"
-#include "recovery.h"
-#include "testsupport.h"
-#include "umlmodel.h"
+#include "evaluation/evaluator.h"
+#include "evaluation/recovereddiagrams.h"
+#include "pipeline/recovery.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/umlmodel.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -2,11 +2,11 @@
 // their schemas with a real JSON-schema validator, and a workspace whose launch file starts
 // code outside it (tests/data/interface_models: a simulator's spawn file, robot_state_publisher,
 // rviz2) is wired through the models' ports, which are marked as modelled and never findings.
-#include "interfacemodel.h"
-#include "jsonschemacheck.h"
-#include "observability.h"
-#include "recovery.h"
-#include "testsupport.h"
+#include "interfaces/interfacemodel.h"
+#include "interfaces/observability.h"
+#include "pipeline/recovery.h"
+#include "support/jsonschemacheck.h"
+#include "support/testsupport.h"
 
 #include <QDir>
 #include <QProcess>

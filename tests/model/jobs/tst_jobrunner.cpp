@@ -1,7 +1,7 @@
 // The one runner for background work: results come back on the runner's thread, a newer job
 // drops an older one's result, cancel reaches the job through its token, progress and log
 // lines arrive before the result, and no worker outlives the runner.
-#include "jobrunner.h"
+#include "jobs/jobrunner.h"
 
 #include <QSemaphore>
 #include <QSignalSpy>

@@ -2,8 +2,8 @@
 // with real files (include resolution checks them), and summaries of what the executor made.
 #pragma once
 
-#include "launchexecutor.h"
-#include "launchsupport.h"
+#include "launch/launchexecutor.h"
+#include "support/launchsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

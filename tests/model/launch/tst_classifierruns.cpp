@@ -2,15 +2,15 @@
 // number of threads and the order the pool ran them in, the result is the one of one executor
 // running the files one after the other (ids, containers named in earlier files, the budget's
 // cut), and a cancel ends them.
-#include "analysiscache.h"
-#include "classifierruns.h"
+#include "cache/analysiscache.h"
+#include "core/rosnames.h"
 #include "executorfixture.h"
-#include "launchanalyzer.h"
-#include "launchexecutor.h"
-#include "recovery.h"
-#include "rosnames.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "launch/classifierruns.h"
+#include "launch/launchanalyzer.h"
+#include "launch/launchexecutor.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>

@@ -1,9 +1,9 @@
 // Stage 2 semantics on hand-built launch descriptions (readers are tested separately), the
 // substitution evaluator, and the same system in three formats read from fixture files.
 #include "executorfixture.h"
-#include "recovery.h"
-#include "substitutionevaluator.h"
-#include "testsupport.h"
+#include "launch/substitutionevaluator.h"
+#include "pipeline/recovery.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

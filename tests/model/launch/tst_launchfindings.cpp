@@ -1,8 +1,8 @@
 // Findings stage 2 makes while it runs the launch files (blueprint §1, "Checks run on entry
 // points"): a namespace that an included file pushes again (tests/data/check_namespaces).
-#include "recovery.h"
-#include "recoverytest.h"
-#include "testsupport.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -2,12 +2,12 @@
 // result, so that an edit moving the lines of a node file without changing its classes does
 // not run stage 2 again, while a changed executable name does; either way the result is the
 // one an uncached run gives.
-#include "analysiscache.h"
-#include "cachetestcase.h"
-#include "launchanalyzer.h"
-#include "nodeanalyzer.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "launch/launchanalyzer.h"
+#include "nodes/nodeanalyzer.h"
+#include "support/cachetestcase.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,7 +1,7 @@
 // Stage 2's parameters as ROS 2 applies them: parameter files by node keys and wildcards,
 // RewrittenYaml, plugin names from parameters, and what is said about bad parameter files.
 #include "executorfixture.h"
-#include "testsupport.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

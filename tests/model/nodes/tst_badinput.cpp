@@ -1,7 +1,7 @@
 // Bad input never stops a run: each broken file gives a diagnostic, the rest is recovered.
-#include "nodeanalyzer.h"
-#include "sourcereader.h"
-#include "testsupport.h"
+#include "nodes/nodeanalyzer.h"
+#include "support/testsupport.h"
+#include "workspace/sourcereader.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -2,14 +2,14 @@
 // stage's memo answered, it decodes what the next run after an edit reuses, so that the first
 // edit reads nothing more from the cache's packs than later ones. Run to its end, stopped part
 // way, or stopped at once by the next request, the edit gives exactly what a fresh run gives.
-#include "analysiscache.h"
-#include "cacherecovery.h"
-#include "cachetestcase.h"
-#include "nodeanalyzer.h"
-#include "recovery.h"
-#include "stagesession.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "nodes/nodeanalyzer.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stagesession.h"
+#include "support/cacherecovery.h"
+#include "support/cachetestcase.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,11 +1,11 @@
 // Pathological input, generated here, never crashes, hangs or silently drops anything: each
 // case is a workspace with one hostile file next to a healthy node, and the run must finish
 // with the healthy part recovered and a diagnostic naming what was skipped and why.
-#include "analysiscache.h"
-#include "recovery.h"
-#include "recoverytest.h"
-#include "syntaxtree.h"
-#include "testsupport.h"
+#include "cache/analysiscache.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
+#include "syntax/syntaxtree.h"
 
 #include <QDir>
 #include <QTemporaryDir>

@@ -3,14 +3,14 @@
 // ended), so that the next run is warm; the result is the same as without the cache; a canceled
 // run and a caller's own cache are handled as before; the worker's deferral is left alone, and
 // its pack has stage 2's memo, encoded on a pool thread (AnalysisCache::finishStores).
-#include "analysiscache.h"
-#include "cppnodeanalyzer.h"
-#include "deferredcachewrite.h"
-#include "recovery.h"
-#include "stageprocess.h"
-#include "testsupport.h"
-#include "workerprocess.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "pipeline/deferredcachewrite.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stageprocess.h"
+#include "pipeline/workerprocess.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QDir>
 #include <QTemporaryDir>

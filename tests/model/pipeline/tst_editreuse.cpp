@@ -2,13 +2,13 @@
 // moved locations brought up to date, and give exactly what a fresh run gives (in process, from
 // the analysis cache, and in a long-lived worker); an edit that changes what the stages read
 // (a topic's name) is analysed again. EvidenceShift refuses moves a stage could tell apart.
-#include "analysiscache.h"
-#include "cacherecovery.h"
-#include "cachetestcase.h"
-#include "evidenceshift.h"
-#include "recovery.h"
-#include "stagesession.h"
-#include "testsupport.h"
+#include "cache/analysiscache.h"
+#include "cache/evidenceshift.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stagesession.h"
+#include "support/cacherecovery.h"
+#include "support/cachetestcase.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

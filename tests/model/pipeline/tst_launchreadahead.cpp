@@ -2,17 +2,17 @@
 // give what reading them in stage 2 gives, whatever the threads' interleaving; a cancel during
 // the overlap ends the run without a hang; the worker's reply sends each string once; a worker
 // let go after its reply (WorkerProcess::release) is still reaped.
-#include "analysiscache.h"
-#include "composearchitecture.h"
-#include "launchfilecodec.h"
-#include "launchfileindex.h"
-#include "launchreadahead.h"
-#include "nodeanalyzer.h"
-#include "recovery.h"
-#include "recoverystream.h"
-#include "testsupport.h"
-#include "workerprocess.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "compose/composearchitecture.h"
+#include "launch/launchfilecodec.h"
+#include "launch/launchfileindex.h"
+#include "launch/launchreadahead.h"
+#include "nodes/nodeanalyzer.h"
+#include "pipeline/recovery.h"
+#include "pipeline/recoverystream.h"
+#include "pipeline/workerprocess.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QThreadPool>
 #include <QtTest>

@@ -3,11 +3,11 @@
 // each stage's part of its reply as soon as the stage is done. Whatever the interleaving, the
 // result is the one of a run on one thread; progress counts up once per instance; a cancel
 // ends stage 3 without a hang; the parts read one by one give the whole reply.
-#include "analysiscache.h"
-#include "composearchitecture.h"
-#include "recovery.h"
-#include "recoverystream.h"
-#include "testsupport.h"
+#include "cache/analysiscache.h"
+#include "compose/composearchitecture.h"
+#include "pipeline/recovery.h"
+#include "pipeline/recoverystream.h"
+#include "support/testsupport.h"
 
 #include <QThreadPool>
 #include <QtTest>

@@ -1,10 +1,10 @@
 // Budgets on sizes, not only counts: a value that evaluation builds stops at the
 // size budget with an evaluation-limit diagnostic at its file and line; the rest of the
 // workspace is recovered. Each workspace is generated here, next to a healthy node.
-#include "editdistance.h"
-#include "recovery.h"
-#include "recoverytest.h"
-#include "valuebudget.h"
+#include "core/editdistance.h"
+#include "core/valuebudget.h"
+#include "pipeline/recovery.h"
+#include "support/recoverytest.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -3,12 +3,12 @@
 // blow-up while one file is analysed costs that file alone, with a diagnostic saying why; what
 // cannot be pinned on a file is an error, never a crash of the caller. The faults are the
 // worker's test switches (ROSARCH_STAGES_TEST_*), a stand-in for analyser bugs nobody has found.
-#include "composearchitecture.h"
-#include "recovery.h"
-#include "recoverystream.h"
-#include "recoverytest.h"
-#include "stageprocess.h"
-#include "testsupport.h"
+#include "compose/composearchitecture.h"
+#include "pipeline/recovery.h"
+#include "pipeline/recoverystream.h"
+#include "pipeline/stageprocess.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
 
 #include <QDir>
 #include <QTemporaryDir>

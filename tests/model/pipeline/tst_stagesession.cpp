@@ -3,10 +3,10 @@
 // an overrun costs that worker, and the next run gets a new one; runs from two threads each get
 // their own result; the worker leaves with the session. The faults are the worker's test
 // switches (ROSARCH_STAGES_TEST_*), read when a worker starts.
-#include "recovery.h"
-#include "recoverytest.h"
-#include "stagesession.h"
-#include "testsupport.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stagesession.h"
+#include "support/recoverytest.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

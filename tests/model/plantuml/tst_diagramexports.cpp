@@ -3,11 +3,11 @@
 // parser (Node, scripts/fetch-mermaid.sh), after checks of what the diagram must hold: one
 // node per active part, channel and boundary port, one coloured arrow per connection, ids
 // that are never Mermaid keywords, and labels without raw quotes.
-#include "communicationgraph.h"
-#include "mermaidwriter.h"
-#include "recovery.h"
-#include "rosnames.h"
-#include "testsupport.h"
+#include "core/rosnames.h"
+#include "pipeline/recovery.h"
+#include "plantuml/communicationgraph.h"
+#include "plantuml/mermaidwriter.h"
+#include "support/testsupport.h"
 
 #include <graphviz/cgraph.h>
 #include <graphviz/gvc.h>

@@ -1,9 +1,9 @@
 // The PlantUML reader on CCDs: our notation, subsystems, and every hand-written variant
 // blueprint §3 tolerates (stereotypes, arrows, colours, boundary port types, aliases).
-#include "plantumlreader.h"
-#include "testsupport.h"
-#include "umlmodel.h"
-#include "umltestsupport.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/umlmodel.h"
+#include "support/testsupport.h"
+#include "support/umltestsupport.h"
 
 #include <QtTest>
 

@@ -1,10 +1,10 @@
 // The PlantUML reader on ACDs, several diagrams per file, the blueprint examples and our ACD
 // writer read back; the CCD cases are in tst_plantumlccdreader.cpp.
-#include "acdwriter.h"
-#include "plantumlreader.h"
-#include "testsupport.h"
-#include "umlmodel.h"
-#include "umltestsupport.h"
+#include "plantuml/acdwriter.h"
+#include "plantuml/plantumlreader.h"
+#include "plantuml/umlmodel.h"
+#include "support/testsupport.h"
+#include "support/umltestsupport.h"
 
 #include <QDir>
 #include <QtTest>

@@ -2,12 +2,12 @@
 // scripts/fetch-plantuml.sh, run once for all files): no PlantUML error, and each rendered CCD
 // shows every part and every boundary port. Our own reader is more forgiving than PlantUML, so
 // reading our output back proves nothing about whether it renders.
-#include "acdwriter.h"
-#include "ccdwriter.h"
-#include "plantumltext.h"
-#include "recovery.h"
-#include "subsystemgrouping.h"
-#include "testsupport.h"
+#include "compose/subsystemgrouping.h"
+#include "pipeline/recovery.h"
+#include "plantuml/acdwriter.h"
+#include "plantuml/ccdwriter.h"
+#include "plantuml/plantumltext.h"
+#include "support/testsupport.h"
 
 #include <QDir>
 #include <QFileInfo>

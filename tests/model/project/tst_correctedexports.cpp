@@ -5,10 +5,10 @@
 // workspace (every node under /robot1), every export must wire the corrected connection as the
 // GUI does, with no boundary port left over for it, and still render in PlantUML and parse in
 // Mermaid.
-#include "artifactwriter.h"
-#include "classifiercorrections.h"
-#include "correctedmodel.h"
-#include "testsupport.h"
+#include "artifacts/artifactwriter.h"
+#include "project/classifiercorrections.h"
+#include "project/correctedmodel.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QProcess>

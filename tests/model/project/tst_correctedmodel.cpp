@@ -3,9 +3,9 @@
 // shifts every id, each correction still lands on its own element or is listed as orphaned.
 // Also: stable keys, and the project file's format, schema and error messages.
 // Set ROSARCH_UPDATE_EXPECTED=1 to rewrite the expected files after a reviewed change.
-#include "artifactwriter.h"
-#include "correctedmodel.h"
-#include "testsupport.h"
+#include "artifacts/artifactwriter.h"
+#include "project/correctedmodel.h"
+#include "support/testsupport.h"
 
 #include <QDirIterator>
 #include <QJsonArray>

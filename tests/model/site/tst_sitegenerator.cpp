@@ -2,15 +2,15 @@
 // same model gives the same bytes, that every link between pages resolves and the source links
 // point where they say, that the in-process layout equals the GUI's, and what writing into a
 // folder refuses.
-#include "diagrambuilder.h"
-#include "graphlayout.h"
-#include "inprocesslayout.h"
-#include "recovery.h"
-#include "sitediagram.h"
-#include "sitegenerator.h"
-#include "sitemodel.h"
-#include "sitesource.h"
-#include "testsupport.h"
+#include "diagram/diagrambuilder.h"
+#include "diagram/graphlayout.h"
+#include "pipeline/recovery.h"
+#include "site/inprocesslayout.h"
+#include "site/sitediagram.h"
+#include "site/sitegenerator.h"
+#include "site/sitemodel.h"
+#include "site/sitesource.h"
+#include "support/testsupport.h"
 
 #include <QRegularExpression>
 #include <QTest>

@@ -1,14 +1,14 @@
 // Suggestions: the deterministic provider, the checker, the JSON round trip, and the LLM
 // tasks against a fake OpenAI-compatible server (with replies that cite wrong evidence and
 // obey a prompt injection hidden in the repository).
-#include "deterministicprovider.h"
-#include "fakellmserver.h"
-#include "prompttemplate.h"
-#include "subsystemgrouper.h"
-#include "suggestionchecker.h"
-#include "suggestionengine.h"
-#include "suggestionsjson.h"
-#include "testsupport.h"
+#include "suggestions/deterministicprovider.h"
+#include "suggestions/llm/prompttemplate.h"
+#include "suggestions/subsystemgrouper.h"
+#include "suggestions/suggestionchecker.h"
+#include "suggestions/suggestionengine.h"
+#include "suggestions/suggestionsjson.h"
+#include "support/fakellmserver.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtConcurrent>

@@ -1,10 +1,10 @@
 // Conditional compilation before parsing: the condition evaluator, the blanking of inactive
 // branches (lines and columns of the rest unchanged), macros, includes, malformed input, and
 // the compile definitions a CMakeLists.txt makes.
-#include "cppconditionevaluator.h"
-#include "cppmacroindex.h"
-#include "cpppreprocessor.h"
-#include "cppsyntax.h"
+#include "nodes/cpp/cppmacroindex.h"
+#include "syntax/cppconditionevaluator.h"
+#include "syntax/cpppreprocessor.h"
+#include "syntax/cppsyntax.h"
 
 #include <QtTest>
 

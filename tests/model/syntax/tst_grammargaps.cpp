@@ -1,7 +1,7 @@
 // cppsyntax::blankGrammarGaps: valid C++ the tree-sitter grammar cannot read is rewritten in
 // place, keeping every offset, line and column, and never inside strings or comments.
-#include "cppsyntax.h"
-#include "syntaxtree.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/syntaxtree.h"
 
 #include <QtTest>
 

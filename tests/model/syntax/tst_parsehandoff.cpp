@@ -1,11 +1,11 @@
 // ParseHandoff: a Python launch file read by stage 1 (for node classes) and by stage 2 (as a
 // launch description) in one run is parsed once, whichever reads it first, and what the two
 // readers find is what they find when each parses it alone.
-#include "launchaction.h"
-#include "parsehandoff.h"
-#include "pythonfactscodec.h"
-#include "pythonlaunchreader.h"
-#include "pythonnodeanalyzer.h"
+#include "core/launchaction.h"
+#include "launch/python/pythonlaunchreader.h"
+#include "nodes/python/pythonfactscodec.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "syntax/parsehandoff.h"
 
 #include <QtTest>
 

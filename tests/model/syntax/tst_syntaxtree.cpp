@@ -2,7 +2,7 @@
 // the name up each time; on every node of a C++ and a Python file, with errors and aliases,
 // they must give what tree-sitter's own lookups give, and so must ts::TypeSet and the lookups by
 // field id.
-#include "syntaxtree.h"
+#include "syntax/syntaxtree.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
-#include "buildfileparser.h"
-#include "cmakelistsreader.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "support/testsupport.h"
+#include "workspace/buildfileparser.h"
+#include "workspace/cmakelistsreader.h"
+#include "workspace/workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,6 +1,6 @@
 // mapLargestFirst hands the largest files out first and gives the results back in the files'
 // own order, whatever their sizes.
-#include "largestfirst.h"
+#include "workspace/largestfirst.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // The workspace scan lists each folder once (the entry types from the listing, no stat per
 // entry but for the files it keeps and for links): what it finds and what it says of links,
 // ignore markers, skipped folders and special files.
-#include "analysiscache.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

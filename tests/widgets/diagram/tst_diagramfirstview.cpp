@@ -1,17 +1,17 @@
 // The first view of a system shows its nodes: only what cannot be read at the legible zoom is
 // collapsed, the boundary first, then the parts' port rows, then the biggest namespaces one at
 // a time; and a box expanded by a double-click opens in place, in view.
-#include "diagramarchitecture.h"
-#include "diagramclusteritem.h"
-#include "diagramfirstview.h"
-#include "diagramlayouter.h"
-#include "diagramnodeitem.h"
-#include "diagramoverview.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramview.h"
-#include "diagramwait.h"
-#include "screenshot.h"
+#include "diagram/diagramlayouter.h"
+#include "diagram/diagramoverview.h"
+#include "support/diagramarchitecture.h"
+#include "support/diagramwait.h"
+#include "support/screenshot.h"
+#include "widgets/diagram/diagramclusteritem.h"
+#include "widgets/diagram/diagramfirstview.h"
+#include "widgets/diagram/diagramnodeitem.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // The diagram's minimap: where it shows, and that it never covers the current match.
-#include "diagramminimap.h"
-#include "diagramscene.h"
-#include "diagramshownpanel.h"
-#include "diagramview.h"
+#include "support/diagramshownpanel.h"
+#include "widgets/diagram/diagramminimap.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QScrollBar>
 #include <QtTest>

@@ -1,18 +1,18 @@
 // Finding one's way in a big system: the root picker in the diagram's header, the prompt when
 // no root stands out, the overview a diagram too big to read at fit starts in (text never
 // below the legible size), expanding and collapsing its boxes, and the minimap.
-#include "diagramarchitecture.h"
-#include "diagramclusteritem.h"
-#include "diagramlayouter.h"
-#include "diagramminimap.h"
-#include "diagramnodeitem.h"
-#include "diagrampanel.h"
-#include "diagramrootpicker.h"
-#include "diagramrootprompt.h"
-#include "diagramscene.h"
-#include "diagramview.h"
-#include "diagramwait.h"
-#include "screenshot.h"
+#include "diagram/diagramlayouter.h"
+#include "support/diagramarchitecture.h"
+#include "support/diagramwait.h"
+#include "support/screenshot.h"
+#include "widgets/diagram/diagramclusteritem.h"
+#include "widgets/diagram/diagramminimap.h"
+#include "widgets/diagram/diagramnodeitem.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramrootpicker.h"
+#include "widgets/diagram/diagramrootprompt.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QAbstractItemView>
 #include <QAction>

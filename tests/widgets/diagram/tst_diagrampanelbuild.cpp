@@ -1,12 +1,12 @@
 // The composed diagram panel on big composites: their layout graph is built off the UI thread
 // while the panel says so, a newer request drops a build in flight, closing the panel while a
 // build runs is safe, and a graph too big for Graphviz is explained instead of laid out.
-#include "diagramarchitecture.h"
-#include "diagramlayouter.h"
-#include "diagrampanel.h"
-#include "diagramscene.h"
-#include "diagramview.h"
-#include "diagramwait.h"
+#include "diagram/diagramlayouter.h"
+#include "support/diagramarchitecture.h"
+#include "support/diagramwait.h"
+#include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
+#include "widgets/diagram/diagramview.h"
 
 #include <QPointer>
 #include <QSignalSpy>

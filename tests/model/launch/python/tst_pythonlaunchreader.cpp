@@ -1,6 +1,6 @@
 #include "analysistext.h"
-#include "pythonlaunchreader.h"
-#include "testsupport.h"
+#include "launch/python/pythonlaunchreader.h"
+#include "support/testsupport.h"
 
 #include <QElapsedTimer>
 #include <QtTest>

@@ -1,8 +1,8 @@
 // The XML and YAML launch readers: constructs, evidence, equivalence and malformed input.
-#include "launchsupport.h"
-#include "testsupport.h"
-#include "xmllaunchreader.h"
-#include "yamllaunchreader.h"
+#include "launch/xmlyaml/xmllaunchreader.h"
+#include "launch/xmlyaml/yamllaunchreader.h"
+#include "support/launchsupport.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

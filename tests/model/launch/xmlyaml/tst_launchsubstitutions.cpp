@@ -1,8 +1,8 @@
 // The $(...) substitution parser shared by the XML and YAML launch readers.
-#include "frontendsubstitution.h"
-#include "launchsupport.h"
-#include "substitutionevaluator.h"
-#include "testsupport.h"
+#include "launch/substitutionevaluator.h"
+#include "launch/xmlyaml/frontendsubstitution.h"
+#include "support/launchsupport.h"
+#include "support/testsupport.h"
 
 #include <QtTest>
 

@@ -2,12 +2,12 @@
 // where things are: after an edit that only moves lines the previous link is reused with its
 // locations moved, and after any other change (a class's base, a helper's port, a file added,
 // removed or renamed) the facts are linked again. Either way the result is a fresh run's.
-#include "analysiscache.h"
-#include "cpplinkmemo.h"
-#include "nodeanalyzer.h"
-#include "recovery.h"
-#include "stagesession.h"
-#include "testsupport.h"
+#include "cache/analysiscache.h"
+#include "nodes/cpp/cpplinkmemo.h"
+#include "nodes/nodeanalyzer.h"
+#include "pipeline/recovery.h"
+#include "pipeline/stagesession.h"
+#include "support/testsupport.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

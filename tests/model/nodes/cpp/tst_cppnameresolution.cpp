@@ -1,10 +1,10 @@
 // How the C++ analyzer resolves names: port names from literals, locals, members, parameters
 // and expressions, names handed through helper classes and methods, and interface types.
-#include "cppanalysis.h"
-#include "cppnameresolver.h"
-#include "cppnodeanalyzer.h"
-#include "cppsyntax.h"
-#include "testsupport.h"
+#include "nodes/cpp/cppnameresolver.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "support/cppanalysis.h"
+#include "support/testsupport.h"
+#include "syntax/cppsyntax.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,11 +1,11 @@
 // The C++ analyzer on small fixture workspaces (tests/data/cpp_*/ws), field by field.
 // tools/survey (rosarch-survey nodes <workspace>) prints what it finds in a real workspace.
 #include "analysistext.h"
-#include "cppanalysis.h"
-#include "cppnodeanalyzer.h"
-#include "nodeanalyzer.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "nodes/nodeanalyzer.h"
+#include "support/cppanalysis.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QMutex>
 #include <QTemporaryDir>

@@ -1,12 +1,12 @@
 // Parse robustness of the C++ analyzer: broken members and statements, grammar gaps, export
 // and string macros, preprocessor conditionals.
 #include "analysistext.h"
-#include "cppanalysis.h"
-#include "cppnodeanalyzer.h"
-#include "cppsyntax.h"
-#include "syntaxtree.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "nodes/cpp/cppnodeanalyzer.h"
+#include "support/cppanalysis.h"
+#include "support/testsupport.h"
+#include "syntax/cppsyntax.h"
+#include "syntax/syntaxtree.h"
+#include "workspace/workspacescanner.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

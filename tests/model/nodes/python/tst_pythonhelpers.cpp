@@ -1,7 +1,7 @@
-#include "pythonanalysis.h"
-#include "pythonnodeanalyzer.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "support/pythonanalysis.h"
+#include "support/testsupport.h"
+#include "workspace/workspacescanner.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
-#include "analysiscache.h"
-#include "pythonanalysis.h"
-#include "pythonnodeanalyzer.h"
-#include "syntaxtree.h"
-#include "testsupport.h"
-#include "workspacescanner.h"
+#include "cache/analysiscache.h"
+#include "nodes/python/pythonnodeanalyzer.h"
+#include "support/pythonanalysis.h"
+#include "support/testsupport.h"
+#include "syntax/syntaxtree.h"
+#include "workspace/workspacescanner.h"
 
 #include <QtTest>
 

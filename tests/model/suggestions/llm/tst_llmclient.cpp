@@ -1,10 +1,10 @@
 // The LLM client against a fake OpenAI-compatible server over real HTTP, the schema validator
 // and the prompt templates.
-#include "fakellmserver.h"
-#include "llmclient.h"
-#include "llmschemavalidator.h"
-#include "prompttemplate.h"
-#include "testsupport.h"
+#include "suggestions/llm/llmclient.h"
+#include "suggestions/llm/llmschemavalidator.h"
+#include "suggestions/llm/prompttemplate.h"
+#include "support/fakellmserver.h"
+#include "support/testsupport.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
