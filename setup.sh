@@ -4,7 +4,8 @@
 #
 #   ./setup.sh gui     build and open the GUI on resources/example_ws
 #   ./setup.sh test    format check, a warnings-as-errors build with AddressSanitizer +
-#                      UBSan in build-asan, the whole test suite under it and clang-tidy,
+#                      UBSan in build-asan, the whole test suite under it, clang-tidy over
+#                      what changed since .ci/tidy-base (ROSARCH_TIDY_ALL=1: every file),
 #                      then every libFuzzer target for a fixed number of runs in build-fuzz
 #                      (what CI runs)
 #   ./setup.sh build   only build
@@ -101,6 +102,10 @@ case "$mode" in
     fi
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       step "test suite" ctest --test-dir "$test_dir" --output-on-failure -j "$jobs"
+    # Only the files a change since the last full green run (.ci/tidy-base) can reach: the
+    # full run took CI as long as the tests, and a file whose source, headers and build
+    # settings did not change since a full run passed gives the same result. A change to the
+    # build settings or to .clang-tidy checks everything; so does ROSARCH_TIDY_ALL=1.
     step "clang-tidy" scripts/check-tidy.sh "$test_dir"
     if [ "${ROSARCH_SKIP_FUZZ:-0}" != 1 ]; then
       # Every libFuzzer target (clang-16, ASan + UBSan) over its seed corpus, a fixed number
