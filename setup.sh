@@ -114,11 +114,14 @@ case "$mode" in
       # tests were built and run twice already, and building them a third time took CI a
       # quarter of its time.
       fuzz_dir=${ROSARCH_FUZZ_BUILD_DIR:-build-fuzz}
-      configure "$fuzz_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-        -DCMAKE_C_COMPILER=clang-16 -DCMAKE_CXX_COMPILER=clang++-16 -DROSARCH_FUZZ=ON \
-        -DROSARCH_SANITIZE=address,undefined,fuzzer-no-link
       mapfile -t fuzz_targets < <(ls tests/fuzz/corpus)
-      step "fuzz build" cmake --build "$fuzz_dir" -j "$jobs" --target "${fuzz_targets[@]}"
+      fuzz_build() {
+        configure "$fuzz_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+          -DCMAKE_C_COMPILER=clang-16 -DCMAKE_CXX_COMPILER=clang++-16 -DROSARCH_FUZZ=ON \
+          -DROSARCH_SANITIZE=address,undefined,fuzzer-no-link
+        cmake --build "$fuzz_dir" -j "$jobs" --target "${fuzz_targets[@]}"
+      }
+      step "fuzz build" fuzz_build
       step "fuzz runs" scripts/run-fuzzers.sh "$fuzz_dir" runs=2000
     fi
     echo "setup: the whole test run took ${SECONDS} s" ;;
