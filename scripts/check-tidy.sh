@@ -122,6 +122,12 @@ for f in files:
 # folder); tools name their own headers bare, relative to the including file.
 known = set(git("ls-files", "--cached", "--others", "--exclude-standard", "--", *searched).stdout.split("\n")) - {""}
 include_line = re.compile(r'^\s*#\s*include\s*[<"]([^">]+)[">]', re.M)
+# A name found none of these ways (a header of another tool's folder, which its target exports)
+# stands for every file of that name.
+existing = known | set(changed)
+by_name = {}
+for path in existing:
+    by_name.setdefault(os.path.basename(path), set()).add(path)
 includers = {}  # header (relative) -> files that include it
 for path in known:
     if not path.endswith((".h", ".hpp", ".cpp", ".cc", ".inc")):
@@ -131,10 +137,12 @@ for path in known:
     except OSError:
         continue
     for name in include_line.findall(text):
-        for candidate in (os.path.join(os.path.dirname(path), name), "model/" + name, name):
-            candidate = os.path.normpath(candidate)
-            if candidate in known or candidate in changed:
-                includers.setdefault(candidate, set()).add(path)
+        candidates = {os.path.normpath(c) for c in (os.path.join(os.path.dirname(path), name), "model/" + name, name)}
+        found = candidates & existing
+        if not found:
+            found = {p for p in by_name.get(os.path.basename(name), ()) if p.endswith("/" + name)}
+        for header in found:
+            includers.setdefault(header, set()).add(path)
 tidied_rel = {rel(f): f for f in files}
 for header in changed:
     seen, todo = {header}, [header]
