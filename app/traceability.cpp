@@ -6,8 +6,13 @@
 #include "widgets/launchtreepanel.h"
 #include "widgets/sourceview.h"
 
+#include <Qsci/qsciscintilla.h>
+
+#include <QMenu>
 #include <QScopedValueRollback>
 #include <QTreeView>
+
+#include <algorithm>
 
 namespace rosarch {
 
@@ -122,30 +127,92 @@ void Traceability::onSourceLineChanged(const QString &file, int line)
         if (cls.isValid() && m_nodePanel->currentSourceIndex() != cls)
             m_nodePanel->selectSourceIndex(cls);
     }
-    const QModelIndex nodeIndex = preferCurrentClass(m_nodeModel->indexAt(file, line), file, line);
-    if (nodeIndex.isValid())
-        m_nodePanel->selectSourceIndex(nodeIndex);
+    const QModelIndexList users = usersOfLine(file, line);
+    if (users.size() == 1) {
+        m_nodePanel->selectSourceIndex(users.first());
+        return;
+    }
+    // A helper's line (a function several classes call to make a port) is the evidence of a
+    // port of each of them, all as narrow: the class the person came from keeps it; else the
+    // person says which class they are after.
+    const AtomicNode *current = m_nodeModel->node(m_nodePanel->currentSourceIndex());
+    for (const QModelIndex &user : users)
+        if (current && m_nodeModel->node(user)->id == current->id) {
+            if (m_nodePanel->currentSourceIndex() != user)
+                m_nodePanel->selectSourceIndex(user);
+            return;
+        }
+    if (!users.isEmpty())
+        offerClassChoice(users);
 }
 
-QModelIndex Traceability::preferCurrentClass(const QModelIndex &found, const QString &file,
-                                             int line) const
+QModelIndexList Traceability::usersOfLine(const QString &file, int line) const
 {
-    // A helper's line (a function several classes call to make a port) is the evidence of a
-    // port of each of them, all as narrow: the class the person came from keeps it, rather
-    // than whichever class comes first.
-    const AtomicNode *current = m_nodeModel->node(m_nodePanel->currentSourceIndex());
-    const AtomicNode *other = m_nodeModel->node(found);
-    int foundSpan = 0;
-    if (!current || !other || current->id == other->id ||
-        !coversLine(m_nodeModel->evidence(found), file, line, &foundSpan))
-        return found;
-    int span = 0;
-    for (const Port &p : current->ports)
-        if (coversLine(p.evidence, file, line, &span) && span <= foundSpan)
-            return m_nodeModel->portIndex(current->id, p.id);
-    if (coversLine(current->evidence, file, line, &span) && span <= foundSpan)
-        return m_nodeModel->nodeIndex(current->id);
-    return found;
+    const QModelIndex innermost = m_nodeModel->indexAt(file, line);
+    int narrowest = 0;
+    if (!innermost.isValid() ||
+        !coversLine(m_nodeModel->evidence(innermost), file, line, &narrowest))
+        return {};
+    QList<std::pair<QString, QModelIndex>> users; // by "package/Class"
+    for (int p = 0; p < m_nodeModel->rowCount(); ++p) {
+        const QModelIndex package = m_nodeModel->index(p, 0);
+        for (int n = 0; n < m_nodeModel->rowCount(package); ++n) {
+            const AtomicNode *node = m_nodeModel->node(m_nodeModel->index(n, 0, package));
+            if (!node)
+                continue;
+            QModelIndex use;
+            int span = 0;
+            for (const Port &port : node->ports)
+                if (!use.isValid() && coversLine(port.evidence, file, line, &span) &&
+                    span <= narrowest)
+                    use = m_nodeModel->portIndex(node->id, port.id);
+            if (!use.isValid() && coversLine(node->evidence, file, line, &span) &&
+                span <= narrowest)
+                use = m_nodeModel->nodeIndex(node->id);
+            if (use.isValid())
+                users.append({node->packageName + u'/' + node->className, use});
+        }
+    }
+    std::sort(users.begin(), users.end(),
+              [](const auto &a, const auto &b) { return a.first < b.first; });
+    QModelIndexList indexes;
+    for (const auto &user : users)
+        indexes.append(user.second);
+    return indexes;
+}
+
+void Traceability::offerClassChoice(const QModelIndexList &users)
+{
+    if (m_choice)
+        m_choice->close();
+    auto *menu = new QMenu(m_sourceView);
+    menu->setObjectName(QStringLiteral("classChoiceMenu"));
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    menu->setToolTipsVisible(true);
+    menu->addSection(tr("Used by %n classes", nullptr, int(users.size())));
+    for (const QModelIndex &user : users) {
+        const AtomicNode *node = m_nodeModel->node(user);
+        QAction *go = menu->addAction(node->packageName + u'/' + node->className);
+        go->setToolTip(tr("Go to %1 in the node list").arg(node->className));
+        const QPersistentModelIndex target(user);
+        connect(go, &QAction::triggered, this, [this, target, menu] {
+            menu->close();
+            if (!target.isValid())
+                return;
+            // The source stays on the line the person chose the class from.
+            const QScopedValueRollback guard(m_syncing, true);
+            m_nodePanel->selectSourceIndex(target);
+        });
+    }
+    m_choice = menu;
+    // Under the cursor's line, where the person is looking.
+    QsciScintilla *editor = m_sourceView->editor();
+    const long position = editor->SendScintilla(QsciScintilla::SCI_GETCURRENTPOS);
+    const QPoint at(
+        int(editor->SendScintilla(QsciScintilla::SCI_POINTXFROMPOSITION, 0UL, position)),
+        int(editor->SendScintilla(QsciScintilla::SCI_POINTYFROMPOSITION, 0UL, position) +
+            editor->SendScintilla(QsciScintilla::SCI_TEXTHEIGHT, 0UL)));
+    menu->popup(editor->viewport()->mapToGlobal(at));
 }
 
 } // namespace rosarch

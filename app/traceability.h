@@ -4,6 +4,9 @@
 
 #include <QModelIndex>
 #include <QObject>
+#include <QPointer>
+
+class QMenu;
 
 namespace rosarch {
 
@@ -50,9 +53,12 @@ private:
     void onNodeSelected(const QModelIndex &sourceIndex);
     void onLaunchItemSelected(const QModelIndex &sourceIndex);
     void onSourceLineChanged(const QString &file, int line);
-    /// `found` (the innermost element of file:line), or the same line's element of the class
-    /// current in the atomic tree when that is as narrow: a helper shared by several classes.
-    QModelIndex preferCurrentClass(const QModelIndex &found, const QString &file, int line) const;
+    /// The innermost element of file:line in each class that has one as narrow as any other
+    /// class's (several for a helper's line that makes a port of each class), sorted by
+    /// "package/Class".
+    QModelIndexList usersOfLine(const QString &file, int line) const;
+    /// A menu at the source's cursor naming the classes of `users`; the one picked is selected.
+    void offerClassChoice(const QModelIndexList &users);
     /// Selects the class of a node instance in the atomic tree without moving the source.
     void followClass(const QModelIndex &launchIndex);
 
@@ -63,6 +69,7 @@ private:
     SourceView *m_sourceView;
     bool m_syncing = false;   ///< a view follows another; do not echo back
     bool m_selecting = false; ///< selectNode() chose the row, not the user
+    QPointer<QMenu> m_choice; ///< the open choice of a class for a shared line
 };
 
 } // namespace rosarch
