@@ -1,6 +1,7 @@
 #include "cache/analysiscache.h"
 #include "analysisfingerprint.h"
 #include "cache/sha1.h"
+#include "core/stagecontrol.h"
 #include "core/threadpriority.h"
 
 #include <QCoreApplication>
@@ -142,6 +143,15 @@ AnalysisCache &AnalysisCache::shared()
 {
     static AnalysisCache cache(defaultRoot(), defaultMaxBytes());
     return cache;
+}
+
+AnalysisCache &AnalysisCache::of(const StageControl &control)
+{
+    if (auto *given = dynamic_cast<AnalysisCache *>(control.cache))
+        return *given;
+    // Off: a stage given no cache looks nothing up and stores nothing, whoever calls it.
+    static AnalysisCache off{QString()};
+    return off;
 }
 
 QString AnalysisCache::defaultRoot()

@@ -2,6 +2,7 @@
 
 #include "cache/filedigests.h"
 #include "core/diagnostic.h"
+#include "core/stagecache.h"
 
 #include <QByteArray>
 #include <QByteArrayView>
@@ -22,6 +23,8 @@ class QFile;
 
 namespace rosarch {
 
+struct StageControl;
+
 /// Analysis results on disk, keyed by a hash of everything a result depends on (see key()).
 /// Lives in the user's cache folder (`<cache>/rosarch/analysis/<version>-f<format>/`) as pack
 /// files: the entries a run stores are written at its end (flush()) as one pack, a temporary
@@ -35,7 +38,8 @@ namespace rosarch {
 /// - it also keeps the file digests memo (digests()), so that unchanged files need no reading.
 /// Thread-safe: the analyzers load and store from their worker threads; two processes may use
 /// one folder at once (each writes its own packs, under unique names).
-class AnalysisCache
+/// The stages are given it in StageControl::cache and take it from there with of().
+class AnalysisCache : public StageCache
 {
 public:
     /// Bump when the serialised form of any cached result changes.
@@ -58,13 +62,16 @@ public:
     /// `racyWindowNs` is its file digests' (FileDigests); tests pass 0.
     explicit AnalysisCache(const QString &root, qint64 maxBytes = kDefaultMaxBytes,
                            qint64 racyWindowNs = FileDigests::kDefaultRacyWindowNs);
-    ~AnalysisCache();
+    ~AnalysisCache() override;
     AnalysisCache(const AnalysisCache &) = delete;
     AnalysisCache &operator=(const AnalysisCache &) = delete;
 
     /// The cache of this process: off with ROSARCH_NO_CACHE=1, else in $ROSARCH_CACHE_DIR,
     /// else in `<GenericCacheLocation>/rosarch`; bounded by $ROSARCH_CACHE_MAX_MB.
     static AnalysisCache &shared();
+    /// The cache `control` gives a stage; when it gives none, one that is off (nothing is
+    /// looked up or stored).
+    static AnalysisCache &of(const StageControl &control);
     /// The root shared() uses ("" when the cache is off).
     static QString defaultRoot();
     /// The size bound shared() uses: $ROSARCH_CACHE_MAX_MB megabytes, else kDefaultMaxBytes.

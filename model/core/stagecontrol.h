@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/diagnostic.h"
+#include "core/stagecache.h"
 
 #include <QHash>
 #include <QList>
@@ -9,8 +10,6 @@
 #include <functional>
 
 namespace rosarch {
-
-class AnalysisCache;
 
 /// Lets a caller watch and cancel a stage without the stage knowing about threads or UI.
 struct StageControl
@@ -29,9 +28,9 @@ struct StageControl
     std::function<void(int stage, int done, int total, const QString &what)> stageProgressed;
     /// Stage `stage` finished after `ms` milliseconds.
     std::function<void(int stage, qint64 ms)> stageTimed;
-    /// The per-file analysis cache to use; null = AnalysisCache::shared() (off with
-    /// ROSARCH_NO_CACHE=1).
-    AnalysisCache *cache = nullptr;
+    /// Where the stages keep their results for later runs; null: nowhere, every stage computes
+    /// everything. The pipeline's entry points give the stages the process's cache when null.
+    StageCache *cache = nullptr;
 
     bool isCanceled() const { return canceled && canceled(); }
     void report(int done, int total, const QString &what) const

@@ -132,7 +132,7 @@ LaunchDependencies analyse(const Workspace &workspace, const AtomicNodeList &nod
         out.canceled = true;
         return out;
     }
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     if (const std::optional<Diagnostic> problem = cache.takeProblem())
         out.diagnostics.append(*problem);
     out.launchFiles = index.files();
@@ -391,7 +391,7 @@ LaunchDependencies LaunchAnalyzer::run(const Workspace &workspace, const AtomicN
                                        const LaunchOptions &options, const StageControl &control,
                                        LaunchReadAhead *readAhead, QByteArray *resultKey)
 {
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     // See NodeAnalyzer::run; a read-ahead began the run of the "launch" entries already.
     if (readAhead && readAhead->reading())
         cache.startRun({QStringLiteral("stage2")});

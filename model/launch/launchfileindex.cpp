@@ -64,7 +64,7 @@ LaunchFileIndex::LaunchFileIndex(const Workspace &ws, const StageControl &contro
           ws,
           [&] {
               const SourceReader reader(ws.root);
-              AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+              AnalysisCache &cache = AnalysisCache::of(control);
               return QtConcurrent::blockingMapped<QList<LaunchFileRead>>(
                   candidates(ws),
                   std::function<LaunchFileRead(const SourceFile *)>(

@@ -13,7 +13,7 @@ LaunchReadAhead::LaunchReadAhead(const Workspace &workspace, const StageControl 
     : m_workspace(workspace), m_control(control), m_files(LaunchFileIndex::candidates(workspace)),
       m_reads(size_t(m_files.size()))
 {
-    AnalysisCache &cache = m_control.cache ? *m_control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(m_control);
     // A cache with entries may answer stage 2 by its memo: reading ahead would be work thrown
     // away, and what it decoded would depend on how far it got.
     if (QThreadPool::globalInstance()->maxThreadCount() < 2 ||
@@ -36,7 +36,7 @@ LaunchReadAhead::~LaunchReadAhead()
 void LaunchReadAhead::readSome()
 {
     const SourceReader reader(m_workspace.root);
-    AnalysisCache &cache = m_control.cache ? *m_control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(m_control);
     for (;;) {
         const qsizetype i = m_next++;
         if (i >= m_files.size() || m_stop || m_control.isCanceled())

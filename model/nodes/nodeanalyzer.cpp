@@ -369,7 +369,7 @@ QByteArray memoKey(const Workspace &workspace, const StageControl &control, Anal
 AtomicNodeList NodeAnalyzer::run(const Workspace &workspace, const StageControl &control,
                                  const std::function<void()> &analysing, QByteArray *resultKey)
 {
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     // What this process decoded in the last run of stage 1 stays for this one (the long-lived
     // worker's next run); what that run did not use is dropped.
     cache.startRun({QStringLiteral("stage1"), QStringLiteral("cppmacros"),
@@ -401,7 +401,7 @@ void NodeAnalyzer::warmUp(const Workspace &workspace, const StageControl &contro
     // The analysis without the stage's memo: what it loads stays in memory for the next run
     // (no startRun(), which would drop what the last run used). A file changed since that run
     // is analysed and stored as any run would.
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     if (cache.isEnabled() && !control.isCanceled())
         analyse(workspace, control);
 }

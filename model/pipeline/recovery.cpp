@@ -63,10 +63,25 @@ Architecture composeOrReuse(const AtomicNodeList &nodes, const LaunchDependencie
     return composeArchitecture(nodes, launch, control);
 }
 
+namespace {
+
+/// `control` with the cache the stages keep their results in: the one it names, else this
+/// process's. The entry points choose it, so that the stages use only the cache they are given.
+StageControl withCache(const StageControl &control)
+{
+    StageControl c = control;
+    if (!c.cache)
+        c.cache = &AnalysisCache::shared();
+    return c;
+}
+
+} // namespace
+
 Recovery recoverLaunch(const QString &root, const AtomicNodeList &nodes,
-                       const LaunchOptions &options, const StageControl &control,
+                       const LaunchOptions &options, const StageControl &given,
                        const Recovery *previous, const LaunchStage &launchStage)
 {
+    const StageControl control = withCache(given);
     Recovery r;
     QElapsedTimer clock;
     clock.start();
@@ -122,7 +137,7 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
         canceled.canceled = true;
         return canceled;
     }
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     // Only in a run without an earlier result: one with it (a long-lived worker's) reuses
     // stage 3 from memory. Its lookups could wait for the pack its last run is writing, and
     // a store would cost an edit run an encoding (nav2's is ~8 MB) and the memory for it,
@@ -148,9 +163,10 @@ Architecture composeWithMemo(const Recovery &r, const QByteArray &key, const Sta
 } // namespace
 
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
-                          const StageControl &control, const Recovery *previous,
+                          const StageControl &given, const Recovery *previous,
                           const StageDone &stageDone)
 {
+    const StageControl control = withCache(given);
     Recovery r;
     QElapsedTimer clock;
     clock.start();
@@ -159,7 +175,7 @@ Recovery recoverWorkspace(const QString &root, const LaunchOptions &options,
             control.stageTimed(stage, clock.restart());
     };
     // The cache's packs are written once the run is over, while the caller goes on with it.
-    const DeferredCacheWrite deferred(control.cache ? *control.cache : AnalysisCache::shared());
+    const DeferredCacheWrite deferred(AnalysisCache::of(control));
     const StageControl stage1 = control.forStage(1);
     // Stages 1 and 2 both read the Python launch files: parsed once, by whichever comes first.
     std::optional<ParseHandoff::Run> handoff;

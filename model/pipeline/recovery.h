@@ -45,7 +45,9 @@ using StageDone = std::function<void(int stage, const Recovery &sofar)>;
 
 /// Runs stages 1, 2 and 3 on `root` (one scan, shared). With `previous` (an earlier complete
 /// recovery), stage 3 is not run again when its inputs, stages 1 and 2, equal the ones
-/// `previous` was composed from but for source locations: see composeOrReuse().
+/// `previous` was composed from but for source locations: see composeOrReuse(). The stages
+/// keep their results in the cache `control` names, else in the process's
+/// (AnalysisCache::shared()).
 Recovery recoverWorkspace(const QString &root, const LaunchOptions &options = {},
                           const StageControl &control = {}, const Recovery *previous = nullptr,
                           const StageDone &stageDone = {});
@@ -57,7 +59,7 @@ using LaunchStage = std::function<LaunchDependencies(const QString &root, const 
 /// Runs stages 2 and 3 on `root` against the stage 1 result `nodes`, as after an edit that
 /// leaves stage 1's result as it was: the Recovery holds their results (its `nodes` stay
 /// empty). Stage 3 is composeOrReuse() with `previous`; `launchStage` stands in for
-/// analyzeLaunchFiles() when given.
+/// analyzeLaunchFiles() when given. The cache is chosen as by recoverWorkspace().
 Recovery recoverLaunch(const QString &root, const AtomicNodeList &nodes,
                        const LaunchOptions &options = {}, const StageControl &control = {},
                        const Recovery *previous = nullptr, const LaunchStage &launchStage = {});

@@ -515,7 +515,7 @@ Workspace WorkspaceScanner::scan(const QString &root, const StageControl &contro
               [](const SourceFile &a, const SourceFile &b) { return a.path < b.path; });
 
     // In a long-lived process, the previous scan's packages when nothing they came from changed.
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     const bool memo = cache.isEnabled() && !control.isCanceled();
     const QString kind = QStringLiteral("scan");
     const QByteArray key("last");

@@ -254,6 +254,7 @@ void testStageFault(int stage, ReplyAhead *ahead)
 Recovery run(const StageRequest &request, const Recovery *composed, ReplyAhead *ahead)
 {
     StageControl control;
+    control.cache = &AnalysisCache::shared();
     control.skipped = request.skipped;
     control.progressed = [](int done, int total, const QString &what) {
         if (progressDue(0, done, total))
@@ -307,6 +308,7 @@ public:
             // of the cores.
             lowerThisThreadPriority(BackgroundPriority::Idle);
             StageControl control; // no progress, no file work: nobody is waiting for it
+            control.cache = &AnalysisCache::shared(); // what the next run looks up
             control.canceled = [this] { return m_stop.load(); };
             control.skipped = skipped;
             const Workspace ws = WorkspaceScanner::scan(root, control);

@@ -118,7 +118,7 @@ void CppNodeAnalyzer::prepare(const StageControl &control)
         if (control.isCanceled()) // before the index, which reads every package's CMakeLists
             return nullptr;
         const SourceReader reader(m_workspace.root); // the index reads only while it is built
-        AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+        AnalysisCache &cache = AnalysisCache::of(control);
         return macroIndexOf(m_workspace, reader, control, cache);
     });
 }
@@ -138,7 +138,7 @@ LanguageAnalysis CppNodeAnalyzer::analyze(const StageControl &control) const
     // Before any file is parsed: the macros the packages and the workspace headers define, so
     // that conditional compilation is decided as the build decides it (prepare() may have
     // started on it already).
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     const std::shared_ptr<const CppMacroIndex> index =
         m_prepared.isValid() ? m_prepared.result()
                              : std::shared_ptr<const CppMacroIndex>(

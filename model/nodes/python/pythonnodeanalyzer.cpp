@@ -70,7 +70,7 @@ LanguageAnalysis PythonNodeAnalyzer::analyze(const StageControl &control) const
 
     // Each file on its own, in parallel (largest first); the results keep the files' order.
     const SourceReader reader(m_workspace.root);
-    AnalysisCache &cache = control.cache ? *control.cache : AnalysisCache::shared();
+    AnalysisCache &cache = AnalysisCache::of(control);
     const int total = int(files.size());
     const auto moduleOf = [&](const SourceFile *file) {
         const RosPackage *package = m_workspace.package(file->package);

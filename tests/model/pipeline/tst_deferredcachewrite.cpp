@@ -2,7 +2,8 @@
 // them to a thread of its own, whose pack is complete once written (or once the process has
 // ended), so that the next run is warm; the result is the same as without the cache; a canceled
 // run and a caller's own cache are handled as before; the worker's deferral is left alone, and
-// its pack has stage 2's memo, encoded on a pool thread (AnalysisCache::finishStores).
+// its pack has stage 2's memo, encoded on a pool thread (AnalysisCache::finishStores); a stage
+// called on its own without a cache does not use the process's.
 #include "cache/analysiscache.h"
 #include "nodes/cpp/cppnodeanalyzer.h"
 #include "pipeline/deferredcachewrite.h"
@@ -187,6 +188,29 @@ private Q_SLOTS:
         QVERIFY(again.statistics().hits > 0);
         QCOMPARE(again.statistics().misses, 0);
         QCOMPARE(again.statistics().stores, 0);
+    }
+
+    void aStageGivenNoCacheLeavesTheProcesssCacheAlone()
+    {
+        // Only the pipeline's entry points give the stages the process's cache: a stage called
+        // on its own without one neither looks anything up in it nor stores anything there.
+        AnalysisCache::finishStores();
+        DeferredCacheWrite::waitForWrites();
+        AnalysisCache &shared = AnalysisCache::shared();
+        QVERIFY(shared.isEnabled());
+        const AnalysisCache::Statistics before = shared.statistics();
+        const Workspace ws =
+            WorkspaceScanner::scan(test::dataDir(QStringLiteral("cpp_helpers/ws")));
+        const LanguageAnalysis analysis = CppNodeAnalyzer(ws).analyze();
+        QVERIFY(!analysis.nodes.isEmpty());
+        const AnalysisCache::Statistics after = shared.statistics();
+        QCOMPARE(after.hits, before.hits);
+        QCOMPARE(after.misses, before.misses);
+        QCOMPARE(after.stores, before.stores);
+        QVERIFY(!AnalysisCache::of(StageControl()).isEnabled());
+        StageControl control;
+        control.cache = &shared;
+        QCOMPARE(&AnalysisCache::of(control), &shared);
     }
 
     void aHeadlessRunLeavesACompleteCacheWhenItExits()
