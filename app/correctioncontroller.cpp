@@ -46,7 +46,7 @@ CorrectionController::CorrectionController(Document *document, AtomicNodePanel *
             m_current = {};
         refreshInspector();
     });
-    connect(document, &Document::keysMade, this, [this] {
+    connect(document->session(), &ProjectSession::keysMade, this, [this] {
         if (m_current.kind != Kind::None)
             refreshInspector(); // its key, shown as being worked out until now
     });
@@ -89,12 +89,12 @@ CorrectionController::CorrectionController(Document *document, AtomicNodePanel *
             &CorrectionController::showCorrection);
     connect(corrections, &CorrectionPanel::removeRequested, this, [this](const QStringList &ids) {
         if (ids.size() == 1) {
-            m_document->removeCorrection(ids.first());
+            m_document->session()->removeCorrection(ids.first());
             return;
         }
         m_document->undoStack()->beginMacro(tr("Remove %1 corrections").arg(ids.size()));
         for (const QString &id : ids)
-            m_document->removeCorrection(id);
+            m_document->session()->removeCorrection(id);
         m_document->undoStack()->endMacro();
     });
     connect(corrections, &CorrectionPanel::retargetRequested, this,
@@ -120,13 +120,13 @@ QString CorrectionController::keyOf(const QString &id)
     if (StableKeys::isChannelKey(id))
         return id;
     if (index().isEmpty()) // no corrections: the model as recovered is the corrected one
-        return m_document->keyOf(id);
+        return m_document->session()->keyOf(id);
     return index().keyOf(id);
 }
 
 bool CorrectionController::keysAtHand(const QString &id)
 {
-    return StableKeys::isChannelKey(id) || !index().isEmpty() || m_document->keysReady();
+    return StableKeys::isChannelKey(id) || !index().isEmpty() || m_document->session()->keysReady();
 }
 
 bool CorrectionController::ask(CorrectionDialog &dialog)
@@ -140,7 +140,7 @@ bool CorrectionController::push(Correction c)
 {
     if (c.target.isEmpty())
         return false;
-    const QString id = m_document->addCorrection(c);
+    const QString id = m_document->session()->addCorrection(c);
     if (id.isEmpty())
         return false;
     Q_EMIT statusMessage(tr("%1: %2 (Ctrl+Z undoes it)")
@@ -471,7 +471,7 @@ void CorrectionController::addMenuActions(QMenu *menu, const Element &element)
 
 void CorrectionController::showCorrection(const QString &id)
 {
-    const Correction *c = m_document->correction(id);
+    const Correction *c = m_document->session()->correction(id);
     if (!c)
         return;
     const QString family = StableKeys::family(c->target);

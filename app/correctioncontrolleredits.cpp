@@ -75,7 +75,7 @@ bool CorrectionController::rename(const Element &e)
     case Kind::Channel: {
         c.target = e.id;
         // a renamed one is renamed again from where it came from
-        for (const Correction &earlier : m_document->corrections())
+        for (const Correction &earlier : m_document->session()->corrections())
             if (earlier.kind == Correction::Kind::Rename &&
                 StableKeys::family(earlier.target) == StableKeys::family(e.id) &&
                 StableKeys::family(e.id) + u':' + earlier.newValue == e.id)
@@ -288,13 +288,13 @@ bool CorrectionController::toggleReviewed(const Element &e)
     if (key.isEmpty())
         return false;
     QStringList marks;
-    for (const Correction &c : m_document->corrections())
+    for (const Correction &c : m_document->session()->corrections())
         if (c.kind == Correction::Kind::Review && c.target == key)
             marks.append(c.id);
     if (!marks.isEmpty()) { // reviewed: the mark goes
         m_document->undoStack()->beginMacro(tr("Unmark %1 reviewed").arg(nameOf(e)));
         for (const QString &id : std::as_const(marks))
-            m_document->removeCorrection(id);
+            m_document->session()->removeCorrection(id);
         m_document->undoStack()->endMacro();
         return true;
     }
@@ -336,12 +336,12 @@ bool CorrectionController::group(const QStringList &instanceIds, const QString &
 bool CorrectionController::restore(const Element &e)
 {
     const QString id = index().removedBy(e.id);
-    return !id.isEmpty() && m_document->removeCorrection(id);
+    return !id.isEmpty() && m_document->session()->removeCorrection(id);
 }
 
 bool CorrectionController::retarget(const QString &correctionId)
 {
-    const Correction *old = m_document->correction(correctionId);
+    const Correction *old = m_document->session()->correction(correctionId);
     if (!old)
         return false;
     const QString family = StableKeys::family(old->target);
@@ -397,8 +397,8 @@ bool CorrectionController::retarget(const QString &correctionId)
     c.target = dialog.choice();
     c.reason = dialog.reason();
     m_document->undoStack()->beginMacro(tr("Re-target %1").arg(c.id));
-    m_document->removeCorrection(c.id);
-    const bool ok = !m_document->addCorrection(c).isEmpty();
+    m_document->session()->removeCorrection(c.id);
+    const bool ok = !m_document->session()->addCorrection(c).isEmpty();
     m_document->undoStack()->endMacro();
     return ok;
 }

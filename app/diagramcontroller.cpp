@@ -120,7 +120,7 @@ void DiagramController::showArchitecture()
         return m_document->accepted().architecture;
     }();
     // A renamed topic, service or action is a person's correction too: drawn as such.
-    for (const Correction &c : m_document->corrections()) {
+    for (const Correction &c : m_document->session()->corrections()) {
         if (c.kind != Correction::Kind::Rename)
             continue;
         const QString family = StableKeys::family(c.target);
@@ -137,7 +137,7 @@ void DiagramController::showArchitecture()
     }();
     // Where to start when the composite shown is gone: the project's launch root, else the
     // root a person chose here before, else the one most likely wanted (or ask).
-    QString remembered = m_document->launchOptions().rootFile;
+    QString remembered = m_document->session()->launchOptions().rootFile;
     if (remembered.isEmpty() && !m_document->workspaceRoot().isEmpty())
         remembered = AppSettings().diagramRoot(m_document->workspaceRoot());
     const RootChoice start = RootChoice::choose(roots, remembered);

@@ -134,8 +134,10 @@ MainWindow::MainWindow(QWidget *parent)
             filesMayHaveChanged();
     });
 
-    connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
-    connect(m_document, &Document::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(m_document->session(), &ProjectSession::modifiedChanged, this,
+            &QWidget::setWindowModified);
+    connect(m_document->session(), &ProjectSession::projectPathChanged, this,
+            &MainWindow::updateTitle);
     connect(m_projects, &ProjectController::workspaceRequested, this,
             &MainWindow::openWorkspaceNow);
     connect(m_projects, &ProjectController::launchOptionsReplaced, this,
@@ -239,7 +241,7 @@ void MainWindow::createPanels()
     // A pending suggestion is previewed where it would land: a description in the node
     // list, a grouping in the composed diagram. The model changes only on Accept.
     const auto preview = [this](const QString &id) {
-        const Suggestion *s = m_document->suggestion(id);
+        const Suggestion *s = m_document->session()->suggestion(id);
         const bool pending = s && s->status == Suggestion::Status::Pending;
         if (pending && s->kind == Suggestion::Kind::SubsystemGrouping)
             m_diagrams->previewGrouping(s->value, s->memberIds, s->targetId);
@@ -376,7 +378,7 @@ void MainWindow::saveSession()
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSession();
-    if (!m_closeConfirmed && m_document->isModified()) {
+    if (!m_closeConfirmed && m_document->session()->isModified()) {
         // Save / Discard / Cancel without blocking: the window closes once it is answered.
         event->ignore();
         m_projects->maybeSave([this] {
@@ -462,16 +464,16 @@ void MainWindow::updateTitle()
         setWindowTitle(tr("rosarch[*]"));
         return;
     }
-    const QString file = m_document->decisionsPath();
+    const QString file = m_document->session()->projectPath();
     const QString ws = QFileInfo(root).fileName();
     // The project is named when it is not the workspace's own (or the one kept for it).
     QString title = ws;
-    if (m_document->isUntitled())
+    if (m_document->session()->isUntitled())
         title = tr("%1 (new project)").arg(ws);
     else if (file != ProjectFile::defaultPath(root) && file != ProjectFile::appDataPath(root))
         title = tr("%1 (%2)").arg(ws, QFileInfo(file).fileName());
     setWindowTitle(tr("%1[*] — rosarch").arg(title));
-    setWindowModified(m_document->isModified());
+    setWindowModified(m_document->session()->isModified());
 }
 
 void MainWindow::runAllStages()
@@ -492,7 +494,7 @@ void MainWindow::runLaunchStage()
 
 void MainWindow::acceptExternals(const QStringList &declarations)
 {
-    LaunchOptions options = m_document->launchOptions();
+    LaunchOptions options = m_document->session()->launchOptions();
     QStringList names;
     for (const QString &d : declarations) {
         const qsizetype space = d.indexOf(QLatin1Char(' '));
@@ -523,8 +525,8 @@ void MainWindow::showLaunchArgumentsDialog()
     auto *dialog = new LaunchArgumentsDialog(this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->setLaunchDependencies(m_document->launchDependencies(),
-                                  m_document->launchOptions().rootFile);
-    dialog->setOptions(m_document->launchOptions());
+                                  m_document->session()->launchOptions().rootFile);
+    dialog->setOptions(m_document->session()->launchOptions());
     connect(dialog, &QDialog::accepted, this,
             [this, dialog] { applyLaunchOptions(dialog->options()); });
     dialog->open();

@@ -230,7 +230,7 @@ void MainWindow::createMenus()
                             tr("Export failed"),
                             tr("The architecture site could not be written:\n%1").arg(message));
                 });
-        job->start(m_document->accepted(), m_document->project(), options);
+        job->start(m_document->accepted(), m_document->session()->project(), options);
     });
     file->addAction(m_diagrams->exportSvgAction());
     file->addAction(m_diagrams->exportPngAction());

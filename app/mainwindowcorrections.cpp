@@ -60,7 +60,7 @@ void MainWindow::createCorrectionController()
     connect(m_document, &Document::changed, this, [this](const DocumentChange &change) {
         // a new correction is listed where a person can see and revert it; the views stay
         // where the person is (showing its element would move them)
-        if (change.has(DocumentChange::Corrections) && m_document->correction(change.id))
+        if (change.has(DocumentChange::Corrections) && m_document->session()->correction(change.id))
             m_correctionPanel->listCorrection(change.id);
     });
 }

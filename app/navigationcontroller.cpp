@@ -407,7 +407,8 @@ QString NavigationController::keyOf(const QString &id) const
 {
     if (id.isEmpty())
         return {};
-    const QString key = m_document->keysReady() ? m_document->keyOf(id) : QString();
+    const QString key =
+        m_document->session()->keysReady() ? m_document->session()->keyOf(id) : QString();
     return key.isEmpty() ? QStringLiteral("id:") + id : key;
 }
 
@@ -415,7 +416,8 @@ QString NavigationController::idOf(const QString &key) const
 {
     if (key.startsWith(QLatin1String("id:")))
         return key.mid(3);
-    return m_document->keysReady() ? m_document->recoveredKeys().idOf(key) : QString();
+    return m_document->session()->keysReady() ? m_document->session()->recoveredKeys().idOf(key)
+                                              : QString();
 }
 
 } // namespace rosarch

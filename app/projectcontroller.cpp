@@ -45,7 +45,7 @@ ProjectController::ProjectController(Document *document, LogView *log, QWidget *
     m_openAction->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
     m_openAction->setStatusTip(tr("Open a rosarch project file and the workspace it belongs to"));
     connect(m_openAction, &QAction::triggered, this, [this] {
-        const QString current = m_document->decisionsPath();
+        const QString current = m_document->session()->projectPath();
         const QString start = !current.isEmpty()                      ? QFileInfo(current).path()
                               : m_document->workspaceRoot().isEmpty() ? QDir::homePath()
                                                                       : m_document->workspaceRoot();
@@ -70,19 +70,21 @@ ProjectController::ProjectController(Document *document, LogView *log, QWidget *
     };
     connect(m_document, &Document::changed, this, update);
     update();
-    connect(m_document, &Document::projectLoadFailed, this, [this](const QString &message) {
-        m_log->appendLog(tr("The project file could not be read: %1").arg(message));
-        showError(tr("Cannot read the project"),
-                  tr("%1\n\nrosarch opened the workspace with an empty project. Saving writes a "
-                     "new project file; the unreadable one stays where it was kept.")
-                      .arg(message));
-    });
+    connect(m_document->session(), &ProjectSession::loadFailed, this,
+            [this](const QString &message) {
+                m_log->appendLog(tr("The project file could not be read: %1").arg(message));
+                showError(
+                    tr("Cannot read the project"),
+                    tr("%1\n\nrosarch opened the workspace with an empty project. Saving writes a "
+                       "new project file; the unreadable one stays where it was kept.")
+                        .arg(message));
+            });
 }
 
 QString ProjectController::defaultTarget() const
 {
     const QString root = m_document->workspaceRoot();
-    const QString current = m_document->decisionsPath();
+    const QString current = m_document->session()->projectPath();
     // A project kept under the application data moves into the workspace on its first save.
     if (current.isEmpty() || current == ProjectFile::appDataPath(root))
         return ProjectFile::defaultPath(root);
@@ -91,13 +93,13 @@ QString ProjectController::defaultTarget() const
 
 void ProjectController::maybeSave(const std::function<void()> &proceed)
 {
-    if (!m_document->isModified()) {
+    if (!m_document->session()->isModified()) {
         proceed();
         return;
     }
     // Where Save writes, not where the project is kept now: a project kept under the
     // application data moves into the workspace on its first save.
-    const QString name = m_document->isUntitled()
+    const QString name = m_document->session()->isUntitled()
                              ? tr("the new project")
                              : QStringLiteral("“%1”").arg(native(defaultTarget()));
     auto *box =
@@ -116,7 +118,7 @@ void ProjectController::maybeSave(const std::function<void()> &proceed)
             if (save())
                 proceed();
         } else if (answer == QMessageBox::Discard) {
-            m_document->discardChanges();
+            m_document->session()->discardChanges();
             proceed();
         }
     });
@@ -125,10 +127,10 @@ void ProjectController::maybeSave(const std::function<void()> &proceed)
 
 void ProjectController::projectOpened()
 {
-    const QString file = m_document->decisionsPath();
+    const QString file = m_document->session()->projectPath();
     if (QFileInfo::exists(file) && file != ProjectFile::appDataPath(m_document->workspaceRoot()))
         AppSettings().addRecentProject(file);
-    const QString side = m_document->autosaveFile();
+    const QString side = m_document->session()->autosaveFile();
     if (side.isEmpty() || !QFileInfo::exists(side))
         return;
     const QDateTime when = QFileInfo(side).lastModified();
@@ -141,7 +143,7 @@ void ProjectController::projectOpened()
         QMessageBox::Yes | QMessageBox::Discard, m_window);
     box->setObjectName(QStringLiteral("recoverAutosaveBox"));
     box->button(QMessageBox::Yes)->setText(tr("&Recover"));
-    const QString saved = m_document->decisionsPath();
+    const QString saved = m_document->session()->projectPath();
     box->setInformativeText(
         QFileInfo::exists(saved)
             ? tr("Recover them (the project shows as modified until you save it), or discard "
@@ -154,13 +156,13 @@ void ProjectController::projectOpened()
     box->setAttribute(Qt::WA_DeleteOnClose);
     connect(box, &QMessageBox::finished, this, [this, box, side] {
         if (box->standardButton(box->clickedButton()) != QMessageBox::Yes) {
-            m_document->discardAutosave();
+            m_document->session()->discardAutosave();
             m_log->appendLog(tr("Discarded the autosaved changes %1").arg(native(side)));
             return;
         }
-        const LaunchOptions before = m_document->launchOptions();
+        const LaunchOptions before = m_document->session()->launchOptions();
         QString error;
-        if (!m_document->recoverAutosave(&error)) {
+        if (!m_document->session()->recoverAutosave(&error)) {
             m_log->appendLog(tr("The autosaved changes could not be recovered: %1").arg(error));
             showError(tr("Cannot recover the changes"),
                       tr("%1\n\nThe autosave file was left where it is.").arg(error));
@@ -168,7 +170,7 @@ void ProjectController::projectOpened()
         }
         m_log->appendLog(tr("Recovered the unsaved changes from %1").arg(native(side)));
         Q_EMIT statusMessage(tr("Recovered the unsaved changes"), 5000);
-        if (m_document->launchOptions() != before)
+        if (m_document->session()->launchOptions() != before)
             Q_EMIT launchOptionsReplaced();
     });
     box->open();
@@ -178,7 +180,7 @@ bool ProjectController::save()
 {
     if (m_document->workspaceRoot().isEmpty())
         return false;
-    if (m_document->isUntitled())
+    if (m_document->session()->isUntitled())
         return saveAs();
     const QString target = defaultTarget();
     if (saveTo(target))
@@ -198,8 +200,8 @@ bool ProjectController::saveAs()
 bool ProjectController::saveTo(const QString &file)
 {
     const QString absolute = QFileInfo(file).absoluteFilePath();
-    if (!m_document->saveProjectAs(absolute)) {
-        // decisionsSaveFailed has logged why
+    if (!m_document->session()->saveAs(absolute)) {
+        // saveFailed has logged why
         Q_EMIT statusMessage(tr("The project could not be saved to %1").arg(native(absolute)), 0);
         return false;
     }
@@ -239,15 +241,15 @@ bool ProjectController::openProject(const QString &file)
     maybeSave([this, absolute, root] {
         AppSettings().addRecentProject(absolute);
         if (root != m_document->workspaceRoot()) {
-            m_document->setProjectFile(root, absolute); // read when the workspace opens
+            m_document->session()->setProjectFile(root, absolute); // read when the workspace opens
             Q_EMIT workspaceRequested(root);
             return;
         }
-        const LaunchOptions before = m_document->launchOptions();
-        m_document->setProjectFile(root, absolute);
+        const LaunchOptions before = m_document->session()->launchOptions();
+        m_document->session()->setProjectFile(root, absolute);
         m_log->appendLog(tr("Opened the project %1").arg(native(absolute)));
         projectOpened();
-        if (m_document->launchOptions() != before)
+        if (m_document->session()->launchOptions() != before)
             Q_EMIT launchOptionsReplaced();
     });
     return true;
@@ -262,10 +264,10 @@ void ProjectController::newProject()
         return;
     }
     maybeSave([this, root] {
-        const LaunchOptions before = m_document->launchOptions();
-        m_document->setProjectFile(root, {});
+        const LaunchOptions before = m_document->session()->launchOptions();
+        m_document->session()->setProjectFile(root, {});
         m_log->appendLog(tr("Started a new project on %1").arg(native(root)));
-        if (m_document->launchOptions() != before)
+        if (m_document->session()->launchOptions() != before)
             Q_EMIT launchOptionsReplaced();
     });
 }

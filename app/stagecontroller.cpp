@@ -54,8 +54,8 @@ void StageController::setWorkspace(const QString &root)
     m_restoreLaunchId = settings.launchSelection(root);
     // The project's launch options; a project without any starts from those remembered here
     // before projects held them.
-    if (m_document->launchOptions() == LaunchOptions())
-        m_document->adoptLaunchOptions(settings.launchOptions(root));
+    if (m_document->session()->launchOptions() == LaunchOptions())
+        m_document->session()->adoptLaunchOptions(settings.launchOptions(root));
 }
 
 void StageController::runAll()
@@ -66,7 +66,7 @@ void StageController::runAll()
     // What is shown, to tell a re-run that found nothing new (compared off the UI thread).
     const Recovery shown =
         m_document->workspaceRoot() == m_workspace ? m_document->recovered() : Recovery{};
-    m_runner->run(m_workspace, m_document->launchOptions(), shown);
+    m_runner->run(m_workspace, m_document->session()->launchOptions(), shown);
 }
 
 void StageController::runLaunch()
@@ -78,12 +78,13 @@ void StageController::runLaunch()
         return;
     }
     rememberSelection();
-    m_runner->runLaunch(m_workspace, m_document->atomicNodes(), m_document->launchOptions());
+    m_runner->runLaunch(m_workspace, m_document->atomicNodes(),
+                        m_document->session()->launchOptions());
 }
 
 void StageController::applyLaunchOptions(const LaunchOptions &options)
 {
-    m_document->setLaunchOptions(options);
+    m_document->session()->setLaunchOptions(options);
     if (!m_workspace.isEmpty())
         AppSettings().setLaunchOptions(m_workspace, options);
     runLaunch();

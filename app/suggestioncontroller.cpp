@@ -27,10 +27,12 @@ SuggestionController::SuggestionController(Document *document, SuggestionPanel *
     connect(m_panel, &SuggestionPanel::cancelRequested, this, &SuggestionController::cancel);
     connect(m_panel, &SuggestionPanel::settingsRequested, this,
             &SuggestionController::editSettings);
-    connect(m_panel, &SuggestionPanel::acceptRequested, m_document, &Document::acceptSuggestion);
-    connect(m_panel, &SuggestionPanel::rejectRequested, m_document, &Document::rejectSuggestion);
+    connect(m_panel, &SuggestionPanel::acceptRequested, m_document->session(),
+            &ProjectSession::acceptSuggestion);
+    connect(m_panel, &SuggestionPanel::rejectRequested, m_document->session(),
+            &ProjectSession::rejectSuggestion);
     connect(m_panel, &SuggestionPanel::acceptAllRequested, this, [this](Suggestion::Kind kind) {
-        const int n = m_document->acceptAllSuggestions(kind);
+        const int n = m_document->session()->acceptAllSuggestions(kind);
         if (n > 0)
             Q_EMIT logged(tr("Suggestions: accepted %1 (%2) as one step (Undo takes it back)")
                               .arg(n)
@@ -60,9 +62,10 @@ SuggestionController::SuggestionController(Document *document, SuggestionPanel *
             &SuggestionController::onFinished);
     connect(m_runner, &SuggestionRunner::suggestionsCanceled, this,
             &SuggestionController::onCanceled);
-    connect(m_document, &Document::decisionsSaveFailed, this, [this](const QString &message) {
-        Q_EMIT logged(tr("Suggestions: the decisions could not be saved: %1").arg(message));
-    });
+    connect(m_document->session(), &ProjectSession::saveFailed, this,
+            [this](const QString &message) {
+                Q_EMIT logged(tr("Suggestions: the decisions could not be saved: %1").arg(message));
+            });
     updateLlmDescription();
 }
 
@@ -183,9 +186,9 @@ QString SuggestionController::summary(const SuggestionReport &report, int alread
 
 void SuggestionController::onFinished(const SuggestionReport &report)
 {
-    const int decided = m_document->setSuggestions(report);
+    const int decided = m_document->session()->setSuggestions(report);
     m_panel->setRunning(false);
-    const QString line = summary(m_document->suggestionReport(), decided);
+    const QString line = summary(m_document->session()->suggestionReport(), decided);
     Q_EMIT logged(line);
     for (const QString &error : report.errors)
         Q_EMIT logged(tr("Suggestions: the LLM failed: %1 The suggestions from the code are "
@@ -206,11 +209,11 @@ void SuggestionController::onFinished(const SuggestionReport &report)
 
 void SuggestionController::onCanceled(const SuggestionReport &partial)
 {
-    const int decided = m_document->setSuggestions(partial);
+    const int decided = m_document->session()->setSuggestions(partial);
     m_panel->setRunning(false);
     m_panel->setProgressText(tr("Canceled"));
-    Q_EMIT logged(
-        tr("Suggestions canceled; %1").arg(summary(m_document->suggestionReport(), decided)));
+    Q_EMIT logged(tr("Suggestions canceled; %1")
+                      .arg(summary(m_document->session()->suggestionReport(), decided)));
     Q_EMIT statusMessage(tr("Suggestions canceled"), 5000);
     Q_EMIT runningChanged(false);
 }

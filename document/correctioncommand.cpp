@@ -1,5 +1,5 @@
 #include "document/correctioncommand.h"
-#include "document/document.h"
+#include "document/projectsession.h"
 
 #include <QCoreApplication>
 
@@ -37,9 +37,9 @@ QString describe(const Correction &c)
 
 } // namespace
 
-CorrectionCommand::CorrectionCommand(Document *document, Action action, Correction correction,
+CorrectionCommand::CorrectionCommand(ProjectSession *session, Action action, Correction correction,
                                      int index, QUndoCommand *parent)
-    : QUndoCommand(parent), m_document(document), m_action(action),
+    : QUndoCommand(parent), m_session(session), m_action(action),
       m_correction(std::move(correction)), m_index(index)
 {
     setText(action == Action::Add ? describe(m_correction)
@@ -50,17 +50,17 @@ CorrectionCommand::CorrectionCommand(Document *document, Action action, Correcti
 void CorrectionCommand::undo()
 {
     if (m_action == Action::Add)
-        m_document->takeCorrection(m_correction.id);
+        m_session->takeCorrection(m_correction.id);
     else
-        m_document->insertCorrection(m_index, m_correction);
+        m_session->insertCorrection(m_index, m_correction);
 }
 
 void CorrectionCommand::redo()
 {
     if (m_action == Action::Add)
-        m_document->insertCorrection(m_index, m_correction);
+        m_session->insertCorrection(m_index, m_correction);
     else
-        m_document->takeCorrection(m_correction.id);
+        m_session->takeCorrection(m_correction.id);
 }
 
 } // namespace rosarch

@@ -6,7 +6,7 @@
 
 namespace rosarch {
 
-class Document;
+class ProjectSession;
 
 /// Undoable addition or removal of one correction (blueprint §5). Removing a correction
 /// reverts what it changed; undoing the removal puts it back where it was in the list.
@@ -18,13 +18,13 @@ public:
         Add,
         Remove
     };
-    CorrectionCommand(Document *document, Action action, Correction correction, int index,
+    CorrectionCommand(ProjectSession *session, Action action, Correction correction, int index,
                       QUndoCommand *parent = nullptr);
     void undo() override;
     void redo() override;
 
 private:
-    Document *m_document;
+    ProjectSession *m_session;
     Action m_action;
     Correction m_correction;
     int m_index; ///< where it is (or goes) in the project's list

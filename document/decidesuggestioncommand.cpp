@@ -4,10 +4,11 @@
 
 namespace rosarch {
 
-DecideSuggestionCommand::DecideSuggestionCommand(Document *document, const Suggestion &suggestion,
+DecideSuggestionCommand::DecideSuggestionCommand(ProjectSession *session,
+                                                 const Suggestion &suggestion,
                                                  Suggestion::Status status, QUndoCommand *parent)
-    : QUndoCommand(parent), m_document(document), m_before(document->snapshot(suggestion)),
-      m_after(document->decided(suggestion, status))
+    : QUndoCommand(parent), m_session(session), m_before(session->snapshot(suggestion)),
+      m_after(session->decided(suggestion, status))
 {
     setText(status == Suggestion::Status::Accepted
                 ? QCoreApplication::translate("rosarch::Document", "Accept suggestion")
@@ -16,12 +17,12 @@ DecideSuggestionCommand::DecideSuggestionCommand(Document *document, const Sugge
 
 void DecideSuggestionCommand::undo()
 {
-    m_document->restore(m_before);
+    m_session->restore(m_before);
 }
 
 void DecideSuggestionCommand::redo()
 {
-    m_document->restore(m_after);
+    m_session->restore(m_after);
 }
 
 } // namespace rosarch

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/suggestion.h"
-#include "document/document.h"
+#include "document/projectsession.h"
 
 #include <QUndoCommand>
 
@@ -13,15 +13,15 @@ namespace rosarch {
 class DecideSuggestionCommand : public QUndoCommand
 {
 public:
-    DecideSuggestionCommand(Document *document, const Suggestion &suggestion,
+    DecideSuggestionCommand(ProjectSession *session, const Suggestion &suggestion,
                             Suggestion::Status status, QUndoCommand *parent = nullptr);
     void undo() override;
     void redo() override;
 
 private:
-    Document *m_document;
-    Document::DecisionSnapshot m_before;
-    Document::DecisionSnapshot m_after;
+    ProjectSession *m_session;
+    ProjectSession::DecisionSnapshot m_before;
+    ProjectSession::DecisionSnapshot m_after;
 };
 
 } // namespace rosarch

@@ -1,41 +1,32 @@
 #pragma once
 
-#include "accepted/acceptedmodel.h"
-#include "accepted/suggestiondecision.h"
 #include "core/atomicnodelist.h"
 #include "core/launchdependencies.h"
-#include "core/subsystemgroup.h"
 #include "document/documentchange.h"
-#include "launch/launchanalyzer.h"
+#include "document/projectsession.h"
 #include "pipeline/recovery.h"
 #include "project/correctedmodel.h"
-#include "suggestions/suggestionreport.h"
 
-#include <QFuture>
-#include <QFutureWatcher>
 #include <QHash>
-#include <QMap>
 #include <QObject>
-#include <QTimer>
 #include <QUndoStack>
 
-#include <functional>
 #include <optional>
 
 namespace rosarch {
 
-/// The open project: the workspace, the recovered model and the undo stack for every
-/// change a person makes to it. Views read from here; edits go through commands. Every change
-/// is announced by one signal, `changed`, saying what changed. The project file is written when
-/// a person saves; until then the changes are modified state, kept a few seconds after they
-/// happen in the autosave side file (ProjectFile::autosavePath), also before another workspace
-/// replaces them and when the document is destroyed, so a crash loses at most that much.
+class ProjectSession;
+
+/// The open recovery: the model the stages recovered for a workspace, the model as accepted
+/// (with the project's decisions and corrections applied), and the undo stack for every change
+/// a person makes. Views read from here; edits go through commands on the undo stack, made by
+/// the ProjectSession, which keeps the project (decisions, corrections, finding marks, its file).
+/// Every change is announced by one signal, `changed`, saying what changed.
 class Document : public QObject
 {
     Q_OBJECT
 public:
     explicit Document(QObject *parent = nullptr);
-    /// Saves decisions that are not on disk yet.
     ~Document() override;
 
     QString workspaceRoot() const { return m_nodes.workspaceRoot; }
@@ -44,11 +35,13 @@ public:
     const LaunchDependencies &launchDependencies() const { return m_launch; }
     /// Stage 3's result (composites per launch-file instance); empty until stage 3 ran.
     const Architecture &architecture() const { return m_architecture; }
-    /// The root launch file and argument values stage 2 runs with (a person's choice).
-    const LaunchOptions &launchOptions() const { return m_launchOptions; }
     QUndoStack *undoStack() { return &m_undoStack; }
+    /// The project of this recovery: suggestions, decisions, corrections, finding marks, launch
+    /// options and the project file.
+    ProjectSession *session() const { return m_session; }
 
-    /// Replaces the whole model with the result of stages 1 and 2 (clears undo history).
+    /// Replaces the whole model with the result of stages 1 and 2 (clears undo history); the
+    /// project is bound to it again, or read when the workspace is another.
     void setRecovery(Recovery recovery);
     /// The model as the stages recovered it (descriptions as analysis found them): what a
     /// re-run that found nothing new returns.
@@ -58,137 +51,10 @@ public:
     /// Replaces only the results of stages 2 and 3 (a re-run of stage 2); the atomic nodes
     /// and their undo history stay.
     void setLaunchDependencies(LaunchDependencies launch, Architecture architecture = {});
-    /// Stores what the next stage 2 run uses (a change of the project); it does not run
-    /// anything.
-    void setLaunchOptions(const LaunchOptions &options);
-    /// Launch options a project that has none starts from (remembered in the settings before
-    /// projects held them): used like setLaunchOptions, but not a change of the project.
-    void adoptLaunchOptions(const LaunchOptions &options);
 
-    /// Pushes an undoable change of a node's description: a correction (`describe`) kept in
-    /// the project, so re-running the stages keeps it.
-    void setNodeDescription(const QString &nodeId, const QString &description);
-
-    // Suggestions. Decisions are kept per workspace (DecisionStore) and applied
-    // again whenever the model or the suggestions are replaced.
-
-    /// The last suggestion run, each suggestion with its current status.
-    const SuggestionReport &suggestionReport() const { return m_suggestionReport; }
-    const QList<Suggestion> &suggestions() const { return m_suggestionReport.suggestions; }
-    /// The suggestion with `id`, or null.
-    const Suggestion *suggestion(const QString &id) const;
-    /// Replaces the suggestions with a new run's. Suggestions whose subject and proposal were
-    /// decided before get that status; accepted descriptions are applied again. Returns how
-    /// many were already decided.
-    int setSuggestions(SuggestionReport report);
-    /// Pushes an undoable accept; false when there is no such suggestion or it is accepted.
-    bool acceptSuggestion(const QString &id);
-    /// Pushes an undoable reject; false when there is no such suggestion or it is rejected.
-    bool rejectSuggestion(const QString &id);
-    /// Accepts every pending suggestion of `kind` as one undo step; returns how many.
-    int acceptAllSuggestions(Suggestion::Kind kind);
-    /// Every decision of this workspace, by SuggestionDecision::key.
-    const QMap<QString, SuggestionDecision> &decisions() const { return m_decisions; }
-    /// Accepted subsystem groupings whose root and members exist in the current model.
-    QList<SubsystemGroup> acceptedGroupings() const;
-    /// Accepted values of unresolved items that exist in the current model: item id → value.
-    QMap<QString, QString> acceptedNames() const;
-    /// The model as accepted (AcceptedModel::apply of the recovery and the decisions): what the
+    /// The model as accepted (CorrectedModel::apply of the recovery and the project): what the
     /// diagram draws and the exports write. Computed once per change of either.
     const Recovery &accepted() const;
-    /// The project file ("" without a workspace and for a new project never saved): the one
-    /// opened, else the workspace's own rosarch.project.json, else the one kept for it under
-    /// the application data.
-    QString decisionsPath() const;
-    /// The project as it would be saved now: decisions by stable key (those that match
-    /// nothing in this model kept as they were), corrections, launch options.
-    Project project() const;
-    /// Decisions and corrections of the project that match nothing in the current model.
-    const QList<Orphan> &orphans() const;
-    /// True while a change is not in the autosave side file yet (the autosave is pending).
-    bool hasUnsavedDecisions() const { return m_unsaved; }
-    /// Saves the project to its file (decisionsPath()) and removes the autosave side file;
-    /// false when writing failed (then decisionsSaveFailed says why; the changes stay in memory
-    /// and modified) or the project has no file yet (a new project: saveProjectAs).
-    bool saveDecisions();
-    /// Saves the project to `file`, which becomes its file (a `workspace` field says where the
-    /// workspace is when the file is not in it); false as saveDecisions.
-    bool saveProjectAs(const QString &file);
-    /// How long after the first change the autosave writes the side file (default 2 s): later
-    /// changes do not postpone it, so a crash loses at most this much.
-    void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
-    /// Writes the autosave side file now if a change is not in it (removes it when the project
-    /// is back to its saved state); false when it could not be written (decisionsSaveFailed).
-    bool writeAutosave();
-
-    /// True while the project differs from its file: a change since the last save or load that
-    /// undo has not taken back.
-    bool isModified() const;
-    /// True for a new project of a workspace that was never saved (Save asks where).
-    bool isUntitled() const { return m_projectPath.isEmpty() && !workspaceRoot().isEmpty(); }
-    /// The autosave side file of this project ("" without a workspace).
-    QString autosaveFile() const;
-    /// Replaces the project with the autosave side file's, as modified state (what a crash left
-    /// behind); false with `error` when it cannot be read (the side file stays).
-    bool recoverAutosave(QString *error);
-    /// Removes the autosave side file (a person chose not to recover it).
-    void discardAutosave();
-    /// Forgets that the project is modified and removes its autosave side file: a person chose
-    /// to discard the changes (the window closes or another project replaces this one).
-    void discardChanges();
-    /// Makes `file` the project of `workspaceRoot` ("" = a new, empty project never saved); read
-    /// now when that workspace is open (its undo history cleared), else when it opens.
-    void setProjectFile(const QString &workspaceRoot, const QString &file);
-
-    // Corrections (blueprint §5): a person's edits of the model, kept in the project
-    // by stable key and applied by CorrectedModel; accepted() shows them.
-
-    /// The corrections of the project, in the order they were made.
-    const QList<Correction> &corrections() const { return m_project.corrections; }
-    /// The correction with `id`, or null.
-    const Correction *correction(const QString &id) const { return m_project.correction(id); }
-    /// Pushes an undoable correction. Its id, author and time are filled in when empty; returns
-    /// the id, or "" when the target is not an element of the current model (nothing pushed).
-    QString addCorrection(Correction correction);
-    /// Pushes an undoable removal of correction `id`, which reverts what it changed; false when
-    /// there is none.
-    bool removeCorrection(const QString &id);
-    /// Several corrections as one undo step (e.g. a group of edits); returns the ids pushed.
-    QStringList addCorrections(const QList<Correction> &corrections, const QString &text);
-    /// The stable key of an element by the id the views use ("arc_3", "arc_3/p1", "n3", "lf2",
-    /// "lf1/part2", "topic:/scan"); "" when there is no such element in the model as recovered.
-    QString keyOf(const QString &id) const;
-    /// The stable keys of the model as recovered. Made once per model, on a thread of their
-    /// own as soon as the model arrives (a large model's keys take a few hundred ms); waits
-    /// for that when they are not made yet.
-    const StableKeys &recoveredKeys() const;
-    /// True when recoveredKeys() and keyOf() answer without waiting.
-    bool keysReady() const;
-    /// Who makes corrections here: $ROSARCH_AUTHOR, else the login name.
-    static QString author();
-
-    // Findings: diagnostics a person hid or accepted, kept in the project by key.
-
-    /// The marks of the project, sorted by finding key.
-    const QList<FindingMark> &findingMarks() const { return m_project.findings; }
-    /// Pushes one undoable step that gives the findings `keys` the `status` (with `reason`,
-    /// the author and the time); returns how many marks changed.
-    int markFindings(const QStringList &keys, FindingMark::Status status,
-                     const QString &reason = {});
-    /// Pushes one undoable step that removes the marks of `keys` (the findings show again and
-    /// count as new); returns how many marks were removed.
-    int unmarkFindings(const QStringList &keys);
-
-    /// What a decision touches, captured for undo: the stored decision of one subject and
-    /// proposal and, for a node description, the node's description.
-    struct DecisionSnapshot
-    {
-        QString key;
-        std::optional<SuggestionDecision> decision; ///< none = pending
-        QString nodeId;                             ///< "" unless a node description
-        QString description;
-        bool operator==(const DecisionSnapshot &) const = default;
-    };
 
 Q_SIGNALS:
     /// Lists the views show from scratch are about to be replaced (change.isReset()): item
@@ -196,85 +62,26 @@ Q_SIGNALS:
     void aboutToChange(const rosarch::DocumentChange &change);
     /// Something changed; `change` says what.
     void changed(const rosarch::DocumentChange &change);
-    /// The decisions could not be written; `message` says where and why.
-    void decisionsSaveFailed(const QString &message);
-    /// The project file could not be read; `message` says which file, why, and where the
-    /// unreadable file was kept.
-    void projectLoadFailed(const QString &message);
-    /// The project became modified or was saved (or its changes undone or discarded).
-    void modifiedChanged(bool modified);
-    /// The project's file changed (saved under another name, another project opened).
-    void projectPathChanged(const QString &path);
-    /// The keys of the model as recovered were made (keysReady() is true now).
-    void keysMade();
 
 private:
-    friend class DecideSuggestionCommand;
-    friend class CorrectionCommand;
-    friend class FindingMarkCommand;
-    /// Puts `marks` in place of the marks of their keys (a key with no mark: removed).
-    void replaceFindingMarks(const QList<std::pair<QString, std::optional<FindingMark>>> &marks);
-    void insertCorrection(int index, const Correction &correction);
-    void takeCorrection(const QString &id);
-    /// `correction` made ready to push: id, author, time; false when its target is unknown.
-    bool prepare(Correction *correction, int offset) const;
-    /// Sets every node's description to what analysis, accepted suggestions and `describe`
-    /// corrections say, in that order; returns the ids of the nodes that changed (no signals).
-    QStringList refreshDescriptions();
-
-    DecisionSnapshot snapshot(const Suggestion &suggestion) const;
-    DecisionSnapshot decided(const Suggestion &suggestion, Suggestion::Status status) const;
-    void restore(const DecisionSnapshot &snapshot);
-    /// Reads the workspace's project and applies the accepted descriptions (no signals).
-    void loadDecisions();
-    /// The decisions by stable key, with this model's keys (those bound nowhere included).
-    QList<SuggestionDecision> keyedDecisions() const;
-    /// Binds decisions stored by key to this model's ids; what matches nothing is kept apart.
-    void bindDecisions(const QList<SuggestionDecision> &keyed);
-    /// The suggestions with their subjects as stable keys of this model (unknown ones left out).
-    QList<Suggestion> keyedSuggestions() const;
-    /// Puts back suggestions keyed by keyedSuggestions() on this model's ids, with the status
-    /// the decisions give; those whose subject is gone are dropped.
-    void bindSuggestions(const QList<Suggestion> &keyed);
-    /// Applies the accepted descriptions among the decisions to the nodes (no signals).
-    void applyStoredDescriptions();
-    void markDecisionsChanged();
-    /// Replaces the project in memory by what `load` puts there (descriptions as analysis
-    /// found them, undo history cleared, the suggestions' statuses from its decisions).
-    void reloadWith(const std::function<void()> &load);
-    void updateModified();
-    void setProjectPath(const QString &path);
-    bool hasSuggestionReport() const;
-    /// Clears the suggestions (no signals); true when there were any.
-    bool clearSuggestions();
+    friend class ProjectSession; // announces its changes, sets descriptions
     void emitChange(DocumentChange::Parts parts, const QString &id = {});
-    /// Makes the keys of the model as recovered (the model changed): a large model's on their
-    /// own thread, a small one's at once. A job still making the old ones is left to finish
-    /// and be dropped.
-    void startKeys();
+    /// The model as accepted, with what of the project matched nothing.
+    const CorrectedRecovery &corrected() const;
+    /// Forgets the model as accepted (the project or the descriptions changed).
+    void dropAccepted() { m_corrected.reset(); }
+    /// The nodes' descriptions as stage 1 found them, by node id.
+    const QHash<QString, QString> &analysisDescriptions() const { return m_analysisDescriptions; }
+    /// Gives each node in `wanted` its description there; returns the ids that changed.
+    QStringList setDescriptions(const QHash<QString, QString> &wanted);
 
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
     Architecture m_architecture;
-    LaunchOptions m_launchOptions;
-    SuggestionReport m_suggestionReport;
-    QMap<QString, SuggestionDecision> m_decisions; ///< bound to this model's ids
-    Project m_project;     ///< as read; decisions are rebuilt from m_decisions when saved
-    QString m_projectPath; ///< where m_project is kept
-    QList<SuggestionDecision> m_unboundDecisions;         ///< by key: nothing here matches them
-    mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted()/orphans(), until a change
-    mutable std::optional<StableKeys> m_keys;             ///< keyOf(): of the model as recovered
-    mutable QFuture<StableKeys> m_keysJob;                ///< making m_keys, until taken
-    QFutureWatcher<StableKeys> m_keysWatcher;
-    QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
+    mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted(), until a change
+    QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
-    QTimer m_autosave;
-    bool m_unsaved = false;          ///< a change is not in the autosave side file
-    bool m_modifiedOutside = false;  ///< modified by what the undo stack does not hold
-    bool m_modifiedShown = false;    ///< as last announced by modifiedChanged
-    bool m_migrationPending = false; ///< old decisions.json waits for a model to key them by
-    /// The project file a person chose for a workspace (setProjectFile): workspace → file.
-    std::optional<std::pair<QString, QString>> m_chosenProject;
+    ProjectSession *m_session;
 };
 
 } // namespace rosarch

@@ -1,23 +1,23 @@
 #include "document/findingmarkcommand.h"
-#include "document/document.h"
+#include "document/projectsession.h"
 
 namespace rosarch {
 
-FindingMarkCommand::FindingMarkCommand(Document *document, Marks before, Marks after,
+FindingMarkCommand::FindingMarkCommand(ProjectSession *session, Marks before, Marks after,
                                        const QString &text)
-    : m_document(document), m_before(std::move(before)), m_after(std::move(after))
+    : m_session(session), m_before(std::move(before)), m_after(std::move(after))
 {
     setText(text);
 }
 
 void FindingMarkCommand::undo()
 {
-    m_document->replaceFindingMarks(m_before);
+    m_session->replaceFindingMarks(m_before);
 }
 
 void FindingMarkCommand::redo()
 {
-    m_document->replaceFindingMarks(m_after);
+    m_session->replaceFindingMarks(m_after);
 }
 
 } // namespace rosarch

@@ -10,7 +10,7 @@
 
 namespace rosarch {
 
-class Document;
+class ProjectSession;
 
 /// Undoable change of the marks (hidden, accepted) of some findings: what each key had before
 /// and has after (none = unmarked).
@@ -18,12 +18,12 @@ class FindingMarkCommand : public QUndoCommand
 {
 public:
     using Marks = QList<std::pair<QString, std::optional<FindingMark>>>;
-    FindingMarkCommand(Document *document, Marks before, Marks after, const QString &text);
+    FindingMarkCommand(ProjectSession *session, Marks before, Marks after, const QString &text);
     void undo() override;
     void redo() override;
 
 private:
-    Document *m_document;
+    ProjectSession *m_session;
     Marks m_before;
     Marks m_after;
 };

@@ -52,20 +52,20 @@ NodeDescription NodeDescription::of(const Document &document, const QString &nod
         d.source = d.text.isEmpty() ? Source::None : Source::Code;
         return d;
     }
-    // The same order Document applies them in: the code, accepted suggestions, then a
+    // The same order ProjectSession applies them in: the code, accepted suggestions, then a
     // person's own edits. The text is already the one in effect; only its source is asked.
     bool described = false;
-    for (const Correction &c : document.corrections())
+    for (const Correction &c : document.session()->corrections())
         described = described || c.kind == Correction::Kind::Describe;
     if (described) { // the keys are only made when a correction could name the class
-        const QString key = document.keyOf(nodeId);
-        for (const Correction &c : document.corrections())
+        const QString key = document.session()->keyOf(nodeId);
+        for (const Correction &c : document.session()->corrections())
             if (c.kind == Correction::Kind::Describe && !key.isEmpty() && c.target == key)
                 d.source = Source::Correction;
     }
     if (d.source == Source::Correction)
         return d;
-    for (const SuggestionDecision &s : document.decisions())
+    for (const SuggestionDecision &s : document.session()->decisions())
         if (s.kind == Suggestion::Kind::NodeDescription &&
             s.status == Suggestion::Status::Accepted && s.targetId == nodeId &&
             s.proposal == node->description)

@@ -78,7 +78,8 @@ AtomicNodeList AtomicNodeModel::merged()
     const AtomicNodeList &recovered = m_document->atomicNodes();
     m_removed.clear();
     m_index = CorrectionIndex(*m_document);
-    if (m_document->corrections().isEmpty() && m_document->decisions().isEmpty())
+    if (m_document->session()->corrections().isEmpty() &&
+        m_document->session()->decisions().isEmpty())
         return recovered;
     const AtomicNodeList &corrected = m_document->accepted().nodes;
     AtomicNodeList out = recovered;
@@ -185,7 +186,8 @@ QString AtomicNodeModel::stableKey(const QModelIndex &index) const
     const QString id = elementId(index);
     if (id.isEmpty())
         return {};
-    const QString key = m_document->keysReady() ? m_document->keyOf(id) : QString();
+    const QString key =
+        m_document->session()->keysReady() ? m_document->session()->keyOf(id) : QString();
     return key.isEmpty() ? QStringLiteral("id:") + id : key;
 }
 
@@ -196,8 +198,8 @@ QModelIndex AtomicNodeModel::indexOfStableKey(const QString &key) const
     QString id;
     if (key.startsWith(QLatin1String("id:")))
         id = key.mid(3);
-    else if (m_document->keysReady())
-        id = m_document->recoveredKeys().idOf(key);
+    else if (m_document->session()->keysReady())
+        id = m_document->session()->recoveredKeys().idOf(key);
     if (id.isEmpty())
         return {};
     return id.contains(u'/') ? portIndex(id.section(u'/', 0, 0), id.section(u'/', 1))
@@ -534,7 +536,7 @@ bool AtomicNodeModel::setData(const QModelIndex &index, const QVariant &value, i
     if (!n)
         return false;
     // The Document pushes an undoable command and tells us through changed (DocumentChange::Node).
-    m_document->setNodeDescription(n->id, value.toString());
+    m_document->session()->setNodeDescription(n->id, value.toString());
     return true;
 }
 

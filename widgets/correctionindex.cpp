@@ -5,13 +5,14 @@
 
 namespace rosarch {
 
-CorrectionIndex::CorrectionIndex(const Document &document) : m_corrections(document.corrections())
+CorrectionIndex::CorrectionIndex(const Document &document)
+    : m_corrections(document.session()->corrections())
 {
     if (m_corrections.isEmpty())
         return;
     const Recovery &corrected = document.accepted();
     m_corrected = StableKeys(corrected);
-    m_recovered = document.recoveredKeys(); // made once per model
+    m_recovered = document.session()->recoveredKeys(); // made once per model
     for (int i = 0; i < m_corrections.size(); ++i)
         m_byTarget[m_corrections[i].target].append(i);
     // A port a correction added has no key of its own as recovered: find it by what it says.

@@ -26,10 +26,10 @@ CorrectionModel::CorrectionModel(Document *document, QObject *parent)
 void CorrectionModel::refresh()
 {
     beginResetModel();
-    m_corrections = m_document->corrections();
+    m_corrections = m_document->session()->corrections();
     m_orphans.clear();
     if (!m_corrections.isEmpty())
-        for (const Orphan &o : m_document->orphans())
+        for (const Orphan &o : m_document->session()->orphans())
             if (o.source == Orphan::Source::Correction)
                 m_orphans.insert(o.id, o.reason);
     endResetModel();

@@ -106,7 +106,7 @@ bool DiagnosticModel::isShownMark(const Entry &e) const
 {
     if (e.mark < 0)
         return true;
-    const FindingMark &m = m_document->findingMarks().at(e.mark);
+    const FindingMark &m = m_document->session()->findingMarks().at(e.mark);
     return m.status == FindingMark::Status::Accepted ? m_filter.showAccepted : m_filter.showHidden;
 }
 
@@ -134,7 +134,7 @@ bool DiagnosticModel::passes(const Entry &e, bool ignoreCode, bool ignorePackage
 void DiagnosticModel::rebuild()
 {
     QHash<QString, int> marks;
-    const QList<FindingMark> &all = m_document->findingMarks();
+    const QList<FindingMark> &all = m_document->session()->findingMarks();
     for (int i = 0; i < all.size(); ++i)
         marks.insert(all.at(i).key, i);
     m_visible.clear();
@@ -259,7 +259,7 @@ std::optional<FindingMark> DiagnosticModel::mark(const QModelIndex &index) const
     const int e = entryAt(index);
     if (e < 0 || m_entries.at(e).mark < 0)
         return std::nullopt;
-    return m_document->findingMarks().value(m_entries.at(e).mark);
+    return m_document->session()->findingMarks().value(m_entries.at(e).mark);
 }
 
 QString DiagnosticModel::severityLabel(Diagnostic::Severity severity)
@@ -447,7 +447,7 @@ QStringList DiagnosticModel::keysAt(const QModelIndexList &indexes) const
 int DiagnosticModel::markFindings(const QModelIndexList &indexes, FindingMark::Status status,
                                   const QString &reason)
 {
-    return m_document->markFindings(keysAt(indexes), status, reason);
+    return m_document->session()->markFindings(keysAt(indexes), status, reason);
 }
 
 int DiagnosticModel::restoreFindings(const QModelIndexList &indexes)
@@ -457,8 +457,8 @@ int DiagnosticModel::restoreFindings(const QModelIndexList &indexes)
     const QStringList own = keysAt(indexes);
     for (const Entry &e : std::as_const(m_entries))
         if (e.mark >= 0 && own.contains(keyOf(e)))
-            keys.append(m_document->findingMarks().at(e.mark).key);
-    return m_document->unmarkFindings(keys);
+            keys.append(m_document->session()->findingMarks().at(e.mark).key);
+    return m_document->session()->unmarkFindings(keys);
 }
 
 } // namespace rosarch

@@ -57,7 +57,7 @@ LaunchDependencies LaunchTreeModel::merged()
         const StallScope scope("LaunchTreeModel CorrectionIndex");
         m_index = CorrectionIndex(*m_document);
     }
-    if (m_document->corrections().isEmpty())
+    if (m_document->session()->corrections().isEmpty())
         return recovered;
     const LaunchDependencies &corrected = m_document->accepted().launch;
     LaunchDependencies out = corrected;
@@ -126,7 +126,8 @@ QString LaunchTreeModel::stableKey(const QModelIndex &index) const
     }
     if (id.isEmpty())
         return {};
-    const QString key = m_document->keysReady() ? m_document->keyOf(id) : QString();
+    const QString key =
+        m_document->session()->keysReady() ? m_document->session()->keyOf(id) : QString();
     return key.isEmpty() ? QStringLiteral("id:") + id : key;
 }
 
@@ -135,8 +136,8 @@ QModelIndex LaunchTreeModel::indexOfStableKey(const QString &key) const
     QString id;
     if (key.startsWith(QLatin1String("id:")))
         id = key.mid(3);
-    else if (m_document->keysReady())
-        id = m_document->recoveredKeys().idOf(key);
+    else if (m_document->session()->keysReady())
+        id = m_document->session()->recoveredKeys().idOf(key);
     if (id.isEmpty())
         return {};
     const QModelIndex node = nodeIndex(id);

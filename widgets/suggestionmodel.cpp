@@ -41,7 +41,7 @@ void SuggestionModel::rebuildItems()
 {
     m_items.clear();
     bool names = false;
-    for (const Suggestion &s : m_document->suggestions())
+    for (const Suggestion &s : m_document->session()->suggestions())
         names = names || s.kind == Suggestion::Kind::NameResolution;
     if (!names)
         return; // collecting walks the whole model; only name suggestions need it
@@ -53,7 +53,7 @@ void SuggestionModel::rebuildItems()
 
 int SuggestionModel::rowCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : int(m_document->suggestions().size());
+    return parent.isValid() ? 0 : int(m_document->session()->suggestions().size());
 }
 
 int SuggestionModel::columnCount(const QModelIndex &parent) const
@@ -64,14 +64,14 @@ int SuggestionModel::columnCount(const QModelIndex &parent) const
 const Suggestion *SuggestionModel::suggestion(const QModelIndex &index) const
 {
     if (!index.isValid() || index.model() != this || index.row() < 0 ||
-        index.row() >= m_document->suggestions().size())
+        index.row() >= m_document->session()->suggestions().size())
         return nullptr;
-    return &m_document->suggestions()[index.row()];
+    return &m_document->session()->suggestions()[index.row()];
 }
 
 QModelIndex SuggestionModel::indexOf(const QString &id) const
 {
-    const QList<Suggestion> &list = m_document->suggestions();
+    const QList<Suggestion> &list = m_document->session()->suggestions();
     for (qsizetype row = 0; row < list.size(); ++row)
         if (list[row].id == id)
             return index(int(row), 0);
@@ -81,7 +81,7 @@ QModelIndex SuggestionModel::indexOf(const QString &id) const
 int SuggestionModel::count(Suggestion::Status status) const
 {
     int n = 0;
-    for (const Suggestion &s : m_document->suggestions())
+    for (const Suggestion &s : m_document->session()->suggestions())
         n += s.status == status ? 1 : 0;
     return n;
 }
@@ -89,7 +89,7 @@ int SuggestionModel::count(Suggestion::Status status) const
 int SuggestionModel::count(Suggestion::Status status, Suggestion::Kind kind) const
 {
     int n = 0;
-    for (const Suggestion &s : m_document->suggestions())
+    for (const Suggestion &s : m_document->session()->suggestions())
         n += s.status == status && s.kind == kind ? 1 : 0;
     return n;
 }

@@ -192,7 +192,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!doc()->architecture().composites.isEmpty(), 60000);
         QTRY_VERIFY_WITH_TIMEOUT(
             !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
-        QTRY_VERIFY(doc()->keysReady());
+        QTRY_VERIFY(doc()->session()->keysReady());
         m_window->corrections()->setDialogHandler([](CorrectionDialog &d) {
             const QString title = d.windowTitle();
             if (title == QLatin1String("Add Connection")) {
@@ -309,12 +309,13 @@ private Q_SLOTS:
 
     void aDecisionOnASuggestionKeepsThePlace()
     {
-        doc()->setSuggestions(SuggestionEngine(doc()->workspaceRoot(), doc()->recovered(),
-                                               SuggestionEngine::Options())
-                                  .run());
+        doc()->session()->setSuggestions(SuggestionEngine(doc()->workspaceRoot(),
+                                                          doc()->recovered(),
+                                                          SuggestionEngine::Options())
+                                             .run());
         QCoreApplication::processEvents();
         QString description, grouping;
-        for (const Suggestion &s : doc()->suggestions()) {
+        for (const Suggestion &s : doc()->session()->suggestions()) {
             if (s.kind == Suggestion::Kind::NodeDescription && description.isEmpty())
                 description = s.id;
             if (s.kind == Suggestion::Kind::SubsystemGrouping && grouping.isEmpty())
@@ -322,11 +323,11 @@ private Q_SLOTS:
         }
         QVERIFY(!description.isEmpty() && !grouping.isEmpty());
         keptThrough(QStringLiteral("Accept a description"),
-                    [&] { QVERIFY(doc()->acceptSuggestion(description)); });
+                    [&] { QVERIFY(doc()->session()->acceptSuggestion(description)); });
         keptThrough(QStringLiteral("Accept a grouping"),
-                    [&] { QVERIFY(doc()->acceptSuggestion(grouping)); });
+                    [&] { QVERIFY(doc()->session()->acceptSuggestion(grouping)); });
         keptThrough(QStringLiteral("Reject a description"),
-                    [&] { QVERIFY(doc()->rejectSuggestion(description)); });
+                    [&] { QVERIFY(doc()->session()->rejectSuggestion(description)); });
         test::saveScreenshot(*m_window, QStringLiteral("context-after.png"));
     }
 };

@@ -66,7 +66,7 @@ private Q_SLOTS:
         const Recovery second = large(QStringLiteral("second_"));
         const QString id = QStringLiteral("arc_x3999");
         Gui gui;
-        QSignalSpy made(&gui.document, &Document::keysMade);
+        QSignalSpy made(gui.document.session(), &ProjectSession::keysMade);
         gui.document.setRecovery(first);
         gui.document.setRecovery(second); // while the first one's keys may still be made
         gui.controller->setCurrent({EKind::Class, id, {}, {}});
@@ -76,9 +76,10 @@ private Q_SLOTS:
         QVERIFY2(shown == expected || shown == QStringLiteral("(being worked out\u2026)"),
                  qPrintable(shown));
         QTRY_COMPARE(gui.inspector.fieldText(QStringLiteral("key")), expected);
-        QVERIFY(gui.document.keysReady());
-        QCOMPARE(gui.document.keyOf(id), expected); // not the first model's key
-        QCOMPARE(gui.document.keyOf(QStringLiteral("arc_x0")), StableKeys(second).keyOf("arc_x0"));
+        QVERIFY(gui.document.session()->keysReady());
+        QCOMPARE(gui.document.session()->keyOf(id), expected); // not the first model's key
+        QCOMPARE(gui.document.session()->keyOf(QStringLiteral("arc_x0")),
+                 StableKeys(second).keyOf("arc_x0"));
     }
 
     void correctionsPanelListsAndReverts()
@@ -159,8 +160,8 @@ private Q_SLOTS:
             {EKind::Class, gui->classId(QStringLiteral("BumperNode")), {}, {}}));
         // F5: a fresh recovery of the same workspace
         gui->document.setRecovery(recover(m_ws));
-        QCOMPARE(gui->document.corrections().size(), 2);
-        QVERIFY(gui->document.orphans().isEmpty());
+        QCOMPARE(gui->document.session()->corrections().size(), 2);
+        QVERIFY(gui->document.session()->orphans().isEmpty());
         QVERIFY(gui->instance(QStringLiteral("safety")));
         const QString id = gui->instanceId(QStringLiteral("safety"));
         QCOMPARE(gui->launchModel.nodeIndex(id).data().toString(), QStringLiteral("safety"));
@@ -179,8 +180,8 @@ private Q_SLOTS:
         c.oldValue = QStringLiteral("gone");
         c.newValue = QStringLiteral("renamed");
         c.reason = QStringLiteral("kept");
-        QCOMPARE(gui->document.addCorrection(c), QStringLiteral("c1"));
-        QCOMPARE(gui->document.orphans().size(), 1);
+        QCOMPARE(gui->document.session()->addCorrection(c), QStringLiteral("c1"));
+        QCOMPARE(gui->document.session()->orphans().size(), 1);
         QVERIFY(gui->correctionModel.index(0, 0).data(CorrectionModel::OrphanedRole).toBool());
         QVERIFY(gui->correctionModel.index(0, CorrectionModel::StatusColumn)
                     .data()
@@ -204,19 +205,19 @@ private Q_SLOTS:
         };
         gui->correctionPanel.retargetAction()->trigger();
         QVERIFY2(offered.contains(QStringLiteral("odometry")), qPrintable(offered.join(u',')));
-        QCOMPARE(gui->document.corrections().size(), 1);
-        const Correction &now = gui->document.corrections().first();
+        QCOMPARE(gui->document.session()->corrections().size(), 1);
+        const Correction &now = gui->document.session()->corrections().first();
         QCOMPARE(now.id, QStringLiteral("c1"));
         QCOMPARE(now.target,
                  QStringLiteral("instance:src/cart_base/launch/cart.launch.py|recorder"));
         QCOMPARE(now.reason, QStringLiteral("kept"));
-        QVERIFY(gui->document.orphans().isEmpty());
+        QVERIFY(gui->document.session()->orphans().isEmpty());
         QVERIFY(gui->instance(QStringLiteral("renamed")));
         QVERIFY(!gui->correctionModel.index(0, 0).data(CorrectionModel::OrphanedRole).toBool());
         // one undo step puts the orphan back
         gui->document.undoStack()->undo();
-        QCOMPARE(gui->document.corrections().first().target, c.target);
-        QCOMPARE(gui->document.orphans().size(), 1);
+        QCOMPARE(gui->document.session()->corrections().first().target, c.target);
+        QCOMPARE(gui->document.session()->orphans().size(), 1);
         QVERIFY(!gui->instance(QStringLiteral("renamed")));
     }
 
@@ -231,7 +232,7 @@ private Q_SLOTS:
             QDir(ws).filePath(QStringLiteral("rosarch.project.json"))));
         Gui gui;
         gui.document.setRecovery(recover(ws));
-        QCOMPARE(gui.document.corrections().size(), 13);
+        QCOMPARE(gui.document.session()->corrections().size(), 13);
         QAbstractItemModelTester nodes(&gui.nodeModel,
                                        QAbstractItemModelTester::FailureReportingMode::QtTest);
         QAbstractItemModelTester launch(&gui.launchModel,

@@ -41,8 +41,8 @@ private Q_SLOTS:
                          [](QAction *a) { return a->text().startsWith("Re&name"); });
         (*rename)->trigger();
         QCOMPARE(gui->asked, QStringList{QStringLiteral("Rename")});
-        QCOMPARE(gui->document.corrections().size(), 1);
-        const Correction &c = gui->document.corrections().first();
+        QCOMPARE(gui->document.session()->corrections().size(), 1);
+        const Correction &c = gui->document.session()->corrections().first();
         QCOMPARE(c.kind, Correction::Kind::Rename);
         QCOMPARE(c.target,
                  QStringLiteral("instance:src/cart_base/launch/cart.launch.py|safety_monitor"));
@@ -93,7 +93,7 @@ private Q_SLOTS:
             return true;
         };
         Q_EMIT gui->nodePanel.renameRequested(gui->nodePanel.currentSourceIndex());
-        QCOMPARE(gui->document.corrections().last().kind, Correction::Kind::Rename);
+        QCOMPARE(gui->document.session()->corrections().last().kind, Correction::Kind::Rename);
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->portRow(ticks),
                      done ? QStringLiteral("wheel/ticks") : QStringLiteral("wheel_ticks"));
@@ -105,7 +105,7 @@ private Q_SLOTS:
         };
         QVERIFY(gui->controller->rename({EKind::Port, pose, {}, {}}));
         QCOMPARE(gui->asked.last(), QStringLiteral("Set Name"));
-        QCOMPARE(gui->document.corrections().last().kind, Correction::Kind::SetName);
+        QCOMPARE(gui->document.session()->corrections().last().kind, Correction::Kind::SetName);
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->portRow(pose), done ? QStringLiteral("/cart/pose")
                                               : QStringLiteral("self.frame_prefix() + '/pose'"));
@@ -118,19 +118,19 @@ private Q_SLOTS:
             return true;
         };
         QVERIFY(gui->controller->setType({EKind::Port, status, {}, {}}));
-        QCOMPARE(gui->document.corrections().last().kind, Correction::Kind::SetType);
+        QCOMPARE(gui->document.session()->corrections().last().kind, Correction::Kind::SetType);
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->portType(status) == QLatin1String("diagnostic_msgs/msg/DiagnosticStatus"),
                      done);
         });
-        QCOMPARE(gui->document.corrections().size(), 3);
+        QCOMPARE(gui->document.session()->corrections().size(), 3);
         // a later correction of a renamed port names it as it is now
         gui->answer = [](CorrectionDialog &d) {
             d.setType(QStringLiteral("std_msgs/msg/Int64"));
             return true;
         };
         QVERIFY(gui->controller->setType({EKind::Port, ticks, {}, {}}));
-        QVERIFY(gui->document.orphans().isEmpty());
+        QVERIFY(gui->document.session()->orphans().isEmpty());
         QCOMPARE(gui->portType(ticks), QStringLiteral("std_msgs/msg/Int64"));
     }
 
@@ -151,7 +151,7 @@ private Q_SLOTS:
                 del = a;
         QVERIFY(del);
         del->trigger();
-        QCOMPARE(gui->document.corrections().size(), 1);
+        QCOMPARE(gui->document.session()->corrections().size(), 1);
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->document.accepted().nodes.node(recorder) == nullptr, done);
             // struck out where it was, not hidden
@@ -168,7 +168,7 @@ private Q_SLOTS:
         QCOMPARE(restore.size(), 1);
         QVERIFY(restore.first()->text().startsWith(QStringLiteral("Restore")));
         restore.first()->trigger();
-        QVERIFY(gui->document.corrections().isEmpty());
+        QVERIFY(gui->document.session()->corrections().isEmpty());
         QVERIFY(gui->document.accepted().nodes.node(recorder));
         gui->document.undoStack()->undo(); // the restore
         QVERIFY(!gui->document.accepted().nodes.node(recorder));
@@ -176,7 +176,7 @@ private Q_SLOTS:
         const QString odom = gui->portId(QStringLiteral("Recorder"), "odom");
         QVERIFY(gui->controller->remove(
             {EKind::Port, gui->portId("SafetyMonitor", "reset_estop"), {}, {}}));
-        QCOMPARE(gui->document.corrections().last().target,
+        QCOMPARE(gui->document.session()->corrections().last().target,
                  QStringLiteral("port:cart_base|cart_base.safety.SafetyMonitor|service_server|"
                                 "reset_estop"));
         roundTrip(*gui, [&](bool done) {
@@ -209,9 +209,9 @@ private Q_SLOTS:
         };
         QVERIFY(connected());
         QVERIFY(gui->controller->remove({EKind::Connection, odometry, odomPort, {}}));
-        QVERIFY(!gui->document.corrections().last().port.isEmpty());
+        QVERIFY(!gui->document.session()->corrections().last().port.isEmpty());
         roundTrip(*gui, [&](bool done) { QCOMPARE(connected(), !done); });
-        QVERIFY(gui->document.orphans().isEmpty());
+        QVERIFY(gui->document.session()->orphans().isEmpty());
     }
 
     void addPortPartAndConnection()
@@ -245,7 +245,7 @@ private Q_SLOTS:
             return true;
         };
         QVERIFY(gui->controller->addPart({EKind::LaunchFile, cart, {}, {}}));
-        QCOMPARE(gui->document.corrections().last().target,
+        QCOMPARE(gui->document.session()->corrections().last().target,
                  QStringLiteral("launch:src/cart_base/launch/cart.launch.py"));
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->launchNodes().contains(QStringLiteral("watchdog")), done);
@@ -261,7 +261,8 @@ private Q_SLOTS:
             return true;
         };
         QVERIFY(gui->controller->addConnection({EKind::Instance, odometry, {}, {}}));
-        QCOMPARE(gui->document.corrections().last().newValue, QStringLiteral("/cart/heartbeat"));
+        QCOMPARE(gui->document.session()->corrections().last().newValue,
+                 QStringLiteral("/cart/heartbeat"));
         roundTrip(*gui, [&](bool done) {
             bool found = false;
             for (const Composite &c : gui->document.accepted().architecture.composites)
@@ -271,7 +272,7 @@ private Q_SLOTS:
                                           pp.name == QLatin1String("/cart/heartbeat"));
             QCOMPARE(found, done);
         });
-        QVERIFY(gui->document.orphans().isEmpty());
+        QVERIFY(gui->document.session()->orphans().isEmpty());
     }
 
     void renameTopicGroupAndReview()
@@ -300,7 +301,8 @@ private Q_SLOTS:
         };
         QVERIFY(gui->controller->rename(
             {EKind::Channel, QStringLiteral("topic:/emergency_stop"), {}, {}}));
-        QCOMPARE(gui->document.corrections().last().target, QStringLiteral("topic:/estop"));
+        QCOMPARE(gui->document.session()->corrections().last().target,
+                 QStringLiteral("topic:/estop"));
         QVERIFY(hasChannel(QStringLiteral("/e_stop")));
 
         // group two parts of the root
@@ -321,7 +323,7 @@ private Q_SLOTS:
 
         // review: at once, a ✓ in the views; again removes the mark
         const QString odometryNode = gui->classId(QStringLiteral("OdometryNode"));
-        const int before = int(gui->document.corrections().size());
+        const int before = int(gui->document.session()->corrections().size());
         QVERIFY(gui->controller->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
         QCOMPARE(gui->asked.size(), 3); // no dialog for a review
         roundTrip(*gui, [&](bool done) {
@@ -331,7 +333,7 @@ private Q_SLOTS:
                      done ? QStringLiteral("OdometryNode \u2713") : QStringLiteral("OdometryNode"));
         });
         QVERIFY(gui->controller->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
-        QCOMPARE(int(gui->document.corrections().size()), before);
+        QCOMPARE(int(gui->document.session()->corrections().size()), before);
         const QString odometry = gui->instanceId(QStringLiteral("odometry"));
         QVERIFY(gui->controller->toggleReviewed({EKind::Instance, odometry, {}, {}}));
         QVERIFY(gui->launchModel.nodeIndex(odometry).data(LaunchTreeModel::ReviewedRole).toBool());
@@ -347,7 +349,7 @@ private Q_SLOTS:
         };
         QVERIFY(!gui->controller->rename(
             {EKind::Instance, gui->instanceId(QStringLiteral("odometry")), {}, {}}));
-        QVERIFY(gui->document.corrections().isEmpty());
+        QVERIFY(gui->document.session()->corrections().isEmpty());
         QCOMPARE(gui->document.undoStack()->count(), 0);
     }
 };

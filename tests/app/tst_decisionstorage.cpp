@@ -66,15 +66,16 @@ private Q_SLOTS:
         {
             Document doc;
             load(doc);
-            QCOMPARE(doc.decisionsPath(), path);
+            QCOMPARE(doc.session()->projectPath(), path);
             const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
             acceptedValue = d.value;
-            QVERIFY(doc.acceptSuggestion(d.id));
-            QVERIFY(doc.rejectSuggestion(first(doc, Suggestion::Kind::SubsystemGrouping).id));
-            QVERIFY(doc.isModified());
+            QVERIFY(doc.session()->acceptSuggestion(d.id));
+            QVERIFY(doc.session()->rejectSuggestion(
+                first(doc, Suggestion::Kind::SubsystemGrouping).id));
+            QVERIFY(doc.session()->isModified());
             QVERIFY(!QFileInfo::exists(path)); // written when a person saves
-            QVERIFY(doc.saveDecisions());
-            QVERIFY(!doc.isModified());
+            QVERIFY(doc.session()->save());
+            QVERIFY(!doc.session()->isModified());
         }
         const QByteArray stored = test::readFile(path);
         QVERIFY(stored.contains("\"accepted\""));
@@ -88,9 +89,9 @@ private Q_SLOTS:
         again.setRecovery(m_recovery);
         QCOMPARE(again.atomicNodes().node(QStringLiteral("arc_1"))->description, acceptedValue);
         QCOMPARE(again.undoStack()->count(), 0);
-        QCOMPARE(again.setSuggestions(m_deterministic), 2);
+        QCOMPARE(again.session()->setSuggestions(m_deterministic), 2);
         int pending = 0;
-        for (const Suggestion &s : again.suggestions())
+        for (const Suggestion &s : again.session()->suggestions())
             pending += s.status == Suggestion::Status::Pending ? 1 : 0;
         QCOMPARE(pending, 7);
         QCOMPARE(first(again, Suggestion::Kind::NodeDescription).status,
@@ -101,9 +102,10 @@ private Q_SLOTS:
         // Undoing a decision forgets it on disk as well.
         Document third;
         load(third);
-        QVERIFY(third.acceptSuggestion(first(third, Suggestion::Kind::SubsystemGrouping).id));
+        QVERIFY(third.session()->acceptSuggestion(
+            first(third, Suggestion::Kind::SubsystemGrouping).id));
         third.undoStack()->undo();
-        QVERIFY(third.saveDecisions());
+        QVERIFY(third.session()->save());
         QVERIFY(test::readFile(path).contains("\"rejected\""));
         QCOMPARE(storedDecisions(path), 2);
     }
@@ -119,8 +121,8 @@ private Q_SLOTS:
             const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
             target = doc.atomicNodes().node(d.targetId)->qualifiedName;
             value = d.value;
-            QVERIFY(doc.acceptSuggestion(d.id));
-            QVERIFY(doc.saveDecisions());
+            QVERIFY(doc.session()->acceptSuggestion(d.id));
+            QVERIFY(doc.session()->save());
         }
         Recovery shifted = m_recovery;
         AtomicNode inserted;
@@ -139,7 +141,7 @@ private Q_SLOTS:
             n.classId = renamed.value(n.classId, n.classId);
         Document doc;
         doc.setRecovery(shifted);
-        QVERIFY(doc.orphans().isEmpty());
+        QVERIFY(doc.session()->orphans().isEmpty());
         for (const AtomicNode &n : doc.atomicNodes().nodes)
             QCOMPARE(n.description == value, n.qualifiedName == target);
         for (const AtomicNode &n : doc.accepted().nodes.nodes)
@@ -153,43 +155,43 @@ private Q_SLOTS:
         QFile::remove(side);
         Document doc;
         load(doc);
-        QCOMPARE(doc.autosaveFile(), side);
+        QCOMPARE(doc.session()->autosaveFile(), side);
         const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
-        QVERIFY(doc.acceptSuggestion(d.id));
-        QVERIFY(doc.hasUnsavedDecisions());
+        QVERIFY(doc.session()->acceptSuggestion(d.id));
+        QVERIFY(doc.session()->hasAutosavePending());
         for (int i = 0; i < 5; ++i) {
             doc.undoStack()->undo();
             doc.undoStack()->redo();
         }
         QVERIFY(!QFileInfo::exists(path)); // nothing written yet
         QVERIFY(!QFileInfo::exists(side));
-        QVERIFY(doc.writeAutosave());
-        QVERIFY(!doc.hasUnsavedDecisions());
+        QVERIFY(doc.session()->writeAutosave());
+        QVERIFY(!doc.session()->hasAutosavePending());
         QCOMPARE(storedDecisions(side), 1);
         QVERIFY(!QFileInfo::exists(path)); // the autosave never writes the project itself
-        QVERIFY(doc.saveDecisions());
+        QVERIFY(doc.session()->save());
         QCOMPARE(storedDecisions(path), 1);
         QVERIFY(!QFileInfo::exists(side)); // a save takes the side file's place
 
         // The autosave writes a burst of changes once, an interval after the first one.
-        doc.setAutosaveInterval(100);
+        doc.session()->setAutosaveInterval(100);
         doc.undoStack()->undo();
-        QVERIFY(doc.isModified());
+        QVERIFY(doc.session()->isModified());
         QVERIFY(!QFileInfo::exists(side));
         QTRY_VERIFY(QFileInfo::exists(side));
         QCOMPARE(storedDecisions(side), 0);
         QCOMPARE(storedDecisions(path), 1);
-        QVERIFY(!doc.hasUnsavedDecisions());
+        QVERIFY(!doc.session()->hasAutosavePending());
         // Back at the saved state, the side file goes.
         doc.undoStack()->redo();
-        QVERIFY(!doc.isModified());
+        QVERIFY(!doc.session()->isModified());
         QTRY_VERIFY(!QFileInfo::exists(side));
 
         // Replacing the workspace keeps what is pending in the side file first; so does closing
         // the document. The project file stays as saved.
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         doc.undoStack()->undo();
-        QVERIFY(doc.hasUnsavedDecisions());
+        QVERIFY(doc.session()->hasAutosavePending());
         doc.setRecovery({});
         QCOMPARE(storedDecisions(side), 0);
         QVERIFY(QFileInfo::exists(side));
@@ -198,8 +200,9 @@ private Q_SLOTS:
         {
             Document other;
             load(other);
-            other.setAutosaveInterval(60000);
-            QVERIFY(other.rejectSuggestion(first(other, Suggestion::Kind::SubsystemGrouping).id));
+            other.session()->setAutosaveInterval(60000);
+            QVERIFY(other.session()->rejectSuggestion(
+                first(other, Suggestion::Kind::SubsystemGrouping).id));
             QVERIFY(!QFileInfo::exists(side));
         }
         QCOMPARE(storedDecisions(side), 2);
@@ -208,15 +211,15 @@ private Q_SLOTS:
         // What the side file holds comes back as modified state; discarding removes it.
         Document recovered;
         load(recovered);
-        QCOMPARE(recovered.decisions().size(), 1);
+        QCOMPARE(recovered.session()->decisions().size(), 1);
         QString error;
-        QVERIFY2(recovered.recoverAutosave(&error), qPrintable(error));
-        QCOMPARE(recovered.decisions().size(), 2);
-        QVERIFY(recovered.isModified());
+        QVERIFY2(recovered.session()->recoverAutosave(&error), qPrintable(error));
+        QCOMPARE(recovered.session()->decisions().size(), 2);
+        QVERIFY(recovered.session()->isModified());
         QCOMPARE(first(recovered, Suggestion::Kind::SubsystemGrouping).status,
                  Suggestion::Status::Rejected);
-        recovered.discardChanges();
-        QVERIFY(!recovered.isModified());
+        recovered.session()->discardChanges();
+        QVERIFY(!recovered.session()->isModified());
         QVERIFY(!QFileInfo::exists(side));
         QCOMPARE(storedDecisions(path), 1);
     }
@@ -229,8 +232,8 @@ private Q_SLOTS:
         QFile::remove(side);
         Document doc;
         load(doc);
-        doc.setAutosaveInterval(300);
-        QVERIFY(doc.acceptSuggestion(first(doc, Suggestion::Kind::NodeDescription).id));
+        doc.session()->setAutosaveInterval(300);
+        QVERIFY(doc.session()->acceptSuggestion(first(doc, Suggestion::Kind::NodeDescription).id));
         QElapsedTimer burst;
         burst.start();
         while (!QFileInfo::exists(side) && burst.elapsed() < 3000) {
@@ -240,7 +243,7 @@ private Q_SLOTS:
         }
         QVERIFY2(QFileInfo::exists(side), "nothing written during three seconds of changes");
         QCOMPARE(storedDecisions(side), 1); // written between a redo and an undo
-        doc.discardChanges();
+        doc.session()->discardChanges();
     }
 
     void aDecisionThatCannotBeSavedIsKeptForTheSameWorkspace()
@@ -255,24 +258,24 @@ private Q_SLOTS:
             QVERIFY(blocker.open(QIODevice::WriteOnly));
         }
         Document doc;
-        QSignalSpy failed(&doc, &Document::decisionsSaveFailed);
+        QSignalSpy failed(doc.session(), &ProjectSession::saveFailed);
         load(doc);
         const Suggestion d = first(doc, Suggestion::Kind::NodeDescription);
-        QVERIFY(doc.acceptSuggestion(d.id));
-        QVERIFY(!doc.saveDecisions());
+        QVERIFY(doc.session()->acceptSuggestion(d.id));
+        QVERIFY(!doc.session()->save());
         QCOMPARE(failed.size(), 1);
-        QVERIFY(!doc.writeAutosave()); // the side file would go next to it
+        QVERIFY(!doc.session()->writeAutosave()); // the side file would go next to it
         QCOMPARE(failed.size(), 2);
-        QVERIFY(doc.isModified());
+        QVERIFY(doc.session()->isModified());
         // Running the stages again on the same workspace keeps the decision in memory.
         doc.setRecovery(m_recovery);
-        QCOMPARE(doc.decisions().size(), 1);
+        QCOMPARE(doc.session()->decisions().size(), 1);
         QCOMPARE(doc.atomicNodes().node(d.targetId)->description, d.value);
-        QVERIFY(doc.hasUnsavedDecisions());
+        QVERIFY(doc.session()->hasAutosavePending());
         QFile::remove(folder);
-        QVERIFY(doc.saveDecisions());
+        QVERIFY(doc.session()->save());
         QCOMPARE(storedDecisions(path), 1);
-        QVERIFY(!doc.isModified());
+        QVERIFY(!doc.session()->isModified());
     }
 };
 

@@ -200,7 +200,7 @@ private Q_SLOTS:
                               instanceNamed(doc(), QStringLiteral("backup_planner"))};
         SuggestionReport report;
         report.suggestions = {description, grouping};
-        doc()->setSuggestions(report);
+        doc()->session()->setSuggestions(report);
 
         m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s1"));
         const QModelIndex cell =
@@ -215,7 +215,7 @@ private Q_SLOTS:
         QCOMPARE(cell.data().toString(), QString()); // the description preview ended
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
 
-        doc()->acceptSuggestion(
+        doc()->session()->acceptSuggestion(
             QStringLiteral("s2")); // accepted: drawn as the model, not a preview
         QVERIFY(waitForLayout());
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
@@ -228,7 +228,7 @@ private Q_SLOTS:
                     .contains("<<Subsystem>>"));
         doc()->undoStack()->undo();
         QVERIFY(waitForLayout());
-        doc()->setSuggestions({});
+        doc()->session()->setSuggestions({});
         m_window->diagrams()->previewGrouping({}, {}, {});
         QVERIFY(waitForLayout());
         QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
@@ -246,8 +246,8 @@ private Q_SLOTS:
         name.value = QStringLiteral("~/report");
         SuggestionReport report;
         report.suggestions = {name};
-        doc()->setSuggestions(report);
-        doc()->acceptSuggestion(QStringLiteral("s3"));
+        doc()->session()->setSuggestions(report);
+        doc()->session()->acceptSuggestion(QStringLiteral("s3"));
         const auto reportPort = [this]() -> const PartPort * {
             for (const RosNodePart &p :
                  panel()->architecture().composite(QStringLiteral("lf1"))->parts)
@@ -267,7 +267,7 @@ private Q_SLOTS:
         QVERIFY(promoted);
         doc()->undoStack()->undo();
         QVERIFY(!reportPort()->resolved);
-        doc()->setSuggestions({});
+        doc()->session()->setSuggestions({});
         QVERIFY(waitForLayout());
     }
 

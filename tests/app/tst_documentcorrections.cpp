@@ -90,9 +90,9 @@ private Q_SLOTS:
             qunsetenv(name);
         const passwd *account = ::getpwuid(::getuid());
         QVERIFY(account && account->pw_name);
-        QCOMPARE(Document::author(), QString::fromLocal8Bit(account->pw_name));
+        QCOMPARE(ProjectSession::author(), QString::fromLocal8Bit(account->pw_name));
         qputenv("ROSARCH_AUTHOR", "Ada");
-        QCOMPARE(Document::author(), QStringLiteral("Ada"));
+        QCOMPARE(ProjectSession::author(), QStringLiteral("Ada"));
         for (int i = 0; i < 3; ++i) {
             if (saved[i].isEmpty())
                 qunsetenv(names[i]);
@@ -105,19 +105,19 @@ private Q_SLOTS:
     {
         const Project project = fixtureCorrections();
         Document doc;
-        doc.setAutosaveInterval(60000);
-        doc.setLaunchOptions(project.launch);
+        doc.session()->setAutosaveInterval(60000);
+        doc.session()->setLaunchOptions(project.launch);
         doc.setRecovery(m_recovered);
         QSignalSpy changes(&doc, &Document::changed);
         QList<Recovery> steps{doc.accepted()};
         for (const Correction &c : project.corrections) {
             Correction fresh = c;
             fresh.id.clear(); // the document numbers them
-            const QString id = doc.addCorrection(fresh);
+            const QString id = doc.session()->addCorrection(fresh);
             QCOMPARE(id, c.id);
-            QCOMPARE(doc.correction(id)->target, c.target);
-            QVERIFY(doc.correction(id)->time.isValid());
-            QVERIFY(!doc.correction(id)->author.isEmpty());
+            QCOMPARE(doc.session()->correction(id)->target, c.target);
+            QVERIFY(doc.session()->correction(id)->time.isValid());
+            QVERIFY(!doc.session()->correction(id)->author.isEmpty());
             steps << doc.accepted();
             QVERIFY2(steps.last() != steps.at(steps.size() - 2) ||
                          c.kind == Correction::Kind::Review,
@@ -127,10 +127,10 @@ private Q_SLOTS:
         for (const QList<QVariant> &args : std::as_const(changes))
             corrections += args.at(0).value<DocumentChange>().has(DocumentChange::Corrections);
         QCOMPARE(corrections, project.corrections.size());
-        QCOMPARE(doc.orphans(), QList<Orphan>());
+        QCOMPARE(doc.session()->orphans(), QList<Orphan>());
         // the same model the pure function gives for the project (ids and times aside)
         Project made = project;
-        made.corrections = doc.corrections();
+        made.corrections = doc.session()->corrections();
         QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, made).recovery);
         QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, project).recovery);
 
@@ -138,7 +138,7 @@ private Q_SLOTS:
             doc.undoStack()->undo();
             QVERIFY2(doc.accepted() == steps.at(i), qPrintable(QString::number(i)));
         }
-        QVERIFY(doc.corrections().isEmpty());
+        QVERIFY(doc.session()->corrections().isEmpty());
         QCOMPARE(doc.accepted(), m_recovered);
         for (int i = 1; i < steps.size(); ++i) {
             doc.undoStack()->redo();
@@ -150,28 +150,28 @@ private Q_SLOTS:
     {
         const Project project = fixtureCorrections();
         Document doc;
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         doc.setRecovery(m_recovered);
         for (const Correction &c : project.corrections)
-            doc.addCorrection(c);
+            doc.session()->addCorrection(c);
         const Recovery all = doc.accepted();
-        QVERIFY(doc.removeCorrection(QStringLiteral("c3"))); // the topic rename
-        QVERIFY(!doc.correction(QStringLiteral("c3")));
+        QVERIFY(doc.session()->removeCorrection(QStringLiteral("c3"))); // the topic rename
+        QVERIFY(!doc.session()->correction(QStringLiteral("c3")));
         Project without = project;
         without.corrections.removeAt(2);
         const Recovery expected = CorrectedModel::apply(m_recovered, without).recovery;
         QCOMPARE(doc.accepted(), expected);
         doc.undoStack()->undo();
-        QCOMPARE(doc.corrections().at(2).id, QStringLiteral("c3")); // back where it was
+        QCOMPARE(doc.session()->corrections().at(2).id, QStringLiteral("c3")); // back where it was
         QCOMPARE(doc.accepted(), all);
-        QVERIFY(!doc.removeCorrection(QStringLiteral("c99")));
-        QVERIFY(doc.addCorrection(Correction{}).isEmpty()); // no target: nothing pushed
+        QVERIFY(!doc.session()->removeCorrection(QStringLiteral("c99")));
+        QVERIFY(doc.session()->addCorrection(Correction{}).isEmpty()); // no target: nothing pushed
     }
 
     void pendingSuggestionsSurviveARerunUnlessTheirTargetIsGone()
     {
         Document doc;
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         doc.setRecovery(m_recovered);
         SuggestionReport report;
         for (const AtomicNode &n : m_recovered.nodes.nodes) {
@@ -182,8 +182,8 @@ private Q_SLOTS:
             s.value = QStringLiteral("About ") + n.className;
             report.suggestions.append(s);
         }
-        doc.setSuggestions(report);
-        QVERIFY(doc.acceptSuggestion(QStringLiteral("s2")));
+        doc.session()->setSuggestions(report);
+        QVERIFY(doc.session()->acceptSuggestion(QStringLiteral("s2")));
         // a class inserted before all others (every id shifts) and one deleted
         const QString arbiter = m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py"));
         const QString recorder =
@@ -195,8 +195,9 @@ private Q_SLOTS:
         doc.setRecovery(recoverWorkspace(m_ws.path()));
         QFile::remove(arbiter);
         test::writeFile(recorder, recorderSource);
-        QCOMPARE(doc.suggestions().size(), report.suggestions.size() - 1); // Recorder's went
-        for (const Suggestion &s : doc.suggestions()) {
+        QCOMPARE(doc.session()->suggestions().size(),
+                 report.suggestions.size() - 1); // Recorder's went
+        for (const Suggestion &s : doc.session()->suggestions()) {
             const AtomicNode *n = doc.atomicNodes().node(s.targetId);
             QVERIFY(n);
             QCOMPARE(s.value, QStringLiteral("About ") + n->className); // on its own class
@@ -208,28 +209,28 @@ private Q_SLOTS:
     {
         const Project project = fixtureCorrections();
         Document doc;
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         doc.setRecovery(m_recovered);
         const QStringList ids =
-            doc.addCorrections(project.corrections, QStringLiteral("all of them"));
+            doc.session()->addCorrections(project.corrections, QStringLiteral("all of them"));
         QCOMPARE(ids.size(), project.corrections.size());
         QCOMPARE(doc.undoStack()->count(), 1); // one step
         const Recovery before = doc.accepted();
         // F5: the stages run again on the same workspace
         doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
-        QCOMPARE(doc.corrections().size(), project.corrections.size());
+        QCOMPARE(doc.session()->corrections().size(), project.corrections.size());
         QCOMPARE(doc.accepted(), before);
         // a description a person wrote (F2) is a correction too: the node list keeps it
         for (const AtomicNode &n : doc.atomicNodes().nodes)
             QCOMPARE(n.description.startsWith(QLatin1String("Reports contact of one bumper")),
                      n.className == QLatin1String("BumperNode"));
-        QVERIFY(doc.orphans().isEmpty());
+        QVERIFY(doc.session()->orphans().isEmpty());
         // a code change that shifts ids: still applied to the same elements
         test::writeFile(m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py")),
                         "from rclpy.node import Node\n\n\nclass Arbiter(Node):\n"
                         "    def __init__(self):\n        super().__init__('arbiter')\n");
         doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
-        QVERIFY(doc.orphans().isEmpty());
+        QVERIFY(doc.session()->orphans().isEmpty());
         QCOMPARE(shape(doc.accepted().architecture), shape(before.architecture));
         QFile::remove(m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py")));
     }

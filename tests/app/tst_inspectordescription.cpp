@@ -68,7 +68,8 @@ private Q_SLOTS:
                  QStringLiteral("Sends navigation goals and overrides velocity."));
 
         // a person's description replaces it, and the inspector says whose it is
-        gui.document.setNodeDescription(commander, QStringLiteral("Our mission commander."));
+        gui.document.session()->setNodeDescription(commander,
+                                                   QStringLiteral("Our mission commander."));
         gui.controller->setCurrent({EKind::Class, commander, {}, {}});
         QCOMPARE(shown(QStringLiteral("description")), QStringLiteral("Our mission commander."));
         NodeDescription person;

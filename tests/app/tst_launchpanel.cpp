@@ -447,7 +447,7 @@ private Q_SLOTS:
             dialog->rootCombo()->setCurrentIndex(dialog->rootCombo()->findData(kDemoLaunch));
             dialog->accept();
 
-            QCOMPARE(w.document()->launchOptions(), chosen);
+            QCOMPARE(w.document()->session()->launchOptions(), chosen);
             QCOMPARE(AppSettings().launchOptions(fixture()), chosen);
             QVERIFY(launchFinished.wait(10000));
             QCOMPARE(s.launchRuns, QList<LaunchOptions>{chosen});
@@ -472,7 +472,7 @@ private Q_SLOTS:
         StubbedWindow again;
         QSignalSpy finished(again.w.runner(), &StageRunner::stageFinished);
         again.w.openWorkspace(fixture());
-        QCOMPARE(again.w.document()->launchOptions(), chosen);
+        QCOMPARE(again.w.document()->session()->launchOptions(), chosen);
         QVERIFY(finished.wait(10000));
         QCOMPARE(again.fullRuns.first(), chosen);
         // and restores the launch item selected when the last one closed

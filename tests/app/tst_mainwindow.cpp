@@ -258,14 +258,14 @@ private Q_SLOTS:
         w.logView()->diagnosticsView()->setCurrentIndex(scanFinding());
         QVERIFY(accept->isEnabled());
         accept->trigger();
-        QCOMPARE(w.document()->launchOptions().externals.size(), qsizetype(1));
-        const ExpectedExternal &e = w.document()->launchOptions().externals.front();
+        QCOMPARE(w.document()->session()->launchOptions().externals.size(), qsizetype(1));
+        const ExpectedExternal &e = w.document()->session()->launchOptions().externals.front();
         QCOMPARE(e.name, QStringLiteral("/map"));
         QVERIFY(!e.output);
         // The checks run again, without it; the project keeps the declaration.
         QTRY_VERIFY_WITH_TIMEOUT(
             !scanFinding().isValid() && !w.document()->architecture().diagnostics.isEmpty(), 60000);
-        QCOMPARE(w.document()->project().launch.externals.size(), qsizetype(1));
+        QCOMPARE(w.document()->session()->project().launch.externals.size(), qsizetype(1));
         QStringList left;
         for (const Diagnostic &d : w.document()->architecture().diagnostics)
             left << d.external;

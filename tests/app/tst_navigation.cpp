@@ -102,7 +102,8 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!doc()->architecture().composites.isEmpty(), 60000);
         QTRY_VERIFY_WITH_TIMEOUT(
             !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(doc()->keysReady(), 30000); // slow under a loaded CI machine
+        QTRY_VERIFY_WITH_TIMEOUT(doc()->session()->keysReady(),
+                                 30000); // slow under a loaded CI machine
         settle();
         nav()->clear(); // what the first result selected by itself is not the person's
     }
@@ -196,7 +197,7 @@ private Q_SLOTS:
         QCOMPARE(launchRow(), otherInstance);
         QCOMPARE(nav()->history()->current()->panel, Panel::Diagram);
         QCOMPARE(nav()->history()->current()->element,
-                 QStringLiteral("part ") + doc()->keyOf(otherInstance));
+                 QStringLiteral("part ") + doc()->session()->keyOf(otherInstance));
 
         // 4. A finding in the Log.
         QTreeView *findings = m_window->logView()->diagnosticsView();

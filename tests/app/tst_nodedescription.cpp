@@ -49,7 +49,7 @@ private Q_SLOTS:
         QCOMPARE(d.source, NodeDescription::Source::Code);
         QCOMPARE(d.sourceText(), QStringLiteral("from the code"));
 
-        doc.setNodeDescription(commander, QStringLiteral("Our mission commander."));
+        doc.session()->setNodeDescription(commander, QStringLiteral("Our mission commander."));
         d = NodeDescription::of(doc, commander);
         QCOMPARE(d.text, QStringLiteral("Our mission commander."));
         QCOMPARE(d.source, NodeDescription::Source::Correction);

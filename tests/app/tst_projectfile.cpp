@@ -60,11 +60,11 @@ QString decideOne(MainWindow &w)
 {
     Document *doc = w.document();
     const Recovery model{doc->atomicNodes(), doc->launchDependencies(), doc->architecture()};
-    doc->setSuggestions(
+    doc->session()->setSuggestions(
         SuggestionEngine(doc->workspaceRoot(), model, SuggestionEngine::Options()).run());
-    for (const Suggestion &s : doc->suggestions())
+    for (const Suggestion &s : doc->session()->suggestions())
         if (s.kind == Suggestion::Kind::NodeDescription) {
-            doc->acceptSuggestion(s.id);
+            doc->session()->acceptSuggestion(s.id);
             return s.value;
         }
     return {};
@@ -120,7 +120,7 @@ private Q_SLOTS:
             value = decideOne(w);
             QVERIFY(!value.isEmpty());
             QVERIFY(w.isWindowModified());
-            QVERIFY(w.document()->isModified());
+            QVERIFY(w.document()->session()->isModified());
             QVERIFY(!QFileInfo::exists(file)); // nothing written before Save
 
             w.projects()->saveAction()->trigger();
@@ -128,7 +128,7 @@ private Q_SLOTS:
             QVERIFY(test::readFile(file).contains(value.toUtf8()));
             QCOMPARE(storedDecisions(file), 1);
             QVERIFY(!w.isWindowModified());
-            QCOMPARE(w.document()->decisionsPath(), file);
+            QCOMPARE(w.document()->session()->projectPath(), file);
             QVERIFY(!QFileInfo::exists(ProjectFile::autosavePath(file)));
             QCOMPARE(AppSettings().recentProjects().value(0), file);
 
@@ -141,7 +141,7 @@ private Q_SLOTS:
             // The project holds the launch options as well.
             LaunchOptions options;
             options.arguments = {{QStringLiteral("robot"), QStringLiteral("r7")}};
-            w.document()->setLaunchOptions(options);
+            w.document()->session()->setLaunchOptions(options);
             QVERIFY(w.isWindowModified());
             QVERIFY(w.projects()->save());
             QVERIFY(test::readFile(file).contains("\"r7\""));
@@ -154,10 +154,11 @@ private Q_SLOTS:
         QSignalSpy finished(again.runner(), &StageRunner::stageFinished);
         QVERIFY(again.projects()->openProject(file));
         QCOMPARE(again.workspace(), ws);
-        QCOMPARE(again.document()->launchOptions().arguments.value(QStringLiteral("robot")),
-                 QStringLiteral("r7"));
+        QCOMPARE(
+            again.document()->session()->launchOptions().arguments.value(QStringLiteral("robot")),
+            QStringLiteral("r7"));
         QVERIFY(finished.wait(60000));
-        QCOMPARE(again.document()->decisions().size(), 1);
+        QCOMPARE(again.document()->session()->decisions().size(), 1);
         bool described = false;
         for (const AtomicNode &n : again.document()->atomicNodes().nodes)
             described |= n.description == value;
@@ -199,9 +200,9 @@ private Q_SLOTS:
         QSignalSpy finished(other.runner(), &StageRunner::stageFinished);
         QVERIFY(other.projects()->openProject(outside));
         QVERIFY(finished.wait(60000));
-        QCOMPARE(other.document()->decisionsPath(), outside);
-        QCOMPARE(other.document()->decisions().size(), 1);
-        QCOMPARE(other.document()->decisions().first().proposal, value);
+        QCOMPARE(other.document()->session()->projectPath(), outside);
+        QCOMPARE(other.document()->session()->decisions().size(), 1);
+        QCOMPARE(other.document()->session()->decisions().first().proposal, value);
 
         // Recent projects, newest first; a file that is gone is greyed.
         QCOMPARE(AppSettings().recentProjects().mid(0, 2), (QStringList{outside, inside}));
@@ -223,8 +224,8 @@ private Q_SLOTS:
         w.show();
         QVERIFY(openAndRun(w, ws));
         decideOne(w);
-        w.document()->setAutosaveInterval(50);
-        QTRY_VERIFY(QFileInfo::exists(w.document()->autosaveFile()));
+        w.document()->session()->setAutosaveInterval(50);
+        QTRY_VERIFY(QFileInfo::exists(w.document()->session()->autosaveFile()));
         QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
 
         // Cancel: the window stays, modified.
@@ -258,7 +259,7 @@ private Q_SLOTS:
         answer(ask, QMessageBox::Discard);
         QVERIFY(!w.isVisible());
         QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
-        QVERIFY(!QFileInfo::exists(w.document()->autosaveFile()));
+        QVERIFY(!QFileInfo::exists(w.document()->session()->autosaveFile()));
     }
 
     void saveFromTheQuestionWritesTheProject()
@@ -286,7 +287,7 @@ private Q_SLOTS:
         {
             auto *w = new MainWindow;
             QVERIFY(openAndRun(*w, ws));
-            w->document()->setAutosaveInterval(50);
+            w->document()->session()->setAutosaveInterval(50);
             value = decideOne(*w);
             QTRY_VERIFY(QFileInfo::exists(side)); // the autosave, not the project
             QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
@@ -304,11 +305,11 @@ private Q_SLOTS:
             QVERIFY2(offer->text().contains(
                          QString::number(QFileInfo(side).lastModified().date().year())),
                      qPrintable(offer->text()));
-            QVERIFY(w.document()->decisions().isEmpty());
+            QVERIFY(w.document()->session()->decisions().isEmpty());
             test::writeFile(side + QStringLiteral(".copy"), test::readFile(side));
             answer(offer, QMessageBox::Discard);
             QVERIFY(!QFileInfo::exists(side));
-            QVERIFY(w.document()->decisions().isEmpty());
+            QVERIFY(w.document()->session()->decisions().isEmpty());
             QVERIFY(!w.isWindowModified());
         }
         QVERIFY(QFile::rename(side + QStringLiteral(".copy"), side));
@@ -321,7 +322,7 @@ private Q_SLOTS:
         QVERIFY(offer);
         answer(offer, QMessageBox::Yes); // Recover, before the stages finish
         QVERIFY(finished.wait(60000));
-        QCOMPARE(w.document()->decisions().size(), 1);
+        QCOMPARE(w.document()->session()->decisions().size(), 1);
         bool described = false;
         for (const AtomicNode &n : w.document()->atomicNodes().nodes)
             described |= n.description == value;
@@ -379,7 +380,7 @@ private Q_SLOTS:
         error = box(w, QStringLiteral("projectErrorBox"));
         QVERIFY(error);
         QVERIFY(error->text().contains(broken));
-        QCOMPARE(w.document()->decisionsPath(), file);
+        QCOMPARE(w.document()->session()->projectPath(), file);
         QCOMPARE(test::readFile(broken), content);
         answer(error, QMessageBox::Ok);
     }
@@ -393,8 +394,8 @@ private Q_SLOTS:
         decideOne(w);
         QVERIFY(w.projects()->save());
         w.projects()->newAction()->trigger();
-        QVERIFY(w.document()->isUntitled());
-        QVERIFY(w.document()->decisions().isEmpty());
+        QVERIFY(w.document()->session()->isUntitled());
+        QVERIFY(w.document()->session()->decisions().isEmpty());
         QVERIFY(w.windowTitle().contains(QStringLiteral("new project")));
         const QString chosen = dir.filePath(QStringLiteral("fresh.project.json"));
         int asked = 0;
@@ -406,7 +407,7 @@ private Q_SLOTS:
         QCOMPARE(asked, 1);
         QCOMPARE(storedDecisions(chosen), 0);
         QCOMPARE(storedDecisions(ProjectFile::defaultPath(ws)), 1); // the old one untouched
-        QCOMPARE(w.document()->decisionsPath(), chosen);
+        QCOMPARE(w.document()->session()->projectPath(), chosen);
     }
 };
 

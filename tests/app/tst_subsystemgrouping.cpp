@@ -293,9 +293,9 @@ private Q_SLOTS:
         MainWindow w;
         Document *doc = w.document();
         doc->setRecovery(recovery);
-        doc->setSuggestions(report);
+        doc->session()->setSuggestions(report);
         const Suggestion *grouping = nullptr;
-        for (const Suggestion &s : doc->suggestions())
+        for (const Suggestion &s : doc->session()->suggestions())
             if (s.kind == Suggestion::Kind::SubsystemGrouping)
                 grouping = &s;
         QVERIFY(grouping);
@@ -305,11 +305,11 @@ private Q_SLOTS:
         for (const QString &ccd : exportedCcds(w, out))
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
 
-        QVERIFY(doc->acceptSuggestion(id));
-        QCOMPARE(doc->acceptedGroupings().size(), 1);
-        const QString name = doc->acceptedGroupings().first().name;
+        QVERIFY(doc->session()->acceptSuggestion(id));
+        QCOMPARE(doc->session()->acceptedGroupings().size(), 1);
+        const QString name = doc->session()->acceptedGroupings().first().name;
         QVERIFY(!name.isEmpty());
-        QStringList members = doc->acceptedGroupings().first().memberInstanceIds;
+        QStringList members = doc->session()->acceptedGroupings().first().memberInstanceIds;
         members.sort();
         QCOMPARE(membersOf(w.diagramPanel()->architecture(), name), members);
         QCOMPARE(grouped(doc->architecture()), QStringList()); // the model itself is unchanged
@@ -328,7 +328,7 @@ private Q_SLOTS:
         // The headless command applies the same decisions through the same function: every
         // artifact is byte-identical to the GUI's export.
         exportedCcds(w, out);
-        QVERIFY(doc->saveDecisions());
+        QVERIFY(doc->session()->save());
         QVERIFY(QFileInfo::exists(ProjectFile::locate(exampleWorkspace())));
         const QString headless = m_home.filePath(QStringLiteral("headless"));
         const test::Run run = test::runRosarch(

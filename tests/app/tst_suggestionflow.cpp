@@ -49,14 +49,14 @@ Snapshot snapshot(const Document &doc)
     Snapshot s;
     for (const AtomicNode &n : doc.atomicNodes().nodes)
         s.descriptions << n.id + QLatin1Char('=') + n.description;
-    for (const Suggestion &x : doc.suggestions())
+    for (const Suggestion &x : doc.session()->suggestions())
         s.statuses << x.id + QLatin1Char('=') + Suggestion::statusName(x.status);
-    for (const SuggestionDecision &d : doc.decisions())
+    for (const SuggestionDecision &d : doc.session()->decisions())
         s.decisions << Suggestion::kindName(d.kind) + QLatin1Char(' ') + d.targetId +
                            QLatin1Char(' ') + d.proposal + QLatin1Char(' ') +
                            Suggestion::statusName(d.status);
-    s.groupings = doc.acceptedGroupings();
-    s.names = doc.acceptedNames();
+    s.groupings = doc.session()->acceptedGroupings();
+    s.names = doc.session()->acceptedNames();
     return s;
 }
 
@@ -157,15 +157,15 @@ private Q_SLOTS:
         const Snapshot before = snapshot(doc);
         QSignalSpy changed(&doc, &Document::changed);
 
-        QVERIFY(doc.acceptSuggestion(s.id));
+        QVERIFY(doc.session()->acceptSuggestion(s.id));
         QCOMPARE(doc.atomicNodes().node(QStringLiteral("arc_1"))->description, s.value);
-        QCOMPARE(doc.suggestion(s.id)->status, Suggestion::Status::Accepted);
+        QCOMPARE(doc.session()->suggestion(s.id)->status, Suggestion::Status::Accepted);
         QCOMPARE(test::changedIds(changed, DocumentChange::Node),
                  QStringList{QStringLiteral("arc_1")});
         QCOMPARE(test::changedIds(changed, DocumentChange::Suggestion), QStringList{s.id});
         QCOMPARE(test::changesOf(changed, DocumentChange::Decisions).size(), 1);
         QCOMPARE(doc.undoStack()->count(), 1);
-        QVERIFY(!doc.acceptSuggestion(s.id)); // already accepted: nothing pushed
+        QVERIFY(!doc.session()->acceptSuggestion(s.id)); // already accepted: nothing pushed
         QCOMPARE(doc.undoStack()->count(), 1);
         const Snapshot after = snapshot(doc);
         QVERIFY(after != before);
@@ -184,12 +184,12 @@ private Q_SLOTS:
         const Suggestion s = first(doc, Suggestion::Kind::NodeDescription);
         const Snapshot before = snapshot(doc);
         QSignalSpy changed(&doc, &Document::changed);
-        QVERIFY(doc.rejectSuggestion(s.id));
+        QVERIFY(doc.session()->rejectSuggestion(s.id));
         const Snapshot after = snapshot(doc);
         QCOMPARE(after.descriptions, before.descriptions);
         QCOMPARE(after.groupings, before.groupings);
         QCOMPARE(test::changesOf(changed, DocumentChange::Node).size(), 0);
-        QCOMPARE(doc.suggestion(s.id)->status, Suggestion::Status::Rejected);
+        QCOMPARE(doc.session()->suggestion(s.id)->status, Suggestion::Status::Rejected);
         QCOMPARE(after.decisions,
                  QStringList{QStringLiteral("node-description arc_1 %1 rejected").arg(s.value)});
         doc.undoStack()->undo();
@@ -198,9 +198,9 @@ private Q_SLOTS:
         QVERIFY(snapshot(doc) == after);
 
         // Accepting what was rejected applies it; rejecting an accepted one takes it back.
-        QVERIFY(doc.acceptSuggestion(s.id));
+        QVERIFY(doc.session()->acceptSuggestion(s.id));
         QCOMPARE(doc.atomicNodes().node(s.targetId)->description, s.value);
-        QVERIFY(doc.rejectSuggestion(s.id));
+        QVERIFY(doc.session()->rejectSuggestion(s.id));
         QVERIFY(doc.atomicNodes().node(s.targetId)->description.isEmpty());
         QCOMPARE(doc.undoStack()->count(), 3);
         doc.undoStack()->undo();
@@ -212,21 +212,21 @@ private Q_SLOTS:
         Document doc;
         load(doc);
         const Suggestion g = first(doc, Suggestion::Kind::SubsystemGrouping);
-        QVERIFY(doc.acceptedGroupings().isEmpty());
+        QVERIFY(doc.session()->acceptedGroupings().isEmpty());
         const Snapshot before = snapshot(doc);
         QSignalSpy changed(&doc, &Document::changed);
-        QVERIFY(doc.acceptSuggestion(g.id));
+        QVERIFY(doc.session()->acceptSuggestion(g.id));
         QCOMPARE(test::changesOf(changed, DocumentChange::Decisions).size(), 1);
         const QList<SubsystemGroup> expected{{QStringLiteral("mission"),
                                               {QStringLiteral("n2"), QStringLiteral("n4"),
                                                QStringLiteral("n6"), QStringLiteral("n7")},
                                               g.targetId}};
-        QCOMPARE(doc.acceptedGroupings(), expected);
+        QCOMPARE(doc.session()->acceptedGroupings(), expected);
         QVERIFY(!g.targetId.isEmpty());
         QVERIFY(doc.launchDependencies().instance(g.targetId)->parentId.isEmpty()); // a root
         QCOMPARE(snapshot(doc).descriptions, before.descriptions);
         doc.undoStack()->undo();
-        QVERIFY(doc.acceptedGroupings().isEmpty());
+        QVERIFY(doc.session()->acceptedGroupings().isEmpty());
         QVERIFY(snapshot(doc) == before);
     }
 
@@ -236,12 +236,12 @@ private Q_SLOTS:
         load(doc);
         // One description decided on its own first: accept-all takes only the pending ones.
         const Suggestion rejected = first(doc, Suggestion::Kind::NodeDescription);
-        QVERIFY(doc.rejectSuggestion(rejected.id));
+        QVERIFY(doc.session()->rejectSuggestion(rejected.id));
         const Snapshot before = snapshot(doc);
-        QCOMPARE(doc.acceptAllSuggestions(Suggestion::Kind::NodeDescription), 7);
+        QCOMPARE(doc.session()->acceptAllSuggestions(Suggestion::Kind::NodeDescription), 7);
         QCOMPARE(doc.undoStack()->count(), 2);
         const Snapshot after = snapshot(doc);
-        for (const Suggestion &s : doc.suggestions()) {
+        for (const Suggestion &s : doc.session()->suggestions()) {
             if (s.id == rejected.id)
                 QCOMPARE(s.status, Suggestion::Status::Rejected);
             else if (s.kind == Suggestion::Kind::NodeDescription) {
@@ -251,7 +251,7 @@ private Q_SLOTS:
                 QCOMPARE(s.status, Suggestion::Status::Pending); // the grouping is another kind
         }
         QVERIFY(doc.atomicNodes().node(rejected.targetId)->description.isEmpty());
-        QCOMPARE(doc.acceptAllSuggestions(Suggestion::Kind::NodeDescription), 0);
+        QCOMPARE(doc.session()->acceptAllSuggestions(Suggestion::Kind::NodeDescription), 0);
         QCOMPARE(doc.undoStack()->count(), 2);
 
         doc.undoStack()->undo(); // one step takes back all seven
@@ -261,7 +261,7 @@ private Q_SLOTS:
         QVERIFY(snapshot(doc) == after);
         doc.undoStack()->undo();
         doc.undoStack()->undo();
-        QCOMPARE(doc.decisions().size(), 0);
+        QCOMPARE(doc.session()->decisions().size(), 0);
     }
 
     void runnerDeliversDeterministicSuggestions()
@@ -355,8 +355,8 @@ private Q_SLOTS:
         QVERIFY(server.requests().size() >= 2);
         QCOMPARE(server.requests().first().headers.value("authorization"),
                  "Bearer " + kSecret.toUtf8());
-        QCOMPARE(doc.suggestions().size(), 10);
-        const Suggestion &llm = doc.suggestions().last();
+        QCOMPARE(doc.session()->suggestions().size(), 10);
+        const Suggestion &llm = doc.session()->suggestions().last();
         QCOMPARE(llm.origin.provider, QStringLiteral("llm:fake-model"));
         QCOMPARE(llm.targetId, QStringLiteral("arc_1"));
         QCOMPARE(llm.status, Suggestion::Status::Pending);
@@ -395,8 +395,8 @@ private Q_SLOTS:
         QSignalSpy finished(controller.runner(), &SuggestionRunner::suggestionsFinished);
         controller.run();
         QVERIFY(finished.wait(30000));
-        QCOMPARE(doc.suggestions().size(), 9);
-        for (const Suggestion &s : doc.suggestions())
+        QCOMPARE(doc.session()->suggestions().size(), 9);
+        for (const Suggestion &s : doc.session()->suggestions())
             QCOMPARE(s.origin.provider, QStringLiteral("deterministic"));
         QCOMPARE(model.rowCount(), 9);
         const QStringList errors = log.filter(QStringLiteral("the LLM failed"));

@@ -63,7 +63,7 @@ private:
     {
         QFile::remove(ProjectFile::locate(exampleWorkspace()));
         doc.setRecovery(m_recovery);
-        doc.setSuggestions(m_report);
+        doc.session()->setSuggestions(m_report);
     }
 
 private Q_SLOTS:
@@ -103,20 +103,20 @@ private Q_SLOTS:
         QCOMPARE(model.columnCount(), 5);
         proxy.setStatusFilter(Suggestion::Status::Pending);
         QCOMPARE(proxy.rowCount(), 10);
-        QVERIFY(doc.acceptSuggestion(QStringLiteral("s1")));
+        QVERIFY(doc.session()->acceptSuggestion(QStringLiteral("s1")));
         QCOMPARE(proxy.rowCount(), 9); // left the pending view at once
-        QVERIFY(doc.rejectSuggestion(QStringLiteral("s2")));
-        doc.acceptAllSuggestions(Suggestion::Kind::NodeDescription);
+        QVERIFY(doc.session()->rejectSuggestion(QStringLiteral("s2")));
+        doc.session()->acceptAllSuggestions(Suggestion::Kind::NodeDescription);
         doc.undoStack()->undo();
         doc.undoStack()->undo();
         QCOMPARE(proxy.rowCount(), 9);
         proxy.setKindFilter(Suggestion::Kind::SubsystemGrouping);
         QCOMPARE(proxy.rowCount(), 1);
-        doc.setSuggestions(m_report); // a new run
-        const Suggestion::Status decided = doc.suggestion(QStringLiteral("s2"))->status;
+        doc.session()->setSuggestions(m_report); // a new run
+        const Suggestion::Status decided = doc.session()->suggestion(QStringLiteral("s2"))->status;
         doc.setRecovery(m_recovery); // the stages again: the suggestions stay, by key
         QCOMPARE(model.rowCount(), 10);
-        QCOMPARE(doc.suggestion(QStringLiteral("s2"))->status, decided);
+        QCOMPARE(doc.session()->suggestion(QStringLiteral("s2"))->status, decided);
         Recovery other = m_recovery;
         other.nodes.workspaceRoot += QStringLiteral("_elsewhere");
         doc.setRecovery(other); // another workspace: they go
@@ -193,10 +193,10 @@ private Q_SLOTS:
                                                  QStringLiteral("n6"), QStringLiteral("n7")}}));
         QCOMPARE(evidence.size(), 2);
         QVERIFY(panel.details()->toPlainText().contains(
-            doc.suggestion(QStringLiteral("s9"))->rationale));
+            doc.session()->suggestion(QStringLiteral("s9"))->rationale));
 
         // A citation clicked in the details shows those lines.
-        const Suggestion *g = doc.suggestion(QStringLiteral("s9"));
+        const Suggestion *g = doc.session()->suggestion(QStringLiteral("s9"));
         QVERIFY(g->evidence.size() > 1);
         QMetaObject::invokeMethod(panel.details(), "anchorClicked",
                                   Q_ARG(QUrl, QUrl(QStringLiteral("evidence:1"))));
@@ -218,12 +218,14 @@ private Q_SLOTS:
         panel.view()->setFocus();
 
         QTest::keyClick(panel.view(), Qt::Key_Return);
-        QCOMPARE(doc.suggestion(QStringLiteral("s1"))->status, Suggestion::Status::Accepted);
+        QCOMPARE(doc.session()->suggestion(QStringLiteral("s1"))->status,
+                 Suggestion::Status::Accepted);
         QCOMPARE(doc.atomicNodes().node(QStringLiteral("arc_1"))->description,
-                 doc.suggestion(QStringLiteral("s1"))->value);
+                 doc.session()->suggestion(QStringLiteral("s1"))->value);
         QCOMPARE(panel.currentSuggestionId(), QStringLiteral("s2")); // on to the next open one
         QTest::keyClick(panel.view(), Qt::Key_Delete);
-        QCOMPARE(doc.suggestion(QStringLiteral("s2"))->status, Suggestion::Status::Rejected);
+        QCOMPARE(doc.session()->suggestion(QStringLiteral("s2"))->status,
+                 Suggestion::Status::Rejected);
         QCOMPARE(panel.currentSuggestionId(), QStringLiteral("s3"));
         QCOMPARE(panel.countsLabel()->text(),
                  QStringLiteral("8 pending · 1 accepted · 1 rejected"));
@@ -274,7 +276,7 @@ private Q_SLOTS:
         doc.undoStack()->undo();
         QCOMPARE(panel.view()->model()->rowCount(), 10);
         // Selecting a hidden suggestion clears the filter that hides it.
-        QVERIFY(doc.rejectSuggestion(QStringLiteral("s4")));
+        QVERIFY(doc.session()->rejectSuggestion(QStringLiteral("s4")));
         panel.selectSuggestion(QStringLiteral("s4"));
         QCOMPARE(panel.currentSuggestionId(), QStringLiteral("s4"));
         QCOMPARE(panel.statusFilter()->currentIndex(), 0);
@@ -329,8 +331,8 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         test::saveScreenshot(panel, QStringLiteral("suggestions-empty.png"));
         load(doc);
-        QVERIFY(doc.acceptSuggestion(QStringLiteral("s2")));
-        QVERIFY(doc.rejectSuggestion(QStringLiteral("s3")));
+        QVERIFY(doc.session()->acceptSuggestion(QStringLiteral("s2")));
+        QVERIFY(doc.session()->rejectSuggestion(QStringLiteral("s3")));
         panel.setProgressText(QStringLiteral("Done: from the code"));
         panel.selectSuggestion(QStringLiteral("s9"));
         QVERIFY(panel.details()->toPlainText().contains(QStringLiteral("mission")));

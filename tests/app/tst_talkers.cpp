@@ -171,8 +171,8 @@ private Q_SLOTS:
         QVERIFY(!backup.isEmpty());
         Correction remove;
         remove.kind = Correction::Kind::Remove;
-        remove.target = doc()->keyOf(backup);
-        const QString id = doc()->addCorrection(remove);
+        remove.target = doc()->session()->keyOf(backup);
+        const QString id = doc()->session()->addCorrection(remove);
         QVERIFY(!id.isEmpty());
         QVERIFY(!row(talkers(), QStringLiteral("/backup_planner")));
         QVERIFY(row(talkers(), QStringLiteral("/planner")));

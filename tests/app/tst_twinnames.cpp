@@ -83,8 +83,8 @@ private Q_SLOTS:
         QCOMPARE(gui->asked, QStringList{QStringLiteral("Set Name")});
         QVERIFY2(offer.contains(QLatin1String("1 other port")) && offer.contains(kPose),
                  qPrintable(offer));
-        QCOMPARE(gui->document.corrections().size(), 2);
-        for (const Correction &c : gui->document.corrections()) {
+        QCOMPARE(gui->document.session()->corrections().size(), 2);
+        for (const Correction &c : gui->document.session()->corrections()) {
             QCOMPARE(c.kind, Correction::Kind::SetName);
             QCOMPARE(c.newValue, QStringLiteral("/cart/pose"));
         }
@@ -99,7 +99,7 @@ private Q_SLOTS:
         gui->document.undoStack()->undo();
         QCOMPARE(gui->portRow(pose.at(0)), kPose);
         QCOMPARE(gui->portRow(pose.at(1)), kPose);
-        QVERIFY(gui->document.corrections().isEmpty());
+        QVERIFY(gui->document.session()->corrections().isEmpty());
     }
 
     void theOfferCanBeDeclined()
@@ -113,7 +113,7 @@ private Q_SLOTS:
             return true;
         };
         QVERIFY(gui->controller->rename({EKind::Port, pose.last(), {}, {}}));
-        QCOMPARE(gui->document.corrections().size(), 1);
+        QCOMPARE(gui->document.session()->corrections().size(), 1);
         QCOMPARE(gui->portRow(pose.last()), QStringLiteral("/cart/pose"));
         QCOMPARE(gui->portRow(pose.first()), kPose);
     }
@@ -132,7 +132,7 @@ private Q_SLOTS:
         };
         QVERIFY(gui->controller->rename({EKind::Port, twist.first(), {}, {}}));
         QVERIFY(!offered);
-        QCOMPARE(gui->document.corrections().size(), 1);
+        QCOMPARE(gui->document.session()->corrections().size(), 1);
     }
 };
 

@@ -55,14 +55,14 @@ struct SuggestionFixture
     void load(Document &doc) const
     {
         doc.setRecovery(recovery);
-        doc.setSuggestions(deterministic);
+        doc.session()->setSuggestions(deterministic);
     }
 };
 
 /// The first suggestion of `kind` in `doc` (fails the test run when there is none).
 inline const Suggestion &firstOf(const Document &doc, Suggestion::Kind kind)
 {
-    for (const Suggestion &s : doc.suggestions())
+    for (const Suggestion &s : doc.session()->suggestions())
         if (s.kind == kind)
             return s;
     qFatal("no suggestion of that kind");

@@ -371,11 +371,11 @@ private Q_SLOTS:
         s.origin.provider = QStringLiteral("deterministic");
         SuggestionReport report;
         report.suggestions = {s};
-        doc.setSuggestions(report);
+        doc.session()->setSuggestions(report);
         QVERIFY(tipOf(model, QStringLiteral("arc_1"))
                     .contains(
                         QStringLiteral("No description in the code"))); // pending is not in effect
-        QVERIFY(doc.acceptSuggestion(QStringLiteral("s1")));
+        QVERIFY(doc.session()->acceptSuggestion(QStringLiteral("s1")));
         QVERIFY2(tipOf(model, QStringLiteral("arc_1"))
                      .contains(QStringLiteral("Description (from an accepted suggestion): Runs "
                                               "the path-following controllers.")),

@@ -259,7 +259,7 @@ private Q_SLOTS:
     void hideAndAcceptUndoAndPersist()
     {
         Document doc;
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         DiagnosticModel model(&doc);
         QAbstractItemModelTester tester(&model,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
@@ -275,13 +275,13 @@ private Q_SLOTS:
                  1);
         QVERIFY(changed.count() >= 2);
         QCOMPARE(model.shown(), total - 2);
-        QCOMPARE(doc.findingMarks().size(), 2);
-        const FindingMark accepted = *doc.project().finding(second);
+        QCOMPARE(doc.session()->findingMarks().size(), 2);
+        const FindingMark accepted = *doc.session()->project().finding(second);
         QCOMPARE(accepted.status, FindingMark::Status::Accepted);
         QCOMPARE(accepted.reason, QStringLiteral("the map comes from a bag"));
-        QCOMPARE(accepted.author, Document::author());
+        QCOMPARE(accepted.author, ProjectSession::author());
         QVERIFY(accepted.time.isValid());
-        QVERIFY(doc.isModified());
+        QVERIFY(doc.session()->isModified());
 
         // Shown again (greyed, marked) by the toggles.
         DiagnosticModel::Filter f;
@@ -314,7 +314,7 @@ private Q_SLOTS:
         // Undo takes the accept back, redo puts it back.
         doc.undoStack()->undo();
         QCOMPARE(model.shown(), total - 1);
-        QVERIFY(!doc.project().finding(second));
+        QVERIFY(!doc.session()->project().finding(second));
         doc.undoStack()->redo();
         QCOMPARE(model.shown(), total - 2);
 
@@ -325,7 +325,7 @@ private Q_SLOTS:
 
         // Saved and opened again.
         const QString file = QDir(m_ws.path()).filePath(QStringLiteral("rosarch.project.json"));
-        QVERIFY(doc.saveProjectAs(file));
+        QVERIFY(doc.session()->saveAs(file));
         Project onDisk;
         QString error;
         QVERIFY2(ProjectFile::read(file, &onDisk, &error), qPrintable(error));
@@ -334,14 +334,14 @@ private Q_SLOTS:
         Document reopened;
         DiagnosticModel again(&reopened);
         reopened.setRecovery(m_recovered);
-        QCOMPARE(reopened.findingMarks(), doc.findingMarks());
+        QCOMPARE(reopened.session()->findingMarks(), doc.session()->findingMarks());
         QCOMPARE(again.shown(), total - 2);
 
         // Restoring a finding removes its mark.
         f.showHidden = true;
         again.setFilter(f);
         QCOMPARE(again.restoreFindings({again.index(0, 0)}), 1);
-        QCOMPARE(reopened.findingMarks().size(), 1);
+        QCOMPARE(reopened.session()->findingMarks().size(), 1);
     }
 
     void checksFollowTheCorrectedModel()
@@ -350,7 +350,7 @@ private Q_SLOTS:
         // exports do: removing the node that publishes /odom_raw takes the planner's misspelt
         // /odom_raws finding away (nothing is like it any more).
         Document doc;
-        doc.setAutosaveInterval(60000);
+        doc.session()->setAutosaveInterval(60000);
         DiagnosticModel model(&doc);
         QAbstractItemModelTester tester(&model,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
@@ -367,12 +367,13 @@ private Q_SLOTS:
                 continue;
             Correction remove;
             remove.kind = Correction::Kind::Remove;
-            remove.target = doc.keyOf(n.id);
+            remove.target = doc.session()->keyOf(n.id);
             removals.append(remove);
         }
         QCOMPARE(removals.size(), 2);
         QSignalSpy changed(&model, &DiagnosticModel::findingsChanged);
-        QCOMPARE(doc.addCorrections(removals, QStringLiteral("Remove odometry")).size(), 2);
+        QCOMPARE(doc.session()->addCorrections(removals, QStringLiteral("Remove odometry")).size(),
+                 2);
         QVERIFY(changed.count() >= 1);
         QCOMPARE(misspelt(), 0);
         QVERIFY(messages(model) != before);
@@ -410,15 +411,15 @@ private Q_SLOTS:
         AtomicNodeList list = sample();
         list.diagnostics[2].aliases = {QStringLiteral("topic-unheard:0123456789abcdef")};
         doc.setAtomicNodes(list);
-        QCOMPARE(doc.markFindings({QStringLiteral("topic-unheard:0123456789abcdef")},
-                                  FindingMark::Status::Accepted),
+        QCOMPARE(doc.session()->markFindings({QStringLiteral("topic-unheard:0123456789abcdef")},
+                                             FindingMark::Status::Accepted),
                  1);
         QCOMPARE(model.shown(), 4);
         DiagnosticModel::Filter f;
         f.showAccepted = true;
         model.setFilter(f);
         QCOMPARE(model.restoreFindings({model.index(2, 0)}), 1);
-        QVERIFY(doc.findingMarks().isEmpty());
+        QVERIFY(doc.session()->findingMarks().isEmpty());
     }
 
     void panelFiltersAndStepsInViewOrder()

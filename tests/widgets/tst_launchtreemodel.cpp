@@ -235,7 +235,8 @@ private Q_SLOTS:
         nodes.nodes = {cls};
         nodes.workspaceRoot = QStringLiteral("/ws");
         document.setAtomicNodes(nodes);
-        document.setNodeDescription(QStringLiteral("arc_1"), QStringLiteral("Drives a camera."));
+        document.session()->setNodeDescription(QStringLiteral("arc_1"),
+                                               QStringLiteral("Drives a camera."));
         QCOMPARE(document.undoStack()->count(), 1);
         QSignalSpy changed(&document, &Document::changed);
         document.setLaunchDependencies(sample());
@@ -259,16 +260,16 @@ private Q_SLOTS:
         LaunchOptions options;
         options.rootFile = kRobot;
         options.arguments = {{QStringLiteral("second"), QStringLiteral("true")}};
-        document.setLaunchOptions(options);
+        document.session()->setLaunchOptions(options);
         QCOMPARE(changed.count(), 1);
         QVERIFY(changed.first().at(0).value<DocumentChange>().has(DocumentChange::LaunchOptions));
-        QCOMPARE(document.launchOptions(), options);
-        document.setLaunchOptions(options); // no change, no signal
+        QCOMPARE(document.session()->launchOptions(), options);
+        document.session()->setLaunchOptions(options); // no change, no signal
         QCOMPARE(changed.count(), 1);
         // stage results do not touch them
         document.setRecovery({AtomicNodeList(), sample(), {}});
         document.setLaunchDependencies({});
-        QCOMPARE(document.launchOptions(), options);
+        QCOMPARE(document.session()->launchOptions(), options);
     }
 
     void textHelpers()

@@ -365,6 +365,6 @@ int main(int argc, char **argv)
     }
     out() << QStringLiteral("overall longest UI gap: %1 ms\n").arg(app.longestGap());
     out().flush();
-    w.document()->discardChanges();
+    w.document()->session()->discardChanges();
     return 0;
 }

@@ -1,8 +1,9 @@
-// Document: the project on disk: loading, migration, saving, the modified state, autosave.
+// ProjectSession: the project on disk: loading, migration, saving, the modified state, autosave.
 #include "accepted/decisionstore.h"
 #include "document/correctioncommand.h"
 #include "document/decidesuggestioncommand.h"
 #include "document/document.h"
+#include "document/projectsession.h"
 #include "project/project.h"
 
 #include <QCoreApplication>
@@ -12,17 +13,37 @@
 
 namespace rosarch {
 
-void Document::loadDecisions()
+Project ProjectSession::project() const
+{
+    Project p = m_project;
+    p.launch = m_launchOptions;
+    p.workspace = m_projectPath.isEmpty()
+                      ? QString()
+                      : ProjectFile::workspaceField(m_projectPath, m_document->workspaceRoot());
+    p.decisions = keyedDecisions();
+    std::sort(p.decisions.begin(), p.decisions.end(),
+              [](const auto &a, const auto &b) { return a.key() < b.key(); });
+    return p;
+}
+
+bool ProjectSession::isUntitled() const
+{
+    return m_projectPath.isEmpty() && !m_document->workspaceRoot().isEmpty();
+}
+
+void ProjectSession::load()
 {
     m_project = {};
     m_unsaved = false;
     m_modifiedOutside = false;
     m_migrationPending = false;
-    const bool chosen = m_chosenProject && m_chosenProject->first == workspaceRoot();
-    setProjectPath(chosen ? m_chosenProject->second : ProjectFile::locate(workspaceRoot()));
+    const bool chosen = m_chosenProject && m_chosenProject->first == m_document->workspaceRoot();
+    setProjectPath(chosen ? m_chosenProject->second
+                          : ProjectFile::locate(m_document->workspaceRoot()));
     QList<SuggestionDecision> keyed;
-    const QString legacy =
-        workspaceRoot().isEmpty() || chosen ? QString() : DecisionStore::path(workspaceRoot());
+    const QString legacy = m_document->workspaceRoot().isEmpty() || chosen
+                               ? QString()
+                               : DecisionStore::path(m_document->workspaceRoot());
     if (!m_projectPath.isEmpty() && QFileInfo::exists(m_projectPath)) {
         QString error;
         if (ProjectFile::read(m_projectPath, &m_project, &error)) {
@@ -30,19 +51,21 @@ void Document::loadDecisions()
         } else {
             // kept under another name before anything is written over it
             const QString kept = ProjectFile::keepUnreadable(m_projectPath);
-            Q_EMIT projectLoadFailed(kept.isEmpty()
-                                         ? error
-                                         : QCoreApplication::translate(
-                                               "rosarch::Document", "%1\nThe file was kept as %2.")
-                                               .arg(error, kept));
+            Q_EMIT loadFailed(kept.isEmpty()
+                                  ? error
+                                  : QCoreApplication::translate("rosarch::Document",
+                                                                "%1\nThe file was kept as %2.")
+                                        .arg(error, kept));
         }
     } else if (!legacy.isEmpty() && QFileInfo::exists(legacy)) {
         // Decisions of an earlier version, by position: taken over once, by the ids of the
         // model they are opened with (not an empty one), then written as the project and the
         // old file set aside.
-        m_migrationPending = m_nodes.nodes.isEmpty();
+        m_migrationPending = m_document->atomicNodes().nodes.isEmpty();
         if (!m_migrationPending) {
-            const StableKeys keys(Recovery{m_nodes, m_launch, m_architecture});
+            const StableKeys keys(Recovery{m_document->atomicNodes(),
+                                           m_document->launchDependencies(),
+                                           m_document->architecture()});
             for (const SuggestionDecision &d : DecisionStore::load(legacy)) {
                 SuggestionDecision k;
                 if (CorrectedModel::keyed(d, keys, &k))
@@ -55,15 +78,10 @@ void Document::loadDecisions()
     m_launchOptions = m_project.launch;
     bindDecisions(keyed);
     if (m_modifiedOutside)
-        saveDecisions(); // migrated: on disk as the old file was
+        save(); // migrated: on disk as the old file was
 }
 
-void Document::applyStoredDescriptions()
-{
-    refreshDescriptions();
-}
-
-void Document::markDecisionsChanged()
+void ProjectSession::markChanged()
 {
     m_unsaved = true;
     // Started by the first unsaved change, not restarted by later ones: a burst of decisions,
@@ -75,12 +93,12 @@ void Document::markDecisionsChanged()
     updateModified();
 }
 
-bool Document::isModified() const
+bool ProjectSession::isModified() const
 {
-    return m_modifiedOutside || !m_undoStack.isClean();
+    return m_modifiedOutside || !m_document->undoStack()->isClean();
 }
 
-void Document::updateModified()
+void ProjectSession::updateModified()
 {
     const bool modified = isModified();
     if (modified == m_modifiedShown)
@@ -89,7 +107,7 @@ void Document::updateModified()
     Q_EMIT modifiedChanged(modified);
 }
 
-void Document::setProjectPath(const QString &path)
+void ProjectSession::setProjectPath(const QString &path)
 {
     if (path == m_projectPath)
         return;
@@ -97,16 +115,16 @@ void Document::setProjectPath(const QString &path)
     Q_EMIT projectPathChanged(path);
 }
 
-QString Document::autosaveFile() const
+QString ProjectSession::autosaveFile() const
 {
-    if (workspaceRoot().isEmpty())
+    if (m_document->workspaceRoot().isEmpty())
         return {};
     // A new project never saved keeps its changes where the workspace's project would.
-    return ProjectFile::autosavePath(m_projectPath.isEmpty() ? ProjectFile::locate(workspaceRoot())
-                                                             : m_projectPath);
+    return ProjectFile::autosavePath(
+        m_projectPath.isEmpty() ? ProjectFile::locate(m_document->workspaceRoot()) : m_projectPath);
 }
 
-bool Document::writeAutosave()
+bool ProjectSession::writeAutosave()
 {
     m_autosave.stop();
     if (!m_unsaved)
@@ -119,11 +137,11 @@ bool Document::writeAutosave()
         return true;
     }
     Project p = project();
-    p.workspace = ProjectFile::workspaceField(side, workspaceRoot());
+    p.workspace = ProjectFile::workspaceField(side, m_document->workspaceRoot());
     QString error;
     if (!ProjectFile::write(side, p, &error)) {
         // kept in memory; the next change, save or close tries again
-        Q_EMIT decisionsSaveFailed(
+        Q_EMIT saveFailed(
             QCoreApplication::translate("rosarch::Document", "autosave: %1").arg(error));
         return false;
     }
@@ -131,60 +149,60 @@ bool Document::writeAutosave()
     return true;
 }
 
-bool Document::saveDecisions()
+bool ProjectSession::save()
 {
-    if (workspaceRoot().isEmpty()) { // no workspace: nothing to keep them with
+    if (m_document->workspaceRoot().isEmpty()) { // no workspace: nothing to keep them with
         m_autosave.stop();
         m_unsaved = false;
         return true;
     }
     if (m_projectPath.isEmpty())
         return false; // a new project: saveProjectAs
-    return saveProjectAs(m_projectPath);
+    return saveAs(m_projectPath);
 }
 
-bool Document::saveProjectAs(const QString &file)
+bool ProjectSession::saveAs(const QString &file)
 {
     m_autosave.stop();
     Project p = project();
-    p.workspace = ProjectFile::workspaceField(file, workspaceRoot());
+    p.workspace = ProjectFile::workspaceField(file, m_document->workspaceRoot());
     QString error;
     if (!ProjectFile::write(file, p, &error)) {
-        Q_EMIT decisionsSaveFailed(error); // kept in memory and modified
+        Q_EMIT saveFailed(error); // kept in memory and modified
         if (m_unsaved)
             m_autosave.start();
         return false;
     }
     if (const QString side = autosaveFile(); !side.isEmpty())
         QFile::remove(side);
-    if (file != ProjectFile::locate(workspaceRoot()))
-        m_chosenProject = std::make_pair(workspaceRoot(), file);
+    if (file != ProjectFile::locate(m_document->workspaceRoot()))
+        m_chosenProject = std::make_pair(m_document->workspaceRoot(), file);
     setProjectPath(file);
     QFile::remove(autosaveFile());
     m_unsaved = false;
     m_modifiedOutside = false;
-    m_undoStack.setClean();
+    m_document->undoStack()->setClean();
     updateModified();
     return true;
 }
 
-void Document::discardChanges()
+void ProjectSession::discardChanges()
 {
     m_autosave.stop();
     discardAutosave();
     m_unsaved = false;
     m_modifiedOutside = false;
-    m_undoStack.setClean();
+    m_document->undoStack()->setClean();
     updateModified();
 }
 
-void Document::discardAutosave()
+void ProjectSession::discardAutosave()
 {
     if (const QString side = autosaveFile(); !side.isEmpty())
         QFile::remove(side);
 }
 
-bool Document::recoverAutosave(QString *error)
+bool ProjectSession::recoverAutosave(QString *error)
 {
     const QString side = autosaveFile();
     Project recovered;
@@ -201,29 +219,28 @@ bool Document::recoverAutosave(QString *error)
     return true;
 }
 
-void Document::setProjectFile(const QString &workspaceRoot, const QString &file)
+void ProjectSession::setProjectFile(const QString &workspaceRoot, const QString &file)
 {
     m_chosenProject = std::make_pair(workspaceRoot, file);
-    if (!workspaceRoot.isEmpty() && workspaceRoot == this->workspaceRoot())
-        reloadWith([this] { loadDecisions(); });
+    if (!workspaceRoot.isEmpty() && workspaceRoot == this->m_document->workspaceRoot())
+        reloadWith([this] { load(); });
 }
 
-void Document::reloadWith(const std::function<void()> &load)
+void ProjectSession::reloadWith(const std::function<void()> &load)
 {
     const LaunchOptions before = m_launchOptions;
     DocumentChange change{DocumentChange::Model | DocumentChange::Decisions, {}};
-    Q_EMIT aboutToChange(change);
+    Q_EMIT m_document->aboutToChange(change);
     m_autosave.stop();
-    m_corrected.reset();
-    for (AtomicNode &n : m_nodes.nodes)
-        n.description = m_analysisDescriptions.value(n.id, n.description);
+    m_document->dropAccepted();
+    m_document->setDescriptions(m_document->analysisDescriptions());
     m_modifiedOutside = false;
-    m_undoStack.clear();
+    m_document->undoStack()->clear();
     load();
     if (m_launchOptions != before)
         change.parts |= DocumentChange::LaunchOptions;
     updateModified();
-    Q_EMIT changed(change);
+    Q_EMIT m_document->changed(change);
     if (hasSuggestionReport()) {
         SuggestionReport report = m_suggestionReport; // statuses from this project's decisions
         setSuggestions(std::move(report));
