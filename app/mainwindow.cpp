@@ -1,29 +1,34 @@
 #include "app/mainwindow.h"
-#include "app/aboutdialog.h"
 #include "app/appsettings.h"
+#include "app/changeselector.h"
 #include "app/comparecontroller.h"
+#include "app/correctioncontroller.h"
 #include "app/diagramcontroller.h"
-#include "app/diagramfocus.h"
+#include "app/exportcontroller.h"
+#include "app/mainmenus.h"
 #include "app/navigationcontroller.h"
+#include "app/paneldocks.h"
 #include "app/parametercontroller.h"
 #include "app/projectcontroller.h"
 #include "app/rendercontroller.h"
 #include "app/stagecontroller.h"
 #include "app/stagerunner.h"
+#include "app/statuspresenter.h"
 #include "app/suggestioncontroller.h"
 #include "app/traceability.h"
 #include "app/workspacewatcher.h"
-#include "artifacts/artifactwriter.h"
-#include "diagram/diagramlayouter.h"
 #include "document/document.h"
+#include "pipeline/recovery.h"
 #include "project/project.h"
 #include "widgets/architecturediffview.h"
 #include "widgets/atomicnodemodel.h"
 #include "widgets/atomicnodepanel.h"
-#include "widgets/diagnosticfilterbar.h"
+#include "widgets/correctionmodel.h"
+#include "widgets/correctionpanel.h"
 #include "widgets/diagnosticmodel.h"
 #include "widgets/diagram/diagrampanel.h"
 #include "widgets/icons.h"
+#include "widgets/inspectorpanel.h"
 #include "widgets/launchargumentsdialog.h"
 #include "widgets/launchtreemodel.h"
 #include "widgets/launchtreepanel.h"
@@ -34,28 +39,13 @@
 #include "widgets/suggestionpanel.h"
 #include "widgets/talkerspanel.h"
 
-#include <Qsci/qsciscintilla.h>
-
-#include <QAction>
-#include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
-#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QLabel>
-#include <QLocale>
-#include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QPlainTextEdit>
-#include <QProgressBar>
-#include <QScreen>
 #include <QStatusBar>
-#include <QToolBar>
-#include <QToolButton>
-#include <QTreeView>
-#include <QUndoStack>
 
 #include <algorithm>
 
@@ -65,68 +55,59 @@ MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_document(new Document(this)), m_runner(new StageRunner(this)),
       m_nodeModel(new AtomicNodeModel(m_document, this)),
       m_launchModel(new LaunchTreeModel(m_document, this)),
-      m_diagnosticModel(new DiagnosticModel(m_document, this))
+      m_diagnosticModel(new DiagnosticModel(m_document, this)),
+      m_suggestionModel(new SuggestionModel(m_document, this)),
+      m_correctionModel(new CorrectionModel(m_document, this))
 {
     setWindowTitle(tr("rosarch[*]"));
     setWindowIcon(Icons::application());
     setAcceptDrops(true);
     setDockNestingEnabled(true);
 
-    createPanels();
+    m_docks = new PanelDocks(this);
+    m_docks->nodePanel()->setModel(m_nodeModel);
+    m_docks->launchPanel()->setModel(m_launchModel);
+    m_docks->logView()->setModel(m_diagnosticModel);
+    m_docks->suggestionPanel()->setModel(m_suggestionModel);
+    m_docks->correctionPanel()->setModel(m_correctionModel);
+    createControllers();
     Icons::warmUp(this); // before the first result is painted
-    m_stages = new StageController(m_document, m_runner, m_traceability, m_logView, this);
-    m_watcher = new WorkspaceWatcher(this);
-    m_watcher->setEnabled(AppSettings().watchWorkspace());
-    connect(m_watcher, &WorkspaceWatcher::rerunRequested, this,
-            [this](WorkspaceWatcher::Rerun rerun, const QStringList &files) {
-                statusBar()->showMessage(tr("%n file(s) changed on disk (%1); analysing again",
-                                            nullptr, int(files.size()))
-                                             .arg(files.mid(0, 3).join(QLatin1String(", "))),
-                                         5000);
-                if (rerun == WorkspaceWatcher::Rerun::Launch)
-                    m_stages->runLaunch();
-                else
-                    m_stages->runAll();
-            });
-    // Past the bound only folders are watched: edits in place go unseen, so say it once.
-    connect(m_watcher, &WorkspaceWatcher::watching, this, [this] {
-        if (m_watcher->watchesFiles() || m_foldersOnlyNoted == m_watcher->workspace())
-            return;
-        m_foldersOnlyNoted = m_watcher->workspace();
-        m_logView->appendLog(
-            tr("This workspace has more than %L1 files and folders to watch, so only its "
-               "folders are watched: files added, removed or replaced (as most editors save) "
-               "start a new analysis, a file edited in place does not. Press F5 after such an "
-               "edit.")
-                .arg(WorkspaceWatcher::kMaxWatchedPaths));
-    });
-    createActions();
-    createMenus();
-    createStatusBar();
+    m_stages = new StageController(m_document, m_runner, m_traceability, m_docks->logView(), this);
+    createWatcher();
+    m_projects = new ProjectController(m_document, m_docks->logView(), this);
+    m_navigation = new NavigationController(m_document,
+                                            {m_docks->nodePanel(), m_docks->launchPanel(),
+                                             m_docks->diagramPanel(), m_docks->sourceView(),
+                                             m_docks->logView()},
+                                            this);
+    auto *changes = new ChangeSelector(m_document, m_docks->changesView(), m_traceability,
+                                       m_docks->diagramPanel(), this);
+    connect(changes, &ChangeSelector::statusMessage, statusBar(), &QStatusBar::showMessage);
+
+    m_exports = new ExportController(this, m_document, m_stages, m_docks->logView());
+    m_menus =
+        new MainMenus(this, {m_document, m_runner, m_docks, m_watcher, m_projects, m_navigation,
+                             m_diagrams, m_render, m_compare, m_suggestions, m_corrections});
+    connect(m_menus, &MainMenus::openWorkspaceRequested, this, &MainWindow::openWorkspaceDialog);
+    connect(m_menus, &MainMenus::workspaceRequested, this, &MainWindow::openWorkspace);
+    connect(m_menus, &MainMenus::exportArtifactsRequested, m_exports,
+            &ExportController::exportArtifactsDialog);
+    connect(m_menus, &MainMenus::exportNodlRequested, m_exports,
+            &ExportController::exportNodlDialog);
+    connect(m_menus, &MainMenus::exportSiteRequested, m_exports,
+            &ExportController::exportSiteDialog);
+    connect(m_menus, &MainMenus::runAllRequested, this, &MainWindow::runAllStages);
+    connect(m_menus, &MainMenus::runLaunchRequested, this, &MainWindow::runLaunchStage);
+    connect(m_menus, &MainMenus::launchArgumentsRequested, this,
+            &MainWindow::showLaunchArgumentsDialog);
+    m_status =
+        new StatusPresenter(this, m_document, m_runner, m_stages, m_docks, m_menus->cancelAction());
 
     connect(m_stages, &StageController::statusMessage, statusBar(), &QStatusBar::showMessage);
-    connect(m_runner, &StageRunner::stageStarted, this, &MainWindow::onStageStarted);
-    connect(m_runner, &StageRunner::stageProgressed, this, &MainWindow::onStageProgressed);
-    connect(m_runner, &StageRunner::stageFinished, this, [this] {
-        m_runStopped = false;
-        setRunning(false);
-    });
-    connect(m_runner, &StageRunner::launchStageFinished, this, [this] {
-        m_runStopped = false;
-        setRunning(false);
-    });
-    connect(m_runner, &StageRunner::stageCanceled, this, [this] {
-        m_runStopped = true;
-        setRunning(false);
-    });
-    connect(m_runner, &StageRunner::stageFailed, this, [this] {
-        m_runStopped = true;
-        setRunning(false);
-    });
     const auto filesMayHaveChanged = [this] {
         // The files may have changed since they were shown; start the source view afresh.
-        m_sourceView->setWorkspaceRoot(m_document->workspaceRoot());
-        m_sourceView->clear();
+        m_docks->sourceView()->setWorkspaceRoot(m_document->workspaceRoot());
+        m_docks->sourceView()->clear();
         updateCounts();
     };
     connect(m_document, &Document::changed, this, [filesMayHaveChanged](const DocumentChange &c) {
@@ -144,9 +125,9 @@ MainWindow::MainWindow(QWidget *parent)
             &MainWindow::runLaunchStage);
     connect(m_projects, &ProjectController::statusMessage, statusBar(), &QStatusBar::showMessage);
 
-    restoreSession();
+    m_docks->restoreLayout();
     updateCounts();
-    setRunning(false);
+    m_status->setRunning(false);
 }
 
 MainWindow::~MainWindow() = default;
@@ -156,82 +137,34 @@ QString MainWindow::workspace() const
     return m_stages->workspace();
 }
 
-void MainWindow::createPanels()
+void MainWindow::createControllers()
 {
-    m_nodePanel = new AtomicNodePanel(this);
-    m_nodePanel->setModel(m_nodeModel);
-    m_launchPanel = new LaunchTreePanel(this);
-    m_launchPanel->setModel(m_launchModel);
-    m_diagramLayouter = new DiagramLayouter(this);
-    m_diagramPanel = new DiagramPanel(m_diagramLayouter, this);
-    m_sourceView = new SourceView(this);
-    m_logView = new LogView(this);
-    m_logView->setModel(m_diagnosticModel);
-    // Folders dropped anywhere open a workspace; the text views must not swallow them.
-    m_sourceView->editor()->setAcceptDrops(false);
-    m_sourceView->editor()->viewport()->setAcceptDrops(false);
-    m_logView->logEdit()->setAcceptDrops(false);
-    m_logView->logEdit()->viewport()->setAcceptDrops(false);
-
-    const auto makeDock = [this](QWidget *widget, const QString &title, const QString &name) {
-        auto *dock = new QDockWidget(title, this);
-        dock->setObjectName(name);
-        dock->setWidget(widget);
-        dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable |
-                          QDockWidget::DockWidgetFloatable);
-        return dock;
-    };
-    m_nodeDock = makeDock(m_nodePanel, tr("Atomic nodes"), QStringLiteral("atomicNodesDock"));
-    m_launchDock = makeDock(m_launchPanel, tr("Launch tree"), QStringLiteral("launchTreeDock"));
-    m_diagramDock = makeDock(m_diagramPanel, tr("Composed diagram"), QStringLiteral("diagramDock"));
-    m_sourceDock = makeDock(m_sourceView, tr("Source"), QStringLiteral("sourceDock"));
-    m_logDock = makeDock(m_logView, tr("Log"), QStringLiteral("logDock"));
-    // The title (and its tab) counts the findings; the View menu keeps saying "Log".
-    connect(m_logView, &LogView::titleChanged, m_logDock, [this](const QString &title) {
-        m_logDock->setWindowTitle(title);
-        m_logDock->toggleViewAction()->setText(tr("Log"));
-    });
-    m_suggestionModel = new SuggestionModel(m_document, this);
-    m_suggestionPanel = new SuggestionPanel(this);
-    m_suggestionPanel->setModel(m_suggestionModel);
-    m_suggestionDock =
-        makeDock(m_suggestionPanel, tr("Suggestions"), QStringLiteral("suggestionsDock"));
-    m_changesView = new ArchitectureDiffView(this);
-    m_changesDock =
-        makeDock(m_changesView, tr("Architecture changes"), QStringLiteral("changesDock"));
-    m_talkersPanel = new TalkersPanel(this);
-    m_talkersDock = makeDock(m_talkersPanel, tr("Talkers"), QStringLiteral("talkersDock"));
-    m_parameterPanel = new ParameterPanel(this);
-    m_parameterDock =
-        makeDock(m_parameterPanel, tr("Parameters"), QStringLiteral("parametersDock"));
-    createCorrectionDocks();
-    resetLayout();
-
-    m_traceability = new Traceability(m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
-                                      m_sourceView, this);
-    connect(m_nodePanel, &AtomicNodePanel::evidenceRequested, m_traceability,
+    AtomicNodePanel *nodePanel = m_docks->nodePanel();
+    LaunchTreePanel *launchPanel = m_docks->launchPanel();
+    DiagramPanel *diagramPanel = m_docks->diagramPanel();
+    LogView *logView = m_docks->logView();
+    SuggestionPanel *suggestionPanel = m_docks->suggestionPanel();
+    m_traceability = new Traceability(m_nodeModel, nodePanel, m_launchModel, launchPanel,
+                                      m_docks->sourceView(), this);
+    connect(nodePanel, &AtomicNodePanel::evidenceRequested, m_traceability,
             &Traceability::showEvidence);
     connect(m_traceability, &Traceability::evidenceUnavailable, this,
             [this](const Evidence &evidence) {
                 statusBar()->showMessage(tr("Cannot show %1").arg(evidence.file), 5000);
             });
-    connect(m_launchPanel, &LaunchTreePanel::classRequested, this, [this] {
-        m_nodeDock->show();
-        m_nodeDock->raise();
-    });
-    connect(m_logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
-    new ParameterController(m_document, m_nodeModel, m_nodePanel, m_launchModel, m_launchPanel,
-                            m_parameterPanel, m_traceability, this);
-    connect(m_logView, &LogView::externalsAccepted, this, &MainWindow::acceptExternals);
-    m_diagrams = new DiagramController(m_document, m_diagramPanel, m_launchPanel, m_traceability,
-                                       m_talkersPanel, m_logView, this);
+    connect(launchPanel, &LaunchTreePanel::classRequested, this,
+            [this] { m_docks->bringForward(PanelDocks::Dock::Nodes); });
+    connect(logView, &LogView::evidenceRequested, m_traceability, &Traceability::showEvidence);
+    new ParameterController(m_document, m_nodeModel, nodePanel, m_launchModel, launchPanel,
+                            m_docks->parameterPanel(), m_traceability, this);
+    connect(logView, &LogView::externalsAccepted, this, &MainWindow::acceptExternals);
+    m_diagrams = new DiagramController(m_document, diagramPanel, launchPanel, m_traceability,
+                                       m_docks->talkersPanel(), logView, this);
     connect(m_diagrams, &DiagramController::statusMessage, statusBar(), &QStatusBar::showMessage);
-    connect(m_diagrams, &DiagramController::talkersShown, this, [this] {
-        m_talkersDock->show();
-        m_talkersDock->raise();
-    });
+    connect(m_diagrams, &DiagramController::talkersShown, this,
+            [this] { m_docks->bringForward(PanelDocks::Dock::Talkers); });
 
-    m_suggestions = new SuggestionController(m_document, m_suggestionPanel, this);
+    m_suggestions = new SuggestionController(m_document, suggestionPanel, this);
     m_suggestions->setPreviews({[this](const Evidence &e) { m_traceability->showEvidence(e); },
                                 [this](const QString &arcId) { m_traceability->selectNode(arcId); },
                                 [this](const QStringList &ids) {
@@ -252,123 +185,79 @@ void MainWindow::createPanels()
         else
             m_nodeModel->setDescriptionPreview({}, {});
     };
-    connect(m_suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this, preview);
-    connect(m_document, &Document::changed, this, [this, preview](const DocumentChange &c) {
-        // accepted or rejected: no preview
-        if (c.has(DocumentChange::Suggestion) && c.id == m_suggestionPanel->currentSuggestionId())
-            preview(c.id);
-    });
-    m_compare = new CompareController(m_document, m_changesView, m_changesDock, m_logView, this);
-    m_render = new RenderController(m_document, m_logView, this);
+    connect(suggestionPanel, &SuggestionPanel::currentSuggestionChanged, this, preview);
+    connect(
+        m_document, &Document::changed, this, [suggestionPanel, preview](const DocumentChange &c) {
+            // accepted or rejected: no preview
+            if (c.has(DocumentChange::Suggestion) && c.id == suggestionPanel->currentSuggestionId())
+                preview(c.id);
+        });
+    m_compare = new CompareController(m_document, m_docks->changesView(),
+                                      m_docks->dock(PanelDocks::Dock::Changes), logView, this);
+    m_render = new RenderController(m_document, logView, this);
     connect(m_render, &RenderController::status, this,
             [this](const QString &message) { statusBar()->showMessage(message, 8000); });
-    connect(m_suggestions, &SuggestionController::logged, m_logView, &LogView::appendLog);
+    connect(m_suggestions, &SuggestionController::logged, logView, &LogView::appendLog);
     connect(m_suggestions, &SuggestionController::statusMessage, statusBar(),
             &QStatusBar::showMessage);
-    createCorrectionController();
+
+    CorrectionPanel *correctionPanel = m_docks->correctionPanel();
+    m_corrections =
+        new CorrectionController(m_document, nodePanel, launchPanel, diagramPanel, m_traceability,
+                                 m_docks->inspector(), correctionPanel, this);
+    connect(m_corrections, &CorrectionController::statusMessage, statusBar(),
+            &QStatusBar::showMessage);
+    connect(m_document, &Document::changed, this,
+            [this, correctionPanel](const DocumentChange &change) {
+                // a new correction is listed where a person can see and revert it; the views stay
+                // where the person is (showing its element would move them)
+                if (change.has(DocumentChange::Corrections) &&
+                    m_document->session()->correction(change.id))
+                    correctionPanel->listCorrection(change.id);
+            });
 }
 
-void MainWindow::takeOutDock(QDockWidget *dock)
+void MainWindow::createWatcher()
 {
-    // Docked first, then taken out: a floating dock taken out stays a window of its own when
-    // it is split or tabified in again (Reset Layout left a floated Log floating).
-    dock->setFloating(false);
-    removeDockWidget(dock);
+    m_watcher = new WorkspaceWatcher(this);
+    m_watcher->setEnabled(AppSettings().watchWorkspace());
+    connect(m_watcher, &WorkspaceWatcher::rerunRequested, this,
+            [this](WorkspaceWatcher::Rerun rerun, const QStringList &files) {
+                statusBar()->showMessage(tr("%n file(s) changed on disk (%1); analysing again",
+                                            nullptr, int(files.size()))
+                                             .arg(files.mid(0, 3).join(QLatin1String(", "))),
+                                         5000);
+                if (rerun == WorkspaceWatcher::Rerun::Launch)
+                    m_stages->runLaunch();
+                else
+                    m_stages->runAll();
+            });
+    // Past the bound only folders are watched: edits in place go unseen, so say it once.
+    connect(m_watcher, &WorkspaceWatcher::watching, this, [this] {
+        if (m_watcher->watchesFiles() || m_foldersOnlyNoted == m_watcher->workspace())
+            return;
+        m_foldersOnlyNoted = m_watcher->workspace();
+        m_docks->logView()->appendLog(
+            tr("This workspace has more than %L1 files and folders to watch, so only its "
+               "folders are watched: files added, removed or replaced (as most editors save) "
+               "start a new analysis, a file edited in place does not. Press F5 after such an "
+               "edit.")
+                .arg(WorkspaceWatcher::kMaxWatchedPaths));
+    });
 }
 
-void MainWindow::resetLayout()
+void MainWindow::updateCounts()
 {
-    if (m_diagramFocus)
-        m_diagramFocus->setFocused(false); // the panels it hid come back with the rest
-    const QList<QDockWidget *> docks{m_nodeDock,   m_launchDock, m_diagramDock,
-                                     m_sourceDock, m_logDock,    m_suggestionDock};
-    for (QDockWidget *dock : docks)
-        takeOutDock(dock);
-    // One nested dock area fills the window (there is no central widget): the model views
-    // side by side on top (atomic nodes | launch tree | diagram | source), the log across the
-    // bottom. Growing the window grows them all. In a small window the Log takes the whole bottom
-    // row, Suggestions a tab beside it: side by side at 1024 px its filter bar took three lines and
-    // the table showed two findings.
-    const bool small = isSmallLayout(size());
-    addDockWidget(Qt::TopDockWidgetArea, m_nodeDock);
-    splitDockWidget(m_nodeDock, small ? m_logDock : m_suggestionDock, Qt::Vertical);
-    if (small)
-        tabifyDockWidget(m_logDock, m_suggestionDock);
-    else
-        splitDockWidget(m_suggestionDock, m_logDock, Qt::Horizontal);
-    splitDockWidget(m_nodeDock, m_launchDock, Qt::Horizontal);
-    splitDockWidget(m_launchDock, m_diagramDock, Qt::Horizontal);
-    splitDockWidget(m_diagramDock, m_sourceDock, Qt::Horizontal);
-    for (QDockWidget *dock : docks)
-        dock->show();
-    // Architecture changes and talkers share the log's place and appear when a comparison
-    // runs or a topic, service, action or port is clicked; the parameters of what is selected
-    // are a tab there from the start.
-    for (QDockWidget *dock : {m_changesDock, m_talkersDock, m_parameterDock}) {
-        if (!dock)
-            continue;
-        takeOutDock(dock);
-        tabifyDockWidget(m_logDock, dock);
-        dock->setVisible(dock == m_parameterDock);
-    }
-    placeCorrectionDocks();
-    m_logDock->raise();
-    if (m_toolBar)
-        m_toolBar->show();
-    const int w = std::max(width(), 800);
-    const int h = std::max(height(), 600);
-    resizeDocks({m_nodeDock, m_launchDock, m_diagramDock, m_sourceDock},
-                {w * 2 / 10, w * 2 / 10, w * 4 / 10, w * 2 / 10}, Qt::Horizontal);
-    if (small) {
-        resizeDocks({m_nodeDock, m_logDock}, {h * 6 / 10, h * 4 / 10}, Qt::Vertical);
-        return;
-    }
-    resizeDocks({m_nodeDock, m_suggestionDock}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
-    resizeDocks({m_suggestionDock, m_logDock}, {w / 2, w / 2}, Qt::Horizontal);
-}
-
-void MainWindow::restoreSession()
-{
-    m_defaultState = saveState();
-    AppSettings settings;
-    const QByteArray geometry = settings.windowGeometry();
-    if (geometry.isEmpty() || !restoreGeometry(geometry)) {
-        const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1600, 1000);
-        // A small screen is given whole: nine tenths of 1024 x 700 left the docks too little.
-        const bool smallScreen = available.width() < 1280 || available.height() < 800;
-        if (smallScreen)
-            setGeometry(available);
-        else
-            resize(std::min(1440, available.width() * 9 / 10),
-                   std::min(900, available.height() * 9 / 10));
-        resetLayout();
-        m_defaultState = saveState();
-    }
-    // A layout saved in a window of the other size class (the large one's side-by-side Log on
-    // a small screen) would be cramped: the layout of this size is made instead.
-    const QSize savedAt = settings.windowStateSize();
-    if (!savedAt.isValid() || isSmallLayout(savedAt) == isSmallLayout(size()))
-        restoreState(settings.windowState());
-    else
-        resetLayout();
-    m_logView->filterBar()->restoreState(settings.logFilter());
-}
-
-bool MainWindow::isSmallLayout(const QSize &size)
-{
-    return size.width() < 1280 || size.height() < 800;
+    const RecoveryCounts counts = m_status->updateCounts();
+    m_menus->enableForResult(!m_document->atomicNodes().workspaceRoot.isEmpty(),
+                             counts.diagnostics);
 }
 
 void MainWindow::saveSession()
 {
-    if (m_diagramFocus)
-        m_diagramFocus->setFocused(false); // the layout to come back to, not the focus
-    AppSettings settings;
-    settings.setWindowGeometry(saveGeometry());
-    settings.setWindowState(saveState());
-    settings.setWindowStateSize(size());
-    settings.setLogFilter(m_logView->filterBar()->state());
+    m_docks->saveLayout();
     if (!workspace().isEmpty()) {
+        AppSettings settings;
         settings.setSelection(workspace(), m_traceability->currentNodeId(),
                               m_traceability->currentPortId());
         settings.setLaunchSelection(workspace(), m_traceability->currentLaunchId());
@@ -532,63 +421,14 @@ void MainWindow::showLaunchArgumentsDialog()
     dialog->open();
 }
 
-void MainWindow::updateRecentMenu()
-{
-    m_recentMenu->clear();
-    const QStringList recent = AppSettings().recentWorkspaces();
-    if (recent.isEmpty()) {
-        m_recentMenu->addAction(tr("No recent workspaces"))->setEnabled(false);
-        return;
-    }
-    for (int i = 0; i < recent.size(); ++i) {
-        const QString &path = recent[i];
-        const QString label = tr("&%1 %2 — %3")
-                                  .arg(i + 1 < 10 ? QString::number(i + 1) : QStringLiteral("1&0"))
-                                  .arg(QFileInfo(path).fileName(), QDir::toNativeSeparators(path));
-        QAction *action = m_recentMenu->addAction(label);
-        action->setData(path);
-        connect(action, &QAction::triggered, this, [this, path] { openWorkspace(path); });
-    }
-    m_recentMenu->addSeparator();
-    connect(m_recentMenu->addAction(tr("&Clear Menu")), &QAction::triggered, this,
-            [] { AppSettings().clearRecentWorkspaces(); });
-}
-
-void MainWindow::exportArtifactsDialog()
-{
-    AppSettings settings;
-    QString start = settings.lastExportFolder();
-    if (start.isEmpty())
-        start = workspace().isEmpty() ? QDir::homePath() : QFileInfo(workspace()).path();
-    const QString folder =
-        QFileDialog::getExistingDirectory(this, tr("Export Artifacts To"), start);
-    if (folder.isEmpty())
-        return;
-    settings.setLastExportFolder(folder);
-    exportArtifactsTo(folder);
-}
-
 bool MainWindow::exportArtifactsTo(const QString &folder)
 {
-    QStringList written;
-    QString error, notice;
-    // The model as accepted: accepted groupings are nested composites in the CCDs, accepted
-    // names resolve ports, exactly as `rosarch recover` writes it for the same decisions.
-    if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error, {}, &notice)) {
-        showError(tr("Export failed"),
-                  tr("The artifacts could not be written to “%1”:\n%2\n\n"
-                     "Choose a folder you can write to, or free some space, and export again.")
-                      .arg(QDir::toNativeSeparators(folder), error));
-        m_logView->appendLog(tr("Export to %1 failed: %2").arg(folder, error));
-        return false;
-    }
-    const QString message = written.size() == 1 ? tr("Exported 1 file to %1")
-                                                : tr("Exported %1 files to %2").arg(written.size());
-    m_logView->appendLog(message.arg(QDir::toNativeSeparators(folder)));
-    if (!notice.isEmpty())
-        m_logView->appendLog(notice);
-    statusBar()->showMessage(message.arg(QDir::toNativeSeparators(folder)), 5000);
-    return true;
+    return m_exports->exportArtifactsTo(folder);
+}
+
+bool MainWindow::exportNodlTo(const QString &folder)
+{
+    return m_exports->exportNodlTo(folder);
 }
 
 void MainWindow::showError(const QString &title, const QString &text)

@@ -55,10 +55,11 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1400, 900);
         w.show();
-        w.document()->setRecovery(handBuiltRecovery());
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
-        QsciScintilla *editor = w.sourceView()->editor();
+        test::child<Document>(w)->setRecovery(handBuiltRecovery());
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_2"),
+                                                       QStringLiteral("p1")));
+        QsciScintilla *editor = test::child<SourceView>(w)->editor();
         QVERIFY(editor->lexer()->paper(0).lightnessF() > 0.5);
 
         // the system switches to dark while the window is open
@@ -84,8 +85,9 @@ private Q_SLOTS:
         saveScreenshot(w, QStringLiteral("mainwindow_dark.png"));
 
         // a launch file in XML follows the dark palette too
-        w.launchPanel()->selectSourceIndex(w.launchModel()->nodeIndex(QStringLiteral("n2")));
-        QCOMPARE(w.sourceView()->currentFile(), kListenerLaunch);
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(
+            test::child<LaunchTreeModel>(w)->nodeIndex(QStringLiteral("n2")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListenerLaunch);
         QsciLexer *xml = editor->lexer();
         QCOMPARE(QString::fromLatin1(xml->language()), QStringLiteral("XML"));
         QCOMPARE(xml->paper(0), dark.color(QPalette::Base));
@@ -94,8 +96,9 @@ private Q_SLOTS:
                 QVERIFY2(xml->color(style).lightnessF() >= 0.55,
                          qPrintable(xml->description(style) + QStringLiteral(" is too dark")));
         saveScreenshot(w, QStringLiteral("mainwindow_dark_launch.png"));
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_2"),
+                                                       QStringLiteral("p1")));
 
         // and back to light: the keywords are dark again
         QApplication::setPalette(light);

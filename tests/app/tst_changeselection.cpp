@@ -6,6 +6,7 @@
 #include "diagram/diagrambuilder.h"
 #include "document/document.h"
 #include "support/diagramwait.h"
+#include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/architecturediffview.h"
 #include "widgets/atomicnodemodel.h"
@@ -31,9 +32,9 @@ class TestChangeSelection : public QObject
     QTemporaryDir m_dir;
     MainWindow *m_window = nullptr;
 
-    Document *doc() const { return m_window->document(); }
-    DiagramPanel *diagram() const { return m_window->diagramPanel(); }
-    QTreeWidget *tree() const { return m_window->changesView()->tree(); }
+    Document *doc() const { return test::child<Document>(*m_window); }
+    DiagramPanel *diagram() const { return test::child<DiagramPanel>(*m_window); }
+    QTreeWidget *tree() const { return test::child<ArchitectureDiffView>(*m_window)->tree(); }
 
     /// Makes the row of the `i`th change current, as a click on it does.
     void choose(int i)
@@ -121,15 +122,16 @@ private Q_SLOTS:
              QStringLiteral("gone_pkg/Gone"),
              {}},
         };
-        m_window->changesView()->setChanges(changes, QStringLiteral("before"),
-                                            QStringLiteral("now"));
+        test::child<ArchitectureDiffView>(*m_window)->setChanges(changes, QStringLiteral("before"),
+                                                                 QStringLiteral("now"));
 
         choose(0);
-        QCOMPARE(m_window->nodeModel()->elementId(m_window->nodePanel()->currentSourceIndex()),
+        QCOMPARE(test::child<AtomicNodeModel>(*m_window)->elementId(
+                     test::child<AtomicNodePanel>(*m_window)->currentSourceIndex()),
                  cls->id + u'/' + port.id);
 
         choose(1);
-        QCOMPARE(m_window->launchPanel()
+        QCOMPARE(test::child<LaunchTreePanel>(*m_window)
                      ->currentSourceIndex()
                      .data(LaunchTreeModel::InstanceIdRole)
                      .toString(),

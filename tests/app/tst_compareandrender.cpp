@@ -9,6 +9,7 @@
 #include "diff/gitrevision.h"
 #include "document/document.h"
 #include "support/chatrepo.h"
+#include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
 #include "widgets/architecturediffview.h"
@@ -42,7 +43,7 @@ QStringList rows(const QTreeWidget *tree, QList<QColor> *colours = nullptr)
 
 void openAndRun(MainWindow &w, const QString &workspace)
 {
-    QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+    QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
     w.openWorkspace(workspace);
     QVERIFY(finished.wait(60000));
 }
@@ -66,12 +67,12 @@ private Q_SLOTS:
         w.resize(1400, 900);
         w.show();
         openAndRun(w, m_repo.path());
-        QSignalSpy done(w.compare(), &CompareController::finished);
-        w.compare()->compareWithRevision(QStringLiteral("HEAD~1"));
+        QSignalSpy done(test::child<CompareController>(w), &CompareController::finished);
+        test::child<CompareController>(w)->compareWithRevision(QStringLiteral("HEAD~1"));
         QVERIFY(done.wait(60000));
         QVERIFY(w.findChild<QDockWidget *>(QStringLiteral("changesDock"))->isVisible());
         QList<QColor> colours;
-        const QStringList shown = rows(w.changesView()->tree(), &colours);
+        const QStringList shown = rows(test::child<ArchitectureDiffView>(w)->tree(), &colours);
         QCOMPARE(shown.size(), 6);
         QVERIFY(shown.contains(QStringLiteral("~ renamed topic: /chatter → /chat")));
         QVERIFY(shown.contains(
@@ -83,21 +84,23 @@ private Q_SLOTS:
             QStringLiteral("+ added port: subscriber clock (rosgraph_msgs/msg/Clock)")));
         const int renamed = int(shown.indexOf(QStringLiteral("~ renamed topic: /chatter → /chat")));
         QVERIFY(colours.at(added) != colours.at(renamed));
-        QVERIFY(w.changesView()->summary().startsWith(
+        QVERIFY(test::child<ArchitectureDiffView>(w)->summary().startsWith(
             QLatin1String("6 changes from revision HEAD~1 to the current model: 3 added")));
         test::saveScreenshot(w, QStringLiteral("compare_revision.png"));
 
         // The same revision against itself: nothing changed, and the view says so.
-        w.compare()->compareWithRevision(QStringLiteral("HEAD"));
+        test::child<CompareController>(w)->compareWithRevision(QStringLiteral("HEAD"));
         QVERIFY(done.wait(60000));
-        QVERIFY(rows(w.changesView()->tree()).isEmpty());
-        QVERIFY(w.changesView()->summary().startsWith(QLatin1String("No architecture changes")));
+        QVERIFY(rows(test::child<ArchitectureDiffView>(w)->tree()).isEmpty());
+        QVERIFY(test::child<ArchitectureDiffView>(w)->summary().startsWith(
+            QLatin1String("No architecture changes")));
 
         // A revision that does not exist: git's message, no changes, no crash.
-        w.compare()->compareWithRevision(QStringLiteral("no-such-revision"));
+        test::child<CompareController>(w)->compareWithRevision(QStringLiteral("no-such-revision"));
         QVERIFY(done.wait(60000));
-        QVERIFY2(w.changesView()->summary().contains(QLatin1String("Cannot compare")),
-                 qPrintable(w.changesView()->summary()));
+        QVERIFY2(test::child<ArchitectureDiffView>(w)->summary().contains(
+                     QLatin1String("Cannot compare")),
+                 qPrintable(test::child<ArchitectureDiffView>(w)->summary()));
     }
 
     void compareWithArtifactFolder()
@@ -106,10 +109,10 @@ private Q_SLOTS:
         QTemporaryDir out;
         MainWindow w;
         openAndRun(w, m_repo.path());
-        QSignalSpy rendered(w.render(), &RenderController::rendered);
+        QSignalSpy rendered(test::child<RenderController>(w), &RenderController::rendered);
         AppSettings().setPlantUmlJar(QStringLiteral(ROSARCH_PLANTUML_JAR));
-        QVERIFY(w.render()->exportAndRender(out.path()));
-        QVERIFY(w.render()->isRendering());
+        QVERIFY(test::child<RenderController>(w)->exportAndRender(out.path()));
+        QVERIFY(test::child<RenderController>(w)->isRendering());
         QVERIFY(rendered.wait(120000));
         QVERIFY2(rendered.first().at(0).toBool(), qPrintable(rendered.first().at(1).toString()));
         const QStringList pictures = rendered.first().at(2).toStringList();
@@ -119,17 +122,17 @@ private Q_SLOTS:
         QVERIFY(test::readFile(out.filePath(QStringLiteral("ccd/chat.svg"))).contains("hearer"));
         QVERIFY(QFile::exists(out.filePath(QStringLiteral("mermaid/chat.md"))));
 
-        QSignalSpy done(w.compare(), &CompareController::finished);
-        w.compare()->compareWithFolder(out.path());
+        QSignalSpy done(test::child<CompareController>(w), &CompareController::finished);
+        test::child<CompareController>(w)->compareWithFolder(out.path());
         QVERIFY(done.wait(60000));
-        QVERIFY(w.compare()->changes().isEmpty());
+        QVERIFY(test::child<CompareController>(w)->changes().isEmpty());
         // A folder that is a workspace is recovered and compared: the older revision.
         QTemporaryDir old;
         QString error;
         QVERIFY(GitRevision::checkout(m_repo.path(), QStringLiteral("HEAD~1"), old.path(), &error));
-        w.compare()->compareWithFolder(old.path());
+        test::child<CompareController>(w)->compareWithFolder(old.path());
         QVERIFY(done.wait(60000));
-        QCOMPARE(w.compare()->changes().size(), 6);
+        QCOMPARE(test::child<CompareController>(w)->changes().size(), 6);
     }
 
     void aChosenJarThatIsGoneIsSaidNotReplaced()
@@ -138,9 +141,9 @@ private Q_SLOTS:
         openAndRun(w, m_repo.path());
         AppSettings().setPlantUmlJar(QStringLiteral("/no/such/plantuml.jar"));
         QTemporaryDir out;
-        QSignalSpy rendered(w.render(), &RenderController::rendered);
-        QVERIFY(!w.render()->exportAndRender(out.path()));
-        QVERIFY(!w.render()->isRendering());
+        QSignalSpy rendered(test::child<RenderController>(w), &RenderController::rendered);
+        QVERIFY(!test::child<RenderController>(w)->exportAndRender(out.path()));
+        QVERIFY(!test::child<RenderController>(w)->isRendering());
         QVERIFY(!QFile::exists(out.filePath(QStringLiteral("atomic_nodes.json"))));
         QMessageBox *box = w.findChild<QMessageBox *>();
         QVERIFY(box);

@@ -2,6 +2,7 @@
 // other panels back as they were; the layout remembered on quitting is the one to come back to.
 #include "app/diagramfocus.h"
 #include "app/mainwindow.h"
+#include "support/guifixture.h"
 #include "widgets/diagram/diagrampanel.h"
 
 #include <QAction>
@@ -50,23 +51,24 @@ private Q_SLOTS:
 
         QTest::keyClick(&w, Qt::Key_D, Qt::ControlModifier | Qt::ShiftModifier);
         QTRY_COMPARE(visibleDocks(w), QStringList{QStringLiteral("diagramDock")});
-        QVERIFY(w.diagramFocus()->action()->isChecked());
+        QVERIFY(test::child<DiagramFocus>(w)->action()->isChecked());
         QVERIFY(!toolBar->isVisible());
         QTRY_VERIFY(diagramDock->width() > w.width() * 9 / 10);
         QVERIFY(diagramDock->height() > small.height());
 
         QTest::keyClick(&w, Qt::Key_D, Qt::ControlModifier | Qt::ShiftModifier);
         QTRY_COMPARE(visibleDocks(w), before);
-        QVERIFY(w.diagramPanel()->isAncestorOf(QApplication::focusWidget())); // still there
-        QVERIFY(!w.diagramFocus()->action()->isChecked());
+        QVERIFY(
+            test::child<DiagramPanel>(w)->isAncestorOf(QApplication::focusWidget())); // still there
+        QVERIFY(!test::child<DiagramFocus>(w)->action()->isChecked());
         QVERIFY(toolBar->isVisible());
         QTRY_COMPARE(diagramDock->size(), small);
 
         // Focused when the window closes: what is remembered is the layout with every panel.
-        w.diagramFocus()->action()->trigger();
+        test::child<DiagramFocus>(w)->action()->trigger();
         QTRY_COMPARE(visibleDocks(w), QStringList{QStringLiteral("diagramDock")});
         w.close();
-        QVERIFY(!w.diagramFocus()->isFocused());
+        QVERIFY(!test::child<DiagramFocus>(w)->isFocused());
         MainWindow again;
         again.show();
         QVERIFY(QTest::qWaitForWindowExposed(&again));

@@ -5,6 +5,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
 #include "widgets/atomicnodemodel.h"
@@ -57,8 +58,8 @@ class TestDiagramIntegration : public QObject
 
     MainWindow *m_window = nullptr;
 
-    DiagramPanel *panel() const { return m_window->diagramPanel(); }
-    Document *doc() const { return m_window->document(); }
+    DiagramPanel *panel() const { return test::child<DiagramPanel>(*m_window); }
+    Document *doc() const { return test::child<Document>(*m_window); }
 
     bool waitForLayout()
     {
@@ -76,7 +77,7 @@ private Q_SLOTS:
         m_window = new MainWindow;
         m_window->resize(1600, 900);
         m_window->show();
-        QSignalSpy finished(m_window->runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(*m_window), &StageRunner::stageFinished);
         m_window->openWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
         QVERIFY(finished.wait(60000));
         QVERIFY(waitForLayout());
@@ -108,7 +109,8 @@ private Q_SLOTS:
         const QString detector = instanceNamed(doc(), QStringLiteral("detector"));
         QVERIFY(!detector.isEmpty());
         const QString composite = doc()->launchDependencies().node(detector)->launchFileId;
-        m_window->launchPanel()->selectSourceIndex(m_window->launchModel()->nodeIndex(detector));
+        test::child<LaunchTreePanel>(*m_window)->selectSourceIndex(
+            test::child<LaunchTreeModel>(*m_window)->nodeIndex(detector));
         QVERIFY(waitForLayout());
         QCOMPARE(panel()->currentComposite(), composite);
         QCOMPARE(panel()->breadcrumbIds(), (QStringList{QStringLiteral("lf1"), composite}));
@@ -133,10 +135,10 @@ private Q_SLOTS:
         panel()->showComposite(QStringLiteral("lf1"));
         QVERIFY(waitForLayout());
         Q_EMIT panel()->partActivated(planner); // what a click on the part emits
-        const QModelIndex current = m_window->launchPanel()->currentSourceIndex();
+        const QModelIndex current = test::child<LaunchTreePanel>(*m_window)->currentSourceIndex();
         QCOMPARE(current.data(LaunchTreeModel::InstanceIdRole).toString(), planner);
         // The launch line of the instance shows in the source view.
-        QCOMPARE(m_window->sourceView()->currentFile(),
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(),
                  QStringLiteral("src/planning/launch/system.launch.py"));
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1")); // no jump elsewhere
     }
@@ -147,15 +149,15 @@ private Q_SLOTS:
         const NodeInstance *n = doc()->launchDependencies().node(rectifier);
         Q_EMIT panel()->portActivated(rectifier,
                                       QStringLiteral("p1")); // what a click on the port emits
-        QCOMPARE(m_window->launchPanel()
+        QCOMPARE(test::child<LaunchTreePanel>(*m_window)
                      ->currentSourceIndex()
                      .data(LaunchTreeModel::InstanceIdRole)
                      .toString(),
                  rectifier);
-        const QModelIndex port = m_window->nodePanel()->currentSourceIndex();
+        const QModelIndex port = test::child<AtomicNodePanel>(*m_window)->currentSourceIndex();
         QCOMPARE(port.data(AtomicNodeModel::NodeIdRole).toString(), n->classId);
         QCOMPARE(port.data(AtomicNodeModel::PortIdRole).toString(), QStringLiteral("p1"));
-        QCOMPARE(m_window->sourceView()->currentFile(),
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(),
                  QStringLiteral("src/vision/src/rectifier.cpp"));
     }
 
@@ -163,8 +165,8 @@ private Q_SLOTS:
     {
         const QStringList members{instanceNamed(doc(), QStringLiteral("planner")),
                                   instanceNamed(doc(), QStringLiteral("backup_planner"))};
-        m_window->diagrams()->previewGrouping(QStringLiteral("planning"), members,
-                                              QStringLiteral("lf1"));
+        test::child<DiagramController>(*m_window)->previewGrouping(QStringLiteral("planning"),
+                                                                   members, QStringLiteral("lf1"));
         QVERIFY(waitForLayout());
         QCOMPARE(panel()->currentComposite(), QStringLiteral("lf1"));
         QStringList grouped;
@@ -176,7 +178,7 @@ private Q_SLOTS:
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
         for (const RosNodePart &p : doc()->architecture().composite(QStringLiteral("lf1"))->parts)
             QVERIFY(p.subsystem.isEmpty()); // only a preview
-        m_window->diagrams()->previewGrouping({}, {}, {});
+        test::child<DiagramController>(*m_window)->previewGrouping({}, {}, {});
         QVERIFY(waitForLayout());
         QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
     }
@@ -202,15 +204,15 @@ private Q_SLOTS:
         report.suggestions = {description, grouping};
         doc()->session()->setSuggestions(report);
 
-        m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s1"));
-        const QModelIndex cell =
-            m_window->nodeModel()->nodeIndex(planner.id, AtomicNodeModel::DescriptionColumn);
+        test::child<SuggestionPanel>(*m_window)->selectSuggestion(QStringLiteral("s1"));
+        const QModelIndex cell = test::child<AtomicNodeModel>(*m_window)->nodeIndex(
+            planner.id, AtomicNodeModel::DescriptionColumn);
         QCOMPARE(cell.data().toString(),
                  QStringLiteral("Plans velocity commands from detections. (suggested)"));
         QVERIFY(cell.data(Qt::FontRole).value<QFont>().italic());
         QVERIFY(doc()->atomicNodes().node(planner.id)->description.isEmpty()); // only a preview
 
-        m_window->suggestionPanel()->selectSuggestion(QStringLiteral("s2"));
+        test::child<SuggestionPanel>(*m_window)->selectSuggestion(QStringLiteral("s2"));
         QVERIFY(waitForLayout());
         QCOMPARE(cell.data().toString(), QString()); // the description preview ended
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
@@ -229,7 +231,7 @@ private Q_SLOTS:
         doc()->undoStack()->undo();
         QVERIFY(waitForLayout());
         doc()->session()->setSuggestions({});
-        m_window->diagrams()->previewGrouping({}, {}, {});
+        test::child<DiagramController>(*m_window)->previewGrouping({}, {}, {});
         QVERIFY(waitForLayout());
         QVERIFY(!panel()->scene()->item(QStringLiteral("subsystem:planning")));
     }
@@ -279,10 +281,12 @@ private Q_SLOTS:
             test::dataDir(QStringLiteral("compose_system/broken/vision_missing_detector.puml")),
             reference.filePath(QStringLiteral("vision.puml"))));
         QString error;
-        const QString report = m_window->diagrams()->compareWithReference(reference.path(), &error);
+        const QString report = test::child<DiagramController>(*m_window)->compareWithReference(
+            reference.path(), &error);
         QVERIFY2(!report.isEmpty(), qPrintable(error));
         QVERIFY(report.contains(QLatin1String("FP RosNodePart: detector")));
-        const LevelEvaluation *ccd = m_window->diagrams()->comparison().level(UmlLevel::Ccd);
+        const LevelEvaluation *ccd =
+            test::child<DiagramController>(*m_window)->comparison().level(UmlLevel::Ccd);
         QVERIFY(ccd);
         QVERIFY(ccd->micro.precision < 1.0);
         QCOMPARE(ccd->micro.recall, 1.0);
@@ -304,15 +308,16 @@ private Q_SLOTS:
         test::saveScreenshot(*m_window, QStringLiteral("diagram-comparison.png"));
 
         // Against the hand-checked expected model nothing is marked and every score is 1.
-        const QString exact = m_window->diagrams()->compareWithReference(
+        const QString exact = test::child<DiagramController>(*m_window)->compareWithReference(
             test::dataDir(QStringLiteral("compose_system/expected")), &error);
         QVERIFY(!exact.isEmpty());
-        for (const LevelEvaluation &l : m_window->diagrams()->comparison().levels)
+        for (const LevelEvaluation &l :
+             test::child<DiagramController>(*m_window)->comparison().levels)
             QCOMPARE(l.micro.f1, 1.0);
         QVERIFY(waitForLayout());
         QVERIFY(markedKeys(panel()).isEmpty());
 
-        QVERIFY(m_window->diagrams()
+        QVERIFY(test::child<DiagramController>(*m_window)
                     ->compareWithReference(QStringLiteral("/nonexistent/reference"), &error)
                     .isEmpty());
         QVERIFY(!error.isEmpty());
@@ -323,8 +328,8 @@ private Q_SLOTS:
         QTemporaryDir out;
         const QString svg = out.filePath(QStringLiteral("vision.svg"));
         const QString png = out.filePath(QStringLiteral("vision.png"));
-        QVERIFY(m_window->diagrams()->exportDiagram(svg));
-        QVERIFY(m_window->diagrams()->exportDiagram(png));
+        QVERIFY(test::child<DiagramController>(*m_window)->exportDiagram(svg));
+        QVERIFY(test::child<DiagramController>(*m_window)->exportDiagram(png));
         QVERIFY(test::readFile(svg).contains("rectifier"));
         QImage image(png);
         QVERIFY(!image.isNull());

@@ -5,6 +5,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/diagram/diagrampanel.h"
 #include "widgets/diagram/diagramrootpicker.h"
@@ -36,19 +37,19 @@ void makeWorkspace(const QString &root)
 /// The stem of the root the window's diagram shows.
 QString shownStem(MainWindow &w)
 {
-    const Composite *c =
-        w.diagramPanel()->architecture().composite(w.diagramPanel()->breadcrumbIds().value(0));
+    const Composite *c = test::child<DiagramPanel>(w)->architecture().composite(
+        test::child<DiagramPanel>(w)->breadcrumbIds().value(0));
     return c ? c->stem : QString();
 }
 
 bool openAndWait(MainWindow &w, const QString &root)
 {
-    QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+    QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
     w.openWorkspace(root);
-    while (finished.isEmpty() || w.runner()->isRunning())
+    while (finished.isEmpty() || test::child<StageRunner>(w)->isRunning())
         if (!finished.wait(60000))
             return false;
-    DiagramPanel *panel = w.diagramPanel();
+    DiagramPanel *panel = test::child<DiagramPanel>(w);
     QSignalSpy laidOut(panel, &DiagramPanel::layoutFinished);
     return !panel->isLayingOut() || laidOut.wait(30000);
 }
@@ -81,12 +82,12 @@ private Q_SLOTS:
             QVERIFY(openAndWait(w, root));
             // No name says which: demo includes the most, so it comes first.
             QCOMPARE(shownStem(w), QStringLiteral("demo"));
-            DiagramRootPicker *picker = w.diagramPanel()->rootPicker();
+            DiagramRootPicker *picker = test::child<DiagramPanel>(w)->rootPicker();
             QCOMPARE(picker->count(), 3);
             QCOMPARE(picker->currentText(), QStringLiteral("demo — 3 includes"));
             const int beta = picker->findText(QStringLiteral("beta — 0 includes"));
             QVERIFY(beta >= 0);
-            QSignalSpy laidOut(w.diagramPanel(), &DiagramPanel::layoutFinished);
+            QSignalSpy laidOut(test::child<DiagramPanel>(w), &DiagramPanel::layoutFinished);
             picker->setCurrentIndex(beta);
             Q_EMIT picker->activated(beta);
             QVERIFY(!laidOut.isEmpty() || laidOut.wait(30000));
@@ -101,7 +102,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&again));
         QVERIFY(openAndWait(again, root));
         QCOMPARE(shownStem(again), QStringLiteral("beta"));
-        QCOMPARE(again.diagramPanel()->rootPicker()->currentText(),
+        QCOMPARE(test::child<DiagramPanel>(again)->rootPicker()->currentText(),
                  QStringLiteral("beta — 0 includes"));
     }
 };

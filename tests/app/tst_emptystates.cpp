@@ -33,31 +33,34 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1500, 900);
         w.show();
-        QVERIFY(w.nodePanel()->placeholderLabel()->text().contains(QStringLiteral("Open")));
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QVERIFY(test::child<AtomicNodePanel>(w)->placeholderLabel()->text().contains(
+            QStringLiteral("Open")));
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(dir.path());
         QVERIFY(finished.wait(60000));
-        QVERIFY(w.nodePanel()->placeholderLabel()->isVisible());
-        QCOMPARE(w.nodePanel()->placeholderLabel()->text(),
+        QVERIFY(test::child<AtomicNodePanel>(w)->placeholderLabel()->isVisible());
+        QCOMPARE(test::child<AtomicNodePanel>(w)->placeholderLabel()->text(),
                  QStringLiteral("No ROS 2 package in this folder.\n\nrosarch finds packages by "
                                 "their package.xml. Open the folder that holds them: a "
                                 "workspace, or its src folder."));
-        QCOMPARE(w.launchPanel()->placeholderLabel()->text(),
+        QCOMPARE(test::child<LaunchTreePanel>(w)->placeholderLabel()->text(),
                  QStringLiteral("No ROS 2 package in this folder, so no launch files either."));
-        QCOMPARE(w.diagramPanel()->message(),
+        QCOMPARE(test::child<DiagramPanel>(w)->message(),
                  QStringLiteral("No ROS 2 package in this folder: there is nothing to compose."));
         saveScreenshot(w, QStringLiteral("empty_states_no_package.png"));
 
         test::writeFile(dir.path() + QStringLiteral("/src/tools/package.xml"),
                         "<package format=\"3\"><name>tools</name><export><build_type>"
                         "ament_python</build_type></export></package>\n");
-        QSignalSpy again(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy again(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(dir.path());
         QVERIFY(again.wait(60000));
-        QVERIFY(!w.nodePanel()->placeholderLabel()->isVisible()); // the package, with 0 nodes
-        QVERIFY(w.launchPanel()->placeholderLabel()->text().startsWith(
+        QVERIFY(!test::child<AtomicNodePanel>(w)
+                     ->placeholderLabel()
+                     ->isVisible()); // the package, with 0 nodes
+        QVERIFY(test::child<LaunchTreePanel>(w)->placeholderLabel()->text().startsWith(
             QStringLiteral("No launch files found in this workspace.")));
-        QVERIFY(w.diagramPanel()->message().startsWith(
+        QVERIFY(test::child<DiagramPanel>(w)->message().startsWith(
             QStringLiteral("No launch files, so nothing to compose")));
         saveScreenshot(w, QStringLiteral("empty_states.png"));
     }
@@ -69,18 +72,18 @@ private Q_SLOTS:
         QTemporaryDir dir;
         MainWindow w;
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(dir.path());
         QVERIFY(finished.wait(60000));
-        Q_EMIT w.runner()->stageCanceled(StageRunner::Job::Recovery);
+        Q_EMIT test::child<StageRunner>(w)->stageCanceled(StageRunner::Job::Recovery);
         const QString stopped =
             QStringLiteral("The run stopped before it had a result, so nothing is known yet.\n\n"
                            "Run it again with Stages → Run All.");
-        QCOMPARE(w.nodePanel()->placeholderLabel()->text(), stopped);
-        QCOMPARE(w.launchPanel()->placeholderLabel()->text(), stopped);
-        QCOMPARE(w.diagramPanel()->message(), stopped);
-        Q_EMIT w.runner()->stageFinished(Recovery());
-        QVERIFY(w.nodePanel()->placeholderLabel()->text().startsWith(
+        QCOMPARE(test::child<AtomicNodePanel>(w)->placeholderLabel()->text(), stopped);
+        QCOMPARE(test::child<LaunchTreePanel>(w)->placeholderLabel()->text(), stopped);
+        QCOMPARE(test::child<DiagramPanel>(w)->message(), stopped);
+        Q_EMIT test::child<StageRunner>(w)->stageFinished(Recovery());
+        QVERIFY(test::child<AtomicNodePanel>(w)->placeholderLabel()->text().startsWith(
             QStringLiteral("No ROS 2 package in this folder.")));
     }
 };

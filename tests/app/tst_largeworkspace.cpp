@@ -5,6 +5,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/guifixture.h"
 #include "syntheticworkspace.h"
 #include "widgets/atomicnodemodel.h"
 #include "widgets/diagram/diagrampanel.h"
@@ -100,30 +101,32 @@ private Q_SLOTS:
         QStringList statusMessages;
         connect(w.statusBar(), &QStatusBar::messageChanged, this,
                 [&](const QString &m) { statusMessages << m; });
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
-        QSignalSpy progressed(w.runner(), &StageRunner::stageProgressed);
-        QSignalSpy timed(w.runner(), &StageRunner::stageTimed);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
+        QSignalSpy progressed(test::child<StageRunner>(w), &StageRunner::stageProgressed);
+        QSignalSpy timed(test::child<StageRunner>(w), &StageRunner::stageTimed);
         StallWatch watch;
         w.openWorkspace(dir.path());
         QVERIFY(finished.wait(120000));
         QTest::qWait(300); // what the result sets off (diagram, views) runs
 
         // The result arrived, in the document and in the views.
-        const AtomicNodeList &nodes = w.document()->atomicNodes();
+        const AtomicNodeList &nodes = test::child<Document>(w)->atomicNodes();
         QCOMPARE(nodes.nodes.size(), kPackages);
-        QCOMPARE(w.nodeModel()->rowCount(), kPackages); // one package row each
-        const QModelIndex relay = w.nodeModel()->nodeIndex(nodes.nodes.first().id);
+        QCOMPARE(test::child<AtomicNodeModel>(w)->rowCount(), kPackages); // one package row each
+        const QModelIndex relay =
+            test::child<AtomicNodeModel>(w)->nodeIndex(nodes.nodes.first().id);
         QVERIFY(relay.isValid());
-        QCOMPARE(w.nodeModel()->rowCount(relay), 3); // two publishers, one subscription
-        const LaunchDependencies &launch = w.document()->launchDependencies();
+        QCOMPARE(test::child<AtomicNodeModel>(w)->rowCount(relay),
+                 3); // two publishers, one subscription
+        const LaunchDependencies &launch = test::child<Document>(w)->launchDependencies();
         QCOMPARE(launch.launchFiles.size(), kPackages + 1);
         QVERIFY2(launch.nodes.size() >= kPackages,
                  qPrintable(QString::number(launch.nodes.size())));
-        QVERIFY(w.launchModel()->rowCount() > 0);
+        QVERIFY(test::child<LaunchTreeModel>(w)->rowCount() > 0);
 
         // The diagram of the root including every group's launch file: built off the UI thread
         // (it has more elements than the panel builds inline), laid out and drawn.
-        DiagramPanel *panel = w.diagramPanel();
+        DiagramPanel *panel = test::child<DiagramPanel>(w);
         const Composite *all = panel->architecture().composite(panel->currentComposite());
         QVERIFY(all);
         QCOMPARE(all->stem, QStringLiteral("all"));
@@ -149,7 +152,7 @@ private Q_SLOTS:
                              }),
                  qPrintable(statusMessages.join(u'\n')));
         QCOMPARE(timed.size(), 3);
-        const QString log = w.logView()->logEdit()->toPlainText();
+        const QString log = test::child<LogView>(w)->logEdit()->toPlainText();
         for (const QString &line : {QStringLiteral("Stage 1 (atomic nodes) took "),
                                     QStringLiteral("Stage 2 (launch files) took "),
                                     QStringLiteral("Stage 3 (composition) took "),
@@ -160,16 +163,18 @@ private Q_SLOTS:
         // shows at once, the filter follows a pause in typing (filtering a tree this size is
         // no longer cheap), and then the way to the matches is open, within a budget of rows
         // (before: every kept row was expanded, for seconds on navigation2).
-        QLineEdit *filter = w.launchPanel()->filterEdit();
-        QTreeView *launchTree = w.launchPanel()->treeView();
+        QLineEdit *filter = test::child<LaunchTreePanel>(w)->filterEdit();
+        QTreeView *launchTree = test::child<LaunchTreePanel>(w)->treeView();
         filter->setFocus();
         QTest::keyClicks(filter, QStringLiteral("r"));
-        QTRY_COMPARE(w.launchPanel()->proxyModel()->filterRegularExpression().pattern(),
-                     QStringLiteral("r"));
+        QTRY_COMPARE(
+            test::child<LaunchTreePanel>(w)->proxyModel()->filterRegularExpression().pattern(),
+            QStringLiteral("r"));
         QTest::keyClicks(filter, QStringLiteral("elay_999"));
         QCOMPARE(filter->text(), QStringLiteral("relay_999"));
-        QTRY_COMPARE(w.launchPanel()->proxyModel()->filterRegularExpression().pattern(),
-                     QStringLiteral("relay_999"));
+        QTRY_COMPARE(
+            test::child<LaunchTreePanel>(w)->proxyModel()->filterRegularExpression().pattern(),
+            QStringLiteral("relay_999"));
         QModelIndex match;
         std::function<void(const QModelIndex &)> find = [&](const QModelIndex &parent) {
             for (int r = 0; r < launchTree->model()->rowCount(parent) && !match.isValid(); ++r) {
@@ -185,14 +190,18 @@ private Q_SLOTS:
         for (QModelIndex p = match.parent(); p.isValid(); p = p.parent())
             QVERIFY2(launchTree->isExpanded(p), qPrintable(p.data().toString()));
         filter->clear();
-        QTRY_VERIFY(w.launchPanel()->proxyModel()->filterRegularExpression().pattern().isEmpty());
+        QTRY_VERIFY(test::child<LaunchTreePanel>(w)
+                        ->proxyModel()
+                        ->filterRegularExpression()
+                        .pattern()
+                        .isEmpty());
 
         // A second run finds nothing new: the views stay.
         QTest::keyClick(&w, Qt::Key_F5);
         QVERIFY(finished.wait(120000));
-        QVERIFY(w.runner()->resultUnchanged());
-        QCOMPARE(w.nodeModel()->rowCount(), kPackages);
-        QVERIFY(w.logView()->logEdit()->toPlainText().contains(
+        QVERIFY(test::child<StageRunner>(w)->resultUnchanged());
+        QCOMPARE(test::child<AtomicNodeModel>(w)->rowCount(), kPackages);
+        QVERIFY(test::child<LogView>(w)->logEdit()->toPlainText().contains(
             QStringLiteral("the result is the same as the one shown")));
         QTest::qWait(100);
 

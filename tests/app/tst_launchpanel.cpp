@@ -18,6 +18,7 @@
 #include <Qsci/qscilexer.h>
 #include <Qsci/qsciscintilla.h>
 
+#include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
@@ -48,14 +49,14 @@ QStringList childNames(const QAbstractItemModel *model, const QModelIndex &paren
 
 QString lexerLanguage(MainWindow &w)
 {
-    QsciLexer *lexer = w.sourceView()->editor()->lexer();
+    QsciLexer *lexer = test::child<SourceView>(w)->editor()->lexer();
     return lexer ? QString::fromLatin1(lexer->language()) : QString();
 }
 
 bool markedLine(MainWindow &w, int line)
 {
-    return w.sourceView()->editor()->markersAtLine(line - 1) &
-           (1u << w.sourceView()->evidenceMarker());
+    return test::child<SourceView>(w)->editor()->markersAtLine(line - 1) &
+           (1u << test::child<SourceView>(w)->evidenceMarker());
 }
 
 /// A window on gui_ws whose stages are stubs: stage 1+2 give the hand-built model, stage 2
@@ -68,18 +69,19 @@ struct StubbedWindow
 
     StubbedWindow()
     {
-        w.runner()->setStageFunction(
+        test::child<StageRunner>(w)->setStageFunction(
             [this](const QString &, const LaunchOptions &options, const StageControl &) {
                 fullRuns << options;
                 return handBuiltRecovery();
             });
-        w.runner()->setLaunchFunction([this](const QString &, const AtomicNodeList &nodes,
-                                             const LaunchOptions &options, const StageControl &) {
-            launchRuns << options;
-            LaunchDependencies d = handBuiltLaunch();
-            d.nodes[0].nodeName = QStringLiteral("talker_%1").arg(nodes.nodes.size());
-            return d;
-        });
+        test::child<StageRunner>(w)->setLaunchFunction(
+            [this](const QString &, const AtomicNodeList &nodes, const LaunchOptions &options,
+                   const StageControl &) {
+                launchRuns << options;
+                LaunchDependencies d = handBuiltLaunch();
+                d.nodes[0].nodeName = QStringLiteral("talker_%1").arg(nodes.nodes.size());
+                return d;
+            });
     }
 };
 
@@ -115,8 +117,9 @@ private Q_SLOTS:
         QVERIFY(nodes->geometry().right() < launch->geometry().left());
         QVERIFY(launch->geometry().right() < source->geometry().left());
         // before a run the panel says what to do instead of showing an empty tree
-        QVERIFY(w.launchPanel()->placeholderLabel()->isVisible());
-        QVERIFY(w.launchPanel()->placeholderLabel()->text().contains(QStringLiteral("Open")));
+        QVERIFY(test::child<LaunchTreePanel>(w)->placeholderLabel()->isVisible());
+        QVERIFY(test::child<LaunchTreePanel>(w)->placeholderLabel()->text().contains(
+            QStringLiteral("Open")));
         // reachable from the View menu, the Stages menu and the toolbar
         QAction *toggle = launch->toggleViewAction();
         toggle->trigger();
@@ -124,14 +127,18 @@ private Q_SLOTS:
         toggle->trigger();
         QVERIFY(launch->isVisible());
         QToolBar *toolBar = w.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
-        QVERIFY(toolBar->actions().contains(w.launchArgumentsAction()));
-        QVERIFY(toolBar->actions().contains(w.runLaunchAction()));
+        QVERIFY(toolBar->actions().contains(
+            test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))));
+        QVERIFY(toolBar->actions().contains(
+            test::child<QAction>(w, QStringLiteral("runLaunchAction"))));
         QMenu *stages = nullptr;
         for (QMenu *m : w.findChildren<QMenu *>())
             if (m->title() == QStringLiteral("&Stages"))
                 stages = m;
-        QVERIFY(stages && stages->actions().contains(w.launchArgumentsAction()));
-        QCOMPARE(w.launchArgumentsAction()->text(), QStringLiteral("Launch &Arguments…"));
+        QVERIFY(stages && stages->actions().contains(
+                              test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))));
+        QCOMPARE(test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))->text(),
+                 QStringLiteral("Launch &Arguments…"));
     }
 
     void realRunShowsTheFixtureLaunchTree()
@@ -139,10 +146,10 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1500, 900);
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QVERIFY(finished.wait(60000));
-        LaunchTreeModel *model = w.launchModel();
+        LaunchTreeModel *model = test::child<LaunchTreeModel>(w);
         QCOMPARE(model->rowCount(), 1);
         const QModelIndex root = model->index(0, 0);
         QCOMPARE(root.data().toString(), QStringLiteral("demo.launch.py"));
@@ -162,15 +169,16 @@ private Q_SLOTS:
                  QStringLiteral("Listener"));
         QVERIFY(!model->isActive(model->index(2, 0, root))); // echo_talker: use_echo is false
         QVERIFY(model->launchFile(model->index(2, 0, listenerFile))->external);
-        QVERIFY2(w.countsLabel()->text().contains(
-                     QStringLiteral("3 launch files · 4 instances · 0 unresolved")),
-                 qPrintable(w.countsLabel()->text()));
-        QVERIFY(!w.launchPanel()->placeholderLabel()->isVisible());
-        QVERIFY(w.launchPanel()->treeView()->isVisible());
+        QVERIFY2(test::child<QLabel>(w, QStringLiteral("countsLabel"))
+                     ->text()
+                     .contains(QStringLiteral("3 launch files · 4 instances · 0 unresolved")),
+                 qPrintable(test::child<QLabel>(w, QStringLiteral("countsLabel"))->text()));
+        QVERIFY(!test::child<LaunchTreePanel>(w)->placeholderLabel()->isVisible());
+        QVERIFY(test::child<LaunchTreePanel>(w)->treeView()->isVisible());
         // stage 2's note about the external include is in the log
         bool external = false;
-        for (int r = 0; r < w.logView()->diagnosticsView()->model()->rowCount(); ++r)
-            external |= w.logView()
+        for (int r = 0; r < test::child<LogView>(w)->diagnosticsView()->model()->rowCount(); ++r)
+            external |= test::child<LogView>(w)
                             ->diagnosticsView()
                             ->model()
                             ->index(r, DiagnosticModel::MessageColumn)
@@ -180,14 +188,15 @@ private Q_SLOTS:
         QVERIFY(external);
 
         // selecting the node instance shows its launch line and selects its class
-        w.launchPanel()->selectSourceIndex(listener);
-        QCOMPARE(w.sourceView()->currentFile(), kListenerLaunch);
-        QCOMPARE(w.sourceView()->highlighted().line, 3);
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(listener);
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListenerLaunch);
+        QCOMPARE(test::child<SourceView>(w)->highlighted().line, 3);
         QVERIFY(markedLine(w, 3));
         QCOMPARE(lexerLanguage(w), QStringLiteral("XML"));
-        const QModelIndex cls = w.nodePanel()->currentSourceIndex();
-        QCOMPARE(cls.data(AtomicNodeModel::NodeIdRole).toString(),
-                 w.document()->launchDependencies().node(QStringLiteral("n2"))->classId);
+        const QModelIndex cls = test::child<AtomicNodePanel>(w)->currentSourceIndex();
+        QCOMPARE(
+            cls.data(AtomicNodeModel::NodeIdRole).toString(),
+            test::child<Document>(w)->launchDependencies().node(QStringLiteral("n2"))->classId);
         QCOMPARE(cls.data().toString(), QStringLiteral("Listener"));
         saveScreenshot(w, QStringLiteral("launchtree_fixture.png"));
 
@@ -205,55 +214,58 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1500, 900);
         w.show();
-        w.document()->setRecovery(handBuiltRecovery());
-        LaunchTreeModel *model = w.launchModel();
+        test::child<Document>(w)->setRecovery(handBuiltRecovery());
+        LaunchTreeModel *model = test::child<LaunchTreeModel>(w);
 
         // a node of the Python launch file: Python lexer, the Node(...) call marked
-        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
-        QCOMPARE(w.sourceView()->currentFile(), kDemoLaunch);
-        QCOMPARE(w.sourceView()->highlighted(), (Evidence{kDemoLaunch, 18, 9, 20, 41}));
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kDemoLaunch);
+        QCOMPARE(test::child<SourceView>(w)->highlighted(), (Evidence{kDemoLaunch, 18, 9, 20, 41}));
         QCOMPARE(lexerLanguage(w), QStringLiteral("Python"));
-        QVERIFY(w.sourceView()->editor()->text(17).contains(
+        QVERIFY(test::child<SourceView>(w)->editor()->text(17).contains(
             QStringLiteral("Node(package='py_talker'")));
-        QCOMPARE(w.nodePanel()->currentSourceIndex(),
-                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
+        QCOMPARE(test::child<AtomicNodePanel>(w)->currentSourceIndex(),
+                 test::child<AtomicNodeModel>(w)->nodeIndex(QStringLiteral("arc_2")));
 
         // an include row shows the include line in the including file
-        w.launchPanel()->selectSourceIndex(model->launchFileIndex(QStringLiteral("lf3")));
-        QCOMPARE(w.sourceView()->currentFile(), kListenerLaunch);
-        QCOMPARE(w.sourceView()->highlighted().line, 6);
-        QVERIFY(w.sourceView()->editor()->text(5).contains(QStringLiteral("extra.launch.yaml")));
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(
+            model->launchFileIndex(QStringLiteral("lf3")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListenerLaunch);
+        QCOMPARE(test::child<SourceView>(w)->highlighted().line, 6);
+        QVERIFY(test::child<SourceView>(w)->editor()->text(5).contains(
+            QStringLiteral("extra.launch.yaml")));
         // the YAML file's node: YAML lexer
-        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n3")));
-        QCOMPARE(w.sourceView()->currentFile(), kExtraLaunch);
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(model->nodeIndex(QStringLiteral("n3")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kExtraLaunch);
         QCOMPARE(lexerLanguage(w), QStringLiteral("YAML"));
         QVERIFY(markedLine(w, 2));
 
         // Go to Class: the atomic tree takes over the source view
-        QAction *goToClass = w.launchPanel()->goToClassAction();
+        QAction *goToClass = test::child<LaunchTreePanel>(w)->goToClassAction();
         QVERIFY(goToClass->isEnabled());
         goToClass->trigger();
-        QCOMPARE(w.nodePanel()->currentSourceIndex(),
-                 w.nodeModel()->nodeIndex(QStringLiteral("arc_1")));
-        QCOMPARE(w.sourceView()->currentFile(), kListener);
-        QCOMPARE(w.sourceView()->highlighted().line, 11);
+        QCOMPARE(test::child<AtomicNodePanel>(w)->currentSourceIndex(),
+                 test::child<AtomicNodeModel>(w)->nodeIndex(QStringLiteral("arc_1")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListener);
+        QCOMPARE(test::child<SourceView>(w)->highlighted().line, 11);
         // not for rows without a class
-        w.launchPanel()->selectSourceIndex(model->launchFileIndex(QStringLiteral("lf4")));
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(
+            model->launchFileIndex(QStringLiteral("lf4")));
         QVERIFY(!goToClass->isEnabled());
 
         // double-click on a node instance goes to its class too
-        const QModelIndex talkerRow =
-            w.launchPanel()->proxyModel()->mapFromSource(model->nodeIndex(QStringLiteral("n4")));
-        QTreeView *tree = w.launchPanel()->treeView();
+        const QModelIndex talkerRow = test::child<LaunchTreePanel>(w)->proxyModel()->mapFromSource(
+            model->nodeIndex(QStringLiteral("n4")));
+        QTreeView *tree = test::child<LaunchTreePanel>(w)->treeView();
         tree->scrollTo(talkerRow);
         const QPoint center = tree->visualRect(talkerRow).center();
-        QSignalSpy requested(w.launchPanel(), &LaunchTreePanel::classRequested);
+        QSignalSpy requested(test::child<LaunchTreePanel>(w), &LaunchTreePanel::classRequested);
         QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, center);  // the press a
         QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, center); // double-click needs
         QCOMPARE(requested.count(), 1);
-        QCOMPARE(w.nodePanel()->currentSourceIndex(),
-                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
-        QCOMPARE(w.sourceView()->currentFile(), kTalker);
+        QCOMPARE(test::child<AtomicNodePanel>(w)->currentSourceIndex(),
+                 test::child<AtomicNodeModel>(w)->nodeIndex(QStringLiteral("arc_2")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kTalker);
     }
 
     void sourceCursorSelectsTheLaunchItem()
@@ -261,37 +273,40 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.document()->setRecovery(handBuiltRecovery());
-        LaunchTreeModel *model = w.launchModel();
-        w.launchPanel()->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
-        const Evidence shown = w.sourceView()->highlighted();
-        QsciScintilla *editor = w.sourceView()->editor();
+        test::child<Document>(w)->setRecovery(handBuiltRecovery());
+        LaunchTreeModel *model = test::child<LaunchTreeModel>(w);
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(model->nodeIndex(QStringLiteral("n1")));
+        const Evidence shown = test::child<SourceView>(w)->highlighted();
+        QsciScintilla *editor = test::child<SourceView>(w)->editor();
         QTest::qWait(50); // QScintilla reports cursor moves on its next UI update
-        QCOMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n1")));
+        QCOMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
+                 model->nodeIndex(QStringLiteral("n1")));
 
         editor->setCursorPosition(28, 12); // line 29: inside the echo talker's Node(...)
-        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n4")));
-        QCOMPARE(w.nodePanel()->currentSourceIndex(),
-                 w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
+        QTRY_COMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
+                     model->nodeIndex(QStringLiteral("n4")));
+        QCOMPARE(test::child<AtomicNodePanel>(w)->currentSourceIndex(),
+                 test::child<AtomicNodeModel>(w)->nodeIndex(QStringLiteral("arc_2")));
         // following the cursor moves neither the source nor its highlight
-        QCOMPARE(w.sourceView()->highlighted(), shown);
-        QCOMPARE(w.sourceView()->currentFile(), kDemoLaunch);
+        QCOMPARE(test::child<SourceView>(w)->highlighted(), shown);
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kDemoLaunch);
         int line = -1, index = -1;
         editor->getCursorPosition(&line, &index);
         QCOMPARE(line, 28);
 
         editor->setCursorPosition(23, 4); // line 24: the include of listener.launch.xml
-        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(),
+        QTRY_COMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
                      model->launchFileIndex(QStringLiteral("lf2")));
         editor->setCursorPosition(9, 0); // line 10: no action, the file itself
-        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(),
+        QTRY_COMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
                      model->launchFileIndex(QStringLiteral("lf1")));
 
         // with a filter hiding the item, following the cursor clears the filter
-        w.launchPanel()->filterEdit()->setText(QStringLiteral("second_listener"));
+        test::child<LaunchTreePanel>(w)->filterEdit()->setText(QStringLiteral("second_listener"));
         editor->setCursorPosition(17, 10);
-        QTRY_COMPARE(w.launchPanel()->currentSourceIndex(), model->nodeIndex(QStringLiteral("n1")));
-        QVERIFY(w.launchPanel()->filterEdit()->text().isEmpty());
+        QTRY_COMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
+                     model->nodeIndex(QStringLiteral("n1")));
+        QVERIFY(test::child<LaunchTreePanel>(w)->filterEdit()->text().isEmpty());
     }
 
     void filterAndFindInTheLaunchTree()
@@ -299,11 +314,11 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.document()->setRecovery(handBuiltRecovery());
-        QTreeView *tree = w.launchPanel()->treeView();
+        test::child<Document>(w)->setRecovery(handBuiltRecovery());
+        QTreeView *tree = test::child<LaunchTreePanel>(w)->treeView();
         tree->setFocus();
         QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier); // Find in the tree with focus
-        QLineEdit *filter = w.launchPanel()->filterEdit();
+        QLineEdit *filter = test::child<LaunchTreePanel>(w)->filterEdit();
         QVERIFY(filter->hasFocus());
         QTest::keyClicks(filter, QStringLiteral("/robot1/extra"));
         QAbstractItemModel *proxy = tree->model();
@@ -327,8 +342,8 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        w.document()->setRecovery(handBuiltRecovery());
-        QTreeView *tree = w.launchPanel()->treeView();
+        test::child<Document>(w)->setRecovery(handBuiltRecovery());
+        QTreeView *tree = test::child<LaunchTreePanel>(w)->treeView();
         QAbstractItemModel *proxy = tree->model();
         // a small tree opens fully, but for the nodes' parameters
         const QModelIndex root = proxy->index(0, 0);
@@ -344,7 +359,7 @@ private Q_SLOTS:
         tree->collapse(included);
         Recovery again = handBuiltRecovery();
         again.launch.nodes[0].nodeName = QStringLiteral("renamed_by_the_rerun");
-        w.document()->setRecovery(again);
+        test::child<Document>(w)->setRecovery(again);
         const QModelIndex rootAfter = proxy->index(0, 0);
         QVERIFY(tree->isExpanded(rootAfter));
         bool found = false;
@@ -358,9 +373,9 @@ private Q_SLOTS:
         QVERIFY(found);
         // Expand All opens it again
         tree->expandAll();
-        w.launchPanel()->filterEdit()->setText(QStringLiteral("no such row"));
+        test::child<LaunchTreePanel>(w)->filterEdit()->setText(QStringLiteral("no such row"));
         QCOMPARE(proxy->rowCount(), 0);
-        w.launchPanel()->filterEdit()->clear();
+        test::child<LaunchTreePanel>(w)->filterEdit()->clear();
         QVERIFY(tree->isExpanded(proxy->index(0, 0)));
     }
 
@@ -429,15 +444,17 @@ private Q_SLOTS:
             StubbedWindow s;
             MainWindow &w = s.w;
             w.show();
-            QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
-            QSignalSpy launchFinished(w.runner(), &StageRunner::launchStageFinished);
+            QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
+            QSignalSpy launchFinished(test::child<StageRunner>(w),
+                                      &StageRunner::launchStageFinished);
             w.openWorkspace(fixture());
             QVERIFY(finished.wait(10000));
             QCOMPARE(s.fullRuns.size(), 1);
             QCOMPARE(s.fullRuns.first(), LaunchOptions()); // nothing chosen yet
-            w.launchPanel()->selectSourceIndex(w.launchModel()->nodeIndex(QStringLiteral("n3")));
+            test::child<LaunchTreePanel>(w)->selectSourceIndex(
+                test::child<LaunchTreeModel>(w)->nodeIndex(QStringLiteral("n3")));
 
-            w.launchArgumentsAction()->trigger();
+            test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))->trigger();
             auto *dialog = w.findChild<LaunchArgumentsDialog *>();
             QVERIFY(dialog && dialog->isVisible());
             QCOMPARE(dialog->table()->rowCount(), 2);
@@ -447,20 +464,20 @@ private Q_SLOTS:
             dialog->rootCombo()->setCurrentIndex(dialog->rootCombo()->findData(kDemoLaunch));
             dialog->accept();
 
-            QCOMPARE(w.document()->session()->launchOptions(), chosen);
+            QCOMPARE(test::child<Document>(w)->session()->launchOptions(), chosen);
             QCOMPARE(AppSettings().launchOptions(fixture()), chosen);
             QVERIFY(launchFinished.wait(10000));
             QCOMPARE(s.launchRuns, QList<LaunchOptions>{chosen});
             QCOMPARE(s.fullRuns.size(), 1); // stage 2 alone, against the current classes
-            QCOMPARE(w.document()->launchDependencies().nodes.first().nodeName,
+            QCOMPARE(test::child<Document>(w)->launchDependencies().nodes.first().nodeName,
                      QStringLiteral("talker_2"));
-            QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
+            QCOMPARE(test::child<Document>(w)->atomicNodes().nodes.size(), 2);
             // the selection survives the re-run
-            QCOMPARE(w.launchPanel()->currentSourceIndex(),
-                     w.launchModel()->nodeIndex(QStringLiteral("n3")));
+            QCOMPARE(test::child<LaunchTreePanel>(w)->currentSourceIndex(),
+                     test::child<LaunchTreeModel>(w)->nodeIndex(QStringLiteral("n3")));
 
             // re-running keeps them: stage 2 alone (F6) and both stages (F5)
-            w.runLaunchAction()->trigger();
+            test::child<QAction>(w, QStringLiteral("runLaunchAction"))->trigger();
             QVERIFY(launchFinished.wait(10000));
             QCOMPARE(s.launchRuns.last(), chosen);
             w.runAllStages();
@@ -470,14 +487,14 @@ private Q_SLOTS:
         }
         // another window on the same workspace starts from them
         StubbedWindow again;
-        QSignalSpy finished(again.w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(again.w), &StageRunner::stageFinished);
         again.w.openWorkspace(fixture());
-        QCOMPARE(again.w.document()->session()->launchOptions(), chosen);
+        QCOMPARE(test::child<Document>(again.w)->session()->launchOptions(), chosen);
         QVERIFY(finished.wait(10000));
         QCOMPARE(again.fullRuns.first(), chosen);
         // and restores the launch item selected when the last one closed
-        QCOMPARE(again.w.launchPanel()->currentSourceIndex(),
-                 again.w.launchModel()->nodeIndex(QStringLiteral("n3")));
+        QCOMPARE(test::child<LaunchTreePanel>(again.w)->currentSourceIndex(),
+                 test::child<LaunchTreeModel>(again.w)->nodeIndex(QStringLiteral("n3")));
     }
 
     void launchOptionsAreKeptPerWorkspace()
@@ -503,12 +520,12 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1600, 950);
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
         QVERIFY(finished.wait(60000));
-        const LaunchDependencies &launch = w.document()->launchDependencies();
+        const LaunchDependencies &launch = test::child<Document>(w)->launchDependencies();
         QVERIFY(launch.launchFiles.size() >= 4);
-        LaunchTreeModel *model = w.launchModel();
+        LaunchTreeModel *model = test::child<LaunchTreeModel>(w);
         QModelIndex robot;
         for (int r = 0; r < model->rowCount(); ++r)
             if (model->index(r, 0).data().toString() == QLatin1String("robot.launch.py"))
@@ -519,12 +536,13 @@ private Q_SLOTS:
         for (const NodeInstance &n : launch.nodes) {
             const QModelIndex row = model->nodeIndex(n.id);
             QVERIFY2(row.isValid(), qPrintable(n.id));
-            w.launchPanel()->selectSourceIndex(row);
-            QCOMPARE(w.sourceView()->currentFile(), n.evidence.file);
+            test::child<LaunchTreePanel>(w)->selectSourceIndex(row);
+            QCOMPARE(test::child<SourceView>(w)->currentFile(), n.evidence.file);
             QVERIFY(markedLine(w, n.evidence.line));
             if (!n.classId.isEmpty()) {
                 ++withClass;
-                QCOMPARE(w.nodePanel()->currentSourceIndex(), w.nodeModel()->nodeIndex(n.classId));
+                QCOMPARE(test::child<AtomicNodePanel>(w)->currentSourceIndex(),
+                         test::child<AtomicNodeModel>(w)->nodeIndex(n.classId));
             }
         }
         QVERIFY(withClass >= 6);
@@ -535,12 +553,13 @@ private Q_SLOTS:
                 composableUnderContainer |=
                     model->nodeIndex(n.id).parent() == model->nodeIndex(n.container);
         QVERIFY(composableUnderContainer);
-        QVERIFY(w.countsLabel()->text().contains(
-            QStringLiteral("%1 launch files").arg(launch.launchFiles.size())));
+        QVERIFY(test::child<QLabel>(w, QStringLiteral("countsLabel"))
+                    ->text()
+                    .contains(QStringLiteral("%1 launch files").arg(launch.launchFiles.size())));
         QTest::qWait(50);
         const auto it = std::find_if(launch.nodes.cbegin(), launch.nodes.cend(),
                                      [](const NodeInstance &n) { return !n.classId.isEmpty(); });
-        w.launchPanel()->selectSourceIndex(model->nodeIndex(it->id));
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(model->nodeIndex(it->id));
         saveScreenshot(w, QStringLiteral("launchtree_example.png"));
     }
 };

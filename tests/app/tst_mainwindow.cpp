@@ -49,7 +49,7 @@ AtomicNodeList handBuiltFixtureModel()
 
 QModelIndex treeCurrent(MainWindow &w)
 {
-    return w.nodePanel()->currentSourceIndex();
+    return test::child<AtomicNodePanel>(w)->currentSourceIndex();
 }
 
 } // namespace
@@ -79,25 +79,25 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1400, 900);
         w.show();
-        QSignalSpy started(w.runner(), &StageRunner::stageStarted);
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy started(test::child<StageRunner>(w), &StageRunner::stageStarted);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QCOMPARE(started.count(), 1);
         QCOMPARE(w.workspace(), fixture());
         // Before a first result, no counts: they would all read 0.
-        QVERIFY(!w.countsLabel()->isVisible());
+        QVERIFY(!test::child<QLabel>(w, QStringLiteral("countsLabel"))->isVisible());
         QVERIFY(finished.wait(60000));
-        QTRY_VERIFY(w.countsLabel()->isVisible());
-        QCOMPARE(w.document()->workspaceRoot(), fixture());
+        QTRY_VERIFY(test::child<QLabel>(w, QStringLiteral("countsLabel"))->isVisible());
+        QCOMPARE(test::child<Document>(w)->workspaceRoot(), fixture());
         QCOMPARE(AppSettings().recentWorkspaces().value(0), fixture());
         QCOMPARE(AppSettings().lastWorkspace(), fixture());
 
-        const AtomicNodeList &list = w.document()->atomicNodes();
+        const AtomicNodeList &list = test::child<Document>(w)->atomicNodes();
         QStringList classes;
         for (const AtomicNode &n : list.nodes)
             classes << n.className;
         QCOMPARE(classes, (QStringList{QStringLiteral("Listener"), QStringLiteral("Talker")}));
-        AtomicNodeModel *model = w.nodeModel();
+        AtomicNodeModel *model = test::child<AtomicNodeModel>(w);
         const QModelIndex py = model->packageIndex(QStringLiteral("py_talker"));
         const QModelIndex cpp = model->packageIndex(QStringLiteral("cpp_listener"));
         QVERIFY(py.isValid() && cpp.isValid());
@@ -118,10 +118,12 @@ private Q_SLOTS:
                 << model->index(r, AtomicNodeModel::TypeColumn, listener).data().toString();
         QVERIFY2(listenerTypes.contains(QStringLiteral("std_srvs/srv/Trigger")),
                  qPrintable(listenerTypes.join(',')));
-        QVERIFY2(w.countsLabel()->text().contains(QStringLiteral("2 nodes")),
-                 qPrintable(w.countsLabel()->text()));
+        QVERIFY2(test::child<QLabel>(w, QStringLiteral("countsLabel"))
+                     ->text()
+                     .contains(QStringLiteral("2 nodes")),
+                 qPrintable(test::child<QLabel>(w, QStringLiteral("countsLabel"))->text()));
         // the tree shows them (expanded, through the filter proxy)
-        QTreeView *tree = w.nodePanel()->treeView();
+        QTreeView *tree = test::child<AtomicNodePanel>(w)->treeView();
         QCOMPARE(tree->model()->rowCount(), 2);
         QVERIFY(tree->isExpanded(tree->model()->index(0, 0)));
         saveScreenshot(w, QStringLiteral("mainwindow_stage1.png"));
@@ -132,13 +134,13 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1400, 900);
         w.show();
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
-        const QModelIndex pub =
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1"));
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
+        const QModelIndex pub = test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_2"),
+                                                                           QStringLiteral("p1"));
         QVERIFY(pub.isValid());
-        w.nodePanel()->selectSourceIndex(pub);
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(pub);
 
-        SourceView *source = w.sourceView();
+        SourceView *source = test::child<SourceView>(w);
         QCOMPARE(source->currentFile(), kTalker);
         QCOMPARE(source->highlighted().line, 11);
         QsciScintilla *editor = source->editor();
@@ -162,8 +164,9 @@ private Q_SLOTS:
         QCOMPARE(QString::fromLatin1(editor->lexer()->language()), QStringLiteral("Python"));
 
         // a C++ port switches file and lexer
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_1"), QStringLiteral("ps1")));
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_1"),
+                                                       QStringLiteral("ps1")));
         QCOMPARE(source->currentFile(), kListener);
         QCOMPARE(QString::fromLatin1(editor->lexer()->language()), QStringLiteral("C++"));
         QVERIFY(editor->text(18).contains(QStringLiteral("create_service")));
@@ -176,12 +179,12 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
-        AtomicNodeModel *model = w.nodeModel();
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
+        AtomicNodeModel *model = test::child<AtomicNodeModel>(w);
         const QModelIndex pub = model->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1"));
-        w.nodePanel()->selectSourceIndex(pub);
-        const Evidence shown = w.sourceView()->highlighted();
-        QsciScintilla *editor = w.sourceView()->editor();
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(pub);
+        const Evidence shown = test::child<SourceView>(w)->highlighted();
+        QsciScintilla *editor = test::child<SourceView>(w)->editor();
         QTest::qWait(50); // QScintilla reports cursor moves on its next UI update
         QCOMPARE(treeCurrent(w), pub);
 
@@ -189,7 +192,7 @@ private Q_SLOTS:
         QTRY_COMPARE(treeCurrent(w),
                      model->portIndex(QStringLiteral("arc_2"), QStringLiteral("s1")));
         // following the source does not move the source (no feedback loop)
-        QCOMPARE(w.sourceView()->highlighted(), shown);
+        QCOMPARE(test::child<SourceView>(w)->highlighted(), shown);
         int line = -1, index = -1;
         editor->getCursorPosition(&line, &index);
         QCOMPARE(line, 11);
@@ -201,10 +204,10 @@ private Q_SLOTS:
         QCOMPARE(treeCurrent(w), model->nodeIndex(QStringLiteral("arc_2")));
 
         // with a filter hiding the element, selecting from the source clears the filter
-        w.nodePanel()->filterEdit()->setText(QStringLiteral("Listener"));
+        test::child<AtomicNodePanel>(w)->filterEdit()->setText(QStringLiteral("Listener"));
         editor->setCursorPosition(10, 0);
         QTRY_COMPARE(treeCurrent(w), pub);
-        QVERIFY(w.nodePanel()->filterEdit()->text().isEmpty());
+        QVERIFY(test::child<AtomicNodePanel>(w)->filterEdit()->text().isEmpty());
     }
 
     void diagnosticsNavigateToSource()
@@ -212,25 +215,27 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
-        QCOMPARE(w.logView()->diagnosticsView()->model()->rowCount(), 1);
-        w.logView()->selectNextDiagnostic();
-        QCOMPARE(w.sourceView()->currentFile(), kListener);
-        QCOMPARE(w.sourceView()->highlighted().line, 19);
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
+        QCOMPARE(test::child<LogView>(w)->diagnosticsView()->model()->rowCount(), 1);
+        test::child<LogView>(w)->selectNextDiagnostic();
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListener);
+        QCOMPARE(test::child<SourceView>(w)->highlighted().line, 19);
         // showing a diagnostic's line does not echo into the tree (line 19 holds port ps1)
         QTest::qWait(50);
         QVERIFY(!treeCurrent(w).isValid());
         // moving away and pressing F8 again shows it again (wraps onto the same row)
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
-        QCOMPARE(w.sourceView()->currentFile(), kTalker);
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_2"),
+                                                       QStringLiteral("p1")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kTalker);
         QTest::keyClick(&w, Qt::Key_F8);
-        QCOMPARE(w.sourceView()->currentFile(), kListener);
-        w.nodePanel()->selectSourceIndex(
-            w.nodeModel()->portIndex(QStringLiteral("arc_2"), QStringLiteral("p1")));
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListener);
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->portIndex(QStringLiteral("arc_2"),
+                                                       QStringLiteral("p1")));
         QTest::keyClick(&w, Qt::Key_F8, Qt::ShiftModifier);
-        QCOMPARE(w.sourceView()->currentFile(), kListener);
-        QCOMPARE(w.sourceView()->highlighted().line, 19);
+        QCOMPARE(test::child<SourceView>(w)->currentFile(), kListener);
+        QCOMPARE(test::child<SourceView>(w)->highlighted().line, 19);
     }
 
     void aFindingIsAcceptedAsAnExpectedExternal()
@@ -244,7 +249,7 @@ private Q_SLOTS:
         w.show();
         w.openWorkspace(ws.path());
         const auto scanFinding = [&w]() -> QModelIndex {
-            QAbstractItemModel *m = w.logView()->diagnosticsView()->model();
+            QAbstractItemModel *m = test::child<LogView>(w)->diagnosticsView()->model();
             for (int r = 0; r < m->rowCount(); ++r)
                 if (m->index(r, DiagnosticModel::MessageColumn)
                         .data()
@@ -254,20 +259,25 @@ private Q_SLOTS:
             return {};
         };
         QTRY_VERIFY_WITH_TIMEOUT(scanFinding().isValid(), 60000);
-        QAction *accept = w.logView()->acceptExternalAction();
-        w.logView()->diagnosticsView()->setCurrentIndex(scanFinding());
+        QAction *accept = test::child<LogView>(w)->acceptExternalAction();
+        test::child<LogView>(w)->diagnosticsView()->setCurrentIndex(scanFinding());
         QVERIFY(accept->isEnabled());
         accept->trigger();
-        QCOMPARE(w.document()->session()->launchOptions().externals.size(), qsizetype(1));
-        const ExpectedExternal &e = w.document()->session()->launchOptions().externals.front();
+        QCOMPARE(test::child<Document>(w)->session()->launchOptions().externals.size(),
+                 qsizetype(1));
+        const ExpectedExternal &e =
+            test::child<Document>(w)->session()->launchOptions().externals.front();
         QCOMPARE(e.name, QStringLiteral("/map"));
         QVERIFY(!e.output);
         // The checks run again, without it; the project keeps the declaration.
         QTRY_VERIFY_WITH_TIMEOUT(
-            !scanFinding().isValid() && !w.document()->architecture().diagnostics.isEmpty(), 60000);
-        QCOMPARE(w.document()->session()->project().launch.externals.size(), qsizetype(1));
+            !scanFinding().isValid() &&
+                !test::child<Document>(w)->architecture().diagnostics.isEmpty(),
+            60000);
+        QCOMPARE(test::child<Document>(w)->session()->project().launch.externals.size(),
+                 qsizetype(1));
         QStringList left;
-        for (const Diagnostic &d : w.document()->architecture().diagnostics)
+        for (const Diagnostic &d : test::child<Document>(w)->architecture().diagnostics)
             left << d.external;
         left.sort();
         QCOMPARE(left, (QStringList{QStringLiteral("input /odom_raws"),
@@ -279,24 +289,25 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1500, 950);
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(QStringLiteral(ROSARCH_EXAMPLE_WORKSPACE));
         QVERIFY(finished.wait(60000));
-        const AtomicNodeList &list = w.document()->atomicNodes();
+        const AtomicNodeList &list = test::child<Document>(w)->atomicNodes();
         QVERIFY(list.nodes.size() >= 4);
         // every node and port with evidence can be shown, at its line
         for (const AtomicNode &n : list.nodes) {
             for (const Port &p : n.ports) {
-                w.nodePanel()->selectSourceIndex(w.nodeModel()->portIndex(n.id, p.id));
-                QCOMPARE(w.sourceView()->currentFile(), p.evidence.file);
-                QVERIFY(w.sourceView()->editor()->markersAtLine(p.evidence.line - 1) &
-                        (1u << w.sourceView()->evidenceMarker()));
+                test::child<AtomicNodePanel>(w)->selectSourceIndex(
+                    test::child<AtomicNodeModel>(w)->portIndex(n.id, p.id));
+                QCOMPARE(test::child<SourceView>(w)->currentFile(), p.evidence.file);
+                QVERIFY(test::child<SourceView>(w)->editor()->markersAtLine(p.evidence.line - 1) &
+                        (1u << test::child<SourceView>(w)->evidenceMarker()));
             }
         }
         const AtomicNode &last = list.nodes.last();
         if (!last.ports.isEmpty())
-            w.nodePanel()->selectSourceIndex(
-                w.nodeModel()->portIndex(last.id, last.ports.last().id));
+            test::child<AtomicNodePanel>(w)->selectSourceIndex(
+                test::child<AtomicNodeModel>(w)->portIndex(last.id, last.ports.last().id));
         saveScreenshot(w, QStringLiteral("mainwindow_example.png"));
     }
 
@@ -305,12 +316,12 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
         QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier);
-        QLineEdit *filter = w.nodePanel()->filterEdit();
+        QLineEdit *filter = test::child<AtomicNodePanel>(w)->filterEdit();
         QVERIFY(filter->hasFocus());
         QTest::keyClicks(filter, QStringLiteral("Trigger"));
-        QAbstractItemModel *proxy = w.nodePanel()->treeView()->model();
+        QAbstractItemModel *proxy = test::child<AtomicNodePanel>(w)->treeView()->model();
         QCOMPARE(proxy->rowCount(), 1);
         const QModelIndex node = proxy->index(0, 0, proxy->index(0, 0));
         QCOMPARE(proxy->rowCount(node), 1);
@@ -324,7 +335,7 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
         QAction *undo = nullptr;
         QAction *redo = nullptr;
         for (QAction *a : w.findChildren<QAction *>()) {
@@ -335,15 +346,16 @@ private Q_SLOTS:
         }
         QVERIFY(undo && redo);
         QVERIFY(!undo->isEnabled());
-        const QModelIndex description =
-            w.nodeModel()->nodeIndex(QStringLiteral("arc_1"), AtomicNodeModel::DescriptionColumn);
-        QVERIFY(w.nodeModel()->setData(description, QStringLiteral("Listens.")));
+        const QModelIndex description = test::child<AtomicNodeModel>(w)->nodeIndex(
+            QStringLiteral("arc_1"), AtomicNodeModel::DescriptionColumn);
+        QVERIFY(test::child<AtomicNodeModel>(w)->setData(description, QStringLiteral("Listens.")));
         QVERIFY(undo->isEnabled());
         undo->trigger();
-        QCOMPARE(w.document()->atomicNodes().nodes.first().description, QString());
+        QCOMPARE(test::child<Document>(w)->atomicNodes().nodes.first().description, QString());
         QVERIFY(redo->isEnabled());
         redo->trigger();
-        QCOMPARE(w.document()->atomicNodes().nodes.first().description, QStringLiteral("Listens."));
+        QCOMPARE(test::child<Document>(w)->atomicNodes().nodes.first().description,
+                 QStringLiteral("Listens."));
     }
 
     void f2EditsTheDescription()
@@ -351,26 +363,28 @@ private Q_SLOTS:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
-        w.nodePanel()->selectSourceIndex(w.nodeModel()->nodeIndex(QStringLiteral("arc_2")));
-        QTreeView *tree = w.nodePanel()->treeView();
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
+        test::child<AtomicNodePanel>(w)->selectSourceIndex(
+            test::child<AtomicNodeModel>(w)->nodeIndex(QStringLiteral("arc_2")));
+        QTreeView *tree = test::child<AtomicNodePanel>(w)->treeView();
         tree->setFocus();
         QTest::keyClick(tree, Qt::Key_F2);
         QLineEdit *editor = tree->viewport()->findChild<QLineEdit *>();
         QVERIFY(editor);
         QTest::keyClicks(editor, QStringLiteral("Greets the world."));
         QTest::keyClick(editor, Qt::Key_Return); // the delegate commits on the event loop
-        QTRY_COMPARE(w.document()->atomicNodes().node(QStringLiteral("arc_2"))->description,
-                     QStringLiteral("Greets the world."));
-        QCOMPARE(w.document()->undoStack()->count(), 1);
+        QTRY_COMPARE(
+            test::child<Document>(w)->atomicNodes().node(QStringLiteral("arc_2"))->description,
+            QStringLiteral("Greets the world."));
+        QCOMPARE(test::child<Document>(w)->undoStack()->count(), 1);
     }
 
     void dropFolderOpensWorkspace()
     {
         MainWindow w;
         w.show();
-        QSignalSpy started(w.runner(), &StageRunner::stageStarted);
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy started(test::child<StageRunner>(w), &StageRunner::stageStarted);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         QMimeData data;
         data.setUrls({QUrl::fromLocalFile(test::dataDir(QStringLiteral("gui_ws")))});
         QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &data, Qt::LeftButton,
@@ -397,7 +411,7 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        QSignalSpy started(w.runner(), &StageRunner::stageStarted);
+        QSignalSpy started(test::child<StageRunner>(w), &StageRunner::stageStarted);
         const QString missing = QDir::temp().filePath(QStringLiteral("rosarch-no-such-ws-4711"));
         w.openWorkspace(missing);
         QCOMPARE(started.count(), 0);
@@ -427,7 +441,7 @@ private Q_SLOTS:
                 entry = a;
         QVERIFY(entry);
         QVERIFY(entry->text().contains(QStringLiteral("gui_ws")));
-        QSignalSpy started(w.runner(), &StageRunner::stageStarted);
+        QSignalSpy started(test::child<StageRunner>(w), &StageRunner::stageStarted);
         entry->trigger();
         QCOMPARE(started.count(), 1);
         QCOMPARE(w.workspace(), fixture());
@@ -457,7 +471,7 @@ private Q_SLOTS:
     void exportWritesArtifacts()
     {
         MainWindow w;
-        w.document()->setAtomicNodes(handBuiltFixtureModel());
+        test::child<Document>(w)->setAtomicNodes(handBuiltFixtureModel());
         QTemporaryDir out;
         QVERIFY(w.exportArtifactsTo(out.path()));
         const QByteArray json =
@@ -479,7 +493,7 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        w.runner()->setStageFunction(
+        test::child<StageRunner>(w)->setStageFunction(
             [](const QString &root, const LaunchOptions &, const StageControl &control) {
                 Recovery result;
                 result.nodes.workspaceRoot = root;
@@ -490,8 +504,8 @@ private Q_SLOTS:
                 result.nodes.canceled = control.isCanceled();
                 return result;
             });
-        QSignalSpy progressed(w.runner(), &StageRunner::stageProgressed);
-        QSignalSpy canceled(w.runner(), &StageRunner::stageCanceled);
+        QSignalSpy progressed(test::child<StageRunner>(w), &StageRunner::stageProgressed);
+        QSignalSpy canceled(test::child<StageRunner>(w), &StageRunner::stageCanceled);
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QVERIFY(progressed.wait(5000));
         QProgressBar *bar = w.findChild<QProgressBar *>();
@@ -501,7 +515,8 @@ private Q_SLOTS:
         QTest::keyClick(&w, Qt::Key_Escape); // Stages → Cancel
         QVERIFY(canceled.wait(5000));
         QVERIFY(!bar->isVisible());
-        QVERIFY(w.logView()->logEdit()->toPlainText().contains(QStringLiteral("canceled")));
+        QVERIFY(
+            test::child<LogView>(w)->logEdit()->toPlainText().contains(QStringLiteral("canceled")));
     }
 
     void aCrashInAnalysisLeavesTheWindowAndTheModel()
@@ -510,22 +525,22 @@ private Q_SLOTS:
         // the window, its model and the person's edits stay.
         MainWindow w;
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
-        QSignalSpy failed(w.runner(), &StageRunner::stageFailed);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
+        QSignalSpy failed(test::child<StageRunner>(w), &StageRunner::stageFailed);
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QVERIFY(finished.wait(60000));
-        QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
+        QCOMPARE(test::child<Document>(w)->atomicNodes().nodes.size(), 2);
 
         QTemporaryDir bin;
         StageProcess::Options dying;
         dying.helperPath = test::script(bin, QStringLiteral("dying-worker"), "kill -SEGV $$");
-        w.runner()->setProcessOptions(dying);
+        test::child<StageRunner>(w)->setProcessOptions(dying);
         QTest::keyClick(&w, Qt::Key_F5); // Stages → Run all
         QVERIFY(failed.wait(30000));
         QCOMPARE(finished.count(), 1);
         QVERIFY(w.isVisible());
-        QCOMPARE(w.document()->atomicNodes().nodes.size(), 2);
-        const QString log = w.logView()->logEdit()->toPlainText();
+        QCOMPARE(test::child<Document>(w)->atomicNodes().nodes.size(), 2);
+        const QString log = test::child<LogView>(w)->logEdit()->toPlainText();
         QVERIFY2(log.contains(QStringLiteral("stopped without a result; the previous result is "
                                              "kept. The analysis stopped outside the work on "
                                              "any one file")),
@@ -534,17 +549,17 @@ private Q_SLOTS:
         saveScreenshot(w, QStringLiteral("mainwindow_worker_crashed.png"));
 
         // A crash while one file is analysed costs that file; the rest is shown.
-        w.runner()->setProcessOptions({});
+        test::child<StageRunner>(w)->setProcessOptions({});
         qputenv("ROSARCH_STAGES_TEST_CRASH_IN", "talker.py");
         QTest::keyClick(&w, Qt::Key_F5);
         QVERIFY(finished.wait(60000));
         qunsetenv("ROSARCH_STAGES_TEST_CRASH_IN");
         QStringList classes;
-        for (const AtomicNode &n : w.document()->atomicNodes().nodes)
+        for (const AtomicNode &n : test::child<Document>(w)->atomicNodes().nodes)
             classes << n.className;
         QCOMPARE(classes, QStringList{QStringLiteral("Listener")});
         bool said = false;
-        for (const Diagnostic &d : w.document()->atomicNodes().diagnostics)
+        for (const Diagnostic &d : test::child<Document>(w)->atomicNodes().diagnostics)
             said = said || (d.code == QLatin1String("file-skipped") &&
                             d.message.contains(QLatin1String("crashed (signal ")));
         QVERIFY(said);

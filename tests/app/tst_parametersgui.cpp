@@ -5,6 +5,7 @@
 #include "app/stagerunner.h"
 #include "document/document.h"
 #include "pipeline/recovery.h"
+#include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
 #include "widgets/launchtreemodel.h"
@@ -30,22 +31,25 @@ private Q_SLOTS:
         MainWindow w;
         w.resize(1500, 900);
         w.show();
-        QVERIFY(w.parametersDock()->isVisible()); // a tab beside the log from the start
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QVERIFY(test::child<QDockWidget>(w, QStringLiteral("parametersDock"))
+                    ->isVisible()); // a tab beside the log from the start
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(test::dataDir(QStringLiteral("params_checks/ws")));
-        QTRY_VERIFY_WITH_TIMEOUT(!w.document()->launchDependencies().nodes.isEmpty(), 60000);
-        QTRY_VERIFY_WITH_TIMEOUT(w.launchModel()->rowCount() > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!test::child<Document>(w)->launchDependencies().nodes.isEmpty(),
+                                 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(test::child<LaunchTreeModel>(w)->rowCount() > 0, 10000);
 
         QString followId;
-        for (const NodeInstance &n : w.document()->launchDependencies().nodes)
+        for (const NodeInstance &n : test::child<Document>(w)->launchDependencies().nodes)
             if (n.nodeName == QLatin1String("follow_server"))
                 followId = n.id;
         QVERIFY(!followId.isEmpty());
-        w.launchPanel()->selectSourceIndex(w.launchModel()->nodeIndex(followId));
-        QCOMPARE(w.parameterPanel()->summary(),
+        test::child<LaunchTreePanel>(w)->selectSourceIndex(
+            test::child<LaunchTreeModel>(w)->nodeIndex(followId));
+        QCOMPARE(test::child<ParameterPanel>(w)->summary(),
                  QStringLiteral("/follow_server (FollowServer): 7 parameters declared, 2 given "
                                 "but not declared"));
-        w.parametersDock()->raise();
+        test::child<QDockWidget>(w, QStringLiteral("parametersDock"))->raise();
         test::saveScreenshot(w, QStringLiteral("parameters_tab.png"));
 
         QTemporaryDir out;

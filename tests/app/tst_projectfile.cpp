@@ -9,6 +9,7 @@
 #include "document/document.h"
 #include "project/project.h"
 #include "suggestions/suggestionengine.h"
+#include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/logview.h"
 
@@ -49,7 +50,7 @@ QString copyExampleWorkspace(const QTemporaryDir &dir)
 /// Opens `workspace` in `w` and waits for stages 1-3.
 bool openAndRun(MainWindow &w, const QString &workspace)
 {
-    QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+    QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
     w.openWorkspace(workspace);
     return finished.wait(60000);
 }
@@ -58,7 +59,7 @@ bool openAndRun(MainWindow &w, const QString &workspace)
 /// its value.
 QString decideOne(MainWindow &w)
 {
-    Document *doc = w.document();
+    Document *doc = test::child<Document>(w);
     const Recovery model{doc->atomicNodes(), doc->launchDependencies(), doc->architecture()};
     doc->session()->setSuggestions(
         SuggestionEngine(doc->workspaceRoot(), model, SuggestionEngine::Options()).run());
@@ -120,30 +121,30 @@ private Q_SLOTS:
             value = decideOne(w);
             QVERIFY(!value.isEmpty());
             QVERIFY(w.isWindowModified());
-            QVERIFY(w.document()->session()->isModified());
+            QVERIFY(test::child<Document>(w)->session()->isModified());
             QVERIFY(!QFileInfo::exists(file)); // nothing written before Save
 
-            w.projects()->saveAction()->trigger();
+            test::child<ProjectController>(w)->saveAction()->trigger();
             QVERIFY(QFileInfo::exists(file)); // into the workspace, not the application data
             QVERIFY(test::readFile(file).contains(value.toUtf8()));
             QCOMPARE(storedDecisions(file), 1);
             QVERIFY(!w.isWindowModified());
-            QCOMPARE(w.document()->session()->projectPath(), file);
+            QCOMPARE(test::child<Document>(w)->session()->projectPath(), file);
             QVERIFY(!QFileInfo::exists(ProjectFile::autosavePath(file)));
             QCOMPARE(AppSettings().recentProjects().value(0), file);
 
             // Undo marks it modified, redo back to the saved state clears it.
-            w.document()->undoStack()->undo();
+            test::child<Document>(w)->undoStack()->undo();
             QVERIFY(w.isWindowModified());
-            w.document()->undoStack()->redo();
+            test::child<Document>(w)->undoStack()->redo();
             QVERIFY(!w.isWindowModified());
 
             // The project holds the launch options as well.
             LaunchOptions options;
             options.arguments = {{QStringLiteral("robot"), QStringLiteral("r7")}};
-            w.document()->session()->setLaunchOptions(options);
+            test::child<Document>(w)->session()->setLaunchOptions(options);
             QVERIFY(w.isWindowModified());
-            QVERIFY(w.projects()->save());
+            QVERIFY(test::child<ProjectController>(w)->save());
             QVERIFY(test::readFile(file).contains("\"r7\""));
             w.close();
             QVERIFY(!w.isVisible()); // nothing unsaved: no question
@@ -151,16 +152,16 @@ private Q_SLOTS:
         // Open Project on the file opens its workspace with its decisions and launch options.
         MainWindow again;
         again.show();
-        QSignalSpy finished(again.runner(), &StageRunner::stageFinished);
-        QVERIFY(again.projects()->openProject(file));
+        QSignalSpy finished(test::child<StageRunner>(again), &StageRunner::stageFinished);
+        QVERIFY(test::child<ProjectController>(again)->openProject(file));
         QCOMPARE(again.workspace(), ws);
-        QCOMPARE(
-            again.document()->session()->launchOptions().arguments.value(QStringLiteral("robot")),
-            QStringLiteral("r7"));
+        QCOMPARE(test::child<Document>(again)->session()->launchOptions().arguments.value(
+                     QStringLiteral("robot")),
+                 QStringLiteral("r7"));
         QVERIFY(finished.wait(60000));
-        QCOMPARE(again.document()->session()->decisions().size(), 1);
+        QCOMPARE(test::child<Document>(again)->session()->decisions().size(), 1);
         bool described = false;
-        for (const AtomicNode &n : again.document()->atomicNodes().nodes)
+        for (const AtomicNode &n : test::child<Document>(again)->atomicNodes().nodes)
             described |= n.description == value;
         QVERIFY(described);
         QVERIFY(!again.isWindowModified());
@@ -176,10 +177,11 @@ private Q_SLOTS:
         const QString value = decideOne(w);
         // outside the workspace: an absolute path; inside a subfolder: relative
         const QString outside = elsewhere.filePath(QStringLiteral("review.project.json"));
-        w.projects()->setFileChooser([&](const QString &, const QString &start, bool forSaving) {
-            return forSaving && start == ProjectFile::defaultPath(ws) ? outside : QString();
-        });
-        w.projects()->saveAsAction()->trigger();
+        test::child<ProjectController>(w)->setFileChooser(
+            [&](const QString &, const QString &start, bool forSaving) {
+                return forSaving && start == ProjectFile::defaultPath(ws) ? outside : QString();
+            });
+        test::child<ProjectController>(w)->saveAsAction()->trigger();
         QVERIFY(!w.isWindowModified());
         Project saved;
         QString error;
@@ -190,25 +192,26 @@ private Q_SLOTS:
         QVERIFY(w.windowTitle().contains(QStringLiteral("review.project.json")));
 
         const QString inside = QDir(ws).filePath(QStringLiteral("docs/arch.project.json"));
-        QVERIFY(w.projects()->saveTo(inside));
+        QVERIFY(test::child<ProjectController>(w)->saveTo(inside));
         QVERIFY(ProjectFile::read(inside, &saved, &error));
         QCOMPARE(saved.workspace, QStringLiteral(".."));
         QCOMPARE(ProjectFile::workspaceOf(inside, saved), ws);
 
         // The file saved outside opens in another window with its decision.
         MainWindow other;
-        QSignalSpy finished(other.runner(), &StageRunner::stageFinished);
-        QVERIFY(other.projects()->openProject(outside));
+        QSignalSpy finished(test::child<StageRunner>(other), &StageRunner::stageFinished);
+        QVERIFY(test::child<ProjectController>(other)->openProject(outside));
         QVERIFY(finished.wait(60000));
-        QCOMPARE(other.document()->session()->projectPath(), outside);
-        QCOMPARE(other.document()->session()->decisions().size(), 1);
-        QCOMPARE(other.document()->session()->decisions().first().proposal, value);
+        QCOMPARE(test::child<Document>(other)->session()->projectPath(), outside);
+        QCOMPARE(test::child<Document>(other)->session()->decisions().size(), 1);
+        QCOMPARE(test::child<Document>(other)->session()->decisions().first().proposal, value);
 
         // Recent projects, newest first; a file that is gone is greyed.
         QCOMPARE(AppSettings().recentProjects().mid(0, 2), (QStringList{outside, inside}));
         QFile::remove(inside);
-        other.projects()->updateRecentMenu();
-        const QList<QAction *> actions = other.projects()->recentMenu()->actions();
+        test::child<ProjectController>(other)->updateRecentMenu();
+        const QList<QAction *> actions =
+            test::child<ProjectController>(other)->recentMenu()->actions();
         QVERIFY(actions.size() >= 3);
         QVERIFY(actions.at(0)->text().contains(QStringLiteral("review.project.json")));
         QVERIFY(actions.at(0)->isEnabled());
@@ -224,8 +227,8 @@ private Q_SLOTS:
         w.show();
         QVERIFY(openAndRun(w, ws));
         decideOne(w);
-        w.document()->session()->setAutosaveInterval(50);
-        QTRY_VERIFY(QFileInfo::exists(w.document()->session()->autosaveFile()));
+        test::child<Document>(w)->session()->setAutosaveInterval(50);
+        QTRY_VERIFY(QFileInfo::exists(test::child<Document>(w)->session()->autosaveFile()));
         QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
 
         // Cancel: the window stays, modified.
@@ -259,7 +262,7 @@ private Q_SLOTS:
         answer(ask, QMessageBox::Discard);
         QVERIFY(!w.isVisible());
         QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
-        QVERIFY(!QFileInfo::exists(w.document()->session()->autosaveFile()));
+        QVERIFY(!QFileInfo::exists(test::child<Document>(w)->session()->autosaveFile()));
     }
 
     void saveFromTheQuestionWritesTheProject()
@@ -287,7 +290,7 @@ private Q_SLOTS:
         {
             auto *w = new MainWindow;
             QVERIFY(openAndRun(*w, ws));
-            w->document()->session()->setAutosaveInterval(50);
+            test::child<Document>(*w)->session()->setAutosaveInterval(50);
             value = decideOne(*w);
             QTRY_VERIFY(QFileInfo::exists(side)); // the autosave, not the project
             QVERIFY(!QFileInfo::exists(ProjectFile::defaultPath(ws)));
@@ -305,30 +308,30 @@ private Q_SLOTS:
             QVERIFY2(offer->text().contains(
                          QString::number(QFileInfo(side).lastModified().date().year())),
                      qPrintable(offer->text()));
-            QVERIFY(w.document()->session()->decisions().isEmpty());
+            QVERIFY(test::child<Document>(w)->session()->decisions().isEmpty());
             test::writeFile(side + QStringLiteral(".copy"), test::readFile(side));
             answer(offer, QMessageBox::Discard);
             QVERIFY(!QFileInfo::exists(side));
-            QVERIFY(w.document()->session()->decisions().isEmpty());
+            QVERIFY(test::child<Document>(w)->session()->decisions().isEmpty());
             QVERIFY(!w.isWindowModified());
         }
         QVERIFY(QFile::rename(side + QStringLiteral(".copy"), side));
         // Recover: the decision is back, as modified state.
         MainWindow w;
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(ws);
         QMessageBox *offer = box(w, QStringLiteral("recoverAutosaveBox"));
         QVERIFY(offer);
         answer(offer, QMessageBox::Yes); // Recover, before the stages finish
         QVERIFY(finished.wait(60000));
-        QCOMPARE(w.document()->session()->decisions().size(), 1);
+        QCOMPARE(test::child<Document>(w)->session()->decisions().size(), 1);
         bool described = false;
-        for (const AtomicNode &n : w.document()->atomicNodes().nodes)
+        for (const AtomicNode &n : test::child<Document>(w)->atomicNodes().nodes)
             described |= n.description == value;
         QVERIFY(described);
         QVERIFY(w.isWindowModified());
-        QVERIFY(w.projects()->save());
+        QVERIFY(test::child<ProjectController>(w)->save());
         QCOMPARE(storedDecisions(ProjectFile::defaultPath(ws)), 1);
         QVERIFY(!QFileInfo::exists(side));
         QVERIFY(!QFileInfo::exists(ProjectFile::autosavePath(ProjectFile::defaultPath(ws))));
@@ -359,7 +362,7 @@ private Q_SLOTS:
         QVERIFY2(error->text().contains(file), qPrintable(error->text()));
         QVERIFY2(error->text().contains(reason), qPrintable(error->text()));
         QVERIFY2(error->text().contains(QStringLiteral("kept as")), qPrintable(error->text()));
-        QVERIFY(w.logView()->logEdit()->toPlainText().contains(file));
+        QVERIFY(test::child<LogView>(w)->logEdit()->toPlainText().contains(file));
         const QStringList kept =
             QDir(ws).entryList({QStringLiteral("rosarch.project.json.unreadable-*")});
         QCOMPARE(kept.size(), 1);
@@ -369,18 +372,18 @@ private Q_SLOTS:
 
         // Save writes a good project; the unreadable one stays where it was kept.
         decideOne(w);
-        QVERIFY(w.projects()->save());
+        QVERIFY(test::child<ProjectController>(w)->save());
         QCOMPARE(storedDecisions(file), 1);
         QCOMPARE(test::readFile(QDir(ws).filePath(kept.first())), content);
 
         // Open Project on a broken file says so and opens nothing.
         const QString broken = dir.filePath(QStringLiteral("broken.project.json"));
         test::writeFile(broken, content);
-        QVERIFY(!w.projects()->openProject(broken));
+        QVERIFY(!test::child<ProjectController>(w)->openProject(broken));
         error = box(w, QStringLiteral("projectErrorBox"));
         QVERIFY(error);
         QVERIFY(error->text().contains(broken));
-        QCOMPARE(w.document()->session()->projectPath(), file);
+        QCOMPARE(test::child<Document>(w)->session()->projectPath(), file);
         QCOMPARE(test::readFile(broken), content);
         answer(error, QMessageBox::Ok);
     }
@@ -392,22 +395,23 @@ private Q_SLOTS:
         MainWindow w;
         QVERIFY(openAndRun(w, ws));
         decideOne(w);
-        QVERIFY(w.projects()->save());
-        w.projects()->newAction()->trigger();
-        QVERIFY(w.document()->session()->isUntitled());
-        QVERIFY(w.document()->session()->decisions().isEmpty());
+        QVERIFY(test::child<ProjectController>(w)->save());
+        test::child<ProjectController>(w)->newAction()->trigger();
+        QVERIFY(test::child<Document>(w)->session()->isUntitled());
+        QVERIFY(test::child<Document>(w)->session()->decisions().isEmpty());
         QVERIFY(w.windowTitle().contains(QStringLiteral("new project")));
         const QString chosen = dir.filePath(QStringLiteral("fresh.project.json"));
         int asked = 0;
-        w.projects()->setFileChooser([&](const QString &, const QString &start, bool forSaving) {
-            ++asked;
-            return forSaving && start == ProjectFile::defaultPath(ws) ? chosen : QString();
-        });
-        w.projects()->saveAction()->trigger();
+        test::child<ProjectController>(w)->setFileChooser(
+            [&](const QString &, const QString &start, bool forSaving) {
+                ++asked;
+                return forSaving && start == ProjectFile::defaultPath(ws) ? chosen : QString();
+            });
+        test::child<ProjectController>(w)->saveAction()->trigger();
         QCOMPARE(asked, 1);
         QCOMPARE(storedDecisions(chosen), 0);
         QCOMPARE(storedDecisions(ProjectFile::defaultPath(ws)), 1); // the old one untouched
-        QCOMPARE(w.document()->session()->projectPath(), chosen);
+        QCOMPARE(test::child<Document>(w)->session()->projectPath(), chosen);
     }
 };
 

@@ -89,7 +89,7 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(fixture());
         QVERIFY(finished.wait(60000));
         QAction *action = exportSiteAction(w);

@@ -96,7 +96,7 @@ private Q_SLOTS:
                 a->trigger();
         w.openWorkspace(test::dataDir(QStringLiteral("check_system/ws"))); // five findings
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTreeView *findings = w.logView()->diagnosticsView();
+        QTreeView *findings = test::child<LogView>(w)->diagnosticsView();
         QTRY_VERIFY(findings->model()->rowCount() >= 3);
         const int rowHeight = findings->sizeHintForRow(0);
         QVERIFY(rowHeight > 0);
@@ -105,11 +105,12 @@ private Q_SLOTS:
                                     .arg(findings->viewport()->height())
                                     .arg(rowHeight)));
         // The filter bar's controls are shown whole, inside the Log.
-        const QRect log = w.logView()->rect();
-        for (QWidget *child : w.logView()->filterBar()->findChildren<QWidget *>()) {
-            if (!child->isVisible() || child->parentWidget() != w.logView()->filterBar())
+        const QRect log = test::child<LogView>(w)->rect();
+        for (QWidget *child : test::child<LogView>(w)->filterBar()->findChildren<QWidget *>()) {
+            if (!child->isVisible() ||
+                child->parentWidget() != test::child<LogView>(w)->filterBar())
                 continue;
-            const QRect at(child->mapTo(w.logView(), QPoint()), child->size());
+            const QRect at(child->mapTo(test::child<LogView>(w), QPoint()), child->size());
             QVERIFY2(log.contains(at),
                      qPrintable(child->objectName() + u' ' + child->metaObject()->className()));
             QVERIFY2(child->width() >= child->minimumSizeHint().width(),
@@ -121,18 +122,18 @@ private Q_SLOTS:
     {
         MainWindow w;
         smallWindow(w);
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTRY_VERIFY_WITH_TIMEOUT(!w.diagramPanel()->currentComposite().isEmpty() &&
-                                     !w.diagramPanel()->isLayingOut(),
+        QTRY_VERIFY_WITH_TIMEOUT(!test::child<DiagramPanel>(w)->currentComposite().isEmpty() &&
+                                     !test::child<DiagramPanel>(w)->isLayingOut(),
                                  60000);
         QCoreApplication::processEvents();
 
         // The main toolbar and the diagram's toolbars: every command shown.
         QString problem = toolBarProblem(&w, Qt::FindDirectChildrenOnly);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
-        DiagramPanel *diagram = w.diagramPanel();
+        DiagramPanel *diagram = test::child<DiagramPanel>(w);
         QVERIFY(diagram->overviewAction()->isVisible());
         problem = toolBarProblem(diagram);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
@@ -184,8 +185,9 @@ private Q_SLOTS:
                                 .arg(hint->height())));
 
         // The two trees: their filters whole, and a screenful of rows.
-        for (FilteredTreePanel *panel : {static_cast<FilteredTreePanel *>(w.nodePanel()),
-                                         static_cast<FilteredTreePanel *>(w.launchPanel())}) {
+        for (FilteredTreePanel *panel :
+             {static_cast<FilteredTreePanel *>(test::child<AtomicNodePanel>(w)),
+              static_cast<FilteredTreePanel *>(test::child<LaunchTreePanel>(w))}) {
             QLineEdit *filter = panel->filterEdit();
             QVERIFY(w.rect().contains(placeIn(filter, &w)));
             QVERIFY(filter->width() >= filter->minimumSizeHint().width());

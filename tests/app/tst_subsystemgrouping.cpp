@@ -11,6 +11,7 @@
 #include "plantuml/plantumlreader.h"
 #include "project/project.h"
 #include "suggestions/suggestionengine.h"
+#include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/diagram/diagrampanel.h"
 
@@ -291,7 +292,7 @@ private Q_SLOTS:
         const SuggestionReport report =
             SuggestionEngine(exampleWorkspace(), recovery, SuggestionEngine::Options()).run();
         MainWindow w;
-        Document *doc = w.document();
+        Document *doc = test::child<Document>(w);
         doc->setRecovery(recovery);
         doc->session()->setSuggestions(report);
         const Suggestion *grouping = nullptr;
@@ -300,7 +301,7 @@ private Q_SLOTS:
                 grouping = &s;
         QVERIFY(grouping);
         const QString id = grouping->id;
-        QCOMPARE(grouped(w.diagramPanel()->architecture()), QStringList());
+        QCOMPARE(grouped(test::child<DiagramPanel>(w)->architecture()), QStringList());
         const QString out = m_home.filePath(QStringLiteral("export"));
         for (const QString &ccd : exportedCcds(w, out))
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
@@ -311,7 +312,7 @@ private Q_SLOTS:
         QVERIFY(!name.isEmpty());
         QStringList members = doc->session()->acceptedGroupings().first().memberInstanceIds;
         members.sort();
-        QCOMPARE(membersOf(w.diagramPanel()->architecture(), name), members);
+        QCOMPARE(membersOf(test::child<DiagramPanel>(w)->architecture(), name), members);
         QCOMPARE(grouped(doc->architecture()), QStringList()); // the model itself is unchanged
         QStringList blocks;
         for (const QString &ccd : exportedCcds(w, out))
@@ -319,11 +320,11 @@ private Q_SLOTS:
         QVERIFY(!blocks.isEmpty());
 
         doc->undoStack()->undo();
-        QCOMPARE(grouped(w.diagramPanel()->architecture()), QStringList());
+        QCOMPARE(grouped(test::child<DiagramPanel>(w)->architecture()), QStringList());
         for (const QString &ccd : exportedCcds(w, out))
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
         doc->undoStack()->redo();
-        QCOMPARE(membersOf(w.diagramPanel()->architecture(), name), members);
+        QCOMPARE(membersOf(test::child<DiagramPanel>(w)->architecture(), name), members);
 
         // The headless command applies the same decisions through the same function: every
         // artifact is byte-identical to the GUI's export.

@@ -6,6 +6,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
 #include "widgets/atomicnodemodel.h"
@@ -71,9 +72,9 @@ class TestTalkers : public QObject
 
     MainWindow *m_window = nullptr;
 
-    DiagramPanel *diagram() const { return m_window->diagramPanel(); }
-    TalkersPanel *talkers() const { return m_window->talkersPanel(); }
-    Document *doc() const { return m_window->document(); }
+    DiagramPanel *diagram() const { return test::child<DiagramPanel>(*m_window); }
+    TalkersPanel *talkers() const { return test::child<TalkersPanel>(*m_window); }
+    Document *doc() const { return test::child<Document>(*m_window); }
 
     bool waitForLayout()
     {
@@ -107,7 +108,7 @@ class TestTalkers : public QObject
 
     QString launchSelection() const
     {
-        return m_window->launchPanel()
+        return test::child<LaunchTreePanel>(*m_window)
             ->currentSourceIndex()
             .data(LaunchTreeModel::InstanceIdRole)
             .toString();
@@ -129,12 +130,13 @@ private Q_SLOTS:
         m_window = new MainWindow;
         m_window->resize(1600, 900);
         m_window->show();
-        QSignalSpy finished(m_window->runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(*m_window), &StageRunner::stageFinished);
         m_window->openWorkspace(test::dataDir(QStringLiteral("compose_system/ws")));
         QVERIFY(finished.wait(60000));
         QVERIFY(waitForLayout());
         QCOMPARE(diagram()->currentComposite(), QStringLiteral("lf1"));
-        QVERIFY(!m_window->talkersDock()->isVisible()); // nothing clicked yet
+        QVERIFY(!test::child<QDockWidget>(*m_window, QStringLiteral("talkersDock"))
+                     ->isVisible()); // nothing clicked yet
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -143,7 +145,7 @@ private Q_SLOTS:
     {
         QVERIFY(showComposite(QStringLiteral("lf1")));
         QVERIFY(click(QStringLiteral("channel:q_detections")));
-        QVERIFY(m_window->talkersDock()->isVisible());
+        QVERIFY(test::child<QDockWidget>(*m_window, QStringLiteral("talkersDock"))->isVisible());
         // The publisher is inside the front include of vision; the rear one's is remapped
         // to /rear/detections and does not talk here.
         QCOMPARE(rows(talkers()),
@@ -217,11 +219,11 @@ private Q_SLOTS:
         QCOMPARE(launchSelection(), QStringLiteral("n4"));
         QCOMPARE(diagram()->currentComposite(), QStringLiteral("lf2"));
         QVERIFY(diagram()->scene()->item(QStringLiteral("part:part3"))->isSelected());
-        const QModelIndex port = m_window->nodePanel()->currentSourceIndex();
+        const QModelIndex port = test::child<AtomicNodePanel>(*m_window)->currentSourceIndex();
         QCOMPARE(port.data(AtomicNodeModel::NodeIdRole).toString(),
                  classIdOf(QStringLiteral("Detector")));
         QCOMPARE(port.data(AtomicNodeModel::PortIdRole).toString(), QStringLiteral("p1"));
-        QCOMPARE(m_window->sourceView()->currentFile(),
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(),
                  QStringLiteral("src/vision/src/detector.cpp"));
         // The list stays while the user walks it.
         QCOMPARE(rows(talkers()), before);
@@ -232,12 +234,12 @@ private Q_SLOTS:
         QCOMPARE(launchSelection(), QStringLiteral("n9"));
         QCOMPARE(diagram()->currentComposite(), QStringLiteral("lf1"));
         QVERIFY(diagram()->scene()->item(QStringLiteral("part:part3"))->isSelected());
-        QCOMPARE(m_window->nodePanel()
+        QCOMPARE(test::child<AtomicNodePanel>(*m_window)
                      ->currentSourceIndex()
                      .data(AtomicNodeModel::PortIdRole)
                      .toString(),
                  QStringLiteral("s1"));
-        QCOMPARE(m_window->sourceView()->currentFile(),
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(),
                  QStringLiteral("src/planning/planning/planner.py"));
         QCOMPARE(rows(talkers()), before);
     }
@@ -246,8 +248,8 @@ private Q_SLOTS:
     {
         QVERIFY(showComposite(QStringLiteral("lf1")));
         const QString camera = classIdOf(QStringLiteral("Camera"));
-        m_window->nodePanel()->selectSourceIndex(
-            m_window->nodeModel()->portIndex(camera, QStringLiteral("s1")));
+        test::child<AtomicNodePanel>(*m_window)->selectSourceIndex(
+            test::child<AtomicNodeModel>(*m_window)->portIndex(camera, QStringLiteral("s1")));
         // Camera starts twice below system, so its trigger port has two names.
         QCOMPARE(rows(talkers()),
                  (QStringList{
@@ -283,8 +285,8 @@ private Q_SLOTS:
     {
         QVERIFY(showComposite(QStringLiteral("lf1")));
         // Select something else first, so that each view has to move.
-        m_window->launchPanel()->selectSourceIndex(
-            m_window->launchModel()->nodeIndex(QStringLiteral("n11")));
+        test::child<LaunchTreePanel>(*m_window)->selectSourceIndex(
+            test::child<LaunchTreeModel>(*m_window)->nodeIndex(QStringLiteral("n11")));
         QVERIFY(waitForLayout());
         const Composite *c = doc()->architecture().composite(QStringLiteral("lf1"));
         int index = -1;
@@ -300,7 +302,7 @@ private Q_SLOTS:
         // planner (n9, part3) everywhere: the launch tree, the node list's class, the part
         // next to the edge in the diagram; the source shows the subscription in code.
         QCOMPARE(launchSelection(), QStringLiteral("n9"));
-        QCOMPARE(m_window->nodePanel()
+        QCOMPARE(test::child<AtomicNodePanel>(*m_window)
                      ->currentSourceIndex()
                      .data(AtomicNodeModel::NodeIdRole)
                      .toString(),
@@ -308,7 +310,7 @@ private Q_SLOTS:
         QVERIFY(diagram()->scene()->item(QStringLiteral("part:part3"))->isSelected());
         QVERIFY(edge->isSelected());
         QCOMPARE(diagram()->currentComposite(), QStringLiteral("lf1"));
-        QCOMPARE(m_window->sourceView()->currentFile(),
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(),
                  QStringLiteral("src/planning/planning/planner.py"));
         QCOMPARE(talkers()->summary(), QStringLiteral("Talkers on topic /detections in system"));
         test::saveScreenshot(*m_window, QStringLiteral("talkers-edge.png"));

@@ -69,7 +69,7 @@ private Q_SLOTS:
         QVERIFY(resetLayout(w));
         w.openWorkspace(test::dataDir(QStringLiteral("check_system/ws"))); // five findings
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTreeView *findings = w.logView()->diagnosticsView();
+        QTreeView *findings = test::child<LogView>(w)->diagnosticsView();
         QTRY_VERIFY(findings->model()->rowCount() >= 3);
         const int rowHeight = findings->sizeHintForRow(0);
         QVERIFY(rowHeight > 0);
@@ -150,7 +150,7 @@ private Q_SLOTS:
         {
             MainWindow w;
             w.show();
-            DiagnosticFilterBar *bar = w.logView()->filterBar();
+            DiagnosticFilterBar *bar = test::child<LogView>(w)->filterBar();
             bar->severityButton(Diagnostic::Severity::Info)->setChecked(false);
             bar->searchEdit()->setText(QStringLiteral("braces"));
             bar->groupingCombo()->setCurrentIndex(
@@ -159,7 +159,7 @@ private Q_SLOTS:
         }
         MainWindow again;
         again.show();
-        DiagnosticFilterBar *bar = again.logView()->filterBar();
+        DiagnosticFilterBar *bar = test::child<LogView>(again)->filterBar();
         QVERIFY(!bar->severityButton(Diagnostic::Severity::Info)->isChecked());
         QVERIFY(bar->severityButton(Diagnostic::Severity::Error)->isChecked());
         QCOMPARE(bar->searchEdit()->text(), QStringLiteral("braces"));
@@ -167,7 +167,8 @@ private Q_SLOTS:
                  int(DiagnosticModel::Grouping::Package));
         // and the table follows what the bar says
         const auto *model = qobject_cast<const DiagnosticModel *>(
-            qobject_cast<QSortFilterProxyModel *>(again.logView()->diagnosticsView()->model())
+            qobject_cast<QSortFilterProxyModel *>(
+                test::child<LogView>(again)->diagnosticsView()->model())
                 ->sourceModel());
         QVERIFY(model);
         QVERIFY(!model->filter().infos);

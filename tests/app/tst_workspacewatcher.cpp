@@ -160,17 +160,17 @@ private Q_SLOTS:
     {
         MainWindow w;
         w.show();
-        QSignalSpy finished(w.runner(), &StageRunner::stageFinished);
+        QSignalSpy finished(test::child<StageRunner>(w), &StageRunner::stageFinished);
         w.openWorkspace(m_ws);
         QVERIFY(finished.wait(60000));
-        QVERIFY(hasPort(*w.document(), QStringLiteral("chatter")));
-        QVERIFY(!hasPort(*w.document(), QStringLiteral("chatter_renamed")));
+        QVERIFY(hasPort(*test::child<Document>(w), QStringLiteral("chatter")));
+        QVERIFY(!hasPort(*test::child<Document>(w), QStringLiteral("chatter_renamed")));
 
-        QSignalSpy started(w.runner(), &StageRunner::stageStarted);
+        QSignalSpy started(test::child<StageRunner>(w), &StageRunner::stageStarted);
         edit(m_ws + QLatin1Char('/') + kTalker, "'chatter'", "'chatter_renamed'");
         QVERIFY(finished.wait(60000));
         QCOMPARE(started.count(), 1);
-        QVERIFY(hasPort(*w.document(), QStringLiteral("chatter_renamed")));
+        QVERIFY(hasPort(*test::child<Document>(w), QStringLiteral("chatter_renamed")));
         QVERIFY(AppSettings().watchWorkspace());
     }
 };

@@ -6,7 +6,21 @@
 #include "pipeline/recovery.h"
 #include "support/testsupport.h"
 
+#include <QObject>
+
 namespace rosarch::test {
+
+/// The one T in `window`'s object tree (the one named `objectName` when given): tests reach
+/// the main window's panels, docks, actions, models and controllers this way, so the window
+/// keeps no getters for them. Stops the test when there is none, or several without a name.
+template <typename T> T *child(const QObject &window, const QString &objectName = {})
+{
+    const QList<T *> found = window.findChildren<T *>(objectName);
+    if (found.size() != 1)
+        qFatal("%lld objects of type %s named \"%s\" in the window, expected one",
+               qlonglong(found.size()), T::staticMetaObject.className(), qPrintable(objectName));
+    return found.first();
+}
 
 // tests/data/gui_ws: a Python talker, a C++ listener and launch files that start them.
 namespace gui {

@@ -47,7 +47,9 @@ QString rowsText(const QTreeView *view)
 /// the most to filter.
 void selectClassWithMostParameters(MainWindow &w)
 {
-    AtomicNodeModel *model = w.nodeModel();
+    auto *model = w.findChild<AtomicNodeModel *>();
+    auto *nodes = w.findChild<AtomicNodePanel *>();
+    auto *parameters = w.findChild<ParameterPanel *>();
     QModelIndex best;
     int most = -1;
     for (int p = 0; p < model->rowCount(); ++p) {
@@ -56,16 +58,16 @@ void selectClassWithMostParameters(MainWindow &w)
             const QModelIndex node = model->index(n, 0, package);
             if (model->kind(node) != AtomicNodeModel::ItemKind::Node)
                 continue;
-            w.nodePanel()->selectSourceIndex(node);
+            nodes->selectSourceIndex(node);
             QCoreApplication::processEvents();
-            if (const int rows = w.parameterPanel()->model()->rowCount(); rows > most) {
+            if (const int rows = parameters->model()->rowCount(); rows > most) {
                 most = rows;
                 best = node;
             }
         }
     }
     if (best.isValid())
-        w.nodePanel()->selectSourceIndex(best);
+        nodes->selectSourceIndex(best);
 }
 
 /// Shows the largest composite the panel lays out, in full, so that the search has the most
@@ -95,33 +97,39 @@ void showLargestComposite(DiagramPanel *panel)
 
 QList<FilterBox> filterBoxes(MainWindow &w)
 {
+    // The panels are found once: a lookup per key press would be measured with the filter.
+    auto *nodes = w.findChild<AtomicNodePanel *>();
+    auto *launch = w.findChild<LaunchTreePanel *>();
+    auto *log = w.findChild<LogView *>();
+    auto *parameters = w.findChild<ParameterPanel *>();
+    auto *diagram = w.findChild<DiagramPanel *>();
     QList<FilterBox> boxes;
-    boxes.append({QStringLiteral("node list"), w.nodePanel()->filterEdit(),
-                  [&w] { bringForward(w.nodePanel()); },
-                  [&w] { return rowsText(w.nodePanel()->treeView()); }});
-    boxes.append({QStringLiteral("launch tree"), w.launchPanel()->filterEdit(),
-                  [&w] { bringForward(w.launchPanel()); },
-                  [&w] { return rowsText(w.launchPanel()->treeView()); }});
-    boxes.append({QStringLiteral("findings"), w.logView()->filterBar()->searchEdit(),
-                  [&w] { bringForward(w.logView()); },
-                  [&w] { return rowsText(w.logView()->diagnosticsView()); }});
-    boxes.append({QStringLiteral("parameters"), w.parameterPanel()->filter(),
-                  [&w] {
+    boxes.append({QStringLiteral("node list"), nodes->filterEdit(),
+                  [nodes] { bringForward(nodes); },
+                  [nodes] { return rowsText(nodes->treeView()); }});
+    boxes.append({QStringLiteral("launch tree"), launch->filterEdit(),
+                  [launch] { bringForward(launch); },
+                  [launch] { return rowsText(launch->treeView()); }});
+    boxes.append({QStringLiteral("findings"), log->filterBar()->searchEdit(),
+                  [log] { bringForward(log); },
+                  [log] { return rowsText(log->diagnosticsView()); }});
+    boxes.append({QStringLiteral("parameters"), parameters->filter(),
+                  [&w, parameters] {
                       selectClassWithMostParameters(w);
-                      bringForward(w.parameterPanel());
+                      bringForward(parameters);
                   },
-                  [&w] {
+                  [parameters] {
                       return QStringLiteral("%1 of %2 parameters")
-                          .arg(w.parameterPanel()->proxy()->rowCount())
-                          .arg(w.parameterPanel()->model()->rowCount());
+                          .arg(parameters->proxy()->rowCount())
+                          .arg(parameters->model()->rowCount());
                   }});
-    boxes.append({QStringLiteral("diagram find"), w.diagramPanel()->searchField(),
-                  [&w] {
-                      bringForward(w.diagramPanel());
-                      showLargestComposite(w.diagramPanel());
+    boxes.append({QStringLiteral("diagram find"), diagram->searchField(),
+                  [diagram] {
+                      bringForward(diagram);
+                      showLargestComposite(diagram);
                   },
-                  [&w] {
-                      const QString text = w.diagramPanel()->matchText();
+                  [diagram] {
+                      const QString text = diagram->matchText();
                       return text.isEmpty() ? QStringLiteral("no search") : text;
                   }});
     return boxes;

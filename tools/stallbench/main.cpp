@@ -210,7 +210,7 @@ int main(int argc, char **argv)
     w.resize(1400, 900);
     w.show();
     spinFor(app, 300);
-    StageRunner *runner = w.runner();
+    StageRunner *runner = w.findChild<StageRunner *>();
     QAction *cancel = actionWithShortcut(w, QKeySequence(Qt::Key_Escape));
     int finished = 0;
     int canceled = 0;
@@ -260,7 +260,8 @@ int main(int argc, char **argv)
 
     // A person clicks the first root launch file: the diagram draws its composite, and the
     // next runs keep that selection.
-    if (auto *tree = w.launchPanel()->findChild<QTreeView *>(); tree && tree->model()) {
+    if (auto *tree = w.findChild<LaunchTreePanel *>()->findChild<QTreeView *>();
+        tree && tree->model()) {
         app.beginPhase(QStringLiteral("select launch file"));
         // from an event, as a click comes: the report then names what ran in it
         QTimer::singleShot(0, &app, [tree] {
@@ -365,6 +366,6 @@ int main(int argc, char **argv)
     }
     out() << QStringLiteral("overall longest UI gap: %1 ms\n").arg(app.longestGap());
     out().flush();
-    w.document()->session()->discardChanges();
+    w.findChild<Document *>()->session()->discardChanges();
     return 0;
 }

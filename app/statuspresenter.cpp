@@ -1,6 +1,6 @@
-// The main window's status bar: the counts of what the stages found, the progress of a run
-// with its cancel button, and the launch tree's placeholder while there is nothing to show.
-#include "app/mainwindow.h"
+#include "app/statuspresenter.h"
+#include "app/paneldocks.h"
+#include "app/stagecontroller.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
 #include "pipeline/recovery.h"
@@ -13,41 +13,53 @@
 #include <QFrame>
 #include <QLabel>
 #include <QLocale>
+#include <QMainWindow>
 #include <QProgressBar>
 #include <QStatusBar>
 #include <QToolButton>
 
 namespace rosarch {
 
-void MainWindow::createStatusBar()
+StatusPresenter::StatusPresenter(QMainWindow *window, Document *document, StageRunner *runner,
+                                 const StageController *stages, PanelDocks *docks,
+                                 QAction *cancelAction)
+    : QObject(window), m_window(window), m_document(document), m_runner(runner), m_stages(stages),
+      m_docks(docks), m_cancelAction(cancelAction), m_countsLabel(new QLabel(window)),
+      m_countsSeparator(new QFrame(window)), m_progressBar(new QProgressBar(window)),
+      m_cancelButton(new QToolButton(window))
 {
-    m_countsLabel = new QLabel(this);
-    m_progressBar = new QProgressBar(this);
+    m_countsLabel->setObjectName(QStringLiteral("countsLabel"));
+    m_progressBar->setObjectName(QStringLiteral("stageProgressBar"));
     m_progressBar->setFixedWidth(220);
     m_progressBar->setMaximumHeight(16);
     m_progressBar->setTextVisible(false);
-    m_cancelButton = new QToolButton(this);
     m_cancelButton->setDefaultAction(m_cancelAction);
     m_cancelButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_cancelButton->setAutoRaise(true);
     // A line between the messages and the counts: a long message is cut where they begin,
     // and its last number would otherwise read as the first count's.
-    m_countsSeparator = new QFrame(this);
     m_countsSeparator->setFrameShape(QFrame::VLine);
     m_countsSeparator->setFrameShadow(QFrame::Sunken);
     m_countsLabel->setContentsMargins(4, 0, 0, 0);
-    statusBar()->addPermanentWidget(m_countsSeparator);
-    statusBar()->addPermanentWidget(m_countsLabel);
-    statusBar()->addPermanentWidget(m_progressBar);
-    statusBar()->addPermanentWidget(m_cancelButton);
+    QStatusBar *bar = window->statusBar();
+    bar->addPermanentWidget(m_countsSeparator);
+    bar->addPermanentWidget(m_countsLabel);
+    bar->addPermanentWidget(m_progressBar);
+    bar->addPermanentWidget(m_cancelButton);
+
+    connect(m_runner, &StageRunner::stageStarted, this, &StatusPresenter::onStageStarted);
+    connect(m_runner, &StageRunner::stageProgressed, this, &StatusPresenter::onStageProgressed);
+    connect(m_runner, &StageRunner::stageFinished, this, [this] { onStageEnded(false); });
+    connect(m_runner, &StageRunner::launchStageFinished, this, [this] { onStageEnded(false); });
+    connect(m_runner, &StageRunner::stageCanceled, this, [this] { onStageEnded(true); });
+    connect(m_runner, &StageRunner::stageFailed, this, [this] { onStageEnded(true); });
 }
 
-void MainWindow::updateCounts()
+RecoveryCounts StatusPresenter::updateCounts()
 {
     const AtomicNodeList &list = m_document->atomicNodes();
     const RecoveryCounts counts =
         RecoveryCounts::of({list, m_document->launchDependencies(), m_document->architecture()});
-    const qsizetype diagnostics = counts.diagnostics;
     // Explicit singular/plural: no translator is loaded for English, so "%n node(s)" would show.
     const auto count = [](qsizetype n, const QString &one, const QString &many) {
         return n == 1 ? one : many.arg(n);
@@ -61,19 +73,17 @@ void MainWindow::updateCounts()
                          count(counts.nodeInstances, tr("1 instance"), tr("%1 instances")),
                          count(counts.unresolved, tr("1 unresolved"), tr("%1 unresolved")),
                          count(counts.composites, tr("1 composite"), tr("%1 composites")),
-                         count(diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
+                         count(counts.diagnostics, tr("1 diagnostic"), tr("%1 diagnostics"))};
     m_countsLabel->setText(parts.join(QStringLiteral(" · ")));
     m_countsLabel->setToolTip(tr("Stage 1: packages, atomic node classes and their ports.\n"
                                  "Stage 2: launch files found, node instances they start and "
                                  "expressions that could not be resolved statically.\n"
                                  "Stage 3: composites, one per launch-file instance."));
-    m_exportAction->setEnabled(!list.workspaceRoot.isEmpty());
-    m_nextDiagnosticAction->setEnabled(diagnostics > 0);
-    m_previousDiagnosticAction->setEnabled(diagnostics > 0);
     updatePlaceholders();
+    return counts;
 }
 
-void MainWindow::updatePlaceholders()
+void StatusPresenter::updatePlaceholders()
 {
     const AtomicNodeList &nodes = m_document->atomicNodes();
     const LaunchDependencies &launch = m_document->launchDependencies();
@@ -83,7 +93,7 @@ void MainWindow::updatePlaceholders()
         tr("The run stopped before it had a result, so nothing is known yet.\n\nRun it again "
            "with Stages → Run All.");
     QString nodesText, launchText, diagramText;
-    if (workspace().isEmpty() && m_document->workspaceRoot().isEmpty()) {
+    if (m_stages->workspace().isEmpty() && m_document->workspaceRoot().isEmpty()) {
         nodesText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its node classes.");
         launchText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.");
         diagramText = tr("Open a ROS 2 workspace (File → Open Workspace) to see its composed "
@@ -114,15 +124,12 @@ void MainWindow::updatePlaceholders()
                      "launch file (or a program that builds several nodes) starts.")
                 : tr("No composed diagram yet. Run stage 3 to compose the launch files.");
     }
-    if (m_nodePanel)
-        m_nodePanel->setPlaceholderText(nodesText);
-    if (m_launchPanel)
-        m_launchPanel->setPlaceholderText(launchText);
-    if (m_diagramPanel)
-        m_diagramPanel->setEmptyText(diagramText);
+    m_docks->nodePanel()->setPlaceholderText(nodesText);
+    m_docks->launchPanel()->setPlaceholderText(launchText);
+    m_docks->diagramPanel()->setEmptyText(diagramText);
 }
 
-void MainWindow::setRunning(bool running)
+void StatusPresenter::setRunning(bool running)
 {
     // Before a first result the counts would all read 0, as if the workspace were empty.
     const bool result = !m_document->atomicNodes().nodes.isEmpty() ||
@@ -136,14 +143,20 @@ void MainWindow::setRunning(bool running)
     updatePlaceholders();
 }
 
-void MainWindow::onStageStarted()
+void StatusPresenter::onStageStarted()
 {
     m_lastProgressText.clear();
     m_progressBar->setRange(0, 0);
     setRunning(true);
 }
 
-void MainWindow::onStageProgressed(int done, int total, const QString &what, int stage)
+void StatusPresenter::onStageEnded(bool stopped)
+{
+    m_runStopped = stopped;
+    setRunning(false);
+}
+
+void StatusPresenter::onStageProgressed(int done, int total, const QString &what, int stage)
 {
     if (total > 0) {
         m_progressBar->setRange(0, total);
@@ -168,13 +181,14 @@ void MainWindow::onStageProgressed(int done, int total, const QString &what, int
                        .arg(stage)
                        .arg(name, locale.toString(done), locale.toString(total));
         m_progressBar->setToolTip(what);
-        statusBar()->showMessage(text);
+        m_window->statusBar()->showMessage(text);
         return;
     }
     if (!what.isEmpty() && what != m_lastProgressText) {
         m_lastProgressText = what;
-        statusBar()->showMessage(what);
-        m_logView->appendLog(total > 0 ? tr("[%1/%2] %3").arg(done).arg(total).arg(what) : what);
+        m_window->statusBar()->showMessage(what);
+        m_docks->logView()->appendLog(total > 0 ? tr("[%1/%2] %3").arg(done).arg(total).arg(what)
+                                                : what);
     }
 }
 
