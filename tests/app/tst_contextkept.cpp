@@ -8,6 +8,7 @@
 #include "document/document.h"
 #include "suggestions/suggestionengine.h"
 #include "support/diagramwait.h"
+#include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
 #include "widgets/atomicnodemodel.h"
@@ -98,21 +99,22 @@ class TestContextKept : public QObject
     QTemporaryDir m_dir;
     MainWindow *m_window = nullptr;
 
-    Document *doc() const { return m_window->document(); }
-    DiagramPanel *diagram() const { return m_window->diagramPanel(); }
+    Document *doc() const { return test::child<Document>(*m_window); }
+    DiagramPanel *diagram() const { return test::child<DiagramPanel>(*m_window); }
 
     Place place() const
     {
         Place p;
-        p.nodeFilter = m_window->nodePanel()->filterEdit()->text();
-        p.launchFilter = m_window->launchPanel()->filterEdit()->text();
-        const QModelIndex node = m_window->nodePanel()->currentSourceIndex();
-        p.nodeRow =
-            m_window->nodeModel()->elementId(node) + u' ' + m_window->nodeModel()->stableKey(node);
-        const QModelIndex launch = m_window->launchPanel()->currentSourceIndex();
+        p.nodeFilter = test::child<AtomicNodePanel>(*m_window)->filterEdit()->text();
+        p.launchFilter = test::child<LaunchTreePanel>(*m_window)->filterEdit()->text();
+        const QModelIndex node = test::child<AtomicNodePanel>(*m_window)->currentSourceIndex();
+        p.nodeRow = test::child<AtomicNodeModel>(*m_window)->elementId(node) + u' ' +
+                    test::child<AtomicNodeModel>(*m_window)->stableKey(node);
+        const QModelIndex launch = test::child<LaunchTreePanel>(*m_window)->currentSourceIndex();
         p.launchRow = launch.data(LaunchTreeModel::InstanceIdRole).toString() + u' ' +
-                      m_window->launchModel()->stableKey(launch);
-        p.nodeScroll = m_window->nodePanel()->treeView()->verticalScrollBar()->value();
+                      test::child<LaunchTreeModel>(*m_window)->stableKey(launch);
+        p.nodeScroll =
+            test::child<AtomicNodePanel>(*m_window)->treeView()->verticalScrollBar()->value();
         p.composite = diagram()->currentComposite();
         DiagramView *view = diagram()->view();
         p.zoom = view->zoom();
@@ -125,7 +127,7 @@ class TestContextKept : public QObject
         if (!p.diagramSelection.isEmpty())
             if (const DiagramItem *item = diagram()->scene()->item(p.diagramSelection.first()))
                 p.selectedAt = view->mapFromScene(item->sceneBoundingRect().topLeft());
-        const SourceView *source = m_window->sourceView();
+        const SourceView *source = test::child<SourceView>(*m_window);
         p.sourceFile = source->currentFile();
         source->editor()->getCursorPosition(&p.cursorLine, &p.cursorIndex);
         p.firstLine = source->editor()->firstVisibleLine();
@@ -193,7 +195,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(
             !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
         QTRY_VERIFY(doc()->session()->keysReady());
-        m_window->corrections()->setDialogHandler([](CorrectionDialog &d) {
+        test::child<CorrectionController>(*m_window)->setDialogHandler([](CorrectionDialog &d) {
             const QString title = d.windowTitle();
             if (title == QLatin1String("Add Connection")) {
                 d.setPortKind(PortKind::Subscriber);
@@ -223,26 +225,30 @@ private Q_SLOTS:
         // Types a filter in both trees, picks the navigator in the launch tree (the node list
         // follows with its class), then one of its ports in the node list (the source shows
         // its line), scrolls the source, and zooms and scrolls the diagram.
-        QTest::keyClicks(m_window->launchPanel()->filterEdit(), QStringLiteral("nav"));
-        QTest::keyClicks(m_window->nodePanel()->filterEdit(), QStringLiteral("nav"));
+        QTest::keyClicks(test::child<LaunchTreePanel>(*m_window)->filterEdit(),
+                         QStringLiteral("nav"));
+        QTest::keyClicks(test::child<AtomicNodePanel>(*m_window)->filterEdit(),
+                         QStringLiteral("nav"));
         QTest::qWait(400); // the launch tree waits for a pause in typing on a slow filter
         const QString navigator = instanceNamed(QStringLiteral("navigator"));
         QVERIFY(!navigator.isEmpty());
-        QTreeView *launchTree = m_window->launchPanel()->treeView();
-        const QModelIndex launchRow = m_window->launchPanel()->proxyModel()->mapFromSource(
-            m_window->launchModel()->nodeIndex(navigator));
+        QTreeView *launchTree = test::child<LaunchTreePanel>(*m_window)->treeView();
+        const QModelIndex launchRow =
+            test::child<LaunchTreePanel>(*m_window)->proxyModel()->mapFromSource(
+                test::child<LaunchTreeModel>(*m_window)->nodeIndex(navigator));
         QVERIFY2(launchRow.isValid(), "the filter shows the navigator");
         redrawnAfter([&] { launchTree->setCurrentIndex(launchRow); });
         const QString classId = doc()->launchDependencies().node(navigator)->classId;
-        QCOMPARE(m_window->nodePanel()->currentSourceIndex(),
-                 m_window->nodeModel()->nodeIndex(classId));
-        const QModelIndex port =
-            m_window->nodeModel()->index(1, 0, m_window->nodeModel()->nodeIndex(classId));
+        QCOMPARE(test::child<AtomicNodePanel>(*m_window)->currentSourceIndex(),
+                 test::child<AtomicNodeModel>(*m_window)->nodeIndex(classId));
+        const QModelIndex port = test::child<AtomicNodeModel>(*m_window)->index(
+            1, 0, test::child<AtomicNodeModel>(*m_window)->nodeIndex(classId));
         QVERIFY(port.isValid());
-        m_window->nodePanel()->treeView()->setCurrentIndex(
-            m_window->nodePanel()->proxyModel()->mapFromSource(port));
-        QVERIFY(m_window->sourceView()->currentFile().endsWith(QLatin1String("navigator.cpp")));
-        m_window->sourceView()->editor()->setFirstVisibleLine(3);
+        test::child<AtomicNodePanel>(*m_window)->treeView()->setCurrentIndex(
+            test::child<AtomicNodePanel>(*m_window)->proxyModel()->mapFromSource(port));
+        QVERIFY(test::child<SourceView>(*m_window)->currentFile().endsWith(
+            QLatin1String("navigator.cpp")));
+        test::child<SourceView>(*m_window)->editor()->setFirstVisibleLine(3);
 
         DiagramView *view = diagram()->view();
         view->setZoom(1.6);
@@ -265,7 +271,7 @@ private Q_SLOTS:
     void aConnectionKeepsThePlace()
     {
         keptThrough(QStringLiteral("Add Connection"), [this] {
-            QVERIFY(m_window->corrections()->addConnection(
+            QVERIFY(test::child<CorrectionController>(*m_window)->addConnection(
                 {EKind::Instance, instanceNamed(QStringLiteral("navigator")), {}, {}}));
         });
         // the connection was made, in the diagram shown too
@@ -279,7 +285,7 @@ private Q_SLOTS:
     void aRenameKeepsThePlace()
     {
         keptThrough(QStringLiteral("Rename"), [this] {
-            QVERIFY(m_window->corrections()->rename(
+            QVERIFY(test::child<CorrectionController>(*m_window)->rename(
                 {EKind::Instance, instanceNamed(QStringLiteral("mode_manager")), {}, {}}));
         });
     }
@@ -290,9 +296,11 @@ private Q_SLOTS:
         const QString classId =
             doc()->launchDependencies().node(instanceNamed(QStringLiteral("navigator")))->classId;
         keptThrough(QStringLiteral("Add Port"), [&] {
-            QVERIFY(m_window->corrections()->addPort({EKind::Class, classId, {}, {}}));
+            QVERIFY(test::child<CorrectionController>(*m_window)->addPort(
+                {EKind::Class, classId, {}, {}}));
         });
-        QVERIFY(m_window->nodeModel()->rowCount(m_window->nodeModel()->nodeIndex(classId)) > 0);
+        QVERIFY(test::child<AtomicNodeModel>(*m_window)->rowCount(
+                    test::child<AtomicNodeModel>(*m_window)->nodeIndex(classId)) > 0);
     }
 
     void anAddedPartReshapesTheLaunchTreeAndKeepsThePlace()
@@ -303,7 +311,8 @@ private Q_SLOTS:
                 mission = lf.id;
         QVERIFY(!mission.isEmpty());
         keptThrough(QStringLiteral("Add Part"), [&] {
-            QVERIFY(m_window->corrections()->addPart({EKind::LaunchFile, mission, {}, {}}));
+            QVERIFY(test::child<CorrectionController>(*m_window)->addPart(
+                {EKind::LaunchFile, mission, {}, {}}));
         });
     }
 

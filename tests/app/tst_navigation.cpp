@@ -8,6 +8,7 @@
 #include "diagram/diagrambuilder.h"
 #include "document/document.h"
 #include "support/diagramwait.h"
+#include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/atomicnodemodel.h"
 #include "widgets/atomicnodepanel.h"
@@ -43,9 +44,9 @@ class TestNavigation : public QObject
     QTemporaryDir m_dir;
     MainWindow *m_window = nullptr;
 
-    Document *doc() const { return m_window->document(); }
-    DiagramPanel *diagram() const { return m_window->diagramPanel(); }
-    NavigationController *nav() const { return m_window->navigation(); }
+    Document *doc() const { return test::child<Document>(*m_window); }
+    DiagramPanel *diagram() const { return test::child<DiagramPanel>(*m_window); }
+    NavigationController *nav() const { return test::child<NavigationController>(*m_window); }
     QAction *back() const { return nav()->backAction(); }
     QAction *forward() const { return nav()->forwardAction(); }
 
@@ -58,14 +59,15 @@ class TestNavigation : public QObject
     }
     QString launchRow() const
     {
-        return m_window->launchPanel()
+        return test::child<LaunchTreePanel>(*m_window)
             ->currentSourceIndex()
             .data(LaunchTreeModel::InstanceIdRole)
             .toString();
     }
     QString nodeRow() const
     {
-        return m_window->nodeModel()->elementId(m_window->nodePanel()->currentSourceIndex());
+        return test::child<AtomicNodeModel>(*m_window)->elementId(
+            test::child<AtomicNodePanel>(*m_window)->currentSourceIndex());
     }
     /// Lets the turn of the event loop in which a person acted end: then it is one place.
     static void settle() { QTest::qWait(20); }
@@ -133,37 +135,39 @@ private Q_SLOTS:
         // 1. The navigator in the launch tree (the node list follows with its class).
         const QString navigator = instanceNamed(QStringLiteral("navigator"));
         QVERIFY(!navigator.isEmpty());
-        QTreeView *launchTree = m_window->launchPanel()->treeView();
+        QTreeView *launchTree = test::child<LaunchTreePanel>(*m_window)->treeView();
         launchTree->setFocus();
         QVERIFY(test::laidOut(*diagram(), [&] {
-            launchTree->setCurrentIndex(m_window->launchPanel()->proxyModel()->mapFromSource(
-                m_window->launchModel()->nodeIndex(navigator)));
+            launchTree->setCurrentIndex(
+                test::child<LaunchTreePanel>(*m_window)->proxyModel()->mapFromSource(
+                    test::child<LaunchTreeModel>(*m_window)->nodeIndex(navigator)));
         }));
         settle();
         QCOMPARE(nav()->history()->places().size(), 1); // the class that followed is no place
         const NavigationPlace first = *nav()->history()->current();
         QCOMPARE(first.panel, Panel::Launch);
-        QCOMPARE(first.key,
-                 m_window->launchModel()->stableKey(m_window->launchModel()->nodeIndex(navigator)));
+        QCOMPARE(first.key, test::child<LaunchTreeModel>(*m_window)->stableKey(
+                                test::child<LaunchTreeModel>(*m_window)->nodeIndex(navigator)));
         QVERIFY2(first.key.startsWith(QLatin1String("instance:")), qPrintable(first.key));
         QVERIFY(!back()->isEnabled());
         const QString navigatorClass = nodeRow();
         QVERIFY(!navigatorClass.isEmpty());
 
         // 2. One of its ports in the node list: the source shows the port's line.
-        const QModelIndex classIndex = m_window->nodeModel()->nodeIndex(navigatorClass);
-        const QModelIndex port = m_window->nodeModel()->index(1, 0, classIndex);
+        const QModelIndex classIndex =
+            test::child<AtomicNodeModel>(*m_window)->nodeIndex(navigatorClass);
+        const QModelIndex port = test::child<AtomicNodeModel>(*m_window)->index(1, 0, classIndex);
         QVERIFY(port.isValid());
-        m_window->nodePanel()->treeView()->setFocus();
-        m_window->nodePanel()->treeView()->setCurrentIndex(
-            m_window->nodePanel()->proxyModel()->mapFromSource(port));
+        test::child<AtomicNodePanel>(*m_window)->treeView()->setFocus();
+        test::child<AtomicNodePanel>(*m_window)->treeView()->setCurrentIndex(
+            test::child<AtomicNodePanel>(*m_window)->proxyModel()->mapFromSource(port));
         settle();
         const QString portRow = nodeRow();
         QCOMPARE(nav()->history()->current()->panel, Panel::Nodes);
         QVERIFY(nav()->history()->current()->key.startsWith(QLatin1String("port:")));
-        const QString portFile = m_window->sourceView()->currentFile();
+        const QString portFile = test::child<SourceView>(*m_window)->currentFile();
         int portLine = -1, index = 0;
-        m_window->sourceView()->editor()->getCursorPosition(&portLine, &index);
+        test::child<SourceView>(*m_window)->editor()->getCursorPosition(&portLine, &index);
         QVERIFY(portLine > 0);
         QVERIFY(back()->isEnabled());
         QVERIFY(back()->toolTip().contains(QLatin1String("launch tree")));
@@ -200,7 +204,7 @@ private Q_SLOTS:
                  QStringLiteral("part ") + doc()->session()->keyOf(otherInstance));
 
         // 4. A finding in the Log.
-        QTreeView *findings = m_window->logView()->diagnosticsView();
+        QTreeView *findings = test::child<LogView>(*m_window)->diagnosticsView();
         QModelIndex finding;
         for (int row = 0; row < findings->model()->rowCount() && !finding.isValid(); ++row) {
             const QModelIndex i = findings->model()->index(row, 0);
@@ -226,9 +230,9 @@ private Q_SLOTS:
         QVERIFY(forward()->isEnabled());
         press(Qt::Key_Left);
         QCOMPARE(nodeRow(), portRow);
-        QCOMPARE(m_window->sourceView()->currentFile(), portFile);
+        QCOMPARE(test::child<SourceView>(*m_window)->currentFile(), portFile);
         int line = -1;
-        m_window->sourceView()->editor()->getCursorPosition(&line, &index);
+        test::child<SourceView>(*m_window)->editor()->getCursorPosition(&line, &index);
         QCOMPARE(line, portLine);
         press(Qt::Key_Left);
         QCOMPARE(launchRow(), navigator);
@@ -249,8 +253,10 @@ private Q_SLOTS:
         QVERIFY(!forward()->isEnabled());
 
         // The mouse's back button over the node list.
-        QTest::mousePress(m_window->nodePanel()->treeView()->viewport(), Qt::BackButton);
-        QTest::mouseRelease(m_window->nodePanel()->treeView()->viewport(), Qt::BackButton);
+        QTest::mousePress(test::child<AtomicNodePanel>(*m_window)->treeView()->viewport(),
+                          Qt::BackButton);
+        QTest::mouseRelease(test::child<AtomicNodePanel>(*m_window)->treeView()->viewport(),
+                            Qt::BackButton);
         settle();
         QCOMPARE(diagram()->selectedKeys(), QStringList{partKey});
         QCOMPARE(nav()->history()->currentIndex(), 2);
@@ -258,8 +264,8 @@ private Q_SLOTS:
         // A new place after going back drops the places ahead, as a browser does.
         press(Qt::Key_Left);
         QCOMPARE(nav()->history()->currentIndex(), 1);
-        m_window->nodePanel()->treeView()->setCurrentIndex(
-            m_window->nodePanel()->proxyModel()->mapFromSource(classIndex));
+        test::child<AtomicNodePanel>(*m_window)->treeView()->setCurrentIndex(
+            test::child<AtomicNodePanel>(*m_window)->proxyModel()->mapFromSource(classIndex));
         settle();
         QCOMPARE(nav()->history()->places().size(), 3);
         QVERIFY(!forward()->isEnabled());
@@ -272,11 +278,13 @@ private Q_SLOTS:
         QVERIFY(nav()->history()->canGoBack());
         const NavigationPlace *portPlace = &nav()->history()->places().at(1);
         QCOMPARE(portPlace->panel, Panel::Nodes);
-        const QModelIndex port = m_window->nodeModel()->indexOfStableKey(portPlace->key);
+        const QModelIndex port =
+            test::child<AtomicNodeModel>(*m_window)->indexOfStableKey(portPlace->key);
         QVERIFY(port.isValid());
-        const QString portId = m_window->nodeModel()->elementId(port);
-        QTest::keyClicks(m_window->nodePanel()->filterEdit(), QStringLiteral("nav"));
-        QTRY_VERIFY(m_window->nodePanel()->proxyModel()->rowCount() > 0);
+        const QString portId = test::child<AtomicNodeModel>(*m_window)->elementId(port);
+        QTest::keyClicks(test::child<AtomicNodePanel>(*m_window)->filterEdit(),
+                         QStringLiteral("nav"));
+        QTRY_VERIFY(test::child<AtomicNodePanel>(*m_window)->proxyModel()->rowCount() > 0);
         press(Qt::Key_Left);
         QCOMPARE(nodeRow(), portId);
     }
@@ -284,7 +292,7 @@ private Q_SLOTS:
     void aLineInTheSourceIsAPlace()
     {
         const int at = nav()->history()->currentIndex();
-        QsciScintilla *editor = m_window->sourceView()->editor();
+        QsciScintilla *editor = test::child<SourceView>(*m_window)->editor();
         editor->setFocus();
         int line = -1, index = 0;
         editor->getCursorPosition(&line, &index);
