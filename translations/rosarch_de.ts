@@ -2983,6 +2983,97 @@ The file was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>rosarch::ExportController</name>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="71"/>
+        <source>Export NoDL To</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="115"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="103"/>
+        <source>Open a workspace first: the site shows its architecture.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="115"/>
+        <source>Writing the architecture site…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="133"/>
+        <source>The architecture site could not be written:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="83"/>
+        <source>The NoDL descriptions could not be written:
+%1
+
+Choose a folder you can write to, and export again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="86"/>
+        <source>NoDL export to %1 failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/exportcontroller.cpp" line="90"/>
+        <source>Exported %n NoDL descriptions to %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="94"/>
+        <source>NoDL: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="37"/>
+        <source>Export Artifacts To</source>
+        <translation>Artefakte exportieren nach</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="51"/>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="52"/>
+        <source>The artifacts could not be written to “%1”:
+%2
+
+Choose a folder you can write to, or free some space, and export again.</source>
+        <translation>Die Artefakte konnten nicht nach „%1“ geschrieben werden:
+%2
+
+Wählen Sie einen Ordner, in den Sie schreiben dürfen, oder geben Sie Speicherplatz frei, und exportieren Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="55"/>
+        <source>Export to %1 failed: %2</source>
+        <translation>Export nach %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="58"/>
+        <source>Exported 1 file to %1</source>
+        <translation>1 Datei nach %1 exportiert</translation>
+    </message>
+    <message>
+        <location filename="../app/exportcontroller.cpp" line="59"/>
+        <source>Exported %1 files to %2</source>
+        <translation>%1 Dateien nach %2 exportiert</translation>
+    </message>
+</context>
+<context>
     <name>rosarch::FilteredTreePanel</name>
     <message>
         <location filename="../widgets/filteredtreepanel.cpp" line="88"/>
@@ -3844,338 +3935,297 @@ The file was kept as %2.</source>
     </message>
 </context>
 <context>
-    <name>rosarch::MainWindow</name>
+    <name>rosarch::MainMenus</name>
     <message>
-        <location filename="../app/mainwindow.cpp" line="182"/>
-        <source>Atomic nodes</source>
-        <translation>Atomare Knoten</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="183"/>
-        <source>Launch tree</source>
-        <translation>Launch-Baum</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="184"/>
-        <source>Composed diagram</source>
-        <translation>Kompositionsdiagramm</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="185"/>
-        <source>Source</source>
-        <translation>Quelltext</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="186"/>
-        <location filename="../app/mainwindow.cpp" line="190"/>
-        <source>Log</source>
-        <translation>Protokoll</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="48"/>
+        <location filename="../app/mainmenus.cpp" line="62"/>
         <source>&amp;Open Workspace…</source>
         <translation>Workspace ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="50"/>
+        <location filename="../app/mainmenus.cpp" line="65"/>
         <source>Open a ROS 2 workspace folder and recover its architecture</source>
         <translation>Einen ROS-2-Workspace-Ordner öffnen und seine Architektur rekonstruieren</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="53"/>
+        <location filename="../app/mainmenus.cpp" line="68"/>
         <source>&amp;Export Artifacts…</source>
         <translation>Artefakte &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="54"/>
+        <location filename="../app/mainmenus.cpp" line="69"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="56"/>
+        <location filename="../app/mainmenus.cpp" line="71"/>
         <source>Write the JSON artifacts and the PlantUML diagrams: one per node class (ACD) and one per launch file (CCD)</source>
         <translation>Die JSON-Artefakte und die PlantUML-Diagramme schreiben: eines pro Knotenklasse (ACD) und eines pro Launch-File (CCD)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="71"/>
+        <location filename="../app/mainmenus.cpp" line="80"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="76"/>
+        <location filename="../app/mainmenus.cpp" line="85"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="78"/>
+        <location filename="../app/mainmenus.cpp" line="88"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="81"/>
+        <location filename="../app/mainmenus.cpp" line="92"/>
         <source>&amp;Find…</source>
         <translation>&amp;Suchen…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="97"/>
+        <location filename="../app/mainmenus.cpp" line="107"/>
         <source>&amp;Next Finding</source>
         <translation>&amp;Nächster Befund</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="103"/>
+        <location filename="../app/mainmenus.cpp" line="114"/>
         <source>&amp;Previous Finding</source>
         <translation>&amp;Vorheriger Befund</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="83"/>
+        <location filename="../app/mainmenus.cpp" line="94"/>
         <source>Filter the node tree, or the launch tree when it has the focus, by name</source>
         <translation>Den Knotenbaum – oder den Launch-Baum, wenn er den Fokus hat – nach Name filtern</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="59"/>
+        <location filename="../app/mainmenus.cpp" line="74"/>
         <source>Export &amp;NoDL…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="61"/>
+        <location filename="../app/mainmenus.cpp" line="76"/>
         <source>Write one NoDL description per node class: its parameters, topics, services and actions, as ros-tooling/nodl reads them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="65"/>
-        <source>Export NoDL To</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="110"/>
+        <location filename="../app/mainmenus.cpp" line="121"/>
         <source>&amp;Run All Stages</source>
         <translation>Alle Stufen aus&amp;führen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="111"/>
+        <location filename="../app/mainmenus.cpp" line="123"/>
         <source>Run all</source>
         <translation>Alle ausführen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="113"/>
+        <location filename="../app/mainmenus.cpp" line="125"/>
         <source>Recover the atomic nodes, the launch tree and the composed architecture of the workspace (F5)</source>
         <translation>Die atomaren Knoten, den Launch-Baum und die zusammengesetzte Architektur des Workspaces rekonstruieren (F5)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="115"/>
+        <location filename="../app/mainmenus.cpp" line="127"/>
         <source>Stage 1 finds node classes, their ports and executables; stage 2 reads the launch files; stage 3 composes them</source>
         <translation>Stufe 1 findet Knotenklassen, ihre Ports und Executables; Stufe 2 liest die Launch-Files; Stufe 3 setzt sie zusammen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="119"/>
+        <location filename="../app/mainmenus.cpp" line="132"/>
         <source>Run Stage &amp;2: Launch Files</source>
         <translation>Stufe &amp;2 ausführen: Launch-Files</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="120"/>
+        <location filename="../app/mainmenus.cpp" line="134"/>
         <source>Stage 2</source>
         <translation>Stufe 2</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="122"/>
+        <location filename="../app/mainmenus.cpp" line="136"/>
         <source>Read the launch files again against the current atomic nodes, with the chosen launch arguments (F6)</source>
         <translation>Die Launch-Files mit den gewählten Launch-Argumenten erneut lesen und mit den aktuellen atomaren Knoten abgleichen (F6)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="124"/>
+        <location filename="../app/mainmenus.cpp" line="138"/>
         <source>Re-run stage 2 only: launch files, includes, namespaces and node instances</source>
         <translation>Nur Stufe 2 erneut ausführen: Launch-Files, Includes, Namespaces und Knoteninstanzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="128"/>
+        <location filename="../app/mainmenus.cpp" line="143"/>
         <source>Launch &amp;Arguments…</source>
         <translation>&amp;Launch-Argumente…</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="129"/>
+        <location filename="../app/mainmenus.cpp" line="145"/>
         <source>Arguments</source>
         <translation>Argumente</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="130"/>
+        <location filename="../app/mainmenus.cpp" line="146"/>
         <source>Ctrl+Shift+A</source>
         <translation>Ctrl+Shift+A</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="132"/>
+        <location filename="../app/mainmenus.cpp" line="148"/>
         <source>Choose the root launch file and the launch argument values for stage 2</source>
         <translation>Das Wurzel-Launch-File und die Werte der Launch-Argumente für Stufe 2 wählen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="136"/>
+        <location filename="../app/mainmenus.cpp" line="152"/>
         <source>&amp;Cancel Stage</source>
         <translation>Stufe &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="137"/>
-        <location filename="../app/mainwindowactions.cpp" line="212"/>
+        <location filename="../app/mainmenus.cpp" line="154"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="139"/>
+        <location filename="../app/mainmenus.cpp" line="156"/>
         <source>Stop the running stage and keep the previous result (Esc)</source>
         <translation>Die laufende Stufe anhalten und das vorherige Ergebnis behalten (Esc)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="142"/>
+        <location filename="../app/mainmenus.cpp" line="159"/>
         <source>&amp;Suggest (Stage 4)</source>
         <translation>&amp;Vorschläge (Stufe 4)</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="143"/>
+        <location filename="../app/mainmenus.cpp" line="160"/>
         <source>LLM</source>
         <translation>LLM</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="145"/>
+        <location filename="../app/mainmenus.cpp" line="162"/>
         <source>Propose node descriptions and subsystem groupings for review (F7); asks the LLM when one is configured</source>
         <translation>Knotenbeschreibungen und Subsystem-Gruppierungen zur Prüfung vorschlagen (F7); fragt das LLM, wenn eines konfiguriert ist</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="155"/>
+        <location filename="../app/mainmenus.cpp" line="173"/>
         <source>&amp;Watch Workspace for Changes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="158"/>
+        <location filename="../app/mainmenus.cpp" line="176"/>
         <source>Analyse again when a source, build, launch or parameter file of the workspace changes on disk</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="164"/>
+        <location filename="../app/mainmenus.cpp" line="183"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="167"/>
+        <location filename="../app/mainmenus.cpp" line="186"/>
         <source>&amp;About rosarch</source>
         <translation>&amp;Über rosarch</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="173"/>
+        <location filename="../app/mainmenus.cpp" line="192"/>
         <source>About &amp;Qt</source>
         <translation>Über &amp;Qt</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="180"/>
+        <location filename="../app/mainmenus.cpp" line="199"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="183"/>
+        <location filename="../app/mainmenus.cpp" line="202"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="193"/>
+        <location filename="../app/mainmenus.cpp" line="212"/>
         <source>Export Architecture &amp;Site…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="195"/>
+        <location filename="../app/mainmenus.cpp" line="214"/>
         <source>Write the accepted model as a static HTML site a newcomer reads in a browser: systems with their diagrams, nodes, topics, launch files, findings and a search</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="200"/>
-        <source>Open a workspace first: the site shows its architecture.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="212"/>
-        <source>Writing the architecture site…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="231"/>
-        <source>The architecture site could not be written:
-%1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="248"/>
+        <location filename="../app/mainmenus.cpp" line="234"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="257"/>
+        <location filename="../app/mainmenus.cpp" line="246"/>
         <source>Main</source>
         <translation>Hauptwerkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="272"/>
+        <location filename="../app/mainmenus.cpp" line="265"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="281"/>
+        <location filename="../app/mainmenus.cpp" line="260"/>
         <source>&amp;Toolbar</source>
         <translation>&amp;Werkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="290"/>
+        <location filename="../app/mainmenus.cpp" line="42"/>
         <source>&amp;Go</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="296"/>
+        <location filename="../app/mainmenus.cpp" line="304"/>
         <source>&amp;Stages</source>
         <translation>&amp;Stufen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="305"/>
+        <location filename="../app/mainmenus.cpp" line="47"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="316"/>
-        <source>The NoDL descriptions could not be written:
-%1
-
-Choose a folder you can write to, and export again.</source>
+        <location filename="../app/mainmenus.cpp" line="319"/>
+        <source>No recent workspaces</source>
+        <translation>Keine zuletzt geöffneten Workspaces</translation>
+    </message>
+    <message>
+        <location filename="../app/mainmenus.cpp" line="324"/>
+        <source>&amp;%1 %2 — %3</source>
+        <translation>&amp;%1 %2 — %3</translation>
+    </message>
+    <message>
+        <location filename="../app/mainmenus.cpp" line="332"/>
+        <source>&amp;Clear Menu</source>
+        <translation>Menü &amp;leeren</translation>
+    </message>
+    <message>
+        <location filename="../app/mainmenus.cpp" line="278"/>
+        <source>&amp;Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindowactions.cpp" line="319"/>
-        <source>NoDL export to %1 failed: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../app/mainwindowactions.cpp" line="323"/>
-        <source>Exported %n NoDL descriptions to %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowactions.cpp" line="327"/>
-        <source>NoDL: %1</source>
+        <location filename="../app/mainmenus.cpp" line="286"/>
+        <source>Select an element to correct it</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="196"/>
-        <source>Suggestions</source>
-        <translation>Vorschläge</translation>
+        <location filename="../app/mainmenus.cpp" line="291"/>
+        <source>Show &amp;Corrections</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="401"/>
+        <location filename="../app/mainmenus.cpp" line="294"/>
+        <source>Show &amp;Inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::MainWindow</name>
+    <message>
+        <location filename="../app/mainwindow.cpp" line="304"/>
         <source>Open ROS 2 Workspace</source>
         <translation>ROS-2-Workspace öffnen</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="412"/>
+        <location filename="../app/mainwindow.cpp" line="315"/>
         <source>Cannot open workspace</source>
         <translation>Workspace kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="413"/>
+        <location filename="../app/mainwindow.cpp" line="316"/>
         <source>The folder “%1” does not exist or is not a folder.
 
 Choose a ROS 2 workspace (a folder containing packages with a package.xml) with File → Open Workspace, or drop one onto the window.</source>
@@ -4184,13 +4234,12 @@ Choose a ROS 2 workspace (a folder containing packages with a package.xml) with 
 Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordner mit Paketen, die eine package.xml enthalten) aus, oder ziehen Sie einen Workspace auf das Fenster.</translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="70"/>
-        <location filename="../app/mainwindow.cpp" line="450"/>
+        <location filename="../app/mainwindow.cpp" line="62"/>
         <source>rosarch[*]</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/mainwindow.cpp" line="82"/>
+        <location filename="../app/mainwindow.cpp" line="226"/>
         <source>%n file(s) changed on disk (%1); analysing again</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -4198,365 +4247,44 @@ Wählen Sie über Datei → Workspace öffnen einen ROS-2-Workspace (einen Ordne
         </translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="97"/>
+        <location filename="../app/mainwindow.cpp" line="241"/>
         <source>This workspace has more than %L1 files and folders to watch, so only its folders are watched: files added, removed or replaced (as most editors save) start a new analysis, a file edited in place does not. Press F5 after such an edit.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="199"/>
-        <source>Architecture changes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="201"/>
-        <source>Talkers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="204"/>
-        <source>Parameters</source>
-        <translation type="unfinished">Parameter</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="458"/>
+        <location filename="../app/mainwindow.cpp" line="361"/>
         <source>%1 (new project)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="460"/>
+        <location filename="../app/mainwindow.cpp" line="363"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="461"/>
+        <location filename="../app/mainwindow.cpp" line="364"/>
         <source>%1[*] — rosarch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="488"/>
+        <location filename="../app/mainwindow.cpp" line="391"/>
         <source>accepted in the Log</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="500"/>
+        <location filename="../app/mainwindow.cpp" line="403"/>
         <source>Declared %1 as expected external; checking again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="500"/>
+        <location filename="../app/mainwindow.cpp" line="403"/>
         <source>, </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/mainwindow.cpp" line="526"/>
-        <source>No recent workspaces</source>
-        <translation>Keine zuletzt geöffneten Workspaces</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="531"/>
-        <source>&amp;%1 %2 — %3</source>
-        <translation>&amp;%1 %2 — %3</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="539"/>
-        <source>&amp;Clear Menu</source>
-        <translation>Menü &amp;leeren</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="550"/>
-        <source>Export Artifacts To</source>
-        <translation>Artefakte exportieren nach</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="564"/>
-        <location filename="../app/mainwindowactions.cpp" line="200"/>
-        <location filename="../app/mainwindowactions.cpp" line="230"/>
-        <location filename="../app/mainwindowactions.cpp" line="316"/>
-        <source>Export failed</source>
-        <translation>Export fehlgeschlagen</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="565"/>
-        <source>The artifacts could not be written to “%1”:
-%2
-
-Choose a folder you can write to, or free some space, and export again.</source>
-        <translation>Die Artefakte konnten nicht nach „%1“ geschrieben werden:
-%2
-
-Wählen Sie einen Ordner, in den Sie schreiben dürfen, oder geben Sie Speicherplatz frei, und exportieren Sie erneut.</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="568"/>
-        <source>Export to %1 failed: %2</source>
-        <translation>Export nach %1 fehlgeschlagen: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="571"/>
-        <source>Exported 1 file to %1</source>
-        <translation>1 Datei nach %1 exportiert</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="572"/>
-        <source>Exported %1 files to %2</source>
-        <translation>%1 Dateien nach %2 exportiert</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="55"/>
-        <source>1 package</source>
-        <translation>1 Paket</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="55"/>
-        <source>%1 packages</source>
-        <translation>%1 Pakete</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="56"/>
-        <source>1 node</source>
-        <translation>1 Knoten</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="56"/>
-        <source>%1 nodes</source>
-        <translation>%1 Knoten</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="58"/>
-        <source>1 plugin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="58"/>
-        <source>%1 plugins</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="59"/>
-        <source>1 port</source>
-        <translation>1 Port</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="59"/>
-        <source>%1 ports</source>
-        <translation>%1 Ports</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="60"/>
-        <source>1 launch file</source>
-        <translation>1 Launch-File</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="60"/>
-        <source>%1 launch files</source>
-        <translation>%1 Launch-Files</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="61"/>
-        <source>1 instance</source>
-        <translation>1 Instanz</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="61"/>
-        <source>%1 instances</source>
-        <translation>%1 Instanzen</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="62"/>
-        <source>1 unresolved</source>
-        <translation>1 unaufgelöst</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="62"/>
-        <source>%1 unresolved</source>
-        <translation>%1 unaufgelöst</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="63"/>
-        <source>1 composite</source>
-        <translation>1 Komposit</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="63"/>
-        <source>%1 composites</source>
-        <translation>%1 Komposite</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="64"/>
-        <source>1 diagnostic</source>
-        <translation>1 Diagnose</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="64"/>
-        <source>%1 diagnostics</source>
-        <translation>%1 Diagnosen</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="66"/>
-        <source>Stage 1: packages, atomic node classes and their ports.
-Stage 2: launch files found, node instances they start and expressions that could not be resolved statically.
-Stage 3: composites, one per launch-file instance.</source>
-        <translation>Stufe 1: Pakete, atomare Knotenklassen und ihre Ports.
-Stufe 2: gefundene Launch-Files, die von ihnen gestarteten Knoteninstanzen und Ausdrücke, die nicht statisch aufgelöst werden konnten.
-Stufe 3: Komposite, eines pro Launch-File-Instanz.</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="83"/>
-        <source>The run stopped before it had a result, so nothing is known yet.
-
-Run it again with Stages → Run All.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="87"/>
-        <source>Open a ROS 2 workspace (File → Open Workspace) to see its node classes.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="88"/>
-        <source>Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.</source>
-        <translation>Öffnen Sie einen ROS-2-Workspace (Datei → Workspace öffnen), um seinen Launch-Baum zu sehen.</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="89"/>
-        <source>Open a ROS 2 workspace (File → Open Workspace) to see its composed diagrams.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="92"/>
-        <source>Reading the workspace…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="93"/>
-        <source>Reading the launch files…</source>
-        <translation>Die Launch-Files werden gelesen…</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="94"/>
-        <source>Composing the launch files…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="98"/>
-        <source>No ROS 2 package in this folder.
-
-rosarch finds packages by their package.xml. Open the folder that holds them: a workspace, or its src folder.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="101"/>
-        <source>No ROS 2 package in this folder, so no launch files either.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="102"/>
-        <source>No ROS 2 package in this folder: there is nothing to compose.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="104"/>
-        <source>No node classes found.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="106"/>
-        <source>No launch files found in this workspace.
-
-Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file holding a launch description.</source>
-        <translation>In diesem Workspace wurden keine Launch-Files gefunden.
-
-Stufe 2 liest *.launch.py-, *.launch.xml- und *.launch.yaml-Dateien sowie jede Datei, die eine Launch-Beschreibung enthält.</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="109"/>
-        <source>No launch file was analysed as a root.
-
-Choose one in Stages → Launch Arguments…</source>
-        <translation>Es wurde kein Launch-File als Wurzel analysiert.
-
-Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="113"/>
-        <source>No launch files, so nothing to compose: a composed diagram shows what a launch file (or a program that builds several nodes) starts.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="115"/>
-        <source>No composed diagram yet. Run stage 3 to compose the launch files.</source>
-        <translation type="unfinished">Noch kein Kompositionsdiagramm. Führen Sie Stufe 3 aus, um die Launch-Files zusammenzusetzen.</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="157"/>
-        <source>atomic nodes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="157"/>
-        <source>launch files</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="157"/>
-        <source>composition</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="161"/>
-        <source>Stage %1: %2 — %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="163"/>
-        <source>Stage %1: %2 — %3/%4 composites</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="167"/>
-        <source>Stage %1: %2 — %3/%4 files</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowstatus.cpp" line="177"/>
-        <source>[%1/%2] %3</source>
-        <translation>[%1/%2] %3</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindow.cpp" line="214"/>
+        <location filename="../app/mainwindow.cpp" line="153"/>
         <source>Cannot show %1</source>
         <translation>%1 kann nicht angezeigt werden</translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="33"/>
-        <source>Corrections</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="34"/>
-        <source>Inspector</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="70"/>
-        <source>&amp;Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="77"/>
-        <location filename="../app/mainwindowcorrections.cpp" line="93"/>
-        <source>Select an element to correct it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="82"/>
-        <source>Show &amp;Corrections</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../app/mainwindowcorrections.cpp" line="87"/>
-        <source>Show &amp;Inspector</source>
-        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4647,6 +4375,64 @@ Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
     <message>
         <location filename="../document/nodedescription.cpp" line="86"/>
         <source>written by a person</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::PanelDocks</name>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="45"/>
+        <source>Atomic nodes</source>
+        <translation>Atomare Knoten</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="46"/>
+        <source>Launch tree</source>
+        <translation>Launch-Baum</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="47"/>
+        <source>Composed diagram</source>
+        <translation>Kompositionsdiagramm</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="48"/>
+        <source>Source</source>
+        <translation>Quelltext</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="49"/>
+        <source>Log</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="56"/>
+        <source>Suggestions</source>
+        <translation>Vorschläge</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="58"/>
+        <source>Architecture changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="60"/>
+        <source>Talkers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="62"/>
+        <source>Parameters</source>
+        <translation type="unfinished">Parameter</translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="65"/>
+        <source>Corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/paneldocks.cpp" line="66"/>
+        <source>Inspector</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5455,6 +5241,230 @@ Choose a folder you can write to, or free some space, and try again.</source>
         <location filename="../app/stagerunner.cpp" line="16"/>
         <source>Stage %1 stopped with an internal error: %2</source>
         <translation>Stufe %1 wurde wegen eines internen Fehlers abgebrochen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rosarch::StatusPresenter</name>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="67"/>
+        <source>1 package</source>
+        <translation>1 Paket</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="67"/>
+        <source>%1 packages</source>
+        <translation>%1 Pakete</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="68"/>
+        <source>1 node</source>
+        <translation>1 Knoten</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="68"/>
+        <source>%1 nodes</source>
+        <translation>%1 Knoten</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="70"/>
+        <source>1 plugin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="70"/>
+        <source>%1 plugins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="71"/>
+        <source>1 port</source>
+        <translation>1 Port</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="71"/>
+        <source>%1 ports</source>
+        <translation>%1 Ports</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="72"/>
+        <source>1 launch file</source>
+        <translation>1 Launch-File</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="72"/>
+        <source>%1 launch files</source>
+        <translation>%1 Launch-Files</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="73"/>
+        <source>1 instance</source>
+        <translation>1 Instanz</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="73"/>
+        <source>%1 instances</source>
+        <translation>%1 Instanzen</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="74"/>
+        <source>1 unresolved</source>
+        <translation>1 unaufgelöst</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="74"/>
+        <source>%1 unresolved</source>
+        <translation>%1 unaufgelöst</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="75"/>
+        <source>1 composite</source>
+        <translation>1 Komposit</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="75"/>
+        <source>%1 composites</source>
+        <translation>%1 Komposite</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="76"/>
+        <source>1 diagnostic</source>
+        <translation>1 Diagnose</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="76"/>
+        <source>%1 diagnostics</source>
+        <translation>%1 Diagnosen</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="78"/>
+        <source>Stage 1: packages, atomic node classes and their ports.
+Stage 2: launch files found, node instances they start and expressions that could not be resolved statically.
+Stage 3: composites, one per launch-file instance.</source>
+        <translation>Stufe 1: Pakete, atomare Knotenklassen und ihre Ports.
+Stufe 2: gefundene Launch-Files, die von ihnen gestarteten Knoteninstanzen und Ausdrücke, die nicht statisch aufgelöst werden konnten.
+Stufe 3: Komposite, eines pro Launch-File-Instanz.</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="93"/>
+        <source>The run stopped before it had a result, so nothing is known yet.
+
+Run it again with Stages → Run All.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="97"/>
+        <source>Open a ROS 2 workspace (File → Open Workspace) to see its node classes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="97"/>
+        <source>Open a ROS 2 workspace (File → Open Workspace) to see its launch tree.</source>
+        <translation>Öffnen Sie einen ROS-2-Workspace (Datei → Workspace öffnen), um seinen Launch-Baum zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="97"/>
+        <source>Open a ROS 2 workspace (File → Open Workspace) to see its composed diagrams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="102"/>
+        <source>Reading the workspace…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="103"/>
+        <source>Reading the launch files…</source>
+        <translation>Die Launch-Files werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="104"/>
+        <source>Composing the launch files…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="108"/>
+        <source>No ROS 2 package in this folder.
+
+rosarch finds packages by their package.xml. Open the folder that holds them: a workspace, or its src folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="108"/>
+        <source>No ROS 2 package in this folder, so no launch files either.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="108"/>
+        <source>No ROS 2 package in this folder: there is nothing to compose.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="114"/>
+        <source>No node classes found.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="116"/>
+        <source>No launch files found in this workspace.
+
+Stage 2 reads *.launch.py, *.launch.xml and *.launch.yaml files and any file holding a launch description.</source>
+        <translation>In diesem Workspace wurden keine Launch-Files gefunden.
+
+Stufe 2 liest *.launch.py-, *.launch.xml- und *.launch.yaml-Dateien sowie jede Datei, die eine Launch-Beschreibung enthält.</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="119"/>
+        <source>No launch file was analysed as a root.
+
+Choose one in Stages → Launch Arguments…</source>
+        <translation>Es wurde kein Launch-File als Wurzel analysiert.
+
+Wählen Sie eines unter Stufen → Launch-Argumente…</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="123"/>
+        <source>No launch files, so nothing to compose: a composed diagram shows what a launch file (or a program that builds several nodes) starts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="125"/>
+        <source>No composed diagram yet. Run stage 3 to compose the launch files.</source>
+        <translation type="unfinished">Noch kein Kompositionsdiagramm. Führen Sie Stufe 3 aus, um die Launch-Files zusammenzusetzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="170"/>
+        <source>atomic nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="170"/>
+        <source>launch files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="170"/>
+        <source>composition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="174"/>
+        <source>Stage %1: %2 — %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="176"/>
+        <source>Stage %1: %2 — %3/%4 composites</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="180"/>
+        <source>Stage %1: %2 — %3/%4 files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/statuspresenter.cpp" line="190"/>
+        <source>[%1/%2] %3</source>
+        <translation>[%1/%2] %3</translation>
     </message>
 </context>
 <context>
