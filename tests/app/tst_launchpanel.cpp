@@ -126,19 +126,17 @@ private Q_SLOTS:
         QVERIFY(!launch->isVisible());
         toggle->trigger();
         QVERIFY(launch->isVisible());
+        QAction *arguments = test::child<QAction>(w, QStringLiteral("launchArgumentsAction"));
         QToolBar *toolBar = w.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
-        QVERIFY(toolBar->actions().contains(
-            test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))));
+        QVERIFY(toolBar->actions().contains(arguments));
         QVERIFY(toolBar->actions().contains(
             test::child<QAction>(w, QStringLiteral("runLaunchAction"))));
         QMenu *stages = nullptr;
         for (QMenu *m : w.findChildren<QMenu *>())
             if (m->title() == QStringLiteral("&Stages"))
                 stages = m;
-        QVERIFY(stages && stages->actions().contains(
-                              test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))));
-        QCOMPARE(test::child<QAction>(w, QStringLiteral("launchArgumentsAction"))->text(),
-                 QStringLiteral("Launch &Arguments…"));
+        QVERIFY(stages && stages->actions().contains(arguments));
+        QCOMPARE(arguments->text(), QStringLiteral("Launch &Arguments…"));
     }
 
     void realRunShowsTheFixtureLaunchTree()
@@ -169,10 +167,9 @@ private Q_SLOTS:
                  QStringLiteral("Listener"));
         QVERIFY(!model->isActive(model->index(2, 0, root))); // echo_talker: use_echo is false
         QVERIFY(model->launchFile(model->index(2, 0, listenerFile))->external);
-        QVERIFY2(test::child<QLabel>(w, QStringLiteral("countsLabel"))
-                     ->text()
-                     .contains(QStringLiteral("3 launch files · 4 instances · 0 unresolved")),
-                 qPrintable(test::child<QLabel>(w, QStringLiteral("countsLabel"))->text()));
+        const QString counts = test::child<QLabel>(w, QStringLiteral("countsLabel"))->text();
+        QVERIFY2(counts.contains(QStringLiteral("3 launch files · 4 instances · 0 unresolved")),
+                 qPrintable(counts));
         QVERIFY(!test::child<LaunchTreePanel>(w)->placeholderLabel()->isVisible());
         QVERIFY(test::child<LaunchTreePanel>(w)->treeView()->isVisible());
         // stage 2's note about the external include is in the log

@@ -84,10 +84,11 @@ private Q_SLOTS:
         w.openWorkspace(test::dataDir(QStringLiteral("gui_ws")));
         QCOMPARE(started.count(), 1);
         QCOMPARE(w.workspace(), fixture());
+        QLabel *counts = test::child<QLabel>(w, QStringLiteral("countsLabel"));
         // Before a first result, no counts: they would all read 0.
-        QVERIFY(!test::child<QLabel>(w, QStringLiteral("countsLabel"))->isVisible());
+        QVERIFY(!counts->isVisible());
         QVERIFY(finished.wait(60000));
-        QTRY_VERIFY(test::child<QLabel>(w, QStringLiteral("countsLabel"))->isVisible());
+        QTRY_VERIFY(counts->isVisible());
         QCOMPARE(test::child<Document>(w)->workspaceRoot(), fixture());
         QCOMPARE(AppSettings().recentWorkspaces().value(0), fixture());
         QCOMPARE(AppSettings().lastWorkspace(), fixture());
@@ -118,10 +119,7 @@ private Q_SLOTS:
                 << model->index(r, AtomicNodeModel::TypeColumn, listener).data().toString();
         QVERIFY2(listenerTypes.contains(QStringLiteral("std_srvs/srv/Trigger")),
                  qPrintable(listenerTypes.join(',')));
-        QVERIFY2(test::child<QLabel>(w, QStringLiteral("countsLabel"))
-                     ->text()
-                     .contains(QStringLiteral("2 nodes")),
-                 qPrintable(test::child<QLabel>(w, QStringLiteral("countsLabel"))->text()));
+        QVERIFY2(counts->text().contains(QStringLiteral("2 nodes")), qPrintable(counts->text()));
         // the tree shows them (expanded, through the filter proxy)
         QTreeView *tree = test::child<AtomicNodePanel>(w)->treeView();
         QCOMPARE(tree->model()->rowCount(), 2);
