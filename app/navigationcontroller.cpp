@@ -4,6 +4,7 @@
 #include "widgets/atomicnodepanel.h"
 #include "widgets/diagnosticmodel.h"
 #include "widgets/diagram/diagrampanel.h"
+#include "widgets/diagram/diagramscene.h"
 #include "widgets/launchtreepanel.h"
 #include "widgets/logview.h"
 #include "widgets/sourceview.h"
@@ -140,6 +141,7 @@ void NavigationController::goForward()
 
 void NavigationController::clear()
 {
+    disconnect(m_waitForLayout);
     m_history->clear();
 }
 
@@ -168,10 +170,32 @@ void NavigationController::commit()
     m_candidatePriority = -1;
     place.nodeKey = std::exchange(m_turnNodeKey, {});
     place.launchKey = std::exchange(m_turnLaunchKey, {});
-    if (place.key.isEmpty())
+    if (place.key.isEmpty() || echoesCurrent(place))
         return;
     snapshotSource(&place);
     m_history->visit(place);
+}
+
+bool NavigationController::echoesCurrent(const NavigationPlace &place) const
+{
+    // A view that reports late what it shows of the current place (the source pane's cursor
+    // put back on the place's line, a row that followed it) names no new place: recording it
+    // would drop the places ahead.
+    const NavigationPlace *now = m_history->current();
+    if (!now || now->samePlace(place))
+        return false;
+    switch (place.panel) {
+    case NavigationPlace::Panel::Source:
+        return place.key == now->sourceFile && place.sourceLine == now->sourceLine;
+    case NavigationPlace::Panel::Nodes:
+        return place.key == now->nodeKey;
+    case NavigationPlace::Panel::Launch:
+        return place.key == now->launchKey;
+    case NavigationPlace::Panel::Diagram:
+    case NavigationPlace::Panel::Findings:
+        break;
+    }
+    return false;
 }
 
 void NavigationController::snapshotSource(NavigationPlace *place) const
@@ -186,7 +210,8 @@ void NavigationController::show(const NavigationPlace &place)
 {
     // What the views report while the place is shown again is not a visit of its own.
     m_restoring = true;
-    QTimer::singleShot(0, this, [this] { m_restoring = false; });
+    ++m_restoreGeneration;
+    disconnect(m_waitForLayout);
     using P = NavigationPlace::Panel;
     if (place.panel != P::Launch && !place.launchKey.isEmpty())
         m_panels.launch->selectStableKey(place.launchKey);
@@ -194,13 +219,13 @@ void NavigationController::show(const NavigationPlace &place)
         m_panels.nodes->selectStableKey(place.nodeKey);
     switch (place.panel) {
     case P::Nodes:
-        m_panels.nodes->selectStableKey(place.key);
+        showRow(m_panels.nodes, place.key);
         break;
     case P::Launch:
-        m_panels.launch->selectStableKey(place.key);
+        showRow(m_panels.launch, place.key);
         break;
     case P::Diagram:
-        restoreDiagram(place);
+        restoreDiagram(place); // the source with the element, which moves it
         break;
     case P::Findings: {
         QTreeView *view = m_panels.log->diagnosticsView();
@@ -217,8 +242,30 @@ void NavigationController::show(const NavigationPlace &place)
     case P::Source:
         break;
     }
-    restoreSource(place);
+    if (place.panel != P::Diagram)
+        restoreSource(place);
     raisePanel(place.panel);
+    endRestoring();
+}
+
+void NavigationController::showRow(FilteredTreePanel *panel, const QString &key)
+{
+    // A row still current is announced again: the views that follow it (the diagram, the
+    // inspector, the talkers, the source) may have shown another place since.
+    if (panel->currentStableKey() == key)
+        Q_EMIT panel->currentSourceIndexChanged(panel->currentSourceIndex());
+    else
+        panel->selectStableKey(key);
+}
+
+void NavigationController::endRestoring()
+{
+    // Views report some changes a turn of the event loop later (a row made current by a
+    // focus change, the source pane's cursor): those still belong to the place shown.
+    QTimer::singleShot(0, this, [this, generation = m_restoreGeneration] {
+        if (generation == m_restoreGeneration)
+            m_restoring = false;
+    });
 }
 
 void NavigationController::restoreSource(const NavigationPlace &place)
@@ -236,24 +283,35 @@ void NavigationController::restoreDiagram(const NavigationPlace &place)
 {
     DiagramPanel *diagram = m_panels.diagram;
     const QString composite = idOf(place.key);
-    if (composite.isEmpty())
-        return;
-    if (diagram->currentComposite() != composite)
+    if (!composite.isEmpty() && diagram->currentComposite() != composite)
         diagram->showComposite(composite);
-    if (place.element.isEmpty())
-        return;
-    disconnect(m_waitForLayout);
-    if (!diagram->isLayingOut()) {
-        selectDiagramElement(place.element);
+    if (composite.isEmpty() || place.element.isEmpty() || !diagram->isLayingOut()) {
+        restoreElement(place, true);
         return;
     }
-    const QString element = place.element;
+    // The element once its composite is drawn, unless the person went on meanwhile (the
+    // window stays theirs while a big composite is laid out).
+    const int at = m_history->currentIndex();
     m_waitForLayout =
-        connect(diagram, &DiagramPanel::layoutFinished, this, [this, element](bool ok) {
+        connect(diagram, &DiagramPanel::layoutFinished, this, [this, place, at](bool ok) {
             disconnect(m_waitForLayout);
-            if (ok)
-                selectDiagramElement(element);
+            const NavigationPlace *now = m_history->current();
+            if (m_history->currentIndex() != at || !now || !now->samePlace(place))
+                return;
+            m_restoring = true;
+            ++m_restoreGeneration;
+            restoreElement(place, ok);
+            endRestoring();
         });
+}
+
+void NavigationController::restoreElement(const NavigationPlace &place, bool drawn)
+{
+    // Clicked again as the person clicked it: the inspector and the talkers show it too. That
+    // moves the source pane to the element's line, so the place's source position comes after.
+    if (drawn && !place.element.isEmpty())
+        selectDiagramElement(place.element);
+    restoreSource(place);
 }
 
 void NavigationController::selectDiagramElement(const QString &element)
@@ -268,21 +326,24 @@ void NavigationController::selectDiagramElement(const QString &element)
         const QString instanceId = idOf(instanceKey);
         for (const RosNodePart &part : c->parts)
             if (!instanceId.isEmpty() && part.instanceId == instanceId) {
-                if (portId.isEmpty() || !DiagramBuilder::port(*c, part.id, portId))
+                const QString key = portId.isEmpty() || !DiagramBuilder::port(*c, part.id, portId)
+                                        ? DiagramBuilder::partKey(part.id)
+                                        : DiagramBuilder::portKey(part.id, portId);
+                if (diagram->scene()->item(key))
+                    diagram->activateElement(key);
+                else // inside a collapsed namespace: its box stands for the part
                     diagram->selectInstance(instanceId);
-                else
-                    diagram->selectElement(DiagramBuilder::portKey(part.id, portId));
                 return;
             }
     } else if (element.startsWith(kChannelPrefix)) {
         const QString name = element.mid(kChannelPrefix.size());
         for (const Channel &ch : c->channels)
             if (channelKindName(ch.kind) + u':' + ch.name == name) {
-                diagram->selectElement(DiagramBuilder::channelKey(ch.id));
+                diagram->activateElement(DiagramBuilder::channelKey(ch.id));
                 return;
             }
     } else if (element.startsWith(kKeyPrefix)) {
-        diagram->selectElement(element.mid(kKeyPrefix.size()));
+        diagram->activateElement(element.mid(kKeyPrefix.size()));
     }
 }
 

@@ -55,12 +55,20 @@ private:
     /// A panel reports a place; the places of one turn of the event loop are one visit.
     void offer(const NavigationPlace &place, int priority);
     void commit();
+    /// Whether `place` is only what the current place shows already, reported by a view late.
+    bool echoesCurrent(const NavigationPlace &place) const;
     /// Where the source pane stands now, into `place`.
     void snapshotSource(NavigationPlace *place) const;
     void show(const NavigationPlace &place);
     void restoreDiagram(const NavigationPlace &place);
+    /// The element of `place` (when its composite is `drawn`), then the source position.
+    void restoreElement(const NavigationPlace &place, bool drawn);
+    /// The place is shown: what the views report from the next turn on is the person's.
+    void endRestoring();
     void selectDiagramElement(const QString &element);
     void restoreSource(const NavigationPlace &place);
+    /// Selects the row of `key`, or announces it again when it is current already.
+    void showRow(FilteredTreePanel *panel, const QString &key);
     void raisePanel(NavigationPlace::Panel panel);
     void updateActions();
 
@@ -88,7 +96,8 @@ private:
     QString m_turnNodeKey;   ///< the node list's row chosen in this turn
     QString m_turnLaunchKey; ///< the launch tree's row chosen in this turn
     bool m_commitQueued = false;
-    bool m_restoring = false; ///< a place is shown again: what the views report is not a visit
+    bool m_restoring = false;    ///< a place is shown again: what the views report is not a visit
+    int m_restoreGeneration = 0; ///< counts show(); a later one keeps m_restoring on
     QMetaObject::Connection m_waitForLayout;
 };
 

@@ -573,6 +573,14 @@ void DiagramPanel::selectElement(const QString &key)
     selectKey(key);
 }
 
+void DiagramPanel::activateElement(const QString &key)
+{
+    if (!m_scene->item(key))
+        return;
+    selectKey(key);
+    onElementClicked(key);
+}
+
 void DiagramPanel::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);

@@ -114,6 +114,8 @@ public:
     QStringList selectedKeys() const;
     /// Selects and centres an element of the shown composite by its key.
     void selectElement(const QString &key);
+    /// Selects and centres an element and tells the window, as a click on it does.
+    void activateElement(const QString &key);
 
     DiagramScene *scene() const { return m_scene; }
     DiagramView *view() const { return m_view; }
