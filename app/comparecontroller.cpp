@@ -110,6 +110,7 @@ void CompareController::start(const QString &label,
     m_view->setMessage(tr("Comparing with %1…").arg(label));
     // The current side is the model as shown, with the accepted decisions; it is copied
     // here and turned into a snapshot on the worker with the other side.
+    m_document->settleAccepted(); // exactly what the views show
     const Recovery current = m_document->accepted();
     m_jobs.start<Other>(
         [current, readOther](const JobControl &control) {

@@ -75,7 +75,9 @@ DiagramController::DiagramController(Document *document, DiagramPanel *panel,
         const StallScope scope("DiagramController (document changed)");
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             onModelReset();
-        else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections)) {
+        else if (change.parts & (DocumentChange::Decisions | DocumentChange::Corrections |
+                                 DocumentChange::Accepted) &&
+                 !m_document->isAcceptedPending()) { // else DocumentChange::Accepted follows
             showArchitecture(); // accepted decisions and corrections change what is drawn
             refreshTalkers();   // and who talks where
         }

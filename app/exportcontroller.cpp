@@ -47,6 +47,7 @@ bool ExportController::exportArtifactsTo(const QString &folder)
     QString error, notice;
     // The model as accepted: accepted groupings are nested composites in the CCDs, accepted
     // names resolve ports, exactly as `rosarch recover` writes it for the same decisions.
+    m_document->settleAccepted(); // exactly what the views show
     if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error, {}, &notice)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\n"
@@ -77,6 +78,7 @@ void ExportController::exportNodlDialog()
 bool ExportController::exportNodlTo(const QString &folder)
 {
     // the node classes as accepted, as `rosarch export nodl` writes them
+    m_document->settleAccepted();
     const NodlWriter::Documents nodl = NodlWriter::write(m_document->accepted().nodes);
     QString error;
     if (!NodlWriter::writeTo(nodl, folder, &error)) {
@@ -132,6 +134,7 @@ void ExportController::exportSiteDialog()
                     showError(tr("Export failed"),
                               tr("The architecture site could not be written:\n%1").arg(message));
             });
+    m_document->settleAccepted();
     job->start(m_document->accepted(), m_document->session()->project(), options);
 }
 

@@ -103,6 +103,7 @@ bool RenderController::exportAndRender(const QString &folder)
     }
     QStringList written;
     QString error;
+    m_document->settleAccepted(); // exactly what the views show
     if (!ArtifactWriter::writeAll(m_document->accepted(), folder, &written, &error)) {
         showError(tr("Export failed"),
                   tr("The artifacts could not be written to “%1”:\n%2\n\nChoose a folder you "

@@ -2,11 +2,23 @@
 #include "jobs/disposal.h"
 #include "jobs/stallprobe.h"
 
+#include <QEventLoop>
+#include <QTimer>
+
 #include <utility>
 
 namespace rosarch {
 
-Document::Document(QObject *parent) : QObject(parent), m_session(new ProjectSession(this)) {}
+Document::Document(QObject *parent) : QObject(parent), m_session(new ProjectSession(this))
+{
+    connect(&m_acceptedJobs, &JobRunner::failed, this, [this](const QString &message) {
+        // the model as recovered stands for it; a person sees the project was not applied
+        qWarning("rosarch: the project could not be applied to the model: %s", qPrintable(message));
+        m_acceptedStarted = m_acceptedChange;
+        m_acceptedPending = false;
+        emitChange(DocumentChange::Accepted);
+    });
+}
 
 Document::~Document()
 {
@@ -29,7 +41,6 @@ void Document::setRecovery(Recovery recovery)
         const StallScope views("Document::aboutToChange (views)");
         Q_EMIT aboutToChange(change);
     }
-    disposeInBackground(std::exchange(m_corrected, std::nullopt));
     m_session->dropKeys();
     m_undoStack.clear();
     disposeInBackground(Recovery{std::exchange(m_nodes, std::move(recovery.nodes)),
@@ -39,6 +50,7 @@ void Document::setRecovery(Recovery recovery)
     for (const AtomicNode &n : m_nodes.nodes)
         m_analysisDescriptions.insert(n.id, n.description);
     change.parts |= m_session->endReplace(true, carried);
+    resetAccepted();
     const StallScope views("Document::changed (views)");
     Q_EMIT changed(change);
 }
@@ -65,11 +77,11 @@ void Document::setLaunchDependencies(LaunchDependencies launch, Architecture arc
     if (carried.hadSuggestions)
         change.parts |= DocumentChange::Suggestions;
     Q_EMIT aboutToChange(change);
-    m_corrected.reset();
     m_session->dropKeys();
     disposeInBackground(std::make_pair(std::exchange(m_launch, std::move(launch)),
                                        std::exchange(m_architecture, std::move(architecture))));
     change.parts |= m_session->endReplace(false, carried);
+    resetAccepted();
     Q_EMIT changed(change);
 }
 
@@ -82,32 +94,76 @@ QStringList Document::setDescriptions(const QHash<QString, QString> &wanted)
             changed << n.id;
         }
     if (!changed.isEmpty())
-        m_corrected.reset();
+        dropAccepted();
     return changed;
 }
 
-const Recovery &Document::accepted() const
+void Document::dropAccepted()
 {
-    return corrected().recovery;
+    ++m_acceptedChange;
+    m_acceptedPending = true;
+    if (m_acceptedScheduled)
+        return;
+    m_acceptedScheduled = true;
+    QTimer::singleShot(0, this, [this] {
+        m_acceptedScheduled = false;
+        if (m_acceptedStarted != m_acceptedChange)
+            startAccepted();
+    });
 }
 
-const CorrectedRecovery &Document::corrected() const
+void Document::settleAccepted()
 {
-    if (!m_corrected) {
-        // The model as analysis found it: the nodes here hold the descriptions accepted or
-        // edited since, which the project applies itself (the same function as every export
-        // and the command line).
-        Recovery recovered = this->recovered();
-        const Project p = m_session->project();
-        if (p.decisions.isEmpty() && p.corrections.isEmpty()) {
-            // nothing to apply: the model as recovered (without keying a large model)
-            m_corrected = CorrectedRecovery{};
-            m_corrected->recovery = std::move(recovered);
-        } else {
-            m_corrected = CorrectedModel::apply(recovered, p);
-        }
+    if (!m_acceptedPending)
+        return;
+    QEventLoop loop;
+    connect(this, &Document::changed, &loop, [this, &loop](const DocumentChange &change) {
+        if (change.has(DocumentChange::Accepted) && !m_acceptedPending)
+            loop.quit();
+    });
+    loop.exec(QEventLoop::ExcludeUserInputEvents);
+}
+
+void Document::startAccepted()
+{
+    // The model as analysis found it: the nodes here hold the descriptions accepted or edited
+    // since, which the project applies itself (the same function as every export and the
+    // command line). Both are copies that share their data until written to.
+    const Project project = m_session->project();
+    m_acceptedStarted = m_acceptedChange;
+    m_acceptedJobs.start<CorrectedRecovery>(
+        [recovered = recovered(), project](const JobControl &) {
+            if (project.decisions.isEmpty() && project.corrections.isEmpty()) {
+                CorrectedRecovery same; // nothing to apply (and no keys to make)
+                same.recovery = recovered;
+                return same;
+            }
+            return CorrectedModel::apply(recovered, project);
+        },
+        [this, change = m_acceptedChange](CorrectedRecovery result, bool canceled) {
+            if (canceled)
+                return;
+            disposeInBackground(std::exchange(m_corrected, std::move(result)));
+            m_acceptedPending = change != m_acceptedChange; // else a newer job is coming
+            emitChange(DocumentChange::Accepted);
+        });
+}
+
+void Document::resetAccepted()
+{
+    const Project project = m_session->project();
+    CorrectedRecovery now;
+    now.recovery = recovered();
+    disposeInBackground(std::exchange(m_corrected, std::move(now)));
+    if (project.decisions.isEmpty() && project.corrections.isEmpty()) {
+        // nothing to apply: the model as recovered (without keying a large model)
+        m_acceptedJobs.cancel(); // a job of the model before
+        m_acceptedStarted = m_acceptedChange;
+        m_acceptedPending = false;
+        return;
     }
-    return *m_corrected;
+    m_acceptedPending = true;
+    startAccepted();
 }
 
 } // namespace rosarch

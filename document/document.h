@@ -4,6 +4,7 @@
 #include "core/launchdependencies.h"
 #include "document/documentchange.h"
 #include "document/projectsession.h"
+#include "jobs/jobrunner.h"
 #include "pipeline/recovery.h"
 #include "project/correctedmodel.h"
 
@@ -53,8 +54,16 @@ public:
     void setLaunchDependencies(LaunchDependencies launch, Architecture architecture = {});
 
     /// The model as accepted (CorrectedModel::apply of the recovery and the project): what the
-    /// diagram draws and the exports write. Computed once per change of either.
-    const Recovery &accepted() const;
+    /// diagram draws and the exports write. A change of either makes it again on a background
+    /// job (applying a correction may compose stage 3 again); until that job is done this is
+    /// the one before, or after a new model the model as recovered, and isAcceptedPending() is
+    /// true. `changed` with DocumentChange::Accepted says it is there.
+    const Recovery &accepted() const { return m_corrected.recovery; }
+    /// True while the model as accepted is being made again (accepted() is not current).
+    bool isAcceptedPending() const { return m_acceptedPending; }
+    /// Runs the event loop (without user input) until the model as accepted includes every
+    /// change made so far: for what must write exactly what a person reviewed (exports).
+    void settleAccepted();
 
 Q_SIGNALS:
     /// Lists the views show from scratch are about to be replaced (change.isReset()): item
@@ -67,9 +76,15 @@ private:
     friend class ProjectSession; // announces its changes, sets descriptions
     void emitChange(DocumentChange::Parts parts, const QString &id = {});
     /// The model as accepted, with what of the project matched nothing.
-    const CorrectedRecovery &corrected() const;
-    /// Forgets the model as accepted (the project or the descriptions changed).
-    void dropAccepted() { m_corrected.reset(); }
+    const CorrectedRecovery &corrected() const { return m_corrected; }
+    /// The project or the descriptions changed: the model as accepted is made again, once for
+    /// every change made before the event loop runs.
+    void dropAccepted();
+    /// Starts the job that makes the model as accepted of the model and project as they are.
+    void startAccepted();
+    /// After a new model: the model as recovered stands for the model as accepted until the job
+    /// makes it (at once when the project changes nothing).
+    void resetAccepted();
     /// The nodes' descriptions as stage 1 found them, by node id.
     const QHash<QString, QString> &analysisDescriptions() const { return m_analysisDescriptions; }
     /// Gives each node in `wanted` its description there; returns the ids that changed.
@@ -78,10 +93,15 @@ private:
     AtomicNodeList m_nodes;
     LaunchDependencies m_launch;
     Architecture m_architecture;
-    mutable std::optional<CorrectedRecovery> m_corrected; ///< accepted(), until a change
-    QHash<QString, QString> m_analysisDescriptions;       ///< as stage 1 found them, by node id
+    CorrectedRecovery m_corrected;                  ///< accepted(): the last one made
+    QHash<QString, QString> m_analysisDescriptions; ///< as stage 1 found them, by node id
     QUndoStack m_undoStack;
     ProjectSession *m_session;
+    JobRunner m_acceptedJobs;         ///< makes m_corrected; a newer job drops an older result
+    bool m_acceptedPending = false;   ///< a change is not in m_corrected yet
+    bool m_acceptedScheduled = false; ///< startAccepted is queued
+    quint64 m_acceptedChange = 0;     ///< counts the changes of what the model as accepted is of
+    quint64 m_acceptedStarted = 0;    ///< the change the last job started with
 };
 
 } // namespace rosarch

@@ -20,6 +20,7 @@ struct DocumentChange
         Decisions = 1u << 6,     ///< accepted decisions: groupings, names, descriptions
         Corrections = 1u << 7,   ///< the corrections (`id`: the one added or removed)
         Findings = 1u << 8,      ///< the hidden and accepted findings
+        Accepted = 1u << 9,      ///< the model as accepted was made again (a background job)
     };
     Q_DECLARE_FLAGS(Parts, Part)
 

@@ -54,7 +54,9 @@ AtomicNodeModel::AtomicNodeModel(Document *document, QObject *parent)
             rebuild();
             endResetModel();
         } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions |
-                                   DocumentChange::Launch)) {
+                                   DocumentChange::Launch | DocumentChange::Accepted)) {
+            if (m_document->isAcceptedPending())
+                return; // DocumentChange::Accepted follows
             onCorrectionsChanged();
         } else if (change.has(DocumentChange::Node)) {
             bool differs = false; // a correction may have shown it already

@@ -16,8 +16,9 @@ CorrectionModel::CorrectionModel(Document *document, QObject *parent)
     connect(document, &Document::changed, this, [this](const DocumentChange &change) {
         const StallScope scope("CorrectionModel (document changed)");
         // a re-run can orphan a correction or find its target again
-        if (change.parts & (DocumentChange::Corrections | DocumentChange::Model |
-                            DocumentChange::Launch | DocumentChange::Decisions))
+        if (change.parts &
+            (DocumentChange::Corrections | DocumentChange::Model | DocumentChange::Launch |
+             DocumentChange::Decisions | DocumentChange::Accepted))
             refresh();
     });
     refresh();

@@ -42,7 +42,10 @@ DiagnosticModel::DiagnosticModel(Document *document, QObject *parent)
             reload();
             endResetModel();
             Q_EMIT findingsChanged();
-        } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions)) {
+        } else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions |
+                                   DocumentChange::Accepted)) {
+            if (m_document->isAcceptedPending())
+                return; // DocumentChange::Accepted follows
             beginResetModel();
             reload();
             endResetModel();

@@ -29,7 +29,9 @@ LaunchTreeModel::LaunchTreeModel(Document *document, QObject *parent)
     connect(document, &Document::changed, this, [this, end](const DocumentChange &change) {
         if (change.parts & (DocumentChange::Model | DocumentChange::Launch))
             end();
-        else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions))
+        else if (change.parts & (DocumentChange::Corrections | DocumentChange::Decisions |
+                                 DocumentChange::Accepted) &&
+                 !m_document->isAcceptedPending()) // else DocumentChange::Accepted follows
             onCorrectionsChanged();
     });
     // Class names in tooltips come from the atomic nodes; a description edit changes nothing here.

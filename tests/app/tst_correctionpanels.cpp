@@ -1,6 +1,7 @@
 // Corrections in the GUI's panels: the inspector, the Corrections panel, re-running
 // the stages, orphans and re-targeting, and a project's corrections shown everywhere.
 #include "project/stablekeys.h"
+#include "support/acceptedwait.h"
 #include "support/correctiongui.h"
 
 #include <QtTest>
@@ -39,7 +40,8 @@ private Q_SLOTS:
             d.setName(QStringLiteral("odom_node"));
             return true;
         };
-        gui->inspector.actions().first()->trigger(); // Rename…
+        gui->inspector.actions().first()->trigger();   // Rename…
+        QVERIFY(test::acceptedSettled(gui->document)); // the inspector shows the model as accepted
         QCOMPARE(gui->inspector.fieldText(QStringLiteral("name")), QStringLiteral("odom_node"));
         QCOMPARE(gui->inspector.fieldText(QStringLiteral("provenance")),
                  QStringLiteral("corrected by c1"));
@@ -133,6 +135,7 @@ private Q_SLOTS:
         QCOMPARE(gui->launchModel.nodeIndex(safety).data().toString(),
                  QStringLiteral("safety_monitor"));
         gui->document.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(gui->document));
         QCOMPARE(gui->correctionModel.rowCount(), 3);
         QCOMPARE(cell(0, CorrectionModel::KindColumn), QStringLiteral("c1  Rename"));
         QVERIFY(gui->instance(QStringLiteral("laser_safety")));
@@ -141,9 +144,10 @@ private Q_SLOTS:
         gui->correctionPanel.tableView()->selectAll();
         gui->correctionPanel.removeAction()->trigger();
         QCOMPARE(gui->correctionModel.rowCount(), 0);
-        QCOMPARE(gui->document.accepted(), gui->document.accepted()); // computed
+        QCOMPARE(test::acceptedNow(gui->document), test::acceptedNow(gui->document)); // computed
         QVERIFY(gui->instance(QStringLiteral("recorder")));
         gui->document.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(gui->document));
         QCOMPARE(gui->correctionModel.rowCount(), 3);
     }
 
@@ -181,6 +185,7 @@ private Q_SLOTS:
         c.newValue = QStringLiteral("renamed");
         c.reason = QStringLiteral("kept");
         QCOMPARE(gui->document.session()->addCorrection(c), QStringLiteral("c1"));
+        QVERIFY(test::acceptedSettled(gui->document)); // orphans are found applying the project
         QCOMPARE(gui->document.session()->orphans().size(), 1);
         QVERIFY(gui->correctionModel.index(0, 0).data(CorrectionModel::OrphanedRole).toBool());
         QVERIFY(gui->correctionModel.index(0, CorrectionModel::StatusColumn)
@@ -193,7 +198,7 @@ private Q_SLOTS:
 
         QStringList offered;
         gui->answer = [&](CorrectionDialog &d) {
-            for (const NodeInstance &n : gui->document.accepted().launch.nodes)
+            for (const NodeInstance &n : test::acceptedNow(gui->document).launch.nodes)
                 if (d.setChoice(QStringLiteral("instance:src/cart_base/launch/cart.launch.py|%1")
                                     .arg(n.nodeName)))
                     offered.append(n.nodeName);
@@ -204,6 +209,7 @@ private Q_SLOTS:
                 QStringLiteral("instance:src/cart_base/launch/cart.launch.py|recorder"));
         };
         gui->correctionPanel.retargetAction()->trigger();
+        QVERIFY(test::acceptedSettled(gui->document));
         QVERIFY2(offered.contains(QStringLiteral("odometry")), qPrintable(offered.join(u',')));
         QCOMPARE(gui->document.session()->corrections().size(), 1);
         const Correction &now = gui->document.session()->corrections().first();
@@ -216,6 +222,7 @@ private Q_SLOTS:
         QVERIFY(!gui->correctionModel.index(0, 0).data(CorrectionModel::OrphanedRole).toBool());
         // one undo step puts the orphan back
         gui->document.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(gui->document));
         QCOMPARE(gui->document.session()->corrections().first().target, c.target);
         QCOMPARE(gui->document.session()->orphans().size(), 1);
         QVERIFY(!gui->instance(QStringLiteral("renamed")));
@@ -256,7 +263,7 @@ private Q_SLOTS:
         QCOMPARE(gui.controller->describe({EKind::Port, ticks, {}, {}}).provenance,
                  QStringLiteral("corrected by c2"));
         // and the diagram draws the marks
-        gui.diagramPanel.setArchitecture(gui.document.accepted().architecture);
+        gui.diagramPanel.setArchitecture(test::acceptedNow(gui.document).architecture);
         QSignalSpy laidOut(&gui.diagramPanel, &DiagramPanel::layoutFinished);
         QVERIFY(laidOut.count() > 0 || laidOut.wait(20000));
         int corrected = 0;

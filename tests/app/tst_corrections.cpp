@@ -1,5 +1,6 @@
 // Corrections made through the GUI: each kind through the controller's menu path
 // with the dialog filled in as a person would, undone and redone, as the views show it.
+#include "support/acceptedwait.h"
 #include "support/correctiongui.h"
 
 #include <QtTest>
@@ -153,7 +154,7 @@ private Q_SLOTS:
         del->trigger();
         QCOMPARE(gui->document.session()->corrections().size(), 1);
         roundTrip(*gui, [&](bool done) {
-            QCOMPARE(gui->document.accepted().nodes.node(recorder) == nullptr, done);
+            QCOMPARE(test::acceptedNow(gui->document).nodes.node(recorder) == nullptr, done);
             // struck out where it was, not hidden
             const QModelIndex row = gui->nodeModel.nodeIndex(recorder);
             QVERIFY(row.isValid());
@@ -169,9 +170,9 @@ private Q_SLOTS:
         QVERIFY(restore.first()->text().startsWith(QStringLiteral("Restore")));
         restore.first()->trigger();
         QVERIFY(gui->document.session()->corrections().isEmpty());
-        QVERIFY(gui->document.accepted().nodes.node(recorder));
+        QVERIFY(test::acceptedNow(gui->document).nodes.node(recorder));
         gui->document.undoStack()->undo(); // the restore
-        QVERIFY(!gui->document.accepted().nodes.node(recorder));
+        QVERIFY(!test::acceptedNow(gui->document).nodes.node(recorder));
 
         const QString odom = gui->portId(QStringLiteral("Recorder"), "odom");
         QVERIFY(gui->controller->remove(
@@ -199,7 +200,7 @@ private Q_SLOTS:
         const QString odometry = gui->instanceId(QStringLiteral("odometry"));
         const QString odomPort = gui->portId(QStringLiteral("OdometryNode"), "odom");
         const auto connected = [&] {
-            for (const Composite &c : gui->document.accepted().architecture.composites)
+            for (const Composite &c : test::acceptedNow(gui->document).architecture.composites)
                 for (const RosNodePart &p : c.parts)
                     if (p.instanceId == odometry)
                         return std::any_of(
@@ -265,7 +266,7 @@ private Q_SLOTS:
                  QStringLiteral("/cart/heartbeat"));
         roundTrip(*gui, [&](bool done) {
             bool found = false;
-            for (const Composite &c : gui->document.accepted().architecture.composites)
+            for (const Composite &c : test::acceptedNow(gui->document).architecture.composites)
                 for (const RosNodePart &p : c.parts)
                     for (const PartPort &pp : p.ports)
                         found = found || (p.instanceId == odometry &&
@@ -284,7 +285,7 @@ private Q_SLOTS:
         };
         QVERIFY(gui->controller->rename({EKind::Channel, QStringLiteral("topic:/estop"), {}, {}}));
         const auto hasChannel = [&](const QString &name) {
-            for (const Composite &c : gui->document.accepted().architecture.composites)
+            for (const Composite &c : test::acceptedNow(gui->document).architecture.composites)
                 for (const Channel &ch : c.channels)
                     if (ch.name == name)
                         return true;
@@ -315,7 +316,7 @@ private Q_SLOTS:
             {gui->instanceId("odometry"), gui->instanceId("safety_monitor")}, root));
         roundTrip(*gui, [&](bool done) {
             bool grouped = false;
-            for (const Composite &c : gui->document.accepted().architecture.composites)
+            for (const Composite &c : test::acceptedNow(gui->document).architecture.composites)
                 for (const RosNodePart &p : c.parts)
                     grouped = grouped || p.subsystem == QLatin1String("Motion safety");
             QCOMPARE(grouped, done);
@@ -336,6 +337,7 @@ private Q_SLOTS:
         QCOMPARE(int(gui->document.session()->corrections().size()), before);
         const QString odometry = gui->instanceId(QStringLiteral("odometry"));
         QVERIFY(gui->controller->toggleReviewed({EKind::Instance, odometry, {}, {}}));
+        QVERIFY(test::acceptedSettled(gui->document));
         QVERIFY(gui->launchModel.nodeIndex(odometry).data(LaunchTreeModel::ReviewedRole).toBool());
         QVERIFY(gui->controller->describe({EKind::Instance, odometry, {}, {}}).reviewed);
     }

@@ -4,6 +4,7 @@
 // disk refuses them.
 #include "document/document.h"
 #include "project/project.h"
+#include "support/acceptedwait.h"
 #include "support/suggestionfixture.h"
 #include "support/testsupport.h"
 
@@ -144,7 +145,7 @@ private Q_SLOTS:
         QVERIFY(doc.session()->orphans().isEmpty());
         for (const AtomicNode &n : doc.atomicNodes().nodes)
             QCOMPARE(n.description == value, n.qualifiedName == target);
-        for (const AtomicNode &n : doc.accepted().nodes.nodes)
+        for (const AtomicNode &n : test::acceptedNow(doc).nodes.nodes)
             QCOMPARE(n.marks.provenance == Provenance::Suggested, n.qualifiedName == target);
     }
 

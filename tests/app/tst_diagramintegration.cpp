@@ -5,6 +5,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/acceptedwait.h"
 #include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
@@ -219,6 +220,7 @@ private Q_SLOTS:
 
         doc()->session()->acceptSuggestion(
             QStringLiteral("s2")); // accepted: drawn as the model, not a preview
+        QVERIFY(test::acceptedSettled(*doc()));
         QVERIFY(waitForLayout());
         QVERIFY(panel()->scene()->item(QStringLiteral("subsystem:planning")));
         test::saveScreenshot(*panel(), QStringLiteral("diagram-subsystem.png"));
@@ -229,6 +231,7 @@ private Q_SLOTS:
         QVERIFY(test::readFile(out.filePath(QStringLiteral("ccd/system.puml")))
                     .contains("<<Subsystem>>"));
         doc()->undoStack()->undo();
+        QVERIFY(test::acceptedSettled(*doc()));
         QVERIFY(waitForLayout());
         doc()->session()->setSuggestions({});
         test::child<DiagramController>(*m_window)->previewGrouping({}, {}, {});
@@ -250,6 +253,7 @@ private Q_SLOTS:
         report.suggestions = {name};
         doc()->session()->setSuggestions(report);
         doc()->session()->acceptSuggestion(QStringLiteral("s3"));
+        QVERIFY(test::acceptedSettled(*doc()));
         const auto reportPort = [this]() -> const PartPort * {
             for (const RosNodePart &p :
                  panel()->architecture().composite(QStringLiteral("lf1"))->parts)
@@ -268,6 +272,7 @@ private Q_SLOTS:
             promoted = promoted || b.name == QLatin1String("/commander/report");
         QVERIFY(promoted);
         doc()->undoStack()->undo();
+        QVERIFY(test::acceptedSettled(*doc()));
         QVERIFY(!reportPort()->resolved);
         doc()->session()->setSuggestions({});
         QVERIFY(waitForLayout());

@@ -3,6 +3,8 @@
 // one reverts it; and re-running the stages on the same workspace keeps them, by key.
 #include "document/document.h"
 #include "project/correctedmodel.h"
+#include "support/acceptedwait.h"
+#include "support/documentchanges.h"
 #include "support/testsupport.h"
 
 #include <QDirIterator>
@@ -109,7 +111,7 @@ private Q_SLOTS:
         doc.session()->setLaunchOptions(project.launch);
         doc.setRecovery(m_recovered);
         QSignalSpy changes(&doc, &Document::changed);
-        QList<Recovery> steps{doc.accepted()};
+        QList<Recovery> steps{test::acceptedNow(doc)};
         for (const Correction &c : project.corrections) {
             Correction fresh = c;
             fresh.id.clear(); // the document numbers them
@@ -118,7 +120,7 @@ private Q_SLOTS:
             QCOMPARE(doc.session()->correction(id)->target, c.target);
             QVERIFY(doc.session()->correction(id)->time.isValid());
             QVERIFY(!doc.session()->correction(id)->author.isEmpty());
-            steps << doc.accepted();
+            steps << test::acceptedNow(doc);
             QVERIFY2(steps.last() != steps.at(steps.size() - 2) ||
                          c.kind == Correction::Kind::Review,
                      qPrintable(c.id)); // each one changes the model (a review marks it)
@@ -131,18 +133,18 @@ private Q_SLOTS:
         // the same model the pure function gives for the project (ids and times aside)
         Project made = project;
         made.corrections = doc.session()->corrections();
-        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, made).recovery);
-        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, project).recovery);
+        QCOMPARE(test::acceptedNow(doc), CorrectedModel::apply(m_recovered, made).recovery);
+        QCOMPARE(test::acceptedNow(doc), CorrectedModel::apply(m_recovered, project).recovery);
 
         for (int i = int(steps.size()) - 2; i >= 0; --i) {
             doc.undoStack()->undo();
-            QVERIFY2(doc.accepted() == steps.at(i), qPrintable(QString::number(i)));
+            QVERIFY2(test::acceptedNow(doc) == steps.at(i), qPrintable(QString::number(i)));
         }
         QVERIFY(doc.session()->corrections().isEmpty());
-        QCOMPARE(doc.accepted(), m_recovered);
+        QCOMPARE(test::acceptedNow(doc), m_recovered);
         for (int i = 1; i < steps.size(); ++i) {
             doc.undoStack()->redo();
-            QVERIFY2(doc.accepted() == steps.at(i), qPrintable(QString::number(i)));
+            QVERIFY2(test::acceptedNow(doc) == steps.at(i), qPrintable(QString::number(i)));
         }
     }
 
@@ -154,18 +156,69 @@ private Q_SLOTS:
         doc.setRecovery(m_recovered);
         for (const Correction &c : project.corrections)
             doc.session()->addCorrection(c);
-        const Recovery all = doc.accepted();
+        const Recovery all = test::acceptedNow(doc);
         QVERIFY(doc.session()->removeCorrection(QStringLiteral("c3"))); // the topic rename
         QVERIFY(!doc.session()->correction(QStringLiteral("c3")));
         Project without = project;
         without.corrections.removeAt(2);
         const Recovery expected = CorrectedModel::apply(m_recovered, without).recovery;
-        QCOMPARE(doc.accepted(), expected);
+        QCOMPARE(test::acceptedNow(doc), expected);
         doc.undoStack()->undo();
         QCOMPARE(doc.session()->corrections().at(2).id, QStringLiteral("c3")); // back where it was
-        QCOMPARE(doc.accepted(), all);
+        QCOMPARE(test::acceptedNow(doc), all);
         QVERIFY(!doc.session()->removeCorrection(QStringLiteral("c99")));
         QVERIFY(doc.session()->addCorrection(Correction{}).isEmpty()); // no target: nothing pushed
+    }
+
+    void theModelAsAcceptedIsMadeInTheBackground()
+    {
+        const Project project = fixtureCorrections();
+        QVERIFY(project.corrections.size() >= 3);
+        Document doc;
+        doc.session()->setAutosaveInterval(60000);
+        doc.setRecovery(m_recovered);
+        // A new model with an empty project: the model as recovered, at once.
+        QVERIFY(!doc.isAcceptedPending());
+        QCOMPARE(doc.accepted(), doc.recovered());
+
+        // A correction: until the job is done the views see the model before and are told
+        // when it is there; applying it never runs in the call that made it.
+        QSignalSpy changes(&doc, &Document::changed);
+        QVERIFY(!doc.session()->addCorrection(project.corrections.at(0)).isEmpty());
+        QVERIFY(doc.isAcceptedPending());
+        QCOMPARE(doc.accepted(), doc.recovered());
+        QVERIFY(test::acceptedSettled(doc));
+        QCOMPARE(test::changesOf(changes, DocumentChange::Accepted).size(), 1);
+        Project first = project;
+        first.corrections = {project.corrections.at(0)};
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, first).recovery);
+
+        // Several changes before the event loop runs: one job, for all of them.
+        changes.clear();
+        doc.session()->addCorrection(project.corrections.at(1));
+        doc.session()->addCorrection(project.corrections.at(2));
+        QVERIFY(test::acceptedSettled(doc));
+        QCOMPARE(test::changesOf(changes, DocumentChange::Accepted).size(), 1);
+        Project three = project;
+        three.corrections = project.corrections.mid(0, 3);
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, three).recovery);
+
+        // What must write what a person reviewed waits for it (an export right after an undo).
+        doc.undoStack()->undo();
+        QVERIFY(doc.isAcceptedPending());
+        doc.settleAccepted();
+        QVERIFY(!doc.isAcceptedPending());
+        Project two = project;
+        two.corrections = project.corrections.mid(0, 2);
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, two).recovery);
+
+        // A re-run of the same workspace: the model as recovered stands for it until the job
+        // applies the project to the new model.
+        doc.setRecovery(m_recovered);
+        QVERIFY(doc.isAcceptedPending());
+        QCOMPARE(doc.accepted(), doc.recovered());
+        QVERIFY(test::acceptedSettled(doc));
+        QCOMPARE(doc.accepted(), CorrectedModel::apply(m_recovered, two).recovery);
     }
 
     void pendingSuggestionsSurviveARerunUnlessTheirTargetIsGone()
@@ -215,11 +268,11 @@ private Q_SLOTS:
             doc.session()->addCorrections(project.corrections, QStringLiteral("all of them"));
         QCOMPARE(ids.size(), project.corrections.size());
         QCOMPARE(doc.undoStack()->count(), 1); // one step
-        const Recovery before = doc.accepted();
+        const Recovery before = test::acceptedNow(doc);
         // F5: the stages run again on the same workspace
         doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
         QCOMPARE(doc.session()->corrections().size(), project.corrections.size());
-        QCOMPARE(doc.accepted(), before);
+        QCOMPARE(test::acceptedNow(doc), before);
         // a description a person wrote (F2) is a correction too: the node list keeps it
         for (const AtomicNode &n : doc.atomicNodes().nodes)
             QCOMPARE(n.description.startsWith(QLatin1String("Reports contact of one bumper")),
@@ -231,7 +284,7 @@ private Q_SLOTS:
                         "    def __init__(self):\n        super().__init__('arbiter')\n");
         doc.setRecovery(recoverWorkspace(m_ws.path(), project.launch));
         QVERIFY(doc.session()->orphans().isEmpty());
-        QCOMPARE(shape(doc.accepted().architecture), shape(before.architecture));
+        QCOMPARE(shape(test::acceptedNow(doc).architecture), shape(before.architecture));
         QFile::remove(m_ws.filePath(QStringLiteral("src/cart_base/cart_base/arbiter.py")));
     }
 };

@@ -11,6 +11,7 @@
 #include "plantuml/plantumlreader.h"
 #include "project/project.h"
 #include "suggestions/suggestionengine.h"
+#include "support/acceptedwait.h"
 #include "support/guifixture.h"
 #include "support/testsupport.h"
 #include "widgets/diagram/diagrampanel.h"
@@ -307,6 +308,7 @@ private Q_SLOTS:
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
 
         QVERIFY(doc->session()->acceptSuggestion(id));
+        QVERIFY(test::acceptedSettled(*doc));
         QCOMPARE(doc->session()->acceptedGroupings().size(), 1);
         const QString name = doc->session()->acceptedGroupings().first().name;
         QVERIFY(!name.isEmpty());
@@ -320,10 +322,12 @@ private Q_SLOTS:
         QVERIFY(!blocks.isEmpty());
 
         doc->undoStack()->undo();
+        QVERIFY(test::acceptedSettled(*doc));
         QCOMPARE(grouped(test::child<DiagramPanel>(w)->architecture()), QStringList());
         for (const QString &ccd : exportedCcds(w, out))
             QVERIFY(!ccd.contains(QLatin1String("<<Subsystem>>")));
         doc->undoStack()->redo();
+        QVERIFY(test::acceptedSettled(*doc));
         QCOMPARE(membersOf(test::child<DiagramPanel>(w)->architecture(), name), members);
 
         // The headless command applies the same decisions through the same function: every

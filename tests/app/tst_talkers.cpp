@@ -6,6 +6,7 @@
 #include "app/mainwindow.h"
 #include "app/stagerunner.h"
 #include "document/document.h"
+#include "support/acceptedwait.h"
 #include "support/guifixture.h"
 #include "support/screenshot.h"
 #include "support/testsupport.h"
@@ -176,9 +177,11 @@ private Q_SLOTS:
         remove.target = doc()->session()->keyOf(backup);
         const QString id = doc()->session()->addCorrection(remove);
         QVERIFY(!id.isEmpty());
+        QVERIFY(test::acceptedSettled(*doc()));
         QVERIFY(!row(talkers(), QStringLiteral("/backup_planner")));
         QVERIFY(row(talkers(), QStringLiteral("/planner")));
         doc()->undoStack()->undo(); // and back
+        QVERIFY(test::acceptedSettled(*doc()));
         QVERIFY(row(talkers(), QStringLiteral("/backup_planner")));
     }
 

@@ -2,6 +2,7 @@
 // same name to the class's other unresolved ports written the same way, does it in one undoable
 // step and says how many ports it named. On the project_corrections fixture with a subscriber
 // added that is written as the publisher is.
+#include "support/acceptedwait.h"
 #include "support/correctiongui.h"
 
 #include <QCheckBox>
@@ -25,7 +26,7 @@ class TestTwinNames : public CorrectionTestBase
     QStringList portsWritten(Gui &gui, const QString &written) const
     {
         QStringList ids;
-        for (const AtomicNode &n : gui.document.accepted().nodes.nodes)
+        for (const AtomicNode &n : test::acceptedNow(gui.document).nodes.nodes)
             if (n.className == kClass)
                 for (const Port &p : n.ports)
                     if (p.nameExpression == written || p.name == written)

@@ -6,6 +6,7 @@
 #include "diagram/diagramlayouter.h"
 #include "document/document.h"
 #include "pipeline/recovery.h"
+#include "support/acceptedwait.h"
 #include "support/testsupport.h"
 #include "widgets/atomicnodemodel.h"
 #include "widgets/atomicnodepanel.h"
@@ -83,6 +84,7 @@ struct Gui
     }
     QString portId(const QString &className, const QString &name) const
     {
+        acceptedSettled(document); // what the views show follows it
         for (const AtomicNode &n : document.accepted().nodes.nodes)
             if (n.className == className)
                 for (const Port &p : n.ports)
@@ -92,6 +94,7 @@ struct Gui
     }
     const NodeInstance *instance(const QString &name) const
     {
+        acceptedSettled(document); // what the views show follows it
         for (const NodeInstance &n : document.accepted().launch.nodes)
             if (n.nodeName == name)
                 return &n;
@@ -104,6 +107,7 @@ struct Gui
     }
     QString launchFileId(const QString &fileName) const
     {
+        acceptedSettled(document); // what the views show follows it
         for (const LaunchFileInstance &lf : document.accepted().launch.instances)
             if (lf.file.endsWith(fileName))
                 return lf.id;
@@ -112,10 +116,12 @@ struct Gui
     /// What the node list shows in the name column of a port row.
     QString portRow(const QString &id) const
     {
+        acceptedSettled(document); // what the views show follows it
         return nodeModel.portIndex(id.section(u'/', 0, 0), id.section(u'/', 1)).data().toString();
     }
     QString portType(const QString &id) const
     {
+        acceptedSettled(document); // what the views show follows it
         return nodeModel
             .portIndex(id.section(u'/', 0, 0), id.section(u'/', 1), AtomicNodeModel::TypeColumn)
             .data()
@@ -123,6 +129,7 @@ struct Gui
     }
     QStringList portNames(const QString &className) const
     {
+        acceptedSettled(document); // what the views show follows it
         QStringList names;
         const QModelIndex node = nodeModel.nodeIndex(classId(className));
         for (int r = 0; r < nodeModel.rowCount(node); ++r)
@@ -132,6 +139,7 @@ struct Gui
     /// The names of the launch tree's node rows under every launch file, in order.
     QStringList launchNodes() const
     {
+        acceptedSettled(document); // what the views show follows it
         QStringList names;
         std::function<void(const QModelIndex &)> walk = [&](const QModelIndex &parent) {
             for (int r = 0; r < launchModel.rowCount(parent); ++r) {
@@ -205,11 +213,13 @@ protected:
     /// Undo and redo the last step; `check(true)` holds after redo, `check(false)` after undo.
     static void roundTrip(Gui &gui, const std::function<void(bool)> &check)
     {
-        const Recovery done = gui.document.accepted();
+        const Recovery done = acceptedNow(gui.document); // the views follow it
         check(true);
         gui.document.undoStack()->undo();
+        QVERIFY(acceptedSettled(gui.document));
         check(false);
         gui.document.undoStack()->redo();
+        QVERIFY(acceptedSettled(gui.document));
         check(true);
         QCOMPARE(gui.document.accepted(), done);
     }

@@ -3,6 +3,7 @@
 // next / previous follow what is shown.
 #include "document/document.h"
 #include "pipeline/recovery.h"
+#include "support/acceptedwait.h"
 #include "support/testsupport.h"
 #include "widgets/diagnosticdetail.h"
 #include "widgets/diagnosticfilterbar.h"
@@ -313,9 +314,11 @@ private Q_SLOTS:
 
         // Undo takes the accept back, redo puts it back.
         doc.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(doc));
         QCOMPARE(model.shown(), total - 1);
         QVERIFY(!doc.session()->project().finding(second));
         doc.undoStack()->redo();
+        QVERIFY(test::acceptedSettled(doc));
         QCOMPARE(model.shown(), total - 2);
 
         // A re-run (F5) of the same workspace keeps them: they are keyed, not positional.
@@ -374,10 +377,12 @@ private Q_SLOTS:
         QSignalSpy changed(&model, &DiagnosticModel::findingsChanged);
         QCOMPARE(doc.session()->addCorrections(removals, QStringLiteral("Remove odometry")).size(),
                  2);
+        QVERIFY(test::acceptedSettled(doc)); // the checks run on the model as accepted
         QVERIFY(changed.count() >= 1);
         QCOMPARE(misspelt(), 0);
         QVERIFY(messages(model) != before);
         doc.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(doc));
         QCOMPARE(messages(model), before);
     }
 
@@ -504,6 +509,7 @@ private Q_SLOTS:
         bar->showHiddenBox()->setChecked(true);
         QCOMPARE(tree->model()->rowCount(), 4);
         doc.undoStack()->undo();
+        QVERIFY(test::acceptedSettled(doc));
         bar->showHiddenBox()->setChecked(false);
         QCOMPARE(tree->model()->rowCount(), 4);
     }
