@@ -5,6 +5,7 @@
 // cursor and scrolled line. On the example workspace, driven as a person drives the window.
 #include "app/correctioncontroller.h"
 #include "app/mainwindow.h"
+#include "diagram/diagrambuilder.h"
 #include "document/document.h"
 #include "suggestions/suggestionengine.h"
 #include "support/diagramwait.h"
@@ -338,6 +339,112 @@ private Q_SLOTS:
         keptThrough(QStringLiteral("Reject a description"),
                     [&] { QVERIFY(doc()->session()->rejectSuggestion(description)); });
         test::saveScreenshot(*m_window, QStringLiteral("context-after.png"));
+    }
+
+    void aGroupingKeepsThePlaceInTheSmallLayout()
+    {
+        // At 1024 x 700, at a zoom where a grouping accepted brings or drops a scroll bar: the
+        // element looked at stays on its pixel.
+        MainWindow *large = std::exchange(m_window, new MainWindow);
+        const auto back = qScopeGuard([&] { delete std::exchange(m_window, large); });
+        m_window->resize(1024, 700);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        QTRY_COMPARE(m_window->width(), 1024);
+        for (QAction *a : m_window->findChildren<QAction *>())
+            if (a->text() == QStringLiteral("&Reset Layout"))
+                a->trigger();
+        const QString ws = m_dir.filePath(QStringLiteral("small"));
+        test::copyTree(QDir(QStringLiteral(ROSARCH_SOURCE_DIR))
+                           .filePath(QStringLiteral("resources/example_ws")),
+                       ws);
+        m_window->openWorkspace(ws);
+        QTRY_VERIFY_WITH_TIMEOUT(!doc()->architecture().composites.isEmpty(), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
+        QTRY_VERIFY(doc()->session()->keysReady());
+        doc()->session()->setSuggestions(SuggestionEngine(doc()->workspaceRoot(),
+                                                          doc()->recovered(),
+                                                          SuggestionEngine::Options())
+                                             .run());
+        QCoreApplication::processEvents();
+        QStringList groupings;
+        for (const Suggestion &s : doc()->session()->suggestions())
+            if (s.kind == Suggestion::Kind::SubsystemGrouping)
+                groupings << s.id;
+        // A composite whose drawing a grouping changes.
+        QString grouping, composite;
+        QSizeF without, with;
+        for (const QString &id : groupings)
+            for (const Composite &c : doc()->architecture().composites) {
+                if (!grouping.isEmpty())
+                    break;
+                QVERIFY(test::laidOut(*diagram(), [&] { diagram()->showComposite(c.instanceId); }));
+                without = diagram()->scene()->sceneRect().size();
+                redrawnAfter([&] { QVERIFY(doc()->session()->acceptSuggestion(id)); });
+                with = diagram()->scene()->sceneRect().size();
+                redrawnAfter([this] { doc()->undoStack()->undo(); });
+                if (with != without && diagram()->currentComposite() == c.instanceId) {
+                    grouping = id;
+                    composite = c.instanceId;
+                }
+            }
+        QVERIFY2(!grouping.isEmpty(), "a grouping changes a drawing");
+
+        // The zoom between the two: a scroll bar comes with the grouping (across the one that
+        // stays in the other direction), and one of the composite's boxes selected in sight.
+        QVERIFY(test::laidOut(*diagram(), [&] { diagram()->showComposite(composite); }));
+        DiagramView *view = diagram()->view();
+        const bool taller = with.height() != without.height();
+        const QSize shown = view->viewport()->size();
+        view->setZoom(taller ? 2.0 * shown.height() / (with.height() + without.height())
+                             : 2.0 * shown.width() / (with.width() + without.width()));
+        QCoreApplication::processEvents();
+        QScrollBar *bar = taller ? view->verticalScrollBar() : view->horizontalScrollBar();
+        QString selected;
+        for (const RosNodePart &p : diagram()->architecture().composite(composite)->parts)
+            if (DiagramItem *item = diagram()->scene()->item(DiagramBuilder::partKey(p.id));
+                item && selected.isEmpty() &&
+                view->viewport()->rect().contains(
+                    view->mapFromScene(item->sceneBoundingRect()).boundingRect()))
+                selected = DiagramBuilder::partKey(p.id);
+        QVERIFY2(!selected.isEmpty(), "a box in sight");
+        diagram()->selectElement(selected);
+        QCoreApplication::processEvents();
+        const auto at = [&] {
+            return view->mapFromScene(
+                diagram()->scene()->item(selected)->sceneBoundingRect().topLeft());
+        };
+        const QPoint before = at();
+        const bool barBefore = bar->isVisible();
+        redrawnAfter([&] { QVERIFY(doc()->session()->acceptSuggestion(grouping)); });
+        QVERIFY2(bar->isVisible() != barBefore, "the grouping brings or drops a scroll bar");
+        // On its pixel, but in a direction whose scroll bar is at an end (no room to keep it).
+        const auto kept = [view](const QPoint &now, const QPoint &was) {
+            const auto room = [](const QScrollBar *b) {
+                return b->value() != b->minimum() && b->value() != b->maximum();
+            };
+            return (std::abs(now.x() - was.x()) <= 1 || !room(view->horizontalScrollBar())) &&
+                   (std::abs(now.y() - was.y()) <= 1 || !room(view->verticalScrollBar())) &&
+                   (room(view->horizontalScrollBar()) || room(view->verticalScrollBar()));
+        };
+        const QPoint accepted = at();
+        QVERIFY2(kept(accepted, before),
+                 qPrintable(QStringLiteral("accepted: (%1, %2) was (%3, %4)")
+                                .arg(accepted.x())
+                                .arg(accepted.y())
+                                .arg(before.x())
+                                .arg(before.y())));
+        // Undone, the drawing fits the view again in one direction, which then places it;
+        // redone, it is where it was with the grouping.
+        redrawnAfter([this] { doc()->undoStack()->undo(); });
+        redrawnAfter([this] { doc()->undoStack()->redo(); });
+        const QPoint redone = at();
+        QVERIFY2(kept(redone, accepted), qPrintable(QStringLiteral("redone: (%1, %2) was (%3, %4)")
+                                                        .arg(redone.x())
+                                                        .arg(redone.y())
+                                                        .arg(accepted.x())
+                                                        .arg(accepted.y())));
     }
 };
 

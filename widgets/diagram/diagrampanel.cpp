@@ -13,6 +13,7 @@
 #include "widgets/diagram/diagramview.h"
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -397,6 +398,10 @@ void DiagramPanel::applyLayout(const LayoutGraph &graph, const LayoutResult &res
         m_view->fitDiagram();
         m_fitPending = false;
     } else if (redrawn) {
+        // The scroll bars a new scene size brings or drops come a turn later (queued by the
+        // scroll area), and the view keeps its middle then: they come first, so the element
+        // goes back to its pixel in the view as it will stay.
+        QCoreApplication::sendPostedEvents(m_view, QEvent::MetaCall);
         anchor.restore(*m_scene, m_view);
         for (const QString &key : selected)
             if (DiagramItem *item = m_scene->item(key))
