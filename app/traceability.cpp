@@ -142,7 +142,9 @@ void Traceability::onSourceLineChanged(const QString &file, int line)
                 m_nodePanel->selectSourceIndex(user);
             return;
         }
-    if (!users.isEmpty())
+    // A person reading with the arrow keys is not stopped by a menu that takes the keys; a
+    // click on the line asks.
+    if (!users.isEmpty() && !m_sourceView->movedByKey())
         offerClassChoice(users);
 }
 

@@ -374,6 +374,7 @@ bool SourceView::eventFilter(QObject *watched, QEvent *event)
     if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::KeyPress) {
         m_pendingProgrammaticLine = -1;
         m_lastReportedLine = -1;
+        m_movedByKey = event->type() == QEvent::KeyPress;
     }
     return QWidget::eventFilter(watched, event);
 }

@@ -39,6 +39,9 @@ public:
     int evidenceMarker() const { return m_arrowMarker; }
     /// Indicator number of the highlighted range.
     int evidenceIndicator() const { return kEvidenceIndicator; }
+    /// True when the person's last move in the editor was a key (reading with the arrow keys),
+    /// false after a click: what a move may interrupt with a question.
+    bool movedByKey() const { return m_movedByKey; }
 
 Q_SIGNALS:
     /// A person moved the cursor to `line` (1-based) of `file`; not sent for moves made by
@@ -77,6 +80,7 @@ private:
     /// to is remembered and its report swallowed; -1 when no such report is pending.
     int m_pendingProgrammaticLine = -1;
     int m_lastReportedLine = -1;
+    bool m_movedByKey = false;
 };
 
 } // namespace rosarch

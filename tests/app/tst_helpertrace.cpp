@@ -12,6 +12,7 @@
 #include "widgets/sourceview.h"
 
 #include <QMenu>
+#include <Qsci/qsciscintilla.h>
 #include <QtTest>
 
 using namespace rosarch;
@@ -189,6 +190,24 @@ private Q_SLOTS:
         QCOMPARE(views.currentClass(), expected);
         QCOMPARE(views.currentPort(), QStringLiteral("p1"));
         QTRY_VERIFY(!views.choice());
+    }
+
+    void readingWithTheArrowKeysIsNotInterrupted()
+    {
+        Views views;
+        views.source.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&views.source));
+        // a key in the editor: the move that follows is the person reading on
+        QTest::keyClick(views.source.editor()->viewport(), Qt::Key_Down);
+        QVERIFY(views.source.movedByKey());
+        Q_EMIT views.source.cursorLineChanged(kHelper, 12);
+        QVERIFY(!views.choice());
+        QCOMPARE(views.currentClass(), QString()); // nothing chosen for the person either
+        // a click on the same line asks
+        QTest::mouseClick(views.source.editor()->viewport(), Qt::LeftButton, {}, QPoint(20, 5));
+        QVERIFY(!views.source.movedByKey());
+        Q_EMIT views.source.cursorLineChanged(kHelper, 12);
+        QVERIFY(views.choice());
     }
 
     void aLineOfOneUserGoesThereWithoutAsking()
