@@ -23,7 +23,7 @@ private Q_SLOTS:
         auto gui = open();
         const QString odometry = gui->instanceId(QStringLiteral("odometry"));
         gui->launchPanel.selectSourceIndex(gui->launchModel.nodeIndex(odometry));
-        QCOMPARE(gui->controller->current().kind, EKind::Instance);
+        QCOMPARE(gui->controller->presenter()->current().kind, EKind::Instance);
         QCOMPARE(gui->inspector.fieldText(QStringLiteral("kind")), QStringLiteral("Node instance"));
         QCOMPARE(gui->inspector.fieldText(QStringLiteral("name")), QStringLiteral("odometry"));
         QCOMPARE(gui->inspector.fieldText(QStringLiteral("type")), QStringLiteral("OdometryNode"));
@@ -71,7 +71,7 @@ private Q_SLOTS:
         QSignalSpy made(gui.document.session(), &ProjectSession::keysMade);
         gui.document.setRecovery(first);
         gui.document.setRecovery(second); // while the first one's keys may still be made
-        gui.controller->setCurrent({EKind::Class, id, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Class, id, {}, {}});
         const QString expected = StableKeys(second).keyOf(id);
         QVERIFY(expected.startsWith(QStringLiteral("class:second_3999|")));
         const QString shown = gui.inspector.fieldText(QStringLiteral("key"));
@@ -103,10 +103,10 @@ private Q_SLOTS:
             return true;
         };
         const QString safety = gui->instanceId(QStringLiteral("safety_monitor"));
-        QVERIFY(gui->controller->rename({EKind::Instance, safety, {}, {}}));
-        QVERIFY(gui->controller->addPart(
+        QVERIFY(gui->controller->editor()->rename({EKind::Instance, safety, {}, {}}));
+        QVERIFY(gui->controller->editor()->addPart(
             {EKind::LaunchFile, gui->launchFileId(QStringLiteral("cart.launch.py")), {}, {}}));
-        QVERIFY(gui->controller->remove(
+        QVERIFY(gui->controller->editor()->remove(
             {EKind::Instance, gui->instanceId(QStringLiteral("recorder")), {}, {}}));
         QCOMPARE(gui->correctionModel.rowCount(), 3);
         const auto cell = [&](int row, int column) {
@@ -126,7 +126,7 @@ private Q_SLOTS:
         // selecting one selects its element
         QVERIFY(gui->correctionPanel.selectCorrection(QStringLiteral("c1")));
         QCOMPARE(gui->launchPanel.currentSourceIndex(), gui->launchModel.nodeIndex(safety));
-        QCOMPARE(gui->controller->current().id, safety);
+        QCOMPARE(gui->controller->presenter()->current().id, safety);
 
         // Remove (Delete) reverts it, undoably
         gui->correctionPanel.removeAction()->trigger();
@@ -158,9 +158,9 @@ private Q_SLOTS:
             d.setName(QStringLiteral("safety"));
             return true;
         };
-        QVERIFY(gui->controller->rename(
+        QVERIFY(gui->controller->editor()->rename(
             {EKind::Instance, gui->instanceId(QStringLiteral("safety_monitor")), {}, {}}));
-        QVERIFY(gui->controller->toggleReviewed(
+        QVERIFY(gui->controller->editor()->toggleReviewed(
             {EKind::Class, gui->classId(QStringLiteral("BumperNode")), {}, {}}));
         // F5: a fresh recovery of the same workspace
         gui->document.setRecovery(recover(m_ws));
@@ -260,7 +260,7 @@ private Q_SLOTS:
         QVERIFY(ticksRow.data(Qt::ForegroundRole).isValid());
         QVERIFY(
             ticksRow.data(Qt::ToolTipRole).toString().contains(QStringLiteral("Corrected by c2")));
-        QCOMPARE(gui.controller->describe({EKind::Port, ticks, {}, {}}).provenance,
+        QCOMPARE(gui.controller->presenter()->describe({EKind::Port, ticks, {}, {}}).provenance,
                  QStringLiteral("corrected by c2"));
         // and the diagram draws the marks
         gui.diagramPanel.setArchitecture(test::acceptedNow(gui.document).architecture);

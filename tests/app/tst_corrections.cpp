@@ -104,7 +104,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/cart/pose"));
             return true;
         };
-        QVERIFY(gui->controller->rename({EKind::Port, pose, {}, {}}));
+        QVERIFY(gui->controller->editor()->rename({EKind::Port, pose, {}, {}}));
         QCOMPARE(gui->asked.last(), QStringLiteral("Set Name"));
         QCOMPARE(gui->document.session()->corrections().last().kind, Correction::Kind::SetName);
         roundTrip(*gui, [&](bool done) {
@@ -118,7 +118,7 @@ private Q_SLOTS:
             d.setType(QStringLiteral("diagnostic_msgs/msg/DiagnosticStatus"));
             return true;
         };
-        QVERIFY(gui->controller->setType({EKind::Port, status, {}, {}}));
+        QVERIFY(gui->controller->editor()->setType({EKind::Port, status, {}, {}}));
         QCOMPARE(gui->document.session()->corrections().last().kind, Correction::Kind::SetType);
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->portType(status) == QLatin1String("diagnostic_msgs/msg/DiagnosticStatus"),
@@ -130,7 +130,7 @@ private Q_SLOTS:
             d.setType(QStringLiteral("std_msgs/msg/Int64"));
             return true;
         };
-        QVERIFY(gui->controller->setType({EKind::Port, ticks, {}, {}}));
+        QVERIFY(gui->controller->editor()->setType({EKind::Port, ticks, {}, {}}));
         QVERIFY(gui->document.session()->orphans().isEmpty());
         QCOMPARE(gui->portType(ticks), QStringLiteral("std_msgs/msg/Int64"));
     }
@@ -175,7 +175,7 @@ private Q_SLOTS:
         QVERIFY(!test::acceptedNow(gui->document).nodes.node(recorder));
 
         const QString odom = gui->portId(QStringLiteral("Recorder"), "odom");
-        QVERIFY(gui->controller->remove(
+        QVERIFY(gui->controller->editor()->remove(
             {EKind::Port, gui->portId("SafetyMonitor", "reset_estop"), {}, {}}));
         QCOMPARE(gui->document.session()->corrections().last().target,
                  QStringLiteral("port:cart_base|cart_base.safety.SafetyMonitor|service_server|"
@@ -188,7 +188,7 @@ private Q_SLOTS:
         Q_UNUSED(odom);
 
         const QString recorderInstance = gui->instanceId(QStringLiteral("recorder"));
-        QVERIFY(gui->controller->remove({EKind::Instance, recorderInstance, {}, {}}));
+        QVERIFY(gui->controller->editor()->remove({EKind::Instance, recorderInstance, {}, {}}));
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->instance(QStringLiteral("recorder")) == nullptr, done);
             QVERIFY(gui->launchNodes().contains(QStringLiteral("recorder")));
@@ -209,7 +209,7 @@ private Q_SLOTS:
             return false;
         };
         QVERIFY(connected());
-        QVERIFY(gui->controller->remove({EKind::Connection, odometry, odomPort, {}}));
+        QVERIFY(gui->controller->editor()->remove({EKind::Connection, odometry, odomPort, {}}));
         QVERIFY(!gui->document.session()->corrections().last().port.isEmpty());
         roundTrip(*gui, [&](bool done) { QCOMPARE(connected(), !done); });
         QVERIFY(gui->document.session()->orphans().isEmpty());
@@ -225,7 +225,7 @@ private Q_SLOTS:
             d.setType(QStringLiteral("std_msgs/msg/Bool"));
             return true;
         };
-        QVERIFY(gui->controller->addPort({EKind::Class, safety, {}, {}}));
+        QVERIFY(gui->controller->editor()->addPort({EKind::Class, safety, {}, {}}));
         roundTrip(*gui, [&](bool done) {
             QCOMPARE(gui->portNames(QStringLiteral("SafetyMonitor")).contains("sensors/bumper"),
                      done);
@@ -234,7 +234,7 @@ private Q_SLOTS:
         QCOMPARE(gui->nodeModel.portIndex(added.section(u'/', 0, 0), added.section(u'/', 1))
                      .data(AtomicNodeModel::ProvenanceRole),
                  QVariant(QStringLiteral("corrected")));
-        QCOMPARE(gui->controller->describe({EKind::Port, added, {}, {}}).provenance,
+        QCOMPARE(gui->controller->presenter()->describe({EKind::Port, added, {}, {}}).provenance,
                  QStringLiteral("corrected by c1"));
 
         // Add Part on a launch file: pick a class among the workspace's
@@ -245,7 +245,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("watchdog"));
             return true;
         };
-        QVERIFY(gui->controller->addPart({EKind::LaunchFile, cart, {}, {}}));
+        QVERIFY(gui->controller->editor()->addPart({EKind::LaunchFile, cart, {}, {}}));
         QCOMPARE(gui->document.session()->corrections().last().target,
                  QStringLiteral("launch:src/cart_base/launch/cart.launch.py"));
         roundTrip(*gui, [&](bool done) {
@@ -261,7 +261,7 @@ private Q_SLOTS:
             d.setType(QStringLiteral("std_msgs/msg/Empty"));
             return true;
         };
-        QVERIFY(gui->controller->addConnection({EKind::Instance, odometry, {}, {}}));
+        QVERIFY(gui->controller->editor()->addConnection({EKind::Instance, odometry, {}, {}}));
         QCOMPARE(gui->document.session()->corrections().last().newValue,
                  QStringLiteral("/cart/heartbeat"));
         roundTrip(*gui, [&](bool done) {
@@ -283,7 +283,8 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/emergency_stop"));
             return true;
         };
-        QVERIFY(gui->controller->rename({EKind::Channel, QStringLiteral("topic:/estop"), {}, {}}));
+        QVERIFY(gui->controller->editor()->rename(
+            {EKind::Channel, QStringLiteral("topic:/estop"), {}, {}}));
         const auto hasChannel = [&](const QString &name) {
             for (const Composite &c : test::acceptedNow(gui->document).architecture.composites)
                 for (const Channel &ch : c.channels)
@@ -300,7 +301,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/e_stop"));
             return true;
         };
-        QVERIFY(gui->controller->rename(
+        QVERIFY(gui->controller->editor()->rename(
             {EKind::Channel, QStringLiteral("topic:/emergency_stop"), {}, {}}));
         QCOMPARE(gui->document.session()->corrections().last().target,
                  QStringLiteral("topic:/estop"));
@@ -312,7 +313,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("Motion safety"));
             return true;
         };
-        QVERIFY(gui->controller->group(
+        QVERIFY(gui->controller->editor()->group(
             {gui->instanceId("odometry"), gui->instanceId("safety_monitor")}, root));
         roundTrip(*gui, [&](bool done) {
             bool grouped = false;
@@ -325,7 +326,7 @@ private Q_SLOTS:
         // review: at once, a ✓ in the views; again removes the mark
         const QString odometryNode = gui->classId(QStringLiteral("OdometryNode"));
         const int before = int(gui->document.session()->corrections().size());
-        QVERIFY(gui->controller->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
+        QVERIFY(gui->controller->editor()->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
         QCOMPARE(gui->asked.size(), 3); // no dialog for a review
         roundTrip(*gui, [&](bool done) {
             const QModelIndex row = gui->nodeModel.nodeIndex(odometryNode);
@@ -333,13 +334,14 @@ private Q_SLOTS:
             QCOMPARE(row.data().toString(),
                      done ? QStringLiteral("OdometryNode \u2713") : QStringLiteral("OdometryNode"));
         });
-        QVERIFY(gui->controller->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
+        QVERIFY(gui->controller->editor()->toggleReviewed({EKind::Class, odometryNode, {}, {}}));
         QCOMPARE(int(gui->document.session()->corrections().size()), before);
         const QString odometry = gui->instanceId(QStringLiteral("odometry"));
-        QVERIFY(gui->controller->toggleReviewed({EKind::Instance, odometry, {}, {}}));
+        QVERIFY(gui->controller->editor()->toggleReviewed({EKind::Instance, odometry, {}, {}}));
         QVERIFY(test::acceptedSettled(gui->document));
         QVERIFY(gui->launchModel.nodeIndex(odometry).data(LaunchTreeModel::ReviewedRole).toBool());
-        QVERIFY(gui->controller->describe({EKind::Instance, odometry, {}, {}}).reviewed);
+        QVERIFY(
+            gui->controller->presenter()->describe({EKind::Instance, odometry, {}, {}}).reviewed);
     }
 
     void cancelledDialogChangesNothing()
@@ -349,7 +351,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("x"));
             return false;
         };
-        QVERIFY(!gui->controller->rename(
+        QVERIFY(!gui->controller->editor()->rename(
             {EKind::Instance, gui->instanceId(QStringLiteral("odometry")), {}, {}}));
         QVERIFY(gui->document.session()->corrections().isEmpty());
         QCOMPARE(gui->document.undoStack()->count(), 0);

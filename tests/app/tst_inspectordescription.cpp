@@ -59,25 +59,25 @@ private Q_SLOTS:
         const auto shown = [&gui](const QString &field) { return gui.inspector.fieldText(field); };
 
         // from the class's documentation, without any suggestion run
-        gui.controller->setCurrent({EKind::Class, commander, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Class, commander, {}, {}});
         QCOMPARE(shown(QStringLiteral("description")),
                  QStringLiteral("Sends navigation goals and overrides velocity."));
         QCOMPARE(shown(QStringLiteral("descriptionSource")), QStringLiteral("from the code"));
-        gui.controller->setCurrent({EKind::Instance, instance, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Instance, instance, {}, {}});
         QCOMPARE(shown(QStringLiteral("description")),
                  QStringLiteral("Sends navigation goals and overrides velocity."));
 
         // a person's description replaces it, and the inspector says whose it is
         gui.document.session()->setNodeDescription(commander,
                                                    QStringLiteral("Our mission commander."));
-        gui.controller->setCurrent({EKind::Class, commander, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Class, commander, {}, {}});
         QCOMPARE(shown(QStringLiteral("description")), QStringLiteral("Our mission commander."));
         NodeDescription person;
         person.source = NodeDescription::Source::Correction;
         QCOMPARE(shown(QStringLiteral("descriptionSource")), person.sourceText());
         QVERIFY(shown(QStringLiteral("descriptionSource")) != QStringLiteral("from the code"));
         gui.document.undoStack()->undo();
-        gui.controller->setCurrent({EKind::Instance, instance, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Instance, instance, {}, {}});
         QCOMPARE(shown(QStringLiteral("descriptionSource")), QStringLiteral("from the code"));
     }
 
@@ -99,7 +99,7 @@ private Q_SLOTS:
         gui.document.setRecovery(recoverUncached(dir.path()));
         const QString beacon = classIdOf(gui.document, QStringLiteral("Beacon"));
         QVERIFY(!beacon.isEmpty());
-        gui.controller->setCurrent({EKind::Class, beacon, {}, {}});
+        gui.controller->presenter()->setCurrent({EKind::Class, beacon, {}, {}});
         QCOMPARE(gui.inspector.fieldText(QStringLiteral("kind")), QStringLiteral("Node class"));
         QCOMPARE(gui.inspector.fieldText(QStringLiteral("description")),
                  QStringLiteral("No description in the code"));

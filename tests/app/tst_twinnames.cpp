@@ -78,9 +78,9 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/cart/pose"));
             return true; // the offer stays checked
         };
-        QSignalSpy said(gui->controller.get(), &CorrectionController::statusMessage);
+        QSignalSpy said(gui->controller->editor(), &CorrectionEditor::statusMessage);
         const int steps = gui->document.undoStack()->count();
-        QVERIFY(gui->controller->rename({EKind::Port, pose.first(), {}, {}}));
+        QVERIFY(gui->controller->editor()->rename({EKind::Port, pose.first(), {}, {}}));
         QCOMPARE(gui->asked, QStringList{QStringLiteral("Set Name")});
         QVERIFY2(offer.contains(QLatin1String("1 other port")) && offer.contains(kPose),
                  qPrintable(offer));
@@ -113,7 +113,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/cart/pose"));
             return true;
         };
-        QVERIFY(gui->controller->rename({EKind::Port, pose.last(), {}, {}}));
+        QVERIFY(gui->controller->editor()->rename({EKind::Port, pose.last(), {}, {}}));
         QCOMPARE(gui->document.session()->corrections().size(), 1);
         QCOMPARE(gui->portRow(pose.last()), QStringLiteral("/cart/pose"));
         QCOMPARE(gui->portRow(pose.first()), kPose);
@@ -131,7 +131,7 @@ private Q_SLOTS:
             d.setName(QStringLiteral("/cart/twist"));
             return true;
         };
-        QVERIFY(gui->controller->rename({EKind::Port, twist.first(), {}, {}}));
+        QVERIFY(gui->controller->editor()->rename({EKind::Port, twist.first(), {}, {}}));
         QVERIFY(!offered);
         QCOMPARE(gui->document.session()->corrections().size(), 1);
     }

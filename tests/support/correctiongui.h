@@ -2,6 +2,8 @@
 // The views and the controller of the main window on one Document, for the GUI tests of
 // corrections (tst_corrections, tst_correctionpanels).
 #include "app/correctioncontroller.h"
+#include "app/correctioneditor.h"
+#include "app/inspectorpresenter.h"
 #include "app/traceability.h"
 #include "diagram/diagramlayouter.h"
 #include "document/document.h"
@@ -65,7 +67,7 @@ struct Gui
         controller = std::make_unique<CorrectionController>(&document, &nodePanel, &launchPanel,
                                                             &diagramPanel, traceability.get(),
                                                             &inspector, &correctionPanel, &window);
-        controller->setDialogHandler([this](CorrectionDialog &d) {
+        controller->editor()->setDialogHandler([this](CorrectionDialog &d) {
             asked.append(d.windowTitle());
             return answer ? answer(d) : false;
         });

@@ -1,33 +1,56 @@
-#include "app/correctioncontroller.h"
+#include "app/correctioneditor.h"
 #include "app/correctionlookup.h"
-#include "app/traceability.h"
-#include "diagram/diagrambuilder.h"
+#include "app/correctiontargets.h"
 #include "document/document.h"
-#include "widgets/atomicnodemodel.h"
-#include "widgets/atomicnodepanel.h"
 #include "widgets/correctiondialog.h"
 #include "widgets/correctionmodel.h"
-#include "widgets/correctionpanel.h"
-#include "widgets/diagram/diagrampanel.h"
-#include "widgets/diagram/diagramview.h"
-#include "widgets/launchtreemodel.h"
-#include "widgets/launchtreepanel.h"
-#include <QAction>
-#include <QMenu>
-#include <QRegularExpression>
+
 #include <QSet>
-#include <QTreeView>
 #include <QUndoStack>
 
-// The correction controller's edits: each asks what it needs and pushes one correction.
+#include <algorithm>
+
 namespace rosarch {
 
 namespace {
-using Kind = CorrectionController::Element::Kind;
+
+using Kind = CorrectionElement::Kind;
 using namespace CorrectionLookup;
+
 } // namespace
 
-QStringList CorrectionController::knownTypes()
+CorrectionEditor::CorrectionEditor(Document *document, CorrectionTargets *targets, QWidget *window,
+                                   QObject *parent)
+    : QObject(parent), m_document(document), m_targets(targets), m_window(window)
+{
+}
+
+void CorrectionEditor::setDialogHandler(std::function<bool(CorrectionDialog &)> handler)
+{
+    m_dialogHandler = std::move(handler);
+}
+
+bool CorrectionEditor::ask(CorrectionDialog &dialog)
+{
+    if (m_dialogHandler)
+        return m_dialogHandler(dialog) && dialog.isComplete();
+    return dialog.exec() == QDialog::Accepted;
+}
+
+bool CorrectionEditor::push(Correction c)
+{
+    if (c.target.isEmpty())
+        return false;
+    const QString id = m_document->session()->addCorrection(c);
+    if (id.isEmpty())
+        return false;
+    Q_EMIT statusMessage(tr("%1: %2 (Ctrl+Z undoes it)")
+                             .arg(id, CorrectionModel::kindText(int(c.kind)) + u' ' + c.summary()),
+                         6000);
+    return true;
+}
+
+QStringList CorrectionEditor::knownTypes()
 {
     QSet<QString> types;
     for (const AtomicNode &n : m_document->accepted().nodes.nodes)
@@ -39,13 +62,13 @@ QStringList CorrectionController::knownTypes()
     return out;
 }
 
-bool CorrectionController::rename(const Element &e)
+bool CorrectionEditor::rename(const CorrectionElement &e)
 {
-    if (isRemoved(e))
+    if (m_targets->isRemoved(e))
         return false;
     Correction c;
     c.kind = Correction::Kind::Rename;
-    const QString old = nameOf(e);
+    const QString old = m_targets->nameOf(e);
     QString title = tr("Rename");
     QString what;
     QStringList twins; ///< the other unresolved ports of the class written the same way
@@ -54,7 +77,7 @@ bool CorrectionController::rename(const Element &e)
         const Port *p = findPort(m_document->accepted().nodes, e.id);
         if (!p)
             return false;
-        c.target = keyOf(e.id);
+        c.target = m_targets->keyOf(e.id);
         if (!p->isResolved()) {
             c.kind = Correction::Kind::SetName;
             title = tr("Set Name");
@@ -69,7 +92,7 @@ bool CorrectionController::rename(const Element &e)
         break;
     }
     case Kind::Instance:
-        c.target = keyOf(e.id);
+        c.target = m_targets->keyOf(e.id);
         what = tr("Rename the node instance %1.").arg(old);
         break;
     case Kind::Channel: {
@@ -106,7 +129,7 @@ bool CorrectionController::rename(const Element &e)
     stack->beginMacro(tr("Set Name of %1 ports").arg(twins.size() + 1));
     int named = push(c) ? 1 : 0;
     for (const QString &twin : std::as_const(twins)) {
-        c.target = keyOf(twin);
+        c.target = m_targets->keyOf(twin);
         named += push(c) ? 1 : 0;
     }
     stack->endMacro();
@@ -117,7 +140,7 @@ bool CorrectionController::rename(const Element &e)
     return named > 0;
 }
 
-QStringList CorrectionController::twinPorts(const QString &portId)
+QStringList CorrectionEditor::twinPorts(const QString &portId)
 {
     const QString nodeId = portId.section(u'/', 0, 0);
     const AtomicNode *node = m_document->accepted().nodes.node(nodeId);
@@ -127,20 +150,20 @@ QStringList CorrectionController::twinPorts(const QString &portId)
         return twins;
     for (const Port &other : node->ports) {
         const QString id = nodeId + u'/' + other.id;
-        Element twin;
+        CorrectionElement twin;
         twin.kind = Kind::Port;
         twin.id = id;
         if (id != portId && !other.isResolved() && portName(other) == portName(*port) &&
-            !isRemoved(twin))
+            !m_targets->isRemoved(twin))
             twins.append(id);
     }
     return twins;
 }
 
-bool CorrectionController::setType(const Element &e)
+bool CorrectionEditor::setType(const CorrectionElement &e)
 {
     const Port *p = e.kind == Kind::Port ? findPort(m_document->accepted().nodes, e.id) : nullptr;
-    if (!p || isRemoved(e))
+    if (!p || m_targets->isRemoved(e))
         return false;
     CorrectionDialog dialog(
         tr("Set Type"),
@@ -158,58 +181,59 @@ bool CorrectionController::setType(const Element &e)
         return false;
     Correction c;
     c.kind = Correction::Kind::SetType;
-    c.target = keyOf(e.id);
+    c.target = m_targets->keyOf(e.id);
     c.oldValue = p->type;
     c.newValue = dialog.type();
     c.reason = dialog.reason();
     return push(c);
 }
 
-bool CorrectionController::remove(const Element &e)
+bool CorrectionEditor::remove(const CorrectionElement &e)
 {
-    if (isRemoved(e))
+    if (m_targets->isRemoved(e))
         return false;
     Correction c;
     c.kind = Correction::Kind::Remove;
     QString what;
     switch (e.kind) {
     case Kind::Class:
-        what = tr("Remove the class %1 from the model (analysis got it wrong).").arg(nameOf(e));
+        what = tr("Remove the class %1 from the model (analysis got it wrong).")
+                   .arg(m_targets->nameOf(e));
         break;
     case Kind::Port:
-        what = tr("Remove the port %1 from its class.").arg(nameOf(e));
+        what = tr("Remove the port %1 from its class.").arg(m_targets->nameOf(e));
         break;
     case Kind::Instance:
-        what = tr("Remove the node instance %1 (it is not started).").arg(nameOf(e));
+        what = tr("Remove the node instance %1 (it is not started).").arg(m_targets->nameOf(e));
         break;
     case Kind::Connection: {
-        c.port = keyOf(e.port);
+        c.port = m_targets->keyOf(e.port);
         if (c.port.isEmpty())
             return false;
         const Port *p = findPort(m_document->accepted().nodes, e.port);
-        what =
-            tr("Remove the connection of %1 through its %2 %3.")
-                .arg(nameOf(e), p ? portKindName(p->kind) : QString(), p ? portName(*p) : e.port);
+        what = tr("Remove the connection of %1 through its %2 %3.")
+                   .arg(m_targets->nameOf(e), p ? portKindName(p->kind) : QString(),
+                        p ? portName(*p) : e.port);
         break;
     }
     default:
         return false;
     }
-    c.target = keyOf(e.id);
+    c.target = m_targets->keyOf(e.id);
     CorrectionDialog dialog(tr("Remove"), what, CorrectionDialog::NoField, m_window);
     if (!ask(dialog))
         return false;
-    c.oldValue = nameOf(e);
+    c.oldValue = m_targets->nameOf(e);
     c.reason = dialog.reason();
     return push(c);
 }
 
-bool CorrectionController::addPort(const Element &e)
+bool CorrectionEditor::addPort(const CorrectionElement &e)
 {
-    if (e.kind != Kind::Class || isRemoved(e))
+    if (e.kind != Kind::Class || m_targets->isRemoved(e))
         return false;
     CorrectionDialog dialog(
-        tr("Add Port"), tr("Add a port analysis missed to the class %1.").arg(nameOf(e)),
+        tr("Add Port"), tr("Add a port analysis missed to the class %1.").arg(m_targets->nameOf(e)),
         CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
     dialog.setNameLabel(tr("&Name:"));
     dialog.setTypeChoices(knownTypes());
@@ -217,7 +241,7 @@ bool CorrectionController::addPort(const Element &e)
         return false;
     Correction c;
     c.kind = Correction::Kind::AddPort;
-    c.target = keyOf(e.id);
+    c.target = m_targets->keyOf(e.id);
     c.portKind = dialog.portKind();
     c.newValue = dialog.name();
     c.type = dialog.type();
@@ -225,7 +249,7 @@ bool CorrectionController::addPort(const Element &e)
     return push(c);
 }
 
-bool CorrectionController::addPart(const Element &e)
+bool CorrectionEditor::addPart(const CorrectionElement &e)
 {
     const LaunchFileInstance *lf =
         e.kind == Kind::LaunchFile ? m_document->accepted().launch.instance(e.id) : nullptr;
@@ -255,14 +279,14 @@ bool CorrectionController::addPart(const Element &e)
     return push(c);
 }
 
-bool CorrectionController::addConnection(const Element &e)
+bool CorrectionEditor::addConnection(const CorrectionElement &e)
 {
-    if (e.kind != Kind::Instance || isRemoved(e))
+    if (e.kind != Kind::Instance || m_targets->isRemoved(e))
         return false;
     CorrectionDialog dialog(
         tr("Add Connection"),
         tr("Connect the node instance %1 to a topic, service or action analysis missed.")
-            .arg(nameOf(e)),
+            .arg(m_targets->nameOf(e)),
         CorrectionDialog::Kind | CorrectionDialog::Name | CorrectionDialog::Type, m_window);
     dialog.setNameLabel(tr("&On (absolute name):"));
     dialog.setName(QStringLiteral("/"));
@@ -271,7 +295,7 @@ bool CorrectionController::addConnection(const Element &e)
         return false;
     Correction c;
     c.kind = Correction::Kind::AddConnection;
-    c.target = keyOf(e.id);
+    c.target = m_targets->keyOf(e.id);
     c.portKind = dialog.portKind();
     c.newValue = dialog.name().startsWith(u'/') ? dialog.name() : u'/' + dialog.name();
     c.type = dialog.type();
@@ -279,12 +303,12 @@ bool CorrectionController::addConnection(const Element &e)
     return push(c);
 }
 
-bool CorrectionController::toggleReviewed(const Element &e)
+bool CorrectionEditor::toggleReviewed(const CorrectionElement &e)
 {
     if (e.kind == Kind::None || e.kind == Kind::LaunchFile || e.kind == Kind::Connection ||
-        isRemoved(e))
+        m_targets->isRemoved(e))
         return false;
-    const QString key = keyOf(e.id);
+    const QString key = m_targets->keyOf(e.id);
     if (key.isEmpty())
         return false;
     QStringList marks;
@@ -292,7 +316,7 @@ bool CorrectionController::toggleReviewed(const Element &e)
         if (c.kind == Correction::Kind::Review && c.target == key)
             marks.append(c.id);
     if (!marks.isEmpty()) { // reviewed: the mark goes
-        m_document->undoStack()->beginMacro(tr("Unmark %1 reviewed").arg(nameOf(e)));
+        m_document->undoStack()->beginMacro(tr("Unmark %1 reviewed").arg(m_targets->nameOf(e)));
         for (const QString &id : std::as_const(marks))
             m_document->session()->removeCorrection(id);
         m_document->undoStack()->endMacro();
@@ -304,19 +328,19 @@ bool CorrectionController::toggleReviewed(const Element &e)
     return push(c);
 }
 
-bool CorrectionController::group(const QStringList &instanceIds, const QString &rootId)
+bool CorrectionEditor::group(const QStringList &instanceIds, const QString &rootId)
 {
-    const QString root = keyOf(rootId);
+    const QString root = m_targets->keyOf(rootId);
     if (instanceIds.size() < 2 || StableKeys::family(root) != QLatin1String("include"))
         return false;
     QStringList members;
     QStringList names;
     for (const QString &id : instanceIds) {
-        const QString key = keyOf(id);
+        const QString key = m_targets->keyOf(id);
         if (key.isEmpty())
             return false;
         members.append(key);
-        names.append(nameOf({Kind::Instance, id, {}, {}}));
+        names.append(m_targets->nameOf({Kind::Instance, id, {}, {}}));
     }
     CorrectionDialog dialog(tr("Group into Subsystem"),
                             tr("Draw %1 as one subsystem.").arg(names.join(QStringLiteral(", "))),
@@ -333,13 +357,13 @@ bool CorrectionController::group(const QStringList &instanceIds, const QString &
     return push(c);
 }
 
-bool CorrectionController::restore(const Element &e)
+bool CorrectionEditor::restore(const CorrectionElement &e)
 {
-    const QString id = index().removedBy(e.id);
+    const QString id = m_targets->index().removedBy(e.id);
     return !id.isEmpty() && m_document->session()->removeCorrection(id);
 }
 
-bool CorrectionController::retarget(const QString &correctionId)
+bool CorrectionEditor::retarget(const QString &correctionId)
 {
     const Correction *old = m_document->session()->correction(correctionId);
     if (!old)
@@ -401,6 +425,18 @@ bool CorrectionController::retarget(const QString &correctionId)
     const bool ok = !m_document->session()->addCorrection(c).isEmpty();
     m_document->undoStack()->endMacro();
     return ok;
+}
+
+void CorrectionEditor::removeCorrections(const QStringList &ids)
+{
+    if (ids.size() == 1) {
+        m_document->session()->removeCorrection(ids.first());
+        return;
+    }
+    m_document->undoStack()->beginMacro(tr("Remove %1 corrections").arg(ids.size()));
+    for (const QString &id : ids)
+        m_document->session()->removeCorrection(id);
+    m_document->undoStack()->endMacro();
 }
 
 } // namespace rosarch
