@@ -5,6 +5,7 @@
 #include "widgets/atomicnodetext.h"
 #include "widgets/evidencelines.h"
 #include "widgets/icons.h"
+#include "widgets/treeindexid.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -17,26 +18,11 @@ namespace rosarch {
 
 namespace {
 
-// internalId layout: the low two bits say what the row is, the rest locates its parent.
-// A node's "Parameters" row and its parameter rows share a tag: their payload is the node's
-// index in the list, shifted by one bit that is set for a parameter row.
-constexpr quintptr kPackageTag = 0;
-constexpr quintptr kNodeTag = 1;
-constexpr quintptr kPortTag = 2;
-constexpr quintptr kParameterTag = 3;
-
-quintptr tagOf(const QModelIndex &index)
-{
-    return index.internalId() & 3;
-}
-quintptr payloadOf(const QModelIndex &index)
-{
-    return index.internalId() >> 2;
-}
-quintptr makeId(quintptr payload, quintptr tag)
-{
-    return (payload << 2) | tag;
-}
+// A row's internal id: its kind as the tag, and above it where its parent is: for a node row
+// the row of its package, for a port, "Parameters" or parameter row its node's index in the
+// list. A package row has no parent to name.
+using RowId = TreeIndexId<AtomicNodeModel::ItemKind, 3>;
+static_assert(RowId::holds(AtomicNodeModel::ItemKind::Parameter));
 
 } // namespace
 
@@ -172,7 +158,8 @@ bool AtomicNodeModel::isRemoved(const QModelIndex &index) const
 
 QString AtomicNodeModel::elementId(const QModelIndex &index) const
 {
-    if (tagOf(index) == kParameterTag) // not an element a correction names
+    if (const ItemKind k = RowId::of(index).tag();
+        k == ItemKind::Parameters || k == ItemKind::Parameter) // not elements a correction names
         return {};
     if (const Port *p = port(index))
         return node(index)->id + u'/' + p->id;
@@ -254,25 +241,30 @@ const RosPackage *AtomicNodeModel::package(const PackageRow &row) const
     return row.package >= 0 ? &m_nodes.packages.at(row.package) : nullptr;
 }
 
+QModelIndex AtomicNodeModel::makeIndex(int row, int column, ItemKind kind, qsizetype parent) const
+{
+    // Only where quintptr has 32 bits could a workspace outgrow the payload.
+    return RowId::fits(parent) ? createIndex(row, column, RowId(kind, parent).internalId())
+                               : QModelIndex();
+}
+
 QModelIndex AtomicNodeModel::index(int row, int column, const QModelIndex &parent) const
 {
     if (row < 0 || column < 0 || column >= ColumnCount || row >= rowCount(parent))
         return {};
     if (!parent.isValid())
-        return createIndex(row, column, makeId(0, kPackageTag));
-    switch (tagOf(parent)) {
-    case kPackageTag:
-        return createIndex(row, column, makeId(quintptr(parent.row()), kNodeTag));
-    case kNodeTag: {
-        const auto n = quintptr(nodeListIndex(parent));
+        return makeIndex(row, column, ItemKind::Package);
+    switch (RowId::of(parent).tag()) {
+    case ItemKind::Package:
+        return makeIndex(row, column, ItemKind::Node, parent.row());
+    case ItemKind::Node: {
         const AtomicNode *node = this->node(parent);
-        if (node && row == node->ports.size()) // after the ports
-            return createIndex(row, column, makeId(n << 1, kParameterTag));
-        return createIndex(row, column, makeId(n, kPortTag));
+        const bool afterPorts = node && row == node->ports.size();
+        return makeIndex(row, column, afterPorts ? ItemKind::Parameters : ItemKind::Port,
+                         nodeListIndex(parent));
     }
-    case kParameterTag:
-        return createIndex(row, column,
-                           makeId((payloadOf(parent) & ~quintptr(1)) | 1, kParameterTag));
+    case ItemKind::Parameters:
+        return makeIndex(row, column, ItemKind::Parameter, RowId::of(parent).payload());
     default:
         return {};
     }
@@ -282,24 +274,19 @@ QModelIndex AtomicNodeModel::parent(const QModelIndex &child) const
 {
     if (!child.isValid())
         return {};
-    switch (tagOf(child)) {
-    case kNodeTag:
-        return createIndex(int(payloadOf(child)), 0, makeId(0, kPackageTag));
-    case kPortTag: {
-        const NodeLocation loc = m_nodeLocations.value(int(payloadOf(child)));
-        return createIndex(loc.row, 0, makeId(quintptr(loc.packageRow), kNodeTag));
+    const RowId id = RowId::of(child);
+    switch (id.tag()) {
+    case ItemKind::Node:
+        return makeIndex(int(id.payload()), 0, ItemKind::Package);
+    case ItemKind::Port:
+    case ItemKind::Parameters: {
+        const NodeLocation loc = m_nodeLocations.value(int(id.payload()));
+        return makeIndex(loc.row, 0, ItemKind::Node, loc.packageRow);
     }
-    case kParameterTag: {
-        const quintptr payload = payloadOf(child);
-        const int n = int(payload >> 1);
-        if (payload & 1) { // a parameter: its "Parameters" row
-            const AtomicNode *node = n < m_nodes.nodes.size() ? &m_nodes.nodes[n] : nullptr;
-            return node ? createIndex(int(node->ports.size()), 0,
-                                      makeId(payload & ~quintptr(1), kParameterTag))
-                        : QModelIndex();
-        }
-        const NodeLocation loc = m_nodeLocations.value(n);
-        return createIndex(loc.row, 0, makeId(quintptr(loc.packageRow), kNodeTag));
+    case ItemKind::Parameter: {
+        const AtomicNode *node = this->node(child);
+        return node ? makeIndex(int(node->ports.size()), 0, ItemKind::Parameters, id.payload())
+                    : QModelIndex();
     }
     default:
         return {};
@@ -312,16 +299,16 @@ int AtomicNodeModel::rowCount(const QModelIndex &parent) const
         return int(m_packages.size());
     if (parent.column() != 0)
         return 0;
-    switch (tagOf(parent)) {
-    case kPackageTag:
+    switch (RowId::of(parent).tag()) {
+    case ItemKind::Package:
         return int(m_packages.value(parent.row()).nodes.size());
-    case kNodeTag: {
+    case ItemKind::Node: {
         const AtomicNode *n = node(parent);
         return n ? int(n->ports.size()) + (n->parameters.isEmpty() ? 0 : 1) : 0;
     }
-    case kParameterTag: {
+    case ItemKind::Parameters: {
         const AtomicNode *n = node(parent);
-        return n && !(payloadOf(parent) & 1) ? int(n->parameters.size()) : 0;
+        return n ? int(n->parameters.size()) : 0;
     }
     default:
         return 0;
@@ -337,35 +324,29 @@ int AtomicNodeModel::nodeListIndex(const QModelIndex &index) const
 {
     if (!index.isValid())
         return -1;
-    if (tagOf(index) == kPortTag)
-        return int(payloadOf(index));
-    if (tagOf(index) == kParameterTag)
-        return int(payloadOf(index) >> 1);
-    if (tagOf(index) == kNodeTag) {
-        const int packageRow = int(payloadOf(index));
+    const RowId id = RowId::of(index);
+    switch (id.tag()) {
+    case ItemKind::Port:
+    case ItemKind::Parameters:
+    case ItemKind::Parameter:
+        return int(id.payload());
+    case ItemKind::Node: {
+        const auto packageRow = int(id.payload());
         if (packageRow >= m_packages.size())
             return -1;
         return m_packages[packageRow].nodes.value(index.row(), -1);
     }
-    return -1;
+    default:
+        return -1;
+    }
 }
 
 AtomicNodeModel::ItemKind AtomicNodeModel::kind(const QModelIndex &index) const
 {
     if (!index.isValid() || index.model() != this)
         return ItemKind::None;
-    switch (tagOf(index)) {
-    case kPackageTag:
-        return ItemKind::Package;
-    case kNodeTag:
-        return ItemKind::Node;
-    case kPortTag:
-        return ItemKind::Port;
-    case kParameterTag:
-        return payloadOf(index) & 1 ? ItemKind::Parameter : ItemKind::Parameters;
-    default:
-        return ItemKind::None;
-    }
+    const ItemKind k = RowId::of(index).tag();
+    return k <= ItemKind::Parameter ? k : ItemKind::None;
 }
 
 const AtomicNode *AtomicNodeModel::node(const QModelIndex &index) const
@@ -425,7 +406,7 @@ QModelIndex AtomicNodeModel::nodeIndex(const QString &nodeId, int column) const
     for (int i = 0; i < nodes.size() && i < m_nodeLocations.size(); ++i) {
         if (nodes[i].id == nodeId) {
             const NodeLocation loc = m_nodeLocations[i];
-            return createIndex(loc.row, column, makeId(quintptr(loc.packageRow), kNodeTag));
+            return makeIndex(loc.row, column, ItemKind::Node, loc.packageRow);
         }
     }
     return {};

@@ -116,6 +116,9 @@ private:
     void onNodeChanged(const QString &nodeId);
     const RosPackage *package(const PackageRow &row) const;
     int nodeListIndex(const QModelIndex &index) const;
+    /// The index of a row of `kind` whose parent `parent` locates (a package row, a node's
+    /// index in the list); invalid when an internal id cannot hold `parent`.
+    QModelIndex makeIndex(int row, int column, ItemKind kind, qsizetype parent = 0) const;
 
     QVariant packageData(const PackageRow &row, int column, int role) const;
     QVariant nodeData(const AtomicNode &node, int column, int role) const;

@@ -4,15 +4,33 @@
 #include "document/document.h"
 #include "jobs/stallprobe.h"
 #include "widgets/icons.h"
+#include "widgets/treeindexid.h"
 
 #include <QColor>
 #include <QFont>
 
 #include <algorithm>
+#include <limits>
 
 namespace rosarch {
 
 namespace {
+
+// A row's internal id: a top-level row (a group, or a finding when not grouped), or a finding
+// in the group whose row is the payload.
+enum class RowTag
+{
+    TopLevel,
+    InGroup
+};
+using RowId = TreeIndexId<RowTag, 1>;
+// Every group row an int can number fits in an id, even where quintptr has 32 bits.
+static_assert(RowId::kMaxPayload >= std::numeric_limits<int>::max());
+
+bool isTopLevel(const QModelIndex &index)
+{
+    return RowId::of(index).tag() == RowTag::TopLevel;
+}
 
 int rank(Diagnostic::Severity s)
 {
@@ -204,27 +222,27 @@ int DiagnosticModel::severityCount(Diagnostic::Severity severity) const
     }));
 }
 
-// Internal ids: 0 for a top-level row (a group, or a finding when not grouped); g + 1 for a
-// finding in group g.
 QModelIndex DiagnosticModel::index(int row, int column, const QModelIndex &parent) const
 {
     if (row < 0 || column < 0 || column >= ColumnCount || row >= rowCount(parent))
         return {};
-    return createIndex(row, column, parent.isValid() ? quintptr(parent.row() + 1) : quintptr(0));
+    if (!parent.isValid())
+        return createIndex(row, column, RowId(RowTag::TopLevel).internalId());
+    return createIndex(row, column, RowId(RowTag::InGroup, parent.row()).internalId());
 }
 
 QModelIndex DiagnosticModel::parent(const QModelIndex &child) const
 {
-    if (!child.isValid() || child.internalId() == 0)
+    if (!child.isValid() || isTopLevel(child))
         return {};
-    return createIndex(int(child.internalId() - 1), 0, quintptr(0));
+    return createIndex(int(RowId::of(child).payload()), 0, RowId(RowTag::TopLevel).internalId());
 }
 
 int DiagnosticModel::rowCount(const QModelIndex &parent) const
 {
     if (!parent.isValid())
         return int(m_grouping == Grouping::None ? m_visible.size() : m_groups.size());
-    if (parent.column() != 0 || parent.internalId() != 0 || m_grouping == Grouping::None)
+    if (parent.column() != 0 || !isTopLevel(parent) || m_grouping == Grouping::None)
         return 0;
     return int(m_groups.at(parent.row()).entries.size());
 }
@@ -240,9 +258,9 @@ int DiagnosticModel::entryAt(const QModelIndex &index) const
         return -1;
     if (m_grouping == Grouping::None)
         return m_visible.value(index.row(), -1);
-    if (index.internalId() == 0)
+    if (isTopLevel(index))
         return -1;
-    return m_groups.at(int(index.internalId() - 1)).entries.value(index.row(), -1);
+    return m_groups.at(int(RowId::of(index).payload())).entries.value(index.row(), -1);
 }
 
 const Diagnostic *DiagnosticModel::diagnostic(const QModelIndex &index) const
@@ -282,7 +300,7 @@ QVariant DiagnosticModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.model() != this)
         return {};
-    const bool isGroup = m_grouping != Grouping::None && index.internalId() == 0;
+    const bool isGroup = m_grouping != Grouping::None && isTopLevel(index);
     if (isGroup) {
         const Group &g = m_groups.at(index.row());
         QString label = g.label;
@@ -437,7 +455,7 @@ QStringList DiagnosticModel::keysAt(const QModelIndexList &indexes) const
     for (const QModelIndex &i : indexes) {
         if (i.model() != this)
             continue;
-        if (m_grouping != Grouping::None && i.isValid() && i.internalId() == 0) {
+        if (m_grouping != Grouping::None && i.isValid() && isTopLevel(i)) {
             for (int e : m_groups.at(i.row()).entries)
                 add(e);
         } else {

@@ -155,8 +155,9 @@ int LaunchTreeModel::itemOf(const QModelIndex &index) const
 {
     if (!index.isValid() || index.model() != this)
         return -1;
-    const quintptr id = index.internalId();
-    return id < quintptr(m_layout.items().size()) ? int(id) : -1;
+    const RowId id = RowId::of(index);
+    return id.tag() == RowTag::Item && id.payload() < m_layout.items().size() ? int(id.payload())
+                                                                              : -1;
 }
 
 const NodeInstance *LaunchTreeModel::nodeOfItem(int item) const
@@ -167,21 +168,42 @@ const NodeInstance *LaunchTreeModel::nodeOfItem(int item) const
     return &m_launch.nodes[items[item].ref];
 }
 
+int LaunchTreeModel::parameterCount(int item) const
+{
+    const NodeInstance *n = nodeOfItem(item);
+    if (!n || n->effectiveParameters.isEmpty())
+        return 0;
+    // Rows the ids cannot name are not shown at all, rather than counted and left invalid.
+    const qsizetype count = n->effectiveParameters.size();
+    return RowId::fits(item, count - 1) ? int(count) : 0;
+}
+
+QModelIndex LaunchTreeModel::makeIndex(int row, int column, RowTag tag, qsizetype item,
+                                       qsizetype parameter) const
+{
+    if (tag == RowTag::Parameter)
+        return RowId::fits(item, parameter)
+                   ? createIndex(row, column, RowId::split(tag, item, parameter).internalId())
+                   : QModelIndex();
+    return RowId::fits(item) ? createIndex(row, column, RowId(tag, item).internalId())
+                             : QModelIndex();
+}
+
 int LaunchTreeModel::parameterRowOf(const QModelIndex &index, int *k) const
 {
+    *k = -1;
     if (!index.isValid() || index.model() != this)
         return -1;
-    const quintptr id = index.internalId();
+    const RowId id = RowId::of(index);
     int item = -1;
-    *k = -1;
-    if (id & kParametersTag) {
-        item = int(id & ~kParametersTag);
-    } else if (id & kParameterTag) {
-        item = int((id & ~kParameterTag) >> kParameterBits);
-        *k = int(id & ((quintptr(1) << kParameterBits) - 1));
+    if (id.tag() == RowTag::Parameters) {
+        item = int(id.payload());
+    } else if (id.tag() == RowTag::Parameter) {
+        item = int(id.high());
+        *k = int(id.low());
     }
-    const NodeInstance *n = nodeOfItem(item);
-    if (!n || n->effectiveParameters.isEmpty() || *k >= n->effectiveParameters.size())
+    const int count = parameterCount(item);
+    if (count == 0 || *k >= count)
         return -1;
     return item;
 }
@@ -198,7 +220,7 @@ QModelIndex LaunchTreeModel::indexOfItem(int item, int column) const
     const QList<Item> &items = m_layout.items();
     if (item < 0 || item >= m_layout.items().size())
         return {};
-    return createIndex(items[item].row, column, quintptr(item));
+    return makeIndex(items[item].row, column, RowTag::Item, item);
 }
 
 QModelIndex LaunchTreeModel::index(int row, int column, const QModelIndex &parent) const
@@ -208,28 +230,25 @@ QModelIndex LaunchTreeModel::index(int row, int column, const QModelIndex &paren
         return {};
     if (!parent.isValid())
         return row < m_layout.roots().size()
-                   ? createIndex(row, column, quintptr(m_layout.roots()[row]))
+                   ? makeIndex(row, column, RowTag::Item, m_layout.roots()[row])
                    : QModelIndex();
     if (parent.column() != 0)
         return {};
     int k = -1;
     if (const int owner = parameterRowOf(parent, &k); owner >= 0) {
-        const qsizetype count = nodeOfItem(owner)->effectiveParameters.size();
-        if (k >= 0 || row >= count || count >= (qsizetype(1) << kParameterBits))
+        if (k >= 0 || row >= parameterCount(owner))
             return {};
-        return createIndex(row, column,
-                           kParameterTag | (quintptr(owner) << kParameterBits) | quintptr(row));
+        return makeIndex(row, column, RowTag::Parameter, owner, row);
     }
     const int p = itemOf(parent);
     if (p < 0)
         return {};
     m_layout.ensureChildren(p);
-    if (row == items[p].children.size() && nodeOfItem(p) &&
-        !nodeOfItem(p)->effectiveParameters.isEmpty())
-        return createIndex(row, column, kParametersTag | quintptr(p));
+    if (row == items[p].children.size() && parameterCount(p) > 0)
+        return makeIndex(row, column, RowTag::Parameters, p);
     if (row >= items[p].children.size())
         return {};
-    return createIndex(row, column, quintptr(items[p].children[row]));
+    return makeIndex(row, column, RowTag::Item, items[p].children[row]);
 }
 
 QModelIndex LaunchTreeModel::parent(const QModelIndex &child) const
@@ -238,8 +257,7 @@ QModelIndex LaunchTreeModel::parent(const QModelIndex &child) const
     int k = -1;
     if (const int owner = parameterRowOf(child, &k); owner >= 0)
         return k < 0 ? indexOfItem(owner, 0)
-                     : createIndex(int(items[owner].children.size()), 0,
-                                   kParametersTag | quintptr(owner));
+                     : makeIndex(int(items[owner].children.size()), 0, RowTag::Parameters, owner);
     const int item = itemOf(child);
     return item < 0 ? QModelIndex() : indexOfItem(items[item].parent, 0);
 }
@@ -253,13 +271,12 @@ int LaunchTreeModel::rowCount(const QModelIndex &parent) const
         return 0;
     int k = -1;
     if (const int owner = parameterRowOf(parent, &k); owner >= 0)
-        return k < 0 ? int(nodeOfItem(owner)->effectiveParameters.size()) : 0;
+        return k < 0 ? parameterCount(owner) : 0;
     const int item = itemOf(parent);
     if (item < 0)
         return 0;
     m_layout.ensureChildren(item);
-    const NodeInstance *n = nodeOfItem(item);
-    return int(items[item].children.size()) + (n && !n->effectiveParameters.isEmpty() ? 1 : 0);
+    return int(items[item].children.size()) + (parameterCount(item) > 0 ? 1 : 0);
 }
 
 bool LaunchTreeModel::hasChildren(const QModelIndex &parent) const

@@ -4,6 +4,7 @@
 #include "core/launchdependencies.h"
 #include "widgets/correctionindex.h"
 #include "widgets/launchtreelayout.h"
+#include "widgets/treeindexid.h"
 
 #include <QAbstractItemModel>
 #include <QSet>
@@ -103,10 +104,25 @@ private:
     QVariant unresolvedData(const Item &item, int column, int role) const;
     // A node's parameters in effect are rows made on demand (a navigation stack has ten
     // thousands): a "Parameters" row after the node's children, and one row per parameter.
-    // Their internal ids carry a tag bit above the item numbers.
-    static constexpr quintptr kParametersTag = quintptr(1) << 62;
-    static constexpr quintptr kParameterTag = quintptr(1) << 61;
-    static constexpr int kParameterBits = 24;
+    // A row's internal id tags which of the three it is: a row of the layout (its item), a
+    // "Parameters" row (its node's item) or a parameter row (its node's item above the
+    // parameter's index, in the low kParameterBits).
+    enum class RowTag
+    {
+        Item,
+        Parameters,
+        Parameter
+    };
+    /// 16 million parameters a node; 4096 where quintptr has 32 bits, to leave items 18 bits.
+    static constexpr int kParameterBits = QT_POINTER_SIZE == 8 ? 24 : 12;
+    using RowId = TreeIndexId<RowTag, 2, kParameterBits>;
+    /// The index of a row of the layout (`item`), of a node's "Parameters" row (`item` is the
+    /// node's) or of its parameter `parameter`; invalid when an internal id cannot hold them.
+    QModelIndex makeIndex(int row, int column, RowTag tag, qsizetype item,
+                          qsizetype parameter = 0) const;
+    /// How many parameter rows the node item `item` shows under its "Parameters" row (0 for
+    /// other items, and for a node with more than internal ids can number).
+    int parameterCount(int item) const;
     /// The node item of a "Parameters" row or a parameter row (-1 for other rows); `*k` is the
     /// parameter's index (-1 for the "Parameters" row).
     int parameterRowOf(const QModelIndex &index, int *k) const;
