@@ -16,6 +16,8 @@
 #include <QMenu>
 #include <QTreeView>
 
+#include <functional>
+
 namespace rosarch {
 
 namespace {
@@ -82,31 +84,6 @@ CorrectionController::CorrectionController(Document *document, AtomicNodePanel *
 const CorrectionController::Element &CorrectionController::current() const
 {
     return m_presenter->current();
-}
-
-void CorrectionController::setDialogHandler(std::function<bool(CorrectionDialog &)> handler)
-{
-    m_editor->setDialogHandler(std::move(handler));
-}
-
-bool CorrectionController::rename(const Element &element)
-{
-    return m_editor->rename(element);
-}
-
-bool CorrectionController::addPort(const Element &classElement)
-{
-    return m_editor->addPort(classElement);
-}
-
-bool CorrectionController::addPart(const Element &launchFile)
-{
-    return m_editor->addPart(launchFile);
-}
-
-bool CorrectionController::addConnection(const Element &instance)
-{
-    return m_editor->addConnection(instance);
 }
 
 QList<QAction *> CorrectionController::actionsFor(const Element &e, QObject *parent)

@@ -5,8 +5,6 @@
 #include <QList>
 #include <QObject>
 
-#include <functional>
-
 class QAction;
 class QMenu;
 class QWidget;
@@ -14,7 +12,6 @@ class QWidget;
 namespace rosarch {
 
 class AtomicNodePanel;
-class CorrectionDialog;
 class CorrectionEditor;
 class CorrectionPanel;
 class CorrectionTargets;
@@ -47,13 +44,8 @@ public:
     /// Selects the element of correction `id` in the views.
     void showCorrection(const QString &id);
 
-    // Forwarded for the Model menu and the window tests.
+    /// The element the inspector shows (the Model menu acts on it).
     const Element &current() const;
-    void setDialogHandler(std::function<bool(CorrectionDialog &)> handler);
-    bool rename(const Element &element);
-    bool addPort(const Element &classElement);
-    bool addPart(const Element &launchFile);
-    bool addConnection(const Element &instance);
 
 Q_SIGNALS:
     void statusMessage(const QString &text, int timeout);

@@ -4,6 +4,7 @@
 // them), the composed diagram's zoom, scrolled place and selection, and the source pane's file,
 // cursor and scrolled line. On the example workspace, driven as a person drives the window.
 #include "app/correctioncontroller.h"
+#include "app/correctioneditor.h"
 #include "app/mainwindow.h"
 #include "diagram/diagrambuilder.h"
 #include "document/document.h"
@@ -196,7 +197,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(
             !diagram()->isLayingOut() && !diagram()->currentComposite().isEmpty(), 30000);
         QTRY_VERIFY(doc()->session()->keysReady());
-        test::child<CorrectionController>(*m_window)->setDialogHandler([](CorrectionDialog &d) {
+        test::child<CorrectionEditor>(*m_window)->setDialogHandler([](CorrectionDialog &d) {
             const QString title = d.windowTitle();
             if (title == QLatin1String("Add Connection")) {
                 d.setPortKind(PortKind::Subscriber);
@@ -272,7 +273,7 @@ private Q_SLOTS:
     void aConnectionKeepsThePlace()
     {
         keptThrough(QStringLiteral("Add Connection"), [this] {
-            QVERIFY(test::child<CorrectionController>(*m_window)->addConnection(
+            QVERIFY(test::child<CorrectionEditor>(*m_window)->addConnection(
                 {EKind::Instance, instanceNamed(QStringLiteral("navigator")), {}, {}}));
         });
         // the connection was made, in the diagram shown too
@@ -286,7 +287,7 @@ private Q_SLOTS:
     void aRenameKeepsThePlace()
     {
         keptThrough(QStringLiteral("Rename"), [this] {
-            QVERIFY(test::child<CorrectionController>(*m_window)->rename(
+            QVERIFY(test::child<CorrectionEditor>(*m_window)->rename(
                 {EKind::Instance, instanceNamed(QStringLiteral("mode_manager")), {}, {}}));
         });
     }
@@ -297,8 +298,8 @@ private Q_SLOTS:
         const QString classId =
             doc()->launchDependencies().node(instanceNamed(QStringLiteral("navigator")))->classId;
         keptThrough(QStringLiteral("Add Port"), [&] {
-            QVERIFY(test::child<CorrectionController>(*m_window)->addPort(
-                {EKind::Class, classId, {}, {}}));
+            QVERIFY(
+                test::child<CorrectionEditor>(*m_window)->addPort({EKind::Class, classId, {}, {}}));
         });
         QVERIFY(test::child<AtomicNodeModel>(*m_window)->rowCount(
                     test::child<AtomicNodeModel>(*m_window)->nodeIndex(classId)) > 0);
@@ -312,7 +313,7 @@ private Q_SLOTS:
                 mission = lf.id;
         QVERIFY(!mission.isEmpty());
         keptThrough(QStringLiteral("Add Part"), [&] {
-            QVERIFY(test::child<CorrectionController>(*m_window)->addPart(
+            QVERIFY(test::child<CorrectionEditor>(*m_window)->addPart(
                 {EKind::LaunchFile, mission, {}, {}}));
         });
     }
